@@ -1,0 +1,109 @@
+/*
+ * arc.h - the hybrid arc: samples over the hybrid time domain (t, j).
+ *
+ * Samples are stored in hybrid-time order: by j, then by t.  A jump appears
+ * as two samples with the same t and consecutive j: the pre-jump sample,
+ * which lies in the jump set D, and the post-jump sample, which is g of it
+ * exactly.  Samples are every accepted step, every located event, kink and
+ * extremum, the start and the end.
+ *
+ * Flow intervals: for each j that has samples, the index of its first and
+ * last sample, q_c, and its ordinary-time extent [t_j, t_{j+1}].
+ *
+ * Memory is bounded: past the scene's run.max_samples the arc thins the
+ * interior samples of old flow intervals by half (never the first or last
+ * sample of an interval, never a jump), so rewind always reaches t = 0.
+ * arc_thinned() counts the passes.
+ *
+ * The arc is owned by the sim that produced it; pointers returned here stay
+ * valid until the next sim_advance / sim_seek / sim_restart / sim_free.
+ */
+#ifndef HYBOUNCE_ARC_H
+#define HYBOUNCE_ARC_H
+
+#include <stddef.h>
+#include "law.h"
+
+enum arc_kind {
+	ARC_START = 0,    /* the initial state (0, 0) */
+	ARC_STEP,         /* an accepted integrator step (or a closed-form flight point) */
+	ARC_PRE_JUMP,     /* last sample of a flow interval, in D */
+	ARC_POST_JUMP,    /* first sample of the next interval, g of the previous sample */
+	ARC_KINK,         /* a step ended on a switching function of the law or the load */
+	ARC_EXTREMUM,     /* a located extremum of x_c (v = 0) or of F_c inside a contact */
+	ARC_END,          /* the last sample of the run */
+};
+
+struct arc_sample {
+	double t;
+	long j;
+	int q;                  /* q_c: 1 in contact */
+	int kind;               /* enum arc_kind */
+	double x, v;            /* relative displacement and velocity */
+	double xc;              /* indentation (0 in flight) */
+	double z[LAW_MAX_Z];    /* internal state of the law (0 in flight) */
+	double Fc;              /* contact force on body 1: -q_c Phi */
+	double Fer;             /* reduced applied force */
+	double xm, vm;          /* centre of mass (full system; 0 otherwise) */
+	/* running values over the contact in progress (0 in flight): */
+	double W, JFc, JFe;     /* -int F_c v dt, int F_c dt, int F_er dt since t_e */
+	double xcmax, Fcmax;    /* greatest |x_c| and F_c since t_e */
+};
+
+struct arc_interval {
+	long j;
+	int q;
+	size_t first, last;     /* sample indices (inclusive) */
+	double t0, t1;          /* ordinary-time extent */
+};
+
+/* How a jump was located, kept for every jump. */
+enum arc_how {
+	LOCATE_START = 0,   /* the state was already in D where the interval began */
+	LOCATE_CLOSED_FORM, /* flight: root of the closed-form parabola */
+	LOCATE_BRENT,       /* re-stepping from the step's start, bracketing root finder */
+};
+
+struct arc_jump {
+	double t;
+	long j;                 /* j of the pre-jump sample */
+	int from_q;             /* q_c before the jump */
+	const char *left;       /* which part of C was left: "flight: x < 0 and v < 0",
+	                           "contact: Phi > 0 and v > 0" */
+	int how;                /* enum arc_how */
+	int iterations;         /* root-finder iterations */
+	double width;           /* final bracket width in t, s */
+	double ind_lo, ind_hi;  /* flow-set indicator at the bracket's C side and D side
+	                           (>= 0 in C; < 0 outside) */
+};
+
+struct arc;
+
+size_t arc_len(const struct arc *a);
+const struct arc_sample *arc_at(const struct arc *a, size_t i);
+const struct arc_sample *arc_last(const struct arc *a); /* NULL when empty */
+
+size_t arc_nintervals(const struct arc *a);
+const struct arc_interval *arc_interval_at(const struct arc *a, size_t k);
+/* Index k of the interval containing sample i. */
+size_t arc_interval_of(const struct arc *a, size_t i);
+
+size_t arc_njumps(const struct arc *a);
+const struct arc_jump *arc_jump_at(const struct arc *a, size_t k);
+
+/*
+ * The last sample at or before hybrid time (t, j) in hybrid-time order
+ * (0 if (t, j) precedes everything).
+ */
+size_t arc_find(const struct arc *a, double t, long j);
+
+/* The last sample with sample.t <= t (of the greatest j at that t). */
+size_t arc_find_t(const struct arc *a, double t);
+
+/* Number of thinning passes so far (0: every sample is kept). */
+int arc_thinned(const struct arc *a);
+
+/* Bytes held by the arc. */
+size_t arc_bytes(const struct arc *a);
+
+#endif

@@ -1,0 +1,34 @@
+/*
+ * csv.h - export of a run: RFC 4180 CSV, one header row, SI units,
+ * numbers as %.17g so that they round-trip.
+ *
+ * Arc columns: t,j,q_c,x,v,x_c,z_c1[,z_c2],F_c,F_er and in the full system
+ * x_m,v_m,v_m1,v_m2 (z columns as many as the law has).
+ * Collision columns: i,t_e,t_s,t_d,t_f,v_i,e,x_c_max,F_c_max,x_c_r,W,J_Fc,J_Fe,Lambda.
+ *
+ * Every file is written to a temporary name in its folder and renamed, so a
+ * failed export never leaves a half file or clobbers a good one.
+ */
+#ifndef HYBOUNCE_CSV_H
+#define HYBOUNCE_CSV_H
+
+#include <stddef.h>
+#include "sim.h"
+
+int
+csv_write_arc(const char *path, const struct sim *s, char *msg, size_t n);
+
+int
+csv_write_collisions(const char *path, const struct sim *s, char *msg, size_t n);
+
+/*
+ * Writes the arc to trace_path and/or the collisions to coll_path (either
+ * may be NULL), and the scene beside the first of them as a preset
+ * (PATH with its extension replaced by ".preset"), whose path is written to
+ * scene_out (may be NULL).  All or nothing: on error no new file is left.
+ */
+int
+csv_export(const struct sim *s, const char *trace_path, const char *coll_path,
+           char *scene_out, size_t sn, char *msg, size_t n);
+
+#endif

@@ -1,0 +1,151 @@
+/*
+ * law.h - incremental contact laws (paper eq. law):
+ *
+ *     d/dt x_c = v_c,   d/dt z_c = Psi(x_c, z_c, v_c),   F_s = Phi(x_c, z_c, v_c),
+ *
+ * with F_c = -F_s the force on the bodies, x_c < 0 in compression, and the
+ * condition Phi(0, 0, v) = 0 for every v (paper eq. vanishing).
+ *
+ * Each law is one file under src/core/ ending in one `const struct law_type`;
+ * the registry in law.c lists them.  Adding a law means adding one file and
+ * one registry line.
+ *
+ * Rule R1 (paper, section Non-Uniqueness).  Laws are written for x_c <= 0.
+ * Each law says in its description how it is continued to x_c > 0.  With
+ * `ext` = 1 (the default in a scene) the continuation is adhesive: Phi > 0
+ * for small x_c > 0, so a contact whose force is extinguished while the
+ * bodies recede leaves the flow set at once.  With `ext` = 0 the law is
+ * clamped, Phi(x_c, z, v) = Phi(min(x_c, 0), z, v), which is what the
+ * paper's solution chi^d of the clamped example needs to appear.
+ *
+ * Parameters are passed as an array of doubles in the order of the law's
+ * parameter table.  All values are SI.
+ */
+#ifndef HYBOUNCE_LAW_H
+#define HYBOUNCE_LAW_H
+
+#include <stddef.h>
+
+enum {
+	LAW_MAX_Z = 2,       /* largest n_z of any law */
+	LAW_MAX_PARAMS = 10, /* largest parameter table */
+	LAW_MAX_KINKS = 4,   /* largest number of switching functions */
+};
+
+/*
+ * Physical dimension of a quantity as exponents of kg, m and s.  The metre
+ * exponent may depend on the law's exponents p and n:
+ *     m exponent = m + mp * p + mn * n
+ * (e.g. k of a Hertz-type term, N m^-p: kg = 1, m = 1, mp = -1, s = -2).
+ */
+struct unit_dim {
+	double kg, m, s;
+	double mp, mn;
+};
+
+/* Flags of a parameter. */
+enum {
+	LAW_PARAM_STIFFNESS = 1, /* the stiffness k: derived by eq. k_hertz when
+	                            both bodies are given by their materials and
+	                            the law has k_hertz; typed otherwise */
+	LAW_PARAM_EXPONENT_P = 2, /* the exponent p (used in unit dimensions) */
+	LAW_PARAM_EXPONENT_N = 4, /* the exponent n (used in unit dimensions) */
+};
+
+struct law_param {
+	const char *name;        /* key in presets and the panel: "alpha", "beta", "c" */
+	struct unit_dim dim;     /* expected dimension */
+	double lo, hi;           /* admissible range; -HUGE_VAL/HUGE_VAL for none */
+	int lo_open, hi_open;    /* 1 if the bound itself is excluded */
+	double def;              /* default value */
+	int flags;               /* LAW_PARAM_* */
+	const char *help;        /* one line: meaning and where in the paper */
+};
+
+struct law_type {
+	const char *name;        /* short key: "shccl", "bwshccl", "bwmcl", "hertz", "linear" */
+	const char *title;       /* "Simon-Hunt-Crossley (SHCCL)" */
+	const char *description; /* one line, including how x_c > 0 is continued (rule R1) */
+	int n_z;                 /* dimension of the internal state */
+	int n_params;
+	const struct law_param *params;
+	int n_kinks;             /* number of switching functions (see kinks) */
+
+	/* Phi(x_c, z, v).  z has n_z entries (may be NULL when n_z = 0). */
+	double (*phi)(const double *par, int ext, double xc, const double *z, double v);
+
+	/* Psi(x_c, z, v) into dz[0 .. n_z-1].  NULL when n_z = 0. */
+	void (*psi)(const double *par, int ext, double xc, const double *z, double v,
+	            double *dz);
+
+	/*
+	 * Partial derivatives.  Columns are ordered (x_c, z_1 .. z_nz, v):
+	 * dphi has n_z + 2 entries; dpsi is n_z rows of n_z + 2 entries, row
+	 * major (may be NULL when n_z = 0).  Where the law is not differentiable
+	 * (at a kink) any one-sided derivative is returned.
+	 */
+	void (*jac)(const double *par, int ext, double xc, const double *z, double v,
+	            double *dphi, double *dpsi);
+
+	/*
+	 * Switching functions: values g[0 .. n_kinks-1] whose zero crossings
+	 * are the points where Phi or Psi is not smooth (|v|, z|z|^(n-1),
+	 * x_c|x_c|^(p-1), |Psi_2| ...).  The engine ends a step exactly on
+	 * each crossing inside a flow interval (DESIGN.md section 4a).  NULL
+	 * when n_kinks = 0.
+	 */
+	void (*kinks)(const double *par, int ext, double xc, const double *z, double v,
+	              double *g);
+
+	/*
+	 * Constraints between parameters beyond each one's range (e.g. gamma in
+	 * [-beta, beta]).  Returns 0, or HB_EINVAL with a message in msg naming
+	 * the parameters and the accepted range.  May be NULL.
+	 */
+	int (*check)(const double *par, char *msg, size_t n);
+
+	/*
+	 * k from the Hertz coefficient k_H by eq. k_hertz, e.g.
+	 * k_H / (alpha + (1 - alpha) A^p).  NULL when k is not derivable
+	 * (the clamped linear law, whose k is N/m).
+	 */
+	double (*k_hertz)(const double *par, double kH);
+};
+
+/* The registered laws, NULL-terminated, in a fixed order. */
+const struct law_type *const *
+law_list(void);
+
+/* The law with this name (case-insensitive), or NULL. */
+const struct law_type *
+law_find(const char *name);
+
+/* Index of a parameter in the law's table, or -1. */
+int
+law_param_index(const struct law_type *law, const char *name);
+
+/* Fills par[0 .. n_params-1] with the defaults. */
+void
+law_defaults(const struct law_type *law, double *par);
+
+/*
+ * Checks one value against the parameter's range.  Returns 0, or HB_EINVAL
+ * with "NAME must be in (lo, hi]" style text in msg.
+ */
+int
+law_param_check(const struct law_param *pp, double value, char *msg, size_t n);
+
+/* The exponent p / n of this parameter set (1 if the law has none). */
+double
+law_exponent_p(const struct law_type *law, const double *par);
+double
+law_exponent_n(const struct law_type *law, const double *par);
+
+/* The laws, for direct use by tests. */
+extern const struct law_type law_shccl;
+extern const struct law_type law_bwshccl;
+extern const struct law_type law_bwmcl;
+extern const struct law_type law_hertz;
+extern const struct law_type law_linear;
+
+#endif

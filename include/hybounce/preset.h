@@ -1,0 +1,78 @@
+/*
+ * preset.h - scenes in INI files (read with inih).
+ *
+ *     [scene]    name, description, law, extension (adhesive | none)
+ *     [body1]    name, E, nu, rho, R   or   mass
+ *     [body2]    likewise; R = inf and no rho (or mass = inf): a fixed obstacle
+ *     [law]      the law's parameters (k only when it is not derived)
+ *     [loads]    g, F1, F2, ramp (yes/no), F_e0, T_e, T_s
+ *     [initial]  x0, v0, x_m0, v_m0
+ *     [run]      T, J, stepper, rtol, atol, h_max, max_samples, chatter, reductions
+ *
+ * Values may carry units with SI prefixes ("20 mm", "200 GPa").  Errors
+ * come back as "FILE:LINE: [section] key: message; accepted: ...".
+ */
+#ifndef HYBOUNCE_PRESET_H
+#define HYBOUNCE_PRESET_H
+
+#include <stddef.h>
+#include "scene.h"
+
+/*
+ * Loads a preset into *sc (starting from scene_defaults), validates it and
+ * derives.  On error *sc is unspecified, HB_EINVAL or HB_EIO is returned
+ * and msg holds "FILE:LINE: ...".
+ */
+int
+preset_load(const char *path, struct scene *sc, char *msg, size_t n);
+
+/* The same from a string; `name` stands for the file name in messages. */
+int
+preset_load_string(const char *text, const char *name, struct scene *sc,
+                   char *msg, size_t n);
+
+/*
+ * Writes the scene as a preset that reproduces it exactly (%.17g values),
+ * to a temporary name in the same folder and renamed.  Returns 0, or HB_EIO
+ * with "PATH: strerror" in msg; an existing file is left intact on failure.
+ */
+int
+preset_save(const char *path, const struct scene *sc, char *msg, size_t n);
+
+/* The same into a caller buffer; returns the length needed (like snprintf). */
+size_t
+preset_format(const struct scene *sc, char *buf, size_t n);
+
+/*
+ * Finds a preset by name or path: an existing path is used as is;
+ * otherwise NAME or NAME.preset in the preset folders (see
+ * preset_dirs()).  Writes the path into out.  Returns 0 or HB_EINVAL with a
+ * message listing where it looked.
+ */
+int
+preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn);
+
+/*
+ * The folders searched for presets, in order: $HYBOUNCE_PRESETS (colon
+ * separated), ./presets, the install folder (PREFIX/share/hybounce/presets).
+ * NULL-terminated, static storage.
+ */
+const char *const *
+preset_dirs(void);
+
+struct preset_info {
+	char path[512];
+	char name[64];          /* file name without .preset */
+	char title[96];         /* [scene] name */
+	char description[256];
+};
+
+/*
+ * Lists the presets in the folders (first occurrence of each name wins),
+ * sorted by name.  *out is malloc'd (free it); returns the count, or -1 on
+ * no memory.
+ */
+int
+preset_list(struct preset_info **out);
+
+#endif

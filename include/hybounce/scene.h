@@ -1,0 +1,190 @@
+/*
+ * scene.h - everything a run needs: bodies and materials, the derived
+ * values, the contact law and its parameters, the applied loads, the initial
+ * state and the run settings.  Plain data the caller fills in (transparent,
+ * like gsl_odeiv2_system); all values SI.
+ *
+ * The system is chosen from the bodies, never set by hand: when body 2 has
+ * infinite mass (an obstacle: R2 = inf and no density, or mass = inf) the
+ * scene is the reduced system H_r, otherwise the full system H_f (paper
+ * eqs. Hr_f .. Hr_init and H_f .. H_init).
+ *
+ * Derived values (E*, R_e, m1, m2, m, eta, k_H and k by eq. k_hertz) are
+ * computed by scene_derive() and are never typed: k is typed only when a
+ * body has no material (E, nu) or the law has no k_hertz (clamped linear).
+ *
+ * Keys.  Every typed value has a key "section.name" (e.g. "law.c",
+ * "body1.R", "initial.x0", "run.rtol") used by presets, by --set and by the
+ * explorer's parameter panel; scene_set() parses "VALUE [UNIT]" for a key.
+ */
+#ifndef HYBOUNCE_SCENE_H
+#define HYBOUNCE_SCENE_H
+
+#include <stddef.h>
+#include "law.h"
+
+enum scene_system { SCENE_REDUCED = 0, SCENE_FULL = 1 };
+
+enum scene_stepper {
+	STEPPER_RK8PD = 0, /* default: explicit Dormand-Prince 8(9) */
+	STEPPER_RKF45,
+	STEPPER_RKCK,
+	STEPPER_MSBDF,     /* implicit, uses the law's Jacobian */
+	STEPPER_RK4IMP,
+	STEPPER_BSIMP,
+	STEPPER_COUNT
+};
+
+/* Reductions of DESIGN.md section 3 (all on by default; the bench turns them off). */
+enum {
+	REDUCE_FLIGHT = 1,  /* closed-form flight when F_er is constant on the interval */
+	REDUCE_CONTACT = 2, /* integrate (x_c, v, z_c) in contact and recover x = x_e + x_c */
+	REDUCE_COM = 4,     /* centre of mass in closed form, not integrated */
+	REDUCE_ALL = 7,
+};
+
+struct scene_body {
+	char name[64];
+	int has_material; /* E and nu given */
+	double E, nu;     /* Pa, 1 */
+	double rho;       /* kg/m^3; 0 when not given */
+	double R;         /* m; INFINITY for a flat (half-space) */
+	double mass;      /* kg: given, or 4/3 pi R^3 rho (derived); INFINITY for an obstacle */
+	int mass_given;   /* 1 if mass was typed rather than derived */
+};
+
+struct scene_loads {
+	double g;         /* gravity, m/s^2, acting along -n1 on both bodies: F_ei += -m_i g */
+	double F1, F2;    /* constant forces on body 1 and body 2 along n1, N */
+	int ramp;         /* 1: the S-ramp loads of the second study, eqs. u_1 and u_2 */
+	double Fe0;       /* N */
+	double Te, Ts;    /* s */
+};
+
+struct scene_initial {
+	double x0, v0;    /* relative displacement (>= 0) and velocity */
+	double xm0, vm0;  /* centre of mass (full system only) */
+};
+
+struct scene_run {
+	double T;         /* end of ordinary time, s */
+	long J;           /* jump cap */
+	int stepper;      /* enum scene_stepper */
+	double rtol;      /* relative tolerance */
+	double atol;      /* absolute tolerance, relative to each component's scale */
+	double h_max;     /* largest step inside a contact, s; 0: none */
+	long max_samples; /* arc memory bound: thinning starts beyond this */
+	int chatter;      /* most jumps allowed at one instant of ordinary time */
+	int reduce;       /* REDUCE_* flags */
+};
+
+struct scene_derived {
+	int system;       /* enum scene_system */
+	double Estar;     /* Pa; NAN when a body has no material */
+	double Re;        /* m */
+	double m1, m2;    /* kg (m2 = INFINITY in the reduced system) */
+	double m;         /* effective mass m1 m2 / (m1 + m2) */
+	double eta, etac; /* m1/(m1+m2), m2/(m1+m2) (full system) */
+	double kH;        /* 4/3 E* sqrt(R_e) */
+	int k_derived;    /* 1 if law k comes from k_H by eq. k_hertz */
+};
+
+struct scene {
+	char name[96];          /* short title */
+	char description[256];  /* one or two sentences */
+	struct scene_body body[2];
+	const struct law_type *law;
+	double par[LAW_MAX_PARAMS]; /* law parameters, in the law's table order */
+	int ext;                /* rule R1: 1 adhesive continuation (default), 0 clamped */
+	struct scene_loads loads;
+	struct scene_initial init;
+	struct scene_run run;
+	struct scene_derived d; /* filled by scene_derive() */
+};
+
+/* A valid neutral scene: a steel ball dropped on a Hertz elastic flat. */
+void
+scene_defaults(struct scene *sc);
+
+/*
+ * Computes the derived values (and k when derivable).  Returns 0, or
+ * HB_EINVAL with a message when they cannot be computed (e.g. no mass).
+ */
+int
+scene_derive(struct scene *sc, char *msg, size_t n);
+
+/*
+ * Checks every value against the paper's admissible ranges (alpha in (0,1),
+ * gamma in [-beta, beta], n, p >= 1, masses and stiffnesses > 0, x0 >= 0,
+ * tolerances > 0 ...).  Returns 0, or HB_EINVAL with "KEY: value V is out
+ * of range; accepted: RANGE" in msg.  Calls scene_derive() first.
+ */
+int
+scene_validate(struct scene *sc, char *msg, size_t n);
+
+/*
+ * Sets key ("law.c", "body1.E", "initial.x0", "run.stepper", "scene.law",
+ * "scene.extension" ...) from text with an optional unit.  Setting
+ * "scene.law" loads the new law's defaults.  Checks the unit and the range
+ * of that one value; on error nothing changes and HB_EINVAL is returned
+ * with a message naming the key and what is accepted.
+ */
+int
+scene_set(struct scene *sc, const char *key, const char *text, char *msg, size_t n);
+
+/* One row of the parameter panel / preset writer. */
+struct scene_keyinfo {
+	char key[48];       /* "law.alpha" */
+	char section[16];   /* "bodies", "derived", "law", "loads", "initial", "run" */
+	char label[32];     /* "alpha" / "E (body 1)" */
+	char value[64];     /* formatted with unit: "0.35", "200 GPa" */
+	char range[64];     /* accepted range, e.g. "(0, 1)" */
+	char help[128];
+	int readonly;       /* derived values */
+};
+
+/* Number of rows (depends on law and system). */
+int
+scene_nkeys(const struct scene *sc);
+
+/* Fills row i (0 <= i < scene_nkeys). Returns 0 or HB_EINVAL for a bad i. */
+int
+scene_key(const struct scene *sc, int i, struct scene_keyinfo *out);
+
+/* Applied loads at time t: F_e1, F_e2 (body 2 ignored in the reduced system). */
+void
+scene_loads_at(const struct scene *sc, double t, double *Fe1, double *Fe2);
+
+/* F_er(t) (paper eq. u): F_e1 in the reduced system. */
+double
+scene_Fer(const struct scene *sc, double t);
+
+/*
+ * Times in (t0, t1) where the loads have a kink (T_s, T_e of the ramp),
+ * ascending, at most max.  Returns the count.
+ */
+int
+scene_load_kinks(const struct scene *sc, double t0, double t1, double *out, int max);
+
+/* 1 if F_er is constant on [t0, t1]. */
+int
+scene_Fer_constant(const struct scene *sc, double t0, double t1);
+
+/*
+ * Closed-form flight increments under F_er alone (no contact force):
+ *     dx = int_{t0}^{t1} (t1 - s) F_er(s) ds / m,  dv = int_{t0}^{t1} F_er(s) ds / m.
+ */
+void
+scene_flight_increment(const struct scene *sc, double t0, double t1, double *dx, double *dv);
+
+/* Centre of mass x_m(t), v_m(t) in closed form (eq. com); 0 in the reduced system. */
+void
+scene_com(const struct scene *sc, double t, double *xm, double *vm);
+
+/* Name of a stepper ("rk8pd" ...) and lookup by name (-1 if unknown). */
+const char *
+scene_stepper_name(int stepper);
+int
+scene_stepper_find(const char *name);
+
+#endif

@@ -1,0 +1,74 @@
+/*
+ * units.h - values with SI-prefixed units, in and out.
+ *
+ * Input: "20 mm", "200 GPa", "7800 kg/m^3", "4.4e3 N s/m",
+ * "2.5e7 N s m^-5/2", "9.81 m/s^2", "40 um" (also "µm"), "1.5e-3".
+ * A bare number is taken as SI.  Units: m, g, s, N, Pa, J, W, Hz, with the
+ * prefixes y z a f p n u µ m c d k M G T P; products by space or '*',
+ * quotients by '/', powers by '^' with an integer or fraction exponent
+ * (m^-5/2, m^3).  Everything right of the first '/' is in the denominator,
+ * as in "N s/m" or "kg/m^3".
+ *
+ * Output: units_format() picks the SI prefix that puts the mantissa in
+ * [1, 1000) for the expected dimension's base unit.
+ */
+#ifndef HYBOUNCE_UNITS_H
+#define HYBOUNCE_UNITS_H
+
+#include <stddef.h>
+#include "law.h"
+
+/* Dimensions used by scenes (p and n terms zero). */
+extern const struct unit_dim UNIT_NONE;     /* dimensionless */
+extern const struct unit_dim UNIT_LENGTH;   /* m */
+extern const struct unit_dim UNIT_TIME;     /* s */
+extern const struct unit_dim UNIT_MASS;     /* kg */
+extern const struct unit_dim UNIT_VELOCITY; /* m/s */
+extern const struct unit_dim UNIT_ACCEL;    /* m/s^2 */
+extern const struct unit_dim UNIT_FORCE;    /* N */
+extern const struct unit_dim UNIT_PRESSURE; /* Pa */
+extern const struct unit_dim UNIT_DENSITY;  /* kg/m^3 */
+extern const struct unit_dim UNIT_ENERGY;   /* J */
+extern const struct unit_dim UNIT_IMPULSE;  /* N s */
+
+/*
+ * Resolves a dimension that depends on p and n into plain exponents.
+ */
+struct unit_dim
+units_resolve(struct unit_dim d, double p, double n);
+
+/*
+ * Parses "NUMBER [UNIT]" into an SI value, checking the unit against the
+ * expected dimension (already resolved).  Returns 0, or HB_EINVAL with a
+ * message in msg such as "unit 'mm' is a length; expected a pressure
+ * (e.g. GPa)" or "'abc' is not a number".
+ */
+int
+units_parse(const char *text, struct unit_dim expect, double *value,
+            char *msg, size_t n);
+
+/*
+ * Writes the unit of a dimension in plain ASCII ("N s m^-5/2", "kg/m^3",
+ * "m/s", "Pa", "" for dimensionless) into buf.  Returns buf.
+ */
+char *
+units_dim_str(struct unit_dim d, char *buf, size_t n);
+
+/*
+ * Formats an SI value with `sig` significant digits and the SI prefix that
+ * suits it, e.g. 0.02 m -> "20 mm", 2.138e8 N m^-3/2 -> "2.138e+08 N m^-3/2"
+ * (compound units get no prefix and an exponent instead).  Returns buf.
+ */
+char *
+units_format(double value, struct unit_dim d, int sig, char *buf, size_t n);
+
+/*
+ * Picks, for a quantity of plain base unit `base` ("m", "N", "s", "J"),
+ * the prefix that suits a typical magnitude, for axis labels: writes the
+ * label (e.g. "mm") into label and returns the scale (e.g. 1e-3), so that
+ * the axis shows value / scale.
+ */
+double
+units_axis(double magnitude, const char *base, char *label, size_t n);
+
+#endif
