@@ -1,0 +1,152 @@
+/*
+ * law_hertz.c - the Hertz elastic law (n_z = 0):
+ *
+ *     Phi(x_c, v_c) = k x_c |x_c|^(p - 1)
+ *
+ * with k > 0 and p >= 1 (p = 3/2 for spheres).  It dissipates nothing, so a
+ * collision under it is perfectly elastic; it is the closed-form reference
+ * of the test suite.
+ *
+ * Rule R1: with ext = 1 the same formula continues the law to x_c > 0
+ * (adhesive: Phi > 0 there); with ext = 0 it is clamped,
+ * Phi(x_c) = Phi(min(x_c, 0)).  The only kink is at x_c = 0 (p = 1 gives a
+ * smooth law there, but the clamp of ext = 0 does not).
+ */
+#include <math.h>
+#include <stddef.h>
+
+#include "hybounce/law.h"
+
+/*
+ * Powers of the law, cheap enough for the right-hand side: the common
+ * exponents 1, 1.5 and 2 avoid pow(), and no expression evaluates pow(0, q)
+ * with q < 0, so every value and partial is finite at x = 0 for p >= 1.
+ */
+
+/* |x|^p. */
+static inline double
+apow(double x, double p)
+{
+	double a = fabs(x);
+
+	if (p == 1.5)
+		return a * sqrt(a);
+	if (p == 2.0)
+		return a * a;
+	if (p == 1.0)
+		return a;
+	return pow(a, p);
+}
+
+/* The odd power x|x|^(p-1). */
+static inline double
+spow(double x, double p)
+{
+	double a = apow(x, p);
+
+	return x < 0 ? -a : a;
+}
+
+/* d/dx x|x|^(p-1) = p|x|^(p-1) (1 at x = 0 when p = 1). */
+static inline double
+dspow(double x, double p)
+{
+	double a = fabs(x);
+
+	if (p == 1.5)
+		return 1.5 * sqrt(a);
+	if (p == 2.0)
+		return 2.0 * a;
+	if (p == 1.0)
+		return 1.0;
+	return p * pow(a, p - 1.0);
+}
+
+/* d/dx |x|; at the kink x = 0 the left derivative, -1. */
+static inline double
+dabs1(double x)
+{
+	return x > 0 ? 1.0 : -1.0;
+}
+
+/* d/dx |x|^p = p x|x|^(p-2) (left derivative -1 at x = 0 when p = 1). */
+static inline double
+dapow(double x, double p)
+{
+	double d;
+
+	if (p == 1.0)
+		return dabs1(x);
+	d = dspow(x, p);
+	return x < 0 ? -d : d;
+}
+
+enum { K, P, NPAR };
+
+static const struct law_param hertz_params[NPAR] = {
+	[K] = { "k", { .kg = 1, .m = 1, .s = -2, .mp = -1 },
+	        0, HUGE_VAL, 1, 0, 2.138e8, LAW_PARAM_STIFFNESS,
+	        "stiffness of the spring, N m^-p; k = k_H (eq. k_hertz) from the materials" },
+	[P] = { "p", { 0 }, 1, HUGE_VAL, 0, 0, 1.5, LAW_PARAM_EXPONENT_P,
+	        "exponent of the spring; 3/2 is Hertz's for spheres" },
+};
+
+static double
+hertz_phi(const double *par, int ext, double xc, const double *z, double v)
+{
+	(void)z;
+	(void)v;
+	if (!ext && xc > 0)
+		return 0.0;
+	return par[K] * spow(xc, par[P]);
+}
+
+/* Columns (x_c, v). */
+static void
+hertz_jac(const double *par, int ext, double xc, const double *z, double v,
+          double *dphi, double *dpsi)
+{
+	(void)z;
+	(void)v;
+	(void)dpsi;
+	dphi[0] = !ext && xc > 0 ? 0.0 : par[K] * dspow(xc, par[P]);
+	dphi[1] = 0.0;
+}
+
+/* g = {x_c}. */
+static void
+hertz_kinks(const double *par, int ext, double xc, const double *z, double v,
+            double *g)
+{
+	(void)par;
+	(void)ext;
+	(void)z;
+	(void)v;
+	g[0] = xc;
+}
+
+/* k = k_H: the law is the Hertzian relation itself. */
+static double
+hertz_k_hertz(const double *par, double kH)
+{
+	(void)par;
+	return kH;
+}
+
+const struct law_type law_hertz = {
+	.name = "hertz",
+	.title = "Hertz elastic",
+	.description = "Hertz spring k x|x|^(p-1), no dissipation; continued to "
+	               "x_c > 0 by the same formula (adhesive, rule R1), or "
+	               "clamped at x_c = 0 when ext = 0",
+	.n_z = 0,
+	.n_params = NPAR,
+	.params = hertz_params,
+	.n_kinks = 1,
+	.phi = hertz_phi,
+	.psi = NULL,
+	.jac = hertz_jac,
+	.kinks = hertz_kinks,
+	.check = NULL,
+	.k_hertz = hertz_k_hertz,
+};

@@ -1,0 +1,162 @@
+/*
+ * law_shccl.c - the Simon-Hunt-Crossley collision law (n_z = 0):
+ *
+ *     Phi(x_c, v_c) = k x_c |x_c|^(p - 1) + c |x_c|^p v_c
+ *
+ * with k > 0, c >= 0 and p >= 1: a Hertz spring with the damping of Simon
+ * (1967) and Hunt and Crossley (1975).  The factor |x_c|^p of the damping
+ * makes Phi(0, v) = 0 (paper eq. vanishing).  It is BWSHCCL (eq.
+ * bwshc_phi) with alpha = 1.
+ *
+ * Rule R1: with ext = 1 the same formula continues the law to x_c > 0; for
+ * v_c >= 0 the force is then positive (adhesive).  With ext = 0,
+ * Phi(x_c, v) = Phi(min(x_c, 0), v).  The kink is at x_c = 0.
+ */
+#include <math.h>
+#include <stddef.h>
+
+#include "hybounce/law.h"
+
+/*
+ * Powers of the law, cheap enough for the right-hand side: the common
+ * exponents 1, 1.5 and 2 avoid pow(), and no expression evaluates pow(0, q)
+ * with q < 0, so every value and partial is finite at x = 0 for p >= 1.
+ */
+
+/* |x|^p. */
+static inline double
+apow(double x, double p)
+{
+	double a = fabs(x);
+
+	if (p == 1.5)
+		return a * sqrt(a);
+	if (p == 2.0)
+		return a * a;
+	if (p == 1.0)
+		return a;
+	return pow(a, p);
+}
+
+/* The odd power x|x|^(p-1). */
+static inline double
+spow(double x, double p)
+{
+	double a = apow(x, p);
+
+	return x < 0 ? -a : a;
+}
+
+/* d/dx x|x|^(p-1) = p|x|^(p-1) (1 at x = 0 when p = 1). */
+static inline double
+dspow(double x, double p)
+{
+	double a = fabs(x);
+
+	if (p == 1.5)
+		return 1.5 * sqrt(a);
+	if (p == 2.0)
+		return 2.0 * a;
+	if (p == 1.0)
+		return 1.0;
+	return p * pow(a, p - 1.0);
+}
+
+/* d/dx |x|; at the kink x = 0 the left derivative, -1. */
+static inline double
+dabs1(double x)
+{
+	return x > 0 ? 1.0 : -1.0;
+}
+
+/* d/dx |x|^p = p x|x|^(p-2) (left derivative -1 at x = 0 when p = 1). */
+static inline double
+dapow(double x, double p)
+{
+	double d;
+
+	if (p == 1.0)
+		return dabs1(x);
+	d = dspow(x, p);
+	return x < 0 ? -d : d;
+}
+
+enum { K, P, C, NPAR };
+
+static const struct law_param shccl_params[NPAR] = {
+	[K] = { "k", { .kg = 1, .m = 1, .s = -2, .mp = -1 },
+	        0, HUGE_VAL, 1, 0, 4.254e8, LAW_PARAM_STIFFNESS,
+	        "stiffness of the Hertz term, N m^-p; k = k_H (eq. k_hertz) from the materials" },
+	[P] = { "p", { 0 }, 1, HUGE_VAL, 0, 0, 1.5, LAW_PARAM_EXPONENT_P,
+	        "exponent of the spring and of the damping; 3/2 is Hertz's" },
+	[C] = { "c", { .kg = 1, .s = -1, .mp = -1 },
+	        0, HUGE_VAL, 0, 0, 4.3e9, 0,
+	        "Hunt-Crossley damping c|x|^p v, N s m^(-p-1) (table tab:slow)" },
+};
+
+static double
+shccl_phi(const double *par, int ext, double xc, const double *z, double v)
+{
+	double p = par[P];
+
+	(void)z;
+	if (!ext && xc > 0)
+		xc = 0.0;
+	return par[K] * spow(xc, p) + par[C] * apow(xc, p) * v;
+}
+
+/* Columns (x_c, v). */
+static void
+shccl_jac(const double *par, int ext, double xc, const double *z, double v,
+          double *dphi, double *dpsi)
+{
+	double p = par[P];
+
+	(void)z;
+	(void)dpsi;
+	if (!ext && xc > 0) {
+		dphi[0] = 0.0;
+		dphi[1] = 0.0;
+		return;
+	}
+	dphi[0] = par[K] * dspow(xc, p) + par[C] * dapow(xc, p) * v;
+	dphi[1] = par[C] * apow(xc, p);
+}
+
+/* g = {x_c}. */
+static void
+shccl_kinks(const double *par, int ext, double xc, const double *z, double v,
+            double *g)
+{
+	(void)par;
+	(void)ext;
+	(void)z;
+	(void)v;
+	g[0] = xc;
+}
+
+/* k = k_H: the elastic term is the Hertzian relation itself. */
+static double
+shccl_k_hertz(const double *par, double kH)
+{
+	(void)par;
+	return kH;
+}
+
+const struct law_type law_shccl = {
+	.name = "shccl",
+	.title = "Simon-Hunt-Crossley (SHCCL)",
+	.description = "Hertz spring k x|x|^(p-1) with Hunt-Crossley damping "
+	               "c|x|^p v; continued to x_c > 0 by the same formula "
+	               "(adhesive, rule R1), or clamped at x_c = 0 when ext = 0",
+	.n_z = 0,
+	.n_params = NPAR,
+	.params = shccl_params,
+	.n_kinks = 1,
+	.phi = shccl_phi,
+	.psi = NULL,
+	.jac = shccl_jac,
+	.kinks = shccl_kinks,
+	.check = NULL,
+	.k_hertz = shccl_k_hertz,
+};
