@@ -1,0 +1,740 @@
+/*
+ * batch.c - batch mode: load a preset, apply --set overrides, run the
+ * simulator to its end, print a report for a reader of the paper and write
+ * the CSV files.
+ *
+ * The report (stdout) has three parts:
+ *  1. a header block: preset, law, system, bodies, loads, initial state,
+ *     derived values and the run settings (with the per-component scales
+ *     of the absolute tolerance);
+ *  2. the collision table, one row per completed collision, in fixed units
+ *     chosen per column from the data's magnitude (ASCII only), then the
+ *     contact in progress if any;
+ *  3. a summary: why the run ended, the end state and the work done.
+ * --quiet keeps only the summary.  Errors, and the "wrote FILE" lines of an
+ * export, go to stderr.
+ *
+ * Bad input is refused before anything runs: the preset, every --set and
+ * the export paths are checked first, so a bad invocation (exit 2) never
+ * leaves a CSV behind.  A run that fails numerically (exit 1) still prints
+ * and writes what it computed.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "hybounce/arc.h"
+#include "hybounce/check.h"
+#include "hybounce/collisions.h"
+#include "hybounce/csv.h"
+#include "hybounce/law.h"
+#include "hybounce/preset.h"
+#include "hybounce/scene.h"
+#include "hybounce/sim.h"
+#include "hybounce/status.h"
+#include "hybounce/units.h"
+
+#include "batch.h"
+
+#define PROG "hybounce"
+
+/* N m^-3/2: the Hertz coefficient k_H = 4/3 E* sqrt(R_e). */
+static const struct unit_dim dim_kH = { 1, -0.5, -2, 0, 0 };
+
+static void
+err(const char *msg)
+{
+	fprintf(stderr, PROG ": %s\n", msg);
+}
+
+/* A value with its unit, 6 significant digits, into buf. */
+static const char *
+fmt(double v, struct unit_dim d, char *buf, size_t n)
+{
+	if (isinf(v))
+		snprintf(buf, n, "%s", v > 0 ? "inf" : "-inf");
+	else if (isnan(v))
+		snprintf(buf, n, "-");
+	else
+		units_format(v, d, 6, buf, n);
+	return buf;
+}
+
+/* Replaces a UTF-8 micro sign by 'u', in place: the report is ASCII. */
+static void
+ascii_micro(char *s)
+{
+	char *p;
+
+	while ((p = strstr(s, "\xc2\xb5")) != NULL) {
+		*p = 'u';
+		memmove(p + 1, p + 2, strlen(p + 2) + 1);
+	}
+	while ((p = strstr(s, "\xce\xbc")) != NULL) {
+		*p = 'u';
+		memmove(p + 1, p + 2, strlen(p + 2) + 1);
+	}
+}
+
+/* ------------------------------------------------------------------ */
+/* Input: preset, --set, export paths                                  */
+
+/*
+ * Applies "KEY=VALUE" to the scene.  Returns 0, or 2 after printing a
+ * message naming the key and what is accepted.
+ */
+static int
+apply_set(struct scene *sc, const char *arg)
+{
+	char key[128], msg[512];
+	const char *eq = strchr(arg, '=');
+	const char *k0 = arg, *k1;
+
+	if (eq == NULL) {
+		fprintf(stderr, PROG ": --set '%s': expected KEY=VALUE, e.g. "
+		        "--set law.c=0.4 or --set initial.x0='40 um'\n", arg);
+		return 2;
+	}
+	k1 = eq;
+	while (k0 < k1 && (*k0 == ' ' || *k0 == '\t'))
+		k0++;
+	while (k1 > k0 && (k1[-1] == ' ' || k1[-1] == '\t'))
+		k1--;
+	if (k1 == k0 || (size_t)(k1 - k0) >= sizeof key) {
+		fprintf(stderr, PROG ": --set '%s': expected KEY=VALUE with a key "
+		        "such as law.c, body1.R, initial.x0, run.rtol, scene.law\n", arg);
+		return 2;
+	}
+	memcpy(key, k0, (size_t)(k1 - k0));
+	key[k1 - k0] = '\0';
+	msg[0] = '\0';
+	if (scene_set(sc, key, eq + 1, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": --set %s: %s\n", arg,
+		        msg[0] ? msg : "rejected");
+		return 2;
+	}
+	return 0;
+}
+
+/* 1 if path ends in suffix. */
+static int
+ends_with(const char *path, const char *suffix)
+{
+	size_t a = strlen(path), b = strlen(suffix);
+
+	return a >= b && strcmp(path + a - b, suffix) == 0;
+}
+
+/*
+ * Checks, before the run, that an export path can be written: its folder
+ * exists and is writable, and the path is not a folder.  Returns 0, or 2
+ * after printing why.
+ */
+static int
+check_export_path(const char *opt, const char *path)
+{
+	char dir[4096];
+	const char *slash;
+	struct stat st;
+
+	if (path[0] == '\0') {
+		fprintf(stderr, PROG ": %s: empty file name; expected a path such as "
+		        "run.csv\n", opt);
+		return 2;
+	}
+	if (ends_with(path, ".preset")) {
+		fprintf(stderr, PROG ": %s %s: the scene is saved beside the CSV as "
+		        "NAME.preset; give the CSV another extension (e.g. .csv)\n",
+		        opt, path);
+		return 2;
+	}
+	if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+		fprintf(stderr, PROG ": %s %s: is a folder; expected a file path\n",
+		        opt, path);
+		return 2;
+	}
+	slash = strrchr(path, '/');
+	if (slash == NULL)
+		snprintf(dir, sizeof dir, ".");
+	else if (slash == path)
+		snprintf(dir, sizeof dir, "/");
+	else
+		snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
+	if (stat(dir, &st) != 0) {
+		fprintf(stderr, PROG ": %s %s: cannot write there: folder %s: %s; "
+		        "expected a path in an existing, writable folder\n",
+		        opt, path, dir, strerror(errno));
+		return 2;
+	}
+	if (!S_ISDIR(st.st_mode)) {
+		fprintf(stderr, PROG ": %s %s: cannot write there: %s is not a folder\n",
+		        opt, path, dir);
+		return 2;
+	}
+	if (access(dir, W_OK) != 0) {
+		fprintf(stderr, PROG ": %s %s: cannot write there: folder %s: %s; "
+		        "expected a path in an existing, writable folder\n",
+		        opt, path, dir, strerror(errno));
+		return 2;
+	}
+	return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* Header block                                                        */
+
+static void
+print_law(const struct scene *sc)
+{
+	const struct law_type *law = sc->law;
+	double p = law_exponent_p(law, sc->par), nn = law_exponent_n(law, sc->par);
+	char b[64];
+	int i;
+
+	printf("law         %s: %s\n", law->name, law->title);
+	printf("            extension beyond x_c = 0 (rule R1): %s\n",
+	       sc->ext ? "adhesive" : "none (clamped)");
+	for (i = 0; i < law->n_params; i++) {
+		const struct law_param *pp = &law->params[i];
+
+		printf("            %-8s = %s%s\n", pp->name,
+		       fmt(sc->par[i], units_resolve(pp->dim, p, nn), b, sizeof b),
+		       (pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived
+		           ? "  (derived from k_H)" : "");
+	}
+}
+
+static void
+print_body(int k, const struct scene_body *bd)
+{
+	char e[64], r[64], rho[64], m[64];
+
+	printf("body %d      %s:", k + 1, bd->name[0] ? bd->name : "(unnamed)");
+	if (bd->has_material)
+		printf(" E = %s, nu = %g,", fmt(bd->E, UNIT_PRESSURE, e, sizeof e), bd->nu);
+	if (bd->rho > 0)
+		printf(" rho = %s,", fmt(bd->rho, UNIT_DENSITY, rho, sizeof rho));
+	printf(" R = %s%s, m = %s%s\n", fmt(bd->R, UNIT_LENGTH, r, sizeof r),
+	       isinf(bd->R) ? " (flat)" : "",
+	       fmt(bd->mass, UNIT_MASS, m, sizeof m),
+	       isinf(bd->mass) ? " (fixed obstacle)" : bd->mass_given ? " (given)" : "");
+}
+
+static void
+print_header(const char *preset, const char *path, const struct scene *sc,
+             const struct sim_stats *st)
+{
+	const struct scene_derived *d = &sc->d;
+	char a[64], b[64], c[64], e[64];
+	int i, k;
+
+	printf("hybounce %s batch run\n", HYBOUNCE_VERSION);
+	printf("preset      %s (%s)\n", preset, path);
+	printf("title       %s\n", sc->name);
+	if (sc->description[0])
+		printf("            %s\n", sc->description);
+	print_law(sc);
+	if (d->system == SCENE_REDUCED)
+		printf("system      reduced H_r: body 2 is a fixed obstacle\n");
+	else
+		printf("system      full H_f: two finite masses on a common axis\n");
+	for (k = 0; k < 2; k++)
+		print_body(k, &sc->body[k]);
+	printf("loads       g = %s, F1 = %s, F2 = %s",
+	       fmt(sc->loads.g, UNIT_ACCEL, a, sizeof a),
+	       fmt(sc->loads.F1, UNIT_FORCE, b, sizeof b),
+	       fmt(sc->loads.F2, UNIT_FORCE, c, sizeof c));
+	if (sc->loads.ramp)
+		printf(", ramp: F_e0 = %s, T_s = %s, T_e = %s",
+		       fmt(sc->loads.Fe0, UNIT_FORCE, a, sizeof a),
+		       fmt(sc->loads.Ts, UNIT_TIME, b, sizeof b),
+		       fmt(sc->loads.Te, UNIT_TIME, c, sizeof c));
+	printf("\n");
+	printf("initial     x0 = %s, v0 = %s",
+	       fmt(sc->init.x0, UNIT_LENGTH, a, sizeof a),
+	       fmt(sc->init.v0, UNIT_VELOCITY, b, sizeof b));
+	if (d->system == SCENE_FULL)
+		printf(", x_m0 = %s, v_m0 = %s",
+		       fmt(sc->init.xm0, UNIT_LENGTH, a, sizeof a),
+		       fmt(sc->init.vm0, UNIT_VELOCITY, b, sizeof b));
+	printf("\n");
+	printf("derived     E* = %s, R_e = %s, m = %s",
+	       fmt(d->Estar, UNIT_PRESSURE, a, sizeof a),
+	       fmt(d->Re, UNIT_LENGTH, b, sizeof b),
+	       fmt(d->m, UNIT_MASS, c, sizeof c));
+	if (d->system == SCENE_FULL)
+		printf("\n            m1 = %s, m2 = %s, eta = %.6g",
+		       fmt(d->m1, UNIT_MASS, a, sizeof a),
+		       fmt(d->m2, UNIT_MASS, b, sizeof b), d->eta);
+	printf("\n            k_H = %s", fmt(d->kH, dim_kH, e, sizeof e));
+	for (i = 0; i < sc->law->n_params; i++) {
+		const struct law_param *pp = &sc->law->params[i];
+
+		if (pp->flags & LAW_PARAM_STIFFNESS)
+			printf(", %s = %s%s", pp->name,
+			       fmt(sc->par[i], units_resolve(pp->dim,
+			           law_exponent_p(sc->law, sc->par),
+			           law_exponent_n(sc->law, sc->par)), a, sizeof a),
+			       d->k_derived ? " (eq. k_hertz)" : " (typed)");
+	}
+	printf("\n");
+	printf("run         T = %s, J = %ld, stepper %s, rtol = %.3g, atol = %.3g",
+	       fmt(sc->run.T, UNIT_TIME, a, sizeof a), sc->run.J,
+	       scene_stepper_name(sc->run.stepper), sc->run.rtol, sc->run.atol);
+	if (sc->run.h_max > 0)
+		printf(", h_max = %s", fmt(sc->run.h_max, UNIT_TIME, b, sizeof b));
+	printf("\n");
+	if (st != NULL && st->ncomp > 0) {
+		printf("            absolute tolerance = atol x scale:");
+		for (i = 0; i < st->ncomp && i < 8; i++)
+			printf("%s %s %.3g", i ? "," : "",
+			       st->comp[i] ? st->comp[i] : "?", st->scale[i]);
+		printf("\n");
+	}
+	printf("\n");
+}
+
+/* ------------------------------------------------------------------ */
+/* Collision table                                                     */
+
+enum col_kind { COL_INDEX, COL_VALUE, COL_RATIO };
+
+struct col {
+	const char *name;
+	const char *base;  /* "s", "m", "m/s", "N", "J"; NULL: dimensionless */
+	size_t off;        /* offset of the double in struct collision */
+	int kind;
+	/* chosen from the data: */
+	double scale;
+	char unit[24];
+	int dec, sci, width;
+};
+
+#define COL(n, b, f, k) { n, b, offsetof(struct collision, f), k, 1, "", 0, 0, 0 }
+
+static const struct col cols_init[] = {
+	COL("i", NULL, i, COL_INDEX),
+	COL("t_e", "s", te, COL_VALUE),
+	COL("t_s", "s", ts, COL_VALUE),
+	COL("t_d", "s", td, COL_VALUE),
+	COL("t_f", "s", tf, COL_VALUE),
+	COL("v_i", "m/s", vi, COL_VALUE),
+	COL("e", NULL, e, COL_RATIO),
+	COL("x_c^max", "m", xcmax, COL_VALUE),
+	COL("F_c^max", "N", Fcmax, COL_VALUE),
+	COL("x_c^r", "m", xcr, COL_VALUE),
+	COL("W", "J", W, COL_VALUE),
+	COL("Lambda", NULL, Lambda, COL_RATIO),
+};
+enum { NCOLS = sizeof cols_init / sizeof cols_init[0] };
+
+static double
+col_get(const struct col *c, const struct collision *k)
+{
+	return *(const double *)((const char *)k + c->off);
+}
+
+/* Picks scale, unit and decimals for a column from its largest magnitude. */
+static void
+col_choose(struct col *c, double mag)
+{
+	double m;
+	int digits;
+
+	c->scale = 1;
+	c->unit[0] = '\0';
+	if (c->base != NULL) {
+		char lab[16];
+
+		if (strcmp(c->base, "m/s") == 0) {
+			c->scale = units_axis(mag > 0 ? mag : 1, "m", lab, sizeof lab);
+			snprintf(c->unit, sizeof c->unit, "%s/s", lab);
+		} else {
+			c->scale = units_axis(mag > 0 ? mag : 1, c->base, lab, sizeof lab);
+			snprintf(c->unit, sizeof c->unit, "%s", lab);
+		}
+		ascii_micro(c->unit);
+		if (!(c->scale > 0) || !isfinite(c->scale)) {
+			c->scale = 1;
+			snprintf(c->unit, sizeof c->unit, "%s", c->base);
+		}
+	}
+	m = mag / c->scale;
+	c->sci = 0;
+	if (m == 0 || !isfinite(m)) {
+		c->dec = 3;
+		return;
+	}
+	if (m >= 1e6 || m < 1e-3) {
+		c->sci = 1;
+		return;
+	}
+	digits = (int)floor(log10(m)) + 1;   /* digits before the point, may be <= 0 */
+	c->dec = 5 - digits;
+	if (c->dec < 0)
+		c->dec = 0;
+	if (c->dec > 7)
+		c->dec = 7;
+}
+
+static void
+col_cell(const struct col *c, const struct collision *k, char *buf, size_t n)
+{
+	double v;
+
+	if (c->kind == COL_INDEX) {
+		snprintf(buf, n, "%ld", k->i);
+		return;
+	}
+	v = col_get(c, k);
+	if (isnan(v))
+		snprintf(buf, n, "-");
+	else if (c->sci)
+		snprintf(buf, n, "%.4e", v / c->scale);
+	else
+		snprintf(buf, n, "%.*f", c->dec, v / c->scale);
+}
+
+static void
+col_head(const struct col *c, char *buf, size_t n)
+{
+	if (c->unit[0])
+		snprintf(buf, n, "%s [%s]", c->name, c->unit);
+	else
+		snprintf(buf, n, "%s", c->name);
+}
+
+/*
+ * Prints the table of the completed collisions and, below a rule, the
+ * contact in progress (live may be NULL).
+ */
+static void
+print_table(const struct sim *s, const struct collision *live)
+{
+	struct col cols[NCOLS];
+	size_t nc = sim_ncollisions(s), r;
+	char buf[64];
+	int c, w;
+
+	memcpy(cols, cols_init, sizeof cols);
+	for (c = 0; c < NCOLS; c++) {
+		double mag = 0;
+
+		for (r = 0; r <= nc; r++) {
+			const struct collision *k = r < nc ? sim_collision(s, r) : live;
+			double v;
+
+			if (k == NULL || cols[c].kind == COL_INDEX)
+				continue;
+			v = fabs(col_get(&cols[c], k));
+			if (isfinite(v) && v > mag)
+				mag = v;
+		}
+		if (cols[c].kind != COL_INDEX)
+			col_choose(&cols[c], mag);
+		col_head(&cols[c], buf, sizeof buf);
+		w = (int)strlen(buf);
+		for (r = 0; r <= nc; r++) {
+			const struct collision *k = r < nc ? sim_collision(s, r) : live;
+
+			if (k == NULL)
+				continue;
+			col_cell(&cols[c], k, buf, sizeof buf);
+			if ((int)strlen(buf) > w)
+				w = (int)strlen(buf);
+		}
+		cols[c].width = w;
+	}
+
+	printf("collisions (%zu completed)\n", nc);
+	for (c = 0; c < NCOLS; c++) {
+		col_head(&cols[c], buf, sizeof buf);
+		printf("%s%*s", c ? "  " : "", cols[c].width, buf);
+	}
+	printf("\n");
+	for (r = 0; r < nc; r++) {
+		const struct collision *k = sim_collision(s, r);
+
+		for (c = 0; c < NCOLS; c++) {
+			col_cell(&cols[c], k, buf, sizeof buf);
+			printf("%s%*s", c ? "  " : "", cols[c].width, buf);
+		}
+		printf("\n");
+	}
+	if (live != NULL) {
+		printf("contact in progress (values so far; t_s is the last sample):\n");
+		for (c = 0; c < NCOLS; c++) {
+			col_cell(&cols[c], live, buf, sizeof buf);
+			printf("%s%*s", c ? "  " : "", cols[c].width, buf);
+		}
+		printf("\n");
+	}
+	printf("\n");
+}
+
+/* ------------------------------------------------------------------ */
+/* Jumps, summary, check                                               */
+
+static const char *
+how_str(int how)
+{
+	switch (how) {
+	case LOCATE_START: return "start";
+	case LOCATE_CLOSED_FORM: return "closed-form";
+	case LOCATE_BRENT: return "brent";
+	default: return "?";
+	}
+}
+
+static void
+print_jumps(const struct arc *a)
+{
+	size_t k, n = arc_njumps(a);
+
+	printf("jumps (%zu): t [s], j before the jump, the part of C that was left, "
+	       "how it was located,\n"
+	       "root-finder iterations, final bracket width [s], flow-set indicator "
+	       "on the C side and on the D side\n", n);
+	printf("%6s  %22s  %6s  %-28s  %-11s  %5s  %10s  %11s  %11s\n",
+	       "k", "t [s]", "j", "left", "how", "iter", "width [s]",
+	       "ind (C)", "ind (D)");
+	for (k = 0; k < n; k++) {
+		const struct arc_jump *jp = arc_jump_at(a, k);
+
+		printf("%6zu  %22.17g  %6ld  %-28s  %-11s  %5d  %10.3e  %11.3e  %11.3e\n",
+		       k, jp->t, jp->j, jp->left ? jp->left : "?", how_str(jp->how),
+		       jp->iterations, jp->width, jp->ind_lo, jp->ind_hi);
+	}
+	printf("\n");
+}
+
+static void
+print_summary(const struct sim *s)
+{
+	const struct scene *sc = sim_scene(s);
+	const struct arc *a = sim_arc(s);
+	const struct arc_sample *last = arc_last(a);
+	const struct sim_stats *st = sim_stats(s);
+	char b1[64], b2[64], b3[64];
+	int i;
+
+	printf("summary\n");
+	printf("  ended       %s\n", sim_end_str(s));
+	if (last != NULL) {
+		printf("  end state   t = %s, j = %ld, q_c = %d, x = %s, v = %s, x_c = %s",
+		       fmt(last->t, UNIT_TIME, b1, sizeof b1), last->j, last->q,
+		       fmt(last->x, UNIT_LENGTH, b2, sizeof b2),
+		       fmt(last->v, UNIT_VELOCITY, b3, sizeof b3),
+		       fmt(last->xc, UNIT_LENGTH, b1, sizeof b1));
+		for (i = 0; i < sc->law->n_z && i < LAW_MAX_Z; i++)
+			printf(", z_c%d = %.6g", i + 1, last->z[i]);
+		printf("\n");
+	}
+	printf("  collisions  %zu\n", sim_ncollisions(s));
+	printf("  run time    %s (CPU)\n", fmt(st->seconds, UNIT_TIME, b1, sizeof b1));
+	printf("  steps       %ld accepted, %ld rejected\n", st->steps, st->rejected);
+	printf("  evaluations %ld right-hand side, %ld Jacobian\n", st->rhs, st->jac);
+	printf("  events      %ld jumps, %ld kinks, %ld located by root finding, "
+	       "%ld flights in closed form\n",
+	       st->jumps, st->kinks, st->located, st->flights_closed);
+	printf("  arc         %zu samples, %zu flow intervals",
+	       arc_len(a), arc_nintervals(a));
+	if (arc_thinned(a) > 0)
+		printf(", thinned %d times (past run.max_samples = %ld)",
+		       arc_thinned(a), sc->run.max_samples);
+	else
+		printf(", not thinned");
+	printf("\n");
+}
+
+/* ------------------------------------------------------------------ */
+
+int
+batch_run(const struct batch_options *o)
+{
+	struct scene sc;
+	char path[1024], msg[1024], scene_out[1100];
+	struct collision live;
+	struct sim *s;
+	int i, status = 0, have_live, rc;
+
+	msg[0] = '\0';
+	if (preset_resolve(o->preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": preset '%s': %s\n", o->preset,
+		        msg[0] ? msg : "not found");
+		return 2;
+	}
+	msg[0] = '\0';
+	if (preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
+		err(msg[0] ? msg : path);
+		return 2;
+	}
+	for (i = 0; i < o->nsets; i++)
+		if (apply_set(&sc, o->sets[i]) != 0)
+			return 2;
+	msg[0] = '\0';
+	if (scene_validate(&sc, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": %s: %s\n", path, msg);
+		return 2;
+	}
+	if (o->trace != NULL && check_export_path("--trace", o->trace) != 0)
+		return 2;
+	if (o->collisions != NULL && check_export_path("--collisions", o->collisions) != 0)
+		return 2;
+	if (o->trace != NULL && o->collisions != NULL && strcmp(o->trace, o->collisions) == 0) {
+		fprintf(stderr, PROG ": --trace and --collisions name the same file %s; "
+		        "expected two different paths\n", o->trace);
+		return 2;
+	}
+
+	msg[0] = '\0';
+	s = sim_new(&sc, msg, sizeof msg);
+	if (s == NULL) {
+		fprintf(stderr, PROG ": %s: %s\n", path, msg[0] ? msg : "cannot start the run");
+		return 2;
+	}
+	if (!o->quiet) {
+		print_header(o->preset, path, sim_scene(s), sim_stats(s));
+		fflush(stdout);
+	}
+
+	rc = sim_run(s);
+	if (sim_end(s) == SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE)) {
+		status = 1;
+		fprintf(stderr, PROG ": the run failed: %s\n",
+		        sim_errmsg(s)[0] ? sim_errmsg(s) : status_str(rc));
+	}
+
+	have_live = sim_contact_live(s, &live);
+	if (!o->quiet)
+		print_table(s, have_live ? &live : NULL);
+	if (o->jumps)
+		print_jumps(sim_arc(s));
+	print_summary(s);
+
+	if (o->check) {
+		msg[0] = '\0';
+		if (check_solution_pair(sim_scene(s), sim_arc(s), msg, sizeof msg) == HB_OK) {
+			printf("  check       solution pair: ok (%zu samples, %zu jumps: "
+			       "ordered domain, flow samples in C, pre-jump samples in D, "
+			       "post-jump = g(pre-jump))\n",
+			       arc_len(sim_arc(s)), arc_njumps(sim_arc(s)));
+		} else {
+			printf("  check       solution pair: FAILED: %s\n", msg);
+			fprintf(stderr, PROG ": check failed: %s\n", msg);
+			if (status == 0)
+				status = 1;
+		}
+	}
+	fflush(stdout);
+
+	if (o->trace != NULL || o->collisions != NULL) {
+		msg[0] = '\0';
+		scene_out[0] = '\0';
+		if (csv_export(s, o->trace, o->collisions, scene_out, sizeof scene_out,
+		               msg, sizeof msg) != HB_OK) {
+			fprintf(stderr, PROG ": export failed: %s\n", msg);
+			status = 2;
+		} else {
+			if (o->trace != NULL)
+				fprintf(stderr, "wrote %s\n", o->trace);
+			if (o->collisions != NULL)
+				fprintf(stderr, "wrote %s\n", o->collisions);
+			if (scene_out[0])
+				fprintf(stderr, "wrote %s\n", scene_out);
+		}
+	}
+	sim_free(s);
+	return status;
+}
+
+/* ------------------------------------------------------------------ */
+/* Listings                                                            */
+
+int
+batch_list_presets(void)
+{
+	struct preset_info *pi = NULL;
+	int n = preset_list(&pi), i;
+
+	if (n < 0) {
+		err("out of memory listing the presets");
+		return 1;
+	}
+	if (n == 0) {
+		const char *const *d = preset_dirs();
+
+		fprintf(stderr, PROG ": no presets found; looked in:");
+		for (; d != NULL && *d != NULL; d++)
+			fprintf(stderr, " %s", *d);
+		fprintf(stderr, "\n");
+	}
+	for (i = 0; i < n; i++) {
+		printf("%-24s %s\n", pi[i].name, pi[i].title);
+		if (pi[i].description[0])
+			printf("%-24s %s\n", "", pi[i].description);
+	}
+	free(pi);
+	return 0;
+}
+
+/* "(0, 1)", "[1, inf)" ... */
+static void
+range_str(const struct law_param *pp, char *buf, size_t n)
+{
+	char lo[32], hi[32];
+
+	if (isinf(pp->lo))
+		snprintf(lo, sizeof lo, "-inf");
+	else
+		snprintf(lo, sizeof lo, "%g", pp->lo);
+	if (isinf(pp->hi))
+		snprintf(hi, sizeof hi, "inf");
+	else
+		snprintf(hi, sizeof hi, "%g", pp->hi);
+	snprintf(buf, n, "%c%s, %s%c",
+	         pp->lo_open || isinf(pp->lo) ? '(' : '[', lo, hi,
+	         pp->hi_open || isinf(pp->hi) ? ')' : ']');
+}
+
+int
+batch_list_laws(void)
+{
+	const struct law_type *const *l;
+
+	for (l = law_list(); *l != NULL; l++) {
+		const struct law_type *law = *l;
+		double def[LAW_MAX_PARAMS], p, nn;
+		int i;
+
+		law_defaults(law, def);
+		p = law_exponent_p(law, def);
+		nn = law_exponent_n(law, def);
+		printf("%s  %s\n", law->name, law->title);
+		printf("    %s\n", law->description);
+		printf("    internal states n_z = %d; parameters (units for the default "
+		       "exponents):\n", law->n_z);
+		for (i = 0; i < law->n_params; i++) {
+			const struct law_param *pp = &law->params[i];
+			struct unit_dim d = units_resolve(pp->dim, p, nn);
+			char unit[48], range[80], dv[64];
+
+			units_dim_str(d, unit, sizeof unit);
+			range_str(pp, range, sizeof range);
+			fmt(pp->def, d, dv, sizeof dv);
+			printf("      %-8s %-14s range %-16s default %-16s%s\n",
+			       pp->name, unit[0] ? unit : "(1)", range, dv,
+			       (pp->flags & LAW_PARAM_STIFFNESS) && law->k_hertz != NULL
+			           ? " derived from k_H when both bodies have materials" : "");
+			if (pp->help != NULL && pp->help[0])
+				printf("      %-8s %s\n", "", pp->help);
+		}
+		printf("\n");
+	}
+	return 0;
+}

@@ -1,0 +1,38 @@
+/*
+ * batch.h - batch mode of the command line: preset -> sim -> report, CSV.
+ *
+ * Every function here prints (to stdout for the report, to stderr for
+ * errors) and returns a process exit status:
+ *     0  success;
+ *     1  the run failed numerically (or --check found a violation): what was
+ *        computed is still printed and written;
+ *     2  bad input: a preset that does not resolve or load, a bad --set, an
+ *        export path that cannot be written.  Nothing is written then.
+ */
+#ifndef HYBOUNCE_CLI_BATCH_H
+#define HYBOUNCE_CLI_BATCH_H
+
+struct batch_options {
+	const char *preset;        /* name (presets/NAME.preset) or path */
+	const char *const *sets;   /* "KEY=VALUE" overrides, applied in order */
+	int nsets;
+	const char *trace;         /* arc CSV, or NULL */
+	const char *collisions;    /* collisions CSV, or NULL */
+	int jumps;                 /* 1: print every jump's location record */
+	int check;                 /* 1: run check_solution_pair and report it */
+	int quiet;                 /* 1: no header block and no collision table */
+};
+
+/* Runs one preset to its end and reports.  Returns the exit status. */
+int
+batch_run(const struct batch_options *o);
+
+/* --list-presets: name, title and description of each preset found. */
+int
+batch_list_presets(void);
+
+/* --list-laws: each law with its parameters (unit, range, default). */
+int
+batch_list_laws(void);
+
+#endif

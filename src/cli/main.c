@@ -1,0 +1,227 @@
+/*
+ * main.c - the command line: parse options, then open the explorer or run
+ * a preset in batch mode.
+ *
+ *     hybounce [OPTIONS] [PRESET]          the explorer
+ *     hybounce --batch PRESET [OPTIONS]    batch mode (batch.c)
+ *     hybounce --list-presets | --list-laws | --help | --version
+ *
+ * Exit status: 0 success; 1 the run failed numerically; 2 bad input
+ * (unknown option, bad preset, bad --set, unwritable export path).
+ * Messages from the explorer are printed here, after it has restored the
+ * terminal.
+ */
+#include <getopt.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hybounce/status.h"
+#include "app.h"
+#include "batch.h"
+
+#define PROG "hybounce"
+#define DEFAULT_PRESET "steel-on-bitumen"
+
+enum {
+	OPT_JUMPS = 256,
+	OPT_CHECK,
+	OPT_ASCII,
+	OPT_SCRIPT,
+	OPT_LIST_PRESETS,
+	OPT_LIST_LAWS,
+};
+
+static const struct option long_options[] = {
+	{ "batch",        required_argument, NULL, 'b' },
+	{ "set",          required_argument, NULL, 's' },
+	{ "trace",        required_argument, NULL, 't' },
+	{ "collisions",   required_argument, NULL, 'c' },
+	{ "jumps",        no_argument,       NULL, OPT_JUMPS },
+	{ "check",        no_argument,       NULL, OPT_CHECK },
+	{ "quiet",        no_argument,       NULL, 'q' },
+	{ "ascii",        no_argument,       NULL, OPT_ASCII },
+	{ "script",       required_argument, NULL, OPT_SCRIPT },
+	{ "list-presets", no_argument,       NULL, OPT_LIST_PRESETS },
+	{ "list-laws",    no_argument,       NULL, OPT_LIST_LAWS },
+	{ "help",         no_argument,       NULL, 'h' },
+	{ "version",      no_argument,       NULL, 'V' },
+	{ NULL, 0, NULL, 0 },
+};
+
+static void
+usage(FILE *f)
+{
+	fprintf(f,
+"usage: hybounce [OPTIONS] [PRESET]     open the explorer (default preset: "
+DEFAULT_PRESET ")\n"
+"       hybounce --batch PRESET [--set KEY=VALUE]... [--trace FILE]\n"
+"                [--collisions FILE] [--jumps] [--check] [--quiet]\n"
+"       hybounce --list-presets | --list-laws | --help | --version\n"
+"\n"
+"Repeated impacts of two bodies under incremental contact laws, as a hybrid\n"
+"system (flows and jumps over hybrid time (t, j)).\n"
+"\n"
+"  -b, --batch PRESET      run PRESET to its end without the explorer and print\n"
+"                          the scene, the collision table and a summary\n"
+"  -s, --set KEY=VALUE     override one value of the preset (repeatable), e.g.\n"
+"                          --set law.c=0.4 --set initial.x0='40 um'\n"
+"                          --set scene.law=hertz --set run.rtol=1e-9\n"
+"  -t, --trace FILE        (batch) write the hybrid arc as CSV to FILE\n"
+"  -c, --collisions FILE   (batch) write the collisions as CSV to FILE;\n"
+"                          the scene is saved beside the first CSV as .preset\n"
+"      --jumps             (batch) print how each jump was located\n"
+"      --check             (batch) check the computed solution pair (paper,\n"
+"                          section Simulation) and report it\n"
+"  -q, --quiet             (batch) print only the summary, no table\n"
+"      --ascii             (explorer) plain ASCII plots, even in a UTF-8 locale\n"
+"      --script FILE       (explorer) play keystrokes from FILE\n"
+"      --list-presets      list the presets: name, title, description\n"
+"      --list-laws         list the contact laws and their parameters\n"
+"  -h, --help              show this help\n"
+"  -V, --version           show the version\n"
+"\n"
+"PRESET is a name (presets/NAME.preset, searched in $HYBOUNCE_PRESETS,\n"
+"./presets and the installed presets) or a path to a .preset file.\n"
+"Exit status: 0 success, 1 the run failed numerically, 2 bad input.\n"
+"See hybounce(1).\n");
+}
+
+static int bad_usage(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* Prints a usage error and returns exit status 2. */
+static int
+bad_usage(const char *fmt, ...)
+{
+	va_list ap;
+
+	fprintf(stderr, PROG ": ");
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "\nTry 'hybounce --help'.\n");
+	return 2;
+}
+
+int
+main(int argc, char **argv)
+{
+	struct batch_options bo;
+	struct app_options ao;
+	const char **sets;
+	const char *batch = NULL, *script = NULL;
+	int nsets = 0, ascii = 0, list_presets = 0, list_laws = 0, c, status;
+	char msg[1024];
+
+	memset(&bo, 0, sizeof bo);
+	sets = calloc((size_t)argc + 1, sizeof *sets);
+	if (sets == NULL) {
+		fprintf(stderr, PROG ": out of memory\n");
+		return 1;
+	}
+	opterr = 1;
+	while ((c = getopt_long(argc, argv, "b:s:t:c:qhV", long_options, NULL)) != -1) {
+		switch (c) {
+		case 'b':
+			if (batch != NULL) {
+				free(sets);
+				return bad_usage("--batch given twice (%s)", optarg);
+			}
+			batch = optarg;
+			break;
+		case 's':
+			if (strchr(optarg, '=') == NULL) {
+				free(sets);
+				return bad_usage("--set '%s': expected KEY=VALUE, e.g. "
+				                 "--set law.c=0.4", optarg);
+			}
+			sets[nsets++] = optarg;
+			break;
+		case 't': bo.trace = optarg; break;
+		case 'c': bo.collisions = optarg; break;
+		case OPT_JUMPS: bo.jumps = 1; break;
+		case OPT_CHECK: bo.check = 1; break;
+		case 'q': bo.quiet = 1; break;
+		case OPT_ASCII: ascii = 1; break;
+		case OPT_SCRIPT: script = optarg; break;
+		case OPT_LIST_PRESETS: list_presets = 1; break;
+		case OPT_LIST_LAWS: list_laws = 1; break;
+		case 'h':
+			usage(stdout);
+			free(sets);
+			return 0;
+		case 'V':
+			printf("hybounce %s\n", HYBOUNCE_VERSION);
+			free(sets);
+			return 0;
+		default: /* getopt_long has said what was wrong */
+			fprintf(stderr, "Try 'hybounce --help'.\n");
+			free(sets);
+			return 2;
+		}
+	}
+
+	if (list_presets || list_laws) {
+		if (batch != NULL || optind < argc) {
+			free(sets);
+			return bad_usage("%s takes no preset", list_laws ? "--list-laws"
+			                                                : "--list-presets");
+		}
+		status = 0;
+		if (list_laws)
+			status = batch_list_laws();
+		if (list_presets && status == 0) {
+			if (list_laws)
+				printf("\n");
+			status = batch_list_presets();
+		}
+		free(sets);
+		return status;
+	}
+
+	if (batch != NULL) {
+		if (optind < argc) {
+			free(sets);
+			return bad_usage("unexpected argument '%s' (the preset of batch "
+			                 "mode is the argument of --batch)", argv[optind]);
+		}
+		if (ascii || script != NULL) {
+			free(sets);
+			return bad_usage("%s is an option of the explorer, not of --batch",
+			                 ascii ? "--ascii" : "--script");
+		}
+		bo.preset = batch;
+		bo.sets = sets;
+		bo.nsets = nsets;
+		status = batch_run(&bo);
+		free(sets);
+		return status;
+	}
+
+	/* The explorer. */
+	if (bo.trace != NULL || bo.collisions != NULL || bo.jumps || bo.check || bo.quiet) {
+		const char *o = bo.trace ? "--trace" : bo.collisions ? "--collisions"
+		              : bo.jumps ? "--jumps" : bo.check ? "--check" : "--quiet";
+
+		free(sets);
+		return bad_usage("%s needs --batch PRESET (the explorer exports with "
+		                 "its own key)", o);
+	}
+	if (argc - optind > 1) {
+		free(sets);
+		return bad_usage("more than one preset given ('%s' ...)", argv[optind + 1]);
+	}
+	memset(&ao, 0, sizeof ao);
+	ao.preset = optind < argc ? argv[optind] : NULL;
+	ao.sets = sets;
+	ao.nsets = nsets;
+	ao.ascii = ascii;
+	ao.script = script;
+	msg[0] = '\0';
+	status = app_run(&ao, msg, sizeof msg);
+	if (msg[0] != '\0')
+		fprintf(stderr, PROG ": %s\n", msg);
+	free(sets);
+	return status;
+}

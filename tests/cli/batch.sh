@@ -1,0 +1,81 @@
+#!/bin/sh
+# Batch mode on every preset in presets/: exit 0, a collision table header,
+# the summary; the paper's first study (steel-on-bitumen) has at least ten
+# collisions; --check --jumps passes on every preset.
+# Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
+set -u
+BIN=${HYBOUNCE_BIN:-build/hybounce}
+: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
+export HYBOUNCE_PRESETS
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fails=0
+ok() { echo "ok - $1"; }
+notok() {
+	echo "not ok - $1"
+	fails=$((fails + 1))
+	[ $# -gt 1 ] && [ -f "$2" ] && sed 's/^/# /' "$2" | head -n 20
+	return 0
+}
+
+npresets=0
+for f in presets/*.preset; do
+	[ -f "$f" ] || continue
+	npresets=$((npresets + 1))
+	name=$(basename "$f" .preset)
+	"$BIN" --batch "$name" >"$T/out" 2>"$T/err"
+	rc=$?
+	if [ "$rc" -eq 0 ]; then ok "batch $name exits 0"
+	else notok "batch $name exits 0 (got $rc)" "$T/err"; fi
+	if grep -q '^ *i  *t_e \[[a-z]*s\] .* e .*x_c^max \[[a-zA-Z]*m\].*Lambda$' "$T/out"; then
+		ok "batch $name prints the collision table header"
+	else
+		notok "batch $name prints the collision table header" "$T/out"
+	fi
+	if grep -q '^summary$' "$T/out" && grep -q '^  ended ' "$T/out" &&
+	    grep -q '^  end state   t = ' "$T/out" && grep -q '^  collisions  [0-9]' "$T/out" &&
+	    grep -q '^  steps       [0-9]' "$T/out"; then
+		ok "batch $name prints the summary"
+	else
+		notok "batch $name prints the summary" "$T/out"
+	fi
+	if grep -q '^preset  *'"$name"' ' "$T/out" && grep -q '^law  *[a-z]*: ' "$T/out" &&
+	    grep -Eq '^system  *(reduced H_r|full H_f)' "$T/out" &&
+	    grep -q '^derived     E\* = ' "$T/out" && grep -q '^run  *T = .*rtol = ' "$T/out"; then
+		ok "batch $name prints the header block"
+	else
+		notok "batch $name prints the header block" "$T/out"
+	fi
+	# Rows of the table: as many as the summary's count.
+	n=$(sed -n 's/^  collisions  \([0-9]*\)$/\1/p' "$T/out")
+	rows=$(awk '/^collisions \(/ { on = 1; getline; next } on && /^$/ { on = 0 }
+	            on && /^ *[0-9]+  / { n++ } END { print n + 0 }' "$T/out")
+	if [ -n "$n" ] && [ "$rows" = "$n" ]; then
+		ok "batch $name: one table row per collision ($n)"
+	else
+		notok "batch $name: one table row per collision (rows $rows, summary '$n')" "$T/out"
+	fi
+	if [ "$name" = steel-on-bitumen ]; then
+		if [ -n "$n" ] && [ "$n" -ge 10 ]; then
+			ok "batch steel-on-bitumen has >= 10 collisions ($n)"
+		else
+			notok "batch steel-on-bitumen has >= 10 collisions (got '$n')" "$T/out"
+		fi
+	fi
+
+	"$BIN" -b "$name" --check --jumps --quiet >"$T/out" 2>"$T/err"
+	rc=$?
+	if [ "$rc" -eq 0 ] && grep -q 'solution pair: ok' "$T/out" &&
+	    grep -q '^jumps ([0-9]*)' "$T/out" && ! grep -q 'collisions (' "$T/out"; then
+		ok "batch $name --check --jumps --quiet: solution pair ok"
+	else
+		notok "batch $name --check --jumps --quiet: solution pair ok (exit $rc)" "$T/out"
+		sed 's/^/# /' "$T/err" | head -n 5
+	fi
+done
+if [ "$npresets" -gt 0 ]; then ok "presets/ holds $npresets presets"
+else notok "presets/ holds presets"; fi
+if [ -f presets/steel-on-bitumen.preset ]; then ok "the default preset steel-on-bitumen exists"
+else notok "the default preset steel-on-bitumen exists"; fi
+
+[ "$fails" -eq 0 ]
