@@ -1,0 +1,299 @@
+/*
+ * arc.c - the hybrid arc (see arc.h).
+ *
+ * Invariants:
+ *  - samples are in hybrid-time order: j non-decreasing, and t
+ *    non-decreasing within each j (so t is non-decreasing overall);
+ *  - iv[] lists the flow intervals in order; iv[k].first..last are the
+ *    sample indices of interval k and cover the samples without gap;
+ *  - jp[] lists the jumps in order; jump k leads from interval j to j + 1
+ *    and both of its samples are present;
+ *  - n <= max(max_samples, number of protected samples): when n reaches the
+ *    bound, the interior samples of the older three quarters are thinned by
+ *    half.  First and last samples of an interval are never removed, so
+ *    every jump survives and rewind reaches t = 0.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "hybounce/status.h"
+#include "arc_impl.h"
+
+struct arc {
+	struct arc_sample *s;
+	size_t n, cap;
+	struct arc_interval *iv;
+	size_t niv, ivcap;
+	struct arc_jump *jp;
+	size_t nj, jcap;
+	size_t max;
+	int thinned;
+};
+
+enum { ARC_CHUNK = 4096 };
+
+struct arc *
+arc_new(size_t max_samples)
+{
+	struct arc *a = calloc(1, sizeof *a);
+
+	if (a == NULL)
+		return NULL;
+	a->max = max_samples < 1024 ? 1024 : max_samples;
+	return a;
+}
+
+void
+arc_free(struct arc *a)
+{
+	if (a == NULL)
+		return;
+	free(a->s);
+	free(a->iv);
+	free(a->jp);
+	free(a);
+}
+
+static int
+grow(void **p, size_t *cap, size_t need, size_t size)
+{
+	size_t c = *cap;
+	void *q;
+
+	if (need <= c)
+		return 0;
+	while (c < need)
+		c = c < ARC_CHUNK ? ARC_CHUNK : c * 2;
+	q = realloc(*p, c * size);
+	if (q == NULL)
+		return HB_ENOMEM;
+	*p = q;
+	*cap = c;
+	return 0;
+}
+
+/* Rebuilds the interval index from the samples. */
+static int
+reindex(struct arc *a)
+{
+	size_t i;
+
+	a->niv = 0;
+	for (i = 0; i < a->n; i++) {
+		const struct arc_sample *s = &a->s[i];
+
+		if (a->niv == 0 || a->iv[a->niv - 1].j != s->j) {
+			if (grow((void **)&a->iv, &a->ivcap, a->niv + 1, sizeof *a->iv))
+				return HB_ENOMEM;
+			a->iv[a->niv] = (struct arc_interval){ s->j, s->q, i, i, s->t, s->t };
+			a->niv++;
+		} else {
+			a->iv[a->niv - 1].last = i;
+			a->iv[a->niv - 1].t1 = s->t;
+		}
+	}
+	return 0;
+}
+
+/*
+ * Removes every other interior sample in [0, upto): a sample is interior
+ * when it is neither the first nor the last of its interval.  The interval
+ * index is rebuilt afterwards.
+ */
+static void
+thin(struct arc *a, size_t upto)
+{
+	size_t i, w = 0;
+	int drop = 0;
+
+	for (i = 0; i < a->n; i++) {
+		int first = i == 0 || a->s[i - 1].j != a->s[i].j;
+		int last = i + 1 == a->n || a->s[i + 1].j != a->s[i].j;
+
+		if (i < upto && !first && !last) {
+			drop = !drop;
+			if (drop)
+				continue;
+		}
+		a->s[w++] = a->s[i];
+	}
+	a->n = w;
+	a->thinned++;
+	reindex(a); /* cannot fail: the index only shrinks */
+}
+
+int
+arc_push(struct arc *a, const struct arc_sample *s)
+{
+	if (a->n >= a->max) {
+		size_t before = a->n;
+
+		thin(a, a->n - a->n / 4);
+		if (a->n > before - before / 8) /* mostly jumps: let it grow */
+			a->max *= 2;
+	}
+	if (grow((void **)&a->s, &a->cap, a->n + 1, sizeof *a->s))
+		return HB_ENOMEM;
+	if (a->niv == 0 || a->iv[a->niv - 1].j != s->j) {
+		if (grow((void **)&a->iv, &a->ivcap, a->niv + 1, sizeof *a->iv))
+			return HB_ENOMEM;
+		a->iv[a->niv] = (struct arc_interval){ s->j, s->q, a->n, a->n, s->t, s->t };
+		a->niv++;
+	} else {
+		a->iv[a->niv - 1].last = a->n;
+		a->iv[a->niv - 1].t1 = s->t;
+	}
+	a->s[a->n++] = *s;
+	return 0;
+}
+
+int
+arc_push_jump(struct arc *a, const struct arc_jump *jr)
+{
+	if (grow((void **)&a->jp, &a->jcap, a->nj + 1, sizeof *a->jp))
+		return HB_ENOMEM;
+	a->jp[a->nj++] = *jr;
+	return 0;
+}
+
+void
+arc_truncate(struct arc *a, size_t keep)
+{
+	long jlast;
+
+	if (keep >= a->n)
+		return;
+	a->n = keep;
+	reindex(a);
+	jlast = a->n ? a->s[a->n - 1].j : -1;
+	while (a->nj > 0 && a->jp[a->nj - 1].j >= jlast)
+		a->nj--;
+}
+
+void
+arc_set_max(struct arc *a, size_t max_samples)
+{
+	a->max = max_samples < 1024 ? 1024 : max_samples;
+	while (a->n > a->max) {
+		size_t before = a->n;
+
+		thin(a, a->n);
+		if (a->n == before)
+			break;
+	}
+}
+
+size_t
+arc_len(const struct arc *a)
+{
+	return a->n;
+}
+
+const struct arc_sample *
+arc_at(const struct arc *a, size_t i)
+{
+	return i < a->n ? &a->s[i] : NULL;
+}
+
+const struct arc_sample *
+arc_last(const struct arc *a)
+{
+	return a->n ? &a->s[a->n - 1] : NULL;
+}
+
+size_t
+arc_nintervals(const struct arc *a)
+{
+	return a->niv;
+}
+
+const struct arc_interval *
+arc_interval_at(const struct arc *a, size_t k)
+{
+	return k < a->niv ? &a->iv[k] : NULL;
+}
+
+size_t
+arc_interval_of(const struct arc *a, size_t i)
+{
+	size_t lo = 0, hi = a->niv;
+
+	/* the last interval whose first sample is <= i */
+	while (hi - lo > 1) {
+		size_t mid = lo + (hi - lo) / 2;
+
+		if (a->iv[mid].first <= i)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+size_t
+arc_njumps(const struct arc *a)
+{
+	return a->nj;
+}
+
+const struct arc_jump *
+arc_jump_at(const struct arc *a, size_t k)
+{
+	return k < a->nj ? &a->jp[k] : NULL;
+}
+
+/* 1 if sample s is at or before (t, j) in hybrid-time order. */
+static int
+not_after(const struct arc_sample *s, double t, long j)
+{
+	return s->j < j || (s->j == j && s->t <= t);
+}
+
+size_t
+arc_find(const struct arc *a, double t, long j)
+{
+	size_t lo = 0, hi = a->n;
+
+	if (a->n == 0 || !not_after(&a->s[0], t, j))
+		return 0;
+	while (hi - lo > 1) {
+		size_t mid = lo + (hi - lo) / 2;
+
+		if (not_after(&a->s[mid], t, j))
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+size_t
+arc_find_t(const struct arc *a, double t)
+{
+	size_t lo = 0, hi = a->n;
+
+	if (a->n == 0 || a->s[0].t > t)
+		return 0;
+	while (hi - lo > 1) {
+		size_t mid = lo + (hi - lo) / 2;
+
+		if (a->s[mid].t <= t)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+int
+arc_thinned(const struct arc *a)
+{
+	return a->thinned;
+}
+
+size_t
+arc_bytes(const struct arc *a)
+{
+	return sizeof *a + a->cap * sizeof *a->s + a->ivcap * sizeof *a->iv +
+	       a->jcap * sizeof *a->jp;
+}

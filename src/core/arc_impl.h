@@ -1,0 +1,26 @@
+/*
+ * arc_impl.h - the arc's constructor and mutators, private to the engine
+ * (the front ends read the arc through include/hybounce/arc.h only).
+ */
+#ifndef HYBOUNCE_ARC_IMPL_H
+#define HYBOUNCE_ARC_IMPL_H
+
+#include "hybounce/arc.h"
+
+/* An empty arc that thins beyond max_samples samples.  NULL on no memory. */
+struct arc *arc_new(size_t max_samples);
+void arc_free(struct arc *a);
+
+/* Appends a sample (hybrid-time order is the caller's duty).  Returns 0 or HB_ENOMEM. */
+int arc_push(struct arc *a, const struct arc_sample *s);
+
+/* Appends a jump record.  Returns 0 or HB_ENOMEM. */
+int arc_push_jump(struct arc *a, const struct arc_jump *jr);
+
+/* Keeps samples [0, keep) and the jumps whose post-jump sample is kept. */
+void arc_truncate(struct arc *a, size_t keep);
+
+/* Changes the memory bound (thins at once if needed). */
+void arc_set_max(struct arc *a, size_t max_samples);
+
+#endif
