@@ -290,7 +290,8 @@ print_header(const char *preset, const char *path, const struct scene *sc,
 		printf(", h_max = %s", fmt(sc->run.h_max, UNIT_TIME, b, sizeof b));
 	printf("\n");
 	if (st != NULL && st->ncomp > 0) {
-		printf("            absolute tolerance = atol x scale:");
+		printf("            absolute tolerance = atol x scale (scales of the last contact):\n"
+		       "           ");
 		for (i = 0; i < st->ncomp && i < 8; i++)
 			printf("%s %s %.3g", i ? "," : "",
 			       st->comp[i] ? st->comp[i] : "?", st->scale[i]);
@@ -520,7 +521,7 @@ print_summary(const struct sim *s)
 	const struct arc *a = sim_arc(s);
 	const struct arc_sample *last = arc_last(a);
 	const struct sim_stats *st = sim_stats(s);
-	char b1[64], b2[64], b3[64];
+	char b1[64], b2[64], b3[64], b4[64];
 	int i;
 
 	printf("summary\n");
@@ -530,7 +531,7 @@ print_summary(const struct sim *s)
 		       fmt(last->t, UNIT_TIME, b1, sizeof b1), last->j, last->q,
 		       fmt(last->x, UNIT_LENGTH, b2, sizeof b2),
 		       fmt(last->v, UNIT_VELOCITY, b3, sizeof b3),
-		       fmt(last->xc, UNIT_LENGTH, b1, sizeof b1));
+		       fmt(last->xc, UNIT_LENGTH, b4, sizeof b4));
 		for (i = 0; i < sc->law->n_z && i < LAW_MAX_Z; i++)
 			printf(", z_c%d = %.6g", i + 1, last->z[i]);
 		printf("\n");
@@ -598,11 +599,6 @@ batch_run(const struct batch_options *o)
 		fprintf(stderr, PROG ": %s: %s\n", path, msg[0] ? msg : "cannot start the run");
 		return 2;
 	}
-	if (!o->quiet) {
-		print_header(o->preset, path, sim_scene(s), sim_stats(s));
-		fflush(stdout);
-	}
-
 	rc = sim_run(s);
 	if (sim_end(s) == SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE)) {
 		status = 1;
@@ -610,9 +606,12 @@ batch_run(const struct batch_options *o)
 		        sim_errmsg(s)[0] ? sim_errmsg(s) : status_str(rc));
 	}
 
+	/* The header comes after the run: the tolerance scales are set per contact. */
 	have_live = sim_contact_live(s, &live);
-	if (!o->quiet)
+	if (!o->quiet) {
+		print_header(o->preset, path, sim_scene(s), sim_stats(s));
 		print_table(s, have_live ? &live : NULL);
+	}
 	if (o->jumps)
 		print_jumps(sim_arc(s));
 	print_summary(s);
