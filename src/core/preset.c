@@ -1,0 +1,805 @@
+/*
+ * preset.c - scenes in INI files, read with inih (see preset.h).
+ *
+ * Reading is in two passes.  inih first collects every (section, key,
+ * value, line) into a list, through a line reader of our own that counts
+ * lines (this inih build hands no line number to the handler); then the
+ * list is applied to scene_defaults() in an order that makes the meaning
+ * of each value independent of where it stands in the file:
+ *     [scene] law  (loads the law's defaults),
+ *     the rest of [scene],
+ *     [body1], [body2]  (a body section given in the file starts from an
+ *                        empty body: no material, no density, R = inf),
+ *     [law] p and n  (the units of k, c, beta, gamma depend on them),
+ *     the rest of [law], [loads], [initial], [run].
+ * Then the scene is validated as a whole.  Every error is reported as
+ * "FILE:LINE: [section] key: message; accepted: ...".
+ *
+ * inih's options are process globals in this build; they are set before
+ * each parse: no multi-line values, inline comments after ';' or '#'
+ * (preceded by white space), lines up to PRESET_MAX_LINE bytes.
+ *
+ * Writing prints every value in SI with %.17g and its unit, so that
+ * loading the file reproduces the scene bit for bit; the file is written to
+ * PATH.tmpXXXXXX in the same folder, flushed to disk and renamed.
+ */
+#include <ctype.h>
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <ini.h>
+
+#include "hybounce/preset.h"
+#include "hybounce/status.h"
+#include "hybounce/units.h"
+
+#ifndef HYBOUNCE_DATADIR
+#define HYBOUNCE_DATADIR "/usr/local/share/hybounce"
+#endif
+
+#define PRESET_MAX_LINE 1024
+#define PRESET_MAX_ENTRIES 512
+
+struct entry {
+	char section[32];
+	char name[64];
+	char *value;
+	int line;
+};
+
+struct collect {
+	struct entry *e;
+	int n;
+	int oom;
+	int overflow_line; /* first line with a section or key name too long */
+};
+
+struct source {
+	const char *p;
+	int line;
+	int long_line; /* first line longer than the reader's buffer, 0 if none */
+};
+
+/* fgets over a string, one line per call, counting lines. */
+static char *
+source_read(char *str, int num, void *stream)
+{
+	struct source *s = stream;
+	int k = 0;
+
+	if (*s->p == '\0')
+		return NULL;
+	s->line++;
+	while (*s->p != '\0' && k < num - 1) {
+		char c = *s->p++;
+		str[k++] = c;
+		if (c == '\n')
+			break;
+	}
+	str[k] = '\0';
+	if (k == num - 1 && str[k - 1] != '\n' && *s->p != '\0') {
+		/* The line does not fit: skip its rest and remember it. */
+		if (s->long_line == 0)
+			s->long_line = s->line;
+		while (*s->p != '\0' && *s->p != '\n')
+			s->p++;
+		if (*s->p == '\n')
+			s->p++;
+	}
+	return str;
+}
+
+struct handler_ctx {
+	struct collect *c;
+	struct source *src;
+};
+
+static int
+collect_handler(void *user, const char *section, const char *name, const char *value)
+{
+	struct handler_ctx *h = user;
+	struct collect *c = h->c;
+	struct entry *e;
+
+	if (c->n >= PRESET_MAX_ENTRIES) {
+		c->oom = 1;
+		return 1;
+	}
+	e = &c->e[c->n];
+	if (strlen(section) >= sizeof e->section || strlen(name) >= sizeof e->name) {
+		if (c->overflow_line == 0)
+			c->overflow_line = h->src->line;
+		return 1;
+	}
+	e->value = strdup(value);
+	if (e->value == NULL) {
+		c->oom = 1;
+		return 1;
+	}
+	strcpy(e->section, section);
+	strcpy(e->name, name);
+	e->line = h->src->line;
+	c->n++;
+	return 1;
+}
+
+static void
+collect_free(struct collect *c)
+{
+	for (int i = 0; i < c->n; i++)
+		free(c->e[i].value);
+	free(c->e);
+	c->e = NULL;
+	c->n = 0;
+}
+
+/* The keys of each section other than [law], for "known keys" messages. */
+static const struct {
+	const char *section;
+	const char *keys[10];
+} known[] = {
+	{ "scene", { "name", "description", "law", "extension" } },
+	{ "body1", { "name", "E", "nu", "rho", "R", "mass" } },
+	{ "body2", { "name", "E", "nu", "rho", "R", "mass" } },
+	{ "law", { NULL } },
+	{ "loads", { "g", "F1", "F2", "ramp", "F_e0", "T_e", "T_s" } },
+	{ "initial", { "x0", "v0", "x_m0", "v_m0" } },
+	{ "run", { "T", "J", "stepper", "rtol", "atol", "h_max", "max_samples", "chatter",
+	           "reductions" } },
+};
+#define NKNOWN (sizeof known / sizeof known[0])
+
+static int
+section_index(const char *s)
+{
+	for (size_t i = 0; i < NKNOWN; i++)
+		if (strcmp(known[i].section, s) == 0)
+			return (int)i;
+	return -1;
+}
+
+static int
+key_known(const struct scene *sc, int si, const char *name)
+{
+	if (strcmp(known[si].section, "law") == 0) {
+		int i = law_param_index(sc->law, name);
+		return i >= 0 && strcmp(sc->law->params[i].name, name) == 0;
+	}
+	for (int k = 0; k < 10 && known[si].keys[k] != NULL; k++)
+		if (strcmp(known[si].keys[k], name) == 0)
+			return 1;
+	return 0;
+}
+
+static void
+known_list(const struct scene *sc, int si, char *buf, size_t n)
+{
+	buf[0] = '\0';
+	if (strcmp(known[si].section, "law") == 0) {
+		for (int i = 0; i < sc->law->n_params; i++) {
+			size_t l = strlen(buf);
+			snprintf(buf + l, n - l, "%s%s", i ? ", " : "", sc->law->params[i].name);
+		}
+		return;
+	}
+	for (int k = 0; k < 10 && known[si].keys[k] != NULL; k++) {
+		size_t l = strlen(buf);
+		snprintf(buf + l, n - l, "%s%s", k ? ", " : "", known[si].keys[k]);
+	}
+}
+
+/*
+ * Applies one entry through scene_set, turning "KEY: rest" into
+ * "FILE:LINE: [section] name: rest".
+ */
+static int
+apply(struct scene *sc, const struct entry *e, const char *file, char *msg, size_t n)
+{
+	char key[128], m[512];
+	int si = section_index(e->section), st;
+	size_t kl;
+
+	if (!key_known(sc, si, e->name)) {
+		char list[256];
+		known_list(sc, si, list, sizeof list);
+		return status_set(msg, n, HB_EINVAL, "%s:%d: [%s] %s: unknown key; known keys: %s",
+		    file, e->line, e->section, e->name, list);
+	}
+	snprintf(key, sizeof key, "%s.%s", e->section, e->name);
+	st = scene_set(sc, key, e->value, m, sizeof m);
+	if (st == HB_OK)
+		return HB_OK;
+	kl = strlen(key);
+	if (strncmp(m, key, kl) == 0 && m[kl] == ':' && m[kl + 1] == ' ')
+		return status_set(msg, n, st, "%s:%d: [%s] %s: %s", file, e->line, e->section,
+		    e->name, m + kl + 2);
+	return status_set(msg, n, st, "%s:%d: [%s] %s: %s", file, e->line, e->section, e->name, m);
+}
+
+static const struct entry *
+entry_find(const struct collect *c, const char *section, const char *name)
+{
+	for (int i = 0; i < c->n; i++)
+		if (strcmp(c->e[i].section, section) == 0 &&
+		    (name == NULL || strcmp(c->e[i].name, name) == 0))
+			return &c->e[i];
+	return NULL;
+}
+
+static int
+is_string_key(const struct entry *e)
+{
+	return strcmp(e->name, "name") == 0 || strcmp(e->name, "description") == 0;
+}
+
+/* Is entry e a law exponent (p or n) of the current law? */
+static int
+is_exponent(const struct scene *sc, const struct entry *e)
+{
+	int i = law_param_index(sc->law, e->name);
+
+	return i >= 0 && strcmp(sc->law->params[i].name, e->name) == 0 &&
+	    (sc->law->params[i].flags & (LAW_PARAM_EXPONENT_P | LAW_PARAM_EXPONENT_N));
+}
+
+static int
+load_entries(struct collect *c, const char *file, struct scene *sc, char *msg, size_t n)
+{
+	int st;
+
+	/* Sections, duplicates and empty values. */
+	for (int i = 0; i < c->n; i++) {
+		const struct entry *e = &c->e[i];
+		if (section_index(e->section) < 0)
+			return status_set(msg, n, HB_EINVAL,
+			    "%s:%d: [%s] %s: unknown section; known sections: scene, body1, body2, "
+			    "law, loads, initial, run", file, e->line, e->section, e->name);
+		for (int j = 0; j < i; j++)
+			if (strcmp(c->e[j].section, e->section) == 0 &&
+			    strcmp(c->e[j].name, e->name) == 0)
+				return status_set(msg, n, HB_EINVAL,
+				    "%s:%d: [%s] %s: duplicate key (first given on line %d); "
+				    "accepted: one value per key", file, e->line, e->section, e->name,
+				    c->e[j].line);
+		if (e->value[0] == '\0' && !is_string_key(e))
+			return status_set(msg, n, HB_EINVAL,
+			    "%s:%d: [%s] %s: empty value; accepted: key = value", file, e->line,
+			    e->section, e->name);
+	}
+
+	scene_defaults(sc);
+	/* [scene] law first, then the rest of [scene]. */
+	const struct entry *law = entry_find(c, "scene", "law");
+	if (law != NULL && (st = apply(sc, law, file, msg, n)) != HB_OK)
+		return st;
+	for (int i = 0; i < c->n; i++)
+		if (strcmp(c->e[i].section, "scene") == 0 && &c->e[i] != law &&
+		    (st = apply(sc, &c->e[i], file, msg, n)) != HB_OK)
+			return st;
+
+	/* Bodies: a section present starts from an empty body. */
+	for (int b = 0; b < 2; b++) {
+		const char *sec = b == 0 ? "body1" : "body2";
+		const struct entry *E, *nu, *rho, *mass;
+		if (entry_find(c, sec, NULL) == NULL)
+			continue;
+		memset(&sc->body[b], 0, sizeof sc->body[b]);
+		sc->body[b].R = INFINITY;
+		for (int i = 0; i < c->n; i++)
+			if (strcmp(c->e[i].section, sec) == 0 &&
+			    (st = apply(sc, &c->e[i], file, msg, n)) != HB_OK)
+				return st;
+		E = entry_find(c, sec, "E");
+		nu = entry_find(c, sec, "nu");
+		rho = entry_find(c, sec, "rho");
+		mass = entry_find(c, sec, "mass");
+		if ((E == NULL) != (nu == NULL)) {
+			const struct entry *e = E != NULL ? E : nu;
+			return status_set(msg, n, HB_EINVAL,
+			    "%s:%d: [%s] %s: a material needs both E and nu; accepted: both, or "
+			    "neither (then give the mass and type law.k)", file, e->line, sec,
+			    e->name);
+		}
+		if (rho != NULL && mass != NULL) {
+			const struct entry *e = rho->line > mass->line ? rho : mass;
+			return status_set(msg, n, HB_EINVAL,
+			    "%s:%d: [%s] %s: give rho (with R) or mass, not both; accepted: one "
+			    "of them", file, e->line, sec, e->name);
+		}
+	}
+	scene_derive(sc, NULL, 0);
+
+	/* [law]: the exponents first. */
+	for (int pass = 0; pass < 2; pass++)
+		for (int i = 0; i < c->n; i++) {
+			const struct entry *e = &c->e[i];
+			if (strcmp(e->section, "law") != 0 || is_exponent(sc, e) != (pass == 0))
+				continue;
+			if ((st = apply(sc, e, file, msg, n)) != HB_OK)
+				return st;
+		}
+	static const char *const rest[] = { "loads", "initial", "run" };
+	for (size_t s = 0; s < 3; s++)
+		for (int i = 0; i < c->n; i++)
+			if (strcmp(c->e[i].section, rest[s]) == 0 &&
+			    (st = apply(sc, &c->e[i], file, msg, n)) != HB_OK)
+				return st;
+
+	/* The scene as a whole; name the line of the key at fault. */
+	char m[512];
+	st = scene_validate(sc, m, sizeof m);
+	if (st != HB_OK) {
+		char sec[32] = "", name[64] = "";
+		const char *colon = strstr(m, ": ");
+		const char *dot = strchr(m, '.');
+		const struct entry *e = NULL;
+		if (colon != NULL && dot != NULL && dot < colon &&
+		    (size_t)(dot - m) < sizeof sec && (size_t)(colon - dot - 1) < sizeof name) {
+			memcpy(sec, m, (size_t)(dot - m));
+			sec[dot - m] = '\0';
+			memcpy(name, dot + 1, (size_t)(colon - dot - 1));
+			name[colon - dot - 1] = '\0';
+			e = entry_find(c, sec, name);
+			if (e == NULL)
+				e = entry_find(c, sec, NULL);
+			if (e != NULL)
+				return status_set(msg, n, st, "%s:%d: [%s] %s: %s", file, e->line, sec,
+				    name, colon + 2);
+			return status_set(msg, n, st, "%s: [%s] %s: %s", file, sec, name, colon + 2);
+		}
+		return status_set(msg, n, st, "%s: %s", file, m);
+	}
+	return HB_OK;
+}
+
+int
+preset_load_string(const char *text, const char *name, struct scene *sc, char *msg, size_t n)
+{
+	struct collect c = { 0 };
+	struct source src = { text, 0, 0 };
+	struct handler_ctx h = { &c, &src };
+	int r, st;
+
+	if (name == NULL)
+		name = "(string)";
+	c.e = calloc(PRESET_MAX_ENTRIES, sizeof *c.e);
+	if (c.e == NULL)
+		return status_set(msg, n, HB_ENOMEM, "%s: out of memory", name);
+	ini_allow_multiline = 0;
+	ini_allow_inline_comments = 1;
+	ini_inline_comment_prefixes = (char *)";#";
+	ini_start_comment_prefixes = (char *)";#";
+	ini_allow_no_value = 0;
+	ini_stop_on_first_error = 0;
+	ini_max_line = PRESET_MAX_LINE;
+	r = ini_parse_stream(source_read, &src, collect_handler, &h);
+	if (src.long_line != 0 && (r <= 0 || src.long_line <= r))
+		st = status_set(msg, n, HB_EINVAL,
+		    "%s:%d: line too long; accepted: at most %d characters", name, src.long_line,
+		    PRESET_MAX_LINE - 3);
+	else if (r > 0)
+		st = status_set(msg, n, HB_EINVAL,
+		    "%s:%d: malformed line (expected key = value or [section]); accepted: "
+		    "[section], key = value, ; comment", name, r);
+	else if (r < 0 || c.oom)
+		st = status_set(msg, n, HB_ENOMEM, "%s: out of memory (or more than %d keys)", name,
+		    PRESET_MAX_ENTRIES);
+	else if (c.overflow_line)
+		st = status_set(msg, n, HB_EINVAL,
+		    "%s:%d: section or key name too long; accepted: the keys of preset.h", name,
+		    c.overflow_line);
+	else
+		st = load_entries(&c, name, sc, msg, n);
+	collect_free(&c);
+	return st;
+}
+
+/* Reads a whole file into a malloc'd string. */
+static int
+read_file(const char *path, char **out, char *msg, size_t n)
+{
+	FILE *f = fopen(path, "rb");
+	char *buf = NULL;
+	size_t len = 0, cap = 0;
+
+	if (f == NULL)
+		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+	for (;;) {
+		size_t got;
+		if (cap - len < 4096) {
+			char *nb = realloc(buf, cap + 65536);
+			if (nb == NULL) {
+				free(buf);
+				fclose(f);
+				return status_set(msg, n, HB_ENOMEM, "%s: out of memory", path);
+			}
+			buf = nb;
+			cap += 65536;
+		}
+		got = fread(buf + len, 1, cap - len - 1, f);
+		len += got;
+		if (got == 0)
+			break;
+	}
+	if (ferror(f)) {
+		int e = errno;
+		free(buf);
+		fclose(f);
+		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e ? e : EIO));
+	}
+	fclose(f);
+	buf[len] = '\0';
+	if (strlen(buf) != len) {
+		free(buf);
+		return status_set(msg, n, HB_EINVAL, "%s: not a text file (contains NUL bytes)",
+		    path);
+	}
+	*out = buf;
+	return HB_OK;
+}
+
+int
+preset_load(const char *path, struct scene *sc, char *msg, size_t n)
+{
+	char *text = NULL;
+	int st = read_file(path, &text, msg, n);
+
+	if (st != HB_OK)
+		return st;
+	st = preset_load_string(text, path, sc, msg, n);
+	free(text);
+	return st;
+}
+
+/* ---------------------------------------------------------------- */
+/* Writing */
+
+struct out {
+	char *buf;
+	size_t n, len;
+};
+
+static void
+out_printf(struct out *o, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+static void
+out_printf(struct out *o, const char *fmt, ...)
+{
+	va_list ap;
+	int k;
+	size_t room = o->len < o->n ? o->n - o->len : 0;
+
+	va_start(ap, fmt);
+	k = vsnprintf(room ? o->buf + o->len : NULL, room, fmt, ap);
+	va_end(ap);
+	if (k > 0)
+		o->len += (size_t)k;
+}
+
+/* "key = %.17g UNIT" */
+static void
+out_value(struct out *o, const char *key, double v, struct unit_dim dim)
+{
+	char u[64];
+
+	units_dim_str(dim, u, sizeof u);
+	if (strcmp(u, "") == 0)
+		out_printf(o, "%s = %.17g\n", key, v);
+	else
+		out_printf(o, "%s = %.17g %s\n", key, v, u);
+}
+
+size_t
+preset_format(const struct scene *sc, char *buf, size_t n)
+{
+	struct out o = { buf, n, 0 };
+	char r[16];
+	double p, nn;
+
+	if (buf != NULL && n > 0)
+		buf[0] = '\0';
+#ifdef HYBOUNCE_VERSION
+	out_printf(&o, "; hybounce %s preset: SI values that reproduce the scene exactly\n",
+	    HYBOUNCE_VERSION);
+#else
+	out_printf(&o, "; hybounce preset: SI values that reproduce the scene exactly\n");
+#endif
+	out_printf(&o, "\n[scene]\n");
+	out_printf(&o, "name = %s\n", sc->name);
+	out_printf(&o, "description = %s\n", sc->description);
+	out_printf(&o, "law = %s\n", sc->law != NULL ? sc->law->name : "");
+	out_printf(&o, "extension = %s\n", sc->ext ? "adhesive" : "none");
+	for (int b = 0; b < 2; b++) {
+		const struct scene_body *bd = &sc->body[b];
+		out_printf(&o, "\n[body%d]\n", b + 1);
+		out_printf(&o, "name = %s\n", bd->name);
+		if (bd->has_material) {
+			out_value(&o, "E", bd->E, UNIT_PRESSURE);
+			out_value(&o, "nu", bd->nu, UNIT_NONE);
+		}
+		if (!bd->mass_given && bd->rho != 0)
+			out_value(&o, "rho", bd->rho, UNIT_DENSITY);
+		out_value(&o, "R", bd->R, UNIT_LENGTH);
+		if (bd->mass_given)
+			out_value(&o, "mass", bd->mass, UNIT_MASS);
+	}
+	out_printf(&o, "\n[law]\n");
+	if (sc->law != NULL) {
+		p = law_exponent_p(sc->law, sc->par);
+		nn = law_exponent_n(sc->law, sc->par);
+		for (int i = 0; i < sc->law->n_params; i++) {
+			const struct law_param *pp = &sc->law->params[i];
+			if ((pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived)
+				continue;
+			out_value(&o, pp->name, sc->par[i], units_resolve(pp->dim, p, nn));
+		}
+	}
+	out_printf(&o, "\n[loads]\n");
+	out_value(&o, "g", sc->loads.g, UNIT_ACCEL);
+	out_value(&o, "F1", sc->loads.F1, UNIT_FORCE);
+	out_value(&o, "F2", sc->loads.F2, UNIT_FORCE);
+	out_printf(&o, "ramp = %s\n", sc->loads.ramp ? "yes" : "no");
+	out_value(&o, "F_e0", sc->loads.Fe0, UNIT_FORCE);
+	out_value(&o, "T_e", sc->loads.Te, UNIT_TIME);
+	out_value(&o, "T_s", sc->loads.Ts, UNIT_TIME);
+	out_printf(&o, "\n[initial]\n");
+	out_value(&o, "x0", sc->init.x0, UNIT_LENGTH);
+	out_value(&o, "v0", sc->init.v0, UNIT_VELOCITY);
+	out_value(&o, "x_m0", sc->init.xm0, UNIT_LENGTH);
+	out_value(&o, "v_m0", sc->init.vm0, UNIT_VELOCITY);
+	out_printf(&o, "\n[run]\n");
+	out_value(&o, "T", sc->run.T, UNIT_TIME);
+	out_printf(&o, "J = %ld\n", sc->run.J);
+	out_printf(&o, "stepper = %s\n", scene_stepper_name(sc->run.stepper));
+	out_value(&o, "rtol", sc->run.rtol, UNIT_NONE);
+	out_value(&o, "atol", sc->run.atol, UNIT_NONE);
+	out_value(&o, "h_max", sc->run.h_max, UNIT_TIME);
+	out_printf(&o, "max_samples = %ld\n", sc->run.max_samples);
+	out_printf(&o, "chatter = %d\n", sc->run.chatter);
+	if ((sc->run.reduce & REDUCE_ALL) == REDUCE_ALL)
+		snprintf(r, sizeof r, "all");
+	else if (sc->run.reduce == 0)
+		snprintf(r, sizeof r, "none");
+	else
+		r[0] = '\0';
+	if (r[0] != '\0')
+		out_printf(&o, "reductions = %s\n", r);
+	else
+		out_printf(&o, "reductions = %s%s%s%s%s\n",
+		    sc->run.reduce & REDUCE_FLIGHT ? "flight" : "",
+		    (sc->run.reduce & REDUCE_FLIGHT) && (sc->run.reduce & 6) ? "," : "",
+		    sc->run.reduce & REDUCE_CONTACT ? "contact" : "",
+		    (sc->run.reduce & REDUCE_CONTACT) && (sc->run.reduce & REDUCE_COM) ? "," : "",
+		    sc->run.reduce & REDUCE_COM ? "com" : "");
+	return o.len;
+}
+
+int
+preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
+{
+	size_t len = preset_format(sc, NULL, 0), tl = strlen(path) + 16;
+	char *buf = malloc(len + 1), *tmp = malloc(tl);
+	int fd, e = 0;
+	mode_t um;
+
+	if (buf == NULL || tmp == NULL) {
+		free(buf);
+		free(tmp);
+		return status_set(msg, n, HB_ENOMEM, "%s: out of memory", path);
+	}
+	preset_format(sc, buf, len + 1);
+	snprintf(tmp, tl, "%s.tmpXXXXXX", path);
+	fd = mkstemp(tmp);
+	if (fd < 0) {
+		e = errno;
+		free(buf);
+		free(tmp);
+		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
+	}
+	um = umask(0);
+	umask(um);
+	if (fchmod(fd, 0666 & ~um) != 0)
+		e = errno;
+	for (size_t off = 0; e == 0 && off < len;) {
+		ssize_t w = write(fd, buf + off, len - off);
+		if (w < 0) {
+			if (errno == EINTR)
+				continue;
+			e = errno;
+		} else
+			off += (size_t)w;
+	}
+	if (e == 0 && fsync(fd) != 0)
+		e = errno;
+	if (close(fd) != 0 && e == 0)
+		e = errno;
+	if (e == 0 && rename(tmp, path) != 0)
+		e = errno;
+	if (e != 0)
+		unlink(tmp);
+	free(buf);
+	free(tmp);
+	if (e != 0)
+		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
+	return HB_OK;
+}
+
+/* ---------------------------------------------------------------- */
+/* Finding presets */
+
+#define PRESET_MAX_DIRS 16
+
+const char *const *
+preset_dirs(void)
+{
+	static char store[PRESET_MAX_DIRS][512];
+	static const char *dirs[PRESET_MAX_DIRS + 1];
+	const char *env = getenv("HYBOUNCE_PRESETS");
+	int k = 0;
+
+	if (env != NULL) {
+		const char *p = env;
+		while (*p != '\0' && k < PRESET_MAX_DIRS - 2) {
+			const char *q = strchr(p, ':');
+			size_t l = q != NULL ? (size_t)(q - p) : strlen(p);
+			if (l > 0 && l < sizeof store[0]) {
+				memcpy(store[k], p, l);
+				store[k][l] = '\0';
+				dirs[k] = store[k];
+				k++;
+			}
+			p += l;
+			if (*p == ':')
+				p++;
+		}
+	}
+	snprintf(store[k], sizeof store[k], "presets");
+	dirs[k] = store[k];
+	k++;
+	snprintf(store[k], sizeof store[k], "%s/presets", HYBOUNCE_DATADIR);
+	dirs[k] = store[k];
+	k++;
+	dirs[k] = NULL;
+	return dirs;
+}
+
+static int
+is_file(const char *path)
+{
+	struct stat st;
+
+	return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+int
+preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn)
+{
+	const char *const *dirs;
+	char path[1024], where[1024] = "";
+
+	if (name == NULL || name[0] == '\0')
+		return status_set(msg, mn, HB_EINVAL, "no preset name given");
+	if (is_file(name)) {
+		if (strlen(name) >= n)
+			return status_set(msg, mn, HB_EINVAL, "%s: path too long", name);
+		snprintf(out, n, "%s", name);
+		return HB_OK;
+	}
+	if (strchr(name, '/') == NULL) {
+		dirs = preset_dirs();
+		for (int i = 0; dirs[i] != NULL; i++) {
+			for (int ext = 0; ext < 2; ext++) {
+				snprintf(path, sizeof path, "%s/%s%s", dirs[i], name,
+				    ext ? ".preset" : "");
+				if (is_file(path)) {
+					if (strlen(path) >= n)
+						return status_set(msg, mn, HB_EINVAL, "%s: path too long",
+						    path);
+					snprintf(out, n, "%s", path);
+					return HB_OK;
+				}
+			}
+			size_t l = strlen(where);
+			snprintf(where + l, sizeof where - l, "%s%s", i ? ", " : "", dirs[i]);
+		}
+		return status_set(msg, mn, HB_EINVAL,
+		    "no preset '%s': not a file, and neither %s nor %s.preset is in %s", name, name,
+		    name, where);
+	}
+	return status_set(msg, mn, HB_EINVAL, "%s: %s", name, strerror(ENOENT));
+}
+
+struct title_ctx {
+	char title[96];
+	char description[256];
+};
+
+static int
+title_handler(void *user, const char *section, const char *name, const char *value)
+{
+	struct title_ctx *t = user;
+
+	if (strcmp(section, "scene") != 0)
+		return 1;
+	if (strcmp(name, "name") == 0)
+		snprintf(t->title, sizeof t->title, "%s", value);
+	else if (strcmp(name, "description") == 0)
+		snprintf(t->description, sizeof t->description, "%s", value);
+	return 1;
+}
+
+static int
+info_cmp(const void *a, const void *b)
+{
+	return strcmp(((const struct preset_info *)a)->name, ((const struct preset_info *)b)->name);
+}
+
+int
+preset_list(struct preset_info **out)
+{
+	const char *const *dirs = preset_dirs();
+	struct preset_info *v = NULL;
+	int cnt = 0, cap = 0;
+
+	*out = NULL;
+	for (int i = 0; dirs[i] != NULL; i++) {
+		DIR *d = opendir(dirs[i]);
+		struct dirent *de;
+		if (d == NULL)
+			continue;
+		while ((de = readdir(d)) != NULL) {
+			size_t l = strlen(de->d_name);
+			struct preset_info pi;
+			struct title_ctx t = { "", "" };
+			int dup = 0;
+			if (l <= 7 || strcmp(de->d_name + l - 7, ".preset") != 0 || l - 7 >= sizeof pi.name)
+				continue;
+			memset(&pi, 0, sizeof pi);
+			memcpy(pi.name, de->d_name, l - 7);
+			for (int k = 0; k < cnt; k++)
+				if (strcmp(v[k].name, pi.name) == 0)
+					dup = 1;
+			if (dup)
+				continue;
+			if ((size_t)snprintf(pi.path, sizeof pi.path, "%s/%s", dirs[i], de->d_name) >=
+			    sizeof pi.path || !is_file(pi.path))
+				continue;
+			ini_max_line = PRESET_MAX_LINE;
+			ini_inline_comment_prefixes = (char *)";#";
+			ini_parse(pi.path, title_handler, &t);
+			snprintf(pi.title, sizeof pi.title, "%s", t.title);
+			snprintf(pi.description, sizeof pi.description, "%s", t.description);
+			if (cnt == cap) {
+				int nc = cap ? 2 * cap : 16;
+				struct preset_info *nv = realloc(v, (size_t)nc * sizeof *nv);
+				if (nv == NULL) {
+					closedir(d);
+					free(v);
+					return -1;
+				}
+				v = nv;
+				cap = nc;
+			}
+			v[cnt++] = pi;
+		}
+		closedir(d);
+	}
+	if (cnt > 1)
+		qsort(v, (size_t)cnt, sizeof *v, info_cmp);
+	if (cnt == 0) {
+		free(v);
+		v = malloc(sizeof *v); /* a valid pointer to free even when empty */
+		if (v == NULL)
+			return -1;
+	}
+	*out = v;
+	return cnt;
+}

@@ -1,0 +1,534 @@
+/*
+ * units.c - values with SI-prefixed units, in and out (see units.h).
+ *
+ * A unit is a product of factors SYMBOL[^EXPONENT], separated by spaces or
+ * '*'; everything right of the first '/' that is not part of an exponent
+ * is in the denominator.  A factor is a symbol (m g s N Pa J W Hz), or a
+ * prefix followed by a symbol; a token that is itself a symbol is that
+ * symbol (longest match: "m" is the metre, "mm" the millimetre, "Pa" the
+ * pascal, "PPa" the petapascal).  Exponents are integers, decimals or
+ * fractions ("m^-5/2"): after '^', a '/' followed by a digit continues the
+ * exponent.
+ *
+ * Dimensions are exponents of kg, m and s; two dimensions are equal when
+ * every exponent agrees within 1e-9.
+ */
+#include <ctype.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hybounce/status.h"
+#include "hybounce/units.h"
+
+const struct unit_dim UNIT_NONE = { 0, 0, 0, 0, 0 };
+const struct unit_dim UNIT_LENGTH = { 0, 1, 0, 0, 0 };
+const struct unit_dim UNIT_TIME = { 0, 0, 1, 0, 0 };
+const struct unit_dim UNIT_MASS = { 1, 0, 0, 0, 0 };
+const struct unit_dim UNIT_VELOCITY = { 0, 1, -1, 0, 0 };
+const struct unit_dim UNIT_ACCEL = { 0, 1, -2, 0, 0 };
+const struct unit_dim UNIT_FORCE = { 1, 1, -2, 0, 0 };
+const struct unit_dim UNIT_PRESSURE = { 1, -1, -2, 0, 0 };
+const struct unit_dim UNIT_DENSITY = { 1, -3, 0, 0, 0 };
+const struct unit_dim UNIT_ENERGY = { 1, 2, -2, 0, 0 };
+const struct unit_dim UNIT_IMPULSE = { 1, 1, -1, 0, 0 };
+
+#define UNITS_TOL 1e-9
+
+struct symbol {
+	const char *name;
+	double factor; /* SI value of one unit */
+	double kg, m, s;
+};
+
+static const struct symbol symbols[] = {
+	{ "m", 1, 0, 1, 0 },
+	{ "g", 1e-3, 1, 0, 0 },
+	{ "s", 1, 0, 0, 1 },
+	{ "N", 1, 1, 1, -2 },
+	{ "Pa", 1, 1, -1, -2 },
+	{ "J", 1, 1, 2, -2 },
+	{ "W", 1, 1, 2, -3 },
+	{ "Hz", 1, 0, 0, -1 },
+};
+#define NSYMBOLS (sizeof symbols / sizeof symbols[0])
+
+struct prefix {
+	const char *name;
+	double factor;
+};
+
+static const struct prefix prefixes[] = {
+	{ "y", 1e-24 }, { "z", 1e-21 }, { "a", 1e-18 }, { "f", 1e-15 },
+	{ "p", 1e-12 }, { "n", 1e-9 }, { "u", 1e-6 },
+	{ "\xc2\xb5", 1e-6 }, /* U+00B5 MICRO SIGN */
+	{ "\xce\xbc", 1e-6 }, /* U+03BC GREEK SMALL LETTER MU */
+	{ "m", 1e-3 }, { "c", 1e-2 }, { "d", 1e-1 },
+	{ "k", 1e3 }, { "M", 1e6 }, { "G", 1e9 }, { "T", 1e12 }, { "P", 1e15 },
+};
+#define NPREFIXES (sizeof prefixes / sizeof prefixes[0])
+
+/* Prefixes used for output, mantissa in [1, 1000). */
+static const struct prefix out_prefixes[] = {
+	{ "f", 1e-15 }, { "p", 1e-12 }, { "n", 1e-9 }, { "u", 1e-6 },
+	{ "m", 1e-3 }, { "", 1 }, { "k", 1e3 }, { "M", 1e6 }, { "G", 1e9 },
+	{ "T", 1e12 },
+};
+#define NOUT (sizeof out_prefixes / sizeof out_prefixes[0])
+
+struct unit_dim
+units_resolve(struct unit_dim d, double p, double n)
+{
+	struct unit_dim r = d;
+
+	r.m = d.m + d.mp * p + d.mn * n;
+	r.mp = 0;
+	r.mn = 0;
+	return r;
+}
+
+static int
+dim_eq(struct unit_dim a, struct unit_dim b)
+{
+	return fabs(a.kg - b.kg) < UNITS_TOL && fabs(a.m - b.m) < UNITS_TOL &&
+	    fabs(a.s - b.s) < UNITS_TOL;
+}
+
+static const struct symbol *
+symbol_find(const char *tok, size_t len)
+{
+	for (size_t i = 0; i < NSYMBOLS; i++)
+		if (strlen(symbols[i].name) == len && strncmp(symbols[i].name, tok, len) == 0)
+			return &symbols[i];
+	return NULL;
+}
+
+/*
+ * Resolves a token without exponent ("mm", "GPa", "kg") into its SI factor
+ * and dimension.  Returns 0 or -1 if unknown.
+ */
+static int
+token_resolve(const char *tok, size_t len, double *factor, struct unit_dim *d)
+{
+	const struct symbol *sym = symbol_find(tok, len);
+	double pf = 1;
+
+	if (sym == NULL) {
+		for (size_t i = 0; i < NPREFIXES && sym == NULL; i++) {
+			size_t pl = strlen(prefixes[i].name);
+			if (pl < len && strncmp(tok, prefixes[i].name, pl) == 0) {
+				sym = symbol_find(tok + pl, len - pl);
+				pf = prefixes[i].factor;
+			}
+		}
+	}
+	if (sym == NULL)
+		return -1;
+	*factor = pf * sym->factor;
+	d->kg = sym->kg;
+	d->m = sym->m;
+	d->s = sym->s;
+	d->mp = d->mn = 0;
+	return 0;
+}
+
+/* Parses an exponent at *pp ("-5/2", "3", "0.5").  Returns 0 or -1. */
+static int
+exponent_parse(const char **pp, double *e)
+{
+	const char *p = *pp;
+	char *end;
+	double num, den = 1;
+
+	if (!(isdigit((unsigned char)*p) || ((*p == '-' || *p == '+') &&
+	    (isdigit((unsigned char)p[1]) || p[1] == '.')) || *p == '.'))
+		return -1;
+	num = strtod(p, &end);
+	if (end == p)
+		return -1;
+	p = end;
+	if (*p == '/' && isdigit((unsigned char)p[1])) {
+		den = strtod(p + 1, &end);
+		if (den == 0)
+			return -1;
+		p = end;
+	}
+	*e = num / den;
+	*pp = p;
+	return 0;
+}
+
+/*
+ * Parses a unit string into an SI factor and a dimension.  On error writes
+ * a message and returns HB_EINVAL.
+ */
+static int
+unit_parse(const char *text, double *factor, struct unit_dim *dim, char *msg, size_t n)
+{
+	const char *p = text;
+	int denom = 0;
+	double f = 1;
+	struct unit_dim d = { 0, 0, 0, 0, 0 };
+
+	for (;;) {
+		const char *tok;
+		size_t len;
+		double tf, e = 1, sign;
+		struct unit_dim td;
+
+		while (*p == ' ' || *p == '\t' || *p == '*' || *p == '/') {
+			if (*p == '/') {
+				if (denom)
+					return status_set(msg, n, HB_EINVAL,
+					    "unit '%s' has more than one '/'", text);
+				denom = 1;
+			}
+			p++;
+		}
+		if (*p == '\0')
+			break;
+		tok = p;
+		while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '*' && *p != '/' &&
+		    *p != '^')
+			p++;
+		len = (size_t)(p - tok);
+		if (len == 0 || token_resolve(tok, len, &tf, &td) != 0) {
+			while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '*' && *p != '/')
+				p++;
+			return status_set(msg, n, HB_EINVAL,
+			    "unknown unit '%.*s'; known units: m, g, s, N, Pa, J, W, Hz "
+			    "with SI prefixes (e.g. mm, kg, GPa)", (int)(p - tok), tok);
+		}
+		if (*p == '^') {
+			p++;
+			if (exponent_parse(&p, &e) != 0)
+				return status_set(msg, n, HB_EINVAL,
+				    "bad exponent in unit '%s' (expected e.g. m^3, m^-5/2)", text);
+		}
+		sign = denom ? -1 : 1;
+		f *= pow(tf, sign * e);
+		d.kg += sign * e * td.kg;
+		d.m += sign * e * td.m;
+		d.s += sign * e * td.s;
+		if (*p != '\0' && *p != ' ' && *p != '\t' && *p != '*' && *p != '/')
+			return status_set(msg, n, HB_EINVAL, "malformed unit '%s'", text);
+	}
+	*factor = f;
+	*dim = d;
+	return HB_OK;
+}
+
+/* A name for a dimension in messages: "a length", "a value in N s m^-5/2". */
+static void
+dim_describe(struct unit_dim d, char *buf, size_t n)
+{
+	static const struct {
+		const struct unit_dim *d;
+		const char *name, *eg;
+	} names[] = {
+		{ &UNIT_NONE, "a dimensionless value", "0.35" },
+		{ &UNIT_LENGTH, "a length", "mm" },
+		{ &UNIT_TIME, "a time", "ms" },
+		{ &UNIT_MASS, "a mass", "kg" },
+		{ &UNIT_VELOCITY, "a velocity", "m/s" },
+		{ &UNIT_ACCEL, "an acceleration", "m/s^2" },
+		{ &UNIT_FORCE, "a force", "N" },
+		{ &UNIT_PRESSURE, "a pressure", "GPa" },
+		{ &UNIT_DENSITY, "a density", "kg/m^3" },
+		{ &UNIT_ENERGY, "an energy", "J" },
+		{ &UNIT_IMPULSE, "an impulse", "N s" },
+	};
+	char u[64];
+
+	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+		if (dim_eq(d, *names[i].d)) {
+			if (i == 0)
+				snprintf(buf, n, "%s", names[i].name);
+			else
+				snprintf(buf, n, "%s (e.g. %s)", names[i].name, names[i].eg);
+			return;
+		}
+	}
+	snprintf(buf, n, "a value in %s", units_dim_str(d, u, sizeof u));
+}
+
+int
+units_parse(const char *text, struct unit_dim expect, double *value, char *msg, size_t n)
+{
+	const char *p = text;
+	char *end;
+	double v, factor = 1;
+	struct unit_dim d = { 0, 0, 0, 0, 0 };
+	int st;
+
+	while (isspace((unsigned char)*p))
+		p++;
+	if (*p == '\0')
+		return status_set(msg, n, HB_EINVAL, "empty value");
+	v = strtod(p, &end);
+	/* strtod also reads "nan" and hexadecimal; refuse those. */
+	if (end == p || isnan(v) || memchr(p, 'x', (size_t)(end - p)) != NULL ||
+	    memchr(p, 'X', (size_t)(end - p)) != NULL)
+		return status_set(msg, n, HB_EINVAL, "'%s' is not a number", text);
+	p = end;
+	while (isspace((unsigned char)*p))
+		p++;
+	if (*p == '\0') {
+		/* A bare number is taken as SI, whatever the expected dimension. */
+		*value = v;
+		return HB_OK;
+	}
+	{
+		char ubuf[128];
+		size_t len = strlen(p);
+
+		while (len > 0 && isspace((unsigned char)p[len - 1]))
+			len--;
+		if (len >= sizeof ubuf)
+			return status_set(msg, n, HB_EINVAL, "unit of '%s' too long", text);
+		memcpy(ubuf, p, len);
+		ubuf[len] = '\0';
+		if (!isalpha((unsigned char)ubuf[0]) && (unsigned char)ubuf[0] < 0x80)
+			return status_set(msg, n, HB_EINVAL, "'%s' is not a number", text);
+		st = unit_parse(ubuf, &factor, &d, msg, n);
+		if (st != HB_OK)
+			return st;
+	}
+	if (!dim_eq(d, expect)) {
+		char have[64], want[96];
+
+		units_dim_str(d, have, sizeof have);
+		dim_describe(expect, want, sizeof want);
+		if (have[0] == '\0')
+			return status_set(msg, n, HB_EINVAL,
+			    "'%s' has no dimension but %s is expected", text, want);
+		return status_set(msg, n, HB_EINVAL, "'%s' has unit %s but %s is expected",
+		    text, have, want);
+	}
+	*value = v * factor;
+	return HB_OK;
+}
+
+/* Writes an exponent: "2", "-5/2", "0.3333". */
+static void
+exp_str(double e, char *buf, size_t n)
+{
+	double r2 = round(2 * e);
+
+	if (fabs(e - round(e)) < UNITS_TOL)
+		snprintf(buf, n, "%d", (int)round(e));
+	else if (fabs(2 * e - r2) < UNITS_TOL)
+		snprintf(buf, n, "%d/2", (int)r2);
+	else
+		snprintf(buf, n, "%.6g", e);
+}
+
+static void
+append(char *buf, size_t n, const char *s)
+{
+	size_t l = strlen(buf);
+
+	if (l + 1 < n)
+		snprintf(buf + l, n - l, "%s", s);
+}
+
+/* Appends " SYM^E" (or "SYM" when e == 1) to buf. */
+static void
+append_factor(char *buf, size_t n, const char *sym, double e)
+{
+	char es[32];
+
+	if (buf[0] != '\0' && buf[strlen(buf) - 1] != '/')
+		append(buf, n, " ");
+	append(buf, n, sym);
+	if (fabs(e - 1) >= UNITS_TOL) {
+		exp_str(e, es, sizeof es);
+		append(buf, n, "^");
+		append(buf, n, es);
+	}
+}
+
+static int
+is_zero(double e)
+{
+	return fabs(e) < UNITS_TOL;
+}
+
+static int
+is_int(double e)
+{
+	return fabs(e - round(e)) < UNITS_TOL;
+}
+
+char *
+units_dim_str(struct unit_dim d, char *buf, size_t n)
+{
+	static const struct {
+		const char *name;
+		double kg, m, s;
+	} named[] = {
+		{ "N", 1, 1, -2 }, { "Pa", 1, -1, -2 }, { "J", 1, 2, -2 }, { "W", 1, 2, -3 },
+	};
+	const char *sym[3];
+	double e[3];
+	int nf = 3, useN = 0;
+
+	if (n == 0)
+		return buf;
+	buf[0] = '\0';
+	d = units_resolve(d, 0, 0);
+	for (size_t i = 0; i < sizeof named / sizeof named[0]; i++) {
+		struct unit_dim nd = { named[i].kg, named[i].m, named[i].s, 0, 0 };
+		if (dim_eq(d, nd)) {
+			append(buf, n, named[i].name);
+			return buf;
+		}
+	}
+	/* N when the dimension holds kg m s^-2 and the rest reads well. */
+	if (fabs(d.kg - 1) < UNITS_TOL && (fabs(d.s + 2) < UNITS_TOL || fabs(d.s + 1) < UNITS_TOL))
+		useN = 1;
+	if (useN) {
+		sym[0] = "N", e[0] = 1;
+		sym[1] = "s", e[1] = d.s + 2;
+		sym[2] = "m", e[2] = d.m - 1;
+	} else {
+		sym[0] = "kg", e[0] = d.kg;
+		sym[1] = "m", e[1] = d.m;
+		sym[2] = "s", e[2] = d.s;
+	}
+	/*
+	 * Positive exponents first; negative integer exponents after one '/'
+	 * when there is a numerator and every negative exponent is an
+	 * integer; otherwise negative exponents inline ("N s m^-5/2").
+	 */
+	int npos = 0, nneg = 0, negint = 1;
+	for (int i = 0; i < nf; i++) {
+		if (is_zero(e[i]))
+			continue;
+		if (e[i] > 0)
+			npos++;
+		else {
+			nneg++;
+			if (!is_int(e[i]))
+				negint = 0;
+		}
+	}
+	for (int i = 0; i < nf; i++)
+		if (!is_zero(e[i]) && e[i] > 0)
+			append_factor(buf, n, sym[i], e[i]);
+	if (nneg == 0)
+		return buf;
+	if (npos > 0 && negint) {
+		append(buf, n, "/");
+		for (int i = 0; i < nf; i++)
+			if (!is_zero(e[i]) && e[i] < 0)
+				append_factor(buf, n, sym[i], -e[i]);
+	} else {
+		for (int i = 0; i < nf; i++)
+			if (!is_zero(e[i]) && e[i] < 0)
+				append_factor(buf, n, sym[i], e[i]);
+	}
+	return buf;
+}
+
+/*
+ * Formats v / scale with sig significant digits; returns the rounded
+ * mantissa's magnitude so the caller can move to the next prefix.
+ */
+static double
+mantissa(double v, int sig, char *buf, size_t n)
+{
+	snprintf(buf, n, "%.*g", sig, v);
+	return fabs(strtod(buf, NULL));
+}
+
+/* Formats with a prefix on `base` (e.g. "m", "g"), then `tail` ("/s"). */
+static char *
+format_prefixed(double value, double base_factor, const char *base, const char *tail,
+                int lo, int hi, int sig, char *buf, size_t n)
+{
+	char mbuf[64];
+	double v = value / base_factor, a = fabs(v);
+	int k = 5; /* index of "" in out_prefixes */
+
+	if (a != 0 && isfinite(a)) {
+		for (k = lo; k < hi; k++)
+			if (a < out_prefixes[k + 1].factor)
+				break;
+		if (mantissa(v / out_prefixes[k].factor, sig, mbuf, sizeof mbuf) >= 1000 &&
+		    k < hi)
+			k++;
+	}
+	mantissa(v / out_prefixes[k].factor, sig, mbuf, sizeof mbuf);
+	snprintf(buf, n, "%s %s%s%s", mbuf, out_prefixes[k].name, base, tail);
+	return buf;
+}
+
+char *
+units_format(double value, struct unit_dim d, int sig, char *buf, size_t n)
+{
+	static const struct {
+		const struct unit_dim *d;
+		const char *base, *tail;
+		double factor;
+		int lo, hi; /* range of out_prefixes indices */
+	} simple[] = {
+		{ &UNIT_LENGTH, "m", "", 1, 0, 6 },
+		{ &UNIT_TIME, "s", "", 1, 0, 5 },
+		{ &UNIT_MASS, "g", "", 1e-3, 0, 7 },
+		{ &UNIT_FORCE, "N", "", 1, 0, 7 },
+		{ &UNIT_PRESSURE, "Pa", "", 1, 0, 9 },
+		{ &UNIT_ENERGY, "J", "", 1, 0, 7 },
+		{ &UNIT_VELOCITY, "m", "/s", 1, 3, 5 },
+	};
+	char u[64];
+
+	if (n == 0)
+		return buf;
+	if (sig < 1)
+		sig = 1;
+	if (sig > 17)
+		sig = 17;
+	d = units_resolve(d, 0, 0);
+	if (dim_eq(d, UNIT_NONE)) {
+		snprintf(buf, n, "%.*g", sig, value);
+		return buf;
+	}
+	for (size_t i = 0; i < sizeof simple / sizeof simple[0]; i++) {
+		if (!dim_eq(d, *simple[i].d))
+			continue;
+		if (!isfinite(value)) {
+			snprintf(buf, n, "%g %s%s%s", value, simple[i].factor == 1 ? "" : "k",
+			    simple[i].base, simple[i].tail);
+			return buf;
+		}
+		return format_prefixed(value, simple[i].factor, simple[i].base, simple[i].tail,
+		    simple[i].lo, simple[i].hi, sig, buf, n);
+	}
+	units_dim_str(d, u, sizeof u);
+	snprintf(buf, n, "%.*g %s", sig, value, u);
+	return buf;
+}
+
+double
+units_axis(double magnitude, const char *base, char *label, size_t n)
+{
+	double a = fabs(magnitude), f = 1;
+	const char *b = base;
+	int k = 5;
+
+	/* A base of "kg" is prefixed as grams. */
+	if (strcmp(base, "kg") == 0) {
+		b = "g";
+		f = 1e-3;
+		a /= f;
+	}
+	if (a != 0 && isfinite(a)) {
+		for (k = 0; k < (int)NOUT - 1; k++)
+			if (a < out_prefixes[k + 1].factor)
+				break;
+	}
+	snprintf(label, n, "%s%s", out_prefixes[k].name, b);
+	return out_prefixes[k].factor * f;
+}
