@@ -48,6 +48,9 @@ struct arc_sample {
 	/* running values over the contact in progress (0 in flight): */
 	double W, JFc, JFe;     /* -int F_c v dt, int F_c dt, int F_er dt since t_e */
 	double xcmax, Fcmax;    /* greatest |x_c| and F_c since t_e */
+	/* running over the whole run: */
+	double Ee;              /* int_0^t F_er v dt, the work of the applied force, J */
+	double Wc;              /* int_0^t F_c v dt, the work of the contact force, J */
 };
 
 struct arc_interval {

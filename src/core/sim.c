@@ -51,7 +51,7 @@
 #include "arc_impl.h"
 
 enum {
-	MAXDIM = 10,           /* x, v, x_c, z1, z2, W, JFc, JFe, x_m, v_m */
+	MAXDIM = 11,           /* x, v, x_c, z1, z2, W, JFc, JFe, E_e, x_m, v_m */
 	MAXFUN = LAW_MAX_KINKS + 3,
 	CACHE = 96,
 	FLIGHT_SAMPLES = 48,   /* samples drawn along a closed-form flight, for plots */
@@ -63,7 +63,7 @@ enum {
 /* Which components the ODE of a flow interval carries; -1 when absent. */
 struct layout {
 	int dim;
-	int ix, iv, ixc, iz, iW, iJc, iJe, ixm, ivm;
+	int ix, iv, ixc, iz, iW, iJc, iJe, ixm, ivm, iEe;
 };
 
 struct phase {
@@ -99,6 +99,8 @@ struct sim {
 	int q;
 	double x, v, xc, z[LAW_MAX_Z], xm, vm;
 	double W, JFc, JFe, xcmax, Fcmax;
+	double Ee, Wc;      /* works of F_er and F_c since t = 0 */
+	double Wc0;         /* Wc at the commencement of the contact in progress */
 	double xe;          /* x at the commencement of the contact in progress */
 	double te, vi;      /* commencement time and approach velocity */
 	double t_instant;   /* time of the last jump, and jumps at it */
@@ -200,6 +202,7 @@ rhs(double t, const double u[], double du[], void *params)
 	if (L->ix >= 0)
 		dy[L->ix] = v;
 	dy[L->iv] = (-phi + Fer) / sc->d.m;
+	dy[L->iEe] = Fer * v;
 	if (L->ixm >= 0) {
 		double F1, F2;
 
@@ -265,6 +268,8 @@ jacobian(double t, const double u[], double *dfdu, double dfdt[], void *params)
 		J[L->iW * n + L->iv] += phi;
 		dt[L->iJe] = Ferdot;
 	}
+	J[L->iEe * n + L->iv] = scene_Fer(sc, t);
+	dt[L->iEe] = Ferdot * y[L->iv];
 	if (L->ixm >= 0)
 		J[L->ixm * n + L->ivm] = 1.0;
 	for (i = 0; i < n; i++) {
@@ -285,7 +290,7 @@ make_layout(const struct scene *sc, int q, struct layout *L)
 	int com = sc->d.system == SCENE_FULL ? !(sc->run.reduce & REDUCE_COM)
 	                                     : !(sc->run.reduce & REDUCE_COM);
 
-	*L = (struct layout){ 0, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
+	*L = (struct layout){ 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
 	if (q) {
 		if (!(sc->run.reduce & REDUCE_CONTACT))
 			L->ix = n++;
@@ -302,6 +307,7 @@ make_layout(const struct scene *sc, int q, struct layout *L)
 		L->ix = n++;
 		L->iv = n++;
 	}
+	L->iEe = n++;
 	if (com) {
 		L->ixm = n++;
 		L->ivm = n++;
@@ -388,6 +394,8 @@ push_sample(struct sim *s, int kind)
 	a.JFe = s->JFe;
 	a.xcmax = s->xcmax;
 	a.Fcmax = s->Fcmax;
+	a.Ee = s->Ee;
+	a.Wc = s->Wc;
 	if (arc_push(s->arc, &a))
 		return fail(s, HB_ENOMEM, "out of memory for the arc");
 	return 0;
@@ -480,6 +488,7 @@ jump(struct sim *s, int how, int iterations, double width, double ilo, double ih
 		s->te = s->t;
 		s->vi = s->v;
 		s->xe = s->x;
+		s->Wc0 = s->Wc;
 		if (s->ncol > 0 && isnan(s->col[s->ncol - 1].tf))
 			s->col[s->ncol - 1].tf = s->t - s->col[s->ncol - 1].ts;
 	}
@@ -574,6 +583,7 @@ flight_closed(struct sim *s)
 	const double T = s->sc.run.T;
 	const double t0 = s->t, x0 = s->x, v0 = s->v;
 	const double a = scene_Fer(&s->sc, t0) / s->sc.d.m;
+	const double Ee0 = s->Ee;
 	double tau = flight_event(x0, v0, a), tend, tapex = INFINITY;
 	int i, rc, it = 0;
 
@@ -595,6 +605,7 @@ flight_closed(struct sim *s)
 			continue;
 		s->t = t0 + tk;
 		flight_at(x0, v0, a, s->t - t0, &s->x, &s->v);
+		s->Ee = Ee0 + a * s->sc.d.m * (s->x - x0);
 		set_com(s);
 		if ((rc = push_sample(s, kind)))
 			return rc;
@@ -602,6 +613,7 @@ flight_closed(struct sim *s)
 	if (tau > T - t0) {
 		s->t = T;
 		flight_at(x0, v0, a, T - t0, &s->x, &s->v);
+		s->Ee = Ee0 + a * s->sc.d.m * (s->x - x0);
 		set_com(s);
 		if ((rc = push_sample(s, ARC_END)))
 			return rc;
@@ -625,6 +637,7 @@ flight_closed(struct sim *s)
 		tprev = te > t0 ? nextafter(te, -INFINITY) : te;
 		flight_at(x0, v0, a, tprev - t0, &xp, &vp);
 		s->t = te;
+		s->Ee = Ee0 + a * s->sc.d.m * (s->x - x0);
 		set_com(s);
 		return jump(s, tau == 0.0 ? LOCATE_START : LOCATE_CLOSED_FORM, it, te - tprev,
 		            fmax(xp, vp), fmax(s->x, s->v));
@@ -691,6 +704,7 @@ scales(struct sim *s, const struct layout *L, int q)
 		s->scale[L->ixc] = X;
 	for (i = 0; L->iz >= 0 && i < sc->law->n_z; i++)
 		s->scale[L->iz + i] = X;
+	s->scale[L->iEe] = 0.5 * m * V * V;
 	if (L->iW >= 0) {
 		s->scale[L->iW] = 0.5 * m * V * V;
 		s->scale[L->iJc] = m * V;
@@ -725,6 +739,7 @@ pack(struct sim *s, const struct layout *L, double *u)
 		y[L->iJc] = s->JFc;
 		y[L->iJe] = s->JFe;
 	}
+	y[L->iEe] = s->Ee;
 	if (L->ixm >= 0) {
 		y[L->ixm] = s->xm;
 		y[L->ivm] = s->vm;
@@ -752,9 +767,11 @@ unpack(struct sim *s, const struct phase *p, double t, const double *u)
 		s->W = y[L->iW];
 		s->JFc = y[L->iJc];
 		s->JFe = y[L->iJe];
+		s->Wc = s->Wc0 - s->W;
 	} else {
 		s->x = y[L->ix];
 	}
+	s->Ee = y[L->iEe];
 	if (L->ixm >= 0) {
 		s->xm = y[L->ixm];
 		s->vm = y[L->ivm];
@@ -1165,6 +1182,7 @@ reset_state(struct sim *s)
 	s->xm = sc->d.system == SCENE_FULL ? sc->init.xm0 : 0.0;
 	s->vm = sc->d.system == SCENE_FULL ? sc->init.vm0 : 0.0;
 	s->W = s->JFc = s->JFe = s->xcmax = s->Fcmax = 0.0;
+	s->Ee = s->Wc = s->Wc0 = 0.0;
 	s->xe = s->te = s->vi = 0.0;
 	s->n_instant = 0;
 	s->setup = 1;
@@ -1203,6 +1221,7 @@ build(struct sim *s, char *msg, size_t n)
 		names[L->iW] = "W";
 		names[L->iJc] = "J_Fc";
 		names[L->iJe] = "J_Fe";
+		names[L->iEe] = "E_e";
 		if (L->ixm >= 0) {
 			names[L->ixm] = "x_m";
 			names[L->ivm] = "v_m";
@@ -1391,6 +1410,9 @@ sim_seek(struct sim *s, size_t i)
 	s->JFe = a->JFe;
 	s->xcmax = a->xcmax;
 	s->Fcmax = a->Fcmax;
+	s->Ee = a->Ee;
+	s->Wc = a->Wc;
+	s->Wc0 = a->Wc + a->W;
 	s->xe = a->x - a->xc;
 	if (s->q) {
 		const struct arc_sample *f = arc_at(s->arc, iv->first);
