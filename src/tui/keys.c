@@ -1,0 +1,205 @@
+/*
+ * keys.c - the key table and everything generated from it.
+ *
+ * Invariant: every action the explorer performs on a key is reached
+ * through this table (app.c dispatches on keys_action()); the help overlay,
+ * the footer and the man page list are printed from it.  Keys typed into a
+ * prompt or a picker are not bindings (they are text or list navigation,
+ * handled where the prompt is).
+ */
+#include <curses.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "keys.h"
+
+#define CTRL(c) ((c) & 0x1f)
+
+static const struct key_binding table[] = {
+	{ '?', 0, CTX_ANY, ACT_HELP, "?", "show this help (any key closes it)", "help" },
+	{ 'q', 0, CTX_ANY, ACT_QUIT, "q", "quit, restoring the terminal", "quit" },
+	{ ' ', 0, CTX_ANY, ACT_PLAY, "space", "play / pause the cursor (the run computes ahead either way)", "play" },
+	{ '.', 0, CTX_ANY, ACT_STEP_FWD, ".", "step the cursor one sample forward (pauses)", NULL },
+	{ ',', 0, CTX_ANY, ACT_STEP_BACK, ",", "step the cursor one sample back (pauses)", NULL },
+	{ '[', 0, CTX_ANY, ACT_PREV_JUMP, "[", "cursor to the previous jump", NULL },
+	{ ']', 0, CTX_ANY, ACT_NEXT_JUMP, "]", "cursor to the next jump", NULL },
+	{ '{', 0, CTX_ANY, ACT_PREV_COLL, "{", "cursor to the previous collision (selects its row)", "coll" },
+	{ '}', 0, CTX_ANY, ACT_NEXT_COLL, "}", "cursor to the next collision (selects its row)", NULL },
+	{ KEY_LEFT, 'h', CTX_ANY, ACT_SCRUB_BACK, "Left h", "scrub the cursor back in time (1/100 of the view)", "scrub" },
+	{ KEY_RIGHT, 'l', CTX_ANY, ACT_SCRUB_FWD, "Right l", "scrub the cursor forward in time", NULL },
+	{ KEY_HOME, 'g', CTX_ANY, ACT_HOME, "Home g", "cursor to t = 0", NULL },
+	{ KEY_END, 'G', CTX_ANY, ACT_END, "End G", "cursor to the last computed sample", NULL },
+	{ '+', '=', CTX_NOT_PARAMS, ACT_FASTER, "+ =", "faster playback (1-2-5 steps)", "speed" },
+	{ '-', '_', CTX_NOT_PARAMS, ACT_SLOWER, "- _", "slower playback", NULL },
+	{ 's', 0, CTX_ANY, ACT_SLOWMO, "s", "slow motion through contacts on / off", "slow" },
+	{ 'v', 0, CTX_ANY, ACT_VIEW, "v", "next view: whole run, follow, zoom, loop, (t, j)", "view" },
+	{ 'z', 0, CTX_ANY, ACT_ZOOM, "z", "zoom on the collision at the cursor (or the selected row)", NULL },
+	{ 'y', 0, CTX_ANY, ACT_LOOP, "y", "hysteresis loop F_c against x_c of that collision", NULL },
+	{ 'J', 0, CTX_ANY, ACT_JVIEW, "J", "the arc against the jump counter j", NULL },
+	{ '\t', 0, CTX_ANY, ACT_FOCUS, "Tab", "switch the focus: collisions table / parameter panel", "table/params" },
+	{ KEY_UP, 'k', CTX_ANY, ACT_UP, "Up k", "previous row of the focused table", NULL },
+	{ KEY_DOWN, 'j', CTX_ANY, ACT_DOWN, "Down j", "next row of the focused table", NULL },
+	{ KEY_PPAGE, 0, CTX_ANY, ACT_PGUP, "PgUp", "a page up in the focused table", NULL },
+	{ KEY_NPAGE, 0, CTX_ANY, ACT_PGDN, "PgDn", "a page down in the focused table", NULL },
+	{ '\n', KEY_ENTER, CTX_ANY, ACT_ENTER, "Enter",
+	  "collisions: zoom on the row and move the cursor there; parameters: type a new value", "select" },
+	{ '+', '=', CTX_PARAMS, ACT_NUDGE_UP, "+ =", "(parameter panel) multiply the value by 1.1", NULL },
+	{ '-', '_', CTX_PARAMS, ACT_NUDGE_DOWN, "- _", "(parameter panel) divide the value by 1.1", NULL },
+	{ 'L', 0, CTX_ANY, ACT_LAW, "L", "choose the contact law", "law" },
+	{ 'o', 0, CTX_ANY, ACT_PRESET, "o", "open a preset", "preset" },
+	{ 'r', 0, CTX_ANY, ACT_RESTART, "r", "restart the run from t = 0", NULL },
+	{ 'p', 0, CTX_ANY, ACT_PIN, "p", "pin the run as a ghost curve; the next run is drawn over it", "pin" },
+	{ 'P', 0, CTX_ANY, ACT_UNPIN, "P", "clear the pinned runs", NULL },
+	{ '3', 0, CTX_ANY, ACT_STUDY3, "3",
+	  "the paper's third study: permanent-contact-shccl, -bwshccl, -bwmcl pinned together", NULL },
+	{ 'e', 0, CTX_ANY, ACT_EXPORT, "e", "export BASE-trace.csv, BASE-collisions.csv and the scene", "export" },
+	{ CTRL('l'), 0, CTX_ANY, ACT_REDRAW, "C-l", "redraw the screen", NULL },
+};
+
+const struct key_binding *
+keys_table(size_t *n)
+{
+	*n = sizeof table / sizeof table[0];
+	return table;
+}
+
+int
+keys_action(int key, int params)
+{
+	size_t i;
+
+	for (i = 0; i < sizeof table / sizeof table[0]; i++) {
+		const struct key_binding *b = &table[i];
+		if (b->key != key && (b->key2 == 0 || b->key2 != key))
+			continue;
+		if (b->ctx == CTX_PARAMS && !params)
+			continue;
+		if (b->ctx == CTX_NOT_PARAMS && params)
+			continue;
+		return b->action;
+	}
+	if (key == KEY_ENTER || key == '\r')
+		return ACT_ENTER;
+	return ACT_NONE;
+}
+
+char *
+keys_footer(char *buf, size_t n, int width)
+{
+	size_t i, len = 0;
+	char item[48];
+
+	if (n == 0)
+		return buf;
+	buf[0] = 0;
+	for (i = 0; i < sizeof table / sizeof table[0]; i++) {
+		const struct key_binding *b = &table[i];
+		char k[16];
+		if (b->footer == NULL)
+			continue;
+		snprintf(k, sizeof k, "%s", b->label);
+		k[strcspn(k, " ")] = 0; /* the first key only */
+		snprintf(item, sizeof item, "%s%s:%s", len ? " " : "", k, b->footer);
+		if (len + strlen(item) > (size_t)width || len + strlen(item) >= n)
+			break;
+		memcpy(buf + len, item, strlen(item) + 1);
+		len += strlen(item);
+	}
+	return buf;
+}
+
+/* Appends to buf at *len (snprintf-like accounting). */
+static void
+put(char *buf, size_t n, size_t *len, const char *s)
+{
+	size_t l = strlen(s);
+
+	if (*len + l < n)
+		memcpy(buf + *len, s, l + 1);
+	else if (*len < n)
+		buf[*len] = 0;
+	*len += l;
+}
+
+size_t
+keys_man(char *buf, size_t n)
+{
+	size_t i, len = 0;
+
+	if (n > 0)
+		buf[0] = 0;
+	put(buf, n, &len, ".Bl -tag -width \"Right l\" -compact\n");
+	for (i = 0; i < sizeof table / sizeof table[0]; i++) {
+		const struct key_binding *b = &table[i];
+		char lab[64], *p, *tok;
+		put(buf, n, &len, ".It");
+		snprintf(lab, sizeof lab, "%s", b->label);
+		/* each key as Cm; Ns-free so "Left h" reads ".It Ic Left , Ic h" */
+		for (tok = strtok_r(lab, " ", &p); tok; tok = strtok_r(NULL, " ", &p)) {
+			if (tok != lab)
+				put(buf, n, &len, " ,");
+			put(buf, n, &len, " Ic ");
+			/* mdoc: a leading '.' or a bare ',' would be read as macro or punctuation */
+			if (tok[0] == '.' || tok[0] == ',' || tok[0] == '[' || tok[0] == ']'
+			    || tok[0] == '{' || tok[0] == '}' || tok[0] == '?')
+				put(buf, n, &len, "\\&");
+			put(buf, n, &len, tok);
+		}
+		put(buf, n, &len, "\n");
+		{
+			char h[160];
+			snprintf(h, sizeof h, "%s", b->help);
+			if (h[0] >= 'a' && h[0] <= 'z')
+				h[0] = (char)(h[0] - 'a' + 'A');
+			put(buf, n, &len, h);
+			put(buf, n, &len, ".\n");
+		}
+	}
+	put(buf, n, &len, ".El\n");
+	return len;
+}
+
+static const struct {
+	const char *name;
+	int key;
+} names[] = {
+	{ "space", ' ' }, { "Space", ' ' }, { "Enter", '\n' }, { "Return", '\n' },
+	{ "Tab", '\t' }, { "Esc", 27 }, { "Escape", 27 },
+	{ "Left", KEY_LEFT }, { "Right", KEY_RIGHT }, { "Up", KEY_UP }, { "Down", KEY_DOWN },
+	{ "Home", KEY_HOME }, { "End", KEY_END }, { "PgUp", KEY_PPAGE }, { "PgDn", KEY_NPAGE },
+	{ "BSpace", KEY_BACKSPACE }, { "Backspace", KEY_BACKSPACE },
+};
+
+int
+keys_from_name(const char *name)
+{
+	size_t i;
+
+	for (i = 0; i < sizeof names / sizeof names[0]; i++)
+		if (strcmp(name, names[i].name) == 0)
+			return names[i].key;
+	if (name[0] == 'C' && name[1] == '-' && name[2] && !name[3])
+		return CTRL(name[2]);
+	if (name[0] && !name[1])
+		return (unsigned char)name[0];
+	return -1;
+}
+
+char *
+keys_name(int key, char *buf, size_t n)
+{
+	size_t i;
+
+	for (i = 0; i < sizeof names / sizeof names[0]; i++)
+		if (names[i].key == key) {
+			snprintf(buf, n, "%s", names[i].name);
+			return buf;
+		}
+	if (key > 0 && key < 32)
+		snprintf(buf, n, "C-%c", key + 'a' - 1);
+	else if (key >= 32 && key < 127)
+		snprintf(buf, n, "%c", key);
+	else
+		snprintf(buf, n, "key %d", key);
+	return buf;
+}

@@ -1,0 +1,405 @@
+/*
+ * pane_plot.c - the plots: x, x_c and F_c against t, stacked over one time
+ * axis, with a marker row for contacts ("[==]", "#" when a contact fits
+ * in one column: its ends are the jumps), and the cursor as a highlighted
+ * column.  Pinned runs are drawn first as ghosts (inks 2..), the current
+ * run last (ink 1).  Views: whole run, follow the cursor, zoom on one
+ * collision ([t_e, t_s] with a quarter of t_d either side), the F_c
+ * against x_c hysteresis loop of one collision, and the arc against j.
+ *
+ * Everything is rasterised by canvas.c and copied cell by cell; drawing
+ * only reads the state.
+ */
+#include <curses.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "canvas.h"
+#include "term.h"
+#include "tui.h"
+
+enum { LM = 9 };  /* left margin: tick labels and the quantity's name */
+enum { Q_X, Q_XC, Q_FC, NQ };
+
+static const char *qname[NQ] = { "x", "x_c", "F_c" };
+static const char *qbase[NQ] = { "m", "m", "N" };
+
+static double
+qval(const struct arc_sample *s, int q)
+{
+	switch (q) {
+	case Q_X: return s->x;
+	case Q_XC: return s->xc;
+	default: return s->Fc;
+	}
+}
+
+/* The abscissa of a sample: t, or j in the (t, j) view. */
+static double
+absc(const struct app *a, const struct arc_sample *s)
+{
+	return a->view == VIEW_J ? (double)s->j : s->t;
+}
+
+static struct canvas *
+canvas_or_die(int w, int h, int braille)
+{
+	struct canvas *c = canvas_new(w, h, braille);
+
+	if (c == NULL)
+		term_oom();
+	return c;
+}
+
+/* The runs to draw: pins first, then the current one (ink 1). */
+static int
+runs(const struct app *a, const struct sim **s, int *ink)
+{
+	int n = 0;
+
+	for (int i = 0; i < a->npins; i++) {
+		s[n] = a->pin[i].sim;
+		ink[n++] = i + 2;
+	}
+	s[n] = a->sim;
+	ink[n++] = 1;
+	return n;
+}
+
+/* The abscissa range of the view (t or j). */
+static void
+view_range(const struct app *a, double *lo, double *hi)
+{
+	const struct sim *s[APP_MAX_PINS + 1];
+	int ink[APP_MAX_PINS + 1], n = runs(a, s, ink);
+	double end = 0;
+	const struct arc *arc = sim_arc(a->sim);
+
+	for (int k = 0; k < n; k++) {
+		const struct arc_sample *l = arc_last(sim_arc(s[k]));
+		double e;
+		if (a->view == VIEW_J)
+			e = l ? (double)l->j : 0;
+		else
+			e = sim_end(s[k]) == SIM_RUNNING || l == NULL ? sim_scene(s[k])->run.T : l->t;
+		if (e > end)
+			end = e;
+	}
+	*lo = 0;
+	*hi = end > 0 ? end : 1;
+	if (a->view == VIEW_FOLLOW && arc_len(arc) > 0) {
+		double w = *hi / 10, t = arc_at(arc, a->cursor)->t;
+		*lo = t - 0.7 * w;
+		if (*lo < 0)
+			*lo = 0;
+		*hi = *lo + w;
+	} else if (a->view == VIEW_ZOOM) {
+		struct collision live;
+		const struct collision *c = app_collision(a, a->zoom_i, &live);
+		if (c != NULL) {
+			double td = c->ts - c->te;
+			if (!(td > 0))
+				td = 1e-6;
+			*lo = c->te - 0.25 * td;
+			*hi = c->ts + 0.25 * td;
+		}
+	}
+}
+
+/* Visits the samples of arc with abscissa in [lo, hi] (and one either side). */
+static void
+sample_span(const struct app *a, const struct arc *arc, double lo, double hi, size_t *i0, size_t *i1)
+{
+	size_t n = arc_len(arc), i;
+
+	*i0 = 0;
+	*i1 = n;
+	if (a->view == VIEW_J || n == 0)
+		return;
+	*i0 = arc_find_t(arc, lo);
+	/* arc_find_t gives the last sample at lo of the greatest j: step back over a jump */
+	while (*i0 > 0 && arc_at(arc, *i0 - 1)->t >= lo)
+		(*i0)--;
+	i = arc_find_t(arc, hi);
+	*i1 = i + 2 < n ? i + 2 : n;
+}
+
+/* Copies a canvas to the screen at (y, x); the cursor column highlighted. */
+static void
+blit(const struct app *a, const struct canvas *c, int y, int x, int curcol)
+{
+	char cell[8];
+
+	for (int r = 0; r < c->h; r++)
+		for (int k = 0; k < c->w; k++) {
+			int ink = canvas_cell(c, k, r, cell), attr = 0;
+			if (ink > 0 && a->colour)
+				attr = COLOR_PAIR(PAIR_INK1 + ink - 1) | (ink == 1 ? A_BOLD : 0);
+			else if (ink > 1)
+				attr = A_DIM;
+			if (k == curcol) {
+				if (cell[0] == ' ')
+					cell[0] = ':';
+				attr |= A_REVERSE;
+			}
+			if (cell[0] == ' ' && attr == 0)
+				continue;
+			attron(attr);
+			mvaddstr(y + r, x + k, cell);
+			attroff(attr);
+		}
+}
+
+static void
+margin_labels(const struct axis *ax, int y, int h, const char *name)
+{
+	char lab[32], nm[32];
+	int used[256] = { 0 };
+
+	if (h > 256)
+		h = 256;
+	for (int i = 0; i < ax->nticks; i++) {
+		int r = (int)lround((ax->hi - ax->tick[i]) / (ax->hi - ax->lo) * (h - 1));
+		if (r < 0 || r >= h || used[r] || (r > 0 && used[r - 1]) || (r + 1 < h && used[r + 1]))
+			continue;
+		if (h <= 4 && r != 0 && r != h - 1)
+			continue; /* small plots: top and bottom only, room for the name */
+		canvas_tick_label(ax, ax->tick[i], lab, sizeof lab);
+		char buf[40];
+		snprintf(buf, sizeof buf, "%*s", LM - 1, lab);
+		tui_puts(y + r, 0, LM - 1, buf, 0);
+		used[r] = 1;
+	}
+	snprintf(nm, sizeof nm, "%s[%s]", name, ax->unit);
+	for (int r = h / 2 - (h > 2 ? 0 : 1); r < h; r++)
+		if (r >= 0 && !used[r]) {
+			tui_puts(y + r, 0, LM - 1, nm, A_BOLD);
+			break;
+		}
+}
+
+static void
+legend(const struct app *a, int y, int x, int w, const char *title)
+{
+	char buf[512], item[96];
+	int len;
+
+	snprintf(buf, sizeof buf, "%s", title);
+	if (a->npins > 0) {
+		for (int i = 0; i < a->npins; i++) {
+			snprintf(item, sizeof item, "  %c %s", canvas_glyph(i + 2), a->pin[i].label);
+			strncat(buf, item, sizeof buf - strlen(buf) - 1);
+		}
+		snprintf(item, sizeof item, "  %c %s (now)", canvas_glyph(1), a->run_label);
+		strncat(buf, item, sizeof buf - strlen(buf) - 1);
+	}
+	len = (int)strlen(buf);
+	if (len > w)
+		len = w;
+	tui_puts(y, x + w - len, len, buf, A_BOLD);
+}
+
+/* The F_c against x_c loop of collision a->zoom_i, for every run. */
+static void
+draw_loop(const struct app *a)
+{
+	const struct rect *r = &a->L.plots;
+	const struct sim *s[APP_MAX_PINS + 1];
+	int ink[APP_MAX_PINS + 1], n = runs(a, s, ink), ch = r->h - 2, cw = r->w - LM;
+	double xlo = 0, xhi = 0, ylo = 0, yhi = 0;
+	struct canvas *c = NULL;
+	struct axis ax, ay;
+	char line[512], title[96];
+	int curcol = -1;
+
+	if (ch < 2 || cw < 10)
+		return;
+	for (int pass = 0; pass < 2; pass++) {
+		for (int k = 0; k < n; k++) {
+			struct collision live;
+			const struct collision *col;
+			const struct arc *arc = sim_arc(s[k]);
+			if (s[k] == a->sim)
+				col = app_collision(a, a->zoom_i, &live);
+			else
+				col = a->zoom_i >= 0 && (size_t)a->zoom_i < sim_ncollisions(s[k])
+				      ? sim_collision(s[k], (size_t)a->zoom_i) : NULL;
+			if (col == NULL || arc_len(arc) == 0)
+				continue;
+			for (size_t i = arc_find(arc, col->te, col->j); i < arc_len(arc); i++) {
+				const struct arc_sample *p = arc_at(arc, i);
+				if (p->j != col->j)
+					break;
+				if (pass == 0) {
+					xlo = fmin(xlo, p->xc);
+					xhi = fmax(xhi, p->xc);
+					ylo = fmin(ylo, p->Fc);
+					yhi = fmax(yhi, p->Fc);
+				} else if (c == NULL) {
+					break;
+				} else if (i > 0 && arc_at(arc, i - 1)->j == p->j) {
+					const struct arc_sample *q = arc_at(arc, i - 1);
+					canvas_line(c, q->xc, q->Fc, p->xc, p->Fc, ink[k]);
+				} else {
+					canvas_point(c, p->xc, p->Fc, ink[k]);
+				}
+			}
+		}
+		if (pass == 0) {
+			canvas_axis(xlo, xhi, cw / 10 > 2 ? cw / 10 : 2, "m", &ax);
+			canvas_axis(ylo, yhi, ch / 2 + 1 > 2 ? ch / 2 + 1 : 2, "N", &ay);
+			c = canvas_or_die(cw, ch, a->braille);
+			canvas_range(c, ax.lo, ax.hi, ay.lo, ay.hi);
+		}
+	}
+	/* the cursor, when it lies in this collision */
+	{
+		const struct arc *arc = sim_arc(a->sim);
+		if (arc_len(arc) > 0) {
+			const struct arc_sample *p = arc_at(arc, a->cursor);
+			struct collision live;
+			const struct collision *col = app_collision(a, a->zoom_i, &live);
+			if (col && p->j == col->j) {
+				int cc = canvas_col(c, p->xc);
+				double py = floor(canvas_pyf(c, p->Fc) + 0.5);
+				int row = c->braille ? (int)py / 4 : (int)py;
+				canvas_mark(c, cc, row, 'O', 1);
+				curcol = -1;
+			}
+		}
+	}
+	snprintf(title, sizeof title, "hysteresis loop: F_c against x_c, collision %ld", a->zoom_i);
+	legend(a, r->y, LM, cw, title);
+	blit(a, c, r->y + 1, r->x + LM, curcol);
+	margin_labels(&ay, r->y + 1, ch, "F_c");
+	canvas_axis_line(&ax, ax.lo, ax.hi, cw, line, sizeof line);
+	tui_puts(r->y + 1 + ch, LM, cw, line, 0);
+	tui_puts(r->y + 1 + ch, 0, LM - 1, "x_c ->", A_BOLD);
+	canvas_free(c);
+}
+
+void
+pane_plot_draw(const struct app *a)
+{
+	const struct rect *r = &a->L.plots;
+	const struct sim *s[APP_MAX_PINS + 1];
+	int ink[APP_MAX_PINS + 1], n, hs[NQ], cw = r->w - LM, y, curcol = -1;
+	double t0, t1;
+	char line[1024], title[128];
+	const struct arc *arc = sim_arc(a->sim);
+	static const char *vname[VIEW_COUNT] = { "whole run", "follow the cursor", "zoom",
+	                                         "loop", "against j" };
+
+	if (a->view == VIEW_LOOP) {
+		draw_loop(a);
+		return;
+	}
+	if (cw < 10 || r->h < 3 + NQ)
+		return;
+	n = runs(a, s, ink);
+	view_range(a, &t0, &t1);
+	if (a->view == VIEW_ZOOM)
+		snprintf(title, sizeof title, "zoom: collision %ld", a->zoom_i);
+	else
+		snprintf(title, sizeof title, "%s", vname[a->view]);
+	/* row 0: title and legend; then the plots; then markers and the axis */
+	legend(a, r->y, LM, cw, title);
+	layout_stack(r->h - 1, NQ, 2, hs);
+	y = r->y + 1;
+	for (int q = 0; q < NQ; q++) {
+		double lo = 0, hi = 0;
+		struct axis ay;
+		struct canvas *c;
+
+		for (int k = 0; k < n; k++) {
+			const struct arc *ak = sim_arc(s[k]);
+			size_t i0, i1;
+			sample_span(a, ak, t0, t1, &i0, &i1);
+			for (size_t i = i0; i < i1; i++) {
+				const struct arc_sample *p = arc_at(ak, i);
+				double xv = absc(a, p), v = qval(p, q);
+				if (xv < t0 || xv > t1 || !isfinite(v))
+					continue;
+				lo = fmin(lo, v);
+				hi = fmax(hi, v);
+			}
+		}
+		canvas_axis(lo, hi, hs[q] / 2 + 2, qbase[q], &ay);
+		c = canvas_or_die(cw, hs[q], a->braille);
+		canvas_range(c, t0, t1, ay.lo, ay.hi);
+		for (int k = 0; k < n; k++) {
+			const struct arc *ak = sim_arc(s[k]);
+			size_t i0, i1;
+			sample_span(a, ak, t0, t1, &i0, &i1);
+			for (size_t i = i0; i < i1; i++) {
+				const struct arc_sample *p = arc_at(ak, i);
+				if (i > i0) {
+					const struct arc_sample *o = arc_at(ak, i - 1);
+					if (a->view != VIEW_J || o->j == p->j) {
+						canvas_line(c, absc(a, o), qval(o, q), absc(a, p), qval(p, q), ink[k]);
+						continue;
+					}
+				}
+				canvas_point(c, absc(a, p), qval(p, q), ink[k]);
+			}
+		}
+		if (arc_len(arc) > 0)
+			curcol = canvas_col(c, absc(a, arc_at(arc, a->cursor)));
+		blit(a, c, y, r->x + LM, curcol);
+		margin_labels(&ay, y, hs[q], qname[q]);
+		canvas_free(c);
+		y += hs[q];
+	}
+	/* marker row: contacts of the current run */
+	memset(line, ' ', (size_t)cw);
+	line[cw] = 0;
+	if (a->view != VIEW_J) {
+		for (size_t k = 0; k < arc_nintervals(arc); k++) {
+			const struct arc_interval *iv = arc_interval_at(arc, k);
+			double c0, c1;
+			int k0, k1;
+			if (!iv->q || iv->t1 < t0 || iv->t0 > t1)
+				continue;
+			c0 = (fmax(iv->t0, t0) - t0) / (t1 - t0) * (cw - 1);
+			c1 = (fmin(iv->t1, t1) - t0) / (t1 - t0) * (cw - 1);
+			k0 = (int)lround(c0);
+			k1 = (int)lround(c1);
+			if (k0 < 0)
+				k0 = 0;
+			if (k1 >= cw)
+				k1 = cw - 1;
+			if (k1 <= k0) {
+				line[k0] = '#';
+				continue;
+			}
+			for (int k2 = k0; k2 <= k1; k2++)
+				line[k2] = '=';
+			if (iv->t0 >= t0)
+				line[k0] = '[';
+			if (iv->t1 <= t1)
+				line[k1] = ']';
+		}
+	} else {
+		/* (t, j) view: the phase of each interval at its j */
+		for (size_t k = 0; k < arc_nintervals(arc); k++) {
+			const struct arc_interval *iv = arc_interval_at(arc, k);
+			int col = (int)lround(((double)iv->j - t0) / (t1 - t0) * (cw - 1));
+			if (col >= 0 && col < cw)
+				line[col] = iv->q ? 'c' : 'f';
+		}
+	}
+	if (curcol >= 0 && curcol < cw && line[curcol] == ' ')
+		line[curcol] = '^';
+	tui_puts(y, 0, LM - 1, a->view == VIEW_J ? "phase" : "contact", A_DIM);
+	tui_puts(y, r->x + LM, cw, line, a->colour ? COLOR_PAIR(PAIR_CONTACT) : 0);
+	y++;
+	/* the axis */
+	{
+		struct axis ax;
+		canvas_axis(t0, t1, cw / 10 > 2 ? cw / 10 : 2, a->view == VIEW_J ? NULL : "s", &ax);
+		canvas_axis_line(&ax, t0, t1, cw, line, sizeof line);
+		tui_puts(y, r->x + LM, cw, line, 0);
+		tui_puts(y, 0, LM - 1, a->view == VIEW_J ? "j ->" : "t ->", A_BOLD);
+	}
+}
