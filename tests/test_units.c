@@ -1,0 +1,262 @@
+/*
+ * test_units.c - values with units (src/core/units.c): parsing with SI
+ * prefixes, products, quotients and fractional powers; the messages of a
+ * wrong unit, an unknown unit and a non-number; the unit names printed for
+ * a dimension (and that they parse back); formatting with prefixes; axis
+ * scales.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <criterion/criterion.h>
+
+#include "hybounce/status.h"
+#include "hybounce/units.h"
+
+static void
+dim_is(struct unit_dim d, double kg, double m, double s)
+{
+	cr_assert(fabs(d.kg - kg) < 1e-12 && fabs(d.m - m) < 1e-12 && fabs(d.s - s) < 1e-12,
+	    "dimension kg^%g m^%g s^%g, expected kg^%g m^%g s^%g", d.kg, d.m, d.s, kg, m, s);
+}
+
+/* Parses text against dimension d and checks the SI value to 1e-15 relative. */
+static void
+parses(const char *text, struct unit_dim d, double want)
+{
+	double v = -12345;
+	char msg[256] = "";
+	int st = units_parse(text, d, &v, msg, sizeof msg);
+
+	cr_assert_eq(st, HB_OK, "'%s' failed: %s", text, msg);
+	if (isinf(want))
+		cr_assert(v == want, "'%s' gave %g, expected %g", text, v, want);
+	else
+		cr_assert(fabs(v - want) <= 1e-15 * fabs(want), "'%s' gave %.17g, expected %.17g",
+		    text, v, want);
+}
+
+static void
+fails(const char *text, struct unit_dim d, const char *part)
+{
+	double v = 777;
+	char msg[256] = "";
+	int st = units_parse(text, d, &v, msg, sizeof msg);
+
+	cr_assert_eq(st, HB_EINVAL, "'%s' was accepted", text);
+	cr_assert(strstr(msg, part) != NULL, "message for '%s' is \"%s\", lacks \"%s\"", text, msg,
+	    part);
+	cr_assert_eq(v, 777, "value changed on error");
+}
+
+static const struct unit_dim K_HERTZ = { 1, -0.5, -2, 0, 0 };    /* N m^-3/2 */
+static const struct unit_dim C_SHC = { 1, -1.5, -1, 0, 0 };      /* N s m^-5/2 */
+static const struct unit_dim C_MAXWELL = { 1, 0, -1, 0, 0 };     /* N s/m */
+static const struct unit_dim PER_M2 = { 0, -2, 0, 0, 0 };
+
+Test(units, parse_simple_and_prefixed)
+{
+	parses("20 mm", UNIT_LENGTH, 0.020);
+	parses("20mm", UNIT_LENGTH, 0.020);
+	parses("  1.5e-3  ", UNIT_LENGTH, 1.5e-3);
+	parses("40 um", UNIT_LENGTH, 40e-6);
+	parses("40 \xc2\xb5m", UNIT_LENGTH, 40e-6);   /* micro sign */
+	parses("40 \xce\xbcm", UNIT_LENGTH, 40e-6);   /* Greek mu */
+	parses("2.385 km", UNIT_LENGTH, 2385);
+	parses("3 nm", UNIT_LENGTH, 3e-9);
+	parses("7 cm", UNIT_LENGTH, 0.07);
+	parses("200 GPa", UNIT_PRESSURE, 200e9);
+	parses("0.50 GPa", UNIT_PRESSURE, 0.5e9);
+	parses("3 MPa", UNIT_PRESSURE, 3e6);
+	parses("2 PPa", UNIT_PRESSURE, 2e15);
+	parses("4 mPa", UNIT_PRESSURE, 4e-3);
+	parses("1 Pa", UNIT_PRESSURE, 1);
+	parses("0.2 s", UNIT_TIME, 0.2);
+	parses("3 ms", UNIT_TIME, 3e-3);
+	parses("261.4 g", UNIT_MASS, 0.2614);
+	parses("1 kg", UNIT_MASS, 1);
+	parses("0.5759 N", UNIT_FORCE, 0.5759);
+	parses("2 kN", UNIT_FORCE, 2000);
+	parses("3 J", UNIT_ENERGY, 3);
+	parses("5 mJ", UNIT_ENERGY, 5e-3);
+	parses("120 mm/s", UNIT_VELOCITY, 0.12);
+	parses("-0.5 m/s", UNIT_VELOCITY, -0.5);
+	parses("9.81 m/s^2", UNIT_ACCEL, 9.81);
+	parses("7800 kg/m^3", UNIT_DENSITY, 7800);
+	parses("7.8 g/cm^3", UNIT_DENSITY, 7800);
+	parses("2 N s", UNIT_IMPULSE, 2);
+	parses("2 N*s", UNIT_IMPULSE, 2);
+	parses("1 kg m/s^2", UNIT_FORCE, 1);
+	parses("1 kg*m*s^-2", UNIT_FORCE, 1);
+}
+
+Test(units, parse_compound_and_fractional_powers)
+{
+	parses("4.4e3 N s/m", C_MAXWELL, 4.4e3);
+	parses("4.4e3 kg/s", C_MAXWELL, 4.4e3);
+	parses("2.5e7 N s m^-5/2", C_SHC, 2.5e7);
+	parses("2.138e8 N m^-3/2", K_HERTZ, 2.138e8);
+	parses("2.138e8 N/m^3/2", K_HERTZ, 2.138e8);
+	parses("2.138e8 N m^-1.5", K_HERTZ, 2.138e8);
+	parses("5e7 m^-2", PER_M2, 5e7);
+}
+
+Test(units, parse_fraction_exponent_value)
+{
+	/* (1 mm)^-3/2 = 1e4.5 m^-3/2 */
+	parses("1 mm^-3/2", (struct unit_dim){ 0, -1.5, 0, 0, 0 }, pow(1e-3, -1.5));
+	parses("1 Hz", (struct unit_dim){ 0, 0, -1, 0, 0 }, 1);
+	parses("1 s^-1", (struct unit_dim){ 0, 0, -1, 0, 0 }, 1);
+	parses("2 kHz", (struct unit_dim){ 0, 0, -1, 0, 0 }, 2000);
+	parses("1 W", (struct unit_dim){ 1, 2, -3, 0, 0 }, 1);
+}
+
+Test(units, parse_infinity_and_bare_numbers)
+{
+	parses("inf", UNIT_LENGTH, INFINITY);
+	parses("infinity", UNIT_MASS, INFINITY);
+	parses("inf m", UNIT_LENGTH, INFINITY);
+	parses("-inf N", UNIT_FORCE, -INFINITY);
+	parses("0.35", UNIT_NONE, 0.35);
+	/* A bare number is SI whatever the dimension. */
+	parses("0.02", UNIT_LENGTH, 0.02);
+	parses("2e11", UNIT_PRESSURE, 2e11);
+}
+
+Test(units, parse_errors)
+{
+	fails("abc", UNIT_LENGTH, "'abc' is not a number");
+	fails("", UNIT_LENGTH, "empty");
+	fails("nan", UNIT_NONE, "not a number");
+	fails("0x10", UNIT_NONE, "not a number");
+	fails("1.2.3 m", UNIT_LENGTH, "not a number");
+	fails("20 furlong", UNIT_LENGTH, "unknown unit 'furlong'");
+	fails("20 m/furlong", UNIT_VELOCITY, "unknown unit 'furlong'");
+	fails("20 mm/s", UNIT_NONE, "'20 mm/s' has unit m/s");
+	fails("20 mm/s", UNIT_NONE, "dimensionless");
+	fails("20 mm", UNIT_PRESSURE, "a pressure");
+	fails("20 mm", UNIT_PRESSURE, "has unit m");
+	fails("1 GPa", K_HERTZ, "N m^-3/2");
+	fails("3 m^", UNIT_LENGTH, "exponent");
+	fails("3 m/s/s", UNIT_ACCEL, "'/'");
+	fails("3 mm2", UNIT_LENGTH, "unknown unit 'mm2'");
+}
+
+Test(units, resolve)
+{
+	struct unit_dim k = { 1, 1, -2, -1, 0 }, beta = { 0, 0, 0, 0, -1 };
+	struct unit_dim c = { 1, 0, -1, -1, 0 };
+
+	dim_is(units_resolve(k, 1.5, 2), 1, -0.5, -2);
+	dim_is(units_resolve(beta, 1.5, 2), 0, -2, 0);
+	dim_is(units_resolve(c, 1.5, 2), 1, -1.5, -1);
+	cr_assert_eq(units_resolve(k, 1.5, 2).mp, 0);
+}
+
+static void
+dim_str_is(struct unit_dim d, const char *want)
+{
+	char buf[64];
+
+	cr_assert_str_eq(units_dim_str(d, buf, sizeof buf), want);
+}
+
+Test(units, dim_str)
+{
+	dim_str_is(UNIT_NONE, "");
+	dim_str_is(UNIT_LENGTH, "m");
+	dim_str_is(UNIT_TIME, "s");
+	dim_str_is(UNIT_MASS, "kg");
+	dim_str_is(UNIT_VELOCITY, "m/s");
+	dim_str_is(UNIT_ACCEL, "m/s^2");
+	dim_str_is(UNIT_FORCE, "N");
+	dim_str_is(UNIT_PRESSURE, "Pa");
+	dim_str_is(UNIT_DENSITY, "kg/m^3");
+	dim_str_is(UNIT_ENERGY, "J");
+	dim_str_is(UNIT_IMPULSE, "N s");
+	dim_str_is(K_HERTZ, "N m^-3/2");
+	dim_str_is(C_SHC, "N s m^-5/2");
+	dim_str_is(C_MAXWELL, "N s/m");
+	dim_str_is((struct unit_dim){ 1, 0, -2, 0, 0 }, "N/m");
+	dim_str_is(PER_M2, "m^-2");
+}
+
+Test(units, dim_str_parses_back)
+{
+	const struct unit_dim ds[] = {
+		UNIT_NONE, UNIT_LENGTH, UNIT_TIME, UNIT_MASS, UNIT_VELOCITY, UNIT_ACCEL, UNIT_FORCE,
+		UNIT_PRESSURE, UNIT_DENSITY, UNIT_ENERGY, UNIT_IMPULSE, K_HERTZ, C_SHC, C_MAXWELL,
+		PER_M2, { 1, -2.7, -2, 0, 0 }, { 0, -3.1, 0, 0, 0 }, { 1, 0, -2, 0, 0 },
+		{ 2, 1, -1, 0, 0 }, { 0, 0, -1, 0, 0 }, { 1, 2, -3, 0, 0 },
+	};
+
+	for (size_t i = 0; i < sizeof ds / sizeof ds[0]; i++) {
+		char u[64], text[96], msg[256] = "";
+		double v = 0;
+		units_dim_str(ds[i], u, sizeof u);
+		snprintf(text, sizeof text, "2.385 %s", u);
+		cr_assert_eq(units_parse(text, ds[i], &v, msg, sizeof msg), HB_OK,
+		    "'%s' does not parse back: %s", text, msg);
+		/* SI unit names carry a factor of exactly 1. */
+		cr_assert_eq(v, 2.385, "'%s' gave %.17g", text, v);
+	}
+}
+
+static void
+format_is(double v, struct unit_dim d, int sig, const char *want)
+{
+	char buf[64];
+
+	cr_assert_str_eq(units_format(v, d, sig, buf, sizeof buf), want);
+}
+
+Test(units, format)
+{
+	format_is(0.02, UNIT_LENGTH, 4, "20 mm");
+	format_is(40e-6, UNIT_LENGTH, 4, "40 um");
+	format_is(3.312e-6, UNIT_LENGTH, 4, "3.312 um");
+	format_is(1.5, UNIT_LENGTH, 4, "1.5 m");
+	format_is(0.99996, UNIT_LENGTH, 4, "1 m");      /* rounding carries to the next prefix */
+	format_is(200e9, UNIT_PRESSURE, 4, "200 GPa");
+	format_is(1.134e9, UNIT_PRESSURE, 4, "1.134 GPa");
+	format_is(0.2614, UNIT_MASS, 4, "261.4 g");
+	format_is(2.5, UNIT_MASS, 4, "2.5 kg");
+	format_is(0.5759, UNIT_FORCE, 4, "575.9 mN");
+	format_is(0.2, UNIT_TIME, 4, "200 ms");
+	format_is(0.12, UNIT_VELOCITY, 4, "120 mm/s");
+	format_is(-0.5, UNIT_VELOCITY, 4, "-500 mm/s");
+	format_is(2.5, UNIT_VELOCITY, 4, "2.5 m/s");
+	format_is(0, UNIT_LENGTH, 4, "0 m");
+	format_is(INFINITY, UNIT_LENGTH, 4, "inf m");
+	format_is(INFINITY, UNIT_MASS, 4, "inf kg");
+	format_is(0.35, UNIT_NONE, 4, "0.35");
+	format_is(2.138e8, K_HERTZ, 4, "2.138e+08 N m^-3/2");
+	format_is(4400, C_MAXWELL, 4, "4400 N s/m");
+	format_is(9.81, UNIT_ACCEL, 4, "9.81 m/s^2");
+}
+
+Test(units, axis)
+{
+	char label[16];
+	double s;
+
+	s = units_axis(0.02, "m", label, sizeof label);
+	cr_assert_eq(s, 1e-3);
+	cr_assert_str_eq(label, "mm");
+	s = units_axis(3.3e-6, "m", label, sizeof label);
+	cr_assert_eq(s, 1e-6);
+	cr_assert_str_eq(label, "um");
+	s = units_axis(2.5e5, "N", label, sizeof label);
+	cr_assert_eq(s, 1e3);
+	cr_assert_str_eq(label, "kN");
+	s = units_axis(5, "s", label, sizeof label);
+	cr_assert_eq(s, 1);
+	cr_assert_str_eq(label, "s");
+	s = units_axis(0, "J", label, sizeof label);
+	cr_assert_eq(s, 1);
+	cr_assert_str_eq(label, "J");
+	s = units_axis(0.2614, "kg", label, sizeof label);
+	cr_assert(fabs(s - 1e-3) < 1e-18);
+	cr_assert_str_eq(label, "g");
+}
