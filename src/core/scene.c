@@ -749,9 +749,15 @@ scene_validate(struct scene *sc, char *msg, size_t n)
 			k++;
 		}
 		name[k] = '\0';
-		if (law_param_index(sc->law, name) < 0)
+		int pi = law_param_index(sc->law, name);
+		char vs[64];
+		if (pi < 0) {
+			pi = 0;
 			snprintf(name, sizeof name, "%s", sc->law->params[0].name);
-		return status_set(msg, n, HB_EINVAL, "law.%s: %s", name, lm);
+		}
+		value_str(sc->par[pi], lawpar_dim(sc, pi), vs, sizeof vs);
+		return status_set(msg, n, HB_EINVAL, "law.%s: value %s is out of range; accepted: %s",
+		    name, vs, lm);
 	}
 
 	const struct scene_loads *L = &sc->loads;
