@@ -824,6 +824,14 @@ app_key(struct app *a, int ch)
 	default:
 		break;
 	}
+	/* navigation: the table selection follows the cursor onto a contact */
+	if (act == ACT_STEP_FWD || act == ACT_STEP_BACK || act == ACT_PREV_JUMP
+	    || act == ACT_NEXT_JUMP || act == ACT_SCRUB_BACK || act == ACT_SCRUB_FWD
+	    || act == ACT_HOME || act == ACT_END) {
+		long i = coll_at_cursor(a);
+		if (i >= 0)
+			a->table_sel = i;
+	}
 }
 
 int

@@ -23,7 +23,7 @@ static const struct {
 	{ "i", NULL, 4 },
 	{ "t_e", "s", 9 },
 	{ "t_d", "s", 8 },
-	{ "v_i", NULL, 9 },
+	{ "v_i", NULL, 10 },
 	{ "e", NULL, 7 },
 	{ "xc^max", "m", 11 },
 	{ "Fc^max", "N", 10 },
@@ -117,12 +117,17 @@ pane_table_draw(const struct app *a)
 			double v = colval(c, k);
 			if (k == COL_I)
 				snprintf(cell, sizeof cell, "%s%ld", i == at ? ">" : " ", c->i);
-			else if (!c->complete && (k == COL_E || k == COL_XCR || k == COL_LAMBDA))
+			else if (!c->complete && k == COL_E)
+				snprintf(cell, sizeof cell, "live");
+			else if (!c->complete && (k == COL_XCR || k == COL_LAMBDA))
 				snprintf(cell, sizeof cell, "-");
 			else if (!isfinite(v))
 				snprintf(cell, sizeof cell, "-");
-			else
+			else {
 				snprintf(cell, sizeof cell, "%.4g", v / scale[k]);
+				if ((int)strlen(cell) >= cols[k].width)
+					snprintf(cell, sizeof cell, "%.1e", v / scale[k]);
+			}
 			char w[64];
 			snprintf(w, sizeof w, "%*s", cols[k].width, cell);
 			strncat(line, w, sizeof line - strlen(line) - 1);

@@ -1,0 +1,358 @@
+#!/bin/sh
+# The explorer driven as a person uses it: tmux at fixed sizes, send-keys,
+# then poll capture-pane until the expected text appears (never a bare
+# sleep).  Needs HYBOUNCE_BIN (absolute path) and HYBOUNCE_PRESETS, as set
+# by tests/run.sh.  One "ok - NAME" / "not ok - NAME" line per test.
+set -u
+BIN=${HYBOUNCE_BIN:?HYBOUNCE_BIN is not set}
+export HYBOUNCE_PRESETS="${HYBOUNCE_PRESETS:-$(pwd)/presets}"
+command -v tmux >/dev/null || { echo "not ok - tmux is not installed"; exit 1; }
+
+SOCK=hbtest$$
+TMP=$(mktemp -d)
+TM="tmux -L $SOCK -f /dev/null"
+failed=0
+trap '$TM kill-server 2>/dev/null; rm -rf "$TMP"' EXIT INT TERM HUP
+
+ok() { echo "ok - $1"; }
+notok() {
+	echo "not ok - $1"
+	failed=$((failed + 1))
+	if [ -n "${2:-}" ]; then
+		echo "# screen:"; $TM capture-pane -p -t "$2" 2>/dev/null | sed 's/^/#   /'
+	fi
+}
+
+# start NAME COLS LINES [ARGS...]: a session running the explorer; its exit
+# status is written to $TMP/NAME.rc when it ends.
+start() {
+	name=$1 cols=$2 lines=$3
+	shift 3
+	rm -f "$TMP/$name.rc"
+	$TM new-session -d -s "$name" -x "$cols" -y "$lines" \
+	    "cd '$TMP' && '$BIN' $* ; echo \$? > '$TMP/$name.rc'"
+}
+
+# wait_for SESSION PATTERN [TENTHS]: polls the screen until grep -E finds PATTERN.
+wait_for() {
+	i=0
+	while [ "$i" -lt "${3:-100}" ]; do
+		if $TM capture-pane -p -t "$1" 2>/dev/null | grep -Eq -- "$2"; then
+			return 0
+		fi
+		i=$((i + 1))
+		sleep 0.1
+	done
+	return 1
+}
+
+# wait_gone SESSION PATTERN [TENTHS]: polls until PATTERN is no longer on the screen.
+wait_gone() {
+	i=0
+	while [ "$i" -lt "${3:-100}" ]; do
+		if ! $TM capture-pane -p -t "$1" 2>/dev/null | grep -Eq -- "$2"; then
+			return 0
+		fi
+		i=$((i + 1))
+		sleep 0.1
+	done
+	return 1
+}
+
+# wait_exit NAME [TENTHS]: waits for the program's exit status file.
+wait_exit() {
+	i=0
+	while [ "$i" -lt "${2:-100}" ]; do
+		[ -s "$TMP/$1.rc" ] && return 0
+		i=$((i + 1))
+		sleep 0.1
+	done
+	return 1
+}
+
+keys() { s=$1; shift; $TM send-keys -t "$s" "$@"; }
+screen() { $TM capture-pane -p -t "$1"; }
+
+# select_param SESSION KEY: moves the panel selection until the header names KEY.
+select_param() {
+	n=0
+	while [ "$n" -lt 80 ]; do
+		screen "$1" | grep -q "parameters (Enter edits, +/- nudge) $2:" && return 0
+		keys "$1" Down
+		wait_for "$1" "parameters \(Enter edits" 20 || return 1
+		n=$((n + 1))
+		sleep 0.05
+	done
+	return 1
+}
+
+# status_field SESSION FIELD: the value of "FIELD=..." on the status line.
+status_field() {
+	screen "$1" | head -n 1 | tr ' ' '\n' | sed -n "s/^$2=//p" | head -n 1
+}
+
+# ---- 1. start: plots and the collisions table ----------------------------
+start a 80 24
+if wait_for a 't_e\[ms\]' && wait_for a '^x\[mm\]' && wait_for a '^t -> ' \
+   && wait_for a '^ +0 +[0-9.]+ +[0-9.]+ +-' && wait_for a 'coll [1-9]'; then
+	ok "starts on steel-on-bitumen with the plots and the collisions table"
+else
+	notok "starts on steel-on-bitumen with the plots and the collisions table" a
+fi
+
+# the table follows the run as it computes; at its end the status line
+# counts the first study's 12 collisions and the table ends with the
+# permanent contact in progress
+if wait_for a 'finished' 150 && wait_for a ' coll 12 ' 10; then
+	keys a End
+	if wait_for a '^ *>?12 +[0-9.]+ +[0-9.]+ +[-0-9.e]+ +live ' 30; then
+		ok "run finished: 12 collisions, the permanent contact shown live"
+	else
+		notok "run finished: 12 collisions, the permanent contact shown live" a
+	fi
+else
+	notok "run finished: 12 collisions" a
+fi
+
+# ---- 2. pause, earlier collision: t, j and the table's cursor row change --
+keys a space
+wait_for a ' paused ' 30
+keys a End
+wait_for a ' paused ' 30
+j1=$(status_field a j)
+keys a '{'
+wait_for a 'j=[0-9]' 30
+sleep 0.2
+j2=$(status_field a j)
+t2=$(status_field a t)
+keys a '{'
+sleep 0.1
+wait_gone a "j=$j2 " 30
+j3=$(status_field a j)
+t3=$(status_field a t)
+i3=$(( (j3 - 1) / 2 ))
+if [ -n "$j2" ] && [ -n "$j3" ] && [ "$j3" -lt "$j2" ] && [ "$j2" -le "$j1" ] \
+   && [ $((j3 % 2)) = 1 ] && [ "$t3" != "$t2" ] && screen a | grep -Eq "^ *>$i3 "; then
+	ok "pause and go to an earlier collision: j $j1 -> $j2 -> $j3, table row $i3 marked"
+else
+	notok "pause and go to an earlier collision (j $j1 -> $j2 -> $j3)" a
+fi
+
+# ---- 3. edit c at the cursor ---------------------------------------------
+keys a Tab
+if wait_for a 'parameters \(Enter edits' 30 && select_param a law.c; then
+	keys a Enter
+	wait_for a '^law\.c .*: ' 30
+	keys a C-u
+	keys a -l '6000 N s/m'
+	keys a Enter
+	if wait_for a 'law\.c = 6000 N s/m; the run continues from the cursor' 50 \
+	   && wait_for a ' c +6000 N s/m' 30 && wait_for a 'finished' 100; then
+		ok "edit c: the run continues from the cursor with the new value"
+	else
+		notok "edit c: the run continues from the cursor with the new value" a
+	fi
+else
+	notok "edit c: parameter row law.c not found" a
+fi
+
+# ---- 4. refuse alpha = 1.5 -------------------------------------------------
+if select_param a law.alpha || { keys a Home; select_param a law.alpha; }; then
+	:
+fi
+# the selection may lie below law.alpha: walk up
+n=0
+while ! screen a | grep -q "nudge) law.alpha:" && [ $n -lt 40 ]; do
+	keys a Up
+	sleep 0.05
+	n=$((n + 1))
+done
+old=$(screen a | grep -E '^ +alpha ' | awk '{print $2}')
+keys a Enter
+wait_for a '^law\.alpha .*: ' 30
+keys a C-u
+keys a -l '1.5'
+keys a Enter
+if wait_for a 'refused.*\(0, 1\)' 30 && screen a | grep -Eq "^ +alpha +$old"; then
+	ok "alpha = 1.5 refused with the accepted range (0, 1); old value $old kept"
+else
+	notok "alpha = 1.5 refused with the accepted range (0, 1)" a
+fi
+
+# ---- 5. switch the law -----------------------------------------------------
+keys a Tab
+keys a L
+if wait_for a 'contact law \(Enter chooses' 30; then
+	for k in 1 2 3 4 5 6; do keys a Up; done
+	keys a Enter
+	if wait_for a '^ steel-on-bitumen shccl ' 50 && wait_for a 'law shccl' 30; then
+		ok "law picker: switched to shccl"
+	else
+		notok "law picker: switched to shccl" a
+	fi
+else
+	notok "law picker opens" a
+fi
+
+# ---- 6. pin a run and see the legend -------------------------------------
+keys a p
+if wait_for a 'pinned steel-on-bitumen/shccl' 30 \
+   && wait_for a '\. steel-on-bitumen/shccl +\* steel-on-bitumen/shccl \(now\)' 30; then
+	keys a L
+	wait_for a 'contact law' 30
+	keys a Down
+	keys a Enter
+	if wait_for a '\* steel-on-bitumen/bwshccl \(now\)' 50; then
+		ok "pin: legend shows the ghost and the new run (bwshccl)"
+	else
+		notok "pin: legend shows the ghost and the new run" a
+	fi
+else
+	notok "pin: legend" a
+fi
+keys a P
+wait_for a 'pinned runs cleared' 30 || notok "P clears pins" a
+
+# ---- 7. export -------------------------------------------------------------
+keys a e
+if wait_for a '^export to BASE' 30; then
+	keys a C-u
+	keys a -l "$TMP/out/run1"
+	mkdir -p "$TMP/out"
+	keys a Enter
+	if wait_for a "wrote $TMP/out/run1-trace.csv" 50 \
+	   && [ -s "$TMP/out/run1-trace.csv" ] && [ -s "$TMP/out/run1-collisions.csv" ] \
+	   && ls "$TMP/out/"*.preset >/dev/null 2>&1 \
+	   && head -n 1 "$TMP/out/run1-trace.csv" | grep -q '^t,j,q_c,x,v,x_c' \
+	   && awk -F, 'NR == 1 { n = NF } NF != n { bad = 1 } END { exit bad || NR < 3 }' "$TMP/out/run1-trace.csv" \
+	   && awk -F, 'NR == 1 { n = NF } NF != n { bad = 1 } END { exit bad || NR < 2 }' "$TMP/out/run1-collisions.csv" \
+	   && "$BIN" --batch "$(ls "$TMP/out/"*.preset | head -n 1)" -q >/dev/null 2>&1; then
+		ok "export: trace and collisions CSV and the scene preset written and parse"
+	else
+		notok "export: trace and collisions CSV and the scene preset written and parse" a
+		ls -l "$TMP/out" | sed 's/^/#   /'
+	fi
+else
+	notok "export prompt" a
+fi
+# a failed export says why and loses nothing
+keys a e
+wait_for a '^export to BASE' 30
+keys a C-u
+keys a -l "$TMP/no/such/dir/run2"
+keys a Enter
+if wait_for a 'export failed' 30 && wait_for a '^t -> ' 10; then
+	ok "export into a missing folder fails with a message"
+else
+	notok "export into a missing folder fails with a message" a
+fi
+
+# ---- 8. resize --------------------------------------------------------------
+$TM resize-window -t a -x 120 -y 40
+if wait_for a '^t -> .* ms$' 30 && wait_for a '^x\[mm\]' 30 \
+   && [ "$(screen a | wc -l)" -ge 39 ] && screen a | tail -n 1 | grep -q '?:help'; then
+	ok "resize to 120x40 redraws"
+else
+	notok "resize to 120x40 redraws" a
+fi
+$TM resize-window -t a -x 60 -y 15
+if wait_for a 'terminal too small: need at least 80x24' 30; then
+	ok "60x15 shows the too-small message"
+else
+	notok "60x15 shows the too-small message" a
+fi
+$TM resize-window -t a -x 80 -y 24
+if wait_for a '^t -> ' 30 && wait_gone a 'too small' 30; then
+	ok "back to 80x24 redraws"
+else
+	notok "back to 80x24 redraws" a
+fi
+
+# ---- 9. help and quit --------------------------------------------------------
+keys a '?'
+if wait_for a 'hybounce keys' 30 && wait_for a 'play / pause' 10; then
+	ok "help overlay lists the keys"
+else
+	notok "help overlay lists the keys" a
+fi
+keys a Escape
+wait_gone a 'hybounce keys' 30
+keys a q
+if wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ]; then
+	ok "q quits with status 0"
+else
+	notok "q quits with status 0 (rc: $(cat "$TMP/a.rc" 2>/dev/null))"
+fi
+
+# ---- 10. a larger terminal: table and parameters side by side ---------------
+start b 160 48
+if wait_for b 't_e\[ms\]' && wait_for b '-- bodies --' && wait_for b '-- run --' \
+   && wait_for b '^x\[mm\]'; then
+	ok "160x48: plots, table and parameter panel together"
+else
+	notok "160x48: plots, table and parameter panel together" b
+fi
+keys b 3
+if wait_for b 'third study' 50 && wait_for b '\. shccl +o bwshccl +\* bwmcl \(now\)' 30; then
+	ok "key 3: the paper's third study, three runs pinned with a legend"
+else
+	notok "key 3: the paper's third study, three runs pinned with a legend" b
+fi
+keys b y
+if wait_for b 'hysteresis loop: F_c against x_c' 30 && wait_for b '^x_c -> ' 10; then
+	ok "hysteresis loop view"
+else
+	notok "hysteresis loop view" b
+fi
+keys b J
+if wait_for b 'against j' 30 && wait_for b '^j -> ' 10; then
+	ok "view of the arc against j"
+else
+	notok "view of the arc against j" b
+fi
+keys b C-c
+if wait_exit b 50; then
+	ok "Ctrl-C leaves the explorer (status $(cat "$TMP/b.rc"))"
+else
+	notok "Ctrl-C leaves the explorer" b
+fi
+
+# ---- 11. SIGHUP, NO_COLOR, ASCII ------------------------------------------
+start c 80 24 --ascii
+if wait_for c '^x\[mm\]' && screen c | grep -q '\*'; then
+	ok "--ascii plots with '*'"
+else
+	notok "--ascii plots with '*'" c
+fi
+pid=$($TM list-panes -t c -F '#{pane_pid}')
+kid=$(pgrep -P "$pid" -f hybounce | head -n 1)
+if [ -n "$kid" ] && kill -HUP "$kid" && wait_exit c 50; then
+	ok "SIGHUP leaves the explorer through term_end"
+else
+	notok "SIGHUP leaves the explorer" c
+fi
+$TM kill-session -t c 2>/dev/null
+
+rm -f "$TMP/d.rc"
+$TM new-session -d -s d -x 80 -y 24 \
+    "cd '$TMP' && NO_COLOR=1 '$BIN' ; echo \$? > '$TMP/d.rc'"
+if wait_for d 't_e\[ms\]' && wait_for d 'finished' 100; then
+	keys d q
+	if wait_exit d 50 && [ "$(cat "$TMP/d.rc")" = 0 ]; then
+		ok "NO_COLOR: runs and quits"
+	else
+		notok "NO_COLOR: quits" d
+	fi
+else
+	notok "NO_COLOR: runs" d
+fi
+
+# ---- 12. a preset that does not load: status 2, message after the terminal is restored
+start e 80 24 no-such-preset
+if wait_exit e 50 && [ "$(cat "$TMP/e.rc")" = 2 ]; then
+	ok "an unknown preset exits with status 2"
+else
+	notok "an unknown preset exits with status 2 (rc $(cat "$TMP/e.rc" 2>/dev/null))"
+fi
+
+[ "$failed" -eq 0 ]
