@@ -128,7 +128,7 @@ keys_man(char *buf, size_t n)
 
 	if (n > 0)
 		buf[0] = 0;
-	put(buf, n, &len, ".Bl -tag -width \"Right l\" -compact\n");
+	put(buf, n, &len, ".Bl -tag -width \"Right, l\" -compact\n");
 	for (i = 0; i < sizeof table / sizeof table[0]; i++) {
 		const struct key_binding *b = &table[i];
 		char lab[64], *p, *tok;
