@@ -1,0 +1,243 @@
+#!/bin/sh
+# The explorer's time controls, views, pickers and parameter nudges, in
+# tmux at 80x24 (send-keys, then poll capture-pane; never a bare sleep).
+# Needs HYBOUNCE_BIN and HYBOUNCE_PRESETS, as set by tests/run.sh.
+# One "ok - NAME" / "not ok - NAME" line per test.
+set -u
+BIN=${HYBOUNCE_BIN:?HYBOUNCE_BIN is not set}
+export HYBOUNCE_PRESETS="${HYBOUNCE_PRESETS:-$(pwd)/presets}"
+command -v tmux >/dev/null || { echo "not ok - tmux is not installed"; exit 1; }
+
+SOCK=hbtest$$
+TMP=$(mktemp -d)
+TM="tmux -L $SOCK -f /dev/null"
+failed=0
+trap '$TM kill-server 2>/dev/null; rm -rf "$TMP"' EXIT INT TERM HUP
+
+ok() { echo "ok - $1"; }
+notok() {
+	echo "not ok - $1"
+	failed=$((failed + 1))
+	if [ -n "${2:-}" ]; then
+		echo "# screen:"; $TM capture-pane -p -t "$2" 2>/dev/null | sed 's/^/#   /'
+	fi
+}
+
+# start NAME COLS LINES [ARGS...]: a session running the explorer; its exit
+# status is written to $TMP/NAME.rc when it ends.
+start() {
+	name=$1 cols=$2 lines=$3
+	shift 3
+	rm -f "$TMP/$name.rc"
+	$TM new-session -d -s "$name" -x "$cols" -y "$lines" \
+	    "cd '$TMP' && '$BIN' $* ; echo \$? > '$TMP/$name.rc'"
+}
+
+# wait_for SESSION PATTERN [TENTHS]: polls the screen until grep -E finds PATTERN.
+wait_for() {
+	i=0
+	while [ "$i" -lt "${3:-100}" ]; do
+		if $TM capture-pane -p -t "$1" 2>/dev/null | grep -Eq -- "$2"; then
+			return 0
+		fi
+		i=$((i + 1))
+		sleep 0.1
+	done
+	return 1
+}
+
+# wait_gone SESSION PATTERN [TENTHS]: polls until PATTERN is no longer on the screen.
+wait_gone() {
+	i=0
+	while [ "$i" -lt "${3:-100}" ]; do
+		if ! $TM capture-pane -p -t "$1" 2>/dev/null | grep -Eq -- "$2"; then
+			return 0
+		fi
+		i=$((i + 1))
+		sleep 0.1
+	done
+	return 1
+}
+
+# wait_exit NAME [TENTHS]: waits for the program's exit status file.
+wait_exit() {
+	i=0
+	while [ "$i" -lt "${2:-100}" ]; do
+		[ -s "$TMP/$1.rc" ] && return 0
+		i=$((i + 1))
+		sleep 0.1
+	done
+	return 1
+}
+
+keys() { s=$1; shift; $TM send-keys -t "$s" "$@"; }
+screen() { $TM capture-pane -p -t "$1"; }
+
+# select_param SESSION KEY: moves the panel selection until the header names KEY.
+select_param() {
+	n=0
+	while [ "$n" -lt 80 ]; do
+		screen "$1" | grep -q "parameters (Enter edits, +/- nudge) $2:" && return 0
+		keys "$1" Down
+		wait_for "$1" "parameters \(Enter edits" 20 || return 1
+		n=$((n + 1))
+		sleep 0.05
+	done
+	return 1
+}
+
+# status_field SESSION FIELD: the value of "FIELD=..." on the status line.
+status_field() {
+	screen "$1" | head -n 1 | tr ' ' '\n' | sed -n "s/^$2=//p" | head -n 1
+}
+
+# ---- slow motion through contacts ------------------------------------------
+start a 80 24
+if wait_for a 't_e\[ms\]' && wait_for a ' x0\.02 slow playing' 100; then
+	ok "playback slows down inside a contact (slow motion)"
+else
+	notok "playback slows down inside a contact (slow motion)" a
+fi
+keys a s
+if wait_for a 'slow motion through contacts off' 30 && wait_gone a ' slow playing' 30; then
+	ok "s turns slow motion off"
+else
+	notok "s turns slow motion off" a
+fi
+
+# ---- speed -------------------------------------------------------------------
+keys a +
+if wait_for a ' x0\.05 ' 30; then
+	keys a - -
+	if wait_for a ' x0\.01 ' 30; then
+		ok "+ and - change the playback speed in 1-2-5 steps"
+	else
+		notok "- slows playback" a
+	fi
+else
+	notok "+ speeds playback" a
+fi
+
+# ---- stepping and jumps --------------------------------------------------------
+keys a Home
+if wait_for a ' t=0 s j=0 q_c=0 .* paused ' 30; then
+	keys a .
+	if wait_gone a ' t=0 s ' 30 && wait_for a ' j=0 ' 10; then
+		keys a ,
+		if wait_for a ' t=0 s j=0 ' 30; then
+			ok ". and , step one sample forward and back"
+		else
+			notok ", steps back" a
+		fi
+	else
+		notok ". steps forward" a
+	fi
+else
+	notok "Home pauses at t = 0" a
+fi
+keys a ]
+if wait_for a ' t=63\.8[0-9]* ms j=1 q_c=1 ' 30; then
+	keys a ]
+	if wait_for a ' j=2 q_c=0 ' 30; then
+		keys a [
+		if wait_for a ' j=1 q_c=1 ' 30; then
+			ok "] and [ move to the next and previous jump"
+		else
+			notok "[ previous jump" a
+		fi
+	else
+		notok "] twice" a
+	fi
+else
+	notok "] next jump" a
+fi
+keys a Right
+if wait_for a ' j=[0-9]+ ' 10 && ! screen a | head -n 1 | grep -q ' t=63\.8'; then
+	ok "Right scrubs the cursor in time"
+else
+	notok "Right scrubs the cursor in time" a
+fi
+
+# ---- Enter on a table row: zoom and cursor ---------------------------------------
+keys a Home
+keys a Down Down Enter
+if wait_for a 'zoom: collision 2' 30 && wait_for a ' t=188\.[0-9]* ms j=5 q_c=1 ' 30 \
+   && wait_for a '^ *>2 ' 10; then
+	ok "Enter on row 2 zooms on collision 2 and moves the cursor to its t_e"
+else
+	notok "Enter on row 2 zooms on collision 2 and moves the cursor to its t_e" a
+fi
+keys a v
+if wait_for a 'hysteresis loop: F_c against x_c, collision 2' 30; then
+	keys a v
+	if wait_for a 'against j' 30; then
+		keys a v
+		if wait_for a 'whole run' 30; then
+			keys a v
+			if wait_for a 'follow the cursor' 30; then
+				ok "v cycles the views: zoom, loop, against j, whole run, follow"
+			else
+				notok "v: follow view" a
+			fi
+		else
+			notok "v: whole run" a
+		fi
+	else
+		notok "v: against j" a
+	fi
+else
+	notok "v: loop view after zoom" a
+fi
+keys a C-l
+if wait_for a '^t -> ' 30 && wait_for a 'follow the cursor' 10; then
+	ok "C-l redraws"
+else
+	notok "C-l redraws" a
+fi
+
+# ---- preset picker, restart ---------------------------------------------------------
+keys a o
+if wait_for a 'open a preset' 30 && wait_for a 'hertz-elastic' 10 && wait_for a 'ptfe-pom' 10; then
+	keys a Up Enter
+	if wait_for a '^ ptfe-pom ' 50 && wait_for a 'opened .*ptfe-pom\.preset' 10; then
+		ok "o opens the preset picker; Enter loads ptfe-pom"
+	else
+		notok "preset picker loads ptfe-pom" a
+	fi
+else
+	notok "o opens the preset picker" a
+fi
+keys a r
+if wait_for a 'restarted from t = 0' 30; then
+	ok "r restarts the run"
+else
+	notok "r restarts the run" a
+fi
+
+# ---- nudge a value: an initial condition restarts the run and says so ----------------
+keys a Tab
+if wait_for a 'parameters \(Enter edits' 30 && select_param a initial.x0; then
+	before=$(screen a | grep -E '^ +x0 ' | awk '{print $2, $3}')
+	keys a +
+	if wait_for a 'initial\.x0 = [0-9.e+-]+ [a-z]*m; the run restarted from t = 0' 30; then
+		after=$(screen a | grep -E '^ +x0 ' | awk '{print $2, $3}')
+		if [ "$before" != "$after" ]; then
+			ok "+ in the panel nudges x0 ($before -> $after) and says the run restarted"
+		else
+			notok "+ nudge changed nothing ($before)" a
+		fi
+	else
+		notok "+ in the panel nudges x0" a
+	fi
+	keys a q
+else
+	notok "parameter row initial.x0 not found" a
+	keys a q
+fi
+if wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ]; then
+	ok "q quits with status 0"
+else
+	notok "q quits with status 0"
+fi
+
+[ "$failed" -eq 0 ]
