@@ -393,6 +393,9 @@ col_cell(const struct col *c, const struct collision *k, char *buf, size_t n)
 		return;
 	}
 	v = col_get(c, k);
+	/* e is defined at the separation: not for the contact in progress. */
+	if (!k->complete && c->off == offsetof(struct collision, e))
+		v = NAN;
 	if (isnan(v))
 		snprintf(buf, n, "-");
 	else if (c->sci)
@@ -426,11 +429,12 @@ print_table(const struct sim *s, const struct collision *live)
 	for (c = 0; c < NCOLS; c++) {
 		double mag = 0;
 
+		/* Units from the completed collisions; the live row only when alone. */
 		for (r = 0; r <= nc; r++) {
 			const struct collision *k = r < nc ? sim_collision(s, r) : live;
 			double v;
 
-			if (k == NULL || cols[c].kind == COL_INDEX)
+			if (k == NULL || cols[c].kind == COL_INDEX || (r == nc && nc > 0))
 				continue;
 			v = fabs(col_get(&cols[c], k));
 			if (isfinite(v) && v > mag)
@@ -726,10 +730,10 @@ batch_list_laws(void)
 			units_dim_str(d, unit, sizeof unit);
 			range_str(pp, range, sizeof range);
 			fmt(pp->def, d, dv, sizeof dv);
-			printf("      %-8s %-14s range %-16s default %-16s%s\n",
+			printf("      %-8s %-14s range %-16s default %s%s\n",
 			       pp->name, unit[0] ? unit : "(1)", range, dv,
 			       (pp->flags & LAW_PARAM_STIFFNESS) && law->k_hertz != NULL
-			           ? " derived from k_H when both bodies have materials" : "");
+			           ? " (derived from k_H when both bodies have materials)" : "");
 			if (pp->help != NULL && pp->help[0])
 				printf("      %-8s %s\n", "", pp->help);
 		}

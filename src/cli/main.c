@@ -120,6 +120,9 @@ main(int argc, char **argv)
 		fprintf(stderr, PROG ": out of memory\n");
 		return 1;
 	}
+	static char prog[] = PROG; /* getopt's messages name the program, not its path */
+
+	argv[0] = prog;
 	opterr = 1;
 	while ((c = getopt_long(argc, argv, "b:s:t:c:qhV", long_options, NULL)) != -1) {
 		switch (c) {

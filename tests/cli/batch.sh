@@ -48,7 +48,7 @@ for f in presets/*.preset; do
 	fi
 	# Rows of the table: as many as the summary's count.
 	n=$(sed -n 's/^  collisions  \([0-9]*\)$/\1/p' "$T/out")
-	rows=$(awk '/^collisions \(/ { on = 1; getline; next } on && /^$/ { on = 0 }
+	rows=$(awk '/^collisions \(/ { on = 1; getline; next } on && (/^$/ || /^contact in progress/) { on = 0 }
 	            on && /^ *[0-9]+  / { n++ } END { print n + 0 }' "$T/out")
 	if [ -n "$n" ] && [ "$rows" = "$n" ]; then
 		ok "batch $name: one table row per collision ($n)"

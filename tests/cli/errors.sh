@@ -48,7 +48,7 @@ bad "--set initial.x0='-1 mm'" "x0" -b steel-on-bitumen --set "initial.x0=-1 mm"
 bad "--set body1.R='20 GPa'" "body1.R" -b steel-on-bitumen --set "body1.R=20 GPa"
 bad "--set without =" "KEY=VALUE" -b steel-on-bitumen --set law.alpha
 bad "--set of an unknown key" "law.nosuchkey" -b steel-on-bitumen --set law.nosuchkey=1
-bad "--set of a bad number" "abc" -b steel-on-bitumen --set law.alpha=abc
+bad "--set of a bad number" "abc" -b steel-on-bitumen --set initial.x0=abc
 
 # The expected unit of body1.R (a length) is named.
 "$BIN" -b steel-on-bitumen --set "body1.R=20 GPa" >/dev/null 2>"$T/stderr"
