@@ -81,6 +81,34 @@ ascii_micro(char *s)
 	}
 }
 
+/*
+ * Prints text word-wrapped to 79 columns, every line starting with indent
+ * (the first line too).
+ */
+static void
+print_wrapped(const char *indent, const char *text)
+{
+	const int width = 79 - (int)strlen(indent);
+	const char *p = text;
+
+	while (*p != '\0') {
+		int len = (int)strlen(p), cut = len;
+
+		if (len > width) {
+			cut = width;
+			while (cut > 0 && p[cut] != ' ')
+				cut--;
+			if (cut == 0) /* one long word */
+				for (cut = width; p[cut] != '\0' && p[cut] != ' '; cut++)
+					;
+		}
+		printf("%s%.*s\n", indent, cut, p);
+		p += cut;
+		while (*p == ' ')
+			p++;
+	}
+}
+
 /* ------------------------------------------------------------------ */
 /* Input: preset, --set, export paths                                  */
 
@@ -237,7 +265,7 @@ print_header(const char *preset, const char *path, const struct scene *sc,
 	printf("preset      %s (%s)\n", preset, path);
 	printf("title       %s\n", sc->name);
 	if (sc->description[0])
-		printf("            %s\n", sc->description);
+		print_wrapped("            ", sc->description);
 	print_law(sc);
 	if (d->system == SCENE_REDUCED)
 		printf("system      reduced H_r: body 2 is a fixed obstacle\n");
@@ -290,12 +318,16 @@ print_header(const char *preset, const char *path, const struct scene *sc,
 		printf(", h_max = %s", fmt(sc->run.h_max, UNIT_TIME, b, sizeof b));
 	printf("\n");
 	if (st != NULL && st->ncomp > 0) {
-		printf("            absolute tolerance = atol x scale (scales of the last contact):\n"
-		       "           ");
-		for (i = 0; i < st->ncomp && i < 8; i++)
-			printf("%s %s %.3g", i ? "," : "",
-			       st->comp[i] ? st->comp[i] : "?", st->scale[i]);
-		printf("\n");
+		char line[512];
+		size_t len = 0;
+
+		printf("            absolute tolerance = atol x scale (scales of the last contact):\n");
+		line[0] = '\0';
+		for (i = 0; i < st->ncomp && i < 8 && len < sizeof line; i++)
+			len += (size_t)snprintf(line + len, sizeof line - len, "%s%s %.3g",
+			                        i ? ", " : "", st->comp[i] ? st->comp[i] : "?",
+			                        st->scale[i]);
+		print_wrapped("            ", line);
 	}
 	printf("\n");
 }
@@ -663,7 +695,7 @@ int
 batch_list_presets(void)
 {
 	struct preset_info *pi = NULL;
-	int n = preset_list(&pi), i;
+	int n = preset_list(&pi), i, w = 0;
 
 	if (n < 0) {
 		err("out of memory listing the presets");
@@ -677,10 +709,13 @@ batch_list_presets(void)
 			fprintf(stderr, " %s", *d);
 		fprintf(stderr, "\n");
 	}
+	for (i = 0; i < n; i++)
+		if ((int)strlen(pi[i].name) > w)
+			w = (int)strlen(pi[i].name);
 	for (i = 0; i < n; i++) {
-		printf("%-24s %s\n", pi[i].name, pi[i].title);
+		printf("%-*s  %s\n", w, pi[i].name, pi[i].title);
 		if (pi[i].description[0])
-			printf("%-24s %s\n", "", pi[i].description);
+			print_wrapped("    ", pi[i].description);
 	}
 	free(pi);
 	return 0;
@@ -719,7 +754,7 @@ batch_list_laws(void)
 		p = law_exponent_p(law, def);
 		nn = law_exponent_n(law, def);
 		printf("%s  %s\n", law->name, law->title);
-		printf("    %s\n", law->description);
+		print_wrapped("    ", law->description);
 		printf("    internal states n_z = %d; parameters (units for the default "
 		       "exponents):\n", law->n_z);
 		for (i = 0; i < law->n_params; i++) {
