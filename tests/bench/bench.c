@@ -41,6 +41,8 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <time.h>
 
 #include <gsl/gsl_errno.h>
@@ -86,6 +88,8 @@ struct obs {
 	long steps, rejected, rhs, jac, kinks;
 	size_t n;               /* completed collisions */
 	struct collision *c;
+	int live;               /* 1: a contact is in progress at the end */
+	struct collision lc;    /* its values so far */
 	double tT, xT, vT;      /* state at the end */
 	int qT;
 	long jT;
@@ -97,6 +101,7 @@ struct obs {
 
 struct err {
 	double t, e, xc, F, T, coll;
+	double tabs;            /* max |d t_e|, |d t_s| in seconds */
 	long dn;
 };
 
@@ -157,6 +162,7 @@ collect(struct sim *s, struct obs *o)
 	o->jac = st->jac;
 	o->kinks = st->kinks;
 	o->n = sim_ncollisions(s);
+	o->live = sim_contact_live(s, &o->lc);
 	o->c = calloc(o->n ? o->n : 1, sizeof *o->c);
 	for (i = 0; i < o->n; i++)
 		o->c[i] = *sim_collision(s, i);
@@ -272,11 +278,17 @@ compare(const struct obs *o, const struct obs *r, enum ref_kind kind, struct err
 		double dt = fmax(fabs(a->te - b->te), fabs(a->ts - b->ts)) / b->td;
 
 		e->t = fmax(e->t, dt);
+		e->tabs = fmax(e->tabs, fmax(fabs(a->te - b->te), fabs(a->ts - b->ts)));
 		e->e = fmax(e->e, rel(a->e, b->e));
 		e->xc = fmax(e->xc, rel(a->xcmax, b->xcmax));
 		e->F = fmax(e->F, rel(a->Fcmax, b->Fcmax));
 	}
 	e->dn = (long)o->n - (long)r->n;
+	if (o->live && r->live && !e->dn) {
+		e->t = fmax(e->t, fabs(o->lc.te - r->lc.te) / fmax(r->lc.td, 1e-300));
+		e->xc = fmax(e->xc, rel(o->lc.xcmax, r->lc.xcmax));
+		e->F = fmax(e->F, rel(o->lc.Fcmax, r->lc.Fcmax));
+	}
 	if (kind == REF_HERTZ)
 		e->T = o->dE;
 	else
@@ -705,7 +717,7 @@ main(int argc, char **argv)
 
 	/* The grid. */
 	fprintf(csv, "preset,stepper,rtol,atol,status,ms,reps,steps,rejected,rhs,jac,"
-	             "collisions,dn,err_t,err_e,err_xcmax,err_Fcmax,err_coll,err_T,reference,message\n");
+	             "collisions,dn,err_t,err_t_abs_s,err_e,err_xcmax,err_Fcmax,err_coll,err_T,reference,message\n");
 	for (s = 0; s < NSTUDY; s++) {
 		if (load(pdir, studies[s].preset, &sc))
 			return 1;
@@ -718,11 +730,11 @@ main(int argc, char **argv)
 				if (!c->o.status)
 					compare(&c->o, reference_for(s, st), studies[s].kind, &c->e);
 				fprintf(csv, "%s,%s,%g,%g,%s,%.6g,%d,%ld,%ld,%ld,%ld,%zu,%ld,"
-				             "%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%s,\"",
+				             "%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%s,\"",
 				        studies[s].preset, scene_stepper_name(st), tols[t], tols[t],
 				        c->o.status == 0 ? "ok" : c->o.status == 1 ? "failed" : "budget",
 				        c->o.sec * 1e3, c->o.reps, c->o.steps, c->o.rejected, c->o.rhs,
-				        c->o.jac, c->o.n, c->e.dn, c->e.t, c->e.e, c->e.xc, c->e.F,
+				        c->o.jac, c->o.n, c->e.dn, c->e.t, c->e.tabs, c->e.e, c->e.xc, c->e.F,
 				        c->e.coll, c->e.T,
 				        studies[s].kind != REF_RUN ? "closed form"
 				        : st == STEPPER_RK8PD ? "rkck 1e-14/1e-18" : "rk8pd 1e-14/1e-18");
@@ -775,6 +787,27 @@ main(int argc, char **argv)
 	fprintf(md, "\nThe Hertz contact duration by 96- and 64-node Gauss-Legendre differs by %.1e "
 	            "(relative).\n", hertz_quad);
 
+	/* Extra rk8pd settings with atol below rtol, for the choice of the default. */
+	for (s = 0; s < NSTUDY; s++) {
+		if (load(pdir, studies[s].preset, &sc))
+			return 1;
+		for (i = 0; i < NEXTRA; i++) {
+			struct cell *c = &xgrid[s][i];
+
+			set_tol(&sc, extra[i].st, extra[i].rtol, extra[i].atol);
+			run_timed(&sc, &c->o, MAXREP);
+			if (!c->o.status)
+				compare(&c->o, reference_for(s, extra[i].st), studies[s].kind, &c->e);
+			fprintf(csv, "%s,%s,%g,%g,%s,%.6g,%d,%ld,%ld,%ld,%ld,%zu,%ld,"
+			             "%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%s,\"%s\"\n",
+			        studies[s].preset, scene_stepper_name(extra[i].st), extra[i].rtol,
+			        extra[i].atol, c->o.status ? "failed" : "ok", c->o.sec * 1e3, c->o.reps,
+			        c->o.steps, c->o.rejected, c->o.rhs, c->o.jac, c->o.n, c->e.dn, c->e.t,
+			        c->e.tabs, c->e.e, c->e.xc, c->e.F, c->e.coll, c->e.T,
+			        studies[s].kind != REF_RUN ? "closed form" : "rkck 1e-14/1e-18",
+			        c->o.status ? "failed" : "");
+		}
+	}
 	/* Tables and plots per study. */
 	for (s = 0; s < NSTUDY; s++) {
 		struct point pts[NSTEP * NTOL];
@@ -807,6 +840,16 @@ main(int argc, char **argv)
 			        paper[s].sec * 1e3, paper[s].steps, paper[s].rhs, paper[s].n, paperE[s].dn,
 			        fmt_e(b1, paperE[s].t), fmt_e(b2, paperE[s].e), fmt_e(b3, paperE[s].xc),
 			        fmt_e(b4, paperE[s].F), fmt_e(b5, paperE[s].T));
+		for (i = 0; i < NEXTRA; i++) {
+			const struct cell *c = &xgrid[s][i];
+
+			if (c->o.status)
+				continue;
+			fprintf(md, "| rk8pd | %g/%g | %.2f | %ld | %ld | %zu | %ld | %s | %s | %s | %s | %s |\n",
+			        extra[i].rtol, extra[i].atol, c->o.sec * 1e3, c->o.steps, c->o.rhs, c->o.n,
+			        c->e.dn, fmt_e(b1, c->e.t), fmt_e(b2, c->e.e), fmt_e(b3, c->e.xc),
+			        fmt_e(b4, c->e.F), fmt_e(b5, c->e.T));
+		}
 		snprintf(title, sizeof title, "work-precision: %s (%s)", studies[s].preset,
 		         studies[s].label);
 		plot(stdout, title, pts, np);
@@ -824,40 +867,30 @@ main(int argc, char **argv)
 	            "velocity of 1 m/s it is the same. With rtol 1e-11 dominating on every component "
 	            "that is not near zero, the mapping is faithful on the observables; the engine "
 	            "also ends steps on the law's kinks (DESIGN.md 4a), which DOP853 did not.\n\n");
-	fprintf(md, "| preset | setting | ms | n | t | e | xc | F | T |\n|---|---|---|---|---|---|---|---|---|\n");
+	fprintf(md, "| preset | setting | ms | n | t (/t_d) | t (s) | e | xc | F | T |\n"
+	            "|---|---|---|---|---|---|---|---|---|---|\n");
 	for (s = 0; s < NSTUDY; s++) {
 		if (load(pdir, studies[s].preset, &sc))
 			return 1;
 		if (!paper[s].status)
-			fprintf(md, "| %s | paper: rk8pd 1e-11/1e-14 | %.2f | %zu | %s | %s | %s | %s | %s |\n",
+			fprintf(md, "| %s | paper: rk8pd 1e-11/1e-14 | %.2f | %zu | %s | %s | %s | %s | %s | %s |\n",
 			        studies[s].preset, paper[s].sec * 1e3, paper[s].n, fmt_e(b1, paperE[s].t),
+			        fmt_e(b6, paperE[s].tabs),
 			        fmt_e(b2, paperE[s].e), fmt_e(b3, paperE[s].xc), fmt_e(b4, paperE[s].F),
 			        fmt_e(b5, paperE[s].T));
 		else
 			fprintf(md, "| %s | paper | failed: %s |||||||\n", studies[s].preset, paper[s].msg);
 		if (!dflt[s].status)
-			fprintf(md, "| %s | preset: %s %g/%g | %.2f | %zu | %s | %s | %s | %s | %s |\n",
+			fprintf(md, "| %s | preset: %s %g/%g | %.2f | %zu | %s | %s | %s | %s | %s | %s |\n",
 			        studies[s].preset, scene_stepper_name(sc.run.stepper), sc.run.rtol,
 			        sc.run.atol, dflt[s].sec * 1e3, dflt[s].n, fmt_e(b1, dfltE[s].t),
+			        fmt_e(b6, dfltE[s].tabs),
 			        fmt_e(b2, dfltE[s].e), fmt_e(b3, dfltE[s].xc), fmt_e(b4, dfltE[s].F),
 			        fmt_e(b5, dfltE[s].T));
 		else
 			fprintf(md, "| %s | preset | failed: %s |||||||\n", studies[s].preset, dflt[s].msg);
 	}
 
-	/* Extra rk8pd settings with atol below rtol, for the choice of the default. */
-	for (s = 0; s < NSTUDY; s++) {
-		if (load(pdir, studies[s].preset, &sc))
-			return 1;
-		for (i = 0; i < NEXTRA; i++) {
-			struct cell *c = &xgrid[s][i];
-
-			set_tol(&sc, extra[i].st, extra[i].rtol, extra[i].atol);
-			run_timed(&sc, &c->o, MAXREP);
-			if (!c->o.status)
-				compare(&c->o, reference_for(s, extra[i].st), studies[s].kind, &c->e);
-		}
-	}
 	fprintf(md, "\n## Choice of the default\n\nA setting qualifies when, on every paper study, it "
 	            "completes with the reference's collision count, each error (t, e, xc, F, T) is at "
 	            "most a tenth of the paper setting's or within the floor of the references (their "
@@ -951,6 +984,73 @@ main(int argc, char **argv)
 		}
 	}
 
+	/* Hard cases: every stepper at 1e-8 and 1e-10 against rk8pd 1e-14/1e-18. */
+	fprintf(md, "\n## Hard cases (presets/hard-*.preset, tests/test_hard.c)\n\n"
+	            "Each hard preset with every stepper at rtol = atol = 1e-8 and 1e-10, against "
+	            "rk8pd at rtol 1e-14, atol 1e-18 (rk8pd rows: against rkck at the same). Errors as "
+	            "above; a contact still in progress at T is compared too (x_c^max, F_c^max so far). "
+	            "e_max = the largest restitution of the run.\n\n"
+	            "| preset | stepper | tol | ms | steps | rhs | n | dn | coll | T | e_max |\n"
+	            "|---|---|---|---|---|---|---|---|---|---|---|\n");
+	{
+		static const char *const hard[] = {
+			"hard-stiff-maxwell", "hard-bouc-wen-beta", "hard-n1", "hard-drop-1um",
+			"hard-bounce-end", "hard-slow-impact-hertz", "hard-slow-impact-shccl",
+			"hard-linear-maxwell",
+		};
+		static const double htol[] = { 1e-8, 1e-10 };
+
+		for (i = 0; i < (int)(sizeof hard / sizeof hard[0]); i++) {
+			struct obs ra, rb;
+
+			if (load(pdir, hard[i], &sc))
+				return 1;
+			set_tol(&sc, STEPPER_RK8PD, 1e-14, 1e-18);
+			run_timed(&sc, &ra, 1);
+			set_tol(&sc, STEPPER_RKCK, 1e-14, 1e-18);
+			run_timed(&sc, &rb, 1);
+			if (ra.status)
+				fprintf(md, "| %s | reference rk8pd 1e-14/1e-18 | failed: %s |||||||||\n",
+				        hard[i], ra.msg);
+			if (rb.status)
+				fprintf(md, "| %s | reference rkck 1e-14/1e-18 | failed: %s |||||||||\n",
+				        hard[i], rb.msg);
+			for (st = 0; st < NSTEP; st++)
+				for (t = 0; t < 2; t++) {
+					struct obs o;
+					struct err e = { 0 };
+					const struct obs *ref = st == STEPPER_RK8PD ? &rb : &ra;
+					double emax = 0;
+					size_t k;
+
+					set_tol(&sc, st, htol[t], htol[t]);
+					run_timed(&sc, &o, 3);
+					if (o.status) {
+						fprintf(md, "| %s | %s | %g | failed: %s ||||||||\n", hard[i],
+						        scene_stepper_name(st), htol[t], o.msg);
+						fprintf(stderr, "  %s %s %g: %s\n", hard[i],
+						        scene_stepper_name(st), htol[t], o.msg);
+						obs_free(&o);
+						continue;
+					}
+					for (k = 0; k < o.n; k++)
+						emax = fmax(emax, o.c[k].e);
+					if (!ref->status)
+						compare(&o, ref, REF_RUN, &e);
+					fprintf(md, "| %s | %s | %g | %.2f | %ld | %ld | %zu | %ld | %s | %s | %s |\n",
+					        hard[i], scene_stepper_name(st), htol[t], o.sec * 1e3, o.steps,
+					        o.rhs, o.n, ref->status ? 0 : e.dn,
+					        ref->status ? "-" : fmt_e(b1, e.coll),
+					        ref->status ? "-" : fmt_e(b2, e.T),
+					        o.n ? (snprintf(b3, 16, "%.9f", emax), b3) : "-");
+					obs_free(&o);
+				}
+			obs_free(&ra);
+			obs_free(&rb);
+			fprintf(stderr, "hard %-26s done (%.0f s)\n", hard[i], now() - T0);
+		}
+	}
+
 	/* Cost against the horizon and the number of collisions; memory of 100 s. */
 	fprintf(md, "\n## Cost against the horizon and the number of collisions\n\n"
 	            "| preset | T (s) | collisions | jumps | ms | steps | rhs | kinks | samples | arc bytes |\n"
@@ -984,47 +1084,86 @@ main(int argc, char **argv)
 		}
 	}
 	{
-		char msg[400];
-		struct sim *sm;
-		size_t peak = 0, peak_n = 0;
-		double t0, t1;
+		/*
+		 * In a child process, so that its max RSS is the run's own and not
+		 * the bench's: the child sends its numbers through a pipe.
+		 */
+		struct mem {
+			int ok;
+			char end[200];
+			double wall;
+			long steps, rhs, kinks;
+			size_t ncoll, samples, peak_n, peak;
+			int thinned;
+		} mr = { 0 };
 		struct rusage ru;
+		int fd[2], wst;
+		pid_t pid;
 
 		if (load(pdir, "steel-on-bitumen", &sc))
 			return 1;
 		set(&sc, "run.T", "100 s");
-		t0 = now();
-		sm = sim_new(&sc, msg, sizeof msg);
-		if (!sm) {
-			fprintf(stderr, "hybounce-bench: %s\n", msg);
+		fflush(NULL);
+		if (pipe(fd) || (pid = fork()) < 0) {
+			fprintf(stderr, "hybounce-bench: fork: %s\n", strerror(errno));
 			return 1;
 		}
-		while (sim_end(sm) == SIM_RUNNING) {
-			if (sim_advance(sm, 500, 0) != HB_OK)
-				break;
-			if (arc_bytes(sim_arc(sm)) > peak)
-				peak = arc_bytes(sim_arc(sm));
-			if (arc_len(sim_arc(sm)) > peak_n)
-				peak_n = arc_len(sim_arc(sm));
+		if (pid == 0) {
+			char msg[400];
+			struct sim *sm;
+			double t0 = now();
+
+			close(fd[0]);
+			sm = sim_new(&sc, msg, sizeof msg);
+			if (sm) {
+				while (sim_end(sm) == SIM_RUNNING) {
+					if (sim_advance(sm, 500, 0) != HB_OK)
+						break;
+					if (arc_bytes(sim_arc(sm)) > mr.peak)
+						mr.peak = arc_bytes(sim_arc(sm));
+					if (arc_len(sim_arc(sm)) > mr.peak_n)
+						mr.peak_n = arc_len(sim_arc(sm));
+				}
+				mr.wall = now() - t0;
+				mr.ok = 1;
+				snprintf(mr.end, sizeof mr.end, "%s", sim_end_str(sm));
+				mr.steps = sim_stats(sm)->steps;
+				mr.rhs = sim_stats(sm)->rhs;
+				mr.kinks = sim_stats(sm)->kinks;
+				mr.ncoll = sim_ncollisions(sm);
+				mr.samples = arc_len(sim_arc(sm));
+				mr.thinned = arc_thinned(sim_arc(sm));
+				sim_free(sm);
+			} else
+				snprintf(mr.end, sizeof mr.end, "sim_new: %.180s", msg);
+			if (write(fd[1], &mr, sizeof mr) != (ssize_t)sizeof mr)
+				_exit(1);
+			_exit(0);
 		}
-		t1 = now();
-		getrusage(RUSAGE_SELF, &ru);
+		close(fd[1]);
+		if (read(fd[0], &mr, sizeof mr) != (ssize_t)sizeof mr)
+			mr.ok = 0;
+		close(fd[0]);
+		waitpid(pid, &wst, 0);
+		getrusage(RUSAGE_CHILDREN, &ru);
 		fprintf(md, "\n## Memory: study 1 with T = 100 s\n\n"
+		            "Run in a child process (max RSS is the run's own, GSL and libc included); "
+		            "peak arc bytes sampled every 500 steps.\n\n"
 		            "| end | wall s | steps | rhs | kinks | collisions | samples (end) | samples (peak) "
 		            "| thinning passes | peak arc bytes | process max RSS |\n"
 		            "|---|---|---|---|---|---|---|---|---|---|---|\n");
-		fprintf(md, "| %s | %.2f | %ld | %ld | %ld | %zu | %zu | %zu | %d | %.2f MiB | %.1f MiB |\n",
-		        sim_end_str(sm), t1 - t0, sim_stats(sm)->steps, sim_stats(sm)->rhs,
-		        sim_stats(sm)->kinks, sim_ncollisions(sm), arc_len(sim_arc(sm)), peak_n,
-		        arc_thinned(sim_arc(sm)), peak / 1048576.0, ru.ru_maxrss / 1024.0);
+		if (!mr.ok)
+			fprintf(md, "| failed: %s ||||||||||\n", mr.end);
+		else
+			fprintf(md, "| %s | %.2f | %ld | %ld | %ld | %zu | %zu | %zu | %d | %.2f MiB | %.1f MiB |\n",
+			        mr.end, mr.wall, mr.steps, mr.rhs, mr.kinks, mr.ncoll, mr.samples,
+			        mr.peak_n, mr.thinned, mr.peak / 1048576.0, ru.ru_maxrss / 1024.0);
 		printf("100 s of study 1: %.2f s wall, peak arc %.2f MiB, %d thinning passes, "
-		       "max RSS %.1f MiB\n", t1 - t0, peak / 1048576.0, arc_thinned(sim_arc(sm)),
+		       "max RSS %.1f MiB\n", mr.wall, mr.peak / 1048576.0, mr.thinned,
 		       ru.ru_maxrss / 1024.0);
-		sim_free(sm);
 	}
 
 	fprintf(md, "\nTotal bench time: %.0f s.\n", now() - T0);
-	(void)b6;
 	fclose(md);
 	fclose(csv);
 	for (s = 0; s < NSTUDY; s++) {
