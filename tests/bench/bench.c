@@ -84,6 +84,7 @@ struct obs {
 	int status;             /* 0 ok, 1 failed, 2 over budget */
 	char msg[400];
 	double sec;             /* median wall time */
+	double cpu;             /* median CPU time in sim_advance (sim_stats.seconds) */
 	int reps;
 	long steps, rejected, rhs, jac, kinks;
 	size_t n;               /* completed collisions */
@@ -225,6 +226,7 @@ run_once(const struct scene *sc, struct obs *o, int keep)
 		obs_free(o);
 		collect(s, o);
 	}
+	o->cpu = sim_stats(s)->seconds;
 	sim_free(s);
 	return o->status ? -1 : t1 - t0;
 }
@@ -233,11 +235,12 @@ run_once(const struct scene *sc, struct obs *o, int keep)
 static void
 run_timed(const struct scene *sc, struct obs *o, int maxrep)
 {
-	double t[MAXREP];
+	double t[MAXREP], c[MAXREP];
 	int r, reps;
 
 	memset(o, 0, sizeof *o);
 	t[0] = run_once(sc, o, 1);
+	c[0] = o->cpu;
 	if (o->status) {
 		o->sec = NAN;
 		o->reps = 1;
@@ -250,9 +253,12 @@ run_timed(const struct scene *sc, struct obs *o, int maxrep)
 		struct obs tmp = { 0 };
 
 		t[r] = run_once(sc, &tmp, 0);
+		c[r] = tmp.cpu;
 	}
 	qsort(t, reps, sizeof t[0], cmp_double);
+	qsort(c, reps, sizeof c[0], cmp_double);
 	o->sec = reps % 2 ? t[reps / 2] : 0.5 * (t[reps / 2 - 1] + t[reps / 2]);
+	o->cpu = reps % 2 ? c[reps / 2] : 0.5 * (c[reps / 2 - 1] + c[reps / 2]);
 	o->reps = reps;
 }
 
@@ -716,7 +722,7 @@ main(int argc, char **argv)
 	}
 
 	/* The grid. */
-	fprintf(csv, "preset,stepper,rtol,atol,status,ms,reps,steps,rejected,rhs,jac,"
+	fprintf(csv, "preset,stepper,rtol,atol,status,ms,cpu_ms,reps,steps,rejected,rhs,jac,"
 	             "collisions,dn,err_t,err_t_abs_s,err_e,err_xcmax,err_Fcmax,err_coll,err_T,reference,message\n");
 	for (s = 0; s < NSTUDY; s++) {
 		if (load(pdir, studies[s].preset, &sc))
@@ -729,11 +735,11 @@ main(int argc, char **argv)
 				run_timed(&sc, &c->o, MAXREP);
 				if (!c->o.status)
 					compare(&c->o, reference_for(s, st), studies[s].kind, &c->e);
-				fprintf(csv, "%s,%s,%g,%g,%s,%.6g,%d,%ld,%ld,%ld,%ld,%zu,%ld,"
+				fprintf(csv, "%s,%s,%g,%g,%s,%.6g,%.6g,%d,%ld,%ld,%ld,%ld,%zu,%ld,"
 				             "%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%s,\"",
 				        studies[s].preset, scene_stepper_name(st), tols[t], tols[t],
 				        c->o.status == 0 ? "ok" : c->o.status == 1 ? "failed" : "budget",
-				        c->o.sec * 1e3, c->o.reps, c->o.steps, c->o.rejected, c->o.rhs,
+				        c->o.sec * 1e3, c->o.cpu * 1e3, c->o.reps, c->o.steps, c->o.rejected, c->o.rhs,
 				        c->o.jac, c->o.n, c->e.dn, c->e.t, c->e.tabs, c->e.e, c->e.xc, c->e.F,
 				        c->e.coll, c->e.T,
 				        studies[s].kind != REF_RUN ? "closed form"
@@ -798,10 +804,11 @@ main(int argc, char **argv)
 			run_timed(&sc, &c->o, MAXREP);
 			if (!c->o.status)
 				compare(&c->o, reference_for(s, extra[i].st), studies[s].kind, &c->e);
-			fprintf(csv, "%s,%s,%g,%g,%s,%.6g,%d,%ld,%ld,%ld,%ld,%zu,%ld,"
+			fprintf(csv, "%s,%s,%g,%g,%s,%.6g,%.6g,%d,%ld,%ld,%ld,%ld,%zu,%ld,"
 			             "%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%s,\"%s\"\n",
 			        studies[s].preset, scene_stepper_name(extra[i].st), extra[i].rtol,
-			        extra[i].atol, c->o.status ? "failed" : "ok", c->o.sec * 1e3, c->o.reps,
+			        extra[i].atol, c->o.status ? "failed" : "ok", c->o.sec * 1e3, c->o.cpu * 1e3,
+			        c->o.reps,
 			        c->o.steps, c->o.rejected, c->o.rhs, c->o.jac, c->o.n, c->e.dn, c->e.t,
 			        c->e.tabs, c->e.e, c->e.xc, c->e.F, c->e.coll, c->e.T,
 			        studies[s].kind != REF_RUN ? "closed form" : "rkck 1e-14/1e-18",
@@ -867,23 +874,23 @@ main(int argc, char **argv)
 	            "velocity of 1 m/s it is the same. With rtol 1e-11 dominating on every component "
 	            "that is not near zero, the mapping is faithful on the observables; the engine "
 	            "also ends steps on the law's kinks (DESIGN.md 4a), which DOP853 did not.\n\n");
-	fprintf(md, "| preset | setting | ms | n | t (/t_d) | t (s) | e | xc | F | T |\n"
-	            "|---|---|---|---|---|---|---|---|---|---|\n");
+	fprintf(md, "| preset | setting | ms | cpu ms | n | t (/t_d) | t (s) | e | xc | F | T |\n"
+	            "|---|---|---|---|---|---|---|---|---|---|---|\n");
 	for (s = 0; s < NSTUDY; s++) {
 		if (load(pdir, studies[s].preset, &sc))
 			return 1;
 		if (!paper[s].status)
-			fprintf(md, "| %s | paper: rk8pd 1e-11/1e-14 | %.2f | %zu | %s | %s | %s | %s | %s | %s |\n",
-			        studies[s].preset, paper[s].sec * 1e3, paper[s].n, fmt_e(b1, paperE[s].t),
+			fprintf(md, "| %s | paper: rk8pd 1e-11/1e-14 | %.2f | %.2f | %zu | %s | %s | %s | %s | %s | %s |\n",
+			        studies[s].preset, paper[s].sec * 1e3, paper[s].cpu * 1e3, paper[s].n, fmt_e(b1, paperE[s].t),
 			        fmt_e(b6, paperE[s].tabs),
 			        fmt_e(b2, paperE[s].e), fmt_e(b3, paperE[s].xc), fmt_e(b4, paperE[s].F),
 			        fmt_e(b5, paperE[s].T));
 		else
 			fprintf(md, "| %s | paper | failed: %s |||||||\n", studies[s].preset, paper[s].msg);
 		if (!dflt[s].status)
-			fprintf(md, "| %s | preset: %s %g/%g | %.2f | %zu | %s | %s | %s | %s | %s | %s |\n",
+			fprintf(md, "| %s | preset: %s %g/%g | %.2f | %.2f | %zu | %s | %s | %s | %s | %s | %s |\n",
 			        studies[s].preset, scene_stepper_name(sc.run.stepper), sc.run.rtol,
-			        sc.run.atol, dflt[s].sec * 1e3, dflt[s].n, fmt_e(b1, dfltE[s].t),
+			        sc.run.atol, dflt[s].sec * 1e3, dflt[s].cpu * 1e3, dflt[s].n, fmt_e(b1, dfltE[s].t),
 			        fmt_e(b6, dfltE[s].tabs),
 			        fmt_e(b2, dfltE[s].e), fmt_e(b3, dfltE[s].xc), fmt_e(b4, dfltE[s].F),
 			        fmt_e(b5, dfltE[s].T));
@@ -940,8 +947,8 @@ main(int argc, char **argv)
 	            "setting with run.reductions = all, then with one reduction turned off, then none. "
 	            "ms = median of 5; coll = largest collision error against the run with all "
 	            "reductions (the reductions must not change the answer beyond the tolerance).\n\n"
-	            "| preset | reductions | ms | steps | rhs | ratio to all | coll vs all |\n"
-	            "|---|---|---|---|---|---|---|\n");
+	            "| preset | reductions | ms | cpu ms | steps | rhs | ratio to all (cpu) | coll vs all |\n"
+	            "|---|---|---|---|---|---|---|---|\n");
 	{
 		static const char *const red[][2] = {
 			{ "all", "all" },
@@ -974,8 +981,8 @@ main(int argc, char **argv)
 					all = o;
 				else
 					compare(&o, &all, REF_RUN, &e);
-				fprintf(md, "| %s | %s | %.2f | %ld | %ld | %.2f | %s |\n", studies[s].preset,
-				        red[i][1], o.sec * 1e3, o.steps, o.rhs, o.sec / all.sec,
+				fprintf(md, "| %s | %s | %.2f | %.2f | %ld | %ld | %.2f | %s |\n", studies[s].preset,
+				        red[i][1], o.sec * 1e3, o.cpu * 1e3, o.steps, o.rhs, o.cpu / all.cpu,
 				        i ? fmt_e(b1, e.coll) : "-");
 				if (i)
 					obs_free(&o);
