@@ -11,9 +11,10 @@
  * flushed to disk, and only then renamed over PATH.  csv_export() writes
  * every temporary file first and renames them only when all are complete;
  * on any failure it removes the temporary files, so no new file is left
- * and an existing file is untouched.  (The renames themselves are not one
- * atomic step: should the second of them fail, the first is undone by
- * removing the file it produced.)
+ * and an existing file is untouched.  The renames themselves are not one
+ * atomic step: should a later one fail, the earlier ones are undone, from
+ * hard links to the replaced files made just before (a file that did not
+ * exist is removed).
  */
 #include <errno.h>
 #include <math.h>
@@ -318,6 +319,16 @@ csv_export(const struct sim *s, const char *trace_path, const char *coll_path,
 		st = tmp_close(&t[nt], msg, n);
 		nt++;
 	}
+	/*
+	 * Before the renames, keep a hard link to each file about to be
+	 * replaced, so that a failed rename can put the earlier ones back.
+	 */
+	char bak[3][1060];
+	int has_bak[3] = { 0, 0, 0 };
+	for (int k = 0; k < nt && st == HB_OK; k++) {
+		snprintf(bak[k], sizeof bak[k], "%s.old", t[k].tmp);
+		has_bak[k] = link(t[k].path, bak[k]) == 0;
+	}
 	for (int k = 0; k < nt && st == HB_OK; k++) {
 		st = tmp_commit(&t[k], msg, n);
 		if (st == HB_OK)
@@ -328,9 +339,14 @@ csv_export(const struct sim *s, const char *trace_path, const char *coll_path,
 			tmp_discard(&t[k]);
 		/* Undo the renames already done: no new file is left. */
 		for (int k = 0; k < committed; k++)
-			unlink(t[k].path);
-		return st;
+			if (!has_bak[k] || rename(bak[k], t[k].path) != 0)
+				unlink(t[k].path);
 	}
+	for (int k = 0; k < nt; k++)
+		if (has_bak[k])
+			unlink(bak[k]);
+	if (st != HB_OK)
+		return st;
 	if (scene_out != NULL && sn > 0)
 		snprintf(scene_out, sn, "%s", spath);
 	return HB_OK;

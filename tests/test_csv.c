@@ -1,0 +1,346 @@
+/*
+ * test_csv.c - CSV export (src/core/csv.c): the header of each system and
+ * law, every number read back with strtod() equal to the double written,
+ * the full system's body velocities, the collisions table (t_f empty when
+ * unknown), the scene written beside the export reloading to the same
+ * scene, and failures that leave no file and keep an existing one intact.
+ */
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <criterion/criterion.h>
+
+#include "hybounce/csv.h"
+#include "hybounce/preset.h"
+#include "hybounce/sim.h"
+#include "hybounce/status.h"
+
+static const char *
+preset_dir(void)
+{
+	const char *e = getenv("HYBOUNCE_PRESETS");
+
+	if (e != NULL && e[0] != '\0' && strchr(e, ':') == NULL)
+		return e;
+	return "presets";
+}
+
+/* Loads a preset, applies KEY=VALUE overrides, runs it to the end. */
+static struct sim *
+run(const char *name, const char *const *set)
+{
+	char path[1024], msg[512] = "";
+	struct scene sc;
+	struct sim *s;
+
+	snprintf(path, sizeof path, "%s/%s.preset", preset_dir(), name);
+	cr_assert_eq(preset_load(path, &sc, msg, sizeof msg), HB_OK, "%s", msg);
+	for (int i = 0; set != NULL && set[i] != NULL; i += 2)
+		cr_assert_eq(scene_set(&sc, set[i], set[i + 1], msg, sizeof msg), HB_OK, "%s", msg);
+	s = sim_new(&sc, msg, sizeof msg);
+	cr_assert(s != NULL, "%s", msg);
+	cr_assert_eq(sim_run(s), HB_OK, "%s", sim_errmsg(s));
+	return s;
+}
+
+static char *
+slurp(const char *path)
+{
+	FILE *f = fopen(path, "rb");
+	char *buf;
+	long len;
+
+	cr_assert(f != NULL, "%s missing", path);
+	fseek(f, 0, SEEK_END);
+	len = ftell(f);
+	fseek(f, 0, SEEK_SET);
+	buf = malloc((size_t)len + 1);
+	cr_assert(fread(buf, 1, (size_t)len, f) == (size_t)len);
+	buf[len] = '\0';
+	fclose(f);
+	return buf;
+}
+
+/* Splits the next line of *p into at most max fields (in place). */
+static int
+fields(char **p, char **f, int max)
+{
+	char *line = *p, *e;
+	int n = 0;
+
+	if (*line == '\0')
+		return -1;
+	e = strchr(line, '\n');
+	cr_assert(e != NULL, "last record without a line end");
+	*e = '\0';
+	*p = e + 1;
+	for (char *q = line;;) {
+		char *c = strchr(q, ',');
+		cr_assert(n < max, "too many fields");
+		f[n++] = q;
+		if (c == NULL)
+			break;
+		*c = '\0';
+		q = c + 1;
+	}
+	return n;
+}
+
+static void
+num_is(const char *field, double want, const char *what, size_t row)
+{
+	char *end;
+	double v;
+
+	if (isnan(want)) {
+		cr_assert_str_eq(field, "", "%s row %zu: NaN must be an empty field", what, row);
+		return;
+	}
+	v = strtod(field, &end);
+	cr_assert(*end == '\0' && end != field, "%s row %zu: '%s' is not a number", what, row, field);
+	cr_assert(memcmp(&v, &want, sizeof v) == 0, "%s row %zu: read %.17g, written %.17g", what,
+	    row, v, want);
+}
+
+static void
+check_arc_file(const char *path, const struct sim *s, const char *header)
+{
+	char *text = slurp(path), *p = text, *f[32];
+	const struct arc *a = sim_arc(s);
+	const struct scene *sc = sim_scene(s);
+	int nz = sc->law->n_z, full = sc->d.system == SCENE_FULL;
+	int nf = 8 + nz + (full ? 4 : 0);
+	size_t rows = 0;
+	char head[256];
+
+	cr_assert(strncmp(text, header, strlen(header)) == 0 && text[strlen(header)] == '\n',
+	    "header is \"%.*s\", expected \"%s\"", (int)strcspn(text, "\n"), text, header);
+	cr_assert_eq(fields(&p, f, 32), nf);
+	snprintf(head, sizeof head, "%s", header);
+	for (;;) {
+		int n = fields(&p, f, 32);
+		const struct arc_sample *x;
+		int k = 0;
+		if (n < 0)
+			break;
+		cr_assert_eq(n, nf, "row %zu has %d fields", rows, n);
+		cr_assert(rows < arc_len(a), "more rows than samples");
+		x = arc_at(a, rows);
+		num_is(f[k++], x->t, "t", rows);
+		cr_assert_eq(strtol(f[k++], NULL, 10), x->j);
+		cr_assert_eq(strtol(f[k++], NULL, 10), x->q);
+		num_is(f[k++], x->x, "x", rows);
+		num_is(f[k++], x->v, "v", rows);
+		num_is(f[k++], x->xc, "x_c", rows);
+		for (int z = 0; z < nz; z++)
+			num_is(f[k++], x->z[z], "z_c", rows);
+		num_is(f[k++], x->Fc, "F_c", rows);
+		num_is(f[k++], x->Fer, "F_er", rows);
+		if (full) {
+			num_is(f[k++], x->xm, "x_m", rows);
+			num_is(f[k++], x->vm, "v_m", rows);
+			num_is(f[k++], x->vm + sc->d.etac * x->v, "v_m1", rows);
+			num_is(f[k++], x->vm - sc->d.eta * x->v, "v_m2", rows);
+		}
+		rows++;
+	}
+	cr_assert_eq(rows, arc_len(a), "%zu rows for %zu samples", rows, arc_len(a));
+	free(text);
+}
+
+static const char *const coll_header =
+    "i,t_e,t_s,t_d,t_f,v_i,e,x_c_max,F_c_max,x_c_r,W,J_Fc,J_Fe,Lambda";
+
+static size_t
+check_coll_file(const char *path, const struct sim *s)
+{
+	char *text = slurp(path), *p = text, *f[32];
+	size_t rows = 0, nc = sim_ncollisions(s), k = 0;
+
+	cr_assert(strncmp(text, coll_header, strlen(coll_header)) == 0);
+	cr_assert_eq(fields(&p, f, 32), 14);
+	for (size_t i = 0; i < nc; i++) {
+		const struct collision *c = sim_collision(s, i);
+		if (!c->complete)
+			continue;
+		cr_assert_eq(fields(&p, f, 32), 14, "collision %zu", i);
+		k = 0;
+		cr_assert_eq(strtol(f[k++], NULL, 10), c->i);
+		num_is(f[k++], c->te, "t_e", rows);
+		num_is(f[k++], c->ts, "t_s", rows);
+		num_is(f[k++], c->td, "t_d", rows);
+		num_is(f[k++], c->tf, "t_f", rows);
+		num_is(f[k++], c->vi, "v_i", rows);
+		num_is(f[k++], c->e, "e", rows);
+		num_is(f[k++], c->xcmax, "x_c_max", rows);
+		num_is(f[k++], c->Fcmax, "F_c_max", rows);
+		num_is(f[k++], c->xcr, "x_c_r", rows);
+		num_is(f[k++], c->W, "W", rows);
+		num_is(f[k++], c->JFc, "J_Fc", rows);
+		num_is(f[k++], c->JFe, "J_Fe", rows);
+		num_is(f[k++], c->Lambda, "Lambda", rows);
+		rows++;
+	}
+	cr_assert_eq(fields(&p, f, 32), -1, "rows beyond the completed collisions");
+	free(text);
+	return rows;
+}
+
+static int
+count_entries(const char *dir)
+{
+	DIR *d = opendir(dir);
+	struct dirent *de;
+	int n = 0;
+
+	cr_assert(d != NULL);
+	while ((de = readdir(d)) != NULL)
+		if (de->d_name[0] != '.')
+			n++;
+	closedir(d);
+	return n;
+}
+
+Test(csv, reduced_linear_law)
+{
+	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], msg[512] = "";
+	struct sim *s = run("nonunique-separation", NULL);
+
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(path, sizeof path, "%s/arc.csv", dir);
+	snprintf(cpath, sizeof cpath, "%s/coll.csv", dir);
+	cr_assert_eq(csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
+	check_arc_file(path, s, "t,j,q_c,x,v,x_c,F_c,F_er");
+	cr_assert_eq(csv_write_collisions(cpath, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert(sim_ncollisions(s) >= 1, "the example separates once");
+	cr_assert(check_coll_file(cpath, s) >= 1);
+	/* Only the CSV files: no temporary left. */
+	cr_assert_eq(count_entries(dir), 2);
+	unlink(path);
+	unlink(cpath);
+	rmdir(dir);
+	sim_free(s);
+}
+
+Test(csv, full_system_columns)
+{
+	static const char *const set[] = { "run.T", "0.05 s", "run.rtol", "1e-9", "run.atol",
+		"1e-9", NULL };
+	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], msg[512] = "";
+	struct sim *s = run("ptfe-pom", set);
+
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(path, sizeof path, "%s/arc.csv", dir);
+	cr_assert_eq(csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
+	check_arc_file(path, s, "t,j,q_c,x,v,x_c,z_c1,F_c,F_er,x_m,v_m,v_m1,v_m2");
+	unlink(path);
+	rmdir(dir);
+	sim_free(s);
+}
+
+Test(csv, two_internal_states)
+{
+	static const char *const set[] = { "run.T", "1 ms", NULL };
+	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], msg[512] = "";
+	struct sim *s = run("steel-on-bitumen", set);
+
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(path, sizeof path, "%s/arc.csv", dir);
+	cr_assert_eq(csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
+	check_arc_file(path, s, "t,j,q_c,x,v,x_c,z_c1,z_c2,F_c,F_er");
+	unlink(path);
+	rmdir(dir);
+	sim_free(s);
+}
+
+Test(csv, export_writes_scene_beside)
+{
+	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], sout[256] = "", want[256];
+	char msg[512] = "";
+	struct sim *s = run("hertz-elastic", NULL);
+	struct scene back;
+
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(path, sizeof path, "%s/run.csv", dir);
+	snprintf(cpath, sizeof cpath, "%s/run-collisions.csv", dir);
+	snprintf(want, sizeof want, "%s/run.preset", dir);
+	cr_assert_eq(csv_export(s, path, cpath, sout, sizeof sout, msg, sizeof msg), HB_OK, "%s",
+	    msg);
+	cr_assert_str_eq(sout, want);
+	check_arc_file(path, s, "t,j,q_c,x,v,x_c,F_c,F_er");
+	cr_assert(check_coll_file(cpath, s) >= 2, "the elastic ball bounces more than once");
+	cr_assert_eq(preset_load(want, &back, msg, sizeof msg), HB_OK, "%s", msg);
+	const struct scene *sc = sim_scene(s);
+	cr_assert_eq(back.law, sc->law);
+	cr_assert(memcmp(back.par, sc->par, sizeof back.par) == 0);
+	cr_assert(memcmp(&back.init, &sc->init, sizeof back.init) == 0);
+	cr_assert(memcmp(&back.loads, &sc->loads, sizeof back.loads) == 0);
+	cr_assert(memcmp(&back.run, &sc->run, sizeof back.run) == 0);
+	cr_assert_eq(count_entries(dir), 3);
+	/* Only the collisions: the scene goes beside them. */
+	unlink(want);
+	cr_assert_eq(csv_export(s, NULL, cpath, sout, sizeof sout, msg, sizeof msg), HB_OK);
+	snprintf(want, sizeof want, "%s/run-collisions.preset", dir);
+	cr_assert_str_eq(sout, want);
+	unlink(want);
+	unlink(path);
+	unlink(cpath);
+	rmdir(dir);
+	sim_free(s);
+}
+
+Test(csv, failure_leaves_nothing)
+{
+	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], spath[256], msg[512] = "";
+	struct sim *s = run("nonunique-separation", NULL);
+	FILE *f;
+	char *old;
+
+	cr_assert_eq(csv_write_arc("/nonexistent/dir/x.csv", s, msg, sizeof msg), HB_EIO);
+	cr_assert(strncmp(msg, "/nonexistent/dir/x.csv: ", 24) == 0, "%s", msg);
+	cr_assert(access("/nonexistent/dir/x.csv", F_OK) != 0);
+	cr_assert_eq(csv_write_collisions("/nonexistent/dir/c.csv", s, msg, sizeof msg), HB_EIO);
+
+	/* An export whose second file cannot be written: the first is not
+	 * left behind, the existing good file is untouched, no scene file. */
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(path, sizeof path, "%s/good.csv", dir);
+	snprintf(spath, sizeof spath, "%s/good.preset", dir);
+	f = fopen(path, "w");
+	fputs("t,x\n1,2\n", f);
+	fclose(f);
+	snprintf(cpath, sizeof cpath, "/nonexistent/dir/c.csv");
+	cr_assert_eq(csv_export(s, path, cpath, NULL, 0, msg, sizeof msg), HB_EIO);
+	cr_assert(strncmp(msg, cpath, strlen(cpath)) == 0, "%s", msg);
+	old = slurp(path);
+	cr_assert_str_eq(old, "t,x\n1,2\n");
+	free(old);
+	cr_assert(access(spath, F_OK) != 0, "the scene file was left");
+	cr_assert_eq(count_entries(dir), 1, "a temporary file was left");
+
+	/* A directory in the way of the collisions' rename: all or nothing. */
+	snprintf(cpath, sizeof cpath, "%s/busy.csv", dir);
+	cr_assert_eq(mkdir(cpath, 0700), 0);
+	snprintf(spath, sizeof spath, "%s/k", cpath);
+	f = fopen(spath, "w");
+	fclose(f);
+	cr_assert_eq(csv_export(s, path, cpath, NULL, 0, msg, sizeof msg), HB_EIO);
+	old = slurp(path);
+	cr_assert_str_eq(old, "t,x\n1,2\n", "the good file was replaced by a failed export");
+	free(old);
+	cr_assert_eq(count_entries(dir), 2, "files were left");
+	unlink(spath);
+	rmdir(cpath);
+
+	/* Refuses to write the scene over the export itself. */
+	snprintf(cpath, sizeof cpath, "%s/x.preset", dir);
+	cr_assert_eq(csv_export(s, cpath, NULL, NULL, 0, msg, sizeof msg), HB_EINVAL);
+	unlink(path);
+	rmdir(dir);
+	sim_free(s);
+}
