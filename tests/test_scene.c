@@ -261,6 +261,8 @@ Test(scene, set_messages)
 	set_fails(&sc, "loads.ramp", "maybe", "yes");
 	set_fails(&sc, "derived.k", "1", "derived");
 	set_fails(&sc, "nosuch.key", "1", "unknown key");
+	set_fails(&sc, "scene.description", "a ; b", "comment");
+	set_fails(&sc, "body1.name", "a\tb", "control characters");
 }
 
 Test(scene, set_values)

@@ -153,7 +153,8 @@ body_mass(const struct scene_body *b, int i, double *mass, char *msg, size_t n)
 		return HB_OK;
 	}
 	return status_set(msg, n, HB_EINVAL,
-	    "body%d.mass: body %d has no mass; give mass, or rho and a finite R", i + 1, i + 1);
+	    "body%d.mass: body %d has no mass; accepted: a mass, or rho with a finite R%s", i + 1,
+	    i + 1, i == 1 ? " (or R = inf: a fixed obstacle)" : "");
 }
 
 /*
@@ -554,6 +555,11 @@ scene_set(struct scene *sc, const char *key, const char *text, char *msg, size_t
 			if ((unsigned char)*c < 0x20 || *c == 0x7f)
 				return status_set(msg, n, HB_EINVAL,
 				    "%s: control characters are not accepted", key);
+		for (const char *c = t + 1; *c; c++)
+			if ((*c == ';' || *c == '#') && isspace((unsigned char)c[-1]))
+				return status_set(msg, n, HB_EINVAL,
+				    "%s: ' %c' would start a comment in a preset; accepted: text "
+				    "without a space before ';' or '#'", key, *c);
 		if (strlen(t) >= kd->size)
 			return status_set(msg, n, HB_EINVAL,
 			    "%s: too long; accepted: at most %zu bytes", key, kd->size - 1);
