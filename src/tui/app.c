@@ -34,6 +34,7 @@
 #define IDLE_MS 250           /* getch timeout when idle (to see signals) */
 #define COMPUTE_BUDGET 0.012  /* s of computation per frame */
 #define SLOW_WALL 2.0         /* a contact lasts about this many wall seconds in slow motion */
+#define SLOW_SPAN 3.0         /* slow motion ends this many contact durations after t_e */
 
 static double
 now_s(void)
@@ -866,13 +867,19 @@ app_tick(struct app *a)
 		size_t k = arc_interval_of(arc, a->cursor);
 
 		if (a->slowmo && cs->q) {
+			/* a contact as long as the last completed one takes SLOW_WALL
+			 * seconds; a contact that lasts far longer (a permanent
+			 * contact) is played at the normal speed after a while */
 			double td = 1e-3;
 			size_t nc = sim_ncollisions(a->sim);
-			if (nc > 0)
+			const struct arc_interval *iv = arc_interval_at(arc, k);
+			if (nc > 0 && sim_collision(a->sim, nc - 1)->td > 0)
 				td = sim_collision(a->sim, nc - 1)->td;
-			if (td > 0 && sp > td / SLOW_WALL)
-				sp = td / SLOW_WALL;
-			a->in_slow = 1;
+			if (a->tcur - iv->t0 < SLOW_SPAN * td) {
+				if (sp > td / SLOW_WALL)
+					sp = td / SLOW_WALL;
+				a->in_slow = 1;
+			}
 		}
 		tnew = a->tcur + sp * dt;
 		/* slow motion: stop at the start of a contact rather than skip it */

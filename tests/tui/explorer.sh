@@ -355,4 +355,30 @@ else
 	notok "an unknown preset exits with status 2 (rc $(cat "$TMP/e.rc" 2>/dev/null))"
 fi
 
+# ---- 13. responsive while a long run computes ---------------------------------
+# a step bound of 1 ns inside contacts makes the run take minutes
+start f 80 24 --set "'run.h_max=1e-9 s'"
+if wait_for f ' computing$' 100; then
+	keys f '?'
+	if wait_for f 'hybounce keys' 20; then
+		keys f Escape
+		wait_gone f 'hybounce keys' 20
+		keys f Tab
+		if wait_for f 'parameters \(Enter edits' 20 && screen f | head -n 1 | grep -q ' computing$'; then
+			keys f q
+			if wait_exit f 30 && [ "$(cat "$TMP/f.rc")" = 0 ]; then
+				ok "responsive while a long run computes (help, focus, quit within 2-3 s)"
+			else
+				notok "quit while computing" f
+			fi
+		else
+			notok "Tab while computing" f
+		fi
+	else
+		notok "help while computing" f
+	fi
+else
+	notok "a long run shows computing" f
+fi
+
 [ "$failed" -eq 0 ]
