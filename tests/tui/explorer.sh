@@ -318,16 +318,18 @@ else
 fi
 
 # ---- 11. SIGHUP, NO_COLOR, ASCII ------------------------------------------
-start c 80 24 --ascii
+# (the program's pid comes from a wrapper that execs it: no pgrep needed)
+printf 'echo $$ > "%s/c.pid"\nexec "%s" --ascii\n' "$TMP" "$BIN" >"$TMP/run-c.sh"
+rm -f "$TMP/c.rc"
+$TM new-session -d -s c -x 80 -y 24 "cd '$TMP' && sh '$TMP/run-c.sh'; echo \$? > '$TMP/c.rc'"
 if wait_for c '^x\[mm\]' && screen c | grep -q '\*'; then
 	ok "--ascii plots with '*'"
 else
 	notok "--ascii plots with '*'" c
 fi
-pid=$($TM list-panes -t c -F '#{pane_pid}')
-kid=$(pgrep -P "$pid" -f hybounce | head -n 1)
+kid=$(cat "$TMP/c.pid" 2>/dev/null)
 if [ -n "$kid" ] && kill -HUP "$kid" && wait_exit c 50; then
-	ok "SIGHUP leaves the explorer through term_end"
+	ok "SIGHUP leaves the explorer through term_end (status $(cat "$TMP/c.rc"))"
 else
 	notok "SIGHUP leaves the explorer" c
 fi
