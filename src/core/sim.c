@@ -114,7 +114,10 @@ struct sim {
 	double scale[MAXDIM];
 	double u[MAXDIM];   /* scaled ODE state */
 	double h;           /* step size suggestion */
+	double Tc;          /* time scale of the interval */
 	int ntiny;
+	double gmax[MAXFUN]; /* largest |value| of each watched function in the interval */
+	double vmax;        /* largest |v| in the contact */
 
 	/* location workspace */
 	double t0, H, u0[MAXDIM], u1[MAXDIM];
@@ -977,6 +980,35 @@ accept_at(struct sim *s, double h)
 }
 
 /*
+ * Round-off at a sticking contact.  When the force and the velocity both
+ * decay towards zero without changing sign (a Maxwell element with c below
+ * sqrt(k m)/2), the computed values eventually wander about zero at the
+ * level of round-off and may both turn positive, which would be read as a
+ * separation.  A state whose v and Phi are both positive but below
+ * eta = max(64 eps, rtol / 100) of the contact's largest |v| and F_c is on
+ * the boundary of C to the precision of the computation: its v is set to 0,
+ * which keeps it in C (rule R2) and changes it by less than the tolerance.
+ */
+static void
+snap_stick(struct sim *s, double *u)
+{
+	struct phase *p = s->cur;
+	const struct layout *L = &p->L;
+	double y[MAXDIM], eta = fmax(64 * DBL_EPSILON, 1e-2 * s->sc.run.rtol), phi, v;
+	double z[LAW_MAX_Z] = { 0 };
+	int i;
+
+	unscale(p, u, y);
+	v = y[L->iv];
+	for (i = 0; i < s->sc.law->n_z; i++)
+		z[i] = y[L->iz + i];
+	phi = phi_at(s, y[L->ixc], z, v);
+	if (v > 0 && phi > 0 && v <= eta * s->vmax && phi <= eta * s->Fcmax)
+		u[L->iv] = 0.0;
+	s->vmax = fmax(s->vmax, fabs(v));
+}
+
+/*
  * Handles an accepted step (t0, u0) -> (t0 + H, u1): finds the earliest
  * crossing of the watched functions, if any, and acts on it.
  */
@@ -992,11 +1024,25 @@ after_step(struct sim *s, int load_kink)
 
 	s->ncache = 0;
 	s->cache_next = 0;
+	if (p->q)
+		snap_stick(s, s->u1);
 	n = watch(s, p, s->t0, s->u0, f0, kind);
 	watch(s, p, s->t0 + s->H, s->u1, f1, kind);
-	for (i = 0; i < n; i++)
+	for (i = 0; i < n; i++) {
+		double big = fmax(fabs(f0[i]), fabs(f1[i]));
+
+		/*
+		 * A switching or extremum function that only wanders about zero at
+		 * the level of the tolerance (|Psi_2| while a Maxwell element
+		 * creeps, dPhi/dt at rest) marks no real kink or extremum.
+		 */
+		if (kind[i] != FUN_EVENT && big <= s->sc.run.rtol * s->gmax[i])
+			continue;
 		if (crossed(kind[i], f0[i], f1[i]))
 			cand[ncand++] = i;
+	}
+	for (i = 0; i < n; i++)
+		s->gmax[i] = fmax(s->gmax[i], fmax(fabs(f0[i]), fabs(f1[i])));
 	if (ncand == 0) {
 		memcpy(s->u, s->u1, sizeof s->u1);
 		unpack(s, p, s->t0 + s->H, s->u1);
@@ -1068,6 +1114,8 @@ setup_interval(struct sim *s)
 
 	s->setup = 0;
 	s->ntiny = 0;
+	memset(s->gmax, 0, sizeof s->gmax);
+	s->vmax = fabs(s->v);
 	s->closed = !s->q && (sc->run.reduce & REDUCE_FLIGHT) &&
 	            scene_Fer_constant(sc, s->t, sc->run.T) &&
 	            (sc->d.system == SCENE_REDUCED || (sc->run.reduce & REDUCE_COM));
@@ -1080,6 +1128,7 @@ setup_interval(struct sim *s)
 	{
 		double Tc = s->q ? s->scale[s->cur->L.ixc] / s->scale[s->cur->L.iv]
 		                 : s->scale[s->cur->L.ix] / s->scale[s->cur->L.iv];
+		s->Tc = Tc;
 		s->h = fmin(1e-2 * Tc, sc->run.T - s->t);
 		if (!(s->h > 0))
 			s->h = 1e-9;
@@ -1144,7 +1193,7 @@ retry:
 	}
 	s->st.steps++;
 	s->H = t - s->t0;
-	if (s->H <= 4.0 * DBL_EPSILON * fmax(fabs(t), 1e-300)) {
+	if (s->H <= fmax(4.0 * DBL_EPSILON * fabs(t), 1e-13 * s->Tc)) {
 		if (++s->ntiny > MAX_TINY)
 			return fail(s, HB_ENUMERIC, "step size underflow: the error cannot be controlled");
 	} else {

@@ -1,0 +1,240 @@
+/*
+ * test_paper.c - the paper's own evidence on every preset: the solution-pair
+ * check, the forward Euler check, the work-energy identity, the printed
+ * numbers and the stated behaviour of each study (section Simulation).
+ */
+#include <dirent.h>
+#include <math.h>
+#include <string.h>
+
+#include <criterion/criterion.h>
+
+#include "hybounce/check.h"
+#include "testutil.h"
+
+static const char *const paper_presets[] = {
+	"steel-on-bitumen", "ptfe-pom", "permanent-contact-shccl", "permanent-contact-bwshccl",
+	"permanent-contact-bwmcl", "nonunique-rest", "nonunique-separation", "hertz-elastic", NULL,
+};
+
+/* Every preset in presets/: the solution-pair check and the work-energy identity. */
+Test(paper, every_preset_is_a_solution_pair_and_keeps_energy, .timeout = 300)
+{
+	DIR *d = opendir("presets");
+	struct dirent *e;
+	int count = 0;
+
+	cr_assert_not_null(d, "run the tests from the repository root");
+	while ((e = readdir(d)) != NULL) {
+		char name[256], msg[1024];
+		size_t len = strlen(e->d_name), i;
+		struct scene sc;
+		struct sim *s;
+		const struct arc *arc;
+		const struct arc_sample *l;
+		double kemax = 0.0, dke, work;
+
+		if (len < 8 || strcmp(e->d_name + len - 7, ".preset") != 0)
+			continue;
+		snprintf(name, sizeof name, "%.*s", (int)(len - 7), e->d_name);
+		scene_preset(name, &sc);
+		s = run_scene(&sc);
+		arc = sim_arc(s);
+		cr_assert_eq(check_solution_pair(&sc, arc, msg, sizeof msg), 0, "%s: %s", name, msg);
+		for (i = 0; i < arc_len(arc); i++)
+			kemax = fmax(kemax, 0.5 * sc.d.m * arc_at(arc, i)->v * arc_at(arc, i)->v);
+		l = arc_last(arc);
+		dke = 0.5 * sc.d.m * (l->v * l->v - sc.init.v0 * sc.init.v0);
+		work = l->Wc + l->Ee;
+		if (kemax > 0)
+			cr_assert(fabs(dke - work) <= 1e-8 * kemax,
+			          "%s: work-energy identity: dKE = %.17g, int (F_c + F_er) v dt = %.17g (%.3g of KE max)",
+			          name, dke, work, fabs(dke - work) / kemax);
+		sim_free(s);
+		count++;
+	}
+	closedir(d);
+	cr_assert(count >= 8, "only %d presets", count);
+}
+
+/* Forward Euler from each flow interval's initial state converges to its final state at order >= 0.9. */
+Test(paper, forward_euler_order_on_every_paper_preset, .timeout = 600)
+{
+	const char *const *p;
+
+	for (p = paper_presets; *p; p++) {
+		struct scene sc;
+		struct sim *s;
+		size_t k, checked = 0;
+
+		scene_preset(*p, &sc);
+		s = run_scene(&sc);
+		for (k = 0; k < arc_nintervals(sim_arc(s)); k++) {
+			const struct arc_interval *iv = arc_interval_at(sim_arc(s), k);
+			double order;
+			char msg[512];
+
+			if (!(iv->t1 > iv->t0))
+				continue;
+			cr_assert_eq(check_euler(&sc, sim_arc(s), k, &order, msg, sizeof msg), 0, "%s: %s", *p, msg);
+			cr_assert(order >= 0.9, "%s: interval %zu (j = %ld, q_c = %d, [%.9g, %.9g]): order %.3f",
+			          *p, k, iv->j, iv->q, iv->t0, iv->t1, order);
+			checked++;
+		}
+		cr_assert(checked >= 1, "%s", *p);
+		sim_free(s);
+	}
+}
+
+/* Contacts lengthen and flights shorten over the sequence; the collisions are finite. */
+static void
+assert_sequence(const char *name, size_t min_collisions)
+{
+	struct scene sc;
+	struct sim *s;
+	size_t n, i;
+
+	scene_preset(name, &sc);
+	s = run_scene(&sc);
+	n = sim_ncollisions(s);
+	cr_assert(n >= min_collisions, "%s: %zu collisions", name, n);
+	for (i = 1; i < n; i++) {
+		cr_assert(sim_collision(s, i)->td > sim_collision(s, i - 1)->td,
+		          "%s: contact %zu is not longer than contact %zu", name, i, i - 1);
+		if (i + 1 < n)
+			cr_assert(sim_collision(s, i)->tf < sim_collision(s, i - 1)->tf,
+			          "%s: flight %zu is not shorter", name, i);
+	}
+	/* finite: the run ends in a permanent contact, no separation after the last collision */
+	cr_assert_eq(arc_last(sim_arc(s))->q, 1, "%s ends in contact", name);
+	sim_free(s);
+}
+
+Test(paper, contacts_lengthen_flights_shorten_finitely)
+{
+	assert_sequence("steel-on-bitumen", 8);
+	assert_sequence("ptfe-pom", 8);
+	assert_sequence("permanent-contact-shccl", 4);
+	assert_sequence("permanent-contact-bwshccl", 3);
+	assert_sequence("permanent-contact-bwmcl", 3);
+}
+
+/* Study 1: Lambda, e and the sinking at m g / c; the last contact begins while overlapping. */
+Test(paper, study1_bouncing_ball)
+{
+	struct scene sc;
+	struct sim *s;
+	size_t n;
+	const struct arc *arc;
+	const struct arc_interval *last;
+	double c;
+
+	scene_preset("steel-on-bitumen", &sc);
+	s = run_scene(&sc);
+	n = sim_ncollisions(s);
+	cr_assert(n >= 8);
+	cr_assert(fabs(sim_collision(s, 0)->Lambda) < 0.05, "Lambda_0 = %g", sim_collision(s, 0)->Lambda);
+	cr_assert(sim_collision(s, n - 1)->Lambda < -0.5, "Lambda_last = %g", sim_collision(s, n - 1)->Lambda);
+	cr_assert(sim_collision(s, 1)->e > sim_collision(s, 0)->e && sim_collision(s, 2)->e > sim_collision(s, 1)->e,
+	          "e rises over the first collisions");
+	cr_assert(sim_collision(s, n - 1)->e < sim_collision(s, n - 2)->e &&
+	              sim_collision(s, n - 2)->e < sim_collision(s, n - 3)->e,
+	          "e falls over the last collisions");
+	/* the residual indentation is an appreciable fraction of the greatest, diminishing */
+	cr_assert(sim_collision(s, 0)->xcr > 0.3 * sim_collision(s, 0)->xcmax);
+	cr_assert(sim_collision(s, n - 1)->xcr / sim_collision(s, n - 1)->xcmax <
+	          sim_collision(s, 0)->xcr / sim_collision(s, 0)->xcmax);
+	c = sc.par[law_param_index(sc.law, "c")];
+	assert_rel(arc_last(sim_arc(s))->v, -sc.d.m * sc.loads.g / c, 1e-3);
+	/* re-engagement: the last contact commences while overlapping, where v reaches 0 */
+	arc = sim_arc(s);
+	last = arc_interval_at(arc, arc_nintervals(arc) - 1);
+	cr_assert_eq(last->q, 1);
+	cr_assert(arc_at(arc, last->first)->x < 0.0, "the last contact begins at x = %g",
+	          arc_at(arc, last->first)->x);
+	cr_assert(fabs(arc_at(arc, last->first)->v) < 1e-9, "v = %g", arc_at(arc, last->first)->v);
+	sim_free(s);
+}
+
+/* Study 2: the centre of mass comes to rest; the residual share falls to negligible; e rises then falls. */
+Test(paper, study2_binary_collisions)
+{
+	struct scene sc;
+	struct sim *s;
+	size_t n, i, imax = 0;
+	const struct arc_sample *l;
+
+	scene_preset("ptfe-pom", &sc);
+	cr_assert_eq(sc.d.system, SCENE_FULL);
+	s = run_scene(&sc);
+	n = sim_ncollisions(s);
+	l = arc_last(sim_arc(s));
+	assert_abs(l->vm, 0.0, 1e-12);
+	cr_assert(sim_collision(s, 0)->xcr > 0.2 * sim_collision(s, 0)->xcmax);
+	cr_assert(sim_collision(s, n - 1)->xcr < 0.02 * sim_collision(s, n - 1)->xcmax);
+	for (i = 1; i < n; i++)
+		if (sim_collision(s, i)->e > sim_collision(s, imax)->e)
+			imax = i;
+	cr_assert(imax > 2 && imax < n - 3, "e peaks at collision %zu of %zu", imax, n);
+	/* settling to the indentation where the branches bear the reduced force */
+	cr_assert(fabs(l->Fc + l->Fer) < 0.05 * fabs(l->Fer), "F_c = %g, F_er = %g", l->Fc, l->Fer);
+	sim_free(s);
+}
+
+/* Study 3: 28.0 mm/s, and the three ends compared with x_c^s. */
+Test(paper, study3_approach_to_permanent_contact)
+{
+	static const char *const names[] = { "permanent-contact-shccl", "permanent-contact-bwshccl",
+		                             "permanent-contact-bwmcl" };
+	int i;
+
+	for (i = 0; i < 3; i++) {
+		struct scene sc;
+		struct sim *s;
+		const struct arc_sample *l;
+		double xs;
+		size_t n;
+
+		scene_preset(names[i], &sc);
+		xs = pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / 1.5);
+		s = run_scene(&sc);
+		n = sim_ncollisions(s);
+		l = arc_last(sim_arc(s));
+		cr_assert(fabs(sim_collision(s, 0)->vi * 1e3 + 28.0) < 0.05, "%s: v_0 = %.4g mm/s", names[i],
+		          sim_collision(s, 0)->vi * 1e3);
+		if (i == 0) {
+			/* SHCCL: nothing retained at separations; settles to -x_c^s by a decaying oscillation */
+			const struct arc *arc = sim_arc(s);
+			const struct arc_interval *last = arc_interval_at(arc, arc_nintervals(arc) - 1);
+			double prev = HUGE_VAL;
+			size_t k, swings = 0;
+
+			assert_rel(xs, 3.312e-6, 2e-4);
+			cr_assert(sim_collision(s, n - 1)->xcr < 1e-12);
+			cr_assert(fabs(l->x + xs) < 0.1 * xs, "x(T) = %g, -x_c^s = %g", l->x, -xs);
+			for (k = last->first + 1; k <= last->last; k++)
+				if (arc_at(arc, k)->kind == ARC_EXTREMUM && arc_at(arc, k)->v == arc_at(arc, k)->v) {
+					double dev = fabs(arc_at(arc, k)->x + xs);
+
+					if (fabs(arc_at(arc, k)->v) < 1e-9) {
+						cr_assert(dev <= prev * 1.0001, "the oscillation does not decay");
+						prev = dev;
+						swings++;
+					}
+				}
+			cr_assert(swings >= 3, "%zu swings", swings);
+		} else if (i == 1) {
+			/* BWSHCCL: rest appreciably deeper than -x_c^s */
+			cr_assert(l->x < -1.2 * xs, "x(T) = %g, -x_c^s = %g", l->x, -xs);
+			cr_assert(fabs(l->v) < 2e-4);
+		} else {
+			/* BWMCL: passes -x_c^s and sinks at m g / c */
+			double c = sc.par[law_param_index(sc.law, "c")];
+
+			assert_rel(xs, 5.240e-6, 2e-4);
+			cr_assert(l->x < -xs);
+			assert_rel(l->v, -sc.d.m * sc.loads.g / c, 1e-2);
+		}
+		sim_free(s);
+	}
+}

@@ -1,0 +1,437 @@
+/*
+ * test_sim.c - the simulator against closed forms, identities between
+ * laws, the rules R1 and R2, the budgeted driver and the error paths.
+ */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include <criterion/criterion.h>
+#include <gsl/gsl_sf_gamma.h>
+#include <gsl/gsl_sf_lambert.h>
+
+#include "hybounce/check.h"
+#include "hybounce/status.h"
+#include "testutil.h"
+
+/* A body of mass M (kg) meets a fixed obstacle through LAW with [law] lines LAWTEXT. */
+static void
+mass_scene(struct scene *sc, const char *law, double M, const char *lawtext, double x0,
+           double v0, double g, double T, const char *ext)
+{
+	char ini[2048];
+
+	snprintf(ini, sizeof ini,
+	         "[scene]\nname = t\nlaw = %s\nextension = %s\n"
+	         "[body1]\nmass = %.17g kg\n[body2]\nmass = inf\n"
+	         "[law]\n%s\n[loads]\ng = %.17g\n"
+	         "[initial]\nx0 = %.17g\nv0 = %.17g\n"
+	         "[run]\nT = %.17g\nrtol = 1e-12\natol = 1e-12\n",
+	         law, ext, M, lawtext, g, x0, v0, T);
+	scene_from(ini, sc);
+}
+
+/* Paper, Example nonuniq_sep: contact lasts pi/omega, leaves at -v0, x_c^max = |v0|/omega. */
+Test(sim, clamped_linear_law_closed_form)
+{
+	struct scene sc;
+	double M = 1.7, k = 2.385e4, x0 = 1.2e-3, v0 = -0.43, w = sqrt(k / M);
+	struct sim *s;
+	const struct collision *c;
+
+	mass_scene(&sc, "linear", M, "k = 2.385e4 N/m", x0, v0, 0.0, 0.05, "adhesive");
+	s = run_scene(&sc);
+	cr_assert_eq(sim_ncollisions(s), 1);
+	c = sim_collision(s, 0);
+	assert_rel(c->te, x0 / -v0, 1e-14);
+	assert_rel(c->td, M_PI / w, 1e-9);
+	assert_rel(c->e, 1.0, 1e-9);
+	assert_rel(c->vi, v0, 1e-14);
+	assert_rel(c->xcmax, -v0 / w, 1e-9);
+	assert_abs(c->xcr, 0.0, 1e-12 * -v0 / w);
+	assert_rel(c->JFc, 2 * M * -v0, 1e-9);
+	/* rule R1 picks the separating solution chi^c: receding at -v0 afterwards */
+	assert_rel(arc_last(sim_arc(s))->v, -v0, 1e-9);
+	cr_assert_eq(arc_last(sim_arc(s))->q, 0);
+	sim_free(s);
+}
+
+/* Without the adhesive extension the clamped law keeps the interface engaged (chi^d). */
+Test(sim, clamped_linear_law_without_extension_stays_engaged)
+{
+	struct scene sc;
+	double M = 1.7, k = 2.385e4, x0 = 1.2e-3, v0 = -0.43, w = sqrt(k / M);
+	double t2 = x0 / -v0 + M_PI / w, T = 0.05;
+	struct sim *s;
+	const struct arc_sample *l;
+
+	mass_scene(&sc, "linear", M, "k = 2.385e4 N/m", x0, v0, 0.0, T, "none");
+	s = run_scene(&sc);
+	cr_assert_eq(sim_ncollisions(s), 0, "no separation may be registered");
+	l = arc_last(sim_arc(s));
+	cr_assert_eq(l->q, 1);
+	cr_assert_eq(l->j, 1);
+	assert_rel(l->xc, -v0 * (T - t2), 1e-8); /* x_c = -v0 (t - t2) */
+	assert_abs(l->Fc, 0.0, 0.0);
+	sim_free(s);
+}
+
+/* Hertz elastic impact: x_c^max = (5 m v^2/(4k))^(2/5), e = 1, t_d = 2.9432 x_c^max / v. */
+Test(sim, hertz_elastic_impact)
+{
+	struct scene sc;
+	double M = 0.0327, k = 1.0234e10, v0 = -0.385, d, td;
+	struct sim *s;
+	const struct collision *c;
+
+	mass_scene(&sc, "hertz", M, "k = 1.0234e10 N m^-3/2\np = 1.5", 1e-4, v0, 0.0, 1e-3, "adhesive");
+	s = run_scene(&sc);
+	cr_assert_eq(sim_ncollisions(s), 1);
+	c = sim_collision(s, 0);
+	d = pow(5 * M * v0 * v0 / (4 * k), 0.4);
+	/* t_d = 2 (d/v) int_0^1 (1 - u^(5/2))^(-1/2) du = 2 (d/v) G(7/5) G(1/2) / G(9/10) */
+	td = 2 * d / -v0 * gsl_sf_gamma(1.4) * gsl_sf_gamma(0.5) / gsl_sf_gamma(0.9);
+	assert_rel(c->xcmax, d, 1e-8);
+	assert_rel(c->e, 1.0, 1e-8);
+	assert_rel(c->td, td, 1e-8);
+	assert_rel(c->Fcmax, k * pow(d, 1.5), 1e-8);
+	sim_free(s);
+}
+
+/* Free flight under a constant force: the first contact at the root of the parabola. */
+Test(sim, free_flight_constant_force)
+{
+	struct scene sc;
+	double M = 0.2385, x0 = 0.0123, v0 = 0.321, g = 9.81, F1 = 0.1;
+	double a = -g + F1 / M, te;
+	char ini[1024];
+	struct sim *s;
+
+	snprintf(ini, sizeof ini,
+	         "[scene]\nlaw = hertz\n[body1]\nmass = %g kg\n[body2]\nmass = inf\n"
+	         "[law]\nk = 1e9\n[loads]\ng = %g\nF1 = %g N\n[initial]\nx0 = %g\nv0 = %g\n"
+	         "[run]\nT = 0.2\n", M, g, F1, x0, v0);
+	scene_from(ini, &sc);
+	s = run_scene(&sc);
+	te = (-v0 - sqrt(v0 * v0 - 2 * a * x0)) / a;
+	cr_assert(sim_ncollisions(s) >= 1);
+	assert_rel(sim_collision(s, 0)->te, te, 1e-14);
+	assert_rel(sim_collision(s, 0)->vi, v0 + a * te, 1e-13);
+	sim_free(s);
+}
+
+/* Rule R2: the rest example stays at rest, flowing, without a single jump. */
+Test(sim, rest_on_the_boundary_never_jumps)
+{
+	struct scene sc;
+	struct sim *s;
+	const struct arc_sample *l;
+
+	scene_preset("nonunique-rest", &sc);
+	s = run_scene(&sc);
+	l = arc_last(sim_arc(s));
+	cr_assert_eq(sim_stats(s)->jumps, 0);
+	cr_assert_eq(l->j, 0);
+	cr_assert_eq(l->t, sc.run.T);
+	cr_assert_eq(l->x, 0.0);
+	cr_assert_eq(l->v, 0.0);
+	sim_free(s);
+}
+
+/* A start on the surface under gravity cannot flow: it jumps into contact at t = 0. */
+Test(sim, rest_on_the_boundary_under_gravity_commences_at_once)
+{
+	struct scene sc;
+	struct sim *s;
+	const struct arc_jump *jr;
+
+	mass_scene(&sc, "hertz", 0.25, "k = 2e8", 0.0, 0.0, 9.81, 0.01, "adhesive");
+	s = run_scene(&sc);
+	jr = arc_jump_at(sim_arc(s), 0);
+	cr_assert_not_null(jr);
+	cr_assert_eq(jr->t, 0.0);
+	cr_assert_eq(jr->from_q, 0);
+	cr_assert_eq(jr->how, LOCATE_START);
+	cr_assert_eq(sim_ncollisions(s), 0);
+	cr_assert_eq(arc_last(sim_arc(s))->q, 1);
+	sim_free(s);
+}
+
+/* BWSHCCL with beta = gamma = 0 and A = 1 is SHCCL (z = x_c). */
+Test(sim, bwshccl_without_hysteresis_is_shccl)
+{
+	struct scene a, b;
+	struct sim *sa, *sb;
+	size_t i;
+
+	mass_scene(&a, "shccl", 0.2614, "k = 4.254e8\np = 1.5\nc = 2.15e9", 1e-4, -0.0613, 9.81, 0.06,
+	           "adhesive");
+	mass_scene(&b, "bwshccl", 0.2614,
+	           "k = 4.254e8\np = 1.5\nc = 2.15e9\nA = 1\nalpha = 0.35\nbeta = 0\ngamma = 0\nn = 2",
+	           1e-4, -0.0613, 9.81, 0.06, "adhesive");
+	sa = run_scene(&a);
+	sb = run_scene(&b);
+	cr_assert_eq(sim_ncollisions(sa), sim_ncollisions(sb));
+	cr_assert(sim_ncollisions(sa) >= 3);
+	for (i = 0; i < sim_ncollisions(sa); i++) {
+		const struct collision *ca = sim_collision(sa, i), *cb = sim_collision(sb, i);
+
+		assert_rel(cb->te, ca->te, 1e-9);
+		assert_rel(cb->td, ca->td, 1e-8);
+		assert_rel(cb->e, ca->e, 1e-8);
+		assert_rel(cb->xcmax, ca->xcmax, 1e-8);
+		assert_rel(cb->Fcmax, ca->Fcmax, 1e-8);
+	}
+	sim_free(sa);
+	sim_free(sb);
+}
+
+/*
+ * BWMCL with p = 1, beta = gamma = 0, A = 1 is a linear Maxwell element:
+ * e = exp(-pi zeta / sqrt(1 - zeta^2)), zeta = sqrt(k m)/(2c), and the
+ * residual indentation is (1 + e) m |v0| / c.
+ */
+Test(sim, bwmcl_linear_maxwell_element)
+{
+	struct scene sc;
+	double M = 0.385, k = 2.1e5, c = 450.0, v0 = -0.73;
+	double zeta = sqrt(k * M) / (2 * c), e = exp(-M_PI * zeta / sqrt(1 - zeta * zeta));
+	char law[256];
+	struct sim *s;
+	const struct collision *col;
+
+	snprintf(law, sizeof law, "k = %g N/m\np = 1\nA = 1\nalpha = 0.35\nbeta = 0\ngamma = 0\nn = 2\nc = %g N s/m",
+	         k, c);
+	mass_scene(&sc, "bwmcl", M, law, 1e-3, v0, 0.0, 0.05, "adhesive");
+	s = run_scene(&sc);
+	cr_assert_eq(sim_ncollisions(s), 1);
+	col = sim_collision(s, 0);
+	assert_rel(col->e, e, 1e-8);
+	assert_rel(col->xcr, (1 + e) * M * -v0 / c, 1e-8);
+	assert_rel(col->td, M_PI / (sqrt(k / M) * sqrt(1 - zeta * zeta)), 1e-8);
+	sim_free(s);
+}
+
+/*
+ * SHCCL: the restitution of one impact depends only on a = c v0 / k
+ * (Marhefka and Orin 1999): e = (1 + W0(-(1 + a) exp(-(1 + a)))) / a.
+ */
+Test(sim, shccl_restitution_marhefka_orin)
+{
+	static const double a_values[] = { 0.05, 0.2385, 0.7 };
+	static const double masses[] = { 0.3, 2.1 };
+	static const double ps[] = { 1.5, 1.2 };
+	double k = 3.3e8, v0 = 0.41;
+	size_t ia, im, ip;
+
+	for (ia = 0; ia < 3; ia++)
+		for (im = 0; im < 2; im++)
+			for (ip = 0; ip < 2; ip++) {
+				double a = a_values[ia], c = a * k / v0;
+				double e = (1 + gsl_sf_lambert_W0(-(1 + a) * exp(-(1 + a)))) / a;
+				char law[256];
+				struct scene sc;
+				struct sim *s;
+
+				snprintf(law, sizeof law, "k = %.17g N m^-%g\np = %g\nc = %.17g N s m^-%g",
+				         k, ps[ip], ps[ip], c, ps[ip] + 1);
+				mass_scene(&sc, "shccl", masses[im], law, 1e-4, -v0, 0.0, 0.02, "adhesive");
+				s = run_scene(&sc);
+				cr_assert_eq(sim_ncollisions(s), 1);
+				assert_rel(sim_collision(s, 0)->e, e, 1e-8);
+				sim_free(s);
+			}
+}
+
+/* Without rule R1, SHCCL's separations (just past x_c = 0) never happen: no collision. */
+Test(sim, shccl_without_extension_registers_no_collision)
+{
+	struct scene sc;
+	struct sim *s;
+
+	scene_preset("permanent-contact-shccl", &sc);
+	cr_assert_eq(scene_set(&sc, "scene.extension", "none", NULL, 0), 0);
+	s = run_scene(&sc);
+	cr_assert_eq(sim_ncollisions(s), 0);
+	sim_free(s);
+	scene_preset("permanent-contact-shccl", &sc);
+	s = run_scene(&sc);
+	cr_assert(sim_ncollisions(s) >= 5);
+	sim_free(s);
+}
+
+/* Two bodies with different masses but the same reduced mass move alike relative to each other. */
+Test(sim, same_reduced_mass_same_relative_motion)
+{
+#define SAME_M_FMT \
+	    "[scene]\nlaw = hertz\n[body1]\nmass = %g kg\n[body2]\nmass = %g kg\n" \
+	    "[law]\nk = 7.095e7\n[loads]\ng = 0\nF1 = -0.5759 N\nF2 = 0.5759 N\n" \
+	    "[initial]\nx0 = 1.5 mm\nv0 = -0.05\nx_m0 = 0\nv_m0 = 0.12\n[run]\nT = 1.5\n"
+	char ini[1024];
+	struct scene a, b;
+	struct sim *sa, *sb;
+	size_t i;
+
+	snprintf(ini, sizeof ini, SAME_M_FMT, 2.0, 3.0);
+	scene_from(ini, &a);
+	snprintf(ini, sizeof ini, SAME_M_FMT, 1.5, 6.0);
+	scene_from(ini, &b);
+	assert_rel(a.d.m, b.d.m, 1e-15);
+	cr_assert_eq(a.d.system, SCENE_FULL);
+	sa = run_scene(&a);
+	sb = run_scene(&b);
+	cr_assert_eq(sim_ncollisions(sa), sim_ncollisions(sb));
+	cr_assert(sim_ncollisions(sa) >= 3);
+	for (i = 0; i < sim_ncollisions(sa); i++) {
+		assert_rel(sim_collision(sb, i)->te, sim_collision(sa, i)->te, 1e-12);
+		assert_rel(sim_collision(sb, i)->e, sim_collision(sa, i)->e, 1e-10);
+	}
+	assert_rel(arc_last(sim_arc(sb))->x, arc_last(sim_arc(sa))->x, 1e-9);
+	sim_free(sa);
+	sim_free(sb);
+}
+
+/* Budgeted advances give the same run as one sim_run, bit for bit. */
+Test(sim, advance_in_slices_is_the_same_run)
+{
+	struct scene sc;
+	char msg[512];
+	struct sim *a, *b;
+	size_t i;
+	int calls = 0;
+
+	scene_preset("steel-on-bitumen", &sc);
+	a = run_scene(&sc);
+	b = sim_new(&sc, msg, sizeof msg);
+	cr_assert_not_null(b);
+	while (sim_end(b) == SIM_RUNNING) {
+		cr_assert_eq(sim_advance(b, 7, 0.0), 0);
+		calls++;
+	}
+	cr_assert(calls > 10);
+	cr_assert_eq(sim_advance(b, 7, 0.0), HB_EDONE);
+	cr_assert_eq(arc_len(sim_arc(a)), arc_len(sim_arc(b)));
+	for (i = 0; i < arc_len(sim_arc(a)); i++)
+		cr_assert_eq(memcmp(arc_at(sim_arc(a), i), arc_at(sim_arc(b), i), sizeof(struct arc_sample)), 0,
+		             "sample %zu differs", i);
+	sim_free(a);
+	sim_free(b);
+}
+
+/* Rewind to a sample inside a contact and continue: the same run to the integrator's accuracy. */
+Test(sim, seek_and_continue)
+{
+	struct scene sc;
+	struct sim *a, *b;
+	size_t i, mid = 0, n;
+	const struct arc *arc;
+
+	scene_preset("steel-on-bitumen", &sc);
+	a = run_scene(&sc);
+	b = run_scene(&sc);
+	arc = sim_arc(b);
+	/* a sample in the middle of the third contact */
+	for (i = 0; i < arc_len(arc); i++)
+		if (arc_at(arc, i)->j == 5 && arc_at(arc, i)->v > 0) {
+			mid = i;
+			break;
+		}
+	cr_assert(mid > 0);
+	cr_assert_eq(sim_seek(b, mid), 0);
+	cr_assert_eq(arc_len(sim_arc(b)), mid + 1);
+	cr_assert_eq(sim_ncollisions(b), 2);
+	cr_assert_eq(sim_end(b), SIM_RUNNING);
+	cr_assert_eq(sim_run(b), 0);
+	n = sim_ncollisions(a);
+	cr_assert_eq(sim_ncollisions(b), n);
+	for (i = 0; i < n; i++) {
+		assert_rel(sim_collision(b, i)->ts, sim_collision(a, i)->ts, 1e-10);
+		assert_rel(sim_collision(b, i)->e, sim_collision(a, i)->e, 1e-7);
+		assert_rel(sim_collision(b, i)->W, sim_collision(a, i)->W, 1e-7);
+		assert_rel(sim_collision(b, i)->xcmax, sim_collision(a, i)->xcmax, 1e-8);
+	}
+	/* rewind into flight, edit c, continue: the earlier collisions are kept */
+	cr_assert_eq(sim_seek(b, mid), 0);
+	{
+		struct scene nsc = *sim_scene(b);
+		int restarted = -1;
+		char msg[256];
+
+		cr_assert_eq(scene_set(&nsc, "law.c", "8.8e3 N s/m", msg, sizeof msg), 0, "%s", msg);
+		cr_assert_eq(sim_set_scene(b, &nsc, &restarted, msg, sizeof msg), 0, "%s", msg);
+		cr_assert_eq(restarted, 0);
+		cr_assert_eq(sim_ncollisions(b), 2);
+		cr_assert_eq(sim_run(b), 0);
+		cr_assert_eq(sim_collision(b, 1)->ts, sim_collision(a, 1)->ts);
+		cr_assert(fabs(sim_collision(b, 2)->e - sim_collision(a, 2)->e) > 1e-3,
+		          "the edit must change the third collision");
+	}
+	sim_free(a);
+	sim_free(b);
+}
+
+/* ---- error paths: a law that misbehaves on purpose ---- */
+
+static const struct law_param bad_params[] = {
+	{ "k", { 1, 1, -2, -1, 0 }, 0, HUGE_VAL, 1, 0, 1e8, LAW_PARAM_STIFFNESS, "stiffness" },
+	{ "p", { 0, 0, 0, 0, 0 }, 1, HUGE_VAL, 0, 0, 1.5, LAW_PARAM_EXPONENT_P, "exponent" },
+};
+
+static double
+nan_phi(const double *par, int ext, double xc, const double *z, double v)
+{
+	(void)ext, (void)z, (void)v;
+	if (xc < -2e-6)
+		return NAN; /* the flow breaks down at 2 um of indentation */
+	return par[0] * xc * sqrt(fabs(xc));
+}
+
+static void
+nan_jac(const double *par, int ext, double xc, const double *z, double v, double *dphi, double *dpsi)
+{
+	(void)ext, (void)z, (void)v, (void)dpsi;
+	dphi[0] = 1.5 * par[0] * sqrt(fabs(xc));
+	dphi[1] = 0.0;
+}
+
+static const struct law_type law_nan = {
+	"nan", "NaN below 2 um", "test law", 0, 2, bad_params, 0, nan_phi, NULL, nan_jac, NULL, NULL, NULL,
+};
+
+Test(sim, nan_from_the_flow_fails_and_keeps_the_arc)
+{
+	struct scene sc;
+	char msg[512];
+	struct sim *s;
+	size_t n;
+	const struct arc_sample *l;
+
+	mass_scene(&sc, "hertz", 0.25, "k = 1e8", 1e-3, -0.3, 0.0, 0.01, "adhesive");
+	sc.law = &law_nan;
+	s = sim_new(&sc, msg, sizeof msg);
+	cr_assert_not_null(s, "%s", msg);
+	cr_assert_eq(sim_run(s), HB_ENUMERIC);
+	cr_assert_eq(sim_end(s), SIM_END_FAIL);
+	cr_assert(strstr(sim_errmsg(s), "t =") != NULL && strstr(sim_errmsg(s), "j = 1") != NULL,
+	          "message names (t, j): %s", sim_errmsg(s));
+	n = arc_len(sim_arc(s));
+	cr_assert(n > 3);
+	l = arc_last(sim_arc(s));
+	cr_assert(isfinite(l->x) && isfinite(l->v) && isfinite(l->xc) && isfinite(l->Fc));
+	cr_assert(l->xc >= -2e-6 - 1e-12);
+	cr_assert_eq(check_solution_pair(&sc, sim_arc(s), msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(sim_advance(s, 0, 0), HB_EDONE);
+	cr_assert_eq(arc_len(sim_arc(s)), n, "a failed run changes nothing more");
+	sim_free(s);
+}
+
+Test(sim, bad_scene_is_refused_with_a_message)
+{
+	struct scene sc;
+	char msg[512] = "";
+
+	scene_preset("steel-on-bitumen", &sc);
+	sc.par[law_param_index(sc.law, "alpha")] = 1.5;
+	cr_assert_null(sim_new(&sc, msg, sizeof msg));
+	cr_assert(strstr(msg, "alpha") != NULL, "%s", msg);
+}
