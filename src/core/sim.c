@@ -855,6 +855,8 @@ crossed(int kind, double a, double b)
 	}
 }
 
+static void snap_stick(struct sim *s, double *u);
+
 /* The state one step of length h from (t0, u0), cached. */
 static int
 restep(struct sim *s, double h, double *u)
@@ -884,6 +886,8 @@ restep(struct sim *s, double h, double *u)
 	for (i = 0; i < p->L.dim; i++)
 		if (!isfinite(u[i]))
 			return GSL_FAILURE;
+	if (p->q)
+		snap_stick(s, u);
 	i = s->cache_next;
 	s->cache_next = (s->cache_next + 1) % CACHE;
 	if (s->ncache < CACHE)
@@ -985,7 +989,9 @@ accept_at(struct sim *s, double h)
  * sqrt(k m)/2), the computed values eventually wander about zero at the
  * level of round-off and may both turn positive, which would be read as a
  * separation.  A state whose v and Phi are both positive but below
- * eta = max(64 eps, rtol / 100) of the contact's largest |v| and F_c is on
+ * eta = 100 max(rtol, atol) of the contact's largest |v| and F_c (the noise
+ * of the integration, whose components are controlled to atol of their
+ * scales) is on
  * the boundary of C to the precision of the computation: its v is set to 0,
  * which keeps it in C (rule R2) and changes it by less than the tolerance.
  */
@@ -994,7 +1000,7 @@ snap_stick(struct sim *s, double *u)
 {
 	struct phase *p = s->cur;
 	const struct layout *L = &p->L;
-	double y[MAXDIM], eta = fmax(64 * DBL_EPSILON, 1e-2 * s->sc.run.rtol), phi, v;
+	double y[MAXDIM], eta = fmax(64 * DBL_EPSILON, 100 * fmax(s->sc.run.rtol, s->sc.run.atol)), phi, v;
 	double z[LAW_MAX_Z] = { 0 };
 	int i;
 
@@ -1005,7 +1011,6 @@ snap_stick(struct sim *s, double *u)
 	phi = phi_at(s, y[L->ixc], z, v);
 	if (v > 0 && phi > 0 && v <= eta * s->vmax && phi <= eta * s->Fcmax)
 		u[L->iv] = 0.0;
-	s->vmax = fmax(s->vmax, fabs(v));
 }
 
 /*
@@ -1024,8 +1029,10 @@ after_step(struct sim *s, int load_kink)
 
 	s->ncache = 0;
 	s->cache_next = 0;
-	if (p->q)
+	if (p->q) {
 		snap_stick(s, s->u1);
+		s->vmax = fmax(s->vmax, fabs(s->u1[p->L.iv] * s->scale[p->L.iv]));
+	}
 	n = watch(s, p, s->t0, s->u0, f0, kind);
 	watch(s, p, s->t0 + s->H, s->u1, f1, kind);
 	for (i = 0; i < n; i++) {
