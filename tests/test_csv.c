@@ -326,7 +326,7 @@ Test(csv, failure_leaves_nothing)
 	/* A directory in the way of the collisions' rename: all or nothing. */
 	snprintf(cpath, sizeof cpath, "%s/busy.csv", dir);
 	cr_assert_eq(mkdir(cpath, 0700), 0);
-	snprintf(spath, sizeof spath, "%s/k", cpath);
+	snprintf(spath, sizeof spath, "%.200s/k", cpath);
 	f = fopen(spath, "w");
 	fclose(f);
 	cr_assert_eq(csv_export(s, path, cpath, NULL, 0, msg, sizeof msg), HB_EIO);
