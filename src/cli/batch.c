@@ -636,11 +636,8 @@ batch_run(const struct batch_options *o)
 		return 2;
 	}
 	rc = sim_run(s);
-	if (sim_end(s) == SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE)) {
+	if (sim_end(s) == SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE))
 		status = 1;
-		fprintf(stderr, PROG ": the run failed: %s\n",
-		        sim_errmsg(s)[0] ? sim_errmsg(s) : status_str(rc));
-	}
 
 	/* The header comes after the run: the tolerance scales are set per contact. */
 	have_live = sim_contact_live(s, &live);
@@ -667,6 +664,12 @@ batch_run(const struct batch_options *o)
 		}
 	}
 	fflush(stdout);
+	/* After the report, so that it is the last thing a terminal shows. */
+	if (status == 1 && sim_end(s) == SIM_END_FAIL)
+		fprintf(stderr, PROG ": the run failed: %s\n",
+		        sim_errmsg(s)[0] ? sim_errmsg(s) : status_str(rc));
+	else if (rc != HB_OK && rc != HB_EDONE)
+		fprintf(stderr, PROG ": the run stopped: %s\n", status_str(rc));
 
 	if (o->trace != NULL || o->collisions != NULL) {
 		msg[0] = '\0';
