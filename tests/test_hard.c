@@ -216,7 +216,7 @@ Test(hard, bounce_sequence_end)
 Test(hard, slow_impact_hertz)
 {
 	static const int steppers[] = { STEPPER_RK8PD, STEPPER_RKF45, STEPPER_RKCK,
-		                        STEPPER_MSBDF, STEPPER_RK4IMP };
+		                        STEPPER_MSBDF, STEPPER_RK4IMP, STEPPER_BSIMP };
 	struct scene sc;
 	double m, k, v, d;
 	size_t i;

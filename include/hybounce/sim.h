@@ -54,6 +54,7 @@ struct sim_stats {
 	long jumps;
 	long kinks;        /* steps ended on a switching function or load kink */
 	long located;      /* root-finder runs */
+	long dips;         /* events found inside a step whose ends are both in C */
 	long flights_closed; /* flight intervals solved in closed form */
 	double seconds;    /* CPU time spent in sim_advance */
 	int ncomp;         /* components of the contact ODE */

@@ -579,6 +579,9 @@ print_summary(const struct sim *s)
 	printf("  events      %ld jumps, %ld kinks, %ld located by root finding, "
 	       "%ld flights in closed form\n",
 	       st->jumps, st->kinks, st->located, st->flights_closed);
+	if (st->dips > 0)
+		printf("              %ld events found inside a step whose ends were both in C\n",
+		       st->dips);
 	printf("  arc         %zu samples, %zu flow intervals",
 	       arc_len(a), arc_nintervals(a));
 	if (arc_thinned(a) > 0)

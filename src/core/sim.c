@@ -49,6 +49,7 @@
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
 #include "arc_impl.h"
+#include "step_bsimp.h"
 
 enum {
 	MAXDIM = 11,           /* x, v, x_c, z1, z2, W, JFc, JFe, E_e, x_m, v_m */
@@ -137,7 +138,7 @@ stepper_type(int stepper)
 	case STEPPER_RKCK: return gsl_odeiv2_step_rkck;
 	case STEPPER_MSBDF: return gsl_odeiv2_step_msbdf;
 	case STEPPER_RK4IMP: return gsl_odeiv2_step_rk4imp;
-	case STEPPER_BSIMP: return gsl_odeiv2_step_bsimp;
+	case STEPPER_BSIMP: return hb_step_bsimp_shifted;
 	default: return gsl_odeiv2_step_rk8pd;
 	}
 }
@@ -334,7 +335,7 @@ phase_alloc(struct sim *s, struct phase *p, int q)
 	const struct scene *sc = &s->sc;
 	const gsl_odeiv2_step_type *T = stepper_type(sc->run.stepper);
 	/* msbdf is multistep: locate with the single-step implicit bsimp */
-	const gsl_odeiv2_step_type *TL = T == gsl_odeiv2_step_msbdf ? gsl_odeiv2_step_bsimp : T;
+	const gsl_odeiv2_step_type *TL = T == gsl_odeiv2_step_msbdf ? hb_step_bsimp_shifted : T;
 
 	phase_free(p);
 	p->s = s;
@@ -865,7 +866,7 @@ restep(struct sim *s, double h, double *u)
 	double yerr[MAXDIM];
 	int i, rc;
 
-	if (h == 0.0) {
+	if (s->t0 + h == s->t0) { /* h below the resolution of t: the start (bsimp refuses such a step) */
 		memcpy(u, s->u0, sizeof s->u0);
 		return 0;
 	}
@@ -883,8 +884,9 @@ restep(struct sim *s, double h, double *u)
 	rc = gsl_odeiv2_step_apply(p->loc->s, s->t0, h, u, yerr, NULL, NULL, &p->sys);
 	if (rc != GSL_SUCCESS)
 		return rc;
+	/* a step whose error estimate is not finite was not made (bsimp's divergence) */
 	for (i = 0; i < p->L.dim; i++)
-		if (!isfinite(u[i]))
+		if (!isfinite(u[i]) || !isfinite(yerr[i]))
 			return GSL_FAILURE;
 	if (p->q)
 		snap_stick(s, u);
@@ -1013,6 +1015,102 @@ snap_stick(struct sim *s, double *u)
 		u[L->iv] = 0.0;
 }
 
+/* Is function i a candidate crossing from f0 to fx (with the noise filter of after_step)? */
+static int
+candidate(const struct sim *s, int kind, int i, double f0, double fx)
+{
+	/*
+	 * A switching or extremum function that only wanders about zero at the
+	 * level of the tolerance (|Psi_2| while a Maxwell element creeps,
+	 * dPhi/dt at rest) marks no real kink or extremum.
+	 */
+	if (kind != FUN_EVENT && fmax(fabs(f0), fabs(fx)) <= s->sc.run.rtol * s->gmax[i])
+		return 0;
+	return crossed(kind, f0, fx);
+}
+
+/* dI/dt of the indicator of C at a scaled state (one-sided where I has a corner). */
+static double
+indicator_rate(const struct sim *s, const struct phase *p, double t, const double *u,
+               const double *f, int n)
+{
+	const struct layout *L = &p->L;
+	double y[MAXDIM], v, vdot;
+
+	unscale(p, u, y);
+	v = y[L->iv];
+	if (p->q) {
+		double z[LAW_MAX_Z] = { 0 }, phi;
+		int i;
+
+		for (i = 0; i < s->sc.law->n_z; i++)
+			z[i] = y[L->iz + i];
+		phi = phi_at(s, y[L->ixc], z, v);
+		vdot = (-phi + scene_Fer(&s->sc, t)) / s->sc.d.m;
+		return phi < v ? -f[n - 1] : -vdot; /* f[n - 1] = dPhi/dt */
+	}
+	vdot = scene_Fer(&s->sc, t) / s->sc.d.m;
+	return y[L->ix] > v ? v : vdot;
+}
+
+/*
+ * An event inside a step whose ends are both in C (the indicator dips
+ * below zero and comes back: a separation or an impact stepped over).  The
+ * cubic Hermite interpolant of the indicator from its values and rates at
+ * the ends predicts where it is least; if it predicts a negative value,
+ * the state there is computed.  Returns the fraction theta of the step
+ * where the indicator was found negative (with the watched values there in
+ * fx), or 0.
+ */
+static double
+dip(struct sim *s, const double *f0, const double *f1, int n, double *fx)
+{
+	struct phase *p = s->cur;
+	double H = s->H, d0, d1, A, B, C, th[2], u[MAXDIM];
+	int kind[MAXFUN], nt = 0, i;
+
+	if (!(f0[0] >= 0.0 && f1[0] >= 0.0))
+		return 0.0;
+	d0 = H * indicator_rate(s, p, s->t0, s->u0, f0, n);
+	d1 = H * indicator_rate(s, p, s->t0 + H, s->u1, f1, n);
+	if (d0 >= 0.0 && d1 <= 0.0)
+		return 0.0; /* rising then falling: no interior minimum */
+	/* P(th) = f0 + d0 th + (3(f1 - f0) - 2 d0 - d1) th^2 + (2(f0 - f1) + d0 + d1) th^3 */
+	A = 3.0 * (2.0 * (f0[0] - f1[0]) + d0 + d1);
+	B = 2.0 * (3.0 * (f1[0] - f0[0]) - 2.0 * d0 - d1);
+	C = d0;
+	if (fabs(A) < 1e-300) {
+		if (B != 0.0)
+			th[nt++] = -C / B;
+	} else {
+		double disc = B * B - 4.0 * A * C;
+
+		if (disc >= 0.0) {
+			double q = -0.5 * (B + copysign(sqrt(disc), B));
+
+			th[nt++] = q / A;
+			if (q != 0.0)
+				th[nt++] = C / q;
+		}
+	}
+	for (i = 0; i < nt; i++) {
+		double t = th[i], P;
+
+		if (!(t > 0.0 && t < 1.0))
+			continue;
+		P = f0[0] + t * (d0 + t * ((3.0 * (f1[0] - f0[0]) - 2.0 * d0 - d1) +
+		                           t * (2.0 * (f0[0] - f1[0]) + d0 + d1)));
+		if (P >= 0.0)
+			continue;
+		if (restep(s, t * H, u))
+			continue;
+		watch(s, p, s->t0 + t * H, u, fx, kind);
+		if (fx[0] < 0.0)
+			return t;
+	}
+	return 0.0;
+}
+
 /*
  * Handles an accepted step (t0, u0) -> (t0 + H, u1): finds the earliest
  * crossing of the watched functions, if any, and acts on it.
@@ -1035,18 +1133,20 @@ after_step(struct sim *s, int load_kink)
 	}
 	n = watch(s, p, s->t0, s->u0, f0, kind);
 	watch(s, p, s->t0 + s->H, s->u1, f1, kind);
-	for (i = 0; i < n; i++) {
-		double big = fmax(fabs(f0[i]), fabs(f1[i]));
-
-		/*
-		 * A switching or extremum function that only wanders about zero at
-		 * the level of the tolerance (|Psi_2| while a Maxwell element
-		 * creeps, dPhi/dt at rest) marks no real kink or extremum.
-		 */
-		if (kind[i] != FUN_EVENT && big <= s->sc.run.rtol * s->gmax[i])
-			continue;
-		if (crossed(kind[i], f0[i], f1[i]))
+	for (i = 0; i < n; i++)
+		if (candidate(s, kind[i], i, f0[i], f1[i]))
 			cand[ncand++] = i;
+	if (ncand == 0 || cand[0] != 0) {
+		/* the event stepped over: locate everything that crossed before the dip */
+		double fx[MAXFUN], th = dip(s, f0, f1, n, fx);
+
+		if (th > 0.0) {
+			s->st.dips++;
+			hi = th * s->H;
+			for (ncand = 0, i = 0; i < n; i++)
+				if (candidate(s, kind[i], i, f0[i], fx[i]))
+					cand[ncand++] = i;
+		}
 	}
 	for (i = 0; i < n; i++)
 		s->gmax[i] = fmax(s->gmax[i], fmax(fabs(f0[i]), fabs(f1[i])));
@@ -1075,12 +1175,16 @@ after_step(struct sim *s, int load_kink)
 		}
 		first = k;
 		hi = b;
-		/* which candidates have already crossed at a? */
+		/*
+		 * Which functions have already crossed at a?  Any of them, not only
+		 * the candidates: one that crossed and came back within the step
+		 * (the indicator, most of all) is found here.
+		 */
 		restep(s, a, ua);
 		watch(s, p, s->t0 + a, ua, fa, kk);
-		for (i = 1; i < ncand; i++)
-			if (crossed(kind[cand[i]], f0[cand[i]], fa[cand[i]]))
-				cand[nb++] = cand[i];
+		for (i = 0; i < n; i++)
+			if (i != k && candidate(s, kind[i], i, f0[i], fa[i]))
+				cand[nb++] = i;
 		if (nb == 0)
 			break;
 		ncand = nb;
