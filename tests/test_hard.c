@@ -126,11 +126,11 @@ errors(const struct sim *a, const struct sim *r, struct herr *e)
 	e->T = fmax(fabs(la->x - lr->x) / X, fabs(la->v - lr->v) / V);
 }
 
-/* The preset at TOL against the reference; asserts the errors. */
+/* The preset at TOL with stepper against the reference; asserts the errors. */
 static void
-assert_within_tolerance(const char *name)
+assert_within_tolerance_with(const char *name, int stepper)
 {
-	struct sim *a = run_at(name, STEPPER_RK8PD, TOL, TOL);
+	struct sim *a = run_at(name, stepper, TOL, TOL);
 	struct sim *r = run_at(name, STEPPER_RK8PD, 1e-13, 1e-16);
 	struct herr e;
 	double lim = GROWTH * TOL;
@@ -148,6 +148,12 @@ assert_within_tolerance(const char *name)
 	cr_expect_leq(e.T, lim, "%s: state at T off by %.3g (> %.3g)", name, e.T, lim);
 	sim_free(a);
 	sim_free(r);
+}
+
+static void
+assert_within_tolerance(const char *name)
+{
+	assert_within_tolerance_with(name, STEPPER_RK8PD);
 }
 
 /* BWMCL with c a thousand times smaller than the first study's. */
@@ -330,4 +336,48 @@ Test(hard, long_run_memory_bounded)
 		cr_expect_eq(sim_collision(s, i)->e, sim_collision(r, i)->e, "collision %zu", i);
 	sim_free(s);
 	sim_free(r);
+}
+
+/*
+ * Stiffness: rk8pd on the stiff Maxwell contact is held back by stability
+ * (h max(-Re lambda) beyond 1 at almost every check) and the engine says
+ * so; run.stepper = auto goes over to msbdf, keeps the error within the
+ * tolerance and takes far fewer steps.  On the paper's studies nothing is
+ * stiff: auto is rk8pd, bit for bit.
+ */
+Test(hard, stiff_contacts_go_implicit)
+{
+	static const char *const stiff[] = { "hard-stiff-maxwell", "hard-linear-maxwell" };
+	static const char *const calm[] = { "steel-on-bitumen", "ptfe-pom", "permanent-contact-shccl",
+		                            "permanent-contact-bwshccl", "permanent-contact-bwmcl" };
+	size_t i;
+
+	for (i = 0; i < 2; i++) {
+		struct sim *e = run_at(stiff[i], STEPPER_RK8PD, TOL, TOL);
+		struct sim *a = run_at(stiff[i], STEPPER_AUTO, TOL, TOL);
+		const struct sim_stats *se = sim_stats(e), *sa = sim_stats(a);
+
+		cr_expect_eq(se->stiff, 1, "%s: rk8pd not found stiff (h rho up to %g)", stiff[i],
+		             se->stiff_hrho);
+		cr_expect_eq(se->switched, 0, "%s: rk8pd must stay rk8pd", stiff[i]);
+		cr_expect_eq(sa->switched, 1, "%s: auto did not go over to msbdf", stiff[i]);
+		cr_expect_lt(sa->steps * 3, se->steps, "%s: auto %ld steps, rk8pd %ld", stiff[i],
+		             sa->steps, se->steps);
+		sim_free(e);
+		sim_free(a);
+	}
+	assert_within_tolerance_with("hard-stiff-maxwell", STEPPER_AUTO);
+	for (i = 0; i < sizeof calm / sizeof calm[0]; i++) {
+		struct sim *e = run_at(calm[i], STEPPER_RK8PD, 1e-12, 1e-14);
+		struct sim *a = run_at(calm[i], STEPPER_AUTO, 1e-12, 1e-14);
+		const struct arc_sample *le = arc_last(sim_arc(e)), *la = arc_last(sim_arc(a));
+
+		cr_expect_eq(sim_stats(e)->stiff, 0, "%s found stiff (h rho %g)", calm[i],
+		             sim_stats(e)->stiff_hrho);
+		cr_expect_eq(sim_stats(a)->switched, 0, "%s: auto switched", calm[i]);
+		cr_expect(le->x == la->x && le->v == la->v && sim_ncollisions(e) == sim_ncollisions(a),
+		          "%s: auto differs from rk8pd", calm[i]);
+		sim_free(e);
+		sim_free(a);
+	}
 }

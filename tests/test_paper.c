@@ -140,6 +140,32 @@ Test(paper, every_stepper_on_every_paper_preset, .timeout = 600)
 	}
 }
 
+/*
+ * run.kinks = no (for the bench only): no step ends on a law kink, the run
+ * still completes as a solution pair with study 1's collisions, close to
+ * the default run (the error control absorbs the kinks by rejecting steps).
+ */
+Test(paper, kinks_off_runs_over_the_kinks)
+{
+	struct scene sc;
+	struct sim *a, *b;
+	char msg[1024];
+	size_t i;
+
+	scene_preset("steel-on-bitumen", &sc);
+	a = run_scene(&sc);
+	cr_assert_eq(scene_set(&sc, "run.kinks", "no", msg, sizeof msg), 0, "%s", msg);
+	b = run_scene(&sc);
+	cr_assert_gt(sim_stats(a)->kinks, 50);
+	cr_assert_eq(sim_stats(b)->kinks, 0);
+	cr_assert_eq(check_solution_pair(&sc, sim_arc(b), msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(sim_ncollisions(a), sim_ncollisions(b));
+	for (i = 0; i < sim_ncollisions(a); i++)
+		assert_rel(sim_collision(b, i)->e, sim_collision(a, i)->e, 1e-8);
+	sim_free(a);
+	sim_free(b);
+}
+
 /* Contacts lengthen and flights shorten over the sequence; the collisions are finite. */
 static void
 assert_sequence(const char *name, size_t min_collisions)

@@ -114,6 +114,7 @@ scene_same(const struct scene *a, const struct scene *b, const char *what)
 	EQ(run.max_samples);
 	EQ(run.chatter);
 	EQ(run.reduce);
+	EQ(run.kinks);
 	EQ(d.system);
 	SAME(d.Estar);
 	SAME(d.Re);
@@ -485,7 +486,9 @@ Test(preset, round_trip_edited_scene)
 	cr_assert_eq(scene_set(&a, "law.alpha", "0.123456789012345678", msg, sizeof msg), HB_OK);
 	cr_assert_eq(scene_set(&a, "initial.v0", "-0.1 mm/s", msg, sizeof msg), HB_OK);
 	cr_assert_eq(scene_set(&a, "run.reductions", "flight,com", msg, sizeof msg), HB_OK);
-	cr_assert_eq(scene_set(&a, "run.stepper", "bsimp", msg, sizeof msg), HB_OK);
+	cr_assert_eq(scene_set(&a, "run.stepper", "auto", msg, sizeof msg), HB_OK);
+	cr_assert_eq(scene_set(&a, "run.kinks", "no", msg, sizeof msg), HB_OK);
+	cr_assert_eq(a.run.kinks, 0);
 	cr_assert_eq(scene_set(&a, "scene.extension", "none", msg, sizeof msg), HB_OK);
 	cr_assert_eq(scene_set(&a, "loads.F1", "1e-300 N", msg, sizeof msg), HB_OK);
 	cr_assert_eq(scene_set(&a, "body2.mass", "0.0472 kg", msg, sizeof msg), HB_OK);

@@ -645,7 +645,9 @@ Test(scene, com_against_quadrature)
 
 Test(scene, steppers)
 {
-	static const char *const names[] = { "rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp" };
+	static const char *const names[] = { "rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto" };
+
+	cr_assert_eq(sizeof names / sizeof names[0], STEPPER_COUNT);
 
 	for (int i = 0; i < STEPPER_COUNT; i++) {
 		cr_assert_str_eq(scene_stepper_name(i), names[i]);

@@ -32,6 +32,7 @@ enum scene_stepper {
 	STEPPER_MSBDF,     /* implicit, uses the law's Jacobian */
 	STEPPER_RK4IMP,
 	STEPPER_BSIMP,
+	STEPPER_AUTO,      /* rk8pd, then msbdf for contacts once one is found stiff */
 	STEPPER_COUNT
 };
 
@@ -76,6 +77,7 @@ struct scene_run {
 	long max_samples; /* arc memory bound: thinning starts beyond this */
 	int chatter;      /* most jumps allowed at one instant of ordinary time */
 	int reduce;       /* REDUCE_* flags */
+	int kinks;        /* 1: steps end on the law's and the loads' kinks (DESIGN.md 4a) */
 };
 
 struct scene_derived {

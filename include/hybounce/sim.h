@@ -56,6 +56,18 @@ struct sim_stats {
 	long located;      /* root-finder runs */
 	long dips;         /* events found inside a step whose ends are both in C */
 	long flights_closed; /* flight intervals solved in closed form */
+	/*
+	 * Stiffness of the contact flow, checked every 8th step of an explicit
+	 * stepper in contact: h max(-Re lambda) over the eigenvalues of the
+	 * flow's Jacobian.  Beyond 1 the step is limited by stability, not
+	 * accuracy; eight such checks in a row make the contact stiff.
+	 */
+	long stiff_checks;
+	long stiff_hits;   /* checks with h max(-Re lambda) > 1 */
+	double stiff_hrho; /* largest h max(-Re lambda) seen */
+	int stiff;         /* 1: a contact was found stiff: an implicit stepper is faster */
+	double stiff_t;    /* the time it was found, s */
+	int switched;      /* 1: run.stepper = auto went over to msbdf for the contacts */
 	double seconds;    /* CPU time spent in sim_advance */
 	int ncomp;         /* components of the contact ODE */
 	double scale[8];   /* per-component scale of the absolute tolerance */

@@ -579,6 +579,19 @@ print_summary(const struct sim *s)
 	printf("  events      %ld jumps, %ld kinks, %ld located by root finding, "
 	       "%ld flights in closed form\n",
 	       st->jumps, st->kinks, st->located, st->flights_closed);
+	if (st->stiff) {
+		char tb[32];
+
+		fmt(st->stiff_t, UNIT_TIME, tb, sizeof tb);
+		if (st->switched)
+			printf("  stiffness   the contact flow is stiff from t = %s (h |lambda| up to "
+			       "%.3g): run.stepper = auto went over to msbdf\n", tb, st->stiff_hrho);
+		else
+			printf("  stiffness   the contact flow is stiff from t = %s: %s is held back by "
+			       "stability (h |lambda| up to %.3g);\n"
+			       "              --set run.stepper=auto (or msbdf) takes far fewer steps\n",
+			       tb, scene_stepper_name(sc->run.stepper), st->stiff_hrho);
+	}
 	if (st->dips > 0)
 		printf("              %ld events found inside a step whose ends were both in C\n",
 		       st->dips);

@@ -144,7 +144,7 @@ collect_free(struct collect *c)
 /* The keys of each section other than [law], for "known keys" messages. */
 static const struct {
 	const char *section;
-	const char *keys[10];
+	const char *keys[12];
 } known[] = {
 	{ "scene", { "name", "description", "law", "extension" } },
 	{ "body1", { "name", "E", "nu", "rho", "R", "mass" } },
@@ -153,7 +153,7 @@ static const struct {
 	{ "loads", { "g", "F1", "F2", "ramp", "F_e0", "T_e", "T_s" } },
 	{ "initial", { "x0", "v0", "x_m0", "v_m0" } },
 	{ "run", { "T", "J", "stepper", "rtol", "atol", "h_max", "max_samples", "chatter",
-	           "reductions" } },
+	           "reductions", "kinks" } },
 };
 #define NKNOWN (sizeof known / sizeof known[0])
 
@@ -173,7 +173,7 @@ key_known(const struct scene *sc, int si, const char *name)
 		int i = law_param_index(sc->law, name);
 		return i >= 0 && strcmp(sc->law->params[i].name, name) == 0;
 	}
-	for (int k = 0; k < 10 && known[si].keys[k] != NULL; k++)
+	for (int k = 0; k < 12 && known[si].keys[k] != NULL; k++)
 		if (strcmp(known[si].keys[k], name) == 0)
 			return 1;
 	return 0;
@@ -190,7 +190,7 @@ known_list(const struct scene *sc, int si, char *buf, size_t n)
 		}
 		return;
 	}
-	for (int k = 0; k < 10 && known[si].keys[k] != NULL; k++) {
+	for (int k = 0; k < 12 && known[si].keys[k] != NULL; k++) {
 		size_t l = strlen(buf);
 		snprintf(buf + l, n - l, "%s%s", k ? ", " : "", known[si].keys[k]);
 	}
@@ -579,6 +579,8 @@ preset_format(const struct scene *sc, char *buf, size_t n)
 		    sc->run.reduce & REDUCE_CONTACT ? "contact" : "",
 		    (sc->run.reduce & REDUCE_CONTACT) && (sc->run.reduce & REDUCE_COM) ? "," : "",
 		    sc->run.reduce & REDUCE_COM ? "com" : "");
+	if (!sc->run.kinks)
+		out_printf(&o, "kinks = no\n");
 	return o.len;
 }
 

@@ -46,7 +46,7 @@
 /* Steppers */
 
 static const char *const stepper_names[STEPPER_COUNT] = {
-	"rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp",
+	"rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto",
 };
 
 const char *
@@ -121,6 +121,7 @@ scene_defaults(struct scene *sc)
 	sc->run.max_samples = 262144;
 	sc->run.chatter = 4;
 	sc->run.reduce = REDUCE_ALL;
+	sc->run.kinks = 1;
 	scene_derive(sc, NULL, 0);
 }
 
@@ -292,7 +293,8 @@ static const struct keydef keys[] = {
 	{ "run.J", "run", "J", K_LONG, NULL, 1, 1e18, 0, 0, OFF(run.J), 0, SP_NONE,
 	  "jump cap" },
 	{ "run.stepper", "run", "stepper", K_STEPPER, NULL, 0, 0, 0, 0, OFF(run.stepper), 0,
-	  SP_NONE, "GSL stepper: rk8pd, rkf45, rkck, msbdf, rk4imp, bsimp" },
+	  SP_NONE, "GSL stepper: rk8pd, rkf45, rkck, msbdf, rk4imp, bsimp, or auto (rk8pd, "
+	  "then msbdf for the contacts once one is found stiff)" },
 	{ "run.rtol", "run", "rtol", K_DOUBLE, &UNIT_NONE, 0, 1, 1, 1, OFF(run.rtol), 0,
 	  SP_NONE, "relative tolerance of the integrator" },
 	{ "run.atol", "run", "atol", K_DOUBLE, &UNIT_NONE, 0, 1, 1, 1, OFF(run.atol), 0,
@@ -305,6 +307,8 @@ static const struct keydef keys[] = {
 	  SP_NONE, "most jumps allowed at one instant of ordinary time" },
 	{ "run.reductions", "run", "reductions", K_REDUCE, NULL, 0, 0, 0, 0, OFF(run.reduce), 0,
 	  SP_NONE, "all, none, or a comma list of flight, contact, com" },
+	{ "run.kinks", "run", "kinks", K_BOOL, NULL, 0, 0, 0, 0, OFF(run.kinks), 0, SP_NONE,
+	  "end steps on the kinks of the law and the loads (no: only to measure their effect)" },
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -593,7 +597,7 @@ scene_set(struct scene *sc, const char *key, const char *text, char *msg, size_t
 		if (s < 0)
 			return status_set(msg, n, HB_EINVAL,
 			    "%s: unknown stepper '%s'; accepted: rk8pd, rkf45, rkck, msbdf, "
-			    "rk4imp, bsimp", key, t);
+			    "rk4imp, bsimp, auto", key, t);
 		tmp.run.stepper = s;
 		break;
 	}
@@ -799,7 +803,7 @@ scene_validate(struct scene *sc, char *msg, size_t n)
 	if (R->stepper < 0 || R->stepper >= STEPPER_COUNT)
 		return status_set(msg, n, HB_EINVAL,
 		    "run.stepper: value %d is out of range; accepted: rk8pd, rkf45, rkck, "
-		    "msbdf, rk4imp, bsimp", R->stepper);
+		    "msbdf, rk4imp, bsimp, auto", R->stepper);
 	if ((st = check_double("run.rtol", R->rtol, 0, 1, 1, 1, UNIT_NONE, msg, n)))
 		return st;
 	if ((st = check_double("run.atol", R->atol, 0, 1, 1, 1, UNIT_NONE, msg, n)))
@@ -995,7 +999,7 @@ scene_key(const struct scene *sc, int i, struct scene_keyinfo *out)
 		break;
 	case K_STEPPER:
 		snprintf(out->value, sizeof out->value, "%s", scene_stepper_name(sc->run.stepper));
-		snprintf(out->range, sizeof out->range, "rk8pd rkf45 rkck msbdf rk4imp bsimp");
+		snprintf(out->range, sizeof out->range, "rk8pd rkf45 rkck msbdf rk4imp bsimp auto");
 		break;
 	case K_BOOL:
 		snprintf(out->value, sizeof out->value, "%s", *(const int *)(base + kd->off) ? "yes" : "no");

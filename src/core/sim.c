@@ -42,6 +42,7 @@
 #include <string.h>
 #include <time.h>
 
+#include <gsl/gsl_eigen.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 #include <gsl/gsl_roots.h>
@@ -128,7 +129,20 @@ struct sim {
 	int loc_iter;
 	gsl_root_fsolver *root;
 	long work;          /* units of work, for the step budget */
+
+	/* steppers: the one each phase uses now, and the one its workspace was built for */
+	int stepper[2], built[2];
+	int stiff_row;      /* consecutive stiffness hits in this contact */
+	gsl_eigen_nonsymm_workspace *eig;
+	gsl_matrix *Jdyn;
+	gsl_vector_complex *lambda;
 };
+
+static int
+explicit_stepper(int stepper)
+{
+	return stepper == STEPPER_RK8PD || stepper == STEPPER_RKF45 || stepper == STEPPER_RKCK;
+}
 
 static const gsl_odeiv2_step_type *
 stepper_type(int stepper)
@@ -333,7 +347,7 @@ static int
 phase_alloc(struct sim *s, struct phase *p, int q)
 {
 	const struct scene *sc = &s->sc;
-	const gsl_odeiv2_step_type *T = stepper_type(sc->run.stepper);
+	const gsl_odeiv2_step_type *T = stepper_type(s->stepper[q]);
 	/* msbdf is multistep: locate with the single-step implicit bsimp */
 	const gsl_odeiv2_step_type *TL = T == gsl_odeiv2_step_msbdf ? hb_step_bsimp_shifted : T;
 
@@ -346,6 +360,7 @@ phase_alloc(struct sim *s, struct phase *p, int q)
 	                                            sc->run.rtol, 1.0, 0.0);
 	p->loc = gsl_odeiv2_driver_alloc_standard_new(&p->sys, TL, 1e-6, sc->run.atol,
 	                                              sc->run.rtol, 1.0, 0.0);
+	s->built[q] = s->stepper[q];
 	if (p->d == NULL || p->loc == NULL) {
 		phase_free(p);
 		return HB_ENOMEM;
@@ -821,7 +836,7 @@ watch(const struct sim *s, const struct phase *p, double t, const double *u, dou
 	f[n++] = indicator(s, p->q, xc, z, v, x);
 	if (!p->q)
 		return n;
-	if (sc->law->n_kinks) {
+	if (sc->law->n_kinks && sc->run.kinks) {
 		sc->law->kinks(sc->par, sc->ext, xc, z, v, &f[n]);
 		for (i = 0; i < sc->law->n_kinks; i++)
 			kind[n++] = FUN_KINK;
@@ -1232,6 +1247,9 @@ setup_interval(struct sim *s)
 	            (sc->d.system == SCENE_REDUCED || (sc->run.reduce & REDUCE_COM));
 	if (s->closed)
 		return 0;
+	s->stiff_row = 0;
+	if (s->built[s->q] != s->stepper[s->q] && phase_alloc(s, &s->ph[s->q], s->q))
+		return fail(s, HB_ENOMEM, "out of memory for the integrator");
 	s->cur = &s->ph[s->q];
 	scales(s, &s->cur->L, s->q);
 	pack(s, &s->cur->L, s->u);
@@ -1243,6 +1261,76 @@ setup_interval(struct sim *s)
 		s->h = fmin(1e-2 * Tc, sc->run.T - s->t);
 		if (!(s->h > 0))
 			s->h = 1e-9;
+	}
+	return 0;
+}
+
+/*
+ * Stiffness of the contact flow after an accepted step of an explicit
+ * stepper: h max(-Re lambda) over the eigenvalues of the Jacobian of the
+ * dynamic components (the quadratures W, J_Fc, J_Fe, E_e add only zero
+ * eigenvalues).  An explicit method's step is accurate long before it is
+ * unstable, so h max(-Re lambda) > 1 means the stepper is held back by
+ * stability: a stiff flow, where an implicit stepper takes far fewer steps.
+ * Checked every 8th step; eight hits in a row make the contact stiff, and
+ * with run.stepper = auto the contacts go over to msbdf from then on.
+ */
+static int
+stiffness(struct sim *s)
+{
+	struct phase *p = s->cur;
+	const struct layout *L = &p->L;
+	double J[MAXDIM * MAXDIM], dfdt[MAXDIM], rho = 0.0, hr;
+	int idx[MAXDIM], nd = 0, i, k;
+
+	if (!p->q || !explicit_stepper(s->stepper[1]) || (s->st.steps & 7) != 0)
+		return 0;
+	if (L->ix >= 0) idx[nd++] = L->ix;
+	idx[nd++] = L->iv;
+	idx[nd++] = L->ixc;
+	for (i = 0; i < s->sc.law->n_z; i++)
+		idx[nd++] = L->iz + i;
+	if (L->ixm >= 0) {
+		idx[nd++] = L->ixm;
+		idx[nd++] = L->ivm;
+	}
+	if (s->Jdyn == NULL || s->Jdyn->size1 != (size_t)nd) {
+		if (s->eig) gsl_eigen_nonsymm_free(s->eig);
+		if (s->Jdyn) gsl_matrix_free(s->Jdyn);
+		if (s->lambda) gsl_vector_complex_free(s->lambda);
+		s->eig = gsl_eigen_nonsymm_alloc((size_t)nd);
+		s->Jdyn = gsl_matrix_alloc((size_t)nd, (size_t)nd);
+		s->lambda = gsl_vector_complex_alloc((size_t)nd);
+		if (s->eig == NULL || s->Jdyn == NULL || s->lambda == NULL)
+			return fail(s, HB_ENOMEM, "out of memory");
+	}
+	jacobian(s->t, s->u, J, dfdt, p);
+	for (i = 0; i < nd; i++)
+		for (k = 0; k < nd; k++)
+			gsl_matrix_set(s->Jdyn, (size_t)i, (size_t)k, J[idx[i] * L->dim + idx[k]]);
+	if (gsl_eigen_nonsymm(s->Jdyn, s->lambda, s->eig) != GSL_SUCCESS)
+		return 0;
+	for (i = 0; i < nd; i++)
+		rho = fmax(rho, -GSL_REAL(gsl_vector_complex_get(s->lambda, (size_t)i)));
+	hr = s->H * rho;
+	s->st.stiff_checks++;
+	s->st.stiff_hrho = fmax(s->st.stiff_hrho, hr);
+	if (!(hr > 1.0)) {
+		s->stiff_row = 0;
+		return 0;
+	}
+	s->st.stiff_hits++;
+	if (++s->stiff_row < 8 || s->st.stiff)
+		return 0;
+	s->st.stiff = 1;
+	s->st.stiff_t = s->t;
+	if (s->sc.run.stepper == STEPPER_AUTO) {
+		s->stepper[1] = STEPPER_MSBDF;
+		s->st.switched = 1;
+		if (phase_alloc(s, &s->ph[1], 1))
+			return fail(s, HB_ENOMEM, "out of memory for the integrator");
+		s->cur = &s->ph[1];
+		gsl_odeiv2_driver_reset(s->cur->d);
 	}
 	return 0;
 }
@@ -1266,7 +1354,7 @@ numeric_step(struct sim *s)
 		if (f[0] < 0.0)
 			return jump(s, LOCATE_START, 0, 0.0, f[0], f[0]);
 	}
-	nk = scene_load_kinks(sc, t, t1, kinks, 4);
+	nk = sc->run.kinks ? scene_load_kinks(sc, t, t1, kinks, 4) : 0;
 	if (nk > 0) {
 		t1 = kinks[0];
 		load_kink = 1;
@@ -1313,6 +1401,8 @@ retry:
 	memcpy(s->u1, s->u, sizeof s->u);
 	if ((rc = after_step(s, load_kink && t == t1)))
 		return rc;
+	if (s->end == SIM_RUNNING && !s->setup && (rc = stiffness(s)))
+		return rc;
 	if (s->end == SIM_RUNNING && !s->setup && s->t >= sc->run.T) {
 		/* the horizon: the last sample is the end */
 		if ((rc = push_sample(s, ARC_END)))
@@ -1347,6 +1437,7 @@ reset_state(struct sim *s)
 	s->n_instant = 0;
 	s->setup = 1;
 	s->ncol = 0;
+	s->stepper[1] = sc->run.stepper == STEPPER_AUTO ? STEPPER_RK8PD : sc->run.stepper;
 	arc_truncate(s->arc, 0);
 	{
 		struct sim_stats keep = s->st;
@@ -1363,6 +1454,8 @@ build(struct sim *s, char *msg, size_t n)
 {
 	int q;
 
+	for (q = 0; q < 2; q++)
+		s->stepper[q] = s->sc.run.stepper == STEPPER_AUTO ? STEPPER_RK8PD : s->sc.run.stepper;
 	for (q = 0; q < 2; q++)
 		if (phase_alloc(s, &s->ph[q], q))
 			return status_set(msg, n, HB_ENOMEM, "out of memory for the integrator");
@@ -1430,6 +1523,12 @@ sim_free(struct sim *s)
 	phase_free(&s->ph[1]);
 	if (s->root)
 		gsl_root_fsolver_free(s->root);
+	if (s->eig)
+		gsl_eigen_nonsymm_free(s->eig);
+	if (s->Jdyn)
+		gsl_matrix_free(s->Jdyn);
+	if (s->lambda)
+		gsl_vector_complex_free(s->lambda);
 	arc_free(s->arc);
 	free(s->col);
 	free(s);

@@ -28,6 +28,7 @@
 #include "status.h"
 #include "term.h"
 #include "tui.h"
+#include "units.h"
 
 #define DEFAULT_PRESET "steel-on-bitumen"
 #define FRAME_MS 20           /* frame period while computing or playing */
@@ -54,6 +55,28 @@ app_msg(struct app *a, int error, const char *fmt, ...)
 	vsnprintf(a->msg, sizeof a->msg, fmt, ap);
 	va_end(ap);
 	a->msg_error = error;
+}
+
+/*
+ * The engine's word on stiffness, for the message line: "" when the
+ * contacts are not stiff.
+ */
+static const char *
+stiff_note(const struct app *a, char *buf, size_t n)
+{
+	const struct sim_stats *st = sim_stats(a->sim);
+	char tb[32];
+
+	buf[0] = '\0';
+	if (!st->stiff)
+		return buf;
+	units_format(st->stiff_t, UNIT_TIME, 4, tb, sizeof tb);
+	if (st->switched)
+		snprintf(buf, n, "; stiff contact at t = %s: auto went over to msbdf", tb);
+	else
+		snprintf(buf, n, "; stiff contact at t = %s: run.stepper = auto (or msbdf) is faster",
+		         tb);
+	return buf;
 }
 
 /* ---- speeds (1-2-5 sequence) ---------------------------------------- */
@@ -848,8 +871,13 @@ app_tick(struct app *a)
 		dt = 0.25;
 	if (sim_end(a->sim) == SIM_RUNNING) {
 		rc = sim_advance(a->sim, 0, a->budget);
-		if (rc != HB_OK && rc != HB_EDONE)
+		if (rc != HB_OK && rc != HB_EDONE) {
 			app_msg(a, 1, "run failed: %s (everything before is kept)", sim_errmsg(a->sim));
+		} else if (sim_end(a->sim) != SIM_RUNNING && sim_stats(a->sim)->stiff) {
+			char note[160];
+
+			app_msg(a, 0, "run computed%s", stiff_note(a, note, sizeof note));
+		}
 		busy = 1;
 	}
 	for (int i = 0; i < a->npins; i++)
@@ -896,7 +924,10 @@ app_tick(struct app *a)
 				a->cursor = arc_len(arc) - 1;
 				if (sim_end(a->sim) != SIM_RUNNING) {
 					a->playing = 0;
-					app_msg(a, 0, "end of the run: %s", sim_end_str(a->sim));
+					char note[160];
+
+					app_msg(a, 0, "end of the run: %s%s", sim_end_str(a->sim),
+					        stiff_note(a, note, sizeof note));
 				}
 			} else {
 				a->tcur = tnew;
