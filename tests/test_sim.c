@@ -435,3 +435,22 @@ Test(sim, bad_scene_is_refused_with_a_message)
 	cr_assert_null(sim_new(&sc, msg, sizeof msg));
 	cr_assert(strstr(msg, "alpha") != NULL, "%s", msg);
 }
+
+/* An absurd approach speed overflows the flight: a failure with a message, not a silent horizon. */
+Test(sim, overflowing_flight_fails_with_a_message)
+{
+	struct scene sc;
+	char msg[512];
+	struct sim *s;
+
+	scene_preset("steel-on-bitumen", &sc);
+	cr_assert_eq(scene_set(&sc, "initial.v0", "-1e300", msg, sizeof msg), 0, "%s", msg);
+	s = sim_new(&sc, msg, sizeof msg);
+	cr_assert_not_null(s, "%s", msg);
+	cr_assert_eq(sim_run(s), HB_ENUMERIC);
+	cr_assert_eq(sim_end(s), SIM_END_FAIL);
+	cr_assert(strstr(sim_errmsg(s), "overflows") != NULL && strstr(sim_errmsg(s), "j = 0") != NULL,
+	          "%s", sim_errmsg(s));
+	cr_assert_eq(arc_len(sim_arc(s)), 1, "only the initial state");
+	sim_free(s);
+}

@@ -57,7 +57,7 @@ struct sim_stats {
 	long dips;         /* events found inside a step whose ends are both in C */
 	long flights_closed; /* flight intervals solved in closed form */
 	/*
-	 * Stiffness of the contact flow, checked every 8th step of an explicit
+	 * Stiffness of the contact flow, checked every 32nd step of an explicit
 	 * stepper in contact: h max(-Re lambda) over the eigenvalues of the
 	 * flow's Jacobian.  Beyond 1 the step is limited by stability, not
 	 * accuracy; eight such checks in a row make the contact stiff.

@@ -50,6 +50,7 @@
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
 #include "arc_impl.h"
+#include "control.h"
 #include "step_bsimp.h"
 
 enum {
@@ -361,7 +362,7 @@ phase_alloc(struct sim *s, struct phase *p, int q)
 	p->loc = gsl_odeiv2_driver_alloc_standard_new(&p->sys, TL, 1e-6, sc->run.atol,
 	                                              sc->run.rtol, 1.0, 0.0);
 	s->built[q] = s->stepper[q];
-	if (p->d == NULL || p->loc == NULL) {
+	if (p->d == NULL || p->loc == NULL || hb_control_cautious(p->d, sc->run.atol, sc->run.rtol)) {
 		phase_free(p);
 		return HB_ENOMEM;
 	}
@@ -606,6 +607,9 @@ flight_closed(struct sim *s)
 	double tau = flight_event(x0, v0, a), tend, tapex = INFINITY;
 	int i, rc, it = 0;
 
+	if (!isfinite(v0 * v0) || !isfinite(a * x0) || !isfinite(x0 + v0 * (T - t0))) {
+		return fail(s, HB_ENUMERIC, "the flight overflows a double: v^2 and x + v T must be finite");
+	}
 	s->st.flights_closed++;
 	tend = fmin(tau, T - t0);
 	if (a != 0.0 && -v0 / a > 0.0 && -v0 / a < tend)
@@ -1272,7 +1276,7 @@ setup_interval(struct sim *s)
  * eigenvalues).  An explicit method's step is accurate long before it is
  * unstable, so h max(-Re lambda) > 1 means the stepper is held back by
  * stability: a stiff flow, where an implicit stepper takes far fewer steps.
- * Checked every 8th step; eight hits in a row make the contact stiff, and
+ * Checked every 32nd step; eight hits in a row make the contact stiff, and
  * with run.stepper = auto the contacts go over to msbdf from then on.
  */
 static int
@@ -1283,7 +1287,7 @@ stiffness(struct sim *s)
 	double J[MAXDIM * MAXDIM], dfdt[MAXDIM], rho = 0.0, hr;
 	int idx[MAXDIM], nd = 0, i, k;
 
-	if (!p->q || !explicit_stepper(s->stepper[1]) || (s->st.steps & 7) != 0)
+	if (!p->q || !explicit_stepper(s->stepper[1]) || (s->st.steps & 31) != 0)
 		return 0;
 	if (L->ix >= 0) idx[nd++] = L->ix;
 	idx[nd++] = L->iv;

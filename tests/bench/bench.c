@@ -54,7 +54,7 @@
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
 
-enum { NTOL = 5, NSTEP = STEPPER_COUNT, MAXREP = 5 };
+enum { NTOL = 5, NSTEP = STEPPER_AUTO /* the GSL steppers */, MAXREP = 5 };
 
 static const double tols[NTOL] = { 1e-4, 1e-6, 1e-8, 1e-10, 1e-12 };
 static const char stepper_letter[NSTEP] = { 'P', 'F', 'C', 'M', 'I', 'B' };
@@ -87,6 +87,8 @@ struct obs {
 	double cpu;             /* median CPU time in sim_advance (sim_stats.seconds) */
 	int reps;
 	long steps, rejected, rhs, jac, kinks;
+	int stiff, switched;    /* the engine's stiffness verdict */
+	double hrho;            /* largest h max(-Re lambda) it saw */
 	size_t n;               /* completed collisions */
 	struct collision *c;
 	int live;               /* 1: a contact is in progress at the end */
@@ -162,6 +164,9 @@ collect(struct sim *s, struct obs *o)
 	o->rhs = st->rhs;
 	o->jac = st->jac;
 	o->kinks = st->kinks;
+	o->stiff = st->stiff;
+	o->switched = st->switched;
+	o->hrho = st->stiff_hrho;
 	o->n = sim_ncollisions(s);
 	o->live = sim_contact_live(s, &o->lc);
 	o->c = calloc(o->n ? o->n : 1, sizeof *o->c);
@@ -942,6 +947,47 @@ main(int argc, char **argv)
 		printf("fastest setting meeting the targets: %s\n", best >= 0 ? best_label : "none");
 	}
 
+	/* Kinks (DESIGN.md 4a): steps ended on them, or run over them. */
+	fprintf(md, "\n## Kinks (DESIGN.md section 4a)\n\nEach paper study at the paper's setting "
+	            "(rk8pd 1e-11/1e-14) and at the preset's, with run.kinks = yes (steps end on the "
+	            "law's switching functions and the loads' kinks: the engine's way) and no (the "
+	            "steps run over them, as DOP853 did in the paper). Errors against the references, "
+	            "as in the grid; ms = median of 5.\n\n"
+	            "| preset | setting | kinks | ms | steps | rejected | rhs | kinks ended | t (/t_d) | e | xc | F | T |\n"
+	            "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+	for (s = 0; s < NSTUDY; s++) {
+		int w, kk;
+
+		if (!studies[s].paper)
+			continue;
+		for (w = 0; w < 2; w++)
+			for (kk = 1; kk >= 0; kk--) {
+				struct obs o;
+				struct err e = { 0 };
+
+				if (load(pdir, studies[s].preset, &sc))
+					return 1;
+				if (w == 0)
+					set_tol(&sc, STEPPER_RK8PD, 1e-11, 1e-14);
+				sc.run.kinks = kk;
+				run_timed(&sc, &o, MAXREP);
+				if (o.status) {
+					fprintf(md, "| %s | %s | %s | failed: %s ||||||||||\n", studies[s].preset,
+					        w ? "preset" : "paper", kk ? "yes" : "no", o.msg);
+					obs_free(&o);
+					continue;
+				}
+				compare(&o, reference_for(s, sc.run.stepper), studies[s].kind, &e);
+				fprintf(md, "| %s | %s %g/%g | %s | %.2f | %ld | %ld | %ld | %ld | %s | %s | %s | %s | %s |\n",
+				        studies[s].preset, w ? "preset" : "paper", sc.run.rtol, sc.run.atol,
+				        kk ? "yes" : "no", o.sec * 1e3, o.steps, o.rejected, o.rhs, o.kinks,
+				        fmt_e(b1, e.t), fmt_e(b2, e.e), fmt_e(b3, e.xc), fmt_e(b4, e.F),
+				        fmt_e(b5, e.T));
+				obs_free(&o);
+			}
+	}
+	fprintf(stderr, "kinks done (%.0f s)\n", now() - T0);
+
 	/* Reductions. */
 	fprintf(md, "\n## Reductions (DESIGN.md section 3)\n\nEach paper study at its preset "
 	            "setting with run.reductions = all, then with one reduction turned off, then none. "
@@ -996,9 +1042,12 @@ main(int argc, char **argv)
 	            "Each hard preset with every stepper at rtol = atol = 1e-8 and 1e-10, against "
 	            "rk8pd at rtol 1e-14, atol 1e-18 (rk8pd rows: against rkck at the same). Errors as "
 	            "above; a contact still in progress at T is compared too (x_c^max, F_c^max so far). "
-	            "e_max = the largest restitution of the run.\n\n"
-	            "| preset | stepper | tol | ms | steps | rhs | n | dn | coll | T | e_max |\n"
-	            "|---|---|---|---|---|---|---|---|---|---|---|\n");
+	            "e_max = the largest restitution of the run. stiff: the engine's verdict "
+	            "(sim_stats.stiff: h max(-Re lambda) of the contact flow beyond 1 at eight "
+	            "checks in a row of an explicit stepper; h rho = the largest seen); auto = "
+	            "run.stepper auto, which goes over to msbdf on that verdict.\n\n"
+	            "| preset | stepper | tol | ms | steps | rhs | n | dn | coll | T | e_max | stiff (h rho) |\n"
+	            "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 	{
 		static const char *const hard[] = {
 			"hard-stiff-maxwell", "hard-bouc-wen-beta", "hard-n1", "hard-drop-1um",
@@ -1022,7 +1071,7 @@ main(int argc, char **argv)
 			if (rb.status)
 				fprintf(md, "| %s | reference rkck 1e-14/1e-18 | failed: %s |||||||||\n",
 				        hard[i], rb.msg);
-			for (st = 0; st < NSTEP; st++)
+			for (st = 0; st < STEPPER_COUNT; st++)
 				for (t = 0; t < 2; t++) {
 					struct obs o;
 					struct err e = { 0 };
@@ -1044,12 +1093,15 @@ main(int argc, char **argv)
 						emax = fmax(emax, o.c[k].e);
 					if (!ref->status)
 						compare(&o, ref, REF_RUN, &e);
-					fprintf(md, "| %s | %s | %g | %.2f | %ld | %ld | %zu | %ld | %s | %s | %s |\n",
+					char sv[64];
+
+					snprintf(sv, sizeof sv, "%s (%.2g)", o.switched ? "yes: msbdf" : o.stiff ? "yes" : "no", o.hrho);
+					fprintf(md, "| %s | %s | %g | %.2f | %ld | %ld | %zu | %ld | %s | %s | %s | %s |\n",
 					        hard[i], scene_stepper_name(st), htol[t], o.sec * 1e3, o.steps,
 					        o.rhs, o.n, ref->status ? 0 : e.dn,
 					        ref->status ? "-" : fmt_e(b1, e.coll),
 					        ref->status ? "-" : fmt_e(b2, e.T),
-					        o.n ? (snprintf(b3, 16, "%.9f", emax), b3) : "-");
+					        o.n ? (snprintf(b3, 16, "%.9f", emax), b3) : "-", sv);
 					obs_free(&o);
 				}
 			obs_free(&ra);
