@@ -115,6 +115,7 @@ struct sim {
 	struct phase ph[2]; /* numeric flight, contact */
 	struct phase *cur;
 	double scale[MAXDIM];
+	double iscale[MAXDIM]; /* 1 / scale, exact: every scale is a power of 2 */
 	double u[MAXDIM];   /* scaled ODE state */
 	double h;           /* step size suggestion */
 	double Tc;          /* time scale of the interval */
@@ -229,9 +230,14 @@ rhs(double t, const double u[], double du[], void *params)
 		dy[L->ixm] = y[L->ivm];
 		dy[L->ivm] = sc->d.system == SCENE_FULL ? (F1 + F2) / (sc->d.m1 + sc->d.m2) : 0.0;
 	}
-	for (i = 0; i < L->dim; i++) {
-		du[i] = dy[i] / s->scale[i];
-		if (!isfinite(du[i]))
+	{
+		double nan_if_bad = 0.0;
+
+		for (i = 0; i < L->dim; i++) {
+			du[i] = dy[i] * s->iscale[i];
+			nan_if_bad += 0.0 * du[i]; /* NaN as soon as one du is NaN or infinite */
+		}
+		if (nan_if_bad != 0.0 || isnan(nan_if_bad))
 			return GSL_FAILURE;
 	}
 	return GSL_SUCCESS;
@@ -293,8 +299,8 @@ jacobian(double t, const double u[], double *dfdu, double dfdt[], void *params)
 		J[L->ixm * n + L->ivm] = 1.0;
 	for (i = 0; i < n; i++) {
 		for (k = 0; k < n; k++)
-			dfdu[i * n + k] = J[i * n + k] * s->scale[k] / s->scale[i];
-		dfdt[i] = dt[i] / s->scale[i];
+			dfdu[i * n + k] = J[i * n + k] * s->scale[k] * s->iscale[i];
+		dfdt[i] = dt[i] * s->iscale[i];
 	}
 	return GSL_SUCCESS;
 }
@@ -737,6 +743,19 @@ scales(struct sim *s, const struct layout *L, int q)
 		s->scale[L->ixm] = fmax(fabs(s->xm) + fabs(s->vm) * sc->run.T, 1e-3);
 		s->scale[L->ivm] = fmax(fabs(s->vm), 1e-3);
 	}
+	/*
+	 * Each scale rounded to the nearest power of 2 (a factor of at most
+	 * sqrt 2 in the tolerance): scaling and unscaling are then exact, and
+	 * rhs multiplies by the exact inverse instead of dividing.
+	 */
+	for (i = 0; i < L->dim; i++) {
+		int e;
+		double f = frexp(s->scale[i], &e); /* scale = f 2^e, f in [0.5, 1) */
+
+		if (isfinite(s->scale[i]) && s->scale[i] > 0)
+			s->scale[i] = ldexp(1.0, f < M_SQRT1_2 ? e - 1 : e);
+		s->iscale[i] = 1.0 / s->scale[i];
+	}
 	if (q) {
 		s->st.ncomp = L->dim < 8 ? L->dim : 8;
 		for (i = 0; i < s->st.ncomp; i++)
@@ -768,7 +787,7 @@ pack(struct sim *s, const struct layout *L, double *u)
 		y[L->ivm] = s->vm;
 	}
 	for (i = 0; i < L->dim; i++)
-		u[i] = y[i] / s->scale[i];
+		u[i] = y[i] * s->iscale[i];
 }
 
 /* Unpacks u at time t into the canonical state. */
