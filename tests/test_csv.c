@@ -3,10 +3,15 @@
  * law, every number read back with strtod() equal to the double written,
  * the full system's body velocities, the collisions table (t_f empty when
  * unknown), the scene written beside the export reloading to the same
- * scene, and failures that leave no file and keep an existing one intact.
+ * scene, and failures that leave no file and keep an existing one intact;
+ * the stream writers: byte for byte the file, stopping at the first failed
+ * write with its errno (a full disk, a closed pipe).
  */
+#define _GNU_SOURCE     /* fopencookie: a stream whose writes fail on cue */
 #include <dirent.h>
+#include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -342,5 +347,131 @@ Test(csv, failure_leaves_nothing)
 	cr_assert_eq(csv_export(s, cpath, NULL, NULL, 0, msg, sizeof msg), HB_EINVAL);
 	unlink(path);
 	rmdir(dir);
+	sim_free(s);
+}
+
+/* ------------------------------------------------------------------ */
+/* Streams (csv_stream_*): what batch mode writes for "--trace -"       */
+
+/* Reads what was written to the temporary stream f, from its start. */
+static char *
+slurp_stream(FILE *f)
+{
+	long len;
+	char *buf;
+
+	cr_assert_eq(fflush(f), 0);
+	len = ftell(f);
+	cr_assert(len >= 0);
+	rewind(f);
+	buf = malloc((size_t)len + 1);
+	cr_assert(buf != NULL);
+	cr_assert_eq(fread(buf, 1, (size_t)len, f), (size_t)len);
+	buf[len] = '\0';
+	return buf;
+}
+
+Test(csv, stream_is_byte_for_byte_the_file)
+{
+	static const char *const set[] = { "run.T", "0.05 s", NULL };
+	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], msg[512] = "";
+	struct sim *s = run("ptfe-pom", set);
+	FILE *fa = tmpfile(), *fc = tmpfile();
+	char *file, *stream;
+
+	cr_assert(fa != NULL && fc != NULL);
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(path, sizeof path, "%s/arc.csv", dir);
+	snprintf(cpath, sizeof cpath, "%s/coll.csv", dir);
+	cr_assert_eq(csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(csv_write_collisions(cpath, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(csv_stream_arc(fa, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(csv_stream_collisions(fc, s, msg, sizeof msg), HB_OK, "%s", msg);
+
+	file = slurp(path);
+	stream = slurp_stream(fa);
+	cr_assert(strlen(file) > 1000, "the arc is more than a header");
+	cr_assert_str_eq(stream, file, "the arc on a stream differs from the file");
+	free(file);
+	free(stream);
+	file = slurp(cpath);
+	stream = slurp_stream(fc);
+	cr_assert(strchr(strchr(file, '\n') + 1, '\n') != NULL, "at least one collision row");
+	cr_assert_str_eq(stream, file, "the collisions on a stream differ from the file");
+	free(file);
+	free(stream);
+	/* The stream is borrowed: still open and usable after the call. */
+	cr_assert(fputs("x", fa) >= 0);
+	fclose(fa);
+	fclose(fc);
+	unlink(path);
+	unlink(cpath);
+	rmdir(dir);
+	sim_free(s);
+}
+
+/* A stream that takes room bytes, then fails every write with err. */
+struct sink {
+	size_t room, got;
+	int err, fails;
+};
+
+static ssize_t
+sink_write(void *cookie, const char *buf, size_t len)
+{
+	struct sink *k = cookie;
+
+	(void)buf;
+	if (k->got + len > k->room) {
+		k->fails++;
+		errno = k->err;
+		return -1;
+	}
+	k->got += len;
+	return (ssize_t)len;
+}
+
+Test(csv, stream_write_error_stops_and_keeps_errno)
+{
+	static const cookie_io_functions_t io = { NULL, sink_write, NULL, NULL };
+	struct sink k = { 2000, 0, ENOSPC, 0 };
+	struct sim *s = run("steel-on-bitumen", NULL);
+	char msg[512] = "";
+	FILE *f = fopencookie(&k, "w", io);
+
+	cr_assert(f != NULL);
+	cr_assert(setvbuf(f, NULL, _IOFBF, 256) == 0);
+	cr_assert(arc_len(sim_arc(s)) > 1000, "an arc far longer than the room");
+	errno = 0;
+	cr_assert_eq(csv_stream_arc(f, s, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(errno, ENOSPC, "errno is %d, expected ENOSPC", errno);
+	cr_assert_str_eq(msg, "write error: No space left on device");
+	/* Stopped at the first failed row, not one failed write per buffer. */
+	cr_assert(k.fails >= 1 && k.fails <= 3, "%d failed writes", k.fails);
+	cr_assert(k.got <= k.room);
+	fclose(f);
+	sim_free(s);
+}
+
+Test(csv, stream_to_a_closed_pipe_is_epipe)
+{
+	struct sim *s = run("nonunique-separation", NULL);
+	char msg[512] = "";
+	int fd[2];
+	FILE *f;
+
+	signal(SIGPIPE, SIG_IGN);   /* this test's own process (Criterion forks) */
+	cr_assert_eq(pipe(fd), 0);
+	close(fd[0]);
+	f = fdopen(fd[1], "w");
+	cr_assert(f != NULL);
+	errno = 0;
+	/* A short table: the failure shows at the final flush. */
+	cr_assert_eq(csv_stream_collisions(f, s, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(errno, EPIPE, "errno is %d, expected EPIPE", errno);
+	cr_assert(strncmp(msg, "write error: ", 13) == 0, "%s", msg);
+	/* A stream already in error fails too. */
+	cr_assert_eq(csv_stream_arc(f, s, msg, sizeof msg), HB_EIO);
+	fclose(f);
 	sim_free(s);
 }

@@ -7,12 +7,15 @@
  * Collision columns: i,t_e,t_s,t_d,t_f,v_i,e,x_c_max,F_c_max,x_c_r,W,J_Fc,J_Fe,Lambda.
  *
  * Every file is written to a temporary name in its folder and renamed, so a
- * failed export never leaves a half file or clobbers a good one.
+ * failed export never leaves a half file or clobbers a good one.  The
+ * csv_stream_* functions write the same bytes to an open stream (e.g.
+ * stdout), where no such promise can be kept.
  */
 #ifndef HYBOUNCE_CSV_H
 #define HYBOUNCE_CSV_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include "sim.h"
 
 int
@@ -20,6 +23,22 @@ csv_write_arc(const char *path, const struct sim *s, char *msg, size_t n);
 
 int
 csv_write_collisions(const char *path, const struct sim *s, char *msg, size_t n);
+
+/*
+ * Write the arc, or the completed collisions, as CSV to the open stream f
+ * (borrowed: neither closed nor rewound), byte for byte what the path
+ * writers above put in a file, then flush f.  Writing stops at the first
+ * row after a write fails, so a reader that went away (EPIPE) does not
+ * cost the rest of a long arc.  Returns HB_OK, or HB_EIO with
+ * "write error: REASON" in msg and errno set to the failed write's error
+ * (EPIPE, ENOSPC, ...) so that the caller can tell a closed pipe from a
+ * full disk.  A stream whose error indicator is already set fails too.
+ */
+int
+csv_stream_arc(FILE *f, const struct sim *s, char *msg, size_t n);
+
+int
+csv_stream_collisions(FILE *f, const struct sim *s, char *msg, size_t n);
 
 /*
  * Writes the arc to trace_path and/or the collisions to coll_path (either

@@ -3,7 +3,7 @@
  * simulator to its end, print a report for a reader of the paper and write
  * the CSV files.
  *
- * The report (stdout) has three parts:
+ * The report (stdout; stderr when a CSV goes to stdout) has three parts:
  *  1. a header block: preset, law, system, bodies, loads, initial state,
  *     derived values and the run settings (with the per-component scales
  *     of the absolute tolerance);
@@ -13,6 +13,14 @@
  *  3. a summary: why the run ended, the end state and the work done.
  * --quiet keeps only the summary.  Errors, and the "wrote FILE" lines of an
  * export, go to stderr.
+ *
+ * "--trace -" or "--collisions -" (not both) writes that CSV to stdout,
+ * after the files, and then the report goes to stderr, so that stdout holds
+ * the CSV alone (GNU tar sends its -v listing to stderr with -f - the same
+ * way).  No "wrote" line and no .preset beside "-": the scene is saved
+ * beside the other CSV when that one is a file.  A reader that stops
+ * early (| head) ends the process by SIGPIPE, or, with SIGPIPE ignored,
+ * the write stops at the EPIPE without a message.
  *
  * Bad input is refused before anything runs: the preset, every --set and
  * the export paths are checked first, so a bad invocation (exit 2) never
@@ -86,7 +94,7 @@ ascii_micro(char *s)
  * (the first line too).
  */
 static void
-print_wrapped(const char *indent, const char *text)
+print_wrapped(FILE *out, const char *indent, const char *text)
 {
 	const int width = 79 - (int)strlen(indent);
 	const char *p = text;
@@ -102,7 +110,7 @@ print_wrapped(const char *indent, const char *text)
 				for (cut = width; p[cut] != '\0' && p[cut] != ' '; cut++)
 					;
 		}
-		printf("%s%.*s\n", indent, cut, p);
+		fprintf(out, "%s%.*s\n", indent, cut, p);
 		p += cut;
 		while (*p == ' ')
 			p++;
@@ -147,6 +155,13 @@ apply_set(struct scene *sc, const char *arg)
 		return 2;
 	}
 	return 0;
+}
+
+/* 1 if an export path names standard output ("-"). */
+static int
+is_stdout(const char *path)
+{
+	return path != NULL && strcmp(path, "-") == 0;
 }
 
 /* 1 if path ends in suffix. */
@@ -217,119 +232,119 @@ check_export_path(const char *opt, const char *path)
 /* Header block                                                        */
 
 static void
-print_law(const struct scene *sc)
+print_law(FILE *out, const struct scene *sc)
 {
 	const struct law_type *law = sc->law;
 	double p = law_exponent_p(law, sc->par), nn = law_exponent_n(law, sc->par);
 	char b[64];
 	int i;
 
-	printf("law         %s: %s\n", law->name, law->title);
-	printf("            extension beyond x_c = 0 (rule R1): %s\n",
-	       sc->ext ? "adhesive" : "none (clamped)");
+	fprintf(out, "law         %s: %s\n", law->name, law->title);
+	fprintf(out, "            extension beyond x_c = 0 (rule R1): %s\n",
+	        sc->ext ? "adhesive" : "none (clamped)");
 	for (i = 0; i < law->n_params; i++) {
 		const struct law_param *pp = &law->params[i];
 
-		printf("            %-8s = %s%s\n", pp->name,
-		       fmt(sc->par[i], units_resolve(pp->dim, p, nn), b, sizeof b),
-		       (pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived
-		           ? "  (derived from k_H)" : "");
+		fprintf(out, "            %-8s = %s%s\n", pp->name,
+		        fmt(sc->par[i], units_resolve(pp->dim, p, nn), b, sizeof b),
+		        (pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived
+		            ? "  (derived from k_H)" : "");
 	}
 }
 
 static void
-print_body(int k, const struct scene_body *bd)
+print_body(FILE *out, int k, const struct scene_body *bd)
 {
 	char e[64], r[64], rho[64], m[64];
 
-	printf("body %d      %s:", k + 1, bd->name[0] ? bd->name : "(unnamed)");
+	fprintf(out, "body %d      %s:", k + 1, bd->name[0] ? bd->name : "(unnamed)");
 	if (bd->has_material)
-		printf(" E = %s, nu = %g,", fmt(bd->E, UNIT_PRESSURE, e, sizeof e), bd->nu);
+		fprintf(out, " E = %s, nu = %g,", fmt(bd->E, UNIT_PRESSURE, e, sizeof e), bd->nu);
 	if (bd->rho > 0)
-		printf(" rho = %s,", fmt(bd->rho, UNIT_DENSITY, rho, sizeof rho));
-	printf(" R = %s%s, m = %s%s\n", fmt(bd->R, UNIT_LENGTH, r, sizeof r),
-	       isinf(bd->R) ? " (flat)" : "",
-	       fmt(bd->mass, UNIT_MASS, m, sizeof m),
-	       isinf(bd->mass) ? " (fixed obstacle)" : bd->mass_given ? " (given)" : "");
+		fprintf(out, " rho = %s,", fmt(bd->rho, UNIT_DENSITY, rho, sizeof rho));
+	fprintf(out, " R = %s%s, m = %s%s\n", fmt(bd->R, UNIT_LENGTH, r, sizeof r),
+	        isinf(bd->R) ? " (flat)" : "",
+	        fmt(bd->mass, UNIT_MASS, m, sizeof m),
+	        isinf(bd->mass) ? " (fixed obstacle)" : bd->mass_given ? " (given)" : "");
 }
 
 static void
-print_header(const char *preset, const char *path, const struct scene *sc,
-             const struct sim_stats *st)
+print_header(FILE *out, const char *preset, const char *path,
+             const struct scene *sc, const struct sim_stats *st)
 {
 	const struct scene_derived *d = &sc->d;
 	char a[64], b[64], c[64], e[64];
 	int i, k;
 
-	printf("hybounce %s batch run\n", HYBOUNCE_VERSION);
-	printf("preset      %s (%s)\n", preset, path);
-	printf("title       %s\n", sc->name);
+	fprintf(out, "hybounce %s batch run\n", HYBOUNCE_VERSION);
+	fprintf(out, "preset      %s (%s)\n", preset, path);
+	fprintf(out, "title       %s\n", sc->name);
 	if (sc->description[0])
-		print_wrapped("            ", sc->description);
-	print_law(sc);
+		print_wrapped(out, "            ", sc->description);
+	print_law(out, sc);
 	if (d->system == SCENE_REDUCED)
-		printf("system      reduced H_r: body 2 is a fixed obstacle\n");
+		fprintf(out, "system      reduced H_r: body 2 is a fixed obstacle\n");
 	else
-		printf("system      full H_f: two finite masses on a common axis\n");
+		fprintf(out, "system      full H_f: two finite masses on a common axis\n");
 	for (k = 0; k < 2; k++)
-		print_body(k, &sc->body[k]);
-	printf("loads       g = %s, F1 = %s, F2 = %s",
-	       fmt(sc->loads.g, UNIT_ACCEL, a, sizeof a),
-	       fmt(sc->loads.F1, UNIT_FORCE, b, sizeof b),
-	       fmt(sc->loads.F2, UNIT_FORCE, c, sizeof c));
+		print_body(out, k, &sc->body[k]);
+	fprintf(out, "loads       g = %s, F1 = %s, F2 = %s",
+	        fmt(sc->loads.g, UNIT_ACCEL, a, sizeof a),
+	        fmt(sc->loads.F1, UNIT_FORCE, b, sizeof b),
+	        fmt(sc->loads.F2, UNIT_FORCE, c, sizeof c));
 	if (sc->loads.ramp)
-		printf(", ramp: F_e0 = %s, T_s = %s, T_e = %s",
-		       fmt(sc->loads.Fe0, UNIT_FORCE, a, sizeof a),
-		       fmt(sc->loads.Ts, UNIT_TIME, b, sizeof b),
-		       fmt(sc->loads.Te, UNIT_TIME, c, sizeof c));
-	printf("\n");
-	printf("initial     x0 = %s, v0 = %s",
-	       fmt(sc->init.x0, UNIT_LENGTH, a, sizeof a),
-	       fmt(sc->init.v0, UNIT_VELOCITY, b, sizeof b));
+		fprintf(out, ", ramp: F_e0 = %s, T_s = %s, T_e = %s",
+		        fmt(sc->loads.Fe0, UNIT_FORCE, a, sizeof a),
+		        fmt(sc->loads.Ts, UNIT_TIME, b, sizeof b),
+		        fmt(sc->loads.Te, UNIT_TIME, c, sizeof c));
+	fprintf(out, "\n");
+	fprintf(out, "initial     x0 = %s, v0 = %s",
+	        fmt(sc->init.x0, UNIT_LENGTH, a, sizeof a),
+	        fmt(sc->init.v0, UNIT_VELOCITY, b, sizeof b));
 	if (d->system == SCENE_FULL)
-		printf(", x_m0 = %s, v_m0 = %s",
-		       fmt(sc->init.xm0, UNIT_LENGTH, a, sizeof a),
-		       fmt(sc->init.vm0, UNIT_VELOCITY, b, sizeof b));
-	printf("\n");
-	printf("derived     E* = %s, R_e = %s, m = %s",
-	       fmt(d->Estar, UNIT_PRESSURE, a, sizeof a),
-	       fmt(d->Re, UNIT_LENGTH, b, sizeof b),
-	       fmt(d->m, UNIT_MASS, c, sizeof c));
+		fprintf(out, ", x_m0 = %s, v_m0 = %s",
+		        fmt(sc->init.xm0, UNIT_LENGTH, a, sizeof a),
+		        fmt(sc->init.vm0, UNIT_VELOCITY, b, sizeof b));
+	fprintf(out, "\n");
+	fprintf(out, "derived     E* = %s, R_e = %s, m = %s",
+	        fmt(d->Estar, UNIT_PRESSURE, a, sizeof a),
+	        fmt(d->Re, UNIT_LENGTH, b, sizeof b),
+	        fmt(d->m, UNIT_MASS, c, sizeof c));
 	if (d->system == SCENE_FULL)
-		printf("\n            m1 = %s, m2 = %s, eta = %.6g",
-		       fmt(d->m1, UNIT_MASS, a, sizeof a),
-		       fmt(d->m2, UNIT_MASS, b, sizeof b), d->eta);
-	printf("\n            k_H = %s", fmt(d->kH, dim_kH, e, sizeof e));
+		fprintf(out, "\n            m1 = %s, m2 = %s, eta = %.6g",
+		        fmt(d->m1, UNIT_MASS, a, sizeof a),
+		        fmt(d->m2, UNIT_MASS, b, sizeof b), d->eta);
+	fprintf(out, "\n            k_H = %s", fmt(d->kH, dim_kH, e, sizeof e));
 	for (i = 0; i < sc->law->n_params; i++) {
 		const struct law_param *pp = &sc->law->params[i];
 
 		if (pp->flags & LAW_PARAM_STIFFNESS)
-			printf(", %s = %s%s", pp->name,
-			       fmt(sc->par[i], units_resolve(pp->dim,
-			           law_exponent_p(sc->law, sc->par),
-			           law_exponent_n(sc->law, sc->par)), a, sizeof a),
-			       d->k_derived ? " (eq. k_hertz)" : " (typed)");
+			fprintf(out, ", %s = %s%s", pp->name,
+			        fmt(sc->par[i], units_resolve(pp->dim,
+			            law_exponent_p(sc->law, sc->par),
+			            law_exponent_n(sc->law, sc->par)), a, sizeof a),
+			        d->k_derived ? " (eq. k_hertz)" : " (typed)");
 	}
-	printf("\n");
-	printf("run         T = %s, J = %ld, stepper %s, rtol = %.3g, atol = %.3g",
-	       fmt(sc->run.T, UNIT_TIME, a, sizeof a), sc->run.J,
-	       scene_stepper_name(sc->run.stepper), sc->run.rtol, sc->run.atol);
+	fprintf(out, "\n");
+	fprintf(out, "run         T = %s, J = %ld, stepper %s, rtol = %.3g, atol = %.3g",
+	        fmt(sc->run.T, UNIT_TIME, a, sizeof a), sc->run.J,
+	        scene_stepper_name(sc->run.stepper), sc->run.rtol, sc->run.atol);
 	if (sc->run.h_max > 0)
-		printf(", h_max = %s", fmt(sc->run.h_max, UNIT_TIME, b, sizeof b));
-	printf("\n");
+		fprintf(out, ", h_max = %s", fmt(sc->run.h_max, UNIT_TIME, b, sizeof b));
+	fprintf(out, "\n");
 	if (st != NULL && st->ncomp > 0) {
 		char line[512];
 		size_t len = 0;
 
-		printf("            absolute tolerance = atol x scale (scales of the last contact):\n");
+		fprintf(out, "            absolute tolerance = atol x scale (scales of the last contact):\n");
 		line[0] = '\0';
 		for (i = 0; i < st->ncomp && i < 8 && len < sizeof line; i++)
 			len += (size_t)snprintf(line + len, sizeof line - len, "%s%s %.3g",
 			                        i ? ", " : "", st->comp[i] ? st->comp[i] : "?",
 			                        st->scale[i]);
-		print_wrapped("            ", line);
+		print_wrapped(out, "            ", line);
 	}
-	printf("\n");
+	fprintf(out, "\n");
 }
 
 /* ------------------------------------------------------------------ */
@@ -450,7 +465,7 @@ col_head(const struct col *c, char *buf, size_t n)
  * contact in progress (live may be NULL).
  */
 static void
-print_table(const struct sim *s, const struct collision *live)
+print_table(FILE *out, const struct sim *s, const struct collision *live)
 {
 	struct col cols[NCOLS];
 	size_t nc = sim_ncollisions(s), r;
@@ -488,30 +503,30 @@ print_table(const struct sim *s, const struct collision *live)
 		cols[c].width = w;
 	}
 
-	printf("collisions (%zu completed)\n", nc);
+	fprintf(out, "collisions (%zu completed)\n", nc);
 	for (c = 0; c < NCOLS; c++) {
 		col_head(&cols[c], buf, sizeof buf);
-		printf("%s%*s", c ? "  " : "", cols[c].width, buf);
+		fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 	}
-	printf("\n");
+	fprintf(out, "\n");
 	for (r = 0; r < nc; r++) {
 		const struct collision *k = sim_collision(s, r);
 
 		for (c = 0; c < NCOLS; c++) {
 			col_cell(&cols[c], k, buf, sizeof buf);
-			printf("%s%*s", c ? "  " : "", cols[c].width, buf);
+			fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 		}
-		printf("\n");
+		fprintf(out, "\n");
 	}
 	if (live != NULL) {
-		printf("contact in progress (values so far; t_s is the last sample):\n");
+		fprintf(out, "contact in progress (values so far; t_s is the last sample):\n");
 		for (c = 0; c < NCOLS; c++) {
 			col_cell(&cols[c], live, buf, sizeof buf);
-			printf("%s%*s", c ? "  " : "", cols[c].width, buf);
+			fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 		}
-		printf("\n");
+		fprintf(out, "\n");
 	}
-	printf("\n");
+	fprintf(out, "\n");
 }
 
 /* ------------------------------------------------------------------ */
@@ -529,29 +544,29 @@ how_str(int how)
 }
 
 static void
-print_jumps(const struct arc *a)
+print_jumps(FILE *out, const struct arc *a)
 {
 	size_t k, n = arc_njumps(a);
 
-	printf("jumps (%zu): t [s], j before the jump, the part of C that was left, "
-	       "how it was located,\n"
-	       "root-finder iterations, final bracket width [s], flow-set indicator "
-	       "on the C side and on the D side\n", n);
-	printf("%6s  %22s  %6s  %-28s  %-11s  %5s  %10s  %11s  %11s\n",
-	       "k", "t [s]", "j", "left", "how", "iter", "width [s]",
-	       "ind (C)", "ind (D)");
+	fprintf(out, "jumps (%zu): t [s], j before the jump, the part of C that was left, "
+	        "how it was located,\n"
+	        "root-finder iterations, final bracket width [s], flow-set indicator "
+	        "on the C side and on the D side\n", n);
+	fprintf(out, "%6s  %22s  %6s  %-28s  %-11s  %5s  %10s  %11s  %11s\n",
+	        "k", "t [s]", "j", "left", "how", "iter", "width [s]",
+	        "ind (C)", "ind (D)");
 	for (k = 0; k < n; k++) {
 		const struct arc_jump *jp = arc_jump_at(a, k);
 
-		printf("%6zu  %22.17g  %6ld  %-28s  %-11s  %5d  %10.3e  %11.3e  %11.3e\n",
-		       k, jp->t, jp->j, jp->left ? jp->left : "?", how_str(jp->how),
-		       jp->iterations, jp->width, jp->ind_lo, jp->ind_hi);
+		fprintf(out, "%6zu  %22.17g  %6ld  %-28s  %-11s  %5d  %10.3e  %11.3e  %11.3e\n",
+		        k, jp->t, jp->j, jp->left ? jp->left : "?", how_str(jp->how),
+		        jp->iterations, jp->width, jp->ind_lo, jp->ind_hi);
 	}
-	printf("\n");
+	fprintf(out, "\n");
 }
 
 static void
-print_summary(const struct sim *s)
+print_summary(FILE *out, const struct sim *s)
 {
 	const struct scene *sc = sim_scene(s);
 	const struct arc *a = sim_arc(s);
@@ -560,49 +575,49 @@ print_summary(const struct sim *s)
 	char b1[64], b2[64], b3[64], b4[64];
 	int i;
 
-	printf("summary\n");
-	printf("  ended       %s\n", sim_end_str(s));
+	fprintf(out, "summary\n");
+	fprintf(out, "  ended       %s\n", sim_end_str(s));
 	if (last != NULL) {
-		printf("  end state   t = %s, j = %ld, q_c = %d, x = %s, v = %s, x_c = %s",
-		       fmt(last->t, UNIT_TIME, b1, sizeof b1), last->j, last->q,
-		       fmt(last->x, UNIT_LENGTH, b2, sizeof b2),
-		       fmt(last->v, UNIT_VELOCITY, b3, sizeof b3),
-		       fmt(last->xc, UNIT_LENGTH, b4, sizeof b4));
+		fprintf(out, "  end state   t = %s, j = %ld, q_c = %d, x = %s, v = %s, x_c = %s",
+		        fmt(last->t, UNIT_TIME, b1, sizeof b1), last->j, last->q,
+		        fmt(last->x, UNIT_LENGTH, b2, sizeof b2),
+		        fmt(last->v, UNIT_VELOCITY, b3, sizeof b3),
+		        fmt(last->xc, UNIT_LENGTH, b4, sizeof b4));
 		for (i = 0; i < sc->law->n_z && i < LAW_MAX_Z; i++)
-			printf(", z_c%d = %.6g", i + 1, last->z[i]);
-		printf("\n");
+			fprintf(out, ", z_c%d = %.6g", i + 1, last->z[i]);
+		fprintf(out, "\n");
 	}
-	printf("  collisions  %zu\n", sim_ncollisions(s));
-	printf("  run time    %s (CPU)\n", fmt(st->seconds, UNIT_TIME, b1, sizeof b1));
-	printf("  steps       %ld accepted, %ld rejected\n", st->steps, st->rejected);
-	printf("  evaluations %ld right-hand side, %ld Jacobian\n", st->rhs, st->jac);
-	printf("  events      %ld jumps, %ld kinks, %ld located by root finding, "
-	       "%ld flights in closed form\n",
-	       st->jumps, st->kinks, st->located, st->flights_closed);
+	fprintf(out, "  collisions  %zu\n", sim_ncollisions(s));
+	fprintf(out, "  run time    %s (CPU)\n", fmt(st->seconds, UNIT_TIME, b1, sizeof b1));
+	fprintf(out, "  steps       %ld accepted, %ld rejected\n", st->steps, st->rejected);
+	fprintf(out, "  evaluations %ld right-hand side, %ld Jacobian\n", st->rhs, st->jac);
+	fprintf(out, "  events      %ld jumps, %ld kinks, %ld located by root finding, "
+	        "%ld flights in closed form\n",
+	        st->jumps, st->kinks, st->located, st->flights_closed);
 	if (st->stiff) {
 		char tb[32];
 
 		fmt(st->stiff_t, UNIT_TIME, tb, sizeof tb);
 		if (st->switched)
-			printf("  stiffness   the contact flow is stiff from t = %s (h |lambda| up to "
-			       "%.3g): run.stepper = auto went over to msbdf\n", tb, st->stiff_hrho);
+			fprintf(out, "  stiffness   the contact flow is stiff from t = %s (h |lambda| up to "
+			        "%.3g): run.stepper = auto went over to msbdf\n", tb, st->stiff_hrho);
 		else
-			printf("  stiffness   the contact flow is stiff from t = %s: %s is held back by "
-			       "stability (h |lambda| up to %.3g);\n"
-			       "              --set run.stepper=auto (or msbdf) takes far fewer steps\n",
-			       tb, scene_stepper_name(sc->run.stepper), st->stiff_hrho);
+			fprintf(out, "  stiffness   the contact flow is stiff from t = %s: %s is held back by "
+			        "stability (h |lambda| up to %.3g);\n"
+			        "              --set run.stepper=auto (or msbdf) takes far fewer steps\n",
+			        tb, scene_stepper_name(sc->run.stepper), st->stiff_hrho);
 	}
 	if (st->dips > 0)
-		printf("              %ld events found inside a step whose ends were both in C\n",
-		       st->dips);
-	printf("  arc         %zu samples, %zu flow intervals",
-	       arc_len(a), arc_nintervals(a));
+		fprintf(out, "              %ld events found inside a step whose ends were both in C\n",
+		        st->dips);
+	fprintf(out, "  arc         %zu samples, %zu flow intervals",
+	        arc_len(a), arc_nintervals(a));
 	if (arc_thinned(a) > 0)
-		printf(", thinned %d times (past run.max_samples = %ld)",
-		       arc_thinned(a), sc->run.max_samples);
+		fprintf(out, ", thinned %d times (past run.max_samples = %ld)",
+		        arc_thinned(a), sc->run.max_samples);
 	else
-		printf(", not thinned");
-	printf("\n");
+		fprintf(out, ", not thinned");
+	fprintf(out, "\n");
 }
 
 /* ------------------------------------------------------------------ */
@@ -615,6 +630,12 @@ batch_run(const struct batch_options *o)
 	struct collision live;
 	struct sim *s;
 	int i, status = 0, have_live, rc;
+	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
+	/* The files to export; "-" goes to stdout after them. */
+	const char *trace_file = trace_out ? NULL : o->trace;
+	const char *coll_file = coll_out ? NULL : o->collisions;
+	/* A CSV on stdout sends the report to stderr, as tar -v does with -f -. */
+	FILE *out = trace_out || coll_out ? stderr : stdout;
 
 	msg[0] = '\0';
 	if (preset_resolve(o->preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
@@ -635,13 +656,19 @@ batch_run(const struct batch_options *o)
 		fprintf(stderr, PROG ": %s: %s\n", path, msg);
 		return 2;
 	}
-	if (o->trace != NULL && check_export_path("--trace", o->trace) != 0)
+	if (trace_out && coll_out) {
+		fprintf(stderr, PROG ": --trace - and --collisions -: only one CSV can go "
+		        "to standard output; expected a file path for the other, e.g. "
+		        "--trace - --collisions coll.csv\n");
 		return 2;
-	if (o->collisions != NULL && check_export_path("--collisions", o->collisions) != 0)
+	}
+	if (trace_file != NULL && check_export_path("--trace", trace_file) != 0)
 		return 2;
-	if (o->trace != NULL && o->collisions != NULL && strcmp(o->trace, o->collisions) == 0) {
+	if (coll_file != NULL && check_export_path("--collisions", coll_file) != 0)
+		return 2;
+	if (trace_file != NULL && coll_file != NULL && strcmp(trace_file, coll_file) == 0) {
 		fprintf(stderr, PROG ": --trace and --collisions name the same file %s; "
-		        "expected two different paths\n", o->trace);
+		        "expected two different paths\n", trace_file);
 		return 2;
 	}
 
@@ -658,28 +685,29 @@ batch_run(const struct batch_options *o)
 	/* The header comes after the run: the tolerance scales are set per contact. */
 	have_live = sim_contact_live(s, &live);
 	if (!o->quiet) {
-		print_header(o->preset, path, sim_scene(s), sim_stats(s));
-		print_table(s, have_live ? &live : NULL);
+		print_header(out, o->preset, path, sim_scene(s), sim_stats(s));
+		print_table(out, s, have_live ? &live : NULL);
 	}
 	if (o->jumps)
-		print_jumps(sim_arc(s));
-	print_summary(s);
+		print_jumps(out, sim_arc(s));
+	print_summary(out, s);
 
 	if (o->check) {
 		msg[0] = '\0';
 		if (check_solution_pair(sim_scene(s), sim_arc(s), msg, sizeof msg) == HB_OK) {
-			printf("  check       solution pair: ok (%zu samples, %zu jumps: "
-			       "ordered domain, flow samples in C, pre-jump samples in D, "
-			       "post-jump = g(pre-jump))\n",
-			       arc_len(sim_arc(s)), arc_njumps(sim_arc(s)));
+			fprintf(out, "  check       solution pair: ok (%zu samples, %zu jumps: "
+			         "ordered domain, flow samples in C, pre-jump samples in D, "
+			         "post-jump = g(pre-jump))\n",
+			         arc_len(sim_arc(s)), arc_njumps(sim_arc(s)));
 		} else {
-			printf("  check       solution pair: FAILED: %s\n", msg);
-			fprintf(stderr, PROG ": check failed: %s\n", msg);
+			fprintf(out, "  check       solution pair: FAILED: %s\n", msg);
+			if (out != stderr)
+				fprintf(stderr, PROG ": check failed: %s\n", msg);
 			if (status == 0)
 				status = 1;
 		}
 	}
-	fflush(stdout);
+	fflush(out);
 	/* After the report, so that it is the last thing a terminal shows. */
 	if (status == 1 && sim_end(s) == SIM_END_FAIL)
 		fprintf(stderr, PROG ": the run failed: %s\n",
@@ -687,20 +715,37 @@ batch_run(const struct batch_options *o)
 	else if (rc != HB_OK && rc != HB_EDONE)
 		fprintf(stderr, PROG ": the run stopped: %s\n", status_str(rc));
 
-	if (o->trace != NULL || o->collisions != NULL) {
+	/*
+	 * The files first, then stdout: a reader that stops early (| head)
+	 * ends the process by SIGPIPE, and the files are written by then.
+	 */
+	if (trace_file != NULL || coll_file != NULL) {
 		msg[0] = '\0';
 		scene_out[0] = '\0';
-		if (csv_export(s, o->trace, o->collisions, scene_out, sizeof scene_out,
+		if (csv_export(s, trace_file, coll_file, scene_out, sizeof scene_out,
 		               msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": export failed: %s\n", msg);
 			status = 2;
 		} else {
-			if (o->trace != NULL)
-				fprintf(stderr, "wrote %s\n", o->trace);
-			if (o->collisions != NULL)
-				fprintf(stderr, "wrote %s\n", o->collisions);
+			if (trace_file != NULL)
+				fprintf(stderr, "wrote %s\n", trace_file);
+			if (coll_file != NULL)
+				fprintf(stderr, "wrote %s\n", coll_file);
 			if (scene_out[0])
 				fprintf(stderr, "wrote %s\n", scene_out);
+		}
+	}
+	if (trace_out || coll_out) {
+		msg[0] = '\0';
+		rc = trace_out ? csv_stream_arc(stdout, s, msg, sizeof msg)
+		               : csv_stream_collisions(stdout, s, msg, sizeof msg);
+		/*
+		 * EPIPE (SIGPIPE ignored): the reader has all it wanted; stop
+		 * quietly, like a killed writer, with the run's status.
+		 */
+		if (rc != HB_OK && errno != EPIPE) {
+			fprintf(stderr, PROG ": export failed: standard output: %s\n", msg);
+			status = 2;
 		}
 	}
 	sim_free(s);
@@ -734,7 +779,7 @@ batch_list_presets(void)
 	for (i = 0; i < n; i++) {
 		printf("%-*s  %s\n", w, pi[i].name, pi[i].title);
 		if (pi[i].description[0])
-			print_wrapped("    ", pi[i].description);
+			print_wrapped(stdout, "    ", pi[i].description);
 	}
 	free(pi);
 	return 0;
@@ -773,7 +818,7 @@ batch_list_laws(void)
 		p = law_exponent_p(law, def);
 		nn = law_exponent_n(law, def);
 		printf("%s  %s\n", law->name, law->title);
-		print_wrapped("    ", law->description);
+		print_wrapped(stdout, "    ", law->description);
 		printf("    internal states n_z = %d; parameters (units for the default "
 		       "exponents):\n", law->n_z);
 		for (i = 0; i < law->n_params; i++) {

@@ -2,7 +2,8 @@
  * batch.h - batch mode of the command line: preset -> sim -> report, CSV.
  *
  * Every function here prints (to stdout for the report, to stderr for
- * errors) and returns a process exit status:
+ * errors; the report goes to stderr too when a CSV goes to stdout, "-")
+ * and returns a process exit status:
  *     0  success;
  *     1  the run failed numerically (or --check found a violation): what was
  *        computed is still printed and written;
@@ -16,8 +17,8 @@ struct batch_options {
 	const char *preset;        /* name (presets/NAME.preset) or path */
 	const char *const *sets;   /* "KEY=VALUE" overrides, applied in order */
 	int nsets;
-	const char *trace;         /* arc CSV, or NULL */
-	const char *collisions;    /* collisions CSV, or NULL */
+	const char *trace;         /* arc CSV, "-" for stdout, or NULL */
+	const char *collisions;    /* collisions CSV, "-" for stdout, or NULL */
 	int jumps;                 /* 1: print every jump's location record */
 	int check;                 /* 1: run check_solution_pair and report it */
 	int quiet;                 /* 1: no header block and no collision table */

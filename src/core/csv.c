@@ -15,6 +15,10 @@
  * atomic step: should a later one fail, the earlier ones are undone, from
  * hard links to the replaced files made just before (a file that did not
  * exist is removed).
+ *
+ * The same row writers serve the files and the streams (csv_stream_*),
+ * so a CSV on stdout is byte for byte the file's.  They check the stream
+ * after every row and stop at the first failed write.
  */
 #include <errno.h>
 #include <math.h>
@@ -140,7 +144,18 @@ put_num(FILE *f, double v)
 		fprintf(f, "%.17g", v);
 }
 
-static void
+/* 0 while f is good, else the error of its failed write (EIO if unknown). */
+static int
+stream_err(FILE *f)
+{
+	return ferror(f) ? (errno != 0 ? errno : EIO) : 0;
+}
+
+/*
+ * Writes the arc CSV to f.  Returns 0, or the errno of the first failed
+ * write, after which it writes no further row.
+ */
+static int
 write_arc(FILE *f, const struct sim *s)
 {
 	const struct scene *sc = sim_scene(s);
@@ -149,6 +164,7 @@ write_arc(FILE *f, const struct sim *s)
 	int full = sc->d.system == SCENE_FULL;
 	size_t len = arc_len(a);
 	char name[16];
+	int e;
 
 	put_field(f, "t", 1);
 	put_field(f, "j", 0);
@@ -169,6 +185,8 @@ write_arc(FILE *f, const struct sim *s)
 		put_field(f, "v_m2", 0);
 	}
 	fputc('\n', f);
+	if ((e = stream_err(f)) != 0)
+		return e;
 	for (size_t i = 0; i < len; i++) {
 		const struct arc_sample *p = arc_at(a, i);
 		fprintf(f, "%.17g,%ld,%d", p->t, p->j, p->q);
@@ -186,10 +204,14 @@ write_arc(FILE *f, const struct sim *s)
 			put_num(f, p->vm - sc->d.eta * p->v);   /* eq. v_m_2 */
 		}
 		fputc('\n', f);
+		if ((e = stream_err(f)) != 0)
+			return e;
 	}
+	return 0;
 }
 
-static void
+/* As write_arc, for the completed collisions. */
+static int
 write_collisions(FILE *f, const struct sim *s)
 {
 	static const char *const head[] = {
@@ -197,10 +219,13 @@ write_collisions(FILE *f, const struct sim *s)
 		"J_Fc", "J_Fe", "Lambda",
 	};
 	size_t nc = sim_ncollisions(s);
+	int e;
 
 	for (size_t k = 0; k < sizeof head / sizeof head[0]; k++)
 		put_field(f, head[k], k == 0);
 	fputc('\n', f);
+	if ((e = stream_err(f)) != 0)
+		return e;
 	for (size_t i = 0; i < nc; i++) {
 		const struct collision *c = sim_collision(s, i);
 		if (c == NULL || !c->complete)
@@ -220,19 +245,25 @@ write_collisions(FILE *f, const struct sim *s)
 		put_num(f, c->JFe);
 		put_num(f, c->Lambda);
 		fputc('\n', f);
+		if ((e = stream_err(f)) != 0)
+			return e;
 	}
+	return 0;
 }
 
+typedef int (*rows_fn)(FILE *, const struct sim *);
+
 static int
-write_one(const char *path, const struct sim *s, void (*fn)(FILE *, const struct sim *),
-          char *msg, size_t n)
+write_one(const char *path, const struct sim *s, rows_fn fn, char *msg, size_t n)
 {
 	struct tmpfile t;
-	int st = tmp_open(&t, path, msg, n);
+	int st = tmp_open(&t, path, msg, n), e;
 
 	if (st != HB_OK)
 		return st;
-	fn(t.f, s);
+	errno = 0;
+	if ((e = fn(t.f, s)) != 0)
+		errno = e;      /* for tmp_close's message */
 	st = tmp_close(&t, msg, n);
 	if (st == HB_OK)
 		st = tmp_commit(&t, msg, n);
@@ -249,6 +280,37 @@ int
 csv_write_collisions(const char *path, const struct sim *s, char *msg, size_t n)
 {
 	return write_one(path, s, write_collisions, msg, n);
+}
+
+/* Writes fn's CSV to the stream f and flushes it (see csv.h). */
+static int
+stream_one(FILE *f, const struct sim *s, rows_fn fn, char *msg, size_t n)
+{
+	int e;
+
+	errno = 0;
+	e = fn(f, s);
+	if (e == 0 && fflush(f) != 0)
+		e = errno != 0 ? errno : EIO;
+	if (e == 0)
+		e = stream_err(f);
+	if (e == 0)
+		return HB_OK;
+	status_set(msg, n, HB_EIO, "write error: %s", strerror(e));
+	errno = e;
+	return HB_EIO;
+}
+
+int
+csv_stream_arc(FILE *f, const struct sim *s, char *msg, size_t n)
+{
+	return stream_one(f, s, write_arc, msg, n);
+}
+
+int
+csv_stream_collisions(FILE *f, const struct sim *s, char *msg, size_t n)
+{
+	return stream_one(f, s, write_collisions, msg, n);
 }
 
 /* PATH with the extension of its last component replaced by ".preset". */
@@ -300,10 +362,11 @@ csv_export(const struct sim *s, const char *trace_path, const char *coll_path,
 		st = tmp_open(&t[nt], paths[k], msg, n);
 		if (st != HB_OK)
 			break;
+		errno = 0;
 		if (k == 0)
-			write_arc(t[nt].f, s);
+			errno = write_arc(t[nt].f, s);
 		else if (k == 1)
-			write_collisions(t[nt].f, s);
+			errno = write_collisions(t[nt].f, s);
 		else {
 			size_t len = preset_format(sim_scene(s), NULL, 0);
 			char *buf = malloc(len + 1);
