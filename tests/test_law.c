@@ -1,8 +1,8 @@
 /*
  * test_law.c - the contact laws (src/core/law*.c): eq. vanishing, the
  * partial derivatives against central differences, rule R1 (ext), the
- * registry, the parameter ranges and checks, known values and the
- * switching functions.
+ * registry, the parameter ranges and checks (and the rows the laws share),
+ * known values and the switching functions.
  */
 #include <math.h>
 #include <string.h>
@@ -290,6 +290,86 @@ Test(law, rule_r1_clamped)
 				    ls[i]->name);
 			}
 		}
+}
+
+/*
+ * Rule R1 for the partials, exactly: where a law is clamped (ext = 0,
+ * x_c > 0) its partial in x_c is 0 and every other partial is the one at
+ * x_c = 0 (the x_c column itself has a kink at 0, so it is not compared).
+ */
+Test(law, rule_r1_clamped_jacobian)
+{
+	const struct law_type *const *ls = law_list();
+	double par[LAW_MAX_PARAMS];
+
+	for (int i = 0; ls[i] != NULL; i++) {
+		const struct law_type *law = ls[i];
+		int m = law->n_z + 2;
+
+		for (int var = 0; var < NVARIANT; var++) {
+			variant(law, var, par);
+			for (size_t st = 0; st < NSTATE; st++) {
+				const double *s = states[st];
+				double x = fabs(s[0]) + 1e-7;
+				double d[LAW_MAX_Z + 2], d0[LAW_MAX_Z + 2];
+				double p[LAW_MAX_Z * (LAW_MAX_Z + 2)];
+				double p0[LAW_MAX_Z * (LAW_MAX_Z + 2)];
+
+				law->jac(par, 0, x, s + 1, s[3], d, p);
+				law->jac(par, 0, 0.0, s + 1, s[3], d0, p0);
+				cr_assert(d[0] == 0.0, "%s var %d state %zu: dPhi/dx_c = %g "
+				    "where clamped", law->name, var, st, d[0]);
+				for (int c = 1; c < m; c++)
+					cr_assert(d[c] == d0[c], "%s var %d state %zu: dphi[%d] "
+					    "%g != %g at x_c = 0", law->name, var, st, c, d[c],
+					    d0[c]);
+				for (int c = 0; c < law->n_z * m; c++)
+					cr_assert(p[c] == p0[c], "%s var %d state %zu: dpsi[%d] "
+					    "%g != %g at x_c = 0", law->name, var, st, c, p[c],
+					    p0[c]);
+			}
+		}
+	}
+}
+
+/*
+ * The two Bouc-Wen laws share their parameter layout (the shared check and
+ * k_hertz read par[] by it) and the meaning of the rows k .. p: same
+ * dimension, range and flags; only defaults and help differ.
+ */
+Test(law, bouc_wen_layout)
+{
+	static const char *const names[] = { "k", "A", "alpha", "beta", "gamma",
+	                                     "n", "p", "c" };
+	const struct law_type *bw[] = { &law_bwshccl, &law_bwmcl };
+
+	for (int l = 0; l < 2; l++) {
+		cr_assert_eq(bw[l]->n_params, 8, "%s", bw[l]->name);
+		for (int j = 0; j < 8; j++)
+			cr_assert_str_eq(bw[l]->params[j].name, names[j], "%s row %d",
+			    bw[l]->name, j);
+	}
+	for (int j = 0; j < 7; j++) {
+		const struct law_param *a = &law_bwshccl.params[j];
+		const struct law_param *b = &law_bwmcl.params[j];
+
+		cr_assert(a->dim.kg == b->dim.kg && a->dim.m == b->dim.m
+		    && a->dim.s == b->dim.s && a->dim.mp == b->dim.mp
+		    && a->dim.mn == b->dim.mn, "%s: dimensions differ", a->name);
+		cr_assert(a->lo == b->lo && a->hi == b->hi && a->lo_open == b->lo_open
+		    && a->hi_open == b->hi_open, "%s: ranges differ", a->name);
+		cr_assert_eq(a->flags, b->flags, "%s: flags differ", a->name);
+	}
+	/* the shared rows k and p mean the same in SHCCL and Hertz too */
+	for (int j = 0; j < 2; j++) {
+		const struct law_param *a = &law_shccl.params[j];
+		const struct law_param *b = &law_hertz.params[j];
+
+		cr_assert_str_eq(a->name, b->name);
+		cr_assert(a->dim.m == b->dim.m && a->dim.mp == b->dim.mp
+		    && a->lo == b->lo && a->lo_open == b->lo_open
+		    && a->flags == b->flags, "%s: rows differ", a->name);
+	}
 }
 
 /* BWMCL ignores x_c and ext altogether. */

@@ -1,10 +1,10 @@
 /*
- * law.c - the registry of contact laws and helpers over their parameter
- * tables (see law.h).
+ * law.c - the registry of contact laws, helpers over their parameter
+ * tables (see law.h) and the callbacks several laws share (law_common.h).
  *
  * Each law lives in its own file (law_shccl.c, law_bwshccl.c, law_bwmcl.c,
  * law_hertz.c, law_linear.c) and ends in one `const struct law_type`.  This
- * file only lists them; adding a law means adding one file and one line to
+ * file lists them; adding a law means adding one file and one line to
  * `laws` below.  The order of `laws` is the order of pickers and help text.
  */
 #include <ctype.h>
@@ -14,6 +14,8 @@
 
 #include "hybounce/law.h"
 #include "hybounce/status.h"
+
+#include "law_common.h"
 
 static const struct law_type *const laws[] = {
 	&law_shccl,
@@ -147,4 +149,56 @@ double
 law_exponent_n(const struct law_type *law, const double *par)
 {
 	return law_flagged(law, par, LAW_PARAM_EXPONENT_N);
+}
+
+/*
+ * Switching function of a law whose only kink is at x_c = 0 (the clamp of
+ * rule R1 with ext = 0, and |x_c|^p): g[0] = x_c.
+ */
+void
+law_kinks_xc(const double *par, int ext, double xc, const double *z, double v,
+             double *g)
+{
+	(void)par;
+	(void)ext;
+	(void)z;
+	(void)v;
+	g[0] = xc;
+}
+
+/* k = k_H, for a law whose elastic term is the Hertzian relation itself. */
+double
+law_k_hertz_identity(const double *par, double kH)
+{
+	(void)par;
+	return kH;
+}
+
+/*
+ * Checks a Bouc-Wen parameter set (layout LAW_BW_*): eqs. bwshc_psi and
+ * bwm_psi1 require gamma in [-beta, beta].  Returns 0, or HB_EINVAL with
+ * the accepted range in msg (size n).
+ */
+int
+law_bw_check(const double *par, char *msg, size_t n)
+{
+	double beta = par[LAW_BW_BETA], gamma = par[LAW_BW_GAMMA];
+
+	if (gamma >= -beta && gamma <= beta)
+		return HB_OK;
+	return status_set(msg, n, HB_EINVAL,
+	    "gamma = %g must lie in [-beta, beta] = [%g, %g]", gamma, -beta, beta);
+}
+
+/*
+ * Eq. k_hertz for a Bouc-Wen law (layout LAW_BW_*): the k whose two
+ * branches together match the Hertz coefficient kH,
+ * k = k_H / (alpha + (1 - alpha) A^p).
+ */
+double
+law_bw_k_hertz(const double *par, double kH)
+{
+	double alpha = par[LAW_BW_ALPHA];
+
+	return kH / (alpha + (1.0 - alpha) * apow(par[LAW_BW_A], par[LAW_BW_P]));
 }

@@ -20,41 +20,25 @@
 #include <stddef.h>
 
 #include "hybounce/law.h"
-#include "hybounce/status.h"
 
-#include "law_pow.h"
+#include "law_common.h"
 
-enum { K, A, ALPHA, BETA, GAMMA, N, P, C, NPAR };
-
-static const struct law_param bwmcl_params[NPAR] = {
-	[K] = { "k", { .kg = 1, .m = 1, .s = -2, .mp = -1 },
-	        0, HUGE_VAL, 1, 0, 2.138e8, LAW_PARAM_STIFFNESS,
-	        "stiffness of both branches, N m^-p; derived by eq. k_hertz from the materials" },
-	[A] = { "A", { 0 }, 0, HUGE_VAL, 1, 0, 1.0, 0,
-	        "Bouc-Wen gain A: dz1/dt = A dz2/dt while z1 is small (eq. bwm_psi1)" },
-	[ALPHA] = { "alpha", { 0 }, 0, 1, 1, 1, 0.35, 0,
-	        "share of the elastic branch; 1 - alpha is hysteretic (eq. bwm_phi)" },
-	[BETA] = { "beta", { .mn = -1 }, 0, HUGE_VAL, 0, 0, 5e7, 0,
-	        "Bouc-Wen beta, m^-n: shapes the hysteresis loop (eq. bwm_psi1)" },
-	[GAMMA] = { "gamma", { .mn = -1 }, -HUGE_VAL, HUGE_VAL, 0, 0, 5e7, 0,
-	        "Bouc-Wen gamma, m^-n, in [-beta, beta] (eq. bwm_psi1)" },
-	[N] = { "n", { 0 }, 1, HUGE_VAL, 0, 0, 2.0, LAW_PARAM_EXPONENT_N,
-	        "Bouc-Wen exponent n: sharpness of the yield (eq. bwm_psi1)" },
-	[P] = { "p", { 0 }, 1, HUGE_VAL, 0, 0, 1.5, LAW_PARAM_EXPONENT_P,
-	        "exponent of both spring branches; 3/2 is Hertz's" },
-	[C] = { "c", { .kg = 1, .s = -1 }, 0, HUGE_VAL, 1, 0, 4.4e3, 0,
+static const struct law_param bwmcl_params[LAW_BW_NPAR] = {
+	LAW_BW_PARAMS(2.138e8, 5e7, 5e7, "bwm_phi", "bwm_psi1",
+	    "Bouc-Wen gain A: dz1/dt = A dz2/dt while z1 is small (eq. bwm_psi1)",
+	    "exponent of both spring branches; 3/2 is Hertz's"),
+	[LAW_BW_C] = { "c", { .kg = 1, .s = -1 }, LAW_RANGE_POSITIVE, 4.4e3, 0,
 	        "Maxwell dashpot in series, N s/m; sets the sinking rate m g / c (table tab:one)" },
 };
 
+/* Eq. bwm_phi: the elastic branch deflects by z2, the hysteretic one by z1. */
 static double
 bwmcl_phi(const double *par, int ext, double xc, const double *z, double v)
 {
-	double k = par[K], alpha = par[ALPHA], p = par[P];
-
 	(void)ext;
 	(void)xc;
 	(void)v;
-	return alpha * k * spow(z[1], p) + (1.0 - alpha) * k * spow(z[0], p);
+	return law_bw_springs(par, z[1], z[0]);
 }
 
 /* dz[0] = Psi_1 (for z_c1), dz[1] = Psi_2 (for z_c2). */
@@ -62,11 +46,9 @@ static void
 bwmcl_psi(const double *par, int ext, double xc, const double *z, double v,
           double *dz)
 {
-	double n = par[N];
-	double psi2 = v - bwmcl_phi(par, ext, xc, z, v) / par[C];
+	double psi2 = v - bwmcl_phi(par, ext, xc, z, v) / par[LAW_BW_C];
 
-	dz[0] = par[A] * psi2 - par[BETA] * spow(z[0], n) * fabs(psi2)
-	    - par[GAMMA] * apow(z[0], n) * psi2;
+	dz[0] = law_bw_rate(par, z[0], psi2);
 	dz[1] = psi2;
 }
 
@@ -81,9 +63,8 @@ static void
 bwmcl_jac(const double *par, int ext, double xc, const double *z, double v,
           double *dphi, double *dpsi)
 {
-	double k = par[K], alpha = par[ALPHA], p = par[P], n = par[N];
-	double c = par[C], beta = par[BETA], gamma = par[GAMMA];
-	double z1 = z[0], psi2, g1, h1;
+	double k = par[LAW_BW_K], alpha = par[LAW_BW_ALPHA], p = par[LAW_BW_P];
+	double c = par[LAW_BW_C], z1 = z[0], psi2, g1;
 
 	dphi[0] = 0.0;
 	dphi[1] = (1.0 - alpha) * k * dspow(z1, p);
@@ -98,10 +79,9 @@ bwmcl_jac(const double *par, int ext, double xc, const double *z, double v,
 	dpsi[6] = -dphi[2] / c;
 	dpsi[7] = 1.0;
 
-	g1 = par[A] - beta * spow(z1, n) * dabs1(psi2) - gamma * apow(z1, n);
-	h1 = -beta * dspow(z1, n) * fabs(psi2) - gamma * dapow(z1, n) * psi2;
+	g1 = law_bw_rate_dw(par, z1, psi2);
 	dpsi[0] = 0.0;
-	dpsi[1] = g1 * dpsi[5] + h1;
+	dpsi[1] = g1 * dpsi[5] + law_bw_rate_dz(par, z1, psi2);
 	dpsi[2] = g1 * dpsi[6];
 	dpsi[3] = g1;
 }
@@ -113,28 +93,7 @@ bwmcl_kinks(const double *par, int ext, double xc, const double *z, double v,
 {
 	g[0] = z[0];
 	g[1] = z[1];
-	g[2] = v - bwmcl_phi(par, ext, xc, z, v) / par[C];
-}
-
-/* Rejects |gamma| > beta (eq. bwm_psi1 requires gamma in [-beta, beta]). */
-static int
-bwmcl_check(const double *par, char *msg, size_t n)
-{
-	double beta = par[BETA], gamma = par[GAMMA];
-
-	if (gamma >= -beta && gamma <= beta)
-		return HB_OK;
-	return status_set(msg, n, HB_EINVAL,
-	    "gamma = %g must lie in [-beta, beta] = [%g, %g]", gamma, -beta, beta);
-}
-
-/* Eq. k_hertz: k = k_H / (alpha + (1 - alpha) A^p). */
-static double
-bwmcl_k_hertz(const double *par, double kH)
-{
-	double alpha = par[ALPHA];
-
-	return kH / (alpha + (1.0 - alpha) * apow(par[A], par[P]));
+	g[2] = v - bwmcl_phi(par, ext, xc, z, v) / par[LAW_BW_C];
 }
 
 const struct law_type law_bwmcl = {
@@ -144,13 +103,13 @@ const struct law_type law_bwmcl = {
 	               "with a linear dashpot c; Phi depends on z only, so x_c > 0 "
 	               "needs no continuation and ext has no effect (rule R1)",
 	.n_z = 2,
-	.n_params = NPAR,
+	.n_params = LAW_BW_NPAR,
 	.params = bwmcl_params,
 	.n_kinks = 3,
 	.phi = bwmcl_phi,
 	.psi = bwmcl_psi,
 	.jac = bwmcl_jac,
 	.kinks = bwmcl_kinks,
-	.check = bwmcl_check,
-	.k_hertz = bwmcl_k_hertz,
+	.check = law_bw_check,     /* gamma in [-beta, beta] */
+	.k_hertz = law_bw_k_hertz, /* k_H / (alpha + (1 - alpha) A^p) */
 };

@@ -19,54 +19,33 @@
 #include <stddef.h>
 
 #include "hybounce/law.h"
-#include "hybounce/status.h"
 
-#include "law_pow.h"
+#include "law_common.h"
 
-enum { K, A, ALPHA, BETA, GAMMA, N, P, C, NPAR };
-
-static const struct law_param bwshccl_params[NPAR] = {
-	[K] = { "k", { .kg = 1, .m = 1, .s = -2, .mp = -1 },
-	        0, HUGE_VAL, 1, 0, 7.095e7, LAW_PARAM_STIFFNESS,
-	        "stiffness of both branches, N m^-p; derived by eq. k_hertz from the materials" },
-	[A] = { "A", { 0 }, 0, HUGE_VAL, 1, 0, 1.0, 0,
-	        "Bouc-Wen gain A: dz/dt = A v while z is small (eq. bwshc_psi)" },
-	[ALPHA] = { "alpha", { 0 }, 0, 1, 1, 1, 0.35, 0,
-	        "share of the elastic branch; 1 - alpha is hysteretic (eq. bwshc_phi)" },
-	[BETA] = { "beta", { .mn = -1 }, 0, HUGE_VAL, 0, 0, 2.409e8, 0,
-	        "Bouc-Wen beta, m^-n: shapes the hysteresis loop (eq. bwshc_psi)" },
-	[GAMMA] = { "gamma", { .mn = -1 }, -HUGE_VAL, HUGE_VAL, 0, 0, 2.409e8, 0,
-	        "Bouc-Wen gamma, m^-n, in [-beta, beta] (eq. bwshc_psi)" },
-	[N] = { "n", { 0 }, 1, HUGE_VAL, 0, 0, 2.0, LAW_PARAM_EXPONENT_N,
-	        "Bouc-Wen exponent n: sharpness of the yield (eq. bwshc_psi)" },
-	[P] = { "p", { 0 }, 1, HUGE_VAL, 0, 0, 1.5, LAW_PARAM_EXPONENT_P,
-	        "exponent of both branches and of the damping; 3/2 is Hertz's" },
-	[C] = { "c", { .kg = 1, .s = -1, .mp = -1 },
-	        0, HUGE_VAL, 0, 0, 2.5e7, 0,
-	        "Hunt-Crossley damping c|x|^p v, N s m^(-p-1) (table tab:two)" },
+static const struct law_param bwshccl_params[LAW_BW_NPAR] = {
+	LAW_BW_PARAMS(7.095e7, 2.409e8, 2.409e8, "bwshc_phi", "bwshc_psi",
+	    "Bouc-Wen gain A: dz/dt = A v while z is small (eq. bwshc_psi)",
+	    "exponent of both branches and of the damping; 3/2 is Hertz's"),
+	[LAW_BW_C] = LAW_PARAM_C_HC(2.5e7, "tab:two"),
 };
 
+/* Eq. bwshc_phi: the branches at (x_c, z), then the damping. */
 static double
 bwshccl_phi(const double *par, int ext, double xc, const double *z, double v)
 {
-	double k = par[K], alpha = par[ALPHA], p = par[P];
-
-	if (!ext && xc > 0)
-		xc = 0.0;
-	return alpha * k * spow(xc, p) + (1.0 - alpha) * k * spow(z[0], p)
-	    + par[C] * apow(xc, p) * v;
+	xc = law_ext_x(ext, xc);
+	return law_bw_springs(par, xc, z[0])
+	    + par[LAW_BW_C] * apow(xc, par[LAW_BW_P]) * v;
 }
 
+/* Eq. bwshc_psi: the Bouc-Wen rate driven by v_c. */
 static void
 bwshccl_psi(const double *par, int ext, double xc, const double *z, double v,
             double *dz)
 {
-	double n = par[N];
-
 	(void)ext;
 	(void)xc;
-	dz[0] = par[A] * v - par[BETA] * spow(z[0], n) * fabs(v)
-	    - par[GAMMA] * apow(z[0], n) * v;
+	dz[0] = law_bw_rate(par, z[0], v);
 }
 
 /* Columns (x_c, z, v); dpsi is one row. */
@@ -74,24 +53,16 @@ static void
 bwshccl_jac(const double *par, int ext, double xc, const double *z, double v,
             double *dphi, double *dpsi)
 {
-	double k = par[K], alpha = par[ALPHA], p = par[P], n = par[N];
-	double c = par[C], beta = par[BETA], gamma = par[GAMMA];
-	double zz = z[0];
+	double k = par[LAW_BW_K], alpha = par[LAW_BW_ALPHA], p = par[LAW_BW_P];
 
-	if (!ext && xc > 0) {
-		dphi[0] = 0.0;
-		dphi[2] = 0.0;
-	} else {
-		dphi[0] = alpha * k * dspow(xc, p) + c * dapow(xc, p) * v;
-		dphi[2] = c * apow(xc, p);
-	}
-	dphi[1] = (1.0 - alpha) * k * dspow(zz, p);
+	law_hc_jac(ext, alpha * k, par[LAW_BW_C], p, xc, v, &dphi[0], &dphi[2]);
+	dphi[1] = (1.0 - alpha) * k * dspow(z[0], p);
 
 	if (dpsi == NULL)
 		return;
 	dpsi[0] = 0.0;
-	dpsi[1] = -beta * dspow(zz, n) * fabs(v) - gamma * dapow(zz, n) * v;
-	dpsi[2] = par[A] - beta * spow(zz, n) * dabs1(v) - gamma * apow(zz, n);
+	dpsi[1] = law_bw_rate_dz(par, z[0], v);
+	dpsi[2] = law_bw_rate_dw(par, z[0], v);
 }
 
 /* g = {x_c, z, v}. */
@@ -106,27 +77,6 @@ bwshccl_kinks(const double *par, int ext, double xc, const double *z,
 	g[2] = v;
 }
 
-/* Rejects |gamma| > beta (eq. bwshc_psi requires gamma in [-beta, beta]). */
-static int
-bwshccl_check(const double *par, char *msg, size_t n)
-{
-	double beta = par[BETA], gamma = par[GAMMA];
-
-	if (gamma >= -beta && gamma <= beta)
-		return HB_OK;
-	return status_set(msg, n, HB_EINVAL,
-	    "gamma = %g must lie in [-beta, beta] = [%g, %g]", gamma, -beta, beta);
-}
-
-/* Eq. k_hertz: k = k_H / (alpha + (1 - alpha) A^p). */
-static double
-bwshccl_k_hertz(const double *par, double kH)
-{
-	double alpha = par[ALPHA];
-
-	return kH / (alpha + (1.0 - alpha) * apow(par[A], par[P]));
-}
-
 const struct law_type law_bwshccl = {
 	.name = "bwshccl",
 	.title = "Bouc-Wen-Simon-Hunt-Crossley (BWSHCCL)",
@@ -135,13 +85,13 @@ const struct law_type law_bwshccl = {
 	               "formulas (adhesive, rule R1), or clamped at x_c = 0 when "
 	               "ext = 0",
 	.n_z = 1,
-	.n_params = NPAR,
+	.n_params = LAW_BW_NPAR,
 	.params = bwshccl_params,
 	.n_kinks = 3,
 	.phi = bwshccl_phi,
 	.psi = bwshccl_psi,
 	.jac = bwshccl_jac,
 	.kinks = bwshccl_kinks,
-	.check = bwshccl_check,
-	.k_hertz = bwshccl_k_hertz,
+	.check = law_bw_check,     /* gamma in [-beta, beta] */
+	.k_hertz = law_bw_k_hertz, /* k_H / (alpha + (1 - alpha) A^p) */
 };

@@ -17,16 +17,14 @@
 
 #include "hybounce/law.h"
 
-#include "law_pow.h"
+#include "law_common.h"
 
 enum { K, P, NPAR };
 
 static const struct law_param hertz_params[NPAR] = {
-	[K] = { "k", { .kg = 1, .m = 1, .s = -2, .mp = -1 },
-	        0, HUGE_VAL, 1, 0, 2.138e8, LAW_PARAM_STIFFNESS,
-	        "stiffness of the spring, N m^-p; k = k_H (eq. k_hertz) from the materials" },
-	[P] = { "p", { 0 }, 1, HUGE_VAL, 0, 0, 1.5, LAW_PARAM_EXPONENT_P,
-	        "exponent of the spring; 3/2 is Hertz's for spheres" },
+	[K] = LAW_PARAM_K(2.138e8, "stiffness of the spring, N m^-p; "
+	                  "k = k_H (eq. k_hertz) from the materials"),
+	[P] = LAW_PARAM_P("exponent of the spring; 3/2 is Hertz's for spheres"),
 };
 
 static double
@@ -34,9 +32,7 @@ hertz_phi(const double *par, int ext, double xc, const double *z, double v)
 {
 	(void)z;
 	(void)v;
-	if (!ext && xc > 0)
-		return 0.0;
-	return par[K] * spow(xc, par[P]);
+	return par[K] * spow(law_ext_x(ext, xc), par[P]);
 }
 
 /* Columns (x_c, v). */
@@ -47,28 +43,8 @@ hertz_jac(const double *par, int ext, double xc, const double *z, double v,
 	(void)z;
 	(void)v;
 	(void)dpsi;
-	dphi[0] = !ext && xc > 0 ? 0.0 : par[K] * dspow(xc, par[P]);
+	dphi[0] = law_ext_dx(ext, xc, par[K] * dspow(xc, par[P]));
 	dphi[1] = 0.0;
-}
-
-/* g = {x_c}. */
-static void
-hertz_kinks(const double *par, int ext, double xc, const double *z, double v,
-            double *g)
-{
-	(void)par;
-	(void)ext;
-	(void)z;
-	(void)v;
-	g[0] = xc;
-}
-
-/* k = k_H: the law is the Hertzian relation itself. */
-static double
-hertz_k_hertz(const double *par, double kH)
-{
-	(void)par;
-	return kH;
 }
 
 const struct law_type law_hertz = {
@@ -84,7 +60,7 @@ const struct law_type law_hertz = {
 	.phi = hertz_phi,
 	.psi = NULL,
 	.jac = hertz_jac,
-	.kinks = hertz_kinks,
+	.kinks = law_kinks_xc,     /* g = {x_c} */
 	.check = NULL,
-	.k_hertz = hertz_k_hertz,
+	.k_hertz = law_k_hertz_identity, /* the law is Hertz's relation itself */
 };

@@ -17,10 +17,12 @@
 
 #include "hybounce/law.h"
 
+#include "law_common.h"
+
 enum { K, NPAR };
 
 static const struct law_param linear_params[NPAR] = {
-	[K] = { "k", { .kg = 1, .s = -2 }, 0, HUGE_VAL, 1, 0, 1e5, 0,
+	[K] = { "k", { .kg = 1, .s = -2 }, LAW_RANGE_POSITIVE, 1e5, 0,
 	        "spring constant, N/m (eq. nonuniq_law); never derived from materials" },
 };
 
@@ -29,9 +31,7 @@ linear_phi(const double *par, int ext, double xc, const double *z, double v)
 {
 	(void)z;
 	(void)v;
-	if (!ext && xc > 0)
-		return 0.0;
-	return par[K] * xc;
+	return par[K] * law_ext_x(ext, xc);
 }
 
 /* Columns (x_c, v). */
@@ -42,20 +42,8 @@ linear_jac(const double *par, int ext, double xc, const double *z, double v,
 	(void)z;
 	(void)v;
 	(void)dpsi;
-	dphi[0] = !ext && xc > 0 ? 0.0 : par[K];
+	dphi[0] = law_ext_dx(ext, xc, par[K]);
 	dphi[1] = 0.0;
-}
-
-/* g = {x_c}. */
-static void
-linear_kinks(const double *par, int ext, double xc, const double *z, double v,
-             double *g)
-{
-	(void)par;
-	(void)ext;
-	(void)z;
-	(void)v;
-	g[0] = xc;
 }
 
 const struct law_type law_linear = {
@@ -71,7 +59,7 @@ const struct law_type law_linear = {
 	.phi = linear_phi,
 	.psi = NULL,
 	.jac = linear_jac,
-	.kinks = linear_kinks,
+	.kinks = law_kinks_xc,     /* g = {x_c} */
 	.check = NULL,
 	.k_hertz = NULL,
 };

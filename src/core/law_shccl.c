@@ -17,19 +17,15 @@
 
 #include "hybounce/law.h"
 
-#include "law_pow.h"
+#include "law_common.h"
 
 enum { K, P, C, NPAR };
 
 static const struct law_param shccl_params[NPAR] = {
-	[K] = { "k", { .kg = 1, .m = 1, .s = -2, .mp = -1 },
-	        0, HUGE_VAL, 1, 0, 4.254e8, LAW_PARAM_STIFFNESS,
-	        "stiffness of the Hertz term, N m^-p; k = k_H (eq. k_hertz) from the materials" },
-	[P] = { "p", { 0 }, 1, HUGE_VAL, 0, 0, 1.5, LAW_PARAM_EXPONENT_P,
-	        "exponent of the spring and of the damping; 3/2 is Hertz's" },
-	[C] = { "c", { .kg = 1, .s = -1, .mp = -1 },
-	        0, HUGE_VAL, 0, 0, 4.3e9, 0,
-	        "Hunt-Crossley damping c|x|^p v, N s m^(-p-1) (table tab:slow)" },
+	[K] = LAW_PARAM_K(4.254e8, "stiffness of the Hertz term, N m^-p; "
+	                  "k = k_H (eq. k_hertz) from the materials"),
+	[P] = LAW_PARAM_P("exponent of the spring and of the damping; 3/2 is Hertz's"),
+	[C] = LAW_PARAM_C_HC(4.3e9, "tab:slow"),
 };
 
 static double
@@ -38,8 +34,7 @@ shccl_phi(const double *par, int ext, double xc, const double *z, double v)
 	double p = par[P];
 
 	(void)z;
-	if (!ext && xc > 0)
-		xc = 0.0;
+	xc = law_ext_x(ext, xc);
 	return par[K] * spow(xc, p) + par[C] * apow(xc, p) * v;
 }
 
@@ -48,37 +43,9 @@ static void
 shccl_jac(const double *par, int ext, double xc, const double *z, double v,
           double *dphi, double *dpsi)
 {
-	double p = par[P];
-
 	(void)z;
 	(void)dpsi;
-	if (!ext && xc > 0) {
-		dphi[0] = 0.0;
-		dphi[1] = 0.0;
-		return;
-	}
-	dphi[0] = par[K] * dspow(xc, p) + par[C] * dapow(xc, p) * v;
-	dphi[1] = par[C] * apow(xc, p);
-}
-
-/* g = {x_c}. */
-static void
-shccl_kinks(const double *par, int ext, double xc, const double *z, double v,
-            double *g)
-{
-	(void)par;
-	(void)ext;
-	(void)z;
-	(void)v;
-	g[0] = xc;
-}
-
-/* k = k_H: the elastic term is the Hertzian relation itself. */
-static double
-shccl_k_hertz(const double *par, double kH)
-{
-	(void)par;
-	return kH;
+	law_hc_jac(ext, par[K], par[C], par[P], xc, v, &dphi[0], &dphi[1]);
 }
 
 const struct law_type law_shccl = {
@@ -94,7 +61,7 @@ const struct law_type law_shccl = {
 	.phi = shccl_phi,
 	.psi = NULL,
 	.jac = shccl_jac,
-	.kinks = shccl_kinks,
+	.kinks = law_kinks_xc,     /* g = {x_c} */
 	.check = NULL,
-	.k_hertz = shccl_k_hertz,
+	.k_hertz = law_k_hertz_identity, /* the elastic term is Hertz's relation */
 };
