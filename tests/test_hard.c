@@ -341,7 +341,7 @@ Test(hard, long_run_memory_bounded)
 /*
  * Stiffness: rk8pd on the stiff Maxwell contact is held back by stability
  * (h max(-Re lambda) beyond 1 at almost every check) and the engine says
- * so; run.stepper = auto goes over to msbdf, keeps the error within the
+ * so; run.stepper = auto goes over to bsimp, keeps the error within the
  * tolerance and takes far fewer steps.  On the paper's studies nothing is
  * stiff: auto is rk8pd, bit for bit.
  */
@@ -360,7 +360,7 @@ Test(hard, stiff_contacts_go_implicit)
 		cr_expect_eq(se->stiff, 1, "%s: rk8pd not found stiff (h rho up to %g)", stiff[i],
 		             se->stiff_hrho);
 		cr_expect_eq(se->switched, 0, "%s: rk8pd must stay rk8pd", stiff[i]);
-		cr_expect_eq(sa->switched, 1, "%s: auto did not go over to msbdf", stiff[i]);
+		cr_expect_eq(sa->switched, 1, "%s: auto did not go over to bsimp", stiff[i]);
 		cr_expect_lt(sa->steps * 3, se->steps, "%s: auto %ld steps, rk8pd %ld", stiff[i],
 		             sa->steps, se->steps);
 		sim_free(e);

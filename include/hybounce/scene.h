@@ -32,7 +32,7 @@ enum scene_stepper {
 	STEPPER_MSBDF,     /* implicit, uses the law's Jacobian */
 	STEPPER_RK4IMP,
 	STEPPER_BSIMP,
-	STEPPER_AUTO,      /* rk8pd, then msbdf for contacts once one is found stiff */
+	STEPPER_AUTO,      /* rk8pd, then bsimp for contacts once one is found stiff */
 	STEPPER_COUNT
 };
 

@@ -67,7 +67,7 @@ struct sim_stats {
 	double stiff_hrho; /* largest h max(-Re lambda) seen */
 	int stiff;         /* 1: a contact was found stiff: an implicit stepper is faster */
 	double stiff_t;    /* the time it was found, s */
-	int switched;      /* 1: run.stepper = auto went over to msbdf for the contacts */
+	int switched;      /* 1: run.stepper = auto went over to bsimp for the contacts */
 	double seconds;    /* CPU time spent in sim_advance */
 	int ncomp;         /* components of the contact ODE */
 	double scale[8];   /* per-component scale of the absolute tolerance */

@@ -600,11 +600,11 @@ print_summary(FILE *out, const struct sim *s)
 		fmt(st->stiff_t, UNIT_TIME, tb, sizeof tb);
 		if (st->switched)
 			fprintf(out, "  stiffness   the contact flow is stiff from t = %s (h |lambda| up to "
-			        "%.3g): run.stepper = auto went over to msbdf\n", tb, st->stiff_hrho);
+			        "%.3g): run.stepper = auto went over to bsimp\n", tb, st->stiff_hrho);
 		else
 			fprintf(out, "  stiffness   the contact flow is stiff from t = %s: %s is held back by "
 			        "stability (h |lambda| up to %.3g);\n"
-			        "              --set run.stepper=auto (or msbdf) takes far fewer steps\n",
+			        "              --set run.stepper=auto (or bsimp) takes far fewer steps\n",
 			        tb, scene_stepper_name(sc->run.stepper), st->stiff_hrho);
 	}
 	if (st->dips > 0)

@@ -294,7 +294,7 @@ static const struct keydef keys[] = {
 	  "jump cap" },
 	{ "run.stepper", "run", "stepper", K_STEPPER, NULL, 0, 0, 0, 0, OFF(run.stepper), 0,
 	  SP_NONE, "GSL stepper: rk8pd, rkf45, rkck, msbdf, rk4imp, bsimp, or auto (rk8pd, "
-	  "then msbdf for the contacts once one is found stiff)" },
+	  "then bsimp for the contacts once one is found stiff)" },
 	{ "run.rtol", "run", "rtol", K_DOUBLE, &UNIT_NONE, 0, 1, 1, 1, OFF(run.rtol), 0,
 	  SP_NONE, "relative tolerance of the integrator" },
 	{ "run.atol", "run", "atol", K_DOUBLE, &UNIT_NONE, 0, 1, 1, 1, OFF(run.atol), 0,

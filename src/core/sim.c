@@ -1296,7 +1296,7 @@ setup_interval(struct sim *s)
  * unstable, so h max(-Re lambda) > 1 means the stepper is held back by
  * stability: a stiff flow, where an implicit stepper takes far fewer steps.
  * Checked every 32nd step; eight hits in a row make the contact stiff, and
- * with run.stepper = auto the contacts go over to msbdf from then on.
+ * with run.stepper = auto the contacts go over to bsimp from then on.
  */
 static int
 stiffness(struct sim *s)
@@ -1348,7 +1348,7 @@ stiffness(struct sim *s)
 	s->st.stiff = 1;
 	s->st.stiff_t = s->t;
 	if (s->sc.run.stepper == STEPPER_AUTO) {
-		s->stepper[1] = STEPPER_MSBDF;
+		s->stepper[1] = STEPPER_BSIMP;
 		s->st.switched = 1;
 		if (phase_alloc(s, &s->ph[1], 1))
 			return fail(s, HB_ENOMEM, "out of memory for the integrator");

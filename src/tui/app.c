@@ -72,9 +72,9 @@ stiff_note(const struct app *a, char *buf, size_t n)
 		return buf;
 	units_format(st->stiff_t, UNIT_TIME, 4, tb, sizeof tb);
 	if (st->switched)
-		snprintf(buf, n, "; stiff contact at t = %s: auto went over to msbdf", tb);
+		snprintf(buf, n, "; stiff contact at t = %s: auto went over to bsimp", tb);
 	else
-		snprintf(buf, n, "; stiff contact at t = %s: run.stepper = auto (or msbdf) is faster",
+		snprintf(buf, n, "; stiff contact at t = %s: run.stepper = auto (or bsimp) is faster",
 		         tb);
 	return buf;
 }

@@ -81,16 +81,16 @@ else notok "the default preset steel-on-bitumen exists"; fi
 # The engine's word on stiffness: a suggestion under rk8pd, the switch under auto, silence elsewhere.
 "$BIN" --batch hard-stiff-maxwell --set run.stepper=rk8pd --quiet >"$T/out" 2>&1
 if grep -q '^  stiffness   the contact flow is stiff from t = .*: rk8pd is held back by stability' "$T/out" &&
-    grep -q -- '--set run.stepper=auto (or msbdf) takes far fewer steps' "$T/out"; then
-	ok "batch on a stiff contact under rk8pd suggests auto or msbdf"
+    grep -q -- '--set run.stepper=auto (or bsimp) takes far fewer steps' "$T/out"; then
+	ok "batch on a stiff contact under rk8pd suggests auto or bsimp"
 else
-	notok "batch on a stiff contact under rk8pd suggests auto or msbdf" "$T/out"
+	notok "batch on a stiff contact under rk8pd suggests auto or bsimp" "$T/out"
 fi
 "$BIN" --batch hard-stiff-maxwell --quiet >"$T/out" 2>&1
-if grep -q '^  stiffness   .*run.stepper = auto went over to msbdf' "$T/out"; then
-	ok "batch on a stiff contact under auto says it went over to msbdf"
+if grep -q '^  stiffness   .*run.stepper = auto went over to bsimp' "$T/out"; then
+	ok "batch on a stiff contact under auto says it went over to bsimp"
 else
-	notok "batch on a stiff contact under auto says it went over to msbdf" "$T/out"
+	notok "batch on a stiff contact under auto says it went over to bsimp" "$T/out"
 fi
 "$BIN" --batch steel-on-bitumen --quiet >"$T/out" 2>&1
 if ! grep -q 'stiff' "$T/out"; then ok "batch on the first study says nothing of stiffness"
