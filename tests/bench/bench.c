@@ -1045,7 +1045,7 @@ main(int argc, char **argv)
 	            "e_max = the largest restitution of the run. stiff: the engine's verdict "
 	            "(sim_stats.stiff: h max(-Re lambda) of the contact flow beyond 1 at eight "
 	            "checks in a row of an explicit stepper; h rho = the largest seen); auto = "
-	            "run.stepper auto, which goes over to msbdf on that verdict.\n\n"
+	            "run.stepper auto, which goes over to bsimp on that verdict.\n\n"
 	            "| preset | stepper | tol | ms | steps | rhs | n | dn | coll | T | e_max | stiff (h rho) |\n"
 	            "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 	{
@@ -1095,7 +1095,7 @@ main(int argc, char **argv)
 						compare(&o, ref, REF_RUN, &e);
 					char sv[64];
 
-					snprintf(sv, sizeof sv, "%s (%.2g)", o.switched ? "yes: msbdf" : o.stiff ? "yes" : "no", o.hrho);
+					snprintf(sv, sizeof sv, "%s (%.2g)", o.switched ? "yes: went implicit" : o.stiff ? "yes" : "no", o.hrho);
 					fprintf(md, "| %s | %s | %g | %.2f | %ld | %ld | %zu | %ld | %s | %s | %s | %s |\n",
 					        hard[i], scene_stepper_name(st), htol[t], o.sec * 1e3, o.steps,
 					        o.rhs, o.n, ref->status ? 0 : e.dn,
