@@ -29,7 +29,15 @@
  * few ulps of t, the earliest of several crossings first.  An event ends
  * the interval at the bracket's end in D; a switching or extremum crossing
  * ends the step at the bracket's far end and restarts the stepper
- * (DESIGN.md section 4a).  Load kinks (T_e, T_s) are step targets.
+ * (DESIGN.md section 4a).  Load kinks (T_e, T_s) are step targets.  An
+ * event inside a step whose two ends are in C is looked for by a cubic
+ * Hermite test of the indicator (dip()).
+ *
+ * Scales are powers of 2 (exact scaling); GSL's standard control is used
+ * without growth right after a rejection (control.c); bsimp runs on
+ * shifted variables (step_bsimp.c).  Every 32nd step of an explicit
+ * stepper in contact checks the stiffness of the flow (stiffness()):
+ * run.stepper = auto then goes over to bsimp for the contacts.
  *
  * Invariants: the arc's samples are all in C except each pre-jump sample,
  * which is in D by check_in_D's test; post-jump samples are g of the
