@@ -13,6 +13,7 @@
  * from the engine go to the message line; nothing computed is lost by a
  * refused edit or a failed export.
  */
+#include <ctype.h>
 #include <curses.h>
 #include <math.h>
 #include <stdarg.h>
@@ -289,7 +290,37 @@ param_key_index(const struct app *a)
 	return rows[a->param_sel].key;
 }
 
-/* Multiplies (dir > 0) or divides the selected value by 1.1, keeping its unit. */
+/*
+ * For a value chosen from a list (stepper, law, extension, yes/no ...):
+ * the choice dir steps after the current one in the key's range ("rk8pd
+ * rkf45 ...", "adhesive, none"), cycling.  Returns 0 with it in out, or -1
+ * when the range is not a list holding the current value.
+ */
+static int
+next_choice(const struct scene_keyinfo *ki, int dir, char *out, size_t n)
+{
+	char range[sizeof ki->range], *tok[32], *save = NULL, *t;
+	int ntok = 0, cur = -1, i;
+
+	snprintf(range, sizeof range, "%s", ki->range);
+	for (t = strtok_r(range, ", ", &save); t != NULL && ntok < 32; t = strtok_r(NULL, ", ", &save)) {
+		for (i = 0; t[i]; i++)
+			if (!isalnum((unsigned char)t[i]) && t[i] != '_' && t[i] != '-')
+				return -1; /* "(0, 1)", ">= 1": a numeric range, not a list */
+		if (strcmp(t, ki->value) == 0)
+			cur = ntok;
+		tok[ntok++] = t;
+	}
+	if (cur < 0 || ntok < 2)
+		return -1;
+	snprintf(out, n, "%s", tok[((cur + dir) % ntok + ntok) % ntok]);
+	return 0;
+}
+
+/*
+ * Multiplies (dir > 0) or divides the selected value by 1.1, keeping its
+ * unit; a value chosen from a list steps to the next (previous) choice.
+ */
 static void
 nudge(struct app *a, int dir)
 {
@@ -306,7 +337,10 @@ nudge(struct app *a, int dir)
 	}
 	v = strtod(ki.value, &end);
 	if (end == ki.value || !isfinite(v)) {
-		app_msg(a, 1, "%s is not a number: press Enter to type a value", ki.label);
+		if (next_choice(&ki, dir, text, sizeof text) == 0)
+			edit_value(a, ki.key, text);
+		else
+			app_msg(a, 1, "%s is not a number: press Enter to type a value", ki.label);
 		return;
 	}
 	if (v == 0) {

@@ -158,4 +158,25 @@ else
 	notok "q quits with status 0"
 fi
 
+# ---- + and - step through a list of choices (the stepper) ---------------------
+start b 120 40
+keys b Tab
+if wait_for b 'parameters \(Enter edits' 30 && select_param b run.stepper; then
+	keys b +
+	if wait_for b 'run\.stepper = rkf45' 30 && screen b | grep -Eq '^ +stepper +rkf45'; then
+		keys b - -
+		if wait_for b 'run\.stepper = auto' 30 && screen b | grep -Eq '^ +stepper +auto'; then
+			ok "+ and - step run.stepper through its choices (rk8pd -> rkf45 -> rk8pd -> auto)"
+		else
+			notok "- steps run.stepper back, cycling to auto" b
+		fi
+	else
+		notok "+ steps run.stepper to the next choice" b
+	fi
+else
+	notok "parameter row run.stepper not found" b
+fi
+keys b q
+wait_exit b 50 || notok "q quits" b
+
 [ "$failed" -eq 0 ]
