@@ -53,6 +53,7 @@
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
+#include <gsl/gsl_poly.h>
 #include <gsl/gsl_roots.h>
 
 #include "hybounce/sim.h"
@@ -1112,8 +1113,8 @@ static double
 dip(struct sim *s, const double *f0, const double *f1, int n, double *fx)
 {
 	struct phase *p = s->cur;
-	double H = s->H, d0, d1, A, B, C, th[2], u[MAXDIM];
-	int kind[MAXFUN], nt = 0, i;
+	double H = s->H, d0, d1, c2, c3, th[2], u[MAXDIM];
+	int kind[MAXFUN], nt, i;
 
 	if (!(f0[0] >= 0.0 && f1[0] >= 0.0))
 		return 0.0;
@@ -1121,31 +1122,16 @@ dip(struct sim *s, const double *f0, const double *f1, int n, double *fx)
 	d1 = H * indicator_rate(s, p, s->t0 + H, s->u1, f1, n);
 	if (d0 >= 0.0 && d1 <= 0.0)
 		return 0.0; /* rising then falling: no interior minimum */
-	/* P(th) = f0 + d0 th + (3(f1 - f0) - 2 d0 - d1) th^2 + (2(f0 - f1) + d0 + d1) th^3 */
-	A = 3.0 * (2.0 * (f0[0] - f1[0]) + d0 + d1);
-	B = 2.0 * (3.0 * (f1[0] - f0[0]) - 2.0 * d0 - d1);
-	C = d0;
-	if (fabs(A) < 1e-300) {
-		if (B != 0.0)
-			th[nt++] = -C / B;
-	} else {
-		double disc = B * B - 4.0 * A * C;
-
-		if (disc >= 0.0) {
-			double q = -0.5 * (B + copysign(sqrt(disc), B));
-
-			th[nt++] = q / A;
-			if (q != 0.0)
-				th[nt++] = C / q;
-		}
-	}
+	/* P(th) = f0 + d0 th + c2 th^2 + c3 th^3; its critical points solve P'(th) = 0 */
+	c2 = 3.0 * (f1[0] - f0[0]) - 2.0 * d0 - d1;
+	c3 = 2.0 * (f0[0] - f1[0]) + d0 + d1;
+	nt = gsl_poly_solve_quadratic(3.0 * c3, 2.0 * c2, d0, &th[0], &th[1]);
 	for (i = 0; i < nt; i++) {
 		double t = th[i], P;
 
 		if (!(t > 0.0 && t < 1.0))
 			continue;
-		P = f0[0] + t * (d0 + t * ((3.0 * (f1[0] - f0[0]) - 2.0 * d0 - d1) +
-		                           t * (2.0 * (f0[0] - f1[0]) + d0 + d1)));
+		P = f0[0] + t * (d0 + t * (c2 + t * c3));
 		if (P >= 0.0)
 			continue;
 		if (restep(s, t * H, u))
