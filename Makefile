@@ -17,7 +17,9 @@ CC        ?= gcc
 PKG_CONFIG ?= pkg-config
 
 # Debian packages the build and the tests use (apt-get names).
-APT_PACKAGES := libgsl-dev libncurses-dev libinih-dev libcriterion-dev pkg-config tmux mandoc
+APT_PACKAGES := libgsl-dev libncurses-dev libinih-dev libcriterion-dev pkg-config tmux mandoc \
+                clang libclang-rt-14-dev strace parallel slurm-wlm munge \
+                libaubio-dev aubio-tools sox
 
 BUILD     ?= build
 OPT       ?= -O2
