@@ -16,7 +16,27 @@
 #define HYBOUNCE_UNITS_H
 
 #include <stddef.h>
-#include "law.h"
+
+/*
+ * Physical dimension of a quantity as exponents of kg, m and s.  The metre
+ * exponent may depend on a contact law's exponents p and n:
+ *     m exponent = m + mp * p + mn * n
+ * (e.g. k of a Hertz-type term, N m^-p: kg = 1, m = 1, mp = -1, s = -2).
+ */
+struct unit_dim {
+	double kg, m, s;
+	double mp, mn;
+};
+
+/*
+ * An admissible range: lo .. hi, each bound excluded when its *_open is 1
+ * (an infinite bound is always excluded); whole = 1 for whole numbers.
+ */
+struct unit_range {
+	double lo, hi;
+	int lo_open, hi_open;
+	int whole;
+};
 
 /* Dimensions used by scenes (p and n terms zero). */
 extern const struct unit_dim UNIT_NONE;     /* dimensionless */
@@ -70,5 +90,17 @@ units_format(double value, struct unit_dim d, int sig, char *buf, size_t n);
  */
 double
 units_axis(double magnitude, const char *base, char *label, size_t n);
+
+/* 1 if v lies in r (NaN never does; whole numbers must be integers). */
+int
+units_in_range(double v, const struct unit_range *r);
+
+/*
+ * The one way a range is written: "(0, 1)", "[0, inf) m", "whole numbers
+ * >= 2", "any finite value"; the unit of dim (already resolved) follows an
+ * interval when dim is not NULL and not dimensionless.  Returns buf.
+ */
+char *
+units_range_str(const struct unit_range *r, const struct unit_dim *dim, char *buf, size_t n);
 
 #endif

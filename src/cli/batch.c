@@ -785,25 +785,6 @@ batch_list_presets(void)
 	return 0;
 }
 
-/* "(0, 1)", "[1, inf)" ... */
-static void
-range_str(const struct law_param *pp, char *buf, size_t n)
-{
-	char lo[32], hi[32];
-
-	if (isinf(pp->lo))
-		snprintf(lo, sizeof lo, "-inf");
-	else
-		snprintf(lo, sizeof lo, "%g", pp->lo);
-	if (isinf(pp->hi))
-		snprintf(hi, sizeof hi, "inf");
-	else
-		snprintf(hi, sizeof hi, "%g", pp->hi);
-	snprintf(buf, n, "%c%s, %s%c",
-	         pp->lo_open || isinf(pp->lo) ? '(' : '[', lo, hi,
-	         pp->hi_open || isinf(pp->hi) ? ')' : ']');
-}
-
 int
 batch_list_laws(void)
 {
@@ -827,7 +808,8 @@ batch_list_laws(void)
 			char unit[48], range[80], dv[64];
 
 			units_dim_str(d, unit, sizeof unit);
-			range_str(pp, range, sizeof range);
+			struct unit_range rr = law_param_range(pp);
+			units_range_str(&rr, NULL, range, sizeof range);
 			fmt(pp->def, d, dv, sizeof dv);
 			printf("      %-8s %-14s range %-16s default %s%s\n",
 			       pp->name, unit[0] ? unit : "(1)", range, dv,
