@@ -30,7 +30,7 @@ struct unit_dim {
 
 /*
  * An admissible range: lo .. hi, each bound excluded when its *_open is 1
- * (an infinite bound is always excluded); whole = 1 for whole numbers.
+ * ([0, inf] admits inf, [0, inf) does not); whole = 1 for whole numbers.
  */
 struct unit_range {
 	double lo, hi;

@@ -120,43 +120,6 @@ print_wrapped(FILE *out, const char *indent, const char *text)
 /* ------------------------------------------------------------------ */
 /* Input: preset, --set, export paths                                  */
 
-/*
- * Applies "KEY=VALUE" to the scene.  Returns 0, or 2 after printing a
- * message naming the key and what is accepted.
- */
-static int
-apply_set(struct scene *sc, const char *arg)
-{
-	char key[128], msg[512];
-	const char *eq = strchr(arg, '=');
-	const char *k0 = arg, *k1;
-
-	if (eq == NULL) {
-		fprintf(stderr, PROG ": --set '%s': expected KEY=VALUE, e.g. "
-		        "--set law.c=0.4 or --set initial.x0='40 um'\n", arg);
-		return 2;
-	}
-	k1 = eq;
-	while (k0 < k1 && (*k0 == ' ' || *k0 == '\t'))
-		k0++;
-	while (k1 > k0 && (k1[-1] == ' ' || k1[-1] == '\t'))
-		k1--;
-	if (k1 == k0 || (size_t)(k1 - k0) >= sizeof key) {
-		fprintf(stderr, PROG ": --set '%s': expected KEY=VALUE with a key "
-		        "such as law.c, body1.R, initial.x0, run.rtol, scene.law\n", arg);
-		return 2;
-	}
-	memcpy(key, k0, (size_t)(k1 - k0));
-	key[k1 - k0] = '\0';
-	msg[0] = '\0';
-	if (scene_set(sc, key, eq + 1, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": --set %s: %s\n", arg,
-		        msg[0] ? msg : "rejected");
-		return 2;
-	}
-	return 0;
-}
-
 /* 1 if an export path names standard output ("-"). */
 static int
 is_stdout(const char *path)
@@ -629,7 +592,7 @@ batch_run(const struct batch_options *o)
 	char path[1024], msg[1024], scene_out[1100];
 	struct collision live;
 	struct sim *s;
-	int i, status = 0, have_live, rc;
+	int status = 0, have_live, rc;
 	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
 	/* The files to export; "-" goes to stdout after them. */
 	const char *trace_file = trace_out ? NULL : o->trace;
@@ -644,16 +607,8 @@ batch_run(const struct batch_options *o)
 		return 2;
 	}
 	msg[0] = '\0';
-	if (preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
+	if (preset_open(path, o->sets, o->nsets, &sc, msg, sizeof msg) != HB_OK) {
 		err(msg[0] ? msg : path);
-		return 2;
-	}
-	for (i = 0; i < o->nsets; i++)
-		if (apply_set(&sc, o->sets[i]) != 0)
-			return 2;
-	msg[0] = '\0';
-	if (scene_validate(&sc, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": %s: %s\n", path, msg);
 		return 2;
 	}
 	if (trace_out && coll_out) {

@@ -91,10 +91,12 @@ law_defaults(const struct law_type *law, double *par)
 		par[i] = law->params[i].def;
 }
 
+/* The range of a parameter; an infinite bound is never admitted. */
 struct unit_range
 law_param_range(const struct law_param *pp)
 {
-	struct unit_range r = { pp->lo, pp->hi, pp->lo_open, pp->hi_open, 0 };
+	struct unit_range r = { pp->lo, pp->hi, pp->lo_open || isinf(pp->lo),
+		pp->hi_open || isinf(pp->hi), 0 };
 
 	return r;
 }

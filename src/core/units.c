@@ -543,9 +543,9 @@ units_in_range(double v, const struct unit_range *r)
 {
 	if (isnan(v))
 		return 0;
-	if (r->lo_open || isinf(r->lo) ? !(v > r->lo) : !(v >= r->lo))
+	if (r->lo_open ? !(v > r->lo) : !(v >= r->lo))
 		return 0;
-	if (r->hi_open || isinf(r->hi) ? !(v < r->hi) : !(v <= r->hi))
+	if (r->hi_open ? !(v < r->hi) : !(v <= r->hi))
 		return 0;
 	return !r->whole || v == floor(v);
 }
@@ -570,19 +570,19 @@ units_range_str(const struct unit_range *r, const struct unit_dim *dim, char *bu
 	bound_str(r->lo, l, sizeof l);
 	bound_str(r->hi, h, sizeof h);
 	if (r->whole) {
-		if (r->hi >= 1e18)
+		if (r->hi >= 2147483647.0) /* INT_MAX and beyond: no bound a user meets */
 			snprintf(buf, n, "whole numbers >= %s", l);
 		else
 			snprintf(buf, n, "whole numbers in [%s, %s]", l, h);
 		return buf;
 	}
-	if (isinf(r->lo) && r->lo < 0 && isinf(r->hi) && r->hi > 0) {
+	if (isinf(r->lo) && r->lo < 0 && isinf(r->hi) && r->hi > 0 && r->lo_open && r->hi_open) {
 		snprintf(buf, n, "any finite value");
 		return buf;
 	}
 	if (dim != NULL)
 		units_dim_str(*dim, u, sizeof u);
-	snprintf(buf, n, "%c%s, %s%c%s%s", r->lo_open || isinf(r->lo) ? '(' : '[', l, h,
-	    r->hi_open || isinf(r->hi) ? ')' : ']', u[0] ? " " : "", u);
+	snprintf(buf, n, "%c%s, %s%c%s%s", r->lo_open ? '(' : '[', l, h, r->hi_open ? ')' : ']',
+	    u[0] ? " " : "", u);
 	return buf;
 }
