@@ -365,7 +365,7 @@ Test(preset, out_of_range)
 	error_at(16, "gamma = 6e7 m^-2", "[-beta, beta]");
 	error_at(14, "n = 0.5", "[law] n: value 0.5 is out of range; accepted: [1, inf)");
 	error_at(14, "p = 0.99", "[law] p: value 0.99 is out of range; accepted: [1, inf)");
-	error_at(7, "mass = -2 kg", "[body1] mass: value -2 kg is out of range; accepted: (0, inf] kg");
+	error_at(7, "mass = -2 kg", "[body1] mass: value -2 kg is out of range; accepted: (0, inf) kg");
 	error_at(18, "x0 = -1 mm", "[initial] x0: value -1 mm is out of range; accepted: [0, inf) m");
 	error_at(11, "nu = 0.5", "[body2] nu: value 0.5 is out of range; accepted: (-1, 0.5)");
 }

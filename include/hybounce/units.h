@@ -86,7 +86,8 @@ units_format(double value, struct unit_dim d, int sig, char *buf, size_t n);
  * Picks, for a quantity of plain base unit `base` ("m", "N", "s", "J"),
  * the prefix that suits a typical magnitude, for axis labels: writes the
  * label (e.g. "mm") into label and returns the scale (e.g. 1e-3), so that
- * the axis shows value / scale.
+ * the axis shows value / scale.  A compound base ("m/s", "N s") takes the
+ * prefix on its first factor ("mm/s").
  */
 double
 units_axis(double magnitude, const char *base, char *label, size_t n);

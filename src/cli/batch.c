@@ -39,6 +39,7 @@
 #include "hybounce/arc.h"
 #include "hybounce/check.h"
 #include "hybounce/collisions.h"
+#include "hybounce/columns.h"
 #include "hybounce/csv.h"
 #include "hybounce/law.h"
 #include "hybounce/preset.h"
@@ -326,23 +327,28 @@ struct col {
 	int dec, sci, width;
 };
 
-#define COL(n, b, f, k) { n, b, offsetof(struct collision, f), k, 1, "", 0, 0, 0 }
+enum { NCOLS_MAX = 32 };
 
-static const struct col cols_init[] = {
-	COL("i", NULL, i, COL_INDEX),
-	COL("t_e", "s", te, COL_VALUE),
-	COL("t_s", "s", ts, COL_VALUE),
-	COL("t_d", "s", td, COL_VALUE),
-	COL("t_f", "s", tf, COL_VALUE),
-	COL("v_i", "m/s", vi, COL_VALUE),
-	COL("e", NULL, e, COL_RATIO),
-	COL("x_c^max", "m", xcmax, COL_VALUE),
-	COL("F_c^max", "N", Fcmax, COL_VALUE),
-	COL("x_c^r", "m", xcr, COL_VALUE),
-	COL("W", "J", W, COL_VALUE),
-	COL("Lambda", NULL, Lambda, COL_RATIO),
-};
-enum { NCOLS = sizeof cols_init / sizeof cols_init[0] };
+/* The columns of the batch table, from the table of columns.h. */
+static int
+cols_from_table(struct col *cols)
+{
+	int nc = 0;
+
+	for (int k = 0; k < collision_ncolumns && nc < NCOLS_MAX; k++) {
+		const struct collision_column *cc = &collision_columns[k];
+		if (!(cc->shown & COLUMN_BATCH))
+			continue;
+		memset(&cols[nc], 0, sizeof cols[nc]);
+		cols[nc].name = cc->label;
+		cols[nc].base = cc->unit[0] ? cc->unit : NULL;
+		cols[nc].off = cc->off;
+		cols[nc].kind = cc->index ? COL_INDEX : cc->unit[0] ? COL_VALUE : COL_RATIO;
+		cols[nc].scale = 1;
+		nc++;
+	}
+	return nc;
+}
 
 static double
 col_get(const struct col *c, const struct collision *k)
@@ -362,13 +368,8 @@ col_choose(struct col *c, double mag)
 	if (c->base != NULL) {
 		char lab[16];
 
-		if (strcmp(c->base, "m/s") == 0) {
-			c->scale = units_axis(mag > 0 ? mag : 1, "m", lab, sizeof lab);
-			snprintf(c->unit, sizeof c->unit, "%s/s", lab);
-		} else {
-			c->scale = units_axis(mag > 0 ? mag : 1, c->base, lab, sizeof lab);
-			snprintf(c->unit, sizeof c->unit, "%s", lab);
-		}
+		c->scale = units_axis(mag > 0 ? mag : 1, c->base, lab, sizeof lab);
+		snprintf(c->unit, sizeof c->unit, "%s", lab);
 		ascii_micro(c->unit);
 		if (!(c->scale > 0) || !isfinite(c->scale)) {
 			c->scale = 1;
@@ -430,13 +431,13 @@ col_head(const struct col *c, char *buf, size_t n)
 static void
 print_table(FILE *out, const struct sim *s, const struct collision *live)
 {
-	struct col cols[NCOLS];
+	struct col cols[NCOLS_MAX];
 	size_t nc = sim_ncollisions(s), r;
 	char buf[64];
 	int c, w;
+	const int ncols = cols_from_table(cols);
 
-	memcpy(cols, cols_init, sizeof cols);
-	for (c = 0; c < NCOLS; c++) {
+	for (c = 0; c < ncols; c++) {
 		double mag = 0;
 
 		/* Units from the completed collisions; the live row only when alone. */
@@ -467,7 +468,7 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 	}
 
 	fprintf(out, "collisions (%zu completed)\n", nc);
-	for (c = 0; c < NCOLS; c++) {
+	for (c = 0; c < ncols; c++) {
 		col_head(&cols[c], buf, sizeof buf);
 		fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 	}
@@ -475,7 +476,7 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 	for (r = 0; r < nc; r++) {
 		const struct collision *k = sim_collision(s, r);
 
-		for (c = 0; c < NCOLS; c++) {
+		for (c = 0; c < ncols; c++) {
 			col_cell(&cols[c], k, buf, sizeof buf);
 			fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 		}
@@ -483,7 +484,7 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 	}
 	if (live != NULL) {
 		fprintf(out, "contact in progress (values so far; t_s is the last sample):\n");
-		for (c = 0; c < NCOLS; c++) {
+		for (c = 0; c < ncols; c++) {
 			col_cell(&cols[c], live, buf, sizeof buf);
 			fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 		}

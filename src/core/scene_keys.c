@@ -60,7 +60,7 @@ const struct scene_keydef scene_keydefs[] = {
 	TXT("scene.extension", "law", "extension", ST_EXT, "adhesive", ext, 0,
 	    "rule R1: adhesive continuation to x_c > 0, or none (clamped)"),
 
-	BODY(1, "steel ball", 7800, 0.020, POS_INF,
+	BODY(1, "steel ball", 7800, 0.020, POS,
 	     "mass of body 1: given, or derived from rho and R"),
 	BODY(2, "steel flat", NAN, INF, POS_INF,
 	     "mass of body 2: given (inf: a fixed obstacle), or derived from rho and R"),
@@ -609,7 +609,7 @@ scene_keys_mdoc(char *buf, size_t n)
 			mprintf(&o, "Accepted: text of at most %zu bytes.\n", kd->size - 1);
 		else
 			mprintf(&o, "Accepted: %s.\n", ki.range);
-		mprintf(&o, "Default: %s.\n", def);
+		mprintf(&o, "Default: %s%s\n", def, def[strlen(def) - 1] == '.' ? "" : ".");
 	}
 	mprintf(&o, ".El\n");
 	return o.len;

@@ -521,8 +521,22 @@ units_axis(double magnitude, const char *base, char *label, size_t n)
 {
 	double a = fabs(magnitude), f = 1;
 	const char *b = base;
+	size_t hl = strcspn(base, " /");
 	int k = 5;
 
+	/* A compound unit ("m/s", "N s") takes the prefix on its first factor. */
+	if (base[hl] != '\0') {
+		char head[16];
+		double sc;
+		if (hl >= sizeof head)
+			hl = sizeof head - 1;
+		memcpy(head, base, hl);
+		head[hl] = '\0';
+		sc = units_axis(magnitude, head, label, n);
+		if (strlen(label) + strlen(base + hl) < n)
+			strcat(label, base + hl);
+		return sc;
+	}
 	/* A base of "kg" is prefixed as grams. */
 	if (strcmp(base, "kg") == 0) {
 		b = "g";
