@@ -185,6 +185,7 @@ struct scene_keyinfo {
 	char range[64];     /* accepted range for display, e.g. "(0, 1)" */
 	char help[128];
 	int readonly;       /* derived values */
+	char edit[64];      /* the value as text that reads back exactly ("20 mm") */
 	/* Typed: */
 	int kind;           /* enum scene_key_kind */
 	double number;      /* NUMBER, WHOLE: the SI value; NAN when not given */

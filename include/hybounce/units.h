@@ -83,6 +83,14 @@ char *
 units_format(double value, struct unit_dim d, int sig, char *buf, size_t n);
 
 /*
+ * The shortest units_format() text (6 digits or more) that units_parse() reads back to the
+ * same double ("20 mm", "0.35"), else "%.17g UNIT": for text a user edits.
+ * Output is ASCII: micro is written "u".  Returns buf.
+ */
+char *
+units_format_exact(double value, struct unit_dim d, char *buf, size_t n);
+
+/*
  * Picks, for a quantity of plain base unit `base` ("m", "N", "s", "J"),
  * the prefix that suits a typical magnitude, for axis labels: writes the
  * label (e.g. "mm") into label and returns the scale (e.g. 1e-3), so that

@@ -74,22 +74,6 @@ fmt(double v, struct unit_dim d, char *buf, size_t n)
 	return buf;
 }
 
-/* Replaces a UTF-8 micro sign by 'u', in place: the report is ASCII. */
-static void
-ascii_micro(char *s)
-{
-	char *p;
-
-	while ((p = strstr(s, "\xc2\xb5")) != NULL) {
-		*p = 'u';
-		memmove(p + 1, p + 2, strlen(p + 2) + 1);
-	}
-	while ((p = strstr(s, "\xce\xbc")) != NULL) {
-		*p = 'u';
-		memmove(p + 1, p + 2, strlen(p + 2) + 1);
-	}
-}
-
 /*
  * Prints text word-wrapped to 79 columns, every line starting with indent
  * (the first line too).
@@ -369,8 +353,7 @@ col_choose(struct col *c, double mag)
 		char lab[16];
 
 		c->scale = units_axis(mag > 0 ? mag : 1, c->base, lab, sizeof lab);
-		snprintf(c->unit, sizeof c->unit, "%s", lab);
-		ascii_micro(c->unit);
+		snprintf(c->unit, sizeof c->unit, "%s", lab); /* ASCII: "um" */
 		if (!(c->scale > 0) || !isfinite(c->scale)) {
 			c->scale = 1;
 			snprintf(c->unit, sizeof c->unit, "%s", c->base);

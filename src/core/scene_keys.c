@@ -414,6 +414,7 @@ info_keydef(const struct scene *sc, const struct scene_keydef *kd, struct scene_
 	case ST_STRING:
 		o->kind = SCENE_KEY_TEXT;
 		snprintf(o->value, sizeof o->value, "%s", base + kd->off);
+		snprintf(o->edit, sizeof o->edit, "%s", base + kd->off);
 		snprintf(o->range, sizeof o->range, "text");
 		break;
 	case ST_LONG:
@@ -423,6 +424,7 @@ info_keydef(const struct scene *sc, const struct scene_keydef *kd, struct scene_
 		                                  : (double)*(const int *)(base + kd->off);
 		o->limits = kd->range;
 		snprintf(o->value, sizeof o->value, "%.0f", o->number);
+		snprintf(o->edit, sizeof o->edit, "%.0f", o->number);
 		units_range_str(&kd->range, NULL, o->range, sizeof o->range);
 		break;
 	case ST_DOUBLE: {
@@ -437,8 +439,10 @@ info_keydef(const struct scene *sc, const struct scene_keydef *kd, struct scene_
 			o->number = NAN; /* no material, or no density */
 		if (isnan(o->number))
 			snprintf(o->value, sizeof o->value, "-");
-		else
+		else {
 			units_format(o->number, o->dim, 4, o->value, sizeof o->value);
+			units_format_exact(o->number, o->dim, o->edit, sizeof o->edit);
+		}
 		if (b >= 0 && kd->special == SP_MASS && !sc->body[b].mass_given)
 			snprintf(o->help, sizeof o->help, "derived from rho and R (type a mass to give it)");
 		break;
@@ -464,6 +468,7 @@ info_keydef(const struct scene *sc, const struct scene_keydef *kd, struct scene_
 		if (kd->store == ST_REDUCE)
 			snprintf(o->range + l, sizeof o->range - l, ", flight,contact,com");
 		snprintf(o->value, sizeof o->value, "%s", cur);
+		snprintf(o->edit, sizeof o->edit, "%s", cur);
 		break;
 	}
 	}
@@ -485,6 +490,7 @@ info_lawpar(const struct scene *sc, int i, struct scene_keyinfo *o)
 	units_dim_str(o->dim, o->unit, sizeof o->unit);
 	o->limits = law_param_range(pp);
 	units_format(o->number, o->dim, 4, o->value, sizeof o->value);
+	units_format_exact(o->number, o->dim, o->edit, sizeof o->edit);
 	units_range_str(&o->limits, NULL, o->range, sizeof o->range);
 	o->readonly = (pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived;
 }

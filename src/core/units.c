@@ -516,6 +516,23 @@ units_format(double value, struct unit_dim d, int sig, char *buf, size_t n)
 	return buf;
 }
 
+char *
+units_format_exact(double value, struct unit_dim d, char *buf, size_t n)
+{
+	char u[64];
+	double back;
+
+	for (int sig = 6; sig <= 17; sig++) { /* %g of 6 digits and more: no "2e+01" */
+		units_format(value, d, sig, buf, n);
+		if (units_parse(buf, units_resolve(d, 0, 0), &back, NULL, 0) == 0 &&
+		    memcmp(&back, &value, sizeof back) == 0)
+			return buf;
+	}
+	units_dim_str(d, u, sizeof u);
+	snprintf(buf, n, "%.17g%s%s", value, u[0] ? " " : "", u);
+	return buf;
+}
+
 double
 units_axis(double magnitude, const char *base, char *label, size_t n)
 {

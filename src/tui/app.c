@@ -527,7 +527,7 @@ prompt_edit_begin(struct app *a)
 	a->prompt_kind = PROMPT_EDIT;
 	snprintf(a->prompt_key, sizeof a->prompt_key, "%s", ki.key);
 	snprintf(a->prompt_title, sizeof a->prompt_title, "%.47s %.47s", ki.key, ki.range);
-	snprintf(a->prompt_buf, sizeof a->prompt_buf, "%s", ki.value);
+	snprintf(a->prompt_buf, sizeof a->prompt_buf, "%s", ki.edit); /* reads back exactly */
 }
 
 static void
