@@ -506,6 +506,21 @@ scene_key_info_law(const struct scene *sc, int i, struct scene_keyinfo *out)
 }
 
 int
+scene_law_param_info(const struct law_type *law, int i, struct scene_keyinfo *out)
+{
+	struct scene sc;
+
+	memset(out, 0, sizeof *out);
+	if (law == NULL || i < 0 || i >= law->n_params)
+		return HB_EINVAL;
+	memset(&sc, 0, sizeof sc);
+	sc.law = law;
+	law_defaults(law, sc.par);
+	info_lawpar(&sc, i, out);
+	return HB_OK;
+}
+
+int
 scene_key_info(const struct scene *sc, const struct scene_keydef *kd, struct scene_keyinfo *out)
 {
 	memset(out, 0, sizeof *out);
@@ -569,6 +584,42 @@ mprintf(struct mout *o, const char *fmt, ...)
 		o->len += (size_t)k;
 }
 
+/* "Default: D." (no second period after a text that ends in one) */
+static void
+mdoc_default(struct mout *o, const char *def)
+{
+	size_t l = strlen(def);
+
+	mprintf(o, "Default: %s%s\n", def, l > 0 && def[l - 1] == '.' ? "" : ".");
+}
+
+/* The [law] items: each law's parameters (units at the default exponents). */
+static void
+mdoc_laws(struct mout *o)
+{
+	for (const struct law_type *const *l = law_list(); *l != NULL; l++) {
+		const struct law_type *law = *l;
+		mprintf(o, ".It Li [law] No with Cm law No = Cm %s\n%s: %s.\n", law->name, law->title,
+		    law->description);
+		mprintf(o, ".Bl -tag -width \"description\" -compact\n");
+		for (int i = 0; i < law->n_params; i++) {
+			struct scene_keyinfo ki;
+			char def[64];
+			scene_law_param_info(law, i, &ki);
+			units_format(ki.number, ki.dim, 6, def, sizeof def);
+			mprintf(o, ".It Cm %s\n%s%s\n", law->params[i].name, ki.help,
+			    ki.help[0] && ki.help[strlen(ki.help) - 1] == '.' ? "" : ".");
+			if ((law->params[i].flags & LAW_PARAM_STIFFNESS) && law->k_hertz != NULL)
+				mprintf(o, "Derived from the materials by eq. k_hertz when both bodies "
+				    "have them; typed otherwise.\n");
+			mprintf(o, "Accepted: %s%s%s.\n", ki.range, ki.unit[0] ? ", in " : "",
+			    ki.unit[0] ? ki.unit : "");
+			mdoc_default(o, def);
+		}
+		mprintf(o, ".El\n");
+	}
+}
+
 size_t
 scene_keys_mdoc(char *buf, size_t n)
 {
@@ -589,9 +640,7 @@ scene_keys_mdoc(char *buf, size_t n)
 			if (prev[0])
 				mprintf(&o, ".El\n");
 			if (strcmp(prev, "body2") == 0)
-				mprintf(&o, ".It Li [law]\nThe law's parameters, by the names, units and "
-				    "ranges\n.Fl -list-laws\nshows; the stiffness\n.Cm k\nis typed only "
-				    "when it cannot be derived from the materials.\n");
+				mdoc_laws(&o);
 			mprintf(&o, ".It Li [%s]\n.Bl -tag -width \"description\" -compact\n", sec);
 			snprintf(prev, sizeof prev, "%s", sec);
 		}
@@ -615,7 +664,7 @@ scene_keys_mdoc(char *buf, size_t n)
 			mprintf(&o, "Accepted: text of at most %zu bytes.\n", kd->size - 1);
 		else
 			mprintf(&o, "Accepted: %s.\n", ki.range);
-		mprintf(&o, "Default: %s%s\n", def, def[strlen(def) - 1] == '.' ? "" : ".");
+		mdoc_default(&o, def);
 	}
 	mprintf(&o, ".El\n");
 	return o.len;
