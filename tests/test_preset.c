@@ -3,7 +3,9 @@
  * preset loads and validates; the paper's inferred values from the study
  * presets, to the printed digits; every error path with its FILE:LINE and
  * accepted range; save and load reproduce every field of the scene bit for
- * bit; an unwritable path leaves nothing behind; finding presets by name.
+ * bit, also for 400 scenes of random values and names (law exponents of
+ * many digits, names beginning with ';' or '#'); an unwritable path leaves
+ * nothing behind; finding presets by name; preset_open and --set.
  *
  * The presets are read from $HYBOUNCE_PRESETS or ./presets (the tests run
  * from the repository root).
