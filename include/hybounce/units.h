@@ -14,6 +14,8 @@
  */
 #ifndef HYBOUNCE_UNITS_H
 #define HYBOUNCE_UNITS_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "law.h"
@@ -70,5 +72,7 @@ units_format(double value, struct unit_dim d, int sig, char *buf, size_t n);
  */
 double
 units_axis(double magnitude, const char *base, char *label, size_t n);
+
+HB_END_DECLS
 
 #endif
