@@ -21,31 +21,7 @@
 
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
-
-static const char *const all_presets[] = {
-	"steel-on-bitumen", "ptfe-pom", "permanent-contact-shccl", "permanent-contact-bwshccl",
-	"permanent-contact-bwmcl", "nonunique-rest", "nonunique-separation", "hertz-elastic",
-};
-#define NPRESETS (sizeof all_presets / sizeof all_presets[0])
-
-static const char *
-preset_dir(void)
-{
-	const char *e = getenv("HYBOUNCE_PRESETS");
-
-	if (e != NULL && e[0] != '\0' && strchr(e, ':') == NULL)
-		return e;
-	return "presets";
-}
-
-static void
-load(const char *name, struct scene *sc)
-{
-	char path[1024], msg[512] = "";
-
-	snprintf(path, sizeof path, "%s/%s.preset", preset_dir(), name);
-	cr_assert_eq(preset_load(path, sc, msg, sizeof msg), HB_OK, "%s: %s", path, msg);
-}
+#include "testutil.h"
 
 static double
 par(const struct scene *sc, const char *name)
@@ -54,15 +30,6 @@ par(const struct scene *sc, const char *name)
 
 	cr_assert(i >= 0, "no parameter %s", name);
 	return sc->par[i];
-}
-
-static void
-printed(double x, double value, int sig, const char *what)
-{
-	double ulp = pow(10, floor(log10(fabs(value))) - (sig - 1));
-
-	cr_assert(fabs(x - value) <= 0.5 * ulp, "%s = %.6e, the paper prints %.*e", what, x,
-	    sig - 1, value);
 }
 
 /* Bitwise equality of doubles (NaN equals NaN, 0 differs from -0). */
@@ -129,13 +96,13 @@ scene_same(const struct scene *a, const struct scene *b, const char *what)
 
 Test(preset, every_preset_loads)
 {
-	for (size_t i = 0; i < NPRESETS; i++) {
+	for (size_t i = 0; i < NPAPER_PRESETS; i++) {
 		struct scene sc;
 		char msg[512] = "";
-		load(all_presets[i], &sc);
-		cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s: %s", all_presets[i], msg);
-		cr_assert(sc.name[0] != '\0', "%s has no [scene] name", all_presets[i]);
-		cr_assert(strlen(sc.description) > 20, "%s has no description", all_presets[i]);
+		scene_preset(paper_presets[i], &sc);
+		cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s: %s", paper_presets[i], msg);
+		cr_assert(sc.name[0] != '\0', "%s has no [scene] name", paper_presets[i]);
+		cr_assert(strlen(sc.description) > 20, "%s has no description", paper_presets[i]);
 	}
 }
 
@@ -157,14 +124,14 @@ Test(preset, every_file_in_the_folder_loads)
 		n++;
 	}
 	closedir(d);
-	cr_assert(n >= (int)NPRESETS);
+	cr_assert(n >= (int)NPAPER_PRESETS);
 }
 
 Test(preset, study1_table_one)
 {
 	struct scene sc;
 
-	load("steel-on-bitumen", &sc);
+	scene_preset("steel-on-bitumen", &sc);
 	cr_assert_eq(sc.law, &law_bwmcl);
 	cr_assert_eq(sc.d.system, SCENE_REDUCED);
 	printed(sc.d.Estar, 1.134e9, 4, "E*");
@@ -191,7 +158,7 @@ Test(preset, study2_table_two)
 {
 	struct scene sc;
 
-	load("ptfe-pom", &sc);
+	scene_preset("ptfe-pom", &sc);
 	cr_assert_eq(sc.law, &law_bwshccl);
 	cr_assert_eq(sc.d.system, SCENE_FULL);
 	printed(sc.d.Estar, 5.321e8, 4, "E*");
@@ -219,7 +186,7 @@ Test(preset, study3_table_slow)
 {
 	struct scene sc;
 
-	load("permanent-contact-shccl", &sc);
+	scene_preset("permanent-contact-shccl", &sc);
 	cr_assert_eq(sc.law, &law_shccl);
 	printed(sc.d.Estar, 2.256e9, 4, "E*");
 	printed(sc.d.m, 2.614e-1, 4, "m");
@@ -229,7 +196,7 @@ Test(preset, study3_table_slow)
 	cr_assert(fabs(sc.init.x0 - 40e-6) < 1e-20);
 	cr_assert_eq(sc.run.T, 0.1);
 
-	load("permanent-contact-bwshccl", &sc);
+	scene_preset("permanent-contact-bwshccl", &sc);
 	cr_assert_eq(sc.law, &law_bwshccl);
 	printed(sc.d.kH, 4.254e8, 4, "k_H");
 	cr_assert_eq(par(&sc, "alpha"), 0.35);
@@ -237,7 +204,7 @@ Test(preset, study3_table_slow)
 	cr_assert_eq(par(&sc, "gamma"), 5e9);
 	cr_assert_eq(par(&sc, "c"), 2.15e9);
 
-	load("permanent-contact-bwmcl", &sc);
+	scene_preset("permanent-contact-bwmcl", &sc);
 	cr_assert_eq(sc.law, &law_bwmcl);
 	printed(par(&sc, "k"), 2.138e8, 4, "k");
 	cr_assert_eq(par(&sc, "c"), 4.4e3);
@@ -248,13 +215,13 @@ Test(preset, nonuniqueness_examples)
 {
 	struct scene sc;
 
-	load("nonunique-rest", &sc);
+	scene_preset("nonunique-rest", &sc);
 	cr_assert_eq(sc.init.x0, 0);
 	cr_assert_eq(sc.init.v0, 0);
 	cr_assert_eq(sc.loads.g, 0);
 	cr_assert_eq(sc.run.T, 1);
 
-	load("nonunique-separation", &sc);
+	scene_preset("nonunique-separation", &sc);
 	cr_assert_eq(sc.law, &law_linear);
 	cr_assert_eq(sc.d.system, SCENE_REDUCED);
 	cr_assert_eq(sc.d.m, 1);
@@ -264,7 +231,7 @@ Test(preset, nonuniqueness_examples)
 	cr_assert(fabs(sc.init.x0 - 1e-3) < 1e-19);
 	cr_assert_eq(sc.init.v0, -0.5);
 
-	load("hertz-elastic", &sc);
+	scene_preset("hertz-elastic", &sc);
 	cr_assert_eq(sc.law, &law_hertz);
 	cr_assert(fabs(sc.body[0].R - 0.010) < 1e-18);
 	cr_assert(fabs(sc.init.x0 - 0.005) < 1e-18);
@@ -463,14 +430,14 @@ Test(preset, round_trip_every_preset)
 	char dir[] = "/tmp/hb-preset-XXXXXX";
 
 	cr_assert(mkdtemp(dir) != NULL);
-	for (size_t i = 0; i < NPRESETS; i++) {
+	for (size_t i = 0; i < NPAPER_PRESETS; i++) {
 		struct scene a, b;
 		char path[256], msg[512] = "";
-		load(all_presets[i], &a);
-		snprintf(path, sizeof path, "%s/%s.preset", dir, all_presets[i]);
+		scene_preset(paper_presets[i], &a);
+		snprintf(path, sizeof path, "%s/%s.preset", dir, paper_presets[i]);
 		cr_assert_eq(preset_save(path, &a, msg, sizeof msg), HB_OK, "%s", msg);
 		cr_assert_eq(preset_load(path, &b, msg, sizeof msg), HB_OK, "%s", msg);
-		scene_same(&a, &b, all_presets[i]);
+		scene_same(&a, &b, paper_presets[i]);
 		unlink(path);
 	}
 	rmdir(dir);
@@ -482,7 +449,7 @@ Test(preset, round_trip_edited_scene)
 	char msg[512] = "";
 	static char buf[8192];
 
-	load("ptfe-pom", &a);
+	scene_preset("ptfe-pom", &a);
 	cr_assert_eq(scene_set(&a, "law.alpha", "0.123456789012345678", msg, sizeof msg), HB_OK);
 	cr_assert_eq(scene_set(&a, "initial.v0", "-0.1 mm/s", msg, sizeof msg), HB_OK);
 	cr_assert_eq(scene_set(&a, "run.reductions", "flight,com", msg, sizeof msg), HB_OK);
@@ -580,7 +547,7 @@ Test(preset, resolve_and_list)
 	cr_assert(strstr(dirs[nd - 1], "/presets") != NULL);
 
 	n = preset_list(&list);
-	cr_assert(n >= (int)NPRESETS);
+	cr_assert(n >= (int)NPAPER_PRESETS);
 	for (int i = 0; i < n; i++) {
 		if (i > 0)
 			cr_assert(strcmp(list[i - 1].name, list[i].name) < 0, "not sorted or duplicated");

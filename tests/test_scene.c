@@ -17,19 +17,7 @@
 #include "hybounce/scene.h"
 #include "hybounce/status.h"
 #include "hybounce/units.h"
-
-/*
- * x agrees with the printed value to the digits printed: |x - printed| is
- * at most half a unit in the last printed place.
- */
-static void
-printed(double x, double value, int sig, const char *what)
-{
-	double ulp = pow(10, floor(log10(fabs(value))) - (sig - 1));
-
-	cr_assert(fabs(x - value) <= 0.5 * ulp, "%s = %.6e, the paper prints %.*e", what, x,
-	    sig - 1, value);
-}
+#include "testutil.h"
 
 static void
 set(struct scene *sc, const char *key, const char *text)
