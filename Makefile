@@ -5,6 +5,7 @@
 #   make check      install missing packages, build, run every test
 #   make check-asan the unit tests under AddressSanitizer + UBSan
 #   make bench      the work-precision benchmark (report in build/bench/)
+#   make golden     rewrite tests/golden/*.csv (the collision tables the tests compare with)
 #   make install / uninstall   honour PREFIX, DESTDIR, MANPREFIX, LIBDIR, INCLUDEDIR
 #                   (the binary, man page, presets, and libhybounce: shared, static,
 #                   headers under include/hybounce/, pkg-config file hybounce.pc)
@@ -81,7 +82,7 @@ PUBLIC_H   := $(sort $(wildcard include/hybounce/*.h))
 # Paths under PREFIX are written relative to ${prefix} in hybounce.pc.
 pc_rel      = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
 
-.PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man lib FORCE
+.PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man lib FORCE golden
 
 all: $(BIN) lib
 
@@ -169,6 +170,12 @@ bench: deps
 	@$(MAKE) --no-print-directory $(BENCHBIN)
 	@mkdir -p $(BUILD)/bench
 	./$(BENCHBIN) --out $(BUILD)/bench
+
+# Rewrites the golden collision tables (tests/golden/*.csv) from this engine:
+# only after a change meant to move the numbers; review the diff (tests/test_golden.c).
+golden: $(UNIT)
+	@mkdir -p tests/golden
+	HYBOUNCE_GOLDEN_WRITE=1 ./$(UNIT) --filter 'golden/paper_presets_reproduce_their_collision_tables'
 
 lint-man:
 	mandoc -Tlint -W warning man/hybounce.1
