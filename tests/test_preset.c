@@ -23,15 +23,6 @@
 #include "hybounce/status.h"
 #include "testutil.h"
 
-static double
-par(const struct scene *sc, const char *name)
-{
-	int i = law_param_index(sc->law, name);
-
-	cr_assert(i >= 0, "no parameter %s", name);
-	return sc->par[i];
-}
-
 /* Bitwise equality of doubles (NaN equals NaN, 0 differs from -0). */
 static int
 same(double a, double b)
@@ -138,20 +129,20 @@ Test(preset, study1_table_one)
 	printed(sc.d.Re, 20e-3, 2, "R_e");
 	printed(sc.d.m, 2.614e-1, 4, "m");
 	printed(sc.d.kH, 2.138e8, 4, "k_H");
-	printed(par(&sc, "k"), 2.138e8, 4, "k");
+	printed(scene_par(&sc, "k"), 2.138e8, 4, "k");
 	cr_assert_eq(sc.d.k_derived, 1);
-	cr_assert_eq(par(&sc, "A"), 1);
-	cr_assert_eq(par(&sc, "alpha"), 0.35);
-	cr_assert_eq(par(&sc, "beta"), 5e7);
-	cr_assert_eq(par(&sc, "gamma"), 5e7);
-	cr_assert_eq(par(&sc, "n"), 2);
-	cr_assert_eq(par(&sc, "p"), 1.5);
-	cr_assert_eq(par(&sc, "c"), 4.4e3);
+	cr_assert_eq(scene_par(&sc, "A"), 1);
+	cr_assert_eq(scene_par(&sc, "alpha"), 0.35);
+	cr_assert_eq(scene_par(&sc, "beta"), 5e7);
+	cr_assert_eq(scene_par(&sc, "gamma"), 5e7);
+	cr_assert_eq(scene_par(&sc, "n"), 2);
+	cr_assert_eq(scene_par(&sc, "p"), 1.5);
+	cr_assert_eq(scene_par(&sc, "c"), 4.4e3);
 	cr_assert(fabs(sc.init.x0 - 0.020) < 1e-17);
 	cr_assert_eq(sc.init.v0, 0);
 	cr_assert_eq(sc.loads.g, 9.81);
 	cr_assert_eq(sc.run.T, 0.5);
-	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / par(&sc, "p")), 5.240e-6, 4, "x_c^s");
+	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / scene_par(&sc, "p")), 5.240e-6, 4, "x_c^s");
 }
 
 Test(preset, study2_table_two)
@@ -167,10 +158,10 @@ Test(preset, study2_table_two)
 	printed(sc.d.m2, 4.725e-2, 4, "m2");
 	printed(sc.d.m, 2.879e-2, 4, "m");
 	printed(sc.d.eta, 0.6094, 4, "eta");
-	printed(par(&sc, "k"), 7.095e7, 4, "k");
-	cr_assert_eq(par(&sc, "beta"), 2.409e8);
-	cr_assert_eq(par(&sc, "gamma"), 2.409e8);
-	cr_assert_eq(par(&sc, "c"), 2.5e7);
+	printed(scene_par(&sc, "k"), 7.095e7, 4, "k");
+	cr_assert_eq(scene_par(&sc, "beta"), 2.409e8);
+	cr_assert_eq(scene_par(&sc, "gamma"), 2.409e8);
+	cr_assert_eq(scene_par(&sc, "c"), 2.5e7);
 	cr_assert_eq(sc.loads.ramp, 1);
 	cr_assert_eq(sc.loads.Fe0, 0.5759);
 	cr_assert_eq(sc.loads.Te, 0.2);
@@ -190,25 +181,25 @@ Test(preset, study3_table_slow)
 	cr_assert_eq(sc.law, &law_shccl);
 	printed(sc.d.Estar, 2.256e9, 4, "E*");
 	printed(sc.d.m, 2.614e-1, 4, "m");
-	printed(par(&sc, "k"), 4.254e8, 4, "k");
-	cr_assert_eq(par(&sc, "c"), 4.3e9);
-	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / par(&sc, "p")), 3.312e-6, 4, "x_c^s");
+	printed(scene_par(&sc, "k"), 4.254e8, 4, "k");
+	cr_assert_eq(scene_par(&sc, "c"), 4.3e9);
+	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / scene_par(&sc, "p")), 3.312e-6, 4, "x_c^s");
 	cr_assert(fabs(sc.init.x0 - 40e-6) < 1e-20);
 	cr_assert_eq(sc.run.T, 0.1);
 
 	scene_preset("permanent-contact-bwshccl", &sc);
 	cr_assert_eq(sc.law, &law_bwshccl);
 	printed(sc.d.kH, 4.254e8, 4, "k_H");
-	cr_assert_eq(par(&sc, "alpha"), 0.35);
-	cr_assert_eq(par(&sc, "beta"), 5e9);
-	cr_assert_eq(par(&sc, "gamma"), 5e9);
-	cr_assert_eq(par(&sc, "c"), 2.15e9);
+	cr_assert_eq(scene_par(&sc, "alpha"), 0.35);
+	cr_assert_eq(scene_par(&sc, "beta"), 5e9);
+	cr_assert_eq(scene_par(&sc, "gamma"), 5e9);
+	cr_assert_eq(scene_par(&sc, "c"), 2.15e9);
 
 	scene_preset("permanent-contact-bwmcl", &sc);
 	cr_assert_eq(sc.law, &law_bwmcl);
-	printed(par(&sc, "k"), 2.138e8, 4, "k");
-	cr_assert_eq(par(&sc, "c"), 4.4e3);
-	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / par(&sc, "p")), 5.240e-6, 4, "x_c^s");
+	printed(scene_par(&sc, "k"), 2.138e8, 4, "k");
+	cr_assert_eq(scene_par(&sc, "c"), 4.4e3);
+	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / scene_par(&sc, "p")), 5.240e-6, 4, "x_c^s");
 }
 
 Test(preset, nonuniqueness_examples)
@@ -226,7 +217,7 @@ Test(preset, nonuniqueness_examples)
 	cr_assert_eq(sc.d.system, SCENE_REDUCED);
 	cr_assert_eq(sc.d.m, 1);
 	cr_assert_eq(sc.d.k_derived, 0);
-	cr_assert_eq(par(&sc, "k"), 1e4);
+	cr_assert_eq(scene_par(&sc, "k"), 1e4);
 	cr_assert_eq(sc.body[0].has_material, 0);
 	cr_assert(fabs(sc.init.x0 - 1e-3) < 1e-19);
 	cr_assert_eq(sc.init.v0, -0.5);
@@ -303,7 +294,7 @@ Test(preset, good_text_loads)
 
 	cr_assert_eq(load_with(0, NULL, msg, sizeof msg, &sc), HB_OK, "%s", msg);
 	cr_assert_eq(sc.law, &law_bwmcl);
-	cr_assert_eq(par(&sc, "alpha"), 0.35);
+	cr_assert_eq(scene_par(&sc, "alpha"), 0.35);
 }
 
 Test(preset, malformed_line)
@@ -391,10 +382,10 @@ Test(preset, order_independent_and_comments)
 
 	cr_assert_eq(preset_load_string(text, "o.preset", &sc, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(sc.law, &law_bwmcl);
-	cr_assert_eq(par(&sc, "beta"), 2.385e4);
-	cr_assert_eq(par(&sc, "gamma"), 1e4);
-	cr_assert_eq(par(&sc, "n"), 3);
-	cr_assert_eq(par(&sc, "c"), 4400);
+	cr_assert_eq(scene_par(&sc, "beta"), 2.385e4);
+	cr_assert_eq(scene_par(&sc, "gamma"), 1e4);
+	cr_assert_eq(scene_par(&sc, "n"), 3);
+	cr_assert_eq(scene_par(&sc, "c"), 4400);
 	cr_assert_str_eq(sc.name, "indented key");
 }
 

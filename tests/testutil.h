@@ -87,6 +87,16 @@ printed(double x, double value, int sig, const char *what)
 		          #a, a_, b_, fabs(a_ - b_), t_);                                  \
 	} while (0)
 
+/* The value of the scene's law parameter NAME; fails the test if the law has none. */
+static inline double
+scene_par(const struct scene *sc, const char *name)
+{
+	int i = law_param_index(sc->law, name);
+
+	cr_assert(i >= 0, "%s has no parameter %s", sc->law->name, name);
+	return sc->par[i];
+}
+
 /* Loads a scene from INI text; fails the test on error. */
 static inline void
 scene_from(const char *ini, struct scene *sc)
