@@ -107,15 +107,18 @@ $(BUILD)/tests/%.o: tests/%.c
 $(CORE_LIB): $(CORE_OBJ)
 	@mkdir -p $(@D)
 	rm -f $@ && ar rcs $@ $^
-# The core objects are rebuilt when LIB_CFLAGS change (a build tree made before them).
-$(BUILD)/lib-cflags: FORCE
+# The objects are rebuilt when what is compiled into them changes: the
+# library flags, or the preset folder of PREFIX (make PREFIX=/opt/x install
+# after a plain make installs a program that looks in /opt/x).
+BUILD_CONFIG := $(LIB_CFLAGS) $(VERSION) $(PREFIX) $(DATADIR) $(LIBDIR) $(INCLUDEDIR)
+$(BUILD)/build-config: FORCE
 	@mkdir -p $(@D)
-	@echo '$(LIB_CFLAGS)' | cmp -s - $@ || echo '$(LIB_CFLAGS)' >$@
-$(CORE_OBJ): $(BUILD)/lib-cflags
+	@echo '$(BUILD_CONFIG)' | cmp -s - $@ || echo '$(BUILD_CONFIG)' >$@
+$(CORE_OBJ) $(TUI_OBJ) $(CLI_OBJ): $(BUILD)/build-config
 FORCE:
 $(SHLIB): $(CORE_OBJ)
 	$(CC) -shared $(LDFLAGS) -Wl,-soname,$(SHLIB_SO) -Wl,--no-undefined -o $@ $^ $(CORE_LIBS)
-$(PCFILE): hybounce.pc.in Makefile
+$(PCFILE): hybounce.pc.in $(BUILD)/build-config
 	@mkdir -p $(@D)
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(call pc_rel,$(LIBDIR))|' \
 	    -e 's|@INCLUDEDIR@|$(call pc_rel,$(INCLUDEDIR))|' -e 's|@VERSION@|$(VERSION)|' $< >$@
@@ -192,6 +195,7 @@ install: $(BIN) lib
 	install -m 644 $(CORE_LIB) $(DESTDIR)$(LIBDIR)/libhybounce.a
 	install -m 644 $(PUBLIC_H) $(DESTDIR)$(INCLUDEDIR)/hybounce/
 	install -m 644 $(PCFILE) $(DESTDIR)$(PKGCONFIGDIR)/hybounce.pc
+	@if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ] && command -v ldconfig >/dev/null; then ldconfig; fi
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/hybounce $(DESTDIR)$(MANPREFIX)/man1/hybounce.1

@@ -14,12 +14,14 @@ case $BIN in
 *) BUILD=$(dirname "$BIN") ;;
 esac
 DEST=$T/dest
-PREFIX=/usr/local
-LIB=$DEST$PREFIX/lib
-MAKEFLAGS= MAKELEVEL= make -s BUILD="$BUILD" DESTDIR="$DEST" PREFIX="$PREFIX" install \
-    >"$T/install.log" 2>&1
+# The PREFIX the build was made for (make's default unless given): installed
+# with it, so that nothing is rebuilt.
+MAKEFLAGS= MAKELEVEL= make -s BUILD="$BUILD" DESTDIR="$DEST" install >"$T/install.log" 2>&1
 rc=$?
-if [ "$rc" -eq 0 ]; then ok "make install into a DESTDIR"
+pc=$(find "$DEST" -name hybounce.pc | head -n 1)
+PREFIX=$(sed -n 's/^prefix=//p' "$pc" 2>/dev/null)
+LIB=$(dirname "$(dirname "${pc:-$DEST/none/x}")")
+if [ "$rc" -eq 0 ] && [ -n "$pc" ] && [ -n "$PREFIX" ]; then ok "make install into a DESTDIR (prefix $PREFIX)"
 else notok "make install into a DESTDIR (exit $rc)" "$T/install.log"; fi
 
 missing=
@@ -66,8 +68,8 @@ else notok "every public header has HB_BEGIN_DECLS / HB_END_DECLS (not:$unguarde
 
 export PKG_CONFIG_PATH="$LIB/pkgconfig" PKG_CONFIG_SYSROOT_DIR="$DEST"
 PC=$(pkg-config --cflags --libs hybounce 2>"$T/pc.err")
-if [ -n "$PC" ]; then ok "pkg-config --cflags --libs hybounce: $PC"
-else notok "pkg-config --cflags --libs hybounce" "$T/pc.err"; fi
+if [ -n "$PC" ]; then ok "pkg-config --cflags --libs hybounce finds the installed library"; echo "# $PC"
+else notok "pkg-config --cflags --libs hybounce finds the installed library" "$T/pc.err"; fi
 PCS=$(pkg-config --static --cflags --libs hybounce 2>/dev/null)
 # A sanitized library (make check-asan) needs the sanitizer runtime first.
 SAN=
@@ -139,8 +141,7 @@ objdump -t "$BUILD"/src/core/*.o |
 if [ ! -s "$T/statics" ]; then ok "the core keeps no mutable static state"
 else notok "the core keeps no mutable static state (found: $(tr '\n' ' ' <"$T/statics"))"; fi
 
-MAKEFLAGS= MAKELEVEL= make -s BUILD="$BUILD" DESTDIR="$DEST" PREFIX="$PREFIX" uninstall \
-    >"$T/uninstall.log" 2>&1
+MAKEFLAGS= MAKELEVEL= make -s BUILD="$BUILD" DESTDIR="$DEST" uninstall >"$T/uninstall.log" 2>&1
 left=$(find "$DEST" ! -type d | sed "s|^$DEST||")
 if [ -z "$left" ]; then ok "make uninstall removes every installed file"
 else notok "make uninstall removes every installed file (left:$(echo $left))"; fi
