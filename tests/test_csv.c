@@ -24,16 +24,7 @@
 #include "hybounce/preset.h"
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
-
-static const char *
-preset_dir(void)
-{
-	const char *e = getenv("HYBOUNCE_PRESETS");
-
-	if (e != NULL && e[0] != '\0' && strchr(e, ':') == NULL)
-		return e;
-	return "presets";
-}
+#include "testutil.h"
 
 /* Loads a preset, applies KEY=VALUE overrides, runs it to the end. */
 static struct sim *
@@ -51,24 +42,6 @@ run(const char *name, const char *const *set)
 	cr_assert(s != NULL, "%s", msg);
 	cr_assert_eq(sim_run(s), HB_OK, "%s", sim_errmsg(s));
 	return s;
-}
-
-static char *
-slurp(const char *path)
-{
-	FILE *f = fopen(path, "rb");
-	char *buf;
-	long len;
-
-	cr_assert(f != NULL, "%s missing", path);
-	fseek(f, 0, SEEK_END);
-	len = ftell(f);
-	fseek(f, 0, SEEK_SET);
-	buf = malloc((size_t)len + 1);
-	cr_assert(fread(buf, 1, (size_t)len, f) == (size_t)len);
-	buf[len] = '\0';
-	fclose(f);
-	return buf;
 }
 
 /* Splits the next line of *p into at most max fields (in place). */

@@ -20,6 +20,8 @@
  */
 #ifndef HYBOUNCE_ARC_H
 #define HYBOUNCE_ARC_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "law.h"
@@ -108,5 +110,7 @@ int arc_thinned(const struct arc *a);
 
 /* Bytes held by the arc. */
 size_t arc_bytes(const struct arc *a);
+
+HB_END_DECLS
 
 #endif

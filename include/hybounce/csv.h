@@ -13,6 +13,8 @@
  */
 #ifndef HYBOUNCE_CSV_H
 #define HYBOUNCE_CSV_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include <stdio.h>
@@ -49,5 +51,7 @@ csv_stream_collisions(FILE *f, const struct sim *s, char *msg, size_t n);
 int
 csv_export(const struct sim *s, const char *trace_path, const char *coll_path,
            char *scene_out, size_t sn, char *msg, size_t n);
+
+HB_END_DECLS
 
 #endif

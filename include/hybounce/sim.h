@@ -33,6 +33,8 @@
  */
 #ifndef HYBOUNCE_SIM_H
 #define HYBOUNCE_SIM_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "scene.h"
@@ -157,5 +159,7 @@ sim_set_scene(struct sim *s, const struct scene *sc, int *restarted, char *msg, 
 /* Discards the run and starts again from t = 0 with the current scene. */
 int
 sim_restart(struct sim *s);
+
+HB_END_DECLS
 
 #endif

@@ -633,8 +633,8 @@ preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 const char *const *
 preset_dirs(void)
 {
-	static char store[PRESET_MAX_DIRS][512];
-	static const char *dirs[PRESET_MAX_DIRS + 1];
+	static _Thread_local char store[PRESET_MAX_DIRS][512];
+	static _Thread_local const char *dirs[PRESET_MAX_DIRS + 1];
 	const char *env = getenv("HYBOUNCE_PRESETS");
 	int k = 0;
 

@@ -3,15 +3,7 @@
 # the same number of fields on every row and numbers that parse, plus the
 # scene as a .preset beside them; batch on that saved preset reproduces the
 # collisions CSV byte for byte.  Done for every preset in presets/.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
+. "$(dirname "$0")/common.inc"
 
 COLL_HEADER='i,t_e,t_s,t_d,t_f,v_i,e,x_c_max,F_c_max,x_c_r,W,J_Fc,J_Fe,Lambda'
 ARC_HEADER_RE='^t,j,q_c,x,v,x_c(,z_c1(,z_c2)?)?,F_c,F_er(,x_m,v_m,v_m1,v_m2)?$'
