@@ -37,6 +37,7 @@
 #include <unistd.h>
 
 #include "hybounce/arc.h"
+#include "hybounce/atomic.h"
 #include "hybounce/check.h"
 #include "hybounce/collisions.h"
 #include "hybounce/csv.h"
@@ -174,16 +175,16 @@ ends_with(const char *path, const char *suffix)
 }
 
 /*
- * Checks, before the run, that an export path can be written: its folder
- * exists and is writable, and the path is not a folder.  Returns 0, or 2
- * after printing why.
+ * Checks, before the run, that an export path can be written (atomic.h:
+ * a new or replaced file needs a writable folder, a device or FIFO is
+ * written in place, a folder is refused).  Returns 0, or 2 after printing
+ * why.
  */
 static int
 check_export_path(const char *opt, const char *path)
 {
-	char dir[4096];
-	const char *slash;
-	struct stat st;
+	struct atomic_target t;
+	char msg[1024];
 
 	if (path[0] == '\0') {
 		fprintf(stderr, PROG ": %s: empty file name; expected a path such as "
@@ -196,36 +197,28 @@ check_export_path(const char *opt, const char *path)
 		        opt, path);
 		return 2;
 	}
-	if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-		fprintf(stderr, PROG ": %s %s: is a folder; expected a file path\n",
-		        opt, path);
-		return 2;
-	}
-	slash = strrchr(path, '/');
-	if (slash == NULL)
-		snprintf(dir, sizeof dir, ".");
-	else if (slash == path)
-		snprintf(dir, sizeof dir, "/");
-	else
-		snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
-	if (stat(dir, &st) != 0) {
-		fprintf(stderr, PROG ": %s %s: cannot write there: folder %s: %s; "
-		        "expected a path in an existing, writable folder\n",
-		        opt, path, dir, strerror(errno));
-		return 2;
-	}
-	if (!S_ISDIR(st.st_mode)) {
-		fprintf(stderr, PROG ": %s %s: cannot write there: %s is not a folder\n",
-		        opt, path, dir);
-		return 2;
-	}
-	if (access(dir, W_OK) != 0) {
-		fprintf(stderr, PROG ": %s %s: cannot write there: folder %s: %s; "
-		        "expected a path in an existing, writable folder\n",
-		        opt, path, dir, strerror(errno));
+	msg[0] = '\0';
+	if (atomic_probe(path, &t, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": %s %s: cannot write there: %s; expected a file "
+		        "path in an existing, writable folder\n", opt, path, msg);
 		return 2;
 	}
 	return 0;
+}
+
+/* "wrote PATH", and how when it was not a plain new file. */
+static void
+print_wrote(const char *path, const struct atomic_target *t)
+{
+	fprintf(stderr, "wrote %s", path);
+	if (t->how == ATOMIC_IN_PLACE)
+		fprintf(stderr, " (in place: not a regular file)");
+	else if (t->via_link)
+		fprintf(stderr, " (through the link, to %s%s)", t->real,
+		        t->how == ATOMIC_REPLACE ? ", replacing it" : "");
+	else if (t->how == ATOMIC_REPLACE)
+		fprintf(stderr, " (replaced the existing file)");
+	fprintf(stderr, "\n");
 }
 
 /* ------------------------------------------------------------------ */
@@ -626,7 +619,7 @@ int
 batch_run(const struct batch_options *o)
 {
 	struct scene sc;
-	char path[1024], msg[1024], scene_out[1100];
+	char path[1024], msg[1024];
 	struct collision live;
 	struct sim *s;
 	int i, status = 0, have_live, rc;
@@ -669,6 +662,12 @@ batch_run(const struct batch_options *o)
 	if (trace_file != NULL && coll_file != NULL && strcmp(trace_file, coll_file) == 0) {
 		fprintf(stderr, PROG ": --trace and --collisions name the same file %s; "
 		        "expected two different paths\n", trace_file);
+		return 2;
+	}
+	msg[0] = '\0';
+	if ((trace_file != NULL || coll_file != NULL) &&
+	    csv_export_check(trace_file, coll_file, path, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": export: %s\n", msg);
 		return 2;
 	}
 
@@ -720,19 +719,20 @@ batch_run(const struct batch_options *o)
 	 * ends the process by SIGPIPE, and the files are written by then.
 	 */
 	if (trace_file != NULL || coll_file != NULL) {
+		struct csv_export_report rep;
+
 		msg[0] = '\0';
-		scene_out[0] = '\0';
-		if (csv_export(s, trace_file, coll_file, scene_out, sizeof scene_out,
-		               msg, sizeof msg) != HB_OK) {
+		if (csv_export_files(s, trace_file, coll_file, path, &rep, msg,
+		                     sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": export failed: %s\n", msg);
 			status = 2;
 		} else {
 			if (trace_file != NULL)
-				fprintf(stderr, "wrote %s\n", trace_file);
+				print_wrote(trace_file, &rep.target[0]);
 			if (coll_file != NULL)
-				fprintf(stderr, "wrote %s\n", coll_file);
-			if (scene_out[0])
-				fprintf(stderr, "wrote %s\n", scene_out);
+				print_wrote(coll_file, &rep.target[1]);
+			if (rep.scene[0])
+				print_wrote(rep.scene, &rep.target[2]);
 		}
 	}
 	if (trace_out || coll_out) {
