@@ -12,6 +12,8 @@
  *  - anything else that can be opened for writing (a device such as
  *    /dev/null, a FIFO, a terminal): it is written in place, never
  *    replaced (ATOMIC_IN_PLACE); no promise of atomicity can be kept there;
+ *    so is any existing path under /dev/ or /proc/ (/dev/stdout leads to
+ *    whatever standard output is, a regular file too);
  *  - a folder: refused.
  *
  * Every file of a set gets the same modification time, the set's identifier

@@ -212,7 +212,7 @@ print_wrote(const char *path, const struct atomic_target *t)
 {
 	fprintf(stderr, "wrote %s", path);
 	if (t->how == ATOMIC_IN_PLACE)
-		fprintf(stderr, " (in place: not a regular file)");
+		fprintf(stderr, " (written in place)");
 	else if (t->via_link)
 		fprintf(stderr, " (through the link, to %s%s)", t->real,
 		        t->how == ATOMIC_REPLACE ? ", replacing it" : "");

@@ -104,7 +104,10 @@ atomic_probe(const char *path, struct atomic_target *t, char *msg, size_t n)
 		if (S_ISDIR(st.st_mode))
 			return status_set(msg, n, HB_EINVAL, "%s: is a folder; expected a file",
 			                  path);
-		if (!S_ISREG(st.st_mode)) {
+		/* /dev/stdout, /dev/fd/N, /proc/PID/fd/N lead to an open file of
+		 * some process: written in place, like the device they stand for. */
+		if (!S_ISREG(st.st_mode) || strncmp(path, "/dev/", 5) == 0 ||
+		    strncmp(path, "/proc/", 6) == 0) {
 			strcpy(t->real, path);
 			t->how = ATOMIC_IN_PLACE;
 			if (access(path, W_OK) != 0)
@@ -207,7 +210,9 @@ atomic_add(struct atomic_set *set, const char *path, char *msg, size_t n)
 	if (atomic_probe(path, &af->target, msg, n) != HB_OK)
 		return NULL;
 	if (af->target.how == ATOMIC_IN_PLACE) {
-		fd = open(af->target.real, O_WRONLY | O_NOCTTY | O_CLOEXEC);
+		/* O_APPEND: a regular file behind /dev/stdout keeps what the
+		 * process wrote there before (a report). */
+		fd = open(af->target.real, O_WRONLY | O_APPEND | O_NOCTTY | O_CLOEXEC);
 		if (fd < 0) {
 			status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
 			return NULL;

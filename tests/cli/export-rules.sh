@@ -48,7 +48,7 @@ fi
 (cd "$W" && "$BIN" -b hertz-elastic $RUN -t /dev/null -c coll.csv >/dev/null 2>"$T/err")
 rc=$?
 if [ "$rc" -eq 0 ] && [ -c /dev/null ] && [ ! -e /dev/null.preset ] &&
-    grep -q '^wrote /dev/null (in place: not a regular file)$' "$T/err" &&
+    grep -q '^wrote /dev/null (written in place)$' "$T/err" &&
     grep -q '^wrote coll.preset$' "$T/err" && [ -s "$W/coll.preset" ]; then
 	ok "-t /dev/null: written in place, no .preset beside it, the scene beside coll.csv"
 else
