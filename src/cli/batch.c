@@ -706,7 +706,13 @@ batch_run(const struct batch_options *o)
 				status = 1;
 		}
 	}
-	fflush(out);
+	/* Now: the messages below come after the report. */
+	if (out == stdout) {
+		if (batch_flush_stdout() != 0)
+			status = 2;
+	} else {
+		fflush(out);
+	}
 	/* After the report, so that it is the last thing a terminal shows. */
 	if (status == 1 && sim_end(s) == SIM_END_FAIL)
 		fprintf(stderr, PROG ": the run failed: %s\n",
@@ -747,9 +753,27 @@ batch_run(const struct batch_options *o)
 			fprintf(stderr, PROG ": export failed: standard output: %s\n", msg);
 			status = 2;
 		}
+		clearerr(stdout);   /* said here (or quiet on EPIPE): not again in main */
 	}
 	sim_free(s);
 	return status;
+}
+
+int
+batch_flush_stdout(void)
+{
+	int e = 0;
+
+	errno = 0;
+	if (fflush(stdout) != 0)
+		e = errno != 0 ? errno : EIO;
+	else if (ferror(stdout))
+		e = EIO;
+	clearerr(stdout);
+	if (e == 0 || e == EPIPE)
+		return 0;
+	fprintf(stderr, PROG ": write error on standard output: %s\n", strerror(e));
+	return 2;
 }
 
 /* ------------------------------------------------------------------ */
