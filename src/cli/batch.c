@@ -29,11 +29,13 @@
  */
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "hybounce/arc.h"
@@ -559,7 +561,7 @@ print_jumps(FILE *out, const struct arc *a)
 }
 
 static void
-print_summary(FILE *out, const struct sim *s)
+print_summary(FILE *out, const struct sim *s, int sig)
 {
 	const struct scene *sc = sim_scene(s);
 	const struct arc *a = sim_arc(s);
@@ -569,7 +571,13 @@ print_summary(FILE *out, const struct sim *s)
 	int i;
 
 	fprintf(out, "summary\n");
-	fprintf(out, "  ended       %s\n", sim_end_str(s));
+	if (sig != 0)
+		fprintf(out, "  ended       interrupted by %s at t = %s, j = %ld (run.T = %s)\n",
+		        sig == SIGINT ? "SIGINT" : "SIGTERM",
+		        fmt(last != NULL ? last->t : 0, UNIT_TIME, b1, sizeof b1),
+		        last != NULL ? last->j : 0L, fmt(sc->run.T, UNIT_TIME, b2, sizeof b2));
+	else
+		fprintf(out, "  ended       %s\n", sim_end_str(s));
 	if (last != NULL) {
 		fprintf(out, "  end state   t = %s, j = %ld, q_c = %d, x = %s, v = %s, x_c = %s",
 		        fmt(last->t, UNIT_TIME, b1, sizeof b1), last->j, last->q,
@@ -614,6 +622,82 @@ print_summary(FILE *out, const struct sim *s)
 }
 
 /* ------------------------------------------------------------------ */
+/* The run: signals and progress                                       */
+
+static volatile sig_atomic_t got_signal;
+
+static void
+on_signal(int sig)
+{
+	got_signal = sig;
+}
+
+/* Catches sig once, unless it was ignored on entry; *old to restore. */
+static void
+watch_signal(int sig, struct sigaction *old)
+{
+	struct sigaction sa;
+
+	memset(&sa, 0, sizeof sa);
+	sigaction(sig, NULL, old);
+	if (old->sa_handler == SIG_IGN)
+		return;
+	sa.sa_handler = on_signal;
+	sa.sa_flags = SA_RESETHAND;
+	sigemptyset(&sa.sa_mask);
+	sigaction(sig, &sa, NULL);
+}
+
+static double
+wall_seconds(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/*
+ * Runs s in slices of 0.1 s to its end or to a caught signal (*sig).
+ * Past one second, standard error a terminal, a progress line there,
+ * rewritten in place four times a second and erased at the end.
+ */
+static int
+run_watched(struct sim *s, int *sig)
+{
+	const double T = sim_scene(s)->run.T;
+	const int tty = isatty(STDERR_FILENO);
+	double start = wall_seconds(), shown = 0;
+	int rc = HB_OK;
+
+	got_signal = 0;
+	while (got_signal == 0) {
+		double now;
+
+		rc = sim_advance(s, 0, 0.1);
+		if (rc != HB_OK || sim_end(s) != SIM_RUNNING)
+			break;
+		now = wall_seconds();
+		if (tty && now - start > 1.0 && now - shown >= 0.25) {
+			const struct arc_sample *p = arc_last(sim_arc(s));
+			char tb[32], Tb[32];
+
+			fmt(p != NULL ? p->t : 0, UNIT_TIME, tb, sizeof tb);
+			fmt(T, UNIT_TIME, Tb, sizeof Tb);
+			fprintf(stderr, "\r" PROG ": t = %s of %s (%.0f%%), j = %ld, %zu collisions, "
+			        "%.0f s; Ctrl-C stops and writes\033[K", tb, Tb,
+			        p != NULL && T > 0 ? 100 * p->t / T : 0.0,
+			        p != NULL ? p->j : 0L, sim_ncollisions(s), now - start);
+			shown = now;
+		}
+	}
+	if (shown > 0)
+		fprintf(stderr, "\r\033[K");
+	*sig = got_signal;
+	return rc;
+}
+
+/* ------------------------------------------------------------------ */
 
 int
 batch_run(const struct batch_options *o)
@@ -622,7 +706,8 @@ batch_run(const struct batch_options *o)
 	char path[1024], msg[1024];
 	struct collision live;
 	struct sim *s;
-	int i, status = 0, have_live, rc;
+	struct sigaction old_term, old_int;
+	int i, status = 0, have_live, rc, sig = 0;
 	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
 	/* The files to export; "-" goes to stdout after them. */
 	const char *trace_file = trace_out ? NULL : o->trace;
@@ -671,13 +756,23 @@ batch_run(const struct batch_options *o)
 		return 2;
 	}
 
+	/*
+	 * SIGTERM and SIGINT end the run, and what was computed is reported
+	 * and written, as after a numerical failure; a second one ends the
+	 * process (SA_RESETHAND).  A signal ignored on entry (nohup, a
+	 * background job of a script) stays ignored.
+	 */
+	watch_signal(SIGTERM, &old_term);
+	watch_signal(SIGINT, &old_int);
 	msg[0] = '\0';
 	s = sim_new(&sc, msg, sizeof msg);
 	if (s == NULL) {
 		fprintf(stderr, PROG ": %s: %s\n", path, msg[0] ? msg : "cannot start the run");
+		sigaction(SIGTERM, &old_term, NULL);
+		sigaction(SIGINT, &old_int, NULL);
 		return 2;
 	}
-	rc = sim_run(s);
+	rc = run_watched(s, &sig);
 	if (sim_end(s) == SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE))
 		status = 1;
 
@@ -689,7 +784,7 @@ batch_run(const struct batch_options *o)
 	}
 	if (o->jumps)
 		print_jumps(out, sim_arc(s));
-	print_summary(out, s);
+	print_summary(out, s, sig);
 
 	if (o->check) {
 		msg[0] = '\0';
@@ -714,7 +809,10 @@ batch_run(const struct batch_options *o)
 		fflush(out);
 	}
 	/* After the report, so that it is the last thing a terminal shows. */
-	if (status == 1 && sim_end(s) == SIM_END_FAIL)
+	if (sig != 0)
+		fprintf(stderr, PROG ": interrupted by %s: what was computed is reported "
+		        "and written\n", sig == SIGINT ? "SIGINT" : "SIGTERM");
+	else if (status == 1 && sim_end(s) == SIM_END_FAIL)
 		fprintf(stderr, PROG ": the run failed: %s\n",
 		        sim_errmsg(s)[0] ? sim_errmsg(s) : status_str(rc));
 	else if (rc != HB_OK && rc != HB_EDONE)
@@ -756,7 +854,12 @@ batch_run(const struct batch_options *o)
 		clearerr(stdout);   /* said here (or quiet on EPIPE): not again in main */
 	}
 	sim_free(s);
-	return status;
+	sigaction(SIGTERM, &old_term, NULL);
+	sigaction(SIGINT, &old_int, NULL);
+	if (sig == 0)
+		sig = got_signal;   /* caught while reporting: the report is whole */
+	/* An interrupted run: 128 + the signal, as a shell reports a kill. */
+	return sig != 0 ? 128 + sig : status;
 }
 
 int
