@@ -498,7 +498,11 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 		cols[c].width = w;
 	}
 
-	fprintf(out, "collisions (%zu completed)\n", nc);
+	if (sim_collisions_total(s) > (long)nc)
+		fprintf(out, "collisions (%ld completed; %zu kept, the older ones thinned)\n",
+		        sim_collisions_total(s), nc);
+	else
+		fprintf(out, "collisions (%zu completed)\n", nc);
 	for (c = 0; c < NCOLS; c++) {
 		col_head(&cols[c], buf, sizeof buf);
 		fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
@@ -588,7 +592,12 @@ print_summary(FILE *out, const struct sim *s, int sig)
 			fprintf(out, ", z_c%d = %.6g", i + 1, last->z[i]);
 		fprintf(out, "\n");
 	}
-	fprintf(out, "  collisions  %zu\n", sim_ncollisions(s));
+	if (sim_collisions_total(s) > (long)sim_ncollisions(s))
+		fprintf(out, "  collisions  %ld (%zu kept in the table and CSV: the older ones are "
+		        "thinned, each row keeps its index i)\n", sim_collisions_total(s),
+		        sim_ncollisions(s));
+	else
+		fprintf(out, "  collisions  %zu\n", sim_ncollisions(s));
 	fprintf(out, "  run time    %s (CPU)\n", fmt(st->seconds, UNIT_TIME, b1, sizeof b1));
 	fprintf(out, "  steps       %ld accepted, %ld rejected\n", st->steps, st->rejected);
 	fprintf(out, "  evaluations %ld right-hand side, %ld Jacobian\n", st->rhs, st->jac);
@@ -616,6 +625,8 @@ print_summary(FILE *out, const struct sim *s, int sig)
 	if (arc_thinned(a) > 0)
 		fprintf(out, ", thinned %d times (past run.max_samples = %ld)",
 		        arc_thinned(a), sc->run.max_samples);
+	if (arc_skipped(a) > 0)
+		fprintf(out, ", %ld flow intervals thinned out with their jumps", arc_skipped(a));
 	else
 		fprintf(out, ", not thinned");
 	fprintf(out, "\n");
