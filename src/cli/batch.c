@@ -201,8 +201,12 @@ check_export_path(const char *opt, const char *path)
 	}
 	msg[0] = '\0';
 	if (atomic_probe(path, &t, msg, sizeof msg) != HB_OK) {
+		size_t pl = strlen(path);
+		/* "PATH: reason": the path is already named */
+		const char *why = strncmp(msg, path, pl) == 0 && msg[pl] == ':' ? msg + pl + 2 : msg;
+
 		fprintf(stderr, PROG ": %s %s: cannot write there: %s; expected a file "
-		        "path in an existing, writable folder\n", opt, path, msg);
+		        "path in an existing, writable folder\n", opt, path, why);
 		return 2;
 	}
 	return 0;

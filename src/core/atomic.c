@@ -327,7 +327,10 @@ atomic_commit(struct atomic_set *set, char *msg, size_t n)
 		struct atomic_file *af = &set->file[k];
 
 		if (af->tmp[0] && af->target.how == ATOMIC_REPLACE) {
-			snprintf(af->bak, sizeof af->bak, "%s.old", af->tmp);
+			size_t tl = strlen(af->tmp);
+
+			memcpy(af->bak, af->tmp, tl);           /* tmp is shorter than bak - 4 */
+			memcpy(af->bak + tl, ".old", 5);
 			af->has_bak = link(af->target.real, af->bak) == 0;
 		}
 	}
