@@ -198,16 +198,35 @@ Test(arc, thinning_keeps_the_ends_of_every_interval)
 }
 
 /* Intervals of two samples (jumps only) cannot be thinned: the bound grows. */
-Test(arc, jumps_alone_are_never_thinned)
+/*
+ * An arc of jumps alone (two samples per interval) cannot be thinned
+ * sample by sample: past its bound it loses whole old intervals, each with
+ * both of its samples, so memory stays bounded; the first interval and the
+ * newest ones stay whole and the samples stay in hybrid-time order.
+ */
+Test(arc, jumps_alone_are_thinned_whole_intervals_at_a_time)
 {
 	struct arc *a = arc_new(1024);
 
 	build(a, 1499, 2);
-	cr_assert_eq(arc_len(a), 3000);
-	cr_assert_eq(arc_nintervals(a), 1500);
-	check_invariants(a);
-	for (size_t i = 0; i < 3000; i++)
-		assert_abs(arc_at(a, i)->x, (double)i, 0);
+	cr_assert_lt(arc_len(a), 1024, "%zu samples kept of 3000", arc_len(a));
+	cr_assert_gt(arc_skipped(a), 0);
+	cr_assert_eq(arc_len(a), 2 * arc_nintervals(a), "every kept interval keeps both samples");
+	cr_assert_eq(arc_nintervals(a) + (size_t)arc_skipped(a), 1500);
+	assert_abs(arc_at(a, 0)->x, 0, 0);
+	assert_abs(arc_at(a, arc_len(a) - 1)->x, 2999, 0);
+	for (size_t i = 0; i < arc_len(a); i++) {
+		const struct arc_sample *s = arc_at(a, i);
+
+		/* sample k of interval j is number 2j + k */
+		assert_abs(s->x, (double)(2 * s->j + (long)(i % 2)), 0);
+		if (i > 0)
+			cr_assert(s->j > arc_at(a, i - 1)->j || (i % 2 == 1 && s->j == arc_at(a, i - 1)->j),
+			          "sample %zu: j = %ld after %ld", i, s->j, arc_at(a, i - 1)->j);
+	}
+	/* the newest quarter is whole: the last 100 intervals are all there */
+	for (long j = 1400; j < 1500; j++)
+		cr_assert_eq(arc_at(a, arc_len(a) - 2 * (size_t)(1500 - j))->j, j);
 	arc_free(a);
 }
 

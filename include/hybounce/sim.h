@@ -124,9 +124,16 @@ sim_arc(const struct sim *s);
 const struct sim_stats *
 sim_stats(const struct sim *s);
 
-/* Completed collisions (those ended by a separation). */
+/*
+ * Completed collisions (those ended by a separation) that are kept.  The
+ * list is bounded: past run.max_samples / 8 of them every other one of the
+ * older three quarters is thinned out, and each kept one has its index i
+ * among all (so i then has gaps); sim_collisions_total() counts them all.
+ */
 size_t
 sim_ncollisions(const struct sim *s);
+long
+sim_collisions_total(const struct sim *s);
 const struct collision *
 sim_collision(const struct sim *s, size_t i);
 

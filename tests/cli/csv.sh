@@ -83,11 +83,15 @@ for f in presets/*.preset; do
 		diff "$d/coll.csv" "$d/again.csv" | head -n 6 | sed 's/^/# /'
 		sed 's/^/# /' "$d/err2" | head -n 5
 	fi
-	if [ -s "$d/again.preset" ] && cmp -s "$d/arc.preset" "$d/again.preset"; then
+	# The line "; export ID: ..." names each export (csv.h): left out here.
+	grep -v '^; export ' "$d/arc.preset" >"$d/a.scene"
+	grep -v '^; export ' "$d/again.preset" >"$d/b.scene"
+	if [ -s "$d/again.preset" ] && [ "$(wc -l <"$d/a.scene")" -gt 10 ] &&
+	    cmp -s "$d/a.scene" "$d/b.scene"; then
 		ok "$name: the saved preset saves itself identically"
 	else
 		notok "$name: the saved preset saves itself identically"
-		diff "$d/arc.preset" "$d/again.preset" | head -n 6 | sed 's/^/# /'
+		diff "$d/a.scene" "$d/b.scene" | head -n 6 | sed 's/^/# /'
 	fi
 done
 
