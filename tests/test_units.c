@@ -13,6 +13,7 @@
 
 #include "hybounce/status.h"
 #include "hybounce/units.h"
+#include "testutil.h"
 
 static void
 dim_is(struct unit_dim d, double kg, double m, double s)
@@ -257,7 +258,7 @@ Test(units, axis)
 	cr_assert_eq(s, 1);
 	cr_assert_str_eq(label, "J");
 	s = units_axis(0.2614, "kg", label, sizeof label);
-	cr_assert(fabs(s - 1e-3) < 1e-18);
+	assert_abs(s, 1e-3, 1e-18);
 	cr_assert_str_eq(label, "g");
 }
 

@@ -27,6 +27,8 @@
  */
 #ifndef HYBOUNCE_SCENE_H
 #define HYBOUNCE_SCENE_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 
@@ -265,5 +267,7 @@ const char *
 scene_stepper_name(int stepper);
 int
 scene_stepper_find(const char *name);
+
+HB_END_DECLS
 
 #endif

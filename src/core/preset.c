@@ -20,8 +20,9 @@
  * (preceded by white space), lines up to PRESET_MAX_LINE bytes.
  *
  * Writing prints every value in SI with %.17g and its unit, so that
- * loading the file reproduces the scene bit for bit; the file is written to
- * PATH.tmpXXXXXX in the same folder, flushed to disk and renamed.
+ * loading the file reproduces the scene bit for bit; the file is written by
+ * the atomic writer (atomic.h): a temporary name in its folder, flushed to
+ * disk and renamed.
  */
 #include <ctype.h>
 #include <dirent.h>
@@ -36,6 +37,7 @@
 
 #include <ini.h>
 
+#include "hybounce/atomic.h"
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
 #include "hybounce/units.h"
@@ -556,51 +558,16 @@ preset_format(const struct scene *sc, char *buf, size_t n)
 int
 preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 {
-	size_t len = preset_format(sc, NULL, 0), tl = strlen(path) + 16;
-	char *buf = malloc(len + 1), *tmp = malloc(tl);
-	int fd, e = 0;
-	mode_t um;
+	size_t len = preset_format(sc, NULL, 0);
+	char *buf = malloc(len + 1);
+	int st;
 
-	if (buf == NULL || tmp == NULL) {
-		free(buf);
-		free(tmp);
+	if (buf == NULL)
 		return status_set(msg, n, HB_ENOMEM, "%s: out of memory", path);
-	}
 	preset_format(sc, buf, len + 1);
-	snprintf(tmp, tl, "%s.tmpXXXXXX", path);
-	fd = mkstemp(tmp);
-	if (fd < 0) {
-		e = errno;
-		free(buf);
-		free(tmp);
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
-	}
-	um = umask(0);
-	umask(um);
-	if (fchmod(fd, 0666 & ~um) != 0)
-		e = errno;
-	for (size_t off = 0; e == 0 && off < len;) {
-		ssize_t w = write(fd, buf + off, len - off);
-		if (w < 0) {
-			if (errno == EINTR)
-				continue;
-			e = errno;
-		} else
-			off += (size_t)w;
-	}
-	if (e == 0 && fsync(fd) != 0)
-		e = errno;
-	if (close(fd) != 0 && e == 0)
-		e = errno;
-	if (e == 0 && rename(tmp, path) != 0)
-		e = errno;
-	if (e != 0)
-		unlink(tmp);
+	st = atomic_write_file(path, buf, len, msg, n);
 	free(buf);
-	free(tmp);
-	if (e != 0)
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
-	return HB_OK;
+	return st == HB_OK ? HB_OK : HB_EIO;
 }
 
 /* ---------------------------------------------------------------- */
@@ -611,8 +578,8 @@ preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 const char *const *
 preset_dirs(void)
 {
-	static char store[PRESET_MAX_DIRS][512];
-	static const char *dirs[PRESET_MAX_DIRS + 1];
+	static _Thread_local char store[PRESET_MAX_DIRS][512];
+	static _Thread_local const char *dirs[PRESET_MAX_DIRS + 1];
 	const char *env = getenv("HYBOUNCE_PRESETS");
 	int k = 0;
 
