@@ -29,7 +29,9 @@ ifdef WERROR
 WARN      += -Werror
 endif
 ifdef SAN
-SANFLAGS  := -fsanitize=$(SAN) -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+# float-cast-overflow: gcc's (and clang's) "undefined" leaves it out
+SANFLAGS  := -fsanitize=$(SAN) -fsanitize=float-cast-overflow -fno-omit-frame-pointer \
+             -fno-sanitize-recover=undefined,float-cast-overflow
 endif
 
 CURSES_PC := $(shell $(PKG_CONFIG) --exists ncursesw 2>/dev/null && echo ncursesw || echo ncurses)

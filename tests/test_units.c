@@ -260,3 +260,22 @@ Test(units, axis)
 	cr_assert(fabs(s - 1e-3) < 1e-18);
 	cr_assert_str_eq(label, "g");
 }
+
+/* Issue 10 item 4: an exponent beyond int was cast to int (undefined). */
+Test(units, absurd_exponents)
+{
+	char msg[256], buf[64];
+	double v;
+	struct unit_dim huge = { 0, 3e9, 0, 0, 0 }, big = { 0, -4e97, 0, 0, 0 };
+
+	cr_assert_eq(units_parse("1 m^-4e97", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strstr(msg, "bad exponent") != NULL, "%s", msg);
+	cr_assert_eq(units_parse("1 m^1e400", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(units_parse("1 m^1001", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(units_parse("1 m^1000/1000", UNIT_LENGTH, &v, msg, sizeof msg), HB_OK);
+	cr_assert_eq(v, 1.0);
+	/* dimensions derived from law.n = 3e9 print without a cast */
+	cr_assert_str_eq(units_dim_str(huge, buf, sizeof buf), "m^3000000000");
+	units_dim_str(big, buf, sizeof buf);
+	cr_assert(strstr(buf, "-4e+97") != NULL, "%s", buf);
+}
