@@ -35,9 +35,12 @@ const struct unit_dim UNIT_ENERGY = { 1, 2, -2, 0, 0 };
 const struct unit_dim UNIT_IMPULSE = { 1, 1, -1, 0, 0 };
 
 #define UNITS_TOL 1e-9
-/* Largest exponent accepted in a typed unit ("m^-5/2"); dimensions computed
- * from a law's exponents may be larger and are printed without a cast. */
-#define UNITS_MAX_EXP 1000.0
+/*
+ * Largest exponent accepted in a typed unit: what exp_str() still writes
+ * as an exact integer, so that a dimension derived from law.n = 3e9
+ * (m^-3000000000) reads back; "m^-4e97" is refused.
+ */
+#define UNITS_MAX_EXP 1e15
 
 struct symbol {
 	const char *name;
@@ -210,7 +213,7 @@ unit_parse(const char *text, double *factor, struct unit_dim *dim, char *msg, si
 			p++;
 			if (exponent_parse(&p, &e) != 0)
 				return status_set(msg, n, HB_EINVAL,
-				    "bad exponent in unit '%s' (expected a number of at most 1000 "
+				    "bad exponent in unit '%s' (expected a number of at most 1e15 "
 				    "in size, e.g. m^3, m^-5/2)", text);
 		}
 		sign = denom ? -1 : 1;
@@ -327,7 +330,7 @@ exp_str(double e, char *buf, size_t n)
 	 * %.0f, not a cast to int: an exponent derived from law.n = 3e9 (or any
 	 * double) must print, and (int) of a double beyond INT_MAX is undefined.
 	 */
-	if (!isfinite(e) || fabs(e) >= 1e15)
+	if (!isfinite(e) || fabs(e) > UNITS_MAX_EXP)
 		snprintf(buf, n, "%.6g", e);
 	else if (fabs(e - round(e)) < UNITS_TOL)
 		snprintf(buf, n, "%.0f", round(e) + 0.0); /* + 0.0: never "-0" */
