@@ -3,7 +3,9 @@
  * preset loads and validates; the paper's inferred values from the study
  * presets, to the printed digits; every error path with its FILE:LINE and
  * accepted range; save and load reproduce every field of the scene bit for
- * bit; an unwritable path leaves nothing behind; finding presets by name.
+ * bit, also for 400 scenes of random values and names (law exponents of
+ * many digits, names beginning with ';' or '#'); an unwritable path leaves
+ * nothing behind; finding presets by name; preset_open and --set.
  *
  * The presets are read from $HYBOUNCE_PRESETS or ./presets (the tests run
  * from the repository root).
@@ -691,7 +693,8 @@ Test(preset, round_trip_found_by_fuzzing)
 {
 	static const char *const sets[][2] = {
 		{ "law.n", "1.23456789" }, { "law.n", "3e9" }, { "law.p", "1.23456789" },
-		{ "law.p", "1e12" }, { "law.n", "1.0000000001" }, { "scene.name", ";x" },
+		{ "law.p", "1e12" }, { "law.n", "1.0000000001" }, { "law.n", "999999999999.99988" },
+		{ "initial.v0", "4.9406564584124654e-324" }, { "scene.name", ";x" },
 		{ "scene.name", "#1 test" }, { "body1.name", ";" }, { "scene.description", "#" },
 	};
 
@@ -700,7 +703,9 @@ Test(preset, round_trip_found_by_fuzzing)
 		struct scene_error err;
 		char what[96];
 
-		scene_preset("steel-on-bitumen", &sc);
+		scene_preset(i % 2 ? "steel-on-bitumen" : "permanent-contact-shccl", &sc);
+		if (strcmp(sets[i][0], "law.n") == 0)
+			scene_preset("steel-on-bitumen", &sc); /* a Bouc-Wen law: beta, gamma in m^-n */
 		cr_assert_eq(scene_set_text(&sc, sets[i][0], sets[i][1], &err), HB_OK, "%s=%s: %s",
 		    sets[i][0], sets[i][1], err.what);
 		snprintf(what, sizeof what, "%s=%s", sets[i][0], sets[i][1]);

@@ -1,10 +1,11 @@
 /*
- * test_scene.c - scenes (src/core/scene.c): the defaults, the derived values
+ * test_scene.c - scenes (src/core/scene*.c): the defaults, the derived values
  * against the paper's printed 'Inferred' rows (Tables tab:one, tab:two,
  * tab:slow and x_c^s), scene_set and its messages, validation, the panel
  * rows, and the applied loads of the second study: F_er, the kinks, and the
  * closed-form flight increments and centre of mass against numerical
- * quadrature (GSL QAG).
+ * quadrature (GSL QAG); typed access to the keys (scene_get) and errors as
+ * data (struct scene_error).
  */
 #include <math.h>
 #include <stdio.h>

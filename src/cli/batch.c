@@ -906,31 +906,25 @@ batch_list_laws(void)
 
 	for (l = law_list(); *l != NULL; l++) {
 		const struct law_type *law = *l;
-		double def[LAW_MAX_PARAMS], p, nn;
 		int i;
 
-		law_defaults(law, def);
-		p = law_exponent_p(law, def);
-		nn = law_exponent_n(law, def);
 		printf("%s  %s\n", law->name, law->title);
 		print_wrapped(stdout, "    ", law->description);
 		printf("    internal states n_z = %d; parameters (units for the default "
 		       "exponents):\n", law->n_z);
 		for (i = 0; i < law->n_params; i++) {
 			const struct law_param *pp = &law->params[i];
-			struct unit_dim d = units_resolve(pp->dim, p, nn);
-			char unit[48], range[80], dv[64];
+			struct scene_keyinfo ki; /* the typed row: unit, range, default */
+			char dv[64];
 
-			units_dim_str(d, unit, sizeof unit);
-			struct unit_range rr = law_param_range(pp);
-			units_range_str(&rr, NULL, range, sizeof range);
-			fmt(pp->def, d, dv, sizeof dv);
+			scene_law_param_info(law, i, &ki);
+			fmt(ki.number, ki.dim, dv, sizeof dv);
 			printf("      %-8s %-14s range %-16s default %s%s\n",
-			       pp->name, unit[0] ? unit : "(1)", range, dv,
+			       pp->name, ki.unit[0] ? ki.unit : "(1)", ki.range, dv,
 			       (pp->flags & LAW_PARAM_STIFFNESS) && law->k_hertz != NULL
 			           ? " (derived from k_H when both bodies have materials)" : "");
-			if (pp->help != NULL && pp->help[0])
-				printf("      %-8s %s\n", "", pp->help);
+			if (ki.help[0])
+				printf("      %-8s %s\n", "", ki.help);
 		}
 		printf("\n");
 	}

@@ -29,7 +29,6 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -44,6 +43,7 @@
 #include "hybounce/units.h"
 
 #include "scene_keys.h"
+#include "textbuf.h"
 
 #ifndef HYBOUNCE_DATADIR
 #define HYBOUNCE_DATADIR "/usr/local/share/hybounce"
@@ -512,54 +512,32 @@ preset_open(const char *path, const char *const *sets, int nsets, struct scene *
 /* ---------------------------------------------------------------- */
 /* Writing */
 
-struct out {
-	char *buf;
-	size_t n, len;
-};
-
-static void
-out_printf(struct out *o, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-
-static void
-out_printf(struct out *o, const char *fmt, ...)
-{
-	va_list ap;
-	int k;
-	size_t room = o->len < o->n ? o->n - o->len : 0;
-
-	va_start(ap, fmt);
-	k = vsnprintf(room ? o->buf + o->len : NULL, room, fmt, ap);
-	va_end(ap);
-	if (k > 0)
-		o->len += (size_t)k;
-}
-
 /*
  * "key = VALUE".  A value that begins with ';' or '#' is written right
  * after the '=': inih takes those for a comment only after white space.
  */
 static void
-out_entry(struct out *o, const char *key, const char *value)
+out_entry(struct textbuf *o, const char *key, const char *value)
 {
-	out_printf(o, "%s =%s%s\n", key, value[0] == ';' || value[0] == '#' ? "" : " ", value);
+	textbuf_printf(o, "%s =%s%s\n", key, value[0] == ';' || value[0] == '#' ? "" : " ", value);
 }
 
 size_t
 preset_format(const struct scene *sc, char *buf, size_t n)
 {
-	struct out o = { buf, n, 0 };
+	struct textbuf o = { buf, n, 0 };
 	char v[512], sec[16], u[64];
 
 	if (buf != NULL && n > 0)
 		buf[0] = '\0';
 #ifdef HYBOUNCE_VERSION
-	out_printf(&o, "; hybounce %s preset: SI values that reproduce the scene exactly\n",
+	textbuf_printf(&o, "; hybounce %s preset: SI values that reproduce the scene exactly\n",
 	    HYBOUNCE_VERSION);
 #else
-	out_printf(&o, "; hybounce preset: SI values that reproduce the scene exactly\n");
+	textbuf_printf(&o, "; hybounce preset: SI values that reproduce the scene exactly\n");
 #endif
 	for (size_t s = 0; s < NSECTIONS; s++) {
-		out_printf(&o, "\n[%s]\n", sections[s]);
+		textbuf_printf(&o, "\n[%s]\n", sections[s]);
 		if (strcmp(sections[s], "law") == 0) {
 			for (int i = 0; sc->law != NULL && i < sc->law->n_params; i++) {
 				const struct law_param *pp = &sc->law->params[i];

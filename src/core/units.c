@@ -94,11 +94,17 @@ units_resolve(struct unit_dim d, double p, double n)
 	return r;
 }
 
+/* Exponents agree within 1e-9, relative for large ones (m^-1e17 and m^(1 - 1e17)). */
+static int
+exp_eq(double a, double b)
+{
+	return fabs(a - b) < UNITS_TOL * fmax(1.0, fmax(fabs(a), fabs(b)));
+}
+
 static int
 dim_eq(struct unit_dim a, struct unit_dim b)
 {
-	return fabs(a.kg - b.kg) < UNITS_TOL && fabs(a.m - b.m) < UNITS_TOL &&
-	    fabs(a.s - b.s) < UNITS_TOL;
+	return exp_eq(a.kg, b.kg) && exp_eq(a.m, b.m) && exp_eq(a.s, b.s);
 }
 
 static const struct symbol *
