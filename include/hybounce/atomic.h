@@ -30,8 +30,6 @@
  */
 #ifndef HYBOUNCE_ATOMIC_H
 #define HYBOUNCE_ATOMIC_H
-#include "export.h"
-HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include <stdio.h>
@@ -111,5 +109,4 @@ atomic_write_file(const char *path, const void *buf, size_t len, char *msg, size
 
 HB_END_DECLS
 
-HB_END_DECLS
 #endif
