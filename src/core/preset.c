@@ -64,6 +64,7 @@ struct collect {
 	int n;
 	int oom;
 	int overflow_line; /* first line with a section or key name too long */
+	int toomany_line;  /* first key beyond PRESET_MAX_ENTRIES */
 };
 
 struct source {
@@ -114,7 +115,8 @@ collect_handler(void *user, const char *section, const char *name, const char *v
 	struct entry *e;
 
 	if (c->n >= PRESET_MAX_ENTRIES) {
-		c->oom = 1;
+		if (c->toomany_line == 0)
+			c->toomany_line = h->src->line;
 		return 1;
 	}
 	e = &c->e[c->n];
@@ -392,9 +394,12 @@ preset_load_string(const char *text, const char *name, struct scene *sc, char *m
 		st = status_set(msg, n, HB_EINVAL,
 		    "%s:%d: malformed line (expected key = value or [section]); accepted: "
 		    "[section], key = value, ; comment", name, r);
-	else if (r < 0 || c.oom)
-		st = status_set(msg, n, HB_ENOMEM, "%s: out of memory (or more than %d keys)", name,
+	else if (c.toomany_line)
+		st = status_set(msg, n, HB_EINVAL, "%s:%d: too many keys; accepted: at most %d "
+		    "key = value lines (a preset has about 40)", name, c.toomany_line,
 		    PRESET_MAX_ENTRIES);
+	else if (r < 0 || c.oom)
+		st = status_set(msg, n, HB_ENOMEM, "%s: out of memory", name);
 	else if (c.overflow_line)
 		st = status_set(msg, n, HB_EINVAL,
 		    "%s:%d: section or key name too long; accepted: the keys of preset.h", name,
@@ -448,8 +453,8 @@ read_file(const char *path, char **out, char *msg, size_t n)
 	buf[len] = '\0';
 	if (strlen(buf) != len) {
 		free(buf);
-		return status_set(msg, n, HB_EINVAL, "%s: not a text file (contains NUL bytes)",
-		    path);
+		return status_set(msg, n, HB_EINVAL, "%s: not a text file (contains NUL bytes); "
+		    "expected a preset: text lines [section] and key = value", path);
 	}
 	*out = buf;
 	return HB_OK;
@@ -687,7 +692,8 @@ preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn)
 	struct stat lst;
 
 	if (name == NULL || name[0] == '\0')
-		return status_set(msg, mn, HB_EINVAL, "no preset name given");
+		return status_set(msg, mn, HB_EINVAL, "no preset name given; expected a preset name "
+		    "(hybounce --list-presets) or the path of a preset file");
 	if (is_file_or_pipe(name)) {
 		if (strlen(name) >= n)
 			return status_set(msg, mn, HB_EINVAL, "%s: path too long", name);
