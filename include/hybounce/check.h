@@ -9,6 +9,8 @@
  */
 #ifndef HYBOUNCE_CHECK_H
 #define HYBOUNCE_CHECK_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "scene.h"
@@ -83,5 +85,7 @@ struct check_physics {
 int
 check_physics(const struct scene *sc, const struct arc *a, struct check_physics *r,
               char *msg, size_t n);
+
+HB_END_DECLS
 
 #endif
