@@ -755,6 +755,39 @@ batch_run(const struct batch_options *o)
 				status = 1;
 		}
 	}
+	{
+		/*
+		 * The physics (check.h): a failure is a warning, and exit 1 with
+		 * --check; a pass is said only when --check asks.
+		 */
+		struct check_physics ph;
+
+		msg[0] = '\0';
+		if (check_physics(sim_scene(s), sim_arc(s), &ph, msg, sizeof msg) == HB_OK) {
+			if (o->check)
+				fprintf(out, "  check       physics: ok (work-energy residual %.2g of the "
+				        "energy scale, %.2g x the tolerance %.2g; %zu contacts: W and e "
+				        "within what %s allows)\n", ph.resid, ph.resid / ph.tol, ph.tol,
+				        ph.ncontacts, sim_scene(s)->law->name);
+		} else {
+			fprintf(out, "  %-11s physics: %s: %s\n", o->check ? "check" : "warning",
+			        o->check ? "FAILED" : "the run breaks what it must obey", msg);
+			if (out != stderr)
+				fprintf(stderr, PROG ": %s: the computed run fails %d physics "
+				        "check%s (see 'physics' in the report); a tighter run.rtol and "
+				        "run.atol, or another run.stepper, should fix it\n",
+				        o->check ? "check failed" : "warning", ph.failed,
+				        ph.failed == 1 ? "" : "s");
+			if (o->check && status == 0)
+				status = 1;
+		}
+		if (ph.nzero > 0)
+			fprintf(out, "  note        collision %ld%s began at zero approach velocity "
+			        "(v_i = %.3g m/s, an impact energy below what the tolerance "
+			        "resolves): e = -v(t_s)/v_i means nothing there (\"-\" when v_i = 0); "
+			        "what separates the bodies is the applied force\n", ph.zero_at,
+			        ph.nzero > 1 ? " and others" : "", ph.vi_zero);
+	}
 	/* Now: the messages below come after the report. */
 	if (out == stdout) {
 		if (batch_flush_stdout() != 0)
