@@ -5,6 +5,7 @@
  */
 #include <dirent.h>
 #include <errno.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,62 +24,96 @@
 
 /*
  * Any number of folders: the entries of $HYBOUNCE_PRESETS are split into a
- * buffer that grows (each call rebuilds it; earlier results are invalid).
+ * buffer that grows.  The buffer is per thread, so that threads may look
+ * presets up at once, and is freed when its thread ends (a pthread key's
+ * destructor); it is built again only when HYBOUNCE_PRESETS changes, so a
+ * list returned earlier stays valid while the environment does not change.
  */
+struct dirs_cache {
+	char *store;       /* the entries, split in place */
+	char *seen;        /* the HYBOUNCE_PRESETS they came from; NULL: unset */
+	const char **dirs; /* NULL-terminated */
+};
+
+static pthread_key_t dirs_key;
+static pthread_once_t dirs_once = PTHREAD_ONCE_INIT;
+static int dirs_key_ok;
+
+static void
+dirs_cache_free(void *p)
+{
+	struct dirs_cache *c = p;
+
+	free(c->store);
+	free(c->seen);
+	free(c->dirs);
+	free(c);
+}
+
+static void
+dirs_key_make(void)
+{
+	dirs_key_ok = pthread_key_create(&dirs_key, dirs_cache_free) == 0;
+}
+
 const char *const *
 preset_dirs(void)
 {
-	/*
-	 * Per thread, so that threads may look presets up at once; built again
-	 * only when HYBOUNCE_PRESETS changes, so that a list returned earlier
-	 * stays valid while the environment does not change.
-	 */
-	static _Thread_local char *store, *seen, datadir[sizeof HYBOUNCE_DATADIR + 16];
-	static _Thread_local const char **dirs, *fallback[3];
-	static _Thread_local int built;
+	static _Thread_local char datadir[sizeof HYBOUNCE_DATADIR + 16];
+	static _Thread_local const char *fallback[3];
 	static const char here[] = "presets";
 	const char *env = getenv("HYBOUNCE_PRESETS");
+	struct dirs_cache *c = NULL;
 	size_t k = 0, count = 3;
 
-	if (built && dirs != NULL &&
-	    (env == NULL ? seen == NULL : seen != NULL && strcmp(env, seen) == 0))
-		return dirs;
 	snprintf(datadir, sizeof datadir, "%s/presets", HYBOUNCE_DATADIR);
-	free(store);
-	free(seen);
-	free(dirs);
-	store = seen = NULL;
-	dirs = NULL;
-	built = 1;
+	fallback[0] = here;
+	fallback[1] = datadir;
+	fallback[2] = NULL;
+	pthread_once(&dirs_once, dirs_key_make);
+	if (!dirs_key_ok)
+		return fallback;
+	c = pthread_getspecific(dirs_key);
+	if (c == NULL) {
+		c = calloc(1, sizeof *c);
+		if (c == NULL || pthread_setspecific(dirs_key, c) != 0) {
+			free(c);
+			return fallback; /* out of memory: the built-in folders only */
+		}
+	}
+	if (c->dirs != NULL &&
+	    (env == NULL ? c->seen == NULL : c->seen != NULL && strcmp(env, c->seen) == 0))
+		return c->dirs;
+	free(c->store);
+	free(c->seen);
+	free(c->dirs);
+	c->store = c->seen = NULL;
+	c->dirs = NULL;
 	if (env != NULL) {
 		for (const char *p = env; *p != '\0'; p++)
 			count += *p == ':';
-		store = strdup(env);
-		seen = strdup(env);
+		c->store = strdup(env);
+		c->seen = strdup(env);
 	}
-	dirs = malloc((count + 1) * sizeof *dirs);
-	if (dirs == NULL || (env != NULL && (store == NULL || seen == NULL))) {
-		/* out of memory: the built-in folders only */
-		free(dirs);
-		dirs = NULL;
-		fallback[0] = here;
-		fallback[1] = datadir;
-		fallback[2] = NULL;
-		return fallback;
+	c->dirs = malloc((count + 1) * sizeof *c->dirs);
+	if (c->dirs == NULL || (env != NULL && (c->store == NULL || c->seen == NULL))) {
+		free(c->dirs);
+		c->dirs = NULL;
+		return fallback; /* out of memory: the built-in folders only */
 	}
-	for (char *p = store; p != NULL && *p != '\0';) {
+	for (char *p = c->store; p != NULL && *p != '\0';) {
 		char *q = strchr(p, ':');
 
 		if (q != NULL)
 			*q = '\0';
 		if (*p != '\0') /* an empty entry ("a::b") names no folder */
-			dirs[k++] = p;
+			c->dirs[k++] = p;
 		p = q != NULL ? q + 1 : NULL;
 	}
-	dirs[k++] = here;
-	dirs[k++] = datadir;
-	dirs[k] = NULL;
-	return dirs;
+	c->dirs[k++] = here;
+	c->dirs[k++] = datadir;
+	c->dirs[k] = NULL;
+	return c->dirs;
 }
 
 static int
