@@ -35,9 +35,12 @@ struct dirs_cache {
 	const char **dirs; /* NULL-terminated */
 };
 
-static pthread_key_t dirs_key;
+/* Set once (pthread_once), then only read: the key of every thread's cache. */
+static struct {
+	pthread_key_t key;
+	int ok;
+} dirs_tls;
 static pthread_once_t dirs_once = PTHREAD_ONCE_INIT;
-static int dirs_key_ok;
 
 static void
 dirs_cache_free(void *p)
@@ -53,7 +56,7 @@ dirs_cache_free(void *p)
 static void
 dirs_key_make(void)
 {
-	dirs_key_ok = pthread_key_create(&dirs_key, dirs_cache_free) == 0;
+	dirs_tls.ok = pthread_key_create(&dirs_tls.key, dirs_cache_free) == 0;
 }
 
 const char *const *
@@ -71,12 +74,12 @@ preset_dirs(void)
 	fallback[1] = datadir;
 	fallback[2] = NULL;
 	pthread_once(&dirs_once, dirs_key_make);
-	if (!dirs_key_ok)
+	if (!dirs_tls.ok)
 		return fallback;
-	c = pthread_getspecific(dirs_key);
+	c = pthread_getspecific(dirs_tls.key);
 	if (c == NULL) {
 		c = calloc(1, sizeof *c);
-		if (c == NULL || pthread_setspecific(dirs_key, c) != 0) {
+		if (c == NULL || pthread_setspecific(dirs_tls.key, c) != 0) {
 			free(c);
 			return fallback; /* out of memory: the built-in folders only */
 		}
