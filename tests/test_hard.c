@@ -222,7 +222,8 @@ Test(hard, bounce_sequence_end)
 Test(hard, slow_impact_hertz)
 {
 	static const int steppers[] = { STEPPER_RK8PD, STEPPER_RKF45, STEPPER_RKCK,
-		                        STEPPER_MSBDF, STEPPER_RK4IMP, STEPPER_BSIMP };
+		                        STEPPER_MSBDF, STEPPER_RK4IMP, STEPPER_BSIMP,
+		                        STEPPER_DOP853 };
 	struct scene sc;
 	double m, k, v, d;
 	size_t i;
@@ -260,7 +261,7 @@ Test(hard, slow_impact_hertz)
  */
 Test(hard, slow_impact_dissipative)
 {
-	static const int steppers[] = { STEPPER_RK8PD, STEPPER_RKF45, STEPPER_RKCK };
+	static const int steppers[] = { STEPPER_RK8PD, STEPPER_RKF45, STEPPER_RKCK, STEPPER_DOP853 };
 	size_t i;
 
 	assert_within_tolerance("hard-slow-impact-shccl");
@@ -343,7 +344,7 @@ Test(hard, long_run_memory_bounded)
  * (h max(-Re lambda) beyond 1 at almost every check) and the engine says
  * so; run.stepper = auto goes over to bsimp, keeps the error within the
  * tolerance and takes far fewer steps.  On the paper's studies nothing is
- * stiff: auto is rk8pd, bit for bit.
+ * stiff: auto is dop853, bit for bit.
  */
 Test(hard, stiff_contacts_go_implicit)
 {
@@ -368,7 +369,7 @@ Test(hard, stiff_contacts_go_implicit)
 	}
 	assert_within_tolerance_with("hard-stiff-maxwell", STEPPER_AUTO);
 	for (i = 0; i < sizeof calm / sizeof calm[0]; i++) {
-		struct sim *e = run_at(calm[i], STEPPER_RK8PD, 1e-12, 1e-14);
+		struct sim *e = run_at(calm[i], STEPPER_DOP853, 1e-12, 1e-14);
 		struct sim *a = run_at(calm[i], STEPPER_AUTO, 1e-12, 1e-14);
 		const struct arc_sample *le = arc_last(sim_arc(e)), *la = arc_last(sim_arc(a));
 
@@ -376,8 +377,24 @@ Test(hard, stiff_contacts_go_implicit)
 		             sim_stats(e)->stiff_hrho);
 		cr_expect_eq(sim_stats(a)->switched, 0, "%s: auto switched", calm[i]);
 		cr_expect(le->x == la->x && le->v == la->v && sim_ncollisions(e) == sim_ncollisions(a),
-		          "%s: auto differs from rk8pd", calm[i]);
+		          "%s: auto differs from dop853", calm[i]);
 		sim_free(e);
 		sim_free(a);
 	}
+}
+
+/*
+ * DOP853 with its dense output (events, kinks and extrema located on the
+ * continuous extension) on every hard case: within the tolerance of the
+ * same reference as rk8pd's.
+ */
+Test(hard, dop853_within_tolerance)
+{
+	static const char *const names[] = { "hard-stiff-maxwell", "hard-bouc-wen-beta", "hard-n1",
+		                             "hard-drop-1um", "hard-bounce-end",
+		                             "hard-slow-impact-shccl" };
+	size_t i;
+
+	for (i = 0; i < sizeof names / sizeof names[0]; i++)
+		assert_within_tolerance_with(names[i], STEPPER_DOP853);
 }

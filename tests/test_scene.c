@@ -130,7 +130,7 @@ Test(scene, defaults_are_valid)
 	cr_assert_eq(sc.init.x0, 0.010);
 	cr_assert_eq(sc.run.T, 0.2);
 	cr_assert_eq(sc.run.J, 100000);
-	cr_assert_eq(sc.run.stepper, STEPPER_RK8PD);
+	cr_assert_eq(sc.run.stepper, STEPPER_DOP853);
 	cr_assert_eq(sc.run.rtol, 1e-10);
 	cr_assert_eq(sc.run.atol, 1e-10);
 	cr_assert_eq(sc.run.max_samples, 262144);
@@ -645,7 +645,8 @@ Test(scene, com_against_quadrature)
 
 Test(scene, steppers)
 {
-	static const char *const names[] = { "rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto" };
+	static const char *const names[] = { "rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto",
+	                                     "dop853" };
 
 	cr_assert_eq(sizeof names / sizeof names[0], STEPPER_COUNT);
 

@@ -22,10 +22,12 @@
  *  - contact: GSL odeiv2 on (x_c, v, z_c, W, J_Fc, J_Fe), x = x_e + x_c;
  *  - the absolute tolerance of each component is atol times its scale,
  *    taken from the scene's own sizes (sim_stats.scale);
- *  - a step that leaves C is re-stepped from its start with a bracketing
- *    root finder on the flow-set indicator (max(x, v) in flight,
- *    -min(Phi, v) in contact; only a strictly negative value leaves C),
- *    and the bracket's end in D becomes the pre-jump sample; g is applied
+ *  - a step that leaves C is bracketed with a root finder on the
+ *    flow-set indicator (max(x, v) in flight, -min(Phi, v) in contact;
+ *    only a strictly negative value leaves C): on the step's continuous
+ *    extension under dop853 (then once more on re-steps in a narrow
+ *    window), on re-steps from the step's start under the GSL steppers;
+ *    the bracket's end in D becomes the pre-jump sample; g is applied
  *    exactly;
  *  - steps end on the zero crossings of the law's switching functions and
  *    at the load's kinks, and on v = 0 and dPhi/dt = 0 in contact (the

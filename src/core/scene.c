@@ -46,7 +46,7 @@
 /* Steppers */
 
 static const char *const stepper_names[STEPPER_COUNT] = {
-	"rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto",
+	"rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto", "dop853",
 };
 
 const char *
@@ -114,7 +114,7 @@ scene_defaults(struct scene *sc)
 	sc->init.vm0 = 0;
 	sc->run.T = 0.2;
 	sc->run.J = 100000;
-	sc->run.stepper = STEPPER_RK8PD;
+	sc->run.stepper = STEPPER_DOP853;
 	sc->run.rtol = 1e-10;
 	sc->run.atol = 1e-10;
 	sc->run.h_max = 0;
@@ -293,8 +293,8 @@ static const struct keydef keys[] = {
 	{ "run.J", "run", "J", K_LONG, NULL, 1, 1e18, 0, 0, OFF(run.J), 0, SP_NONE,
 	  "jump cap" },
 	{ "run.stepper", "run", "stepper", K_STEPPER, NULL, 0, 0, 0, 0, OFF(run.stepper), 0,
-	  SP_NONE, "GSL stepper: rk8pd, rkf45, rkck, msbdf, rk4imp, bsimp, or auto (rk8pd, "
-	  "then bsimp for the contacts once one is found stiff)" },
+	  SP_NONE, "stepper: dop853 (with dense output), rk8pd, rkf45, rkck, msbdf, rk4imp, "
+	  "bsimp, or auto (dop853, then bsimp for the contacts once one is found stiff)" },
 	{ "run.rtol", "run", "rtol", K_DOUBLE, &UNIT_NONE, 0, 1, 1, 1, OFF(run.rtol), 0,
 	  SP_NONE, "relative tolerance of the integrator" },
 	{ "run.atol", "run", "atol", K_DOUBLE, &UNIT_NONE, 0, 1, 1, 1, OFF(run.atol), 0,
@@ -596,8 +596,8 @@ scene_set(struct scene *sc, const char *key, const char *text, char *msg, size_t
 		int s = scene_stepper_find(t);
 		if (s < 0)
 			return status_set(msg, n, HB_EINVAL,
-			    "%s: unknown stepper '%s'; accepted: rk8pd, rkf45, rkck, msbdf, "
-			    "rk4imp, bsimp, auto", key, t);
+			    "%s: unknown stepper '%s'; accepted: dop853, rk8pd, rkf45, rkck, "
+			    "msbdf, rk4imp, bsimp, auto", key, t);
 		tmp.run.stepper = s;
 		break;
 	}
@@ -802,8 +802,8 @@ scene_validate(struct scene *sc, char *msg, size_t n)
 		    "run.J: value %ld is out of range; accepted: whole numbers >= 1", R->J);
 	if (R->stepper < 0 || R->stepper >= STEPPER_COUNT)
 		return status_set(msg, n, HB_EINVAL,
-		    "run.stepper: value %d is out of range; accepted: rk8pd, rkf45, rkck, "
-		    "msbdf, rk4imp, bsimp, auto", R->stepper);
+		    "run.stepper: value %d is out of range; accepted: dop853, rk8pd, rkf45, "
+		    "rkck, msbdf, rk4imp, bsimp, auto", R->stepper);
 	if ((st = check_double("run.rtol", R->rtol, 0, 1, 1, 1, UNIT_NONE, msg, n)))
 		return st;
 	if ((st = check_double("run.atol", R->atol, 0, 1, 1, 1, UNIT_NONE, msg, n)))
@@ -999,7 +999,7 @@ scene_key(const struct scene *sc, int i, struct scene_keyinfo *out)
 		break;
 	case K_STEPPER:
 		snprintf(out->value, sizeof out->value, "%s", scene_stepper_name(sc->run.stepper));
-		snprintf(out->range, sizeof out->range, "rk8pd rkf45 rkck msbdf rk4imp bsimp auto");
+		snprintf(out->range, sizeof out->range, "rk8pd rkf45 rkck msbdf rk4imp bsimp auto dop853");
 		break;
 	case K_BOOL:
 		snprintf(out->value, sizeof out->value, "%s", *(const int *)(base + kd->off) ? "yes" : "no");

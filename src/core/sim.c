@@ -61,6 +61,7 @@
 #include "arc_impl.h"
 #include "control.h"
 #include "step_bsimp.h"
+#include "step_dop853.h"
 
 enum {
 	MAXDIM = 11,           /* x, v, x_c, z1, z2, W, JFc, JFe, E_e, x_m, v_m */
@@ -137,6 +138,7 @@ struct sim {
 	struct cached cache[CACHE];
 	int ncache, cache_next;
 	int fun_target, fun_sign0;
+	int use_dense;      /* 1: restep() reads the last step's continuous extension */
 	int loc_iter;
 	gsl_root_fsolver *root;
 	long work;          /* units of work, for the step budget */
@@ -152,7 +154,8 @@ struct sim {
 static int
 explicit_stepper(int stepper)
 {
-	return stepper == STEPPER_RK8PD || stepper == STEPPER_RKF45 || stepper == STEPPER_RKCK;
+	return stepper == STEPPER_RK8PD || stepper == STEPPER_RKF45 || stepper == STEPPER_RKCK ||
+	       stepper == STEPPER_DOP853;
 }
 
 static const gsl_odeiv2_step_type *
@@ -164,6 +167,7 @@ stepper_type(int stepper)
 	case STEPPER_MSBDF: return gsl_odeiv2_step_msbdf;
 	case STEPPER_RK4IMP: return gsl_odeiv2_step_rk4imp;
 	case STEPPER_BSIMP: return hb_step_bsimp_shifted;
+	case STEPPER_DOP853: return hb_step_dop853;
 	default: return gsl_odeiv2_step_rk8pd;
 	}
 }
@@ -921,6 +925,17 @@ restep(struct sim *s, double h, double *u)
 		memcpy(u, s->u1, sizeof s->u1);
 		return 0;
 	}
+	if (s->use_dense) {
+		/* on the step's continuous extension: no evaluation of f */
+		if ((rc = hb_dop853_dense(p->d->s, s->t0 + h, u)) != GSL_SUCCESS)
+			return rc;
+		for (i = 0; i < p->L.dim; i++)
+			if (!isfinite(u[i]))
+				return GSL_FAILURE;
+		if (p->q)
+			snap_stick(s, u);
+		return 0;
+	}
 	for (i = 0; i < s->ncache; i++)
 		if (s->cache[i].h == h) {
 			memcpy(u, s->cache[i].u, sizeof s->u0);
@@ -1144,6 +1159,50 @@ dip(struct sim *s, const double *f0, const double *f1, int n, double *fx)
 }
 
 /*
+ * From a point located on the continuous extension to the step's own
+ * state there.  A kink or an extremum: the state at b is recomputed by one
+ * step of the method from the step's start (it is then as accurate as any
+ * step end), unless that state has left C, when the interpolated one
+ * (which has not) is kept.  An event: the indicator of the recomputed
+ * states is bracketed again in a window about b, widened until it holds
+ * the crossing, so that the pre-jump state is a step's state in D; if no
+ * window does, the interpolated bracket stands (its end is in D too).
+ * Leaves use_dense set when the interpolated points stand.
+ */
+static void
+real_point(struct sim *s, int event, double hi, double *a, double *b)
+{
+	double w = fmax(16.0 * (*b - *a), 1e-10 * s->H), ra, rb;
+	int tries;
+
+	s->use_dense = 0;
+	if (!event) {
+		double u[MAXDIM], f[MAXFUN];
+		int kind[MAXFUN];
+
+		if (restep(s, *b, u) != 0)
+			goto keep;
+		watch(s, s->cur, s->t0 + *b, u, f, kind);
+		if (!(f[0] >= 0.0))
+			goto keep;
+		return;
+	}
+	for (tries = 0; tries < 4; tries++, w *= 64.0) {
+		double lo = fmax(0.0, *b - w), up = fmin(hi, *b + w);
+
+		if (up <= *b)
+			up = hi;
+		if (bracket(s, 0, 1, lo, up, &ra, &rb) == 0) {
+			*a = ra;
+			*b = rb;
+			return;
+		}
+	}
+keep:
+	s->use_dense = 1;
+}
+
+/*
  * Handles an accepted step (t0, u0) -> (t0 + H, u1): finds the earliest
  * crossing of the watched functions, if any, and acts on it.
  */
@@ -1239,6 +1298,8 @@ after_step(struct sim *s, int load_kink)
 			}
 		if (!any)
 			return fail(s, HB_ENUMERIC, "event location lost its bracket");
+		if (s->use_dense)
+			real_point(s, event, hi, &a, &b);
 		restep(s, a, ua);
 		watch(s, p, s->t0 + a, ua, fa, kb);
 		accept_at(s, b);
@@ -1409,6 +1470,11 @@ retry:
 	}
 	s->st.steps++;
 	s->H = t - s->t0;
+	{
+		double dt0, dh;
+
+		s->use_dense = hb_dop853_last(p->d->s, &dt0, &dh) == 0 && dt0 == s->t0;
+	}
 	if (s->H <= fmax(4.0 * DBL_EPSILON * fabs(t), 1e-13 * s->Tc)) {
 		if (++s->ntiny > MAX_TINY)
 			return fail(s, HB_ENUMERIC, "step size underflow: the error cannot be controlled");
@@ -1454,7 +1520,7 @@ reset_state(struct sim *s)
 	s->n_instant = 0;
 	s->setup = 1;
 	s->ncol = 0;
-	s->stepper[1] = sc->run.stepper == STEPPER_AUTO ? STEPPER_RK8PD : sc->run.stepper;
+	s->stepper[1] = sc->run.stepper == STEPPER_AUTO ? STEPPER_DOP853 : sc->run.stepper;
 	arc_truncate(s->arc, 0);
 	{
 		struct sim_stats keep = s->st;
@@ -1472,7 +1538,7 @@ build(struct sim *s, char *msg, size_t n)
 	int q;
 
 	for (q = 0; q < 2; q++)
-		s->stepper[q] = s->sc.run.stepper == STEPPER_AUTO ? STEPPER_RK8PD : s->sc.run.stepper;
+		s->stepper[q] = s->sc.run.stepper == STEPPER_AUTO ? STEPPER_DOP853 : s->sc.run.stepper;
 	for (q = 0; q < 2; q++)
 		if (phase_alloc(s, &s->ph[q], q))
 			return status_set(msg, n, HB_ENOMEM, "out of memory for the integrator");
