@@ -454,3 +454,67 @@ Test(sim, overflowing_flight_fails_with_a_message)
 	cr_assert_eq(arc_len(sim_arc(s)), 1, "only the initial state");
 	sim_free(s);
 }
+
+/*
+ * A separation that rounding cannot fake: SHCCL single impacts under heavy
+ * damping, a = c |v0| / k in {50, 300, 2000}, no gravity.  The receding
+ * velocity creeps up to k / c while x_c returns to 0, and Phi is zero to
+ * within rounding for the whole restitution.  The exact law leaves no
+ * residual indentation and gives the Marhefka-Orin exit velocity: with
+ * u = c v / k, 1 - u_out = (1 - u_i) exp(u_i - u_out), i.e.
+ * w = 1 - u_out solves w e^-w = (1 + a) e^-(1 + a), w = -W0(-(1 + a) e^-(1 + a)).
+ * Under every stepper the residual is below 1e-6 of x_c^max, e agrees to
+ * 1e-9 and t_d converges as rtol goes 1e-10 -> 1e-12 -> 1e-13.
+ */
+Test(sim, heavy_damping_separates_at_zero_indentation)
+{
+	static const double as[] = { 50, 300, 2000 };
+	static const int steppers[] = { STEPPER_DOP853, STEPPER_RK8PD, STEPPER_BSIMP, STEPPER_AUTO };
+	static const double rtols[] = { 1e-10, 1e-12, 1e-13 };
+	const double M = 0.1, k = 1e9, v0 = -1.0;
+	size_t ia, is, ir;
+
+	for (ia = 0; ia < sizeof as / sizeof as[0]; ia++) {
+		double a = as[ia], c = a * k / -v0;
+		double w = -gsl_sf_lambert_W0(-(1 + a) * exp(-(1 + a)));
+		double e_exact = (1 - w) / a, td_ref = NAN;
+		char lawtext[128];
+		struct scene sc;
+
+		snprintf(lawtext, sizeof lawtext, "k = %.17g\np = 1.5\nc = %.17g", k, c);
+		mass_scene(&sc, "shccl", M, lawtext, 1e-3, v0, 0.0, 0.03, "adhesive");
+		for (is = 0; is < sizeof steppers / sizeof steppers[0]; is++) {
+			double td[3];
+			const char *nm = scene_stepper_name(steppers[is]);
+
+			for (ir = 0; ir < 3; ir++) {
+				struct sim *s;
+				const struct collision *col;
+
+				sc.run.stepper = steppers[is];
+				sc.run.rtol = sc.run.atol = rtols[ir];
+				s = run_scene(&sc);
+				cr_assert_eq(sim_ncollisions(s), 1, "a = %g, %s, rtol %g: %zu collisions", a,
+				             nm, rtols[ir], sim_ncollisions(s));
+				col = sim_collision(s, 0);
+				cr_expect_leq(col->xcr, 1e-6 * col->xcmax,
+				              "a = %g, %s, rtol %g: residual %g of x_c^max %g", a, nm,
+				              rtols[ir], col->xcr, col->xcmax);
+				cr_expect_leq(fabs(col->e - e_exact), 1e-9 * e_exact,
+				              "a = %g, %s, rtol %g: e = %.15g, Marhefka-Orin %.15g", a, nm,
+				              rtols[ir], col->e, e_exact);
+				td[ir] = col->td;
+				sim_free(s);
+			}
+			cr_expect_lt(fabs(td[2] - td[1]), fabs(td[1] - td[0]) + 1e-15 * td[2],
+			             "a = %g, %s: t_d %.15g, %.15g, %.15g does not converge", a, nm, td[0],
+			             td[1], td[2]);
+			cr_expect_leq(fabs(td[2] - td[1]), 1e-9 * td[2], "a = %g, %s: t_d %.15g vs %.15g",
+			              a, nm, td[1], td[2]);
+			if (isnan(td_ref))
+				td_ref = td[2];
+			cr_expect_leq(fabs(td[2] - td_ref), 1e-9 * td_ref,
+			              "a = %g, %s: t_d %.15g, dop853 %.15g", a, nm, td[2], td_ref);
+		}
+	}
+}

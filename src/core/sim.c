@@ -139,6 +139,7 @@ struct sim {
 	int ncache, cache_next;
 	int fun_target, fun_sign0;
 	int use_dense;      /* 1: restep() reads the last step's continuous extension */
+	int hug;            /* 1: the step began on Phi = 0 to the noise, receding (see snap_separation) */
 	int loc_iter;
 	gsl_root_fsolver *root;
 	long work;          /* units of work, for the step budget */
@@ -908,6 +909,7 @@ crossed(int kind, double a, double b)
 }
 
 static void snap_stick(struct sim *s, double *u);
+static int snap_separation(struct sim *s, double *u);
 
 /* The state one step of length h from (t0, u0), cached. */
 static int
@@ -932,8 +934,11 @@ restep(struct sim *s, double h, double *u)
 		for (i = 0; i < p->L.dim; i++)
 			if (!isfinite(u[i]))
 				return GSL_FAILURE;
-		if (p->q)
+		if (p->q) {
 			snap_stick(s, u);
+			if (s->hug)
+				snap_separation(s, u);
+		}
 		return 0;
 	}
 	for (i = 0; i < s->ncache; i++)
@@ -950,8 +955,11 @@ restep(struct sim *s, double h, double *u)
 	for (i = 0; i < p->L.dim; i++)
 		if (!isfinite(u[i]) || !isfinite(yerr[i]))
 			return GSL_FAILURE;
-	if (p->q)
+	if (p->q) {
 		snap_stick(s, u);
+		if (s->hug)
+			snap_separation(s, u);
+	}
 	i = s->cache_next;
 	s->cache_next = (s->cache_next + 1) % CACHE;
 	if (s->ncache < CACHE)
@@ -1077,6 +1085,89 @@ snap_stick(struct sim *s, double *u)
 		u[L->iv] = 0.0;
 }
 
+/*
+ * The noise of v at a scaled state: NOISE times the tolerance the control
+ * allows it (atol + rtol |u_v| of its scale).
+ */
+enum { NOISE = 100 };
+
+static double
+v_noise(const struct sim *s, const double *u)
+{
+	int iv = s->cur->L.iv;
+
+	return NOISE * s->scale[iv] * (s->sc.run.atol + s->sc.run.rtol * fabs(u[iv]));
+}
+
+/*
+ * A separation that rounding cannot fake.  Under heavy damping (SHCCL
+ * with c v0 / k beyond about 35) the receding velocity creeps up to the
+ * value at which Phi = 0 (k / c for SHCCL) while x_c returns to 0: Phi is
+ * then zero to within the integration's noise for the whole restitution,
+ * and its computed sign says nothing.  A receding state (v > 0) whose Phi
+ * is positive but vanishes within the noise of v (Newton's step on Phi in
+ * v, Phi / (dPhi/dv), below v_noise) is on the boundary of C to the
+ * precision of the computation: its v is moved by that step (and ulps)
+ * until Phi <= 0, so that it stays in C (rule R2).  The contact then ends where Phi turns positive beyond
+ * the noise, which is where the exact law ends it (x_c = 0 for SHCCL).
+ * Laws whose Phi does not grow with v are left alone.  Returns 1 if the
+ * state was moved.
+ */
+static int
+snap_separation(struct sim *s, double *u)
+{
+	const struct phase *p = s->cur;
+	const struct layout *L = &p->L;
+	const struct scene *sc = &s->sc;
+	double y[MAXDIM], z[LAW_MAX_Z] = { 0 }, dphi[LAW_MAX_Z + 2], phi, v, vn, dv;
+	int nz = sc->law->n_z, i;
+
+	if (!p->q)
+		return 0;
+	unscale(p, u, y);
+	v = y[L->iv];
+	if (!(v > 0))
+		return 0;
+	for (i = 0; i < nz; i++)
+		z[i] = y[L->iz + i];
+	phi = phi_at(s, y[L->ixc], z, v);
+	if (!(phi > 0))
+		return 0;
+	sc->law->jac(sc->par, sc->ext, y[L->ixc], z, v, dphi, NULL);
+	dv = dphi[nz + 1];
+	if (!(dv > 0) || phi > dv * v_noise(s, u))
+		return 0;
+	vn = v - phi / dv;
+	for (i = 0; i < 8 && phi_at(s, y[L->ixc], z, vn) > 0; i++)
+		vn -= ldexp(fabs(vn) * DBL_EPSILON, i);
+	if (phi_at(s, y[L->ixc], z, vn) > 0)
+		return 0;
+	u[L->iv] = vn * s->iscale[L->iv];
+	return 1;
+}
+
+/* Does the step from the scaled state u begin on Phi = 0 to the noise, receding? */
+static int
+hugging(struct sim *s, const double *u)
+{
+	const struct phase *p = s->cur;
+	const struct layout *L = &p->L;
+	const struct scene *sc = &s->sc;
+	double y[MAXDIM], z[LAW_MAX_Z] = { 0 }, dphi[LAW_MAX_Z + 2], phi;
+	int nz = sc->law->n_z, i;
+
+	if (!p->q)
+		return 0;
+	unscale(p, u, y);
+	if (!(y[L->iv] > 0))
+		return 0;
+	for (i = 0; i < nz; i++)
+		z[i] = y[L->iz + i];
+	phi = phi_at(s, y[L->ixc], z, y[L->iv]);
+	sc->law->jac(sc->par, sc->ext, y[L->ixc], z, y[L->iv], dphi, NULL);
+	return dphi[nz + 1] > 0 && fabs(phi) <= dphi[nz + 1] * v_noise(s, u);
+}
+
 /* Is function i a candidate crossing from f0 to fx (with the noise filter of after_step)? */
 static int
 candidate(const struct sim *s, int kind, int i, double f0, double fx)
@@ -1187,11 +1278,13 @@ real_point(struct sim *s, int event, double hi, double *a, double *b)
 			goto keep;
 		return;
 	}
-	for (tries = 0; tries < 4; tries++, w *= 64.0) {
+	for (tries = 0; tries < 5; tries++, w *= 64.0) {
 		double lo = fmax(0.0, *b - w), up = fmin(hi, *b + w);
 
-		if (up <= *b)
+		if (up <= *b || tries == 4) /* the last window: the whole step */
 			up = hi;
+		if (tries == 4)
+			lo = 0.0;
 		if (bracket(s, 0, 1, lo, up, &ra, &rb) == 0) {
 			*a = ra;
 			*b = rb;
@@ -1220,6 +1313,7 @@ after_step(struct sim *s, int load_kink)
 	s->cache_next = 0;
 	if (p->q) {
 		snap_stick(s, s->u1);
+		snap_separation(s, s->u1);
 		s->vmax = fmax(s->vmax, fabs(s->u1[p->L.iv] * s->scale[p->L.iv]));
 	}
 	n = watch(s, p, s->t0, s->u0, f0, kind);
@@ -1443,6 +1537,7 @@ numeric_step(struct sim *s)
 	}
 	memcpy(s->u0, s->u, sizeof s->u);
 	s->t0 = t;
+	s->hug = hugging(s, s->u0);
 retry:
 	failed0 = p->d->e->failed_steps;
 	rc = gsl_odeiv2_evolve_apply(p->d->e, p->d->c, p->d->s, &p->sys, &t, t1, &s->h, s->u);
@@ -1473,7 +1568,8 @@ retry:
 	{
 		double dt0, dh;
 
-		s->use_dense = hb_dop853_last(p->d->s, &dt0, &dh) == 0 && dt0 == s->t0;
+		/* on Phi = 0 to the noise, the interpolant's error would exceed the noise: re-step */
+		s->use_dense = !s->hug && hb_dop853_last(p->d->s, &dt0, &dh) == 0 && dt0 == s->t0;
 	}
 	if (s->H <= fmax(4.0 * DBL_EPSILON * fabs(t), 1e-13 * s->Tc)) {
 		if (++s->ntiny > MAX_TINY)
