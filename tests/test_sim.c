@@ -395,7 +395,7 @@ nan_jac(const double *par, int ext, double xc, const double *z, double v, double
 }
 
 static const struct law_type law_nan = {
-	"nan", "NaN below 2 um", "test law", 0, 2, bad_params, 0, nan_phi, NULL, nan_jac, NULL, NULL, NULL,
+	"nan", "NaN below 2 um", "test law", 0, 2, bad_params, 0, nan_phi, NULL, nan_jac, NULL, NULL, NULL, NULL, 0,
 };
 
 Test(sim, nan_from_the_flow_fails_and_keeps_the_arc)

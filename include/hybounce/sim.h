@@ -31,7 +31,13 @@
  *    exactly;
  *  - steps end on the zero crossings of the law's switching functions and
  *    at the load's kinks, and on v = 0 and dPhi/dt = 0 in contact (the
- *    extrema of x_c and F_c), without a jump.
+ *    extrema of x_c and F_c), without a jump;
+ *  - kinks as modes: the sign of a law's |w| term (law_type.psi_mode) is
+ *    frozen for each step, so the flow is smooth inside it; the step is
+ *    cut where w changes sign and the next one starts on the other mode;
+ *  - a receding contact whose Phi vanishes within the noise of v stays on
+ *    the boundary of C (rule R2): the contact ends where the exact law
+ *    ends it, not where a force within rounding of zero changes sign.
  */
 #ifndef HYBOUNCE_SIM_H
 #define HYBOUNCE_SIM_H

@@ -140,6 +140,9 @@ struct sim {
 	int fun_target, fun_sign0;
 	int use_dense;      /* 1: restep() reads the last step's continuous extension */
 	int hug;            /* 1: the step began on Phi = 0 to the noise, receding (see snap_separation) */
+	int msign;          /* the frozen sign of the law's mode kink in this step (0: none) */
+	int mforce;         /* the sign the mode takes at t = mforce_t (a located crossing) */
+	double mforce_t;
 	int loc_iter;
 	gsl_root_fsolver *root;
 	long work;          /* units of work, for the step budget */
@@ -227,7 +230,9 @@ rhs(double t, const double u[], double du[], void *params)
 
 		phi = sc->law->phi(sc->par, sc->ext, y[L->ixc], z, v);
 		dy[L->ixc] = v;
-		if (sc->law->n_z)
+		if (s->msign)
+			sc->law->psi_mode(sc->par, sc->ext, y[L->ixc], z, v, s->msign, &dy[L->iz]);
+		else if (sc->law->n_z)
 			sc->law->psi(sc->par, sc->ext, y[L->ixc], z, v, &dy[L->iz]);
 		dy[L->iW] = phi * v;
 		dy[L->iJc] = -phi;
@@ -969,6 +974,13 @@ restep(struct sim *s, double h, double *u)
 	return 0;
 }
 
+/* The kind of the function being located (fun_target): 0 is the indicator, the event. */
+static int
+kind_of_target(const struct sim *s)
+{
+	return s->fun_target == 0 ? FUN_EVENT : FUN_KINK;
+}
+
 /*
  * The oriented value of the target function at h for Brent: > 0 where it
  * has not crossed yet (an exact zero counts as not crossed), < 0 where it
@@ -982,6 +994,8 @@ oriented(double h, void *params)
 	int kind[MAXFUN];
 
 	s->loc_iter++;
+	if (kind_of_target(s) != FUN_EVENT && s->t0 + h == s->t0)
+		return DBL_MIN; /* the step's start has not crossed (a mode's side is its sign there) */
 	if (restep(s, h, u))
 		return NAN;
 	watch(s, s->cur, s->t0 + h, u, f, kind);
@@ -1318,6 +1332,18 @@ after_step(struct sim *s, int load_kink)
 	}
 	n = watch(s, p, s->t0, s->u0, f0, kind);
 	watch(s, p, s->t0 + s->H, s->u1, f1, kind);
+	if (s->msign) {
+		/*
+		 * The mode's side is its frozen sign, even where the switching
+		 * function is still zero to rounding on the other side (a step
+		 * that begins on a located crossing): it crosses when its sign
+		 * differs from the mode's.
+		 */
+		int k = 1 + s->sc.law->mode_kink;
+
+		if (!(f0[k] * s->msign > 0))
+			f0[k] = s->msign * DBL_MIN;
+	}
 	for (i = 0; i < n; i++)
 		if (candidate(s, kind[i], i, f0[i], f1[i]))
 			cand[ncand++] = i;
@@ -1399,6 +1425,12 @@ after_step(struct sim *s, int load_kink)
 		accept_at(s, b);
 		if (event)
 			return jump(s, LOCATE_BRENT, s->loc_iter, b - a, fa[0], fb[0]);
+		if (s->msign && crossed(FUN_KINK, f0[1 + s->sc.law->mode_kink],
+		                        fb[1 + s->sc.law->mode_kink])) {
+			/* the mode's switching function crossed: the next step is on the other side */
+			s->mforce = -s->msign;
+			s->mforce_t = s->t;
+		}
 		s->st.kinks += kink;
 		return push_sample(s, kink ? ARC_KINK : ARC_EXTREMUM);
 	}
@@ -1412,6 +1444,7 @@ setup_interval(struct sim *s)
 
 	s->setup = 0;
 	s->ntiny = 0;
+	s->msign = s->mforce = 0;
 	memset(s->gmax, 0, sizeof s->gmax);
 	s->vmax = fabs(s->v);
 	s->closed = !s->q && (sc->run.reduce & REDUCE_FLIGHT) &&
@@ -1507,6 +1540,42 @@ stiffness(struct sim *s)
 	return 0;
 }
 
+/*
+ * Kinks as modes: the sign of the law's |w| term (law_type.psi_mode) is
+ * frozen for the step that begins at the current state, so that the flow
+ * is smooth inside it; its value is the sign of the switching function
+ * there, or the side a crossing located at this instant went over to.
+ * When it changes, the stepper forgets its stored derivative (first same
+ * as last), which was of the other mode.
+ */
+static void
+set_mode(struct sim *s)
+{
+	const struct scene *sc = &s->sc;
+	const struct phase *p = s->cur;
+	int m = 0;
+
+	if (p->q && sc->law->psi_mode && sc->run.kinks) {
+		double y[MAXDIM], g[LAW_MAX_KINKS], z[LAW_MAX_Z] = { 0 };
+		const struct layout *L = &p->L;
+		int i;
+
+		if (s->mforce && s->mforce_t == s->t) {
+			m = s->mforce;
+		} else {
+			unscale(p, s->u0, y);
+			for (i = 0; i < sc->law->n_z; i++)
+				z[i] = y[L->iz + i];
+			sc->law->kinks(sc->par, sc->ext, y[L->ixc], z, y[L->iv], g);
+			m = g[sc->law->mode_kink] > 0 ? 1 : (g[sc->law->mode_kink] < 0 ? -1 : 0);
+		}
+	}
+	if (m != s->msign) {
+		s->msign = m;
+		gsl_odeiv2_driver_reset(s->cur->d);
+	}
+}
+
 /* One accepted step of the numeric phase, with what follows from it. */
 static int
 numeric_step(struct sim *s)
@@ -1538,6 +1607,7 @@ numeric_step(struct sim *s)
 	memcpy(s->u0, s->u, sizeof s->u);
 	s->t0 = t;
 	s->hug = hugging(s, s->u0);
+	set_mode(s);
 retry:
 	failed0 = p->d->e->failed_steps;
 	rc = gsl_odeiv2_evolve_apply(p->d->e, p->d->c, p->d->s, &p->sys, &t, t1, &s->h, s->u);
