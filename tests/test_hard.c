@@ -398,3 +398,41 @@ Test(hard, dop853_within_tolerance)
 	for (i = 0; i < sizeof names / sizeof names[0]; i++)
 		assert_within_tolerance_with(names[i], STEPPER_DOP853);
 }
+
+/*
+ * Oscillatory stiffness: after the first study's last collision the ball
+ * sinks under an oscillatory mode (eigenvalues about -83 +- 1674i) that
+ * holds an explicit step at h |lambda| near its stability boundary while h
+ * max(-Re lambda) stays about 0.24.  The check sees it, and auto goes over
+ * to bsimp: at T = 500 s auto needs at least ten times fewer right-hand
+ * side evaluations than before this check (3,159,570, counted by this
+ * engine before issue 8) and than dop853, with the same end state.
+ */
+Test(hard, oscillatory_stiffness_sinking_phase, .timeout = 120)
+{
+	struct scene sc;
+	struct sim *e, *a;
+	const struct arc_sample *le, *la;
+
+	load("steel-on-bitumen", &sc);
+	sc.run.T = 500.0;
+	sc.run.stepper = STEPPER_DOP853;
+	e = run_checked(&sc, "steel-on-bitumen T = 500 s");
+	sc.run.stepper = STEPPER_AUTO;
+	a = run_checked(&sc, "steel-on-bitumen T = 500 s");
+	cr_expect_eq(sim_stats(e)->stiff, 1, "the sinking phase not found stiff (h |lambda| up to %g)",
+	             sim_stats(e)->stiff_hrho);
+	cr_expect_eq(sim_stats(a)->switched, 1, "auto did not go over to bsimp");
+	cr_expect_lt(10 * sim_stats(a)->rhs, 3159570, "auto: %ld rhs evaluations", sim_stats(a)->rhs);
+	cr_expect_lt(10 * sim_stats(a)->rhs, sim_stats(e)->rhs, "auto %ld rhs, dop853 %ld",
+	             sim_stats(a)->rhs, sim_stats(e)->rhs);
+	le = arc_last(sim_arc(e));
+	la = arc_last(sim_arc(a));
+	cr_expect_leq(fabs(la->x - le->x), 1e-9 * fabs(le->x), "x at T: auto %.15g, dop853 %.15g",
+	              la->x, le->x);
+	cr_expect_leq(fabs(la->v - le->v), 1e-6 * fabs(le->v), "v at T: auto %.15g, dop853 %.15g",
+	              la->v, le->v);
+	cr_expect_eq(sim_ncollisions(a), sim_ncollisions(e));
+	sim_free(e);
+	sim_free(a);
+}
