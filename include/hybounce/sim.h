@@ -78,7 +78,8 @@ struct sim_stats {
 	int stiff;         /* 1: a contact was found stiff: an implicit stepper is faster */
 	double stiff_t;    /* the time it was found, s */
 	int switched;      /* 1: run.stepper = auto went over to bsimp for the contacts */
-	double seconds;    /* CPU time spent in sim_advance */
+	double seconds;    /* CPU time spent in sim_advance (CLOCK_PROCESS_CPUTIME_ID), s */
+	double wall;       /* wall time spent in sim_advance (CLOCK_MONOTONIC), s */
 	int ncomp;         /* components of the contact ODE */
 	double scale[8];   /* per-component scale of the absolute tolerance */
 	const char *comp[8]; /* their names */
@@ -100,7 +101,7 @@ sim_free(struct sim *s);
 
 /*
  * Advances the run by at most max_steps accepted steps (0: no limit) and at
- * most max_seconds of CPU time (0: no limit), or to its end.  Returns HB_OK
+ * most max_seconds of wall time (0: no limit; a frame's budget), or to its end.  Returns HB_OK
  * (check sim_end), HB_EDONE if the run had already ended, or the failure
  * (HB_ENUMERIC, HB_ECHATTER, HB_ENOMEM) with sim_errmsg() set; after a
  * failure sim_end() is SIM_END_FAIL and the arc ends at the last good sample.

@@ -177,12 +177,14 @@ stepper_type(int stepper)
 	}
 }
 
+/* Seconds on a clock: CLOCK_MONOTONIC (wall) or CLOCK_PROCESS_CPUTIME_ID (CPU). */
 static double
-now_seconds(void)
+now_seconds(clockid_t clock)
 {
 	struct timespec ts;
 
-	clock_gettime(CLOCK_MONOTONIC, &ts);
+	if (clock_gettime(clock, &ts) != 0)
+		return 0.0;
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
@@ -1818,7 +1820,7 @@ sim_free(struct sim *s)
 int
 sim_advance(struct sim *s, long max_steps, double max_seconds)
 {
-	double start = now_seconds();
+	double start = now_seconds(CLOCK_MONOTONIC), cpu0 = now_seconds(CLOCK_PROCESS_CPUTIME_ID);
 	long work0 = s->work;
 	int rc = 0;
 
@@ -1828,7 +1830,7 @@ sim_advance(struct sim *s, long max_steps, double max_seconds)
 		if (max_steps > 0 && s->work - work0 >= max_steps)
 			break;
 		if (max_seconds > 0 && ((s->work - work0) & 7) == 0 &&
-		    now_seconds() - start >= max_seconds)
+		    now_seconds(CLOCK_MONOTONIC) - start >= max_seconds)
 			break;
 		if (s->setup) {
 			if ((rc = setup_interval(s)))
@@ -1842,7 +1844,8 @@ sim_advance(struct sim *s, long max_steps, double max_seconds)
 		if (rc)
 			break;
 	}
-	s->st.seconds += now_seconds() - start;
+	s->st.seconds += now_seconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0;
+	s->st.wall += now_seconds(CLOCK_MONOTONIC) - start;
 	return rc;
 }
 
