@@ -142,6 +142,9 @@ struct sim {
 	int use_dense;      /* 1: restep() reads the last step's continuous extension */
 	int hug;            /* 1: the step began on Phi = 0 to the noise, receding (see snap_separation) */
 	int msign;          /* the frozen sign of the law's mode kink in this step (0: none) */
+	int resume;         /* 1: the next interval continues one cut by sim_seek (see resume_interval) */
+	size_t resume_first, resume_last; /* its samples kept in the arc */
+	double resume_h;    /* the step the run had taken from the seek point, or 0 */
 	int mforce;         /* the sign the mode takes at t = mforce_t (a located crossing) */
 	double mforce_t;
 	int loc_iter;
@@ -1439,6 +1442,73 @@ after_step(struct sim *s, int load_kink)
 	}
 }
 
+/* The scaled state of an arc sample, in the layout L (as pack() for the canonical state). */
+static void
+pack_sample(const struct sim *s, const struct layout *L, const struct arc_sample *a, double *u)
+{
+	double y[MAXDIM];
+	int i;
+
+	if (L->ix >= 0)
+		y[L->ix] = a->x;
+	y[L->iv] = a->v;
+	if (L->ixc >= 0) {
+		y[L->ixc] = a->xc;
+		for (i = 0; i < s->sc.law->n_z; i++)
+			y[L->iz + i] = a->z[i];
+		y[L->iW] = a->W;
+		y[L->iJc] = a->JFc;
+		y[L->iJe] = a->JFe;
+	}
+	y[L->iEe] = a->Ee;
+	if (L->ixm >= 0) {
+		y[L->ixm] = a->xm;
+		y[L->ivm] = a->vm;
+	}
+	for (i = 0; i < L->dim; i++)
+		u[i] = y[i] * s->iscale[i];
+}
+
+/*
+ * A flow interval continued after sim_seek (or sim_set_scene) from inside
+ * it: what a run that had not stopped would carry on with.  The scales are
+ * those of the interval's first sample (a fresh run took them there), and
+ * the noise filter's largest values (gmax, vmax) are those of the samples
+ * kept, so that round-off-level kink crossings are ignored as they were
+ * before the seek (without them every step "locates" one).
+ */
+static void
+resume_interval(struct sim *s)
+{
+	const struct layout *L = &s->cur->L;
+	const struct arc_sample *f = arc_at(s->arc, s->resume_first);
+	double t = s->t, x = s->x, v = s->v, xm = s->xm, vm = s->vm;
+	double fv[MAXFUN], u[MAXDIM];
+	int kind[MAXFUN], n, i;
+	size_t k;
+
+	s->t = f->t;
+	s->x = f->x;
+	s->v = f->v;
+	s->xm = f->xm;
+	s->vm = f->vm;
+	scales(s, L, s->q);
+	s->t = t;
+	s->x = x;
+	s->v = v;
+	s->xm = xm;
+	s->vm = vm;
+	for (k = s->resume_first; k <= s->resume_last; k++) {
+		const struct arc_sample *a = arc_at(s->arc, k);
+
+		pack_sample(s, L, a, u);
+		n = watch(s, s->cur, a->t, u, fv, kind);
+		for (i = 0; i < n; i++)
+			s->gmax[i] = fmax(s->gmax[i], fabs(fv[i]));
+		s->vmax = fmax(s->vmax, fabs(a->v));
+	}
+}
+
 /* Begins a flow interval at the current state. */
 static int
 setup_interval(struct sim *s)
@@ -1453,13 +1523,18 @@ setup_interval(struct sim *s)
 	s->closed = !s->q && (sc->run.reduce & REDUCE_FLIGHT) &&
 	            scene_Fer_constant(sc, s->t, sc->run.T) &&
 	            (sc->d.system == SCENE_REDUCED || (sc->run.reduce & REDUCE_COM));
-	if (s->closed)
+	if (s->closed) {
+		s->resume = 0;
 		return 0;
+	}
 	s->stiff_row = 0;
 	if (s->built[s->q] != s->stepper[s->q] && phase_alloc(s, &s->ph[s->q], s->q))
 		return fail(s, HB_ENOMEM, "out of memory for the integrator");
 	s->cur = &s->ph[s->q];
-	scales(s, &s->cur->L, s->q);
+	if (s->resume)
+		resume_interval(s);
+	else
+		scales(s, &s->cur->L, s->q);
 	pack(s, &s->cur->L, s->u);
 	gsl_odeiv2_driver_reset(s->cur->d);
 	{
@@ -1467,9 +1542,12 @@ setup_interval(struct sim *s)
 		                 : s->scale[s->cur->L.ix] / s->scale[s->cur->L.iv];
 		s->Tc = Tc;
 		s->h = fmin(1e-2 * Tc, sc->run.T - s->t);
+		if (s->resume && s->resume_h > 0)
+			s->h = fmin(s->resume_h, sc->run.T - s->t);
 		if (!(s->h > 0))
 			s->h = 1e-9;
 	}
+	s->resume = 0;
 	return 0;
 }
 
@@ -1719,6 +1797,7 @@ reset_state(struct sim *s)
 	s->xe = s->te = s->vi = 0.0;
 	s->n_instant = 0;
 	s->setup = 1;
+	s->resume = 0;
 	s->ncol = 0;
 	s->stepper[1] = sc->run.stepper == STEPPER_AUTO ? STEPPER_DOP853 : sc->run.stepper;
 	arc_truncate(s->arc, 0);
@@ -1936,9 +2015,16 @@ sim_seek(struct sim *s, size_t i)
 
 	if (i >= arc_len(s->arc))
 		return HB_EINVAL;
+	s->resume_h = 0.0;
+	if (i + 1 < arc_len(s->arc) && arc_at(s->arc, i + 1)->j == arc_at(s->arc, i)->j)
+		s->resume_h = arc_at(s->arc, i + 1)->t - arc_at(s->arc, i)->t;
 	arc_truncate(s->arc, i + 1);
 	a = arc_at(s->arc, i);
 	iv = arc_interval_at(s->arc, arc_interval_of(s->arc, i));
+	/* continuing inside the interval (not at its pre-jump end) */
+	s->resume = a->kind != ARC_PRE_JUMP;
+	s->resume_first = iv->first;
+	s->resume_last = i;
 	s->t = a->t;
 	s->j = a->j;
 	s->q = a->q;
@@ -2002,10 +2088,30 @@ sim_set_scene(struct sim *s, const struct scene *sc, int *restarted, char *msg, 
 	restart = nsc.d.system != s->sc.d.system ||
 	          memcmp(&nsc.init, &s->sc.init, sizeof nsc.init) != 0 ||
 	          (s->q && (nsc.law != s->sc.law || nsc.ext != s->sc.ext || !same_bodies(&nsc, &s->sc)));
-	s->sc = nsc;
+	{
+		/* build for the new scene aside: on failure the simulator is exactly as it was */
+		struct scene old = s->sc;
+		struct phase oldph[2] = { s->ph[0], s->ph[1] };
+		int oldstepper[2] = { s->stepper[0], s->stepper[1] };
+		int oldbuilt[2] = { s->built[0], s->built[1] };
+		struct sim_stats oldst = s->st;
+
+		s->sc = nsc;
+		memset(s->ph, 0, sizeof s->ph);
+		if (build(s, msg, n) != 0) {
+			phase_free(&s->ph[0]);
+			phase_free(&s->ph[1]);
+			s->sc = old;
+			memcpy(s->ph, oldph, sizeof s->ph);
+			memcpy(s->stepper, oldstepper, sizeof s->stepper);
+			memcpy(s->built, oldbuilt, sizeof s->built);
+			s->st = oldst;
+			return HB_ENOMEM;
+		}
+		phase_free(&oldph[0]);
+		phase_free(&oldph[1]);
+	}
 	arc_set_max(s->arc, (size_t)nsc.run.max_samples);
-	if (build(s, msg, n) != 0)
-		return HB_ENOMEM;
 	if (restart) {
 		reset_state(s);
 		if (restarted)
