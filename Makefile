@@ -35,6 +35,7 @@ endif
 CURSES_PC := $(shell $(PKG_CONFIG) --exists ncursesw 2>/dev/null && echo ncursesw || echo ncurses)
 CORE_CFLAGS := $(shell $(PKG_CONFIG) --cflags gsl inih 2>/dev/null)
 CORE_LIBS   := $(shell $(PKG_CONFIG) --libs gsl inih 2>/dev/null) -lm
+CORE_LIBS   += -pthread
 # ncursesw's pkg-config adds -D_XOPEN_SOURCE=600, which would redefine ours (700).
 TUI_CFLAGS  := $(filter-out -D_XOPEN_SOURCE=%,$(shell $(PKG_CONFIG) --cflags $(CURSES_PC) 2>/dev/null))
 TUI_LIBS    := $(shell $(PKG_CONFIG) --libs $(CURSES_PC) 2>/dev/null)
