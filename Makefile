@@ -158,3 +158,13 @@ clean:
 	rm -rf build build-asan build-debug
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+
+# The sweep's threads under ThreadSanitizer (build-tsan/): the engine's
+# writable statics and the same point on many threads at once
+# (tests/cli/sweep_reentrant.sh, which make check runs on the plain build).
+.PHONY: check-tsan
+check-tsan: deps
+	@$(MAKE) --no-print-directory BUILD=build-tsan SAN=thread OPT=-O1 all
+	@TSAN_OPTIONS=halt_on_error=1:exitcode=66 HYBOUNCE_BIN=$(CURDIR)/build-tsan/hybounce \
+	    HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/cli/sweep_reentrant.sh | tee build-tsan/tsan.log; \
+	    ! grep -q '^not ok' build-tsan/tsan.log

@@ -1477,7 +1477,7 @@ build(struct sim *s, char *msg, size_t n)
 		if (phase_alloc(s, &s->ph[q], q))
 			return status_set(msg, n, HB_ENOMEM, "out of memory for the integrator");
 	{
-		static const char *names[MAXDIM];
+		const char *names[MAXDIM]; /* per call: sims may be built in parallel (sweeps) */
 		const struct layout *L = &s->ph[1].L;
 		int i;
 
