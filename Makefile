@@ -168,3 +168,10 @@ check-tsan: deps
 	@TSAN_OPTIONS=halt_on_error=1:exitcode=66 HYBOUNCE_BIN=$(CURDIR)/build-tsan/hybounce \
 	    HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/cli/sweep_reentrant.sh | tee build-tsan/tsan.log; \
 	    ! grep -q '^not ok' build-tsan/tsan.log
+
+# The sweep's speed targets: rate on 2 cores, overhead per point, memory of a
+# 100,000-point sweep (report in build/bench/sweep.txt; about a minute).
+.PHONY: bench-sweep
+bench-sweep: deps
+	@$(MAKE) --no-print-directory all
+	@sh tests/bench/sweep.sh $(BIN) $(BUILD)/bench
