@@ -217,4 +217,14 @@ if [ -z "$missing" ] && grep -q '^\.Sh SWEEPS$' man/hybounce.1; then
 	ok "the man page (SWEEPS) documents every option of hybounce sweep --help"
 else notok "the man page documents every option of hybounce sweep --help (missing:$missing)"; fi
 
+# 13. The README's example plot is what plot.sh draws from those sweeps.
+for l in shccl bwshccl bwmcl; do cp -r "$T/ex-restitution-$l" "$T/e-$l"; done
+R=$(pwd)
+(cd "$T" && sh "$R/examples/sweeps/plot.sh" -logx -absx v_i_first e_first e-shccl e-bwshccl e-bwmcl) >"$T/plot" 2>&1
+awk '/^    \$ sh examples\/sweeps\/plot.sh -logx -absx v_i_first e_first e-shccl e-bwshccl e-bwmcl$/ { on = 1; next }
+     on && /^$/ { exit } on { sub(/^    /, ""); print }' README.md >"$T/readme.plot"
+if [ -s "$T/plot" ] && cmp -s "$T/plot" "$T/readme.plot"; then
+	ok "README's restitution plot is plot.sh's output for the example sweeps"
+else notok "README's restitution plot is plot.sh's output for the example sweeps" "$T/plot"; diff "$T/plot" "$T/readme.plot" | head -5 | sed 's/^/# /'; fi
+
 exit 0
