@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "hybounce/csv.h"
@@ -342,4 +343,71 @@ Test(sweep, threads_journal_resume_and_merge)
 		snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpl);
 		cr_assert_eq(system(cmd), 0);
 	}
+}
+
+/* The explorer's curve: the same runs as the sweep (e to the bit), in the background. */
+Test(sweep, curve_matches_the_sweep_and_exports, .timeout = 60)
+{
+	struct scene sc;
+	struct sweep_curve *c;
+	struct sweep *sw;
+	double x[6], y[6];
+	int st[6];
+	char msg[512], path[] = "/tmp/hybounce-curve-XXXXXX", *csv;
+	long done;
+	int fd;
+
+	scene_preset("permanent-contact-shccl", &sc);
+	cr_assert_eq(scene_set(&sc, "initial.x0", "0", msg, sizeof msg), HB_OK);
+	cr_assert_eq(scene_set(&sc, "run.J", "2", msg, sizeof msg), HB_OK);
+	c = sweep_curve_start(&sc, "initial.v0", "-5mm/s:-0.5m/s:6:log", CURVE_E, 0, 2, msg,
+	                      sizeof msg);
+	cr_assert_not_null(c, "%s", msg);
+	cr_assert_eq(sweep_curve_npoints(c), 6);
+	while ((done = sweep_curve_poll(c, x, y, st, 6)) < 6)
+		nanosleep(&(struct timespec){ 0, 1000000 }, NULL);
+	sw = sweep_new(&sc, msg, sizeof msg);
+	vary(sw, "initial.v0=-5mm/s:-0.5m/s:6:log");
+	for (long i = 0; i < 6; i++) {
+		char *blk, want[64];
+		int failed;
+
+		cr_assert_eq(st[i], CURVE_DONE);
+		cr_assert_eq(x[i], value(sw, i, 0));
+		cr_assert_eq(sweep_point_block(sw, i, &blk, &failed, msg, sizeof msg), HB_OK);
+		snprintf(want, sizeof want, ",%.17g,", y[i]);
+		cr_assert(y[i] > 0 && y[i] < 1 && strstr(blk, want) != NULL, "point %ld: e %.17g, %s",
+		          i, y[i], blk);
+		free(blk);
+	}
+	fd = mkstemp(path);
+	close(fd);
+	cr_assert_eq(sweep_curve_write_csv(c, path, msg, sizeof msg), HB_OK, "%s", msg);
+	csv = slurp_file(path);
+	{
+		const char *head = "initial.v0,e\n-0.0050000000000000001,";
+
+		cr_assert(strncmp(csv, head, strlen(head)) == 0, "%s", csv);
+	}
+	unlink(path);
+	free(csv);
+	sweep_curve_free(c);
+	sweep_free(sw);
+}
+
+/* Freeing a curve cancels it: the workers stop within a slice of their run. */
+Test(sweep, curve_cancels, .timeout = 30)
+{
+	struct scene sc;
+	struct sweep_curve *c;
+	char msg[512];
+
+	scene_preset("steel-on-bitumen", &sc);
+	c = sweep_curve_start(&sc, "law.c", "440:44000:400:log", CURVE_COLLISIONS, 0, 2, msg,
+	                      sizeof msg);
+	cr_assert_not_null(c, "%s", msg);
+	cr_assert_lt(sweep_curve_poll(c, NULL, NULL, NULL, 0), 400);
+	sweep_curve_free(c);
+	cr_assert_null(sweep_curve_start(&sc, "law.nope", "1,2", CURVE_E, 0, 1, msg, sizeof msg));
+	cr_assert(strstr(msg, "law.nope") != NULL, "%s", msg);
 }

@@ -157,4 +157,65 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 int
 sweep_merge(const char *dir, char *msg, size_t n);
 
+/*
+ * Curves for the explorer: one parameter, one observable, computed by
+ * background threads while the caller keeps drawing.
+ *
+ *     c = sweep_curve_start(&scene, "initial.v0", "-1mm/s:-1m/s:40:log",
+ *                           CURVE_E, 0, 2, msg, sizeof msg);
+ *     each frame: k = sweep_curve_poll(c, x, y, st, n);  // never blocks long
+ *     sweep_curve_free(c);   // cancels: workers stop within one slice
+ *
+ * The points are those of the sweep with that one axis (the same scenes,
+ * the same runs: bit-identical to --batch), taken in order.
+ */
+enum sweep_observable {
+	CURVE_E = 0,      /* e of collision i */
+	CURVE_VI,         /* v_i of collision i, m/s */
+	CURVE_XCR,        /* x_c^r of collision i, m */
+	CURVE_COLLISIONS, /* number of completed collisions */
+	CURVE_TPC,        /* time of permanent contact, s (NAN: the run ends apart) */
+	CURVE_XCR_TOTAL,  /* sum of x_c^r over the collisions, m */
+	CURVE_COUNT
+};
+
+enum { CURVE_PENDING = 0, CURVE_DONE, CURVE_FAILED };
+
+/* Name of an observable ("e", "collisions", "t_pc" ...), NULL if out of range. */
+const char *
+sweep_observable_name(int obs);
+
+struct sweep_curve;
+
+/*
+ * Starts computing obs (of collision coll_i where it applies) over key=spec
+ * on `jobs` threads.  NULL with HB_EINVAL's message in msg on a bad key,
+ * spec or point.
+ */
+struct sweep_curve *
+sweep_curve_start(const struct scene *base, const char *key, const char *spec, int obs,
+                  long coll_i, int jobs, char *msg, size_t n);
+
+long
+sweep_curve_npoints(const struct sweep_curve *c);
+
+/*
+ * Copies up to n points: x (the parameter, SI), y (the observable; NAN when
+ * it does not exist, e.g. no collision i) and state (CURVE_PENDING, _DONE,
+ * _FAILED).  Returns the number of points finished so far.
+ */
+long
+sweep_curve_poll(struct sweep_curve *c, double *x, double *y, int *state, long n);
+
+/*
+ * Writes the finished points as CSV ("KEY,OBS" header, %.17g, empty for
+ * NAN), to a temporary name renamed over path.  HB_EIO with a message.
+ */
+int
+sweep_curve_write_csv(struct sweep_curve *c, const char *path, char *msg, size_t n);
+
+/* Stops the workers (each after at most one slice of its run) and frees. */
+void
+sweep_curve_free(struct sweep_curve *c);
+
 #endif

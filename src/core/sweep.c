@@ -23,6 +23,7 @@
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
 #include "hybounce/sweep.h"
+#include "sweep_impl.h"
 
 #define SWEEP_MAX_POINTS 1000000000L
 #define SWEEP_MAX_AXES 16
@@ -46,6 +47,17 @@ struct sweep {
  * points do not race on it (ThreadSanitizer sees no race).
  */
 static pthread_mutex_t gsl_handler_lock = PTHREAD_MUTEX_INITIALIZER;
+
+struct sim *
+sweep_sim_new(const struct scene *sc, char *msg, size_t n)
+{
+	struct sim *s;
+
+	pthread_mutex_lock(&gsl_handler_lock);
+	s = sim_new(sc, msg, n);
+	pthread_mutex_unlock(&gsl_handler_lock);
+	return s;
+}
 
 static void
 axis_free(struct axis *a)
@@ -599,9 +611,7 @@ sweep_point_block(const struct sweep *sw, long id, char **out, int *failed,
 	if ((rc = sweep_point_scene(sw, id, &sc, msg, n)) != HB_OK)
 		return rc;
 	m[0] = '\0';
-	pthread_mutex_lock(&gsl_handler_lock);
-	s = sim_new(&sc, m, sizeof m);
-	pthread_mutex_unlock(&gsl_handler_lock);
+	s = sweep_sim_new(&sc, m, sizeof m);
 	if (s == NULL)
 		return status_set(msg, n, HB_EINVAL, "point %ld: %s", id, m[0] ? m : "no memory");
 	(void)sim_run(s);

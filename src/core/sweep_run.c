@@ -219,11 +219,12 @@ sweep_prepare_dir(const struct sweep *sw, const char *dir, char *msg, size_t n)
 		}
 		while ((e = readdir(d)) != NULL)
 			if (!ours(e->d_name)) {
+				status_set(msg, n, HB_EINVAL, "--out %s: the folder is not empty "
+				    "and holds no sweep (found %s); expected a new or empty folder",
+				    dir, e->d_name);
 				closedir(d);
 				free(want);
-				return status_set(msg, n, HB_EINVAL, "--out %s: the folder is not "
-				    "empty and holds no sweep (found %s); expected a new or empty "
-				    "folder", dir, e->d_name);
+				return HB_EINVAL;
 			}
 		closedir(d);
 	}

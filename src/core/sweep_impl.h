@@ -1,0 +1,17 @@
+/*
+ * sweep_impl.h - what the sweep's files share inside the engine.
+ */
+#ifndef HYBOUNCE_SWEEP_IMPL_H
+#define HYBOUNCE_SWEEP_IMPL_H
+
+#include <stddef.h>
+#include "hybounce/sim.h"
+
+/*
+ * sim_new() for a worker thread: serialised, because sim_new() switches
+ * GSL's process-wide error handler off (one global written by every call).
+ */
+struct sim *
+sweep_sim_new(const struct scene *sc, char *msg, size_t n);
+
+#endif
