@@ -37,6 +37,7 @@
 #ifndef HYBOUNCE_SWEEP_H
 #define HYBOUNCE_SWEEP_H
 
+#include <signal.h>
 #include <stddef.h>
 #include "scene.h"
 
@@ -127,6 +128,12 @@ struct sweep_options {
 	/* Called on the calling thread after each point (and once at the start). */
 	void (*progress)(void *ctx, const struct sweep_progress *p);
 	void *ctx;
+	/*
+	 * May be NULL.  When *cancel becomes nonzero (e.g. from a SIGINT
+	 * handler) the workers finish their points, which are journaled, and
+	 * sweep_run returns HB_EDONE ("stopped with N of M points done").
+	 */
+	volatile sig_atomic_t *cancel;
 };
 
 /*
@@ -144,7 +151,8 @@ sweep_prepare_dir(const struct sweep *sw, const char *dir, char *msg, size_t n);
  * yet, on o->jobs threads, appending each to the journal as it completes.
  * A one-shard sweep then writes runs.csv and collisions.csv (sweep_merge)
  * and removes its journal.  Returns HB_OK (failed points included),
- * HB_EINVAL (bad DIR), HB_EIO or HB_ENOMEM.
+ * HB_EDONE (cancelled, see sweep_options), HB_EINVAL (bad DIR), HB_EIO or
+ * HB_ENOMEM.
  */
 int
 sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size_t n);

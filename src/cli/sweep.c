@@ -15,6 +15,7 @@
  * incomplete merge); 2 bad input.
  */
 #include <errno.h>
+#include <signal.h>
 #include <getopt.h>
 #include <limits.h>
 #include <stdio.h>
@@ -31,6 +32,15 @@
 #include "sweep_cli.h"
 
 #define PROG "hybounce sweep"
+
+/* Set by SIGINT, SIGTERM and SIGHUP: the sweep stops after the points in hand. */
+static volatile sig_atomic_t stop_signal;
+
+static void
+on_stop_signal(int sig)
+{
+	stop_signal = sig;
+}
 
 enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS };
 
@@ -87,7 +97,9 @@ sweep_usage(FILE *f)
 "  -h, --help              show this help\n"
 "\n"
 "Exit status: 0 complete (numerically failed points are rows with their\n"
-"message), 1 could not complete, 2 bad input.  See hybounce(1).\n");
+"message), 1 could not complete, 2 bad input, 128+N stopped by signal N\n"
+"(SIGINT, SIGTERM, SIGHUP: the points done are kept; run again to resume).\n"
+"See hybounce(1).\n");
 }
 
 static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -457,9 +469,26 @@ sweep_main(int argc, char **argv)
 		o.shard_n = shard_n;
 		o.progress = on_progress;
 		o.ctx = &g;
+		o.cancel = &stop_signal;
+		{
+			struct sigaction sa;
+
+			memset(&sa, 0, sizeof sa);
+			sa.sa_handler = on_stop_signal;
+			sigemptyset(&sa.sa_mask);
+			sigaction(SIGINT, &sa, NULL);
+			sigaction(SIGTERM, &sa, NULL);
+			sigaction(SIGHUP, &sa, NULL);
+		}
 		msg[0] = '\0';
 		status = sweep_run(sw, &o, msg, sizeof msg);
-		if (status == HB_EINVAL) {
+		if (status == HB_EDONE) {
+			/* Interrupted: what was done is journaled; exit as the signal would. */
+			if (g.tty && !quiet)
+				fputc('\n', stderr);
+			fprintf(stderr, PROG ": %s\n", msg);
+			status = 128 + (int)stop_signal;
+		} else if (status == HB_EINVAL) {
 			fprintf(stderr, PROG ": %s\n", msg);
 			status = 2;
 		} else if (status != HB_OK) {

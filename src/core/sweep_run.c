@@ -402,7 +402,7 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 	pthread_t *th = NULL;
 	long *todo = NULL, got = 0, nth = 0;
 	char jpath[4200];
-	int fd = -1, rc;
+	int fd = -1, rc, cancelled = 0;
 	double t0 = mono_now();
 
 	memset(&pr, 0, sizeof pr);
@@ -480,8 +480,25 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 		while (got < p.ntodo && rc == HB_OK) {
 			struct result *r;
 
-			while (p.head == NULL && p.stop == 0)
-				pthread_cond_wait(&p.cv, &p.mu);
+			while (p.head == NULL && p.stop == 0 && !cancelled) {
+				struct timespec until;
+
+				if (o->cancel != NULL && *o->cancel) {
+					cancelled = 1;
+					break;
+				}
+				clock_gettime(CLOCK_REALTIME, &until);
+				until.tv_nsec += 100000000L;   /* look at *o->cancel every 0.1 s */
+				if (until.tv_nsec >= 1000000000L) {
+					until.tv_sec++;
+					until.tv_nsec -= 1000000000L;
+				}
+				pthread_cond_timedwait(&p.cv, &p.mu, &until);
+			}
+			if (cancelled || (o->cancel != NULL && *o->cancel)) {
+				cancelled = 1;
+				break;
+			}
 			if (p.head == NULL) {
 				rc = status_set(msg, n, HB_ENOMEM, "out of memory");
 				break;
@@ -508,7 +525,7 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 			free(r);
 			pthread_mutex_lock(&p.mu);
 		}
-		p.stop = p.stop ? p.stop : rc != HB_OK;
+		p.stop = p.stop ? p.stop : rc != HB_OK || cancelled;
 		pthread_mutex_unlock(&p.mu);
 threads_done:
 		for (long i = 0; i < nth; i++)
@@ -516,10 +533,22 @@ threads_done:
 		while (p.head) {
 			struct result *r = p.head;
 
+			/* Stopped: the points that were finishing are kept too. */
+			if (cancelled && rc == HB_OK && r->rc == HB_OK) {
+				if (write_all(fd, r->blk, strlen(r->blk)) != 0)
+					rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+				else {
+					pr.done++;
+					pr.failed += r->failed;
+				}
+			}
 			p.head = r->next;
 			free(r->blk);
 			free(r);
 		}
+		if (cancelled && rc == HB_OK)
+			rc = status_set(msg, n, HB_EDONE, "stopped with %ld of %ld points done; "
+			                "the same command resumes", pr.done, pr.total);
 		free(th);
 		pthread_cond_destroy(&p.cv);
 		pthread_mutex_destroy(&p.mu);

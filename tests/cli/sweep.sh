@@ -227,4 +227,27 @@ if [ -s "$T/plot" ] && cmp -s "$T/plot" "$T/readme.plot"; then
 	ok "README's restitution plot is plot.sh's output for the example sweeps"
 else notok "README's restitution plot is plot.sh's output for the example sweeps" "$T/plot"; diff "$T/plot" "$T/readme.plot" | head -5 | sed 's/^/# /'; fi
 
+# 14. SIGINT (and SIGTERM): the points in hand are finished and kept, exit
+# 128+N, and the same command resumes.
+"$BIN" sweep $P --vary "$VK" --jobs 2 --out "$T/int" 2>"$T/int.err" &
+pid=$!
+i=0
+while [ $i -lt 400 ]; do
+	n=$(grep -c '^r,' "$T/int/points.journal" 2>/dev/null || true)
+	[ "${n:-0}" -ge 3 ] && break
+	i=$((i + 1))
+	sleep 0.01
+done
+kill -INT $pid
+wait $pid
+rc=$?
+n=$(grep -c '^r,' "$T/int/points.journal" 2>/dev/null || echo 0)
+if [ $rc -eq 130 ] && grep -q "^hybounce sweep: stopped with $n of 40 points done; the same command resumes$" "$T/int.err" &&
+    [ ! -f "$T/int/runs.csv" ] && [ "$(tail -c 1 "$T/int/points.journal" | od -An -c | tr -d ' ')" = '\n' ]; then
+	ok "SIGINT: exit 130, the $n points done are journaled whole, no runs.csv"
+else notok "SIGINT: exit 130 and the points done journaled (exit $rc, $n points)" "$T/int.err"; fi
+"$BIN" sweep $P --vary "$VK" --jobs 2 --quiet --out "$T/int" 2>"$T/err"
+if [ $? -eq 0 ] && same_sweep "$T/full" "$T/int"; then ok "after SIGINT the same command completes the sweep"
+else notok "after SIGINT the same command completes the sweep" "$T/err"; fi
+
 exit 0
