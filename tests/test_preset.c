@@ -21,49 +21,8 @@
 
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
-
-static const char *const all_presets[] = {
-	"steel-on-bitumen", "ptfe-pom", "permanent-contact-shccl", "permanent-contact-bwshccl",
-	"permanent-contact-bwmcl", "nonunique-rest", "nonunique-separation", "hertz-elastic",
-};
-#define NPRESETS (sizeof all_presets / sizeof all_presets[0])
-
-static const char *
-preset_dir(void)
-{
-	const char *e = getenv("HYBOUNCE_PRESETS");
-
-	if (e != NULL && e[0] != '\0' && strchr(e, ':') == NULL)
-		return e;
-	return "presets";
-}
-
-static void
-load(const char *name, struct scene *sc)
-{
-	char path[1024], msg[512] = "";
-
-	snprintf(path, sizeof path, "%s/%s.preset", preset_dir(), name);
-	cr_assert_eq(preset_load(path, sc, msg, sizeof msg), HB_OK, "%s: %s", path, msg);
-}
-
-static double
-par(const struct scene *sc, const char *name)
-{
-	int i = law_param_index(sc->law, name);
-
-	cr_assert(i >= 0, "no parameter %s", name);
-	return sc->par[i];
-}
-
-static void
-printed(double x, double value, int sig, const char *what)
-{
-	double ulp = pow(10, floor(log10(fabs(value))) - (sig - 1));
-
-	cr_assert(fabs(x - value) <= 0.5 * ulp, "%s = %.6e, the paper prints %.*e", what, x,
-	    sig - 1, value);
-}
+#include "hybounce/units.h"
+#include "testutil.h"
 
 /* Bitwise equality of doubles (NaN equals NaN, 0 differs from -0). */
 static int
@@ -129,13 +88,13 @@ scene_same(const struct scene *a, const struct scene *b, const char *what)
 
 Test(preset, every_preset_loads)
 {
-	for (size_t i = 0; i < NPRESETS; i++) {
+	for (size_t i = 0; i < NPAPER_PRESETS; i++) {
 		struct scene sc;
 		char msg[512] = "";
-		load(all_presets[i], &sc);
-		cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s: %s", all_presets[i], msg);
-		cr_assert(sc.name[0] != '\0', "%s has no [scene] name", all_presets[i]);
-		cr_assert(strlen(sc.description) > 20, "%s has no description", all_presets[i]);
+		scene_preset(paper_presets[i], &sc);
+		cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s: %s", paper_presets[i], msg);
+		cr_assert(sc.name[0] != '\0', "%s has no [scene] name", paper_presets[i]);
+		cr_assert(strlen(sc.description) > 20, "%s has no description", paper_presets[i]);
 	}
 }
 
@@ -157,41 +116,41 @@ Test(preset, every_file_in_the_folder_loads)
 		n++;
 	}
 	closedir(d);
-	cr_assert(n >= (int)NPRESETS);
+	cr_assert(n >= (int)NPAPER_PRESETS);
 }
 
 Test(preset, study1_table_one)
 {
 	struct scene sc;
 
-	load("steel-on-bitumen", &sc);
+	scene_preset("steel-on-bitumen", &sc);
 	cr_assert_eq(sc.law, &law_bwmcl);
 	cr_assert_eq(sc.d.system, SCENE_REDUCED);
 	printed(sc.d.Estar, 1.134e9, 4, "E*");
 	printed(sc.d.Re, 20e-3, 2, "R_e");
 	printed(sc.d.m, 2.614e-1, 4, "m");
 	printed(sc.d.kH, 2.138e8, 4, "k_H");
-	printed(par(&sc, "k"), 2.138e8, 4, "k");
+	printed(scene_par(&sc, "k"), 2.138e8, 4, "k");
 	cr_assert_eq(sc.d.k_derived, 1);
-	cr_assert_eq(par(&sc, "A"), 1);
-	cr_assert_eq(par(&sc, "alpha"), 0.35);
-	cr_assert_eq(par(&sc, "beta"), 5e7);
-	cr_assert_eq(par(&sc, "gamma"), 5e7);
-	cr_assert_eq(par(&sc, "n"), 2);
-	cr_assert_eq(par(&sc, "p"), 1.5);
-	cr_assert_eq(par(&sc, "c"), 4.4e3);
+	cr_assert_eq(scene_par(&sc, "A"), 1);
+	cr_assert_eq(scene_par(&sc, "alpha"), 0.35);
+	cr_assert_eq(scene_par(&sc, "beta"), 5e7);
+	cr_assert_eq(scene_par(&sc, "gamma"), 5e7);
+	cr_assert_eq(scene_par(&sc, "n"), 2);
+	cr_assert_eq(scene_par(&sc, "p"), 1.5);
+	cr_assert_eq(scene_par(&sc, "c"), 4.4e3);
 	cr_assert(fabs(sc.init.x0 - 0.020) < 1e-17);
 	cr_assert_eq(sc.init.v0, 0);
 	cr_assert_eq(sc.loads.g, 9.81);
 	cr_assert_eq(sc.run.T, 0.5);
-	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / par(&sc, "p")), 5.240e-6, 4, "x_c^s");
+	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / scene_par(&sc, "p")), 5.240e-6, 4, "x_c^s");
 }
 
 Test(preset, study2_table_two)
 {
 	struct scene sc;
 
-	load("ptfe-pom", &sc);
+	scene_preset("ptfe-pom", &sc);
 	cr_assert_eq(sc.law, &law_bwshccl);
 	cr_assert_eq(sc.d.system, SCENE_FULL);
 	printed(sc.d.Estar, 5.321e8, 4, "E*");
@@ -200,10 +159,10 @@ Test(preset, study2_table_two)
 	printed(sc.d.m2, 4.725e-2, 4, "m2");
 	printed(sc.d.m, 2.879e-2, 4, "m");
 	printed(sc.d.eta, 0.6094, 4, "eta");
-	printed(par(&sc, "k"), 7.095e7, 4, "k");
-	cr_assert_eq(par(&sc, "beta"), 2.409e8);
-	cr_assert_eq(par(&sc, "gamma"), 2.409e8);
-	cr_assert_eq(par(&sc, "c"), 2.5e7);
+	printed(scene_par(&sc, "k"), 7.095e7, 4, "k");
+	cr_assert_eq(scene_par(&sc, "beta"), 2.409e8);
+	cr_assert_eq(scene_par(&sc, "gamma"), 2.409e8);
+	cr_assert_eq(scene_par(&sc, "c"), 2.5e7);
 	cr_assert_eq(sc.loads.ramp, 1);
 	cr_assert_eq(sc.loads.Fe0, 0.5759);
 	cr_assert_eq(sc.loads.Te, 0.2);
@@ -219,52 +178,52 @@ Test(preset, study3_table_slow)
 {
 	struct scene sc;
 
-	load("permanent-contact-shccl", &sc);
+	scene_preset("permanent-contact-shccl", &sc);
 	cr_assert_eq(sc.law, &law_shccl);
 	printed(sc.d.Estar, 2.256e9, 4, "E*");
 	printed(sc.d.m, 2.614e-1, 4, "m");
-	printed(par(&sc, "k"), 4.254e8, 4, "k");
-	cr_assert_eq(par(&sc, "c"), 4.3e9);
-	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / par(&sc, "p")), 3.312e-6, 4, "x_c^s");
+	printed(scene_par(&sc, "k"), 4.254e8, 4, "k");
+	cr_assert_eq(scene_par(&sc, "c"), 4.3e9);
+	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / scene_par(&sc, "p")), 3.312e-6, 4, "x_c^s");
 	cr_assert(fabs(sc.init.x0 - 40e-6) < 1e-20);
 	cr_assert_eq(sc.run.T, 0.1);
 
-	load("permanent-contact-bwshccl", &sc);
+	scene_preset("permanent-contact-bwshccl", &sc);
 	cr_assert_eq(sc.law, &law_bwshccl);
 	printed(sc.d.kH, 4.254e8, 4, "k_H");
-	cr_assert_eq(par(&sc, "alpha"), 0.35);
-	cr_assert_eq(par(&sc, "beta"), 5e9);
-	cr_assert_eq(par(&sc, "gamma"), 5e9);
-	cr_assert_eq(par(&sc, "c"), 2.15e9);
+	cr_assert_eq(scene_par(&sc, "alpha"), 0.35);
+	cr_assert_eq(scene_par(&sc, "beta"), 5e9);
+	cr_assert_eq(scene_par(&sc, "gamma"), 5e9);
+	cr_assert_eq(scene_par(&sc, "c"), 2.15e9);
 
-	load("permanent-contact-bwmcl", &sc);
+	scene_preset("permanent-contact-bwmcl", &sc);
 	cr_assert_eq(sc.law, &law_bwmcl);
-	printed(par(&sc, "k"), 2.138e8, 4, "k");
-	cr_assert_eq(par(&sc, "c"), 4.4e3);
-	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / par(&sc, "p")), 5.240e-6, 4, "x_c^s");
+	printed(scene_par(&sc, "k"), 2.138e8, 4, "k");
+	cr_assert_eq(scene_par(&sc, "c"), 4.4e3);
+	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / scene_par(&sc, "p")), 5.240e-6, 4, "x_c^s");
 }
 
 Test(preset, nonuniqueness_examples)
 {
 	struct scene sc;
 
-	load("nonunique-rest", &sc);
+	scene_preset("nonunique-rest", &sc);
 	cr_assert_eq(sc.init.x0, 0);
 	cr_assert_eq(sc.init.v0, 0);
 	cr_assert_eq(sc.loads.g, 0);
 	cr_assert_eq(sc.run.T, 1);
 
-	load("nonunique-separation", &sc);
+	scene_preset("nonunique-separation", &sc);
 	cr_assert_eq(sc.law, &law_linear);
 	cr_assert_eq(sc.d.system, SCENE_REDUCED);
 	cr_assert_eq(sc.d.m, 1);
 	cr_assert_eq(sc.d.k_derived, 0);
-	cr_assert_eq(par(&sc, "k"), 1e4);
+	cr_assert_eq(scene_par(&sc, "k"), 1e4);
 	cr_assert_eq(sc.body[0].has_material, 0);
 	cr_assert(fabs(sc.init.x0 - 1e-3) < 1e-19);
 	cr_assert_eq(sc.init.v0, -0.5);
 
-	load("hertz-elastic", &sc);
+	scene_preset("hertz-elastic", &sc);
 	cr_assert_eq(sc.law, &law_hertz);
 	cr_assert(fabs(sc.body[0].R - 0.010) < 1e-18);
 	cr_assert(fabs(sc.init.x0 - 0.005) < 1e-18);
@@ -336,7 +295,7 @@ Test(preset, good_text_loads)
 
 	cr_assert_eq(load_with(0, NULL, msg, sizeof msg, &sc), HB_OK, "%s", msg);
 	cr_assert_eq(sc.law, &law_bwmcl);
-	cr_assert_eq(par(&sc, "alpha"), 0.35);
+	cr_assert_eq(scene_par(&sc, "alpha"), 0.35);
 }
 
 Test(preset, malformed_line)
@@ -364,7 +323,7 @@ Test(preset, out_of_range)
 	error_at(16, "gamma = 6e7 m^-2", "[-beta, beta]");
 	error_at(14, "n = 0.5", "[law] n: value 0.5 is out of range; accepted: [1, inf)");
 	error_at(14, "p = 0.99", "[law] p: value 0.99 is out of range; accepted: [1, inf)");
-	error_at(7, "mass = -2 kg", "[body1] mass: value -2 kg is out of range; accepted: (0, inf] kg");
+	error_at(7, "mass = -2 kg", "[body1] mass: value -2 kg is out of range; accepted: (0, inf) kg");
 	error_at(18, "x0 = -1 mm", "[initial] x0: value -1 mm is out of range; accepted: [0, inf) m");
 	error_at(11, "nu = 0.5", "[body2] nu: value 0.5 is out of range; accepted: (-1, 0.5)");
 }
@@ -424,10 +383,10 @@ Test(preset, order_independent_and_comments)
 
 	cr_assert_eq(preset_load_string(text, "o.preset", &sc, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(sc.law, &law_bwmcl);
-	cr_assert_eq(par(&sc, "beta"), 2.385e4);
-	cr_assert_eq(par(&sc, "gamma"), 1e4);
-	cr_assert_eq(par(&sc, "n"), 3);
-	cr_assert_eq(par(&sc, "c"), 4400);
+	cr_assert_eq(scene_par(&sc, "beta"), 2.385e4);
+	cr_assert_eq(scene_par(&sc, "gamma"), 1e4);
+	cr_assert_eq(scene_par(&sc, "n"), 3);
+	cr_assert_eq(scene_par(&sc, "c"), 4400);
 	cr_assert_str_eq(sc.name, "indented key");
 }
 
@@ -463,14 +422,14 @@ Test(preset, round_trip_every_preset)
 	char dir[] = "/tmp/hb-preset-XXXXXX";
 
 	cr_assert(mkdtemp(dir) != NULL);
-	for (size_t i = 0; i < NPRESETS; i++) {
+	for (size_t i = 0; i < NPAPER_PRESETS; i++) {
 		struct scene a, b;
 		char path[256], msg[512] = "";
-		load(all_presets[i], &a);
-		snprintf(path, sizeof path, "%s/%s.preset", dir, all_presets[i]);
+		scene_preset(paper_presets[i], &a);
+		snprintf(path, sizeof path, "%s/%s.preset", dir, paper_presets[i]);
 		cr_assert_eq(preset_save(path, &a, msg, sizeof msg), HB_OK, "%s", msg);
 		cr_assert_eq(preset_load(path, &b, msg, sizeof msg), HB_OK, "%s", msg);
-		scene_same(&a, &b, all_presets[i]);
+		scene_same(&a, &b, paper_presets[i]);
 		unlink(path);
 	}
 	rmdir(dir);
@@ -482,7 +441,7 @@ Test(preset, round_trip_edited_scene)
 	char msg[512] = "";
 	static char buf[8192];
 
-	load("ptfe-pom", &a);
+	scene_preset("ptfe-pom", &a);
 	cr_assert_eq(scene_set(&a, "law.alpha", "0.123456789012345678", msg, sizeof msg), HB_OK);
 	cr_assert_eq(scene_set(&a, "initial.v0", "-0.1 mm/s", msg, sizeof msg), HB_OK);
 	cr_assert_eq(scene_set(&a, "run.reductions", "flight,com", msg, sizeof msg), HB_OK);
@@ -580,7 +539,7 @@ Test(preset, resolve_and_list)
 	cr_assert(strstr(dirs[nd - 1], "/presets") != NULL);
 
 	n = preset_list(&list);
-	cr_assert(n >= (int)NPRESETS);
+	cr_assert(n >= (int)NPAPER_PRESETS);
 	for (int i = 0; i < n; i++) {
 		if (i > 0)
 			cr_assert(strcmp(list[i - 1].name, list[i].name) < 0, "not sorted or duplicated");
@@ -592,4 +551,217 @@ Test(preset, resolve_and_list)
 	}
 	cr_assert(found);
 	free(list);
+}
+
+/* ---------------------------------------------------------------- */
+/* Save -> load gives the same scene, over many values and names */
+
+/* A small deterministic generator (xorshift64*). */
+static unsigned long long rng_state = 0x9E3779B97F4A7C15ull;
+
+static double
+rnd(void)
+{
+	rng_state ^= rng_state >> 12;
+	rng_state ^= rng_state << 25;
+	rng_state ^= rng_state >> 27;
+	return (double)((rng_state * 2685821657736338717ull) >> 11) / 9007199254740992.0;
+}
+
+/* A value inside range r, of every kind of magnitude and digit count. */
+static double
+value_in(const struct unit_range *r)
+{
+	static const double odd[] = { 1.23456789, 3e9, 1 + 1e-12, 0.1, 1e-300, 7.0 / 3.0,
+		2.5, 1e15 + 1, 123456789012345678.0, 0.30000000000000004 };
+	double v;
+
+	for (int tries = 0; tries < 64; tries++) {
+		switch ((int)(rnd() * 4)) {
+		case 0: v = odd[(int)(rnd() * 10)]; break;
+		case 1: v = pow(10, rnd() * 40 - 20) * (1 + rnd()); break;
+		case 2: v = r->lo + (isfinite(r->hi) ? r->hi - r->lo : 10) * rnd(); break;
+		default: v = ldexp(rnd(), (int)(rnd() * 100) - 50); break;
+		}
+		if (rnd() < 0.2)
+			v = -v;
+		if (r->whole)
+			v = floor(fmin(v, 1e15));
+		if (units_in_range(v, r))
+			return v;
+	}
+	return r->lo_open ? (isfinite(r->hi) ? (r->lo + r->hi) / 2 : r->lo + 1) : r->lo;
+}
+
+/* A name of printable ASCII and UTF-8 that often begins with ';' or '#'. */
+static void
+name_random(char *buf, size_t n)
+{
+	static const char *const bits[] = { ";", "#", "=", "[", "]", "\"", "'", " ", "a", "Z",
+		"0", "\xc2\xb5", "\\", ":", "%s", "x y", ";;", "##" };
+	size_t len = 0;
+	int k = 1 + (int)(rnd() * 12);
+
+	buf[0] = '\0';
+	if (rnd() < 0.5)
+		snprintf(buf, n, "%s", rnd() < 0.5 ? ";" : "#");
+	for (int i = 0; i < k; i++) {
+		len = strlen(buf);
+		snprintf(buf + len, n - len, "%s", bits[(int)(rnd() * 18)]);
+	}
+}
+
+/* save -> load -> save: the same scene and the same text. */
+static void
+round_trip(const struct scene *a, const char *what)
+{
+	static char buf[16384], buf2[16384];
+	struct scene b;
+	char msg[1024] = "";
+
+	cr_assert(preset_format(a, buf, sizeof buf) < sizeof buf);
+	cr_assert_eq(preset_load_string(buf, "rt", &b, msg, sizeof msg), HB_OK,
+	    "%s: saved preset does not load: %s\n%s", what, msg, buf);
+	scene_same(a, &b, what);
+	preset_format(&b, buf2, sizeof buf2);
+	cr_assert_str_eq(buf, buf2, "%s: saved twice, different text", what);
+}
+
+Test(preset, round_trip_many_values_and_names)
+{
+	const struct law_type *const *laws = law_list();
+	int tried = 0, accepted = 0, saved = 0;
+
+	for (int it = 0; it < 400; it++) {
+		struct scene sc;
+		struct scene_error err;
+		char name[128], what[160];
+
+		scene_defaults(&sc);
+		if (it % 3 == 1)
+			scene_preset(paper_presets[it % NPAPER_PRESETS], &sc);
+		/* a law, then random values for every key the panel shows, then names */
+		for (int l = 0; laws[l] != NULL; l++)
+			if (rnd() < 0.25)
+				cr_assert_eq(scene_set_text(&sc, "scene.law", laws[l]->name, &err), HB_OK);
+		for (int round = 0; round < 2; round++)
+			for (int k = 0; k < scene_nkeys(&sc); k++) {
+				struct scene_keyinfo ki;
+				cr_assert_eq(scene_key(&sc, k, &ki), HB_OK);
+				if (ki.readonly || rnd() < 0.3)
+					continue;
+				tried++;
+				if (ki.kind == SCENE_KEY_NUMBER || ki.kind == SCENE_KEY_WHOLE) {
+					if (scene_set_number(&sc, ki.key, value_in(&ki.limits), &err) == HB_OK)
+						accepted++;
+				} else if (ki.kind == SCENE_KEY_CHOICE) {
+					cr_assert(ki.nchoices >= 2, "%s: no choices", ki.key);
+					cr_assert_eq(scene_set_text(&sc, ki.key,
+					    ki.choices[(int)(rnd() * ki.nchoices)], &err), HB_OK, "%s", ki.key);
+					accepted++;
+				} else {
+					name_random(name, sizeof name);
+					if (scene_set_text(&sc, ki.key, name, &err) == HB_OK)
+						accepted++;
+				}
+			}
+		/* A name beginning with ';' or '#' is accepted and kept. */
+		name_random(name, sizeof name);
+		name[0] = it % 2 ? ';' : '#';
+		if (scene_set_text(&sc, "scene.name", name, &err) != HB_OK) {
+			snprintf(name, sizeof name, "%s plain", it % 2 ? ";" : "#");
+			cr_assert_eq(scene_set_text(&sc, "scene.name", name, &err), HB_OK, "%s",
+			    err.what);
+		}
+		cr_assert_eq(sc.name[0], it % 2 ? ';' : '#');
+		if (scene_validate(&sc, NULL, 0) != HB_OK)
+			continue; /* e.g. gamma outside [-beta, beta]: not a scene that is saved */
+		snprintf(what, sizeof what, "scene %d (%s)", it, sc.law->name);
+		round_trip(&sc, what);
+		saved++;
+	}
+	cr_log_info("round trip: %d values tried, %d accepted, %d scenes saved and loaded back",
+	    tried, accepted, saved);
+	cr_assert(accepted > 1000, "only %d values accepted", accepted);
+	cr_assert(saved > 200, "only %d valid scenes", saved);
+}
+
+/* The failures the fuzzing found: law exponents of many digits or large, names with ';' '#'. */
+Test(preset, round_trip_found_by_fuzzing)
+{
+	static const char *const sets[][2] = {
+		{ "law.n", "1.23456789" }, { "law.n", "3e9" }, { "law.p", "1.23456789" },
+		{ "law.p", "1e15" }, { "law.n", "1.0000000001" }, { "scene.name", ";x" },
+		{ "scene.name", "#1 test" }, { "body1.name", ";" }, { "scene.description", "#" },
+	};
+
+	for (size_t i = 0; i < sizeof sets / sizeof sets[0]; i++) {
+		struct scene sc;
+		struct scene_error err;
+		char what[96];
+
+		scene_preset("steel-on-bitumen", &sc);
+		cr_assert_eq(scene_set_text(&sc, sets[i][0], sets[i][1], &err), HB_OK, "%s=%s: %s",
+		    sets[i][0], sets[i][1], err.what);
+		snprintf(what, sizeof what, "%s=%s", sets[i][0], sets[i][1]);
+		round_trip(&sc, what);
+	}
+}
+
+/* ---------------------------------------------------------------- */
+/* One way to open a preset with --set, for both front ends */
+
+Test(preset, open_applies_sets_as_typed)
+{
+	struct scene a, b;
+	char path[512], msg[512] = "";
+	const char *spaced[] = { " run.T = 1 ms", "\tlaw.c=4.4e3 N s/m ", "initial.x0 =40 um" };
+	const char *bad_key[] = { "run.T" };
+	const char *bad_val[] = { "run.T=-1 s" };
+	const char *bad_scene[] = { "law.gamma=1e9 m^-2" };
+
+	snprintf(path, sizeof path, "%s/steel-on-bitumen.preset", preset_dir());
+	cr_assert_eq(preset_open(path, spaced, 3, &a, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(a.run.T, 1e-3);
+	scene_preset("steel-on-bitumen", &b);
+	cr_assert_eq(scene_set(&b, "run.T", "1 ms", msg, sizeof msg), HB_OK);
+	cr_assert_eq(scene_set(&b, "law.c", "4.4e3 N s/m", msg, sizeof msg), HB_OK);
+	cr_assert_eq(scene_set(&b, "initial.x0", "40 um", msg, sizeof msg), HB_OK);
+	scene_same(&a, &b, "--set with blanks");
+
+	cr_assert_eq(preset_open(path, bad_key, 1, &a, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strstr(msg, "--set 'run.T': expected KEY=VALUE") != NULL, "%s", msg);
+	cr_assert_eq(preset_open(path, bad_val, 1, &a, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strstr(msg, "--set run.T=-1 s: run.T: value -1 s is out of range; accepted: "
+	    "(0, inf) s") != NULL, "%s", msg);
+	cr_assert_eq(preset_open(path, bad_scene, 1, &a, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strstr(msg, "steel-on-bitumen.preset: law.gamma: ") != NULL, "%s", msg);
+}
+
+/* The text the explorer puts in its edit prompt reads back to the same scene. */
+Test(preset, edit_text_reads_back_exactly)
+{
+	static char before[16384], after[16384];
+
+	for (size_t i = 0; i < NPAPER_PRESETS; i++) {
+		struct scene sc;
+		scene_preset(paper_presets[i], &sc);
+		preset_format(&sc, before, sizeof before);
+		for (int k = 0; k < scene_nkeys(&sc); k++) {
+			struct scene_keyinfo ki;
+			struct scene_error err;
+			cr_assert_eq(scene_key(&sc, k, &ki), HB_OK);
+			if (ki.kind == SCENE_KEY_TEXT || ki.kind == SCENE_KEY_CHOICE)
+				ki.number = 0;
+			if (ki.readonly || isnan(ki.number) ||
+			    (strcmp(ki.key, "body1.mass") == 0 && !sc.body[0].mass_given) ||
+			    (strcmp(ki.key, "body2.mass") == 0 && !sc.body[1].mass_given))
+				continue; /* not given, or derived: typing it would give it */
+			cr_assert_eq(scene_set_text(&sc, ki.key, ki.edit, &err), HB_OK,
+			    "%s: %s = '%s': %s", paper_presets[i], ki.key, ki.edit, err.what);
+			preset_format(&sc, after, sizeof after);
+			cr_assert_str_eq(before, after, "%s: %s = '%s' changed the scene",
+			    paper_presets[i], ki.key, ki.edit);
+		}
+	}
 }

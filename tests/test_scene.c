@@ -17,19 +17,7 @@
 #include "hybounce/scene.h"
 #include "hybounce/status.h"
 #include "hybounce/units.h"
-
-/*
- * x agrees with the printed value to the digits printed: |x - printed| is
- * at most half a unit in the last printed place.
- */
-static void
-printed(double x, double value, int sig, const char *what)
-{
-	double ulp = pow(10, floor(log10(fabs(value))) - (sig - 1));
-
-	cr_assert(fabs(x - value) <= 0.5 * ulp, "%s = %.6e, the paper prints %.*e", what, x,
-	    sig - 1, value);
-}
+#include "testutil.h"
 
 static void
 set(struct scene *sc, const char *key, const char *text)
@@ -55,15 +43,6 @@ set_fails(struct scene *sc, const char *key, const char *text, const char *part)
 	    key);
 	cr_assert(memcmp(&before, sc, sizeof before) == 0, "%s = %s changed the scene on error", key,
 	    text);
-}
-
-static double
-par(const struct scene *sc, const char *name)
-{
-	int i = law_param_index(sc->law, name);
-
-	cr_assert(i >= 0, "no parameter %s", name);
-	return sc->par[i];
 }
 
 /* Study 1 (Table tab:one): steel on bitumen, BWMCL. */
@@ -139,7 +118,7 @@ Test(scene, defaults_are_valid)
 	cr_assert_eq(sc.ext, 1);
 	cr_assert_eq(sc.loads.g, 9.81);
 	cr_assert_eq(sc.d.k_derived, 1);
-	cr_assert_eq(par(&sc, "k"), sc.d.kH);
+	cr_assert_eq(scene_par(&sc, "k"), sc.d.kH);
 }
 
 Test(scene, study1_inferred)
@@ -155,8 +134,8 @@ Test(scene, study1_inferred)
 	printed(sc.d.m, 2.614e-1, 4, "m");
 	printed(sc.d.kH, 2.138e8, 4, "k_H");
 	cr_assert_eq(sc.d.k_derived, 1);
-	printed(par(&sc, "k"), 2.138e8, 4, "k");
-	cr_assert(fabs(par(&sc, "k") - sc.d.kH) <= 1e-15 * sc.d.kH, "k = k_H when A = 1");
+	printed(scene_par(&sc, "k"), 2.138e8, 4, "k");
+	cr_assert(fabs(scene_par(&sc, "k") - sc.d.kH) <= 1e-15 * sc.d.kH, "k = k_H when A = 1");
 	/* x_c^s of the substrate of the first study (eq. x_static). */
 	printed(pow(sc.d.m * 9.81 / sc.d.kH, 1 / 1.5), 5.240e-6, 4, "x_c^s");
 }
@@ -176,7 +155,7 @@ Test(scene, study2_inferred)
 	printed(sc.d.m, 2.879e-2, 4, "m");
 	printed(sc.d.eta, 0.6094, 4, "eta");
 	cr_assert(fabs(sc.d.eta + sc.d.etac - 1) < 1e-15);
-	printed(par(&sc, "k"), 7.095e7, 4, "k");
+	printed(scene_par(&sc, "k"), 7.095e7, 4, "k");
 }
 
 Test(scene, study3_inferred)
@@ -191,7 +170,7 @@ Test(scene, study3_inferred)
 	printed(sc.d.Estar, 2.256e9, 4, "E*");
 	printed(sc.d.m, 2.614e-1, 4, "m");
 	printed(sc.d.kH, 4.254e8, 4, "k_H");
-	printed(par(&sc, "k"), 4.254e8, 4, "k");
+	printed(scene_par(&sc, "k"), 4.254e8, 4, "k");
 	printed(pow(sc.d.m * 9.81 / sc.d.kH, 1 / 1.5), 3.312e-6, 4, "x_c^s");
 }
 
@@ -204,7 +183,7 @@ Test(scene, k_hertz_with_A_and_alpha)
 	set(&sc, "law.alpha", "0.6");
 	/* eq. k_hertz: k = k_H / (alpha + (1 - alpha) A^p) */
 	double want = sc.d.kH / (0.6 + 0.4 * pow(2.385, 1.5));
-	cr_assert(fabs(par(&sc, "k") - want) <= 1e-14 * want, "k = %g, want %g", par(&sc, "k"), want);
+	cr_assert(fabs(scene_par(&sc, "k") - want) <= 1e-14 * want, "k = %g, want %g", scene_par(&sc, "k"), want);
 }
 
 Test(scene, reduced_and_full_by_the_bodies)
@@ -298,14 +277,14 @@ Test(scene, law_switch_loads_defaults_and_rederives)
 	set(&sc, "law.c", "1234 N s/m");
 	set(&sc, "scene.law", "shccl");
 	cr_assert_eq(sc.law, &law_shccl);
-	cr_assert_eq(par(&sc, "c"), law_shccl.params[law_param_index(&law_shccl, "c")].def);
+	cr_assert_eq(scene_par(&sc, "c"), law_shccl.params[law_param_index(&law_shccl, "c")].def);
 	cr_assert_eq(sc.d.k_derived, 1);
-	cr_assert(fabs(par(&sc, "k") - sc.d.kH) <= 1e-15 * sc.d.kH);
+	cr_assert(fabs(scene_par(&sc, "k") - sc.d.kH) <= 1e-15 * sc.d.kH);
 	/* The linear law has no k_hertz: k is typed (N/m). */
 	set(&sc, "scene.law", "linear");
 	cr_assert_eq(sc.d.k_derived, 0);
 	set(&sc, "law.k", "1e4 N/m");
-	cr_assert_eq(par(&sc, "k"), 1e4);
+	cr_assert_eq(scene_par(&sc, "k"), 1e4);
 }
 
 Test(scene, k_typed_with_masses)
@@ -321,7 +300,7 @@ Test(scene, k_typed_with_masses)
 	cr_assert_eq(sc.d.k_derived, 0);
 	cr_assert(isnan(sc.d.Estar));
 	set(&sc, "law.k", "3e9 N m^-3/2");
-	cr_assert_eq(par(&sc, "k"), 3e9);
+	cr_assert_eq(scene_par(&sc, "k"), 3e9);
 	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
 }
 
@@ -655,4 +634,123 @@ Test(scene, steppers)
 	}
 	cr_assert_eq(scene_stepper_find("euler"), -1);
 	cr_assert_eq(scene_stepper_find(NULL), -1);
+}
+
+/* ---------------------------------------------------------------- */
+/* Typed access and errors as data */
+
+Test(scene, get_is_typed)
+{
+	struct scene sc;
+	struct scene_keyinfo ki;
+	struct scene_error err;
+
+	study1(&sc);
+	cr_assert_eq(scene_get(&sc, "law.alpha", &ki, &err), HB_OK);
+	cr_assert_eq(ki.kind, SCENE_KEY_NUMBER);
+	cr_assert_eq(ki.number, sc.par[law_param_index(sc.law, "alpha")]);
+	cr_assert_str_eq(ki.unit, "");
+	cr_assert(ki.limits.lo == 0 && ki.limits.hi == 1 && ki.limits.lo_open && ki.limits.hi_open);
+
+	cr_assert_eq(scene_get(&sc, "law.beta", &ki, &err), HB_OK);
+	cr_assert_str_eq(ki.unit, "m^-2"); /* n = 2 applied */
+
+	cr_assert_eq(scene_get(&sc, "body1.R", &ki, &err), HB_OK);
+	cr_assert_eq(ki.number, 0.020);
+	cr_assert_str_eq(ki.unit, "m");
+	cr_assert(ki.limits.lo == 0 && isinf(ki.limits.hi) && !ki.limits.hi_open);
+
+	cr_assert_eq(scene_get(&sc, "run.J", &ki, &err), HB_OK);
+	cr_assert_eq(ki.kind, SCENE_KEY_WHOLE);
+	cr_assert(ki.limits.whole && ki.limits.lo == 1);
+
+	cr_assert_eq(scene_get(&sc, "run.stepper", &ki, &err), HB_OK);
+	cr_assert_eq(ki.kind, SCENE_KEY_CHOICE);
+	cr_assert_eq(ki.nchoices, STEPPER_COUNT);
+	cr_assert_str_eq(ki.choices[ki.choice], "rk8pd");
+	cr_assert_str_eq(ki.choices[STEPPER_AUTO], "auto");
+
+	cr_assert_eq(scene_get(&sc, "scene.law", &ki, &err), HB_OK);
+	cr_assert_str_eq(ki.choices[ki.choice], "bwmcl");
+	cr_assert_eq(scene_get(&sc, "run.reductions", &ki, &err), HB_OK);
+	cr_assert_eq(ki.nchoices, 8);
+
+	/* Hidden by the panel, still readable: F2 in the reduced system. */
+	cr_assert_eq(scene_get(&sc, "loads.F2", &ki, &err), HB_OK);
+	cr_assert_str_eq(ki.unit, "N");
+
+	cr_assert_eq(scene_get(&sc, "law.nosuch", &ki, &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "law.nosuch");
+	cr_assert(strstr(err.accepted, "law.alpha") != NULL, "%s", err.accepted);
+}
+
+Test(scene, errors_are_data)
+{
+	struct scene sc;
+	struct scene_error err;
+	char buf[512];
+
+	study1(&sc);
+	cr_assert_eq(scene_set_text(&sc, "law.alpha", "1.5", &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "law.alpha");
+	cr_assert_eq(err.has_range, 1);
+	cr_assert(err.range.lo == 0 && err.range.hi == 1);
+	cr_assert_str_eq(err.accepted, "(0, 1)");
+	cr_assert_str_eq(scene_error_str(&err, buf, sizeof buf),
+	    "law.alpha: value 1.5 is out of range; accepted: (0, 1)");
+
+	cr_assert_eq(scene_set_number(&sc, "initial.x0", -1e-3, &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "initial.x0");
+	cr_assert(err.has_range && err.range.lo == 0 && !err.range.lo_open);
+
+	cr_assert_eq(scene_set_text(&sc, "run.stepper", "euler", &err), HB_EINVAL);
+	cr_assert_eq(err.has_range, 0);
+	cr_assert(strstr(err.accepted, "bsimp") != NULL);
+
+	/* Validation names the key at fault, as data. */
+	sc.par[law_param_index(sc.law, "gamma")] = 2 * sc.par[law_param_index(sc.law, "beta")];
+	cr_assert_eq(scene_check(&sc, &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "law.gamma");
+	study1(&sc);
+	sc.run.chatter = 1;
+	cr_assert_eq(scene_check(&sc, &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "run.chatter");
+	cr_assert(err.has_range && err.range.whole && err.range.lo == 2);
+}
+
+Test(scene, set_number_is_set_text)
+{
+	struct scene a, b;
+	struct scene_error err;
+
+	study1(&a);
+	b = a;
+	cr_assert_eq(scene_set_number(&a, "body1.R", 0.0125, &err), HB_OK);
+	cr_assert_eq(scene_set_text(&b, "body1.R", "12.5 mm", &err), HB_OK);
+	cr_assert_eq(a.body[0].R, b.body[0].R);
+	cr_assert_eq(a.d.m1, b.d.m1);
+	cr_assert_eq(scene_set_number(&a, "run.J", 7, &err), HB_OK);
+	cr_assert_eq(a.run.J, 7);
+	cr_assert_eq(scene_set_number(&a, "run.J", 7.5, &err), HB_EINVAL);
+	cr_assert_eq(scene_set_number(&a, "run.stepper", 1, &err), HB_EINVAL);
+	cr_assert_eq(scene_set_number(&a, "body1.mass", 2, &err), HB_OK);
+	cr_assert_eq(a.body[0].mass_given, 1);
+}
+
+/* Every key of the table has a default that is valid, and the defaults are the scene's. */
+Test(scene, table_defaults_are_the_default_scene)
+{
+	struct scene sc;
+	char msg[512];
+
+	scene_defaults(&sc);
+	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(sc.law, &law_hertz);
+	cr_assert_eq(sc.body[0].R, 0.020);
+	cr_assert(isinf(sc.body[1].R));
+	cr_assert_eq(sc.body[1].rho, 0);
+	cr_assert_eq(sc.run.reduce, REDUCE_ALL);
+	cr_assert_eq(sc.run.kinks, 1);
+	cr_assert_eq(sc.ext, 1);
+	cr_assert_eq(sc.run.stepper, STEPPER_RK8PD);
 }

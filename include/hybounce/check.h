@@ -9,6 +9,8 @@
  */
 #ifndef HYBOUNCE_CHECK_H
 #define HYBOUNCE_CHECK_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "scene.h"
@@ -31,5 +33,7 @@ check_solution_pair(const struct scene *sc, const struct arc *a, char *msg, size
 int
 check_euler(const struct scene *sc, const struct arc *a, size_t k, double *order,
             char *msg, size_t n);
+
+HB_END_DECLS
 
 #endif

@@ -14,6 +14,8 @@
  */
 #ifndef HYBOUNCE_PRESET_H
 #define HYBOUNCE_PRESET_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "scene.h"
@@ -30,6 +32,18 @@ preset_load(const char *path, struct scene *sc, char *msg, size_t n);
 int
 preset_load_string(const char *text, const char *name, struct scene *sc,
                    char *msg, size_t n);
+
+/*
+ * Opens a preset for a run, as both front ends do: loads the file at path,
+ * applies each "KEY=VALUE" of sets in order (blanks around the key and the
+ * value are ignored: " run.T = 1 ms" is run.T = 1 ms), then validates the
+ * scene.  Returns 0, or HB_EINVAL / HB_EIO with msg holding
+ * "FILE:LINE: ...", "--set ARG: KEY: ...; accepted: ..." or
+ * "PATH: KEY: ...; accepted: ...".
+ */
+int
+preset_open(const char *path, const char *const *sets, int nsets, struct scene *sc,
+            char *msg, size_t n);
 
 /*
  * Writes the scene as a preset that reproduces it exactly (%.17g values),
@@ -55,7 +69,7 @@ preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn);
 /*
  * The folders searched for presets, in order: $HYBOUNCE_PRESETS (colon
  * separated), ./presets, the install folder (PREFIX/share/hybounce/presets).
- * NULL-terminated, static storage.
+ * NULL-terminated, in storage of the calling thread, valid until its next call.
  */
 const char *const *
 preset_dirs(void);
@@ -74,5 +88,7 @@ struct preset_info {
  */
 int
 preset_list(struct preset_info **out);
+
+HB_END_DECLS
 
 #endif

@@ -30,12 +30,16 @@
  *                      whole point at a time; what a restart reads.
  *
  * Re-entrancy: a point uses only its own scene, sim and buffers; the
- * engine keeps no mutable static state, except GSL's process-wide error
- * handler that sim_new() switches off, which sweep_run serialises.
+ * engine keeps no mutable static state.  GSL's process-wide error handler,
+ * which sim_new() switches off, is the one global written: a sweep's
+ * threads take a lock of the sweep around sim_new().
  * Nothing here prints or exits.
  */
 #ifndef HYBOUNCE_SWEEP_H
 #define HYBOUNCE_SWEEP_H
+
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <signal.h>
 #include <stddef.h>
@@ -225,5 +229,7 @@ sweep_curve_write_csv(struct sweep_curve *c, const char *path, char *msg, size_t
 /* Stops the workers (each after at most one slice of its run) and frees. */
 void
 sweep_curve_free(struct sweep_curve *c);
+
+HB_END_DECLS
 
 #endif

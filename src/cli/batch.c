@@ -29,16 +29,20 @@
  */
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "hybounce/arc.h"
+#include "hybounce/atomic.h"
 #include "hybounce/check.h"
 #include "hybounce/collisions.h"
+#include "hybounce/columns.h"
 #include "hybounce/csv.h"
 #include "hybounce/law.h"
 #include "hybounce/preset.h"
@@ -73,22 +77,6 @@ fmt(double v, struct unit_dim d, char *buf, size_t n)
 	return buf;
 }
 
-/* Replaces a UTF-8 micro sign by 'u', in place: the report is ASCII. */
-static void
-ascii_micro(char *s)
-{
-	char *p;
-
-	while ((p = strstr(s, "\xc2\xb5")) != NULL) {
-		*p = 'u';
-		memmove(p + 1, p + 2, strlen(p + 2) + 1);
-	}
-	while ((p = strstr(s, "\xce\xbc")) != NULL) {
-		*p = 'u';
-		memmove(p + 1, p + 2, strlen(p + 2) + 1);
-	}
-}
-
 /*
  * Prints text word-wrapped to 79 columns, every line starting with indent
  * (the first line too).
@@ -120,43 +108,6 @@ print_wrapped(FILE *out, const char *indent, const char *text)
 /* ------------------------------------------------------------------ */
 /* Input: preset, --set, export paths                                  */
 
-/*
- * Applies "KEY=VALUE" to the scene.  Returns 0, or 2 after printing a
- * message naming the key and what is accepted.
- */
-static int
-apply_set(struct scene *sc, const char *arg)
-{
-	char key[128], msg[512];
-	const char *eq = strchr(arg, '=');
-	const char *k0 = arg, *k1;
-
-	if (eq == NULL) {
-		fprintf(stderr, PROG ": --set '%s': expected KEY=VALUE, e.g. "
-		        "--set law.c=0.4 or --set initial.x0='40 um'\n", arg);
-		return 2;
-	}
-	k1 = eq;
-	while (k0 < k1 && (*k0 == ' ' || *k0 == '\t'))
-		k0++;
-	while (k1 > k0 && (k1[-1] == ' ' || k1[-1] == '\t'))
-		k1--;
-	if (k1 == k0 || (size_t)(k1 - k0) >= sizeof key) {
-		fprintf(stderr, PROG ": --set '%s': expected KEY=VALUE with a key "
-		        "such as law.c, body1.R, initial.x0, run.rtol, scene.law\n", arg);
-		return 2;
-	}
-	memcpy(key, k0, (size_t)(k1 - k0));
-	key[k1 - k0] = '\0';
-	msg[0] = '\0';
-	if (scene_set(sc, key, eq + 1, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": --set %s: %s\n", arg,
-		        msg[0] ? msg : "rejected");
-		return 2;
-	}
-	return 0;
-}
-
 /* 1 if an export path names standard output ("-"). */
 static int
 is_stdout(const char *path)
@@ -174,16 +125,16 @@ ends_with(const char *path, const char *suffix)
 }
 
 /*
- * Checks, before the run, that an export path can be written: its folder
- * exists and is writable, and the path is not a folder.  Returns 0, or 2
- * after printing why.
+ * Checks, before the run, that an export path can be written (atomic.h:
+ * a new or replaced file needs a writable folder, a device or FIFO is
+ * written in place, a folder is refused).  Returns 0, or 2 after printing
+ * why.
  */
 static int
 check_export_path(const char *opt, const char *path)
 {
-	char dir[4096];
-	const char *slash;
-	struct stat st;
+	struct atomic_target t;
+	char msg[1024];
 
 	if (path[0] == '\0') {
 		fprintf(stderr, PROG ": %s: empty file name; expected a path such as "
@@ -196,36 +147,32 @@ check_export_path(const char *opt, const char *path)
 		        opt, path);
 		return 2;
 	}
-	if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-		fprintf(stderr, PROG ": %s %s: is a folder; expected a file path\n",
-		        opt, path);
-		return 2;
-	}
-	slash = strrchr(path, '/');
-	if (slash == NULL)
-		snprintf(dir, sizeof dir, ".");
-	else if (slash == path)
-		snprintf(dir, sizeof dir, "/");
-	else
-		snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
-	if (stat(dir, &st) != 0) {
-		fprintf(stderr, PROG ": %s %s: cannot write there: folder %s: %s; "
-		        "expected a path in an existing, writable folder\n",
-		        opt, path, dir, strerror(errno));
-		return 2;
-	}
-	if (!S_ISDIR(st.st_mode)) {
-		fprintf(stderr, PROG ": %s %s: cannot write there: %s is not a folder\n",
-		        opt, path, dir);
-		return 2;
-	}
-	if (access(dir, W_OK) != 0) {
-		fprintf(stderr, PROG ": %s %s: cannot write there: folder %s: %s; "
-		        "expected a path in an existing, writable folder\n",
-		        opt, path, dir, strerror(errno));
+	msg[0] = '\0';
+	if (atomic_probe(path, &t, msg, sizeof msg) != HB_OK) {
+		size_t pl = strlen(path);
+		/* "PATH: reason": the path is already named */
+		const char *why = strncmp(msg, path, pl) == 0 && msg[pl] == ':' ? msg + pl + 2 : msg;
+
+		fprintf(stderr, PROG ": %s %s: cannot write there: %s; expected a file "
+		        "path in an existing, writable folder\n", opt, path, why);
 		return 2;
 	}
 	return 0;
+}
+
+/* "wrote PATH", and how when it was not a plain new file. */
+static void
+print_wrote(const char *path, const struct atomic_target *t)
+{
+	fprintf(stderr, "wrote %s", path);
+	if (t->how == ATOMIC_IN_PLACE)
+		fprintf(stderr, " (written in place)");
+	else if (t->via_link)
+		fprintf(stderr, " (through the link, to %s%s)", t->real,
+		        t->how == ATOMIC_REPLACE ? ", replacing it" : "");
+	else if (t->how == ATOMIC_REPLACE)
+		fprintf(stderr, " (replaced the existing file)");
+	fprintf(stderr, "\n");
 }
 
 /* ------------------------------------------------------------------ */
@@ -363,23 +310,28 @@ struct col {
 	int dec, sci, width;
 };
 
-#define COL(n, b, f, k) { n, b, offsetof(struct collision, f), k, 1, "", 0, 0, 0 }
+enum { NCOLS_MAX = 32 };
 
-static const struct col cols_init[] = {
-	COL("i", NULL, i, COL_INDEX),
-	COL("t_e", "s", te, COL_VALUE),
-	COL("t_s", "s", ts, COL_VALUE),
-	COL("t_d", "s", td, COL_VALUE),
-	COL("t_f", "s", tf, COL_VALUE),
-	COL("v_i", "m/s", vi, COL_VALUE),
-	COL("e", NULL, e, COL_RATIO),
-	COL("x_c^max", "m", xcmax, COL_VALUE),
-	COL("F_c^max", "N", Fcmax, COL_VALUE),
-	COL("x_c^r", "m", xcr, COL_VALUE),
-	COL("W", "J", W, COL_VALUE),
-	COL("Lambda", NULL, Lambda, COL_RATIO),
-};
-enum { NCOLS = sizeof cols_init / sizeof cols_init[0] };
+/* The columns of the batch table, from the table of columns.h. */
+static int
+cols_from_table(struct col *cols)
+{
+	int nc = 0;
+
+	for (int k = 0; k < collision_ncolumns && nc < NCOLS_MAX; k++) {
+		const struct collision_column *cc = &collision_columns[k];
+		if (!(cc->shown & COLUMN_BATCH))
+			continue;
+		memset(&cols[nc], 0, sizeof cols[nc]);
+		cols[nc].name = cc->label;
+		cols[nc].base = cc->unit[0] ? cc->unit : NULL;
+		cols[nc].off = cc->off;
+		cols[nc].kind = cc->index ? COL_INDEX : cc->unit[0] ? COL_VALUE : COL_RATIO;
+		cols[nc].scale = 1;
+		nc++;
+	}
+	return nc;
+}
 
 static double
 col_get(const struct col *c, const struct collision *k)
@@ -399,14 +351,8 @@ col_choose(struct col *c, double mag)
 	if (c->base != NULL) {
 		char lab[16];
 
-		if (strcmp(c->base, "m/s") == 0) {
-			c->scale = units_axis(mag > 0 ? mag : 1, "m", lab, sizeof lab);
-			snprintf(c->unit, sizeof c->unit, "%s/s", lab);
-		} else {
-			c->scale = units_axis(mag > 0 ? mag : 1, c->base, lab, sizeof lab);
-			snprintf(c->unit, sizeof c->unit, "%s", lab);
-		}
-		ascii_micro(c->unit);
+		c->scale = units_axis(mag > 0 ? mag : 1, c->base, lab, sizeof lab);
+		snprintf(c->unit, sizeof c->unit, "%s", lab); /* ASCII: "um" */
 		if (!(c->scale > 0) || !isfinite(c->scale)) {
 			c->scale = 1;
 			snprintf(c->unit, sizeof c->unit, "%s", c->base);
@@ -467,13 +413,13 @@ col_head(const struct col *c, char *buf, size_t n)
 static void
 print_table(FILE *out, const struct sim *s, const struct collision *live)
 {
-	struct col cols[NCOLS];
+	struct col cols[NCOLS_MAX];
 	size_t nc = sim_ncollisions(s), r;
 	char buf[64];
 	int c, w;
+	const int ncols = cols_from_table(cols);
 
-	memcpy(cols, cols_init, sizeof cols);
-	for (c = 0; c < NCOLS; c++) {
+	for (c = 0; c < ncols; c++) {
 		double mag = 0;
 
 		/* Units from the completed collisions; the live row only when alone. */
@@ -503,8 +449,12 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 		cols[c].width = w;
 	}
 
-	fprintf(out, "collisions (%zu completed)\n", nc);
-	for (c = 0; c < NCOLS; c++) {
+	if (sim_collisions_total(s) > (long)nc)
+		fprintf(out, "collisions (%ld completed; %zu kept, the older ones thinned)\n",
+		        sim_collisions_total(s), nc);
+	else
+		fprintf(out, "collisions (%zu completed)\n", nc);
+	for (c = 0; c < ncols; c++) {
 		col_head(&cols[c], buf, sizeof buf);
 		fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 	}
@@ -512,7 +462,7 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 	for (r = 0; r < nc; r++) {
 		const struct collision *k = sim_collision(s, r);
 
-		for (c = 0; c < NCOLS; c++) {
+		for (c = 0; c < ncols; c++) {
 			col_cell(&cols[c], k, buf, sizeof buf);
 			fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 		}
@@ -520,7 +470,7 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 	}
 	if (live != NULL) {
 		fprintf(out, "contact in progress (values so far; t_s is the last sample):\n");
-		for (c = 0; c < NCOLS; c++) {
+		for (c = 0; c < ncols; c++) {
 			col_cell(&cols[c], live, buf, sizeof buf);
 			fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 		}
@@ -566,7 +516,7 @@ print_jumps(FILE *out, const struct arc *a)
 }
 
 static void
-print_summary(FILE *out, const struct sim *s)
+print_summary(FILE *out, const struct sim *s, int sig)
 {
 	const struct scene *sc = sim_scene(s);
 	const struct arc *a = sim_arc(s);
@@ -576,7 +526,13 @@ print_summary(FILE *out, const struct sim *s)
 	int i;
 
 	fprintf(out, "summary\n");
-	fprintf(out, "  ended       %s\n", sim_end_str(s));
+	if (sig != 0)
+		fprintf(out, "  ended       interrupted by %s at t = %s, j = %ld (run.T = %s)\n",
+		        sig == SIGINT ? "SIGINT" : "SIGTERM",
+		        fmt(last != NULL ? last->t : 0, UNIT_TIME, b1, sizeof b1),
+		        last != NULL ? last->j : 0L, fmt(sc->run.T, UNIT_TIME, b2, sizeof b2));
+	else
+		fprintf(out, "  ended       %s\n", sim_end_str(s));
 	if (last != NULL) {
 		fprintf(out, "  end state   t = %s, j = %ld, q_c = %d, x = %s, v = %s, x_c = %s",
 		        fmt(last->t, UNIT_TIME, b1, sizeof b1), last->j, last->q,
@@ -587,7 +543,12 @@ print_summary(FILE *out, const struct sim *s)
 			fprintf(out, ", z_c%d = %.6g", i + 1, last->z[i]);
 		fprintf(out, "\n");
 	}
-	fprintf(out, "  collisions  %zu\n", sim_ncollisions(s));
+	if (sim_collisions_total(s) > (long)sim_ncollisions(s))
+		fprintf(out, "  collisions  %ld (%zu kept in the table and CSV: the older ones are "
+		        "thinned, each row keeps its index i)\n", sim_collisions_total(s),
+		        sim_ncollisions(s));
+	else
+		fprintf(out, "  collisions  %zu\n", sim_ncollisions(s));
 	fprintf(out, "  run time    %s (CPU)\n", fmt(st->seconds, UNIT_TIME, b1, sizeof b1));
 	fprintf(out, "  steps       %ld accepted, %ld rejected\n", st->steps, st->rejected);
 	fprintf(out, "  evaluations %ld right-hand side, %ld Jacobian\n", st->rhs, st->jac);
@@ -615,9 +576,87 @@ print_summary(FILE *out, const struct sim *s)
 	if (arc_thinned(a) > 0)
 		fprintf(out, ", thinned %d times (past run.max_samples = %ld)",
 		        arc_thinned(a), sc->run.max_samples);
+	if (arc_skipped(a) > 0)
+		fprintf(out, ", %ld flow intervals thinned out with their jumps", arc_skipped(a));
 	else
 		fprintf(out, ", not thinned");
 	fprintf(out, "\n");
+}
+
+/* ------------------------------------------------------------------ */
+/* The run: signals and progress                                       */
+
+static volatile sig_atomic_t got_signal;
+
+static void
+on_signal(int sig)
+{
+	got_signal = sig;
+}
+
+/* Catches sig once, unless it was ignored on entry; *old to restore. */
+static void
+watch_signal(int sig, struct sigaction *old)
+{
+	struct sigaction sa;
+
+	memset(&sa, 0, sizeof sa);
+	sigaction(sig, NULL, old);
+	if (old->sa_handler == SIG_IGN)
+		return;
+	sa.sa_handler = on_signal;
+	sa.sa_flags = SA_RESETHAND;
+	sigemptyset(&sa.sa_mask);
+	sigaction(sig, &sa, NULL);
+}
+
+static double
+wall_seconds(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/*
+ * Runs s in slices of 0.1 s to its end or to a caught signal (*sig).
+ * Past one second, standard error a terminal, a progress line there,
+ * rewritten in place four times a second and erased at the end.
+ */
+static int
+run_watched(struct sim *s, int *sig)
+{
+	const double T = sim_scene(s)->run.T;
+	const int tty = isatty(STDERR_FILENO);
+	double start = wall_seconds(), shown = 0;
+	int rc = HB_OK;
+
+	got_signal = 0;
+	while (got_signal == 0) {
+		double now;
+
+		rc = sim_advance(s, 0, 0.1);
+		if (rc != HB_OK || sim_end(s) != SIM_RUNNING)
+			break;
+		now = wall_seconds();
+		if (tty && now - start > 1.0 && now - shown >= 0.25) {
+			const struct arc_sample *p = arc_last(sim_arc(s));
+			char tb[32], Tb[32];
+
+			fmt(p != NULL ? p->t : 0, UNIT_TIME, tb, sizeof tb);
+			fmt(T, UNIT_TIME, Tb, sizeof Tb);
+			fprintf(stderr, "\r" PROG ": t = %s of %s (%.0f%%), j = %ld, %zu collisions, "
+			        "%.0f s; Ctrl-C stops and writes\033[K", tb, Tb,
+			        p != NULL && T > 0 ? 100 * p->t / T : 0.0,
+			        p != NULL ? p->j : 0L, sim_ncollisions(s), now - start);
+			shown = now;
+		}
+	}
+	if (shown > 0)
+		fprintf(stderr, "\r\033[K");
+	*sig = got_signal;
+	return rc;
 }
 
 /* ------------------------------------------------------------------ */
@@ -626,10 +665,11 @@ int
 batch_run(const struct batch_options *o)
 {
 	struct scene sc;
-	char path[1024], msg[1024], scene_out[1100];
+	char path[1024], msg[1024];
 	struct collision live;
 	struct sim *s;
-	int i, status = 0, have_live, rc;
+	struct sigaction old_term, old_int;
+	int status = 0, have_live, rc, sig = 0;
 	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
 	/* The files to export; "-" goes to stdout after them. */
 	const char *trace_file = trace_out ? NULL : o->trace;
@@ -644,16 +684,8 @@ batch_run(const struct batch_options *o)
 		return 2;
 	}
 	msg[0] = '\0';
-	if (preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
+	if (preset_open(path, o->sets, o->nsets, &sc, msg, sizeof msg) != HB_OK) {
 		err(msg[0] ? msg : path);
-		return 2;
-	}
-	for (i = 0; i < o->nsets; i++)
-		if (apply_set(&sc, o->sets[i]) != 0)
-			return 2;
-	msg[0] = '\0';
-	if (scene_validate(&sc, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": %s: %s\n", path, msg);
 		return 2;
 	}
 	if (trace_out && coll_out) {
@@ -671,14 +703,30 @@ batch_run(const struct batch_options *o)
 		        "expected two different paths\n", trace_file);
 		return 2;
 	}
+	msg[0] = '\0';
+	if ((trace_file != NULL || coll_file != NULL) &&
+	    csv_export_check(trace_file, coll_file, path, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": export: %s\n", msg);
+		return 2;
+	}
 
+	/*
+	 * SIGTERM and SIGINT end the run, and what was computed is reported
+	 * and written, as after a numerical failure; a second one ends the
+	 * process (SA_RESETHAND).  A signal ignored on entry (nohup, a
+	 * background job of a script) stays ignored.
+	 */
+	watch_signal(SIGTERM, &old_term);
+	watch_signal(SIGINT, &old_int);
 	msg[0] = '\0';
 	s = sim_new(&sc, msg, sizeof msg);
 	if (s == NULL) {
 		fprintf(stderr, PROG ": %s: %s\n", path, msg[0] ? msg : "cannot start the run");
+		sigaction(SIGTERM, &old_term, NULL);
+		sigaction(SIGINT, &old_int, NULL);
 		return 2;
 	}
-	rc = sim_run(s);
+	rc = run_watched(s, &sig);
 	if (sim_end(s) == SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE))
 		status = 1;
 
@@ -690,7 +738,7 @@ batch_run(const struct batch_options *o)
 	}
 	if (o->jumps)
 		print_jumps(out, sim_arc(s));
-	print_summary(out, s);
+	print_summary(out, s, sig);
 
 	if (o->check) {
 		msg[0] = '\0';
@@ -707,9 +755,18 @@ batch_run(const struct batch_options *o)
 				status = 1;
 		}
 	}
-	fflush(out);
+	/* Now: the messages below come after the report. */
+	if (out == stdout) {
+		if (batch_flush_stdout() != 0)
+			status = 2;
+	} else {
+		fflush(out);
+	}
 	/* After the report, so that it is the last thing a terminal shows. */
-	if (status == 1 && sim_end(s) == SIM_END_FAIL)
+	if (sig != 0)
+		fprintf(stderr, PROG ": interrupted by %s: what was computed is reported "
+		        "and written\n", sig == SIGINT ? "SIGINT" : "SIGTERM");
+	else if (status == 1 && sim_end(s) == SIM_END_FAIL)
 		fprintf(stderr, PROG ": the run failed: %s\n",
 		        sim_errmsg(s)[0] ? sim_errmsg(s) : status_str(rc));
 	else if (rc != HB_OK && rc != HB_EDONE)
@@ -720,19 +777,20 @@ batch_run(const struct batch_options *o)
 	 * ends the process by SIGPIPE, and the files are written by then.
 	 */
 	if (trace_file != NULL || coll_file != NULL) {
+		struct csv_export_report rep;
+
 		msg[0] = '\0';
-		scene_out[0] = '\0';
-		if (csv_export(s, trace_file, coll_file, scene_out, sizeof scene_out,
-		               msg, sizeof msg) != HB_OK) {
+		if (csv_export_files(s, trace_file, coll_file, path, &rep, msg,
+		                     sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": export failed: %s\n", msg);
 			status = 2;
 		} else {
 			if (trace_file != NULL)
-				fprintf(stderr, "wrote %s\n", trace_file);
+				print_wrote(trace_file, &rep.target[0]);
 			if (coll_file != NULL)
-				fprintf(stderr, "wrote %s\n", coll_file);
-			if (scene_out[0])
-				fprintf(stderr, "wrote %s\n", scene_out);
+				print_wrote(coll_file, &rep.target[1]);
+			if (rep.scene[0])
+				print_wrote(rep.scene, &rep.target[2]);
 		}
 	}
 	if (trace_out || coll_out) {
@@ -747,9 +805,32 @@ batch_run(const struct batch_options *o)
 			fprintf(stderr, PROG ": export failed: standard output: %s\n", msg);
 			status = 2;
 		}
+		clearerr(stdout);   /* said here (or quiet on EPIPE): not again in main */
 	}
 	sim_free(s);
-	return status;
+	sigaction(SIGTERM, &old_term, NULL);
+	sigaction(SIGINT, &old_int, NULL);
+	if (sig == 0)
+		sig = got_signal;   /* caught while reporting: the report is whole */
+	/* An interrupted run: 128 + the signal, as a shell reports a kill. */
+	return sig != 0 ? 128 + sig : status;
+}
+
+int
+batch_flush_stdout(void)
+{
+	int e = 0;
+
+	errno = 0;
+	if (fflush(stdout) != 0)
+		e = errno != 0 ? errno : EIO;
+	else if (ferror(stdout))
+		e = EIO;
+	clearerr(stdout);
+	if (e == 0 || e == EPIPE)
+		return 0;
+	fprintf(stderr, PROG ": write error on standard output: %s\n", strerror(e));
+	return 2;
 }
 
 /* ------------------------------------------------------------------ */
@@ -785,25 +866,6 @@ batch_list_presets(void)
 	return 0;
 }
 
-/* "(0, 1)", "[1, inf)" ... */
-static void
-range_str(const struct law_param *pp, char *buf, size_t n)
-{
-	char lo[32], hi[32];
-
-	if (isinf(pp->lo))
-		snprintf(lo, sizeof lo, "-inf");
-	else
-		snprintf(lo, sizeof lo, "%g", pp->lo);
-	if (isinf(pp->hi))
-		snprintf(hi, sizeof hi, "inf");
-	else
-		snprintf(hi, sizeof hi, "%g", pp->hi);
-	snprintf(buf, n, "%c%s, %s%c",
-	         pp->lo_open || isinf(pp->lo) ? '(' : '[', lo, hi,
-	         pp->hi_open || isinf(pp->hi) ? ')' : ']');
-}
-
 int
 batch_list_laws(void)
 {
@@ -827,7 +889,8 @@ batch_list_laws(void)
 			char unit[48], range[80], dv[64];
 
 			units_dim_str(d, unit, sizeof unit);
-			range_str(pp, range, sizeof range);
+			struct unit_range rr = law_param_range(pp);
+			units_range_str(&rr, NULL, range, sizeof range);
 			fmt(pp->def, d, dv, sizeof dv);
 			printf("      %-8s %-14s range %-16s default %s%s\n",
 			       pp->name, unit[0] ? unit : "(1)", range, dv,

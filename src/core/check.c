@@ -38,6 +38,7 @@ check_solution_pair(const struct scene *sc, const struct arc *arc, char *msg, si
 {
 	size_t i, len = arc_len(arc);
 	int nz = sc->law->n_z, k;
+	long skipped = 0;   /* flow intervals thinned out so far */
 
 	if (len == 0)
 		return status_set(msg, n, HB_EINVAL, "empty arc");
@@ -73,6 +74,23 @@ check_solution_pair(const struct scene *sc, const struct arc *arc, char *msg, si
 						return status_set(msg, n, HB_EINVAL,
 						                  "sample %zu: z_c is not reset by the jump", i + 1);
 				continue;
+			} else if (b->j > a->j + 1 && skipped + (b->j - a->j - 1) <= arc_skipped(arc)) {
+				/*
+				 * Flow intervals thinned out (arc.h): a is still a
+				 * pre-jump state in D, b a post-jump one (x_c = 0,
+				 * z_c = 0, q_c alternating), later or at once.
+				 */
+				skipped += b->j - a->j - 1;
+				if (!(b->t >= a->t) || !check_in_D(sc, a) || b->xc != 0.0 ||
+				    b->q != (int)((a->q + b->j - a->j) % 2))
+					return status_set(msg, n, HB_EINVAL,
+					                  "sample %zu: the jumps thinned out between j = %ld "
+					                  "and j = %ld do not join", i, a->j, b->j);
+				for (k = 0; k < nz; k++)
+					if (b->z[k] != 0.0)
+						return status_set(msg, n, HB_EINVAL,
+						                  "sample %zu: z_c is not reset by the jump", i + 1);
+				continue;
 			} else {
 				return status_set(msg, n, HB_EINVAL, "sample %zu: j goes from %ld to %ld",
 				                  i, a->j, b->j);
@@ -83,6 +101,9 @@ check_solution_pair(const struct scene *sc, const struct arc *arc, char *msg, si
 			                  "sample %zu (t = %.17g, j = %ld, q_c = %d) is not in C",
 			                  i, a->t, a->j, a->q);
 	}
+	if (skipped != arc_skipped(arc))
+		return status_set(msg, n, HB_EINVAL, "%ld flow intervals are missing, but the arc "
+		                  "thinned out %ld", skipped, arc_skipped(arc));
 	return 0;
 }
 

@@ -37,25 +37,24 @@ struct axis {
 
 struct sweep {
 	struct scene base;
+	/*
+	 * sim_new() switches GSL's process-wide error handler off: one global
+	 * written by every call.  The sweep's threads take this lock around it
+	 * (no static lock: the engine keeps no mutable static state).
+	 */
+	pthread_mutex_t *simnew;
 	int naxes;
 	struct axis ax[SWEEP_MAX_AXES];
 };
 
-/*
- * sim_new() switches GSL's process-wide error handler off: one global
- * pointer written by every call.  Serialised here so that concurrent
- * points do not race on it (ThreadSanitizer sees no race).
- */
-static pthread_mutex_t gsl_handler_lock = PTHREAD_MUTEX_INITIALIZER;
-
 struct sim *
-sweep_sim_new(const struct scene *sc, char *msg, size_t n)
+sweep_sim_new(const struct sweep *sw, const struct scene *sc, char *msg, size_t n)
 {
 	struct sim *s;
 
-	pthread_mutex_lock(&gsl_handler_lock);
+	pthread_mutex_lock(sw->simnew);
 	s = sim_new(sc, msg, n);
-	pthread_mutex_unlock(&gsl_handler_lock);
+	pthread_mutex_unlock(sw->simnew);
 	return s;
 }
 
@@ -73,10 +72,12 @@ sweep_new(const struct scene *base, char *msg, size_t n)
 {
 	struct sweep *sw = calloc(1, sizeof *sw);
 
-	if (sw == NULL) {
+	if (sw == NULL || (sw->simnew = malloc(sizeof *sw->simnew)) == NULL) {
+		free(sw);
 		status_set(msg, n, HB_ENOMEM, "out of memory");
 		return NULL;
 	}
+	pthread_mutex_init(sw->simnew, NULL);
 	sw->base = *base;
 	return sw;
 }
@@ -88,6 +89,8 @@ sweep_free(struct sweep *sw)
 		return;
 	for (int k = 0; k < sw->naxes; k++)
 		axis_free(&sw->ax[k]);
+	pthread_mutex_destroy(sw->simnew);
+	free(sw->simnew);
 	free(sw);
 }
 
@@ -110,52 +113,32 @@ sweep_npoints(const struct sweep *sw)
 }
 
 /*
- * The value of key in sc as the preset writer writes it: a number in SI
- * without its unit, as %.17g, or a word.  Returns 0, or -1 when the key is
- * not written (e.g. a derived k).
+ * The value of key in sc as text that scene_set() reads back to the same
+ * value: a number in SI as %.17g, or the word of a choice.  Returns 0, or
+ * -1 for a key that has no such value (unknown, free text, derived).
  */
 static int
 key_value(const struct scene *sc, const char *key, char *buf, size_t n)
 {
-	char text[16384], sect[64], want[80];
-	const char *dot = strchr(key, '.'), *p, *end;
-	size_t len;
+	struct scene_keyinfo ki;
 
-	if (dot == NULL || (size_t)(dot - key) >= sizeof sect - 2)
+	if (scene_get(sc, key, &ki, NULL) != HB_OK || ki.readonly)
 		return -1;
-	len = preset_format(sc, text, sizeof text);
-	if (len >= sizeof text)
+	switch (ki.kind) {
+	case SCENE_KEY_NUMBER:
+	case SCENE_KEY_WHOLE:
+		if (isnan(ki.number))
+			return -1;
+		snprintf(buf, n, "%.17g", ki.number);
+		return 0;
+	case SCENE_KEY_CHOICE:
+		if (ki.choice < 0 || ki.choice >= ki.nchoices || strlen(ki.choices[ki.choice]) >= n)
+			return -1;
+		snprintf(buf, n, "%s", ki.choices[ki.choice]);
+		return 0;
+	default:
 		return -1;
-	snprintf(sect, sizeof sect, "[%.*s]\n", (int)(dot - key), key);
-	snprintf(want, sizeof want, "%s = ", dot + 1);
-	p = strstr(text, sect);
-	if (p == NULL)
-		return -1;
-	p += strlen(sect);
-	while (*p && *p != '[') {
-		end = strchr(p, '\n');
-		if (end == NULL)
-			end = p + strlen(p);
-		if (strncmp(p, want, strlen(want)) == 0) {
-			const char *v = p + strlen(want);
-			char *num_end;
-			char tmp[512];
-			double d;
-
-			snprintf(tmp, sizeof tmp, "%.*s", (int)(end - v), v);
-			errno = 0;
-			d = strtod(tmp, &num_end);
-			if (num_end != tmp && (*num_end == '\0' || *num_end == ' '))
-				snprintf(buf, n, "%.17g", d);
-			else if (strlen(tmp) < n)
-				memcpy(buf, tmp, strlen(tmp) + 1);
-			else
-				return -1;
-			return 0;
-		}
-		p = *end ? end + 1 : end;
 	}
-	return -1;
 }
 
 /* The scene on which axis k's values are checked: base + earlier axes' first values. */
@@ -611,7 +594,7 @@ sweep_point_block(const struct sweep *sw, long id, char **out, int *failed,
 	if ((rc = sweep_point_scene(sw, id, &sc, msg, n)) != HB_OK)
 		return rc;
 	m[0] = '\0';
-	s = sweep_sim_new(&sc, m, sizeof m);
+	s = sweep_sim_new(sw, &sc, m, sizeof m);
 	if (s == NULL)
 		return status_set(msg, n, HB_EINVAL, "point %ld: %s", id, m[0] ? m : "no memory");
 	(void)sim_run(s);

@@ -91,7 +91,7 @@ curve_worker(void *arg)
 		pthread_mutex_unlock(&c->mu);
 
 		if (sweep_point_scene(c->sw, id, &sc, m, sizeof m) == HB_OK)
-			s = sweep_sim_new(&sc, m, sizeof m);
+			s = sweep_sim_new(c->sw, &sc, m, sizeof m);
 		while (s != NULL && sim_end(s) == SIM_RUNNING) {
 			if (sim_advance(s, SLICE_STEPS, 0) != HB_OK)
 				break;
