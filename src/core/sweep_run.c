@@ -14,9 +14,9 @@
  * memory stays flat in the number of points computed.
  *
  * Merge.  The union of the journals in the folder (by point id; the first
- * copy wins) is written in id order to runs.csv and collisions.csv, each to
- * a temporary name in the folder, flushed to disk and renamed, so a reader
- * never sees half a file and an interrupted merge leaves the old ones.
+ * copy wins) is written in id order to runs.csv and collisions.csv as one
+ * set of the atomic writer (atomic.h): a reader never sees half a file and
+ * a failed merge leaves the old ones.
  *
  * Threads.  Workers take the next id under a mutex, run the point on their
  * own scene and sim (sweep_point_block), and queue the block; the calling
@@ -36,6 +36,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "hybounce/atomic.h"
 #include "hybounce/csv.h"
 #include "hybounce/preset.h"
 #include "hybounce/sim.h"
@@ -119,34 +120,6 @@ write_all(int fd, const char *p, size_t len)
 	return 0;
 }
 
-/* Writes text to dir/name through a temporary file and a rename. */
-static int
-atomic_write(const char *dir, const char *name, const char *text, size_t len,
-             char *msg, size_t n)
-{
-	char path[4096], tmp[4200];
-	int fd, e;
-
-	snprintf(path, sizeof path, "%s/%s", dir, name);
-	snprintf(tmp, sizeof tmp, "%s.tmpXXXXXX", path);
-	fd = mkstemp(tmp);
-	if (fd < 0)
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
-	(void)fchmod(fd, 0644);
-	if (write_all(fd, text, len) != 0 || fsync(fd) != 0) {
-		e = errno;
-		close(fd);
-		unlink(tmp);
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
-	}
-	if (close(fd) != 0 || rename(tmp, path) != 0) {
-		e = errno;
-		unlink(tmp);
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
-	}
-	return HB_OK;
-}
-
 static char *
 spec_text(const struct sweep *sw, size_t *len)
 {
@@ -228,7 +201,7 @@ sweep_prepare_dir(const struct sweep *sw, const char *dir, char *msg, size_t n)
 			}
 		closedir(d);
 	}
-	rc = atomic_write(dir, SPEC_NAME, want, len, msg, n);
+	rc = atomic_write_file(path, want, len, msg, n);
 	free(want);
 	return rc;
 }
@@ -619,50 +592,6 @@ collisions_header(const struct scene *sc, char *buf, size_t n, char *msg, size_t
 	return rc;
 }
 
-struct outfile {
-	char path[4096], tmp[4200];
-	FILE *f;
-};
-
-static int
-out_open(struct outfile *o, const char *dir, const char *name, char *msg, size_t n)
-{
-	int fd;
-
-	snprintf(o->path, sizeof o->path, "%s/%s", dir, name);
-	snprintf(o->tmp, sizeof o->tmp, "%s.tmpXXXXXX", o->path);
-	fd = mkstemp(o->tmp);
-	if (fd < 0)
-		return status_set(msg, n, HB_EIO, "%s: %s", o->path, strerror(errno));
-	(void)fchmod(fd, 0644);
-	o->f = fdopen(fd, "w");
-	if (o->f == NULL) {
-		close(fd);
-		unlink(o->tmp);
-		return status_set(msg, n, HB_EIO, "%s: %s", o->path, strerror(errno));
-	}
-	return HB_OK;
-}
-
-static int
-out_close(struct outfile *o, int ok, char *msg, size_t n)
-{
-	int e = 0;
-
-	if (o->f == NULL)
-		return HB_OK;
-	if (ferror(o->f) || fflush(o->f) != 0 || fsync(fileno(o->f)) != 0)
-		e = errno ? errno : EIO;
-	if (fclose(o->f) != 0 && e == 0)
-		e = errno;
-	o->f = NULL;
-	if (!ok || e != 0) {
-		unlink(o->tmp);
-		return ok ? status_set(msg, n, HB_EIO, "%s: %s", o->path, strerror(e)) : HB_OK;
-	}
-	return HB_OK;
-}
-
 /* Loads DIR/sweep.preset into a sweep. */
 static struct sweep *
 load_spec(const char *dir, struct scene *sc, char *msg, size_t n)
@@ -706,7 +635,9 @@ sweep_merge(const char *dir, char *msg, size_t n)
 	struct index x = { 0 };
 	char **names = NULL, hdr[4096], path[4200];
 	int nnames = 0, *fds = NULL, rc = HB_OK;
-	struct outfile runs = { 0 }, coll = { 0 };
+	struct atomic_set set;
+	FILE *runs = NULL, *coll = NULL;
+	int set_open = 0;
 	char *blk = NULL;
 	size_t cap = 0;
 	long np;
@@ -777,14 +708,23 @@ sweep_merge(const char *dir, char *msg, size_t n)
 		                nnames == 1 ? "" : "s");
 		goto out;
 	}
-	if ((rc = out_open(&runs, dir, "runs.csv", msg, n)) != HB_OK ||
-	    (rc = out_open(&coll, dir, "collisions.csv", msg, n)) != HB_OK)
+	atomic_begin(&set);
+	set_open = 1;
+	snprintf(path, sizeof path, "%s/runs.csv", dir);
+	if ((runs = atomic_add(&set, path, msg, n)) == NULL) {
+		rc = HB_EIO;
 		goto out;
+	}
+	snprintf(path, sizeof path, "%s/collisions.csv", dir);
+	if ((coll = atomic_add(&set, path, msg, n)) == NULL) {
+		rc = HB_EIO;
+		goto out;
+	}
 	sweep_runs_header(sw, hdr, sizeof hdr);
-	fprintf(runs.f, "%s\n", hdr);
+	fprintf(runs, "%s\n", hdr);
 	if ((rc = collisions_header(&sc, hdr, sizeof hdr, msg, n)) != HB_OK)
 		goto out;
-	fprintf(coll.f, "id,%s\n", hdr);
+	fprintf(coll, "id,%s\n", hdr);
 	for (long id = 0; id < np && rc == HB_OK; id++) {
 		size_t len = x.len[id];
 		const char *p;
@@ -807,26 +747,16 @@ sweep_merge(const char *dir, char *msg, size_t n)
 			const char *end = strchr(p, '\n');
 			size_t l = (size_t)(end - p) + 1;
 
-			fwrite(p + 2, 1, l - 2, p[0] == 'r' ? runs.f : coll.f);
+			fwrite(p + 2, 1, l - 2, p[0] == 'r' ? runs : coll);
 			p += l;
 		}
 	}
 out:
-	{
-		int ok = rc == HB_OK;
-		int r1 = out_close(&runs, ok, msg, n);
-		int r2 = out_close(&coll, ok && r1 == HB_OK, msg, n);
-
-		if (ok && r1 == HB_OK && r2 == HB_OK) {
-			if (rename(runs.tmp, runs.path) != 0 || rename(coll.tmp, coll.path) != 0) {
-				rc = status_set(msg, n, HB_EIO, "%s: %s", dir, strerror(errno));
-				unlink(runs.tmp);
-				unlink(coll.tmp);
-			}
-		} else if (ok) {
-			rc = r1 != HB_OK ? r1 : r2;
-			unlink(runs.tmp);
-		}
+	if (set_open) {
+		if (rc == HB_OK)
+			rc = atomic_commit(&set, msg, n);   /* both files, or neither */
+		else
+			atomic_abort(&set);
 	}
 	for (int i = 0; i < nnames; i++) {
 		if (fds && fds[i] >= 0)

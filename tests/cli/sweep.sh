@@ -46,6 +46,9 @@ if grep -q '^; sweep: --vary initial.x0=10um:40um:3$' "$T/one/sweep.preset" &&
     grep -q '^; sweep: --vary law.c=1e9,4.3e9$' "$T/one/sweep.preset"; then
 	ok "sweep.preset holds the scene and the axes"
 else notok "sweep.preset holds the scene and the axes" "$T/one/sweep.preset"; fi
+if [ "$(ls -A "$T/one" | tr '\n' ' ')" = "collisions.csv runs.csv sweep.preset " ]; then
+	ok "a finished sweep leaves exactly runs.csv, collisions.csv and sweep.preset (no journal, no temporary file)"
+else notok "a finished sweep leaves exactly its three files ($(ls -A "$T/one" | tr '\n' ' '))"; fi
 
 # 2. Bit-identical to --batch, point by point (collisions to the byte, work counts).
 bad=0
