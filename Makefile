@@ -2,7 +2,8 @@
 #
 #   make            build build/hybounce
 #   make run        install missing packages, build, open the explorer on the default preset
-#   make check      install missing packages, build, run every test
+#   make check      install missing packages, build, run every test and the fuzz smoke
+#   make fuzz       the libFuzzer campaign, FUZZ_TIME seconds per harness (tests/fuzz)
 #   make check-asan the unit tests under AddressSanitizer + UBSan
 #   make bench      the work-precision benchmark (report in build/bench/)
 #   make golden     rewrite tests/golden/*.csv (the collision tables the tests compare with)
@@ -37,7 +38,9 @@ ifdef WERROR
 WARN      += -Werror
 endif
 ifdef SAN
-SANFLAGS  := -fsanitize=$(SAN) -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+# float-cast-overflow: gcc's (and clang's) "undefined" leaves it out
+SANFLAGS  := -fsanitize=$(SAN) -fsanitize=float-cast-overflow -fno-omit-frame-pointer \
+             -fno-sanitize-recover=undefined,float-cast-overflow
 endif
 
 CURSES_PC := $(shell $(PKG_CONFIG) --exists ncursesw 2>/dev/null && echo ncursesw || echo ncurses)
@@ -82,6 +85,7 @@ PCFILE     := $(BUILD)/hybounce.pc
 PUBLIC_H   := $(sort $(wildcard include/hybounce/*.h))
 # Paths under PREFIX are written relative to ${prefix} in hybounce.pc.
 pc_rel      = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
+.PHONY: fuzz fuzzers fuzz-smoke
 
 .PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man lib FORCE golden
 
@@ -174,11 +178,48 @@ unit: $(UNIT)
 check: deps
 	@$(MAKE) --no-print-directory all unit
 	@sh tests/run.sh $(BIN) $(UNIT)
+	@$(MAKE) --no-print-directory fuzz-smoke
 
 check-asan: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan SAN=address,undefined OPT=-O1 all unit
 	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	    sh tests/run.sh build-asan/hybounce build-asan/unit-tests
+
+# libFuzzer harnesses (tests/fuzz/fuzz_*.c), built with clang against the
+# engine's sources with ASan + UBSan (float-cast-overflow included), always
+# in build/fuzz.  `make fuzz` is the long campaign: FUZZ_TIME seconds per
+# harness (default 60), corpus grown in build/fuzz/corpus/NAME from the seeds
+# in tests/fuzz/corpus and presets/, findings (crash-*, leak-*, timeout-*) left in
+# build/fuzz/findings/.  `make fuzz-smoke` (the last step of make check)
+# runs each harness FUZZ_RUNS times (default 100000), from its seeds.
+FUZZ_CC    ?= clang
+FUZZ_TIME  ?= 60
+FUZZ_RUNS  ?= 100000
+FUZZ_DIR   := build/fuzz
+FUZZ_SAN   := -fsanitize=address,undefined,float-cast-overflow \
+              -fno-sanitize-recover=undefined,float-cast-overflow -fno-omit-frame-pointer
+FUZZ_FLAGS := -g -O1 -std=c17 -Wall -Wextra -MMD -MP $(FUZZ_SAN)
+FUZZ_SRC   := $(sort $(wildcard tests/fuzz/fuzz_*.c))
+FUZZ_BINS  := $(FUZZ_SRC:tests/fuzz/%.c=$(FUZZ_DIR)/%)
+FUZZ_OBJ   := $(CORE_SRC:%.c=$(FUZZ_DIR)/obj/%.o)
+
+$(FUZZ_DIR)/obj/%.o: %.c
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(CPPFLAGS) $(CORE_CFLAGS) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
+$(FUZZ_DIR)/%: tests/fuzz/%.c tests/fuzz/fuzz.h $(FUZZ_OBJ)
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(CPPFLAGS) $(CORE_CFLAGS) $(FUZZ_FLAGS) -fsanitize=fuzzer -o $@ $< \
+	    $(FUZZ_OBJ) $(CORE_LIBS)
+
+fuzzers: $(FUZZ_BINS)
+
+fuzz: deps
+	@$(MAKE) --no-print-directory fuzzers
+	@sh tests/fuzz/run.sh campaign $(FUZZ_TIME) $(FUZZ_BINS)
+
+fuzz-smoke: deps
+	@$(MAKE) --no-print-directory fuzzers
+	@sh tests/fuzz/run.sh smoke $(FUZZ_RUNS) $(FUZZ_BINS)
 
 debug:
 	@$(MAKE) --no-print-directory BUILD=build-debug OPT=-O0 CFLAGS='-g3' all

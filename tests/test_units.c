@@ -310,3 +310,26 @@ Test(units, huge_exponent_is_written)
 	snprintf(want, sizeof want, "m^%.17g", -4e97);
 	cr_assert_str_eq(buf, want);
 }
+
+/* Issue 10 item 4: an exponent beyond int was cast to int (undefined). */
+Test(units, absurd_exponents)
+{
+	char msg[256], buf[64];
+	double v;
+	struct unit_dim huge = { 0, 3e9, 0, 0, 0 }, big = { 0, -4e97, 0, 0, 0 };
+
+	cr_assert_eq(units_parse("1 m^-4e97", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strstr(msg, "bad exponent") != NULL, "%s", msg);
+	cr_assert_eq(units_parse("1 m^1e400", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(units_parse("1 m^2e15", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(units_parse("1 m^3000000000/3000000000", UNIT_LENGTH, &v, msg, sizeof msg),
+	             HB_OK);
+	cr_assert_eq(v, 1.0);
+	/* what units_dim_str writes for law.n = 3e9 reads back */
+	cr_assert_eq(units_parse("2 m^3000000000", huge, &v, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(v, 2.0);
+	/* dimensions derived from law.n = 3e9 print without a cast */
+	cr_assert_str_eq(units_dim_str(huge, buf, sizeof buf), "m^3000000000");
+	units_dim_str(big, buf, sizeof buf);
+	cr_assert(strstr(buf, "e+97") != NULL, "%s", buf);
+}

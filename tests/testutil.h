@@ -97,6 +97,23 @@ scene_par(const struct scene *sc, const char *name)
 	return sc->par[i];
 }
 
+/*
+ * The derived values the paper prints for its second study (PTFE on POM,
+ * Table tab:two), checked to the digits printed.
+ */
+static inline void
+study2_printed(const struct scene *sc)
+{
+	cr_assert_eq(sc->d.system, SCENE_FULL);
+	printed(sc->d.Estar, 5.321e8, 4, "E*");
+	printed(sc->d.Re, 10e-3, 2, "R_e");
+	printed(sc->d.m1, 7.372e-2, 4, "m1");
+	printed(sc->d.m2, 4.725e-2, 4, "m2");
+	printed(sc->d.m, 2.879e-2, 4, "m");
+	printed(sc->d.eta, 0.6094, 4, "eta");
+	printed(scene_par(sc, "k"), 7.095e7, 4, "k");
+}
+
 /* Loads a scene from INI text; fails the test on error. */
 static inline void
 scene_from(const char *ini, struct scene *sc)

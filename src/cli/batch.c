@@ -755,6 +755,39 @@ batch_run(const struct batch_options *o)
 				status = 1;
 		}
 	}
+	{
+		/*
+		 * The physics (check.h): a failure is a warning, and exit 1 with
+		 * --check; a pass is said only when --check asks.
+		 */
+		struct check_physics ph;
+
+		msg[0] = '\0';
+		if (check_physics(sim_scene(s), sim_arc(s), &ph, msg, sizeof msg) == HB_OK) {
+			if (o->check)
+				fprintf(out, "  check       physics: ok (work-energy residual %.2g of the "
+				        "energy scale, %.2g x the tolerance %.2g; %zu contacts: W and e "
+				        "within what %s allows)\n", ph.resid, ph.resid / ph.tol, ph.tol,
+				        ph.ncontacts, sim_scene(s)->law->name);
+		} else {
+			fprintf(out, "  %-11s physics: %s: %s\n", o->check ? "check" : "warning",
+			        o->check ? "FAILED" : "the run breaks what it must obey", msg);
+			if (out != stderr)
+				fprintf(stderr, PROG ": %s: the computed run fails %d physics "
+				        "check%s (see 'physics' in the report); a tighter run.rtol and "
+				        "run.atol, or another run.stepper, should fix it\n",
+				        o->check ? "check failed" : "warning", ph.failed,
+				        ph.failed == 1 ? "" : "s");
+			if (o->check && status == 0)
+				status = 1;
+		}
+		if (ph.nzero > 0)
+			fprintf(out, "  note        collision %ld%s began at zero approach velocity "
+			        "(v_i = %.3g m/s, an impact energy below what the tolerance "
+			        "resolves): e = -v(t_s)/v_i means nothing there (\"-\" when v_i = 0); "
+			        "what separates the bodies is the applied force\n", ph.zero_at,
+			        ph.nzero > 1 ? " and others" : "", ph.vi_zero);
+	}
 	/* Now: the messages below come after the report. */
 	if (out == stdout) {
 		if (batch_flush_stdout() != 0)
@@ -873,31 +906,25 @@ batch_list_laws(void)
 
 	for (l = law_list(); *l != NULL; l++) {
 		const struct law_type *law = *l;
-		double def[LAW_MAX_PARAMS], p, nn;
 		int i;
 
-		law_defaults(law, def);
-		p = law_exponent_p(law, def);
-		nn = law_exponent_n(law, def);
 		printf("%s  %s\n", law->name, law->title);
 		print_wrapped(stdout, "    ", law->description);
 		printf("    internal states n_z = %d; parameters (units for the default "
 		       "exponents):\n", law->n_z);
 		for (i = 0; i < law->n_params; i++) {
 			const struct law_param *pp = &law->params[i];
-			struct unit_dim d = units_resolve(pp->dim, p, nn);
-			char unit[48], range[80], dv[64];
+			struct scene_keyinfo ki; /* the typed row: unit, range, default */
+			char dv[64];
 
-			units_dim_str(d, unit, sizeof unit);
-			struct unit_range rr = law_param_range(pp);
-			units_range_str(&rr, NULL, range, sizeof range);
-			fmt(pp->def, d, dv, sizeof dv);
+			scene_law_param_info(law, i, &ki);
+			fmt(ki.number, ki.dim, dv, sizeof dv);
 			printf("      %-8s %-14s range %-16s default %s%s\n",
-			       pp->name, unit[0] ? unit : "(1)", range, dv,
+			       pp->name, ki.unit[0] ? ki.unit : "(1)", ki.range, dv,
 			       (pp->flags & LAW_PARAM_STIFFNESS) && law->k_hertz != NULL
 			           ? " (derived from k_H when both bodies have materials)" : "");
-			if (pp->help != NULL && pp->help[0])
-				printf("      %-8s %s\n", "", pp->help);
+			if (ki.help[0])
+				printf("      %-8s %s\n", "", ki.help);
 		}
 		printf("\n");
 	}
