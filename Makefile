@@ -40,6 +40,9 @@ TUI_CFLAGS  := $(filter-out -D_XOPEN_SOURCE=%,$(shell $(PKG_CONFIG) --cflags $(C
 TUI_LIBS    := $(shell $(PKG_CONFIG) --libs $(CURSES_PC) 2>/dev/null)
 TEST_CFLAGS := $(shell $(PKG_CONFIG) --cflags criterion 2>/dev/null)
 TEST_LIBS   := $(shell $(PKG_CONFIG) --libs criterion 2>/dev/null)
+# aubio (onset detection for `hybounce fit` on recordings): onset.o only.
+AUBIO_CFLAGS := $(shell $(PKG_CONFIG) --cflags aubio 2>/dev/null)
+AUBIO_LIBS   := $(shell $(PKG_CONFIG) --libs aubio 2>/dev/null)
 
 CPPFLAGS  += -Iinclude -Iinclude/hybounce -Isrc/core -DHYBOUNCE_VERSION='"$(VERSION)"' \
              -DHYBOUNCE_DATADIR='"$(DATADIR)"' -D_POSIX_C_SOURCE=200809L -D_XOPEN_SOURCE=700
@@ -84,6 +87,8 @@ $(BUILD)/tests/%.o: tests/%.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Isrc/tui $(CORE_CFLAGS) $(TEST_CFLAGS) $(CFLAGS) -c $< -o $@
 
+$(BUILD)/src/core/onset.o: CORE_CFLAGS += $(AUBIO_CFLAGS)
+
 $(CORE_LIB): $(CORE_OBJ)
 	@mkdir -p $(@D)
 	rm -f $@ && ar rcs $@ $^
@@ -92,10 +97,10 @@ $(TUI_LIB): $(TUI_OBJ)
 	rm -f $@ && ar rcs $@ $^
 
 $(BIN): $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
-	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(TUI_LIBS) $(CORE_LIBS)
+	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
 
 $(UNIT): $(TEST_OBJ) $(TUI_LIB) $(CORE_LIB)
-	$(CC) $(LDFLAGS) -o $@ $(TEST_OBJ) $(TUI_LIB) $(CORE_LIB) $(TEST_LIBS) $(TUI_LIBS) $(CORE_LIBS)
+	$(CC) $(LDFLAGS) -o $@ $(TEST_OBJ) $(TUI_LIB) $(CORE_LIB) $(TEST_LIBS) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
 
 $(BENCHBIN): $(BENCH_OBJ) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(BENCH_OBJ) $(CORE_LIB) $(CORE_LIBS)
