@@ -158,8 +158,8 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 		for (uint_t i = 0; i < HOP; i++)
 			fvec_set_sample(in, s + i < nx ? x[s + i] : 0, i);
 		aubio_onset_do(od, in, out);
-		if (fvec_get_sample(out, 0) < 1)
-			continue;
+		if (fvec_get_sample(out, 0) == 0)
+			continue; /* no onset in this hop */
 		rough = (long)aubio_onset_get_last(od);
 		/* the click: its peak near aubio's time, its start before the peak */
 		lo = rough - w > 0 ? rough - w : 0;
