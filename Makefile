@@ -105,6 +105,19 @@ $(UNIT): $(TEST_OBJ) $(TUI_LIB) $(CORE_LIB)
 $(BENCHBIN): $(BENCH_OBJ) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(BENCH_OBJ) $(CORE_LIB) $(CORE_LIBS)
 
+# The generated parts of the man page and the README (tools/gendoc.c):
+# `make docs` rewrites them; tests/cli/docs.sh fails when they are stale.
+GENDOC    := $(BUILD)/hybounce-gendoc
+.PHONY: docs
+all: $(GENDOC)
+$(BUILD)/tools/%.o: tools/%.c
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CORE_CFLAGS) $(CFLAGS) -c $< -o $@
+$(GENDOC): $(BUILD)/tools/gendoc.o $(CORE_LIB)
+	$(CC) $(LDFLAGS) -o $@ $(BUILD)/tools/gendoc.o $(CORE_LIB) $(CORE_LIBS)
+docs: $(GENDOC)
+	./$(GENDOC) man/hybounce.1 README.md
+
 # Installs the Debian packages that are missing (as root, or through sudo).
 deps:
 	@missing=""; for p in $(APT_PACKAGES); do \

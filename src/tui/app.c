@@ -259,19 +259,12 @@ static void
 edit_value(struct app *a, const char *key, const char *text)
 {
 	struct scene sc = *sim_scene(a->sim);
+	struct scene_error err;
 	char emsg[512], what[160];
 
-	if (scene_set(&sc, key, text, emsg, sizeof emsg) != HB_OK) {
-		/* add the accepted range from the panel when the message lacks it */
-		for (int i = 0; i < scene_nkeys(&sc); i++) {
-			struct scene_keyinfo ki;
-			if (scene_key(sim_scene(a->sim), i, &ki) == 0 && strcmp(ki.key, key) == 0
-			    && ki.range[0] && strstr(emsg, ki.range) == NULL) {
-				size_t l = strlen(emsg);
-				snprintf(emsg + l, sizeof emsg - l, "; accepted: %s", ki.range);
-			}
-		}
-		app_msg(a, 1, "refused (old value kept): %s", emsg);
+	/* The error names the key and what is accepted (scene_error). */
+	if (scene_set_text(&sc, key, text, &err) != HB_OK) {
+		app_msg(a, 1, "refused (old value kept): %s", scene_error_str(&err, emsg, sizeof emsg));
 		return;
 	}
 	snprintf(what, sizeof what, "%s = %s", key, text);
@@ -291,42 +284,18 @@ param_key_index(const struct app *a)
 }
 
 /*
- * For a value chosen from a list (stepper, law, extension, yes/no ...):
- * the choice dir steps after the current one in the key's range ("rk8pd
- * rkf45 ...", "adhesive, none"), cycling.  Returns 0 with it in out, or -1
- * when the range is not a list holding the current value.
- */
-static int
-next_choice(const struct scene_keyinfo *ki, int dir, char *out, size_t n)
-{
-	char range[sizeof ki->range], *tok[32], *save = NULL, *t;
-	int ntok = 0, cur = -1, i;
-
-	snprintf(range, sizeof range, "%s", ki->range);
-	for (t = strtok_r(range, ", ", &save); t != NULL && ntok < 32; t = strtok_r(NULL, ", ", &save)) {
-		for (i = 0; t[i]; i++)
-			if (!isalnum((unsigned char)t[i]) && t[i] != '_' && t[i] != '-')
-				return -1; /* "(0, 1)", ">= 1": a numeric range, not a list */
-		if (strcmp(t, ki->value) == 0)
-			cur = ntok;
-		tok[ntok++] = t;
-	}
-	if (cur < 0 || ntok < 2)
-		return -1;
-	snprintf(out, n, "%s", tok[((cur + dir) % ntok + ntok) % ntok]);
-	return 0;
-}
-
-/*
  * Multiplies (dir > 0) or divides the selected value by 1.1, keeping its
  * unit; a value chosen from a list steps to the next (previous) choice.
+ * The value is read typed (scene_keyinfo), never from its display text.
  */
 static void
 nudge(struct app *a, int dir)
 {
 	struct scene_keyinfo ki;
+	struct scene sc = *sim_scene(a->sim);
+	struct scene_error err;
 	int k = param_key_index(a);
-	char *end, text[96];
+	char text[96], emsg[512];
 	double v;
 
 	if (k < 0 || scene_key(sim_scene(a->sim), k, &ki) != 0)
@@ -335,23 +304,33 @@ nudge(struct app *a, int dir)
 		app_msg(a, 1, "%s is derived: computed from the bodies, never typed", ki.label);
 		return;
 	}
-	v = strtod(ki.value, &end);
-	if (end == ki.value || !isfinite(v)) {
-		if (next_choice(&ki, dir, text, sizeof text) == 0)
-			edit_value(a, ki.key, text);
-		else
-			app_msg(a, 1, "%s is not a number: press Enter to type a value", ki.label);
+	if (ki.kind == SCENE_KEY_CHOICE) {
+		if (ki.choice >= 0 && ki.nchoices >= 2)
+			edit_value(a, ki.key,
+			    ki.choices[((ki.choice + dir) % ki.nchoices + ki.nchoices) % ki.nchoices]);
 		return;
 	}
-	if (v == 0) {
+	if (ki.kind == SCENE_KEY_TEXT || !isfinite(ki.number)) {
+		app_msg(a, 1, "%s is not a number: press Enter to type a value", ki.label);
+		return;
+	}
+	if (ki.number == 0) {
 		app_msg(a, 1, "%s is 0: press Enter to type a value", ki.label);
 		return;
 	}
-	v = dir > 0 ? v * 1.1 : v / 1.1;
-	while (*end == ' ')
-		end++;
-	snprintf(text, sizeof text, "%.6g%s%s", v, *end ? " " : "", end);
-	edit_value(a, ki.key, text);
+	v = dir > 0 ? ki.number * 1.1 : ki.number / 1.1;
+	if (ki.kind == SCENE_KEY_WHOLE)
+		v = dir > 0 ? fmax(ceil(v), ki.number + 1) : fmin(floor(v), ki.number - 1);
+	if (scene_set_number(&sc, ki.key, v, &err) != HB_OK) {
+		app_msg(a, 1, "refused (old value kept): %s", scene_error_str(&err, emsg, sizeof emsg));
+		return;
+	}
+	if (ki.kind == SCENE_KEY_WHOLE)
+		snprintf(text, sizeof text, "%.0f", v);
+	else
+		units_format(v, ki.dim, 6, text, sizeof text);
+	snprintf(emsg, sizeof emsg, "%s = %s", ki.key, text);
+	apply_scene(a, &sc, emsg);
 }
 
 /* Loads a preset (name or path) with the command line's --set overrides. */
@@ -361,30 +340,11 @@ load_sim(const char *name, const char *const *sets, int nsets, char *path, size_
 {
 	struct scene sc;
 	struct sim *s;
-	char emsg[512];
 
 	if (preset_resolve(name, path, pn, msg, n) != HB_OK)
 		return NULL;
-	if (preset_load(path, &sc, msg, n) != HB_OK)
+	if (preset_open(path, sets, nsets, &sc, msg, n) != HB_OK)
 		return NULL;
-	for (int i = 0; i < nsets; i++) {
-		char kv[512], *eq;
-		snprintf(kv, sizeof kv, "%s", sets[i]);
-		eq = strchr(kv, '=');
-		if (eq == NULL) {
-			snprintf(msg, n, "--set '%s': expected KEY=VALUE", sets[i]);
-			return NULL;
-		}
-		*eq = 0;
-		if (scene_set(&sc, kv, eq + 1, emsg, sizeof emsg) != HB_OK) {
-			snprintf(msg, n, "--set %s: %s", sets[i], emsg);
-			return NULL;
-		}
-	}
-	if (scene_validate(&sc, emsg, sizeof emsg) != HB_OK) {
-		snprintf(msg, n, "%s: %s", path, emsg);
-		return NULL;
-	}
 	s = sim_new(&sc, msg, n);
 	return s;
 }
@@ -567,7 +527,7 @@ prompt_edit_begin(struct app *a)
 	a->prompt_kind = PROMPT_EDIT;
 	snprintf(a->prompt_key, sizeof a->prompt_key, "%s", ki.key);
 	snprintf(a->prompt_title, sizeof a->prompt_title, "%.47s %.47s", ki.key, ki.range);
-	snprintf(a->prompt_buf, sizeof a->prompt_buf, "%s", ki.value);
+	snprintf(a->prompt_buf, sizeof a->prompt_buf, "%s", ki.edit); /* reads back exactly */
 }
 
 static void

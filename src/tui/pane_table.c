@@ -11,40 +11,32 @@
 
 #include "term.h"
 #include "tui.h"
+#include "columns.h"
 #include "units.h"
 
-enum { COL_I, COL_TE, COL_TD, COL_VI, COL_E, COL_XCMAX, COL_FCMAX, COL_XCR, COL_LAMBDA, NCOL };
+enum { NCOL_MAX = 16 };
 
-static const struct {
-	const char *name;
-	const char *base;   /* NULL: no prefix */
-	int width;
-} cols[NCOL] = {
-	{ "i", NULL, 4 },
-	{ "t_e", "s", 9 },
-	{ "t_d", "s", 8 },
-	{ "v_i", NULL, 10 },
-	{ "e", NULL, 7 },
-	{ "xc^max", "m", 11 },
-	{ "Fc^max", "N", 10 },
-	{ "xc^r", "m", 10 },
-	{ "Lambda", NULL, 10 },
-};
-
-static double
-colval(const struct collision *c, int k)
+/* The explorer's columns, from the table of columns.h, with their widths. */
+static int
+columns(const struct collision_column **cols, int *width)
 {
-	switch (k) {
-	case COL_I: return (double)c->i;
-	case COL_TE: return c->te;
-	case COL_TD: return c->td;
-	case COL_VI: return c->vi;
-	case COL_E: return c->e;
-	case COL_XCMAX: return c->xcmax;
-	case COL_FCMAX: return c->Fcmax;
-	case COL_XCR: return c->xcr;
-	default: return c->Lambda;
+	int n = 0;
+
+	for (int k = 0; k < collision_ncolumns && n < NCOL_MAX; k++) {
+		const struct collision_column *c = &collision_columns[k];
+		if (!(c->shown & COLUMN_EXPLORER))
+			continue;
+		cols[n] = c;
+		/* room for " LABEL[pUNIT]", or for a ratio such as -0.01122 */
+		if (c->index)
+			width[n] = 4;
+		else if (c->unit[0])
+			width[n] = (int)(strlen(c->label) + strlen(c->unit) + 4);
+		else
+			width[n] = (int)strlen(c->label) + 3 > 7 ? (int)strlen(c->label) + 3 : 7;
+		n++;
 	}
+	return n;
 }
 
 void
@@ -52,8 +44,10 @@ pane_table_draw(const struct app *a)
 {
 	const struct rect *r = &a->L.table;
 	long n = app_ncollisions(a), top, i, rows = r->h - 1, sel = a->table_sel;
-	double scale[NCOL], mag[NCOL];
-	char unit[NCOL][16], line[512], cell[64];
+	const struct collision_column *cols[NCOL_MAX];
+	int width[NCOL_MAX], ncol = columns(cols, width);
+	double scale[NCOL_MAX], mag[NCOL_MAX];
+	char unit[NCOL_MAX][16], line[512], cell[64];
 	int k, focused = a->focus == FOCUS_TABLE;
 	long at = -1;
 	const struct arc *arc = sim_arc(a->sim);
@@ -69,25 +63,25 @@ pane_table_draw(const struct app *a)
 				at = i;
 		}
 	}
-	for (k = 0; k < NCOL; k++)
+	for (k = 0; k < ncol; k++)
 		mag[k] = 0;
 	for (i = 0; i < n; i++) {
 		const struct collision *c = app_collision(a, i, &live);
-		for (k = 0; c && k < NCOL; k++)
-			if (isfinite(colval(c, k)) && fabs(colval(c, k)) > mag[k])
-				mag[k] = fabs(colval(c, k));
+		for (k = 0; c && k < ncol; k++)
+			if (isfinite(collision_value(c, cols[k])) && fabs(collision_value(c, cols[k])) > mag[k])
+				mag[k] = fabs(collision_value(c, cols[k]));
 	}
 	line[0] = 0;
-	for (k = 0; k < NCOL; k++) {
+	for (k = 0; k < ncol; k++) {
 		char h[48];
-		if (cols[k].base) {
-			scale[k] = units_axis(mag[k] > 0 ? mag[k] : 1, cols[k].base, unit[k], sizeof unit[k]);
-			snprintf(h, sizeof h, "%s[%s]", cols[k].name, unit[k]);
+		if (cols[k]->unit[0]) {
+			scale[k] = units_axis(mag[k] > 0 ? mag[k] : 1, cols[k]->unit, unit[k], sizeof unit[k]);
+			snprintf(h, sizeof h, "%s[%s]", cols[k]->label, unit[k]);
 		} else {
 			scale[k] = 1;
-			snprintf(h, sizeof h, "%s%s", cols[k].name, k == COL_VI ? "[m/s]" : "");
+			snprintf(h, sizeof h, "%s", cols[k]->label);
 		}
-		snprintf(cell, sizeof cell, "%*s", cols[k].width, h);
+		snprintf(cell, sizeof cell, "%*s", width[k], h);
 		strncat(line, cell, sizeof line - strlen(line) - 1);
 	}
 	snprintf(cell, sizeof cell, "  collisions: %zu%s", sim_ncollisions(a->sim),
@@ -113,23 +107,24 @@ pane_table_draw(const struct app *a)
 		if (c == NULL)
 			continue;
 		line[0] = 0;
-		for (k = 0; k < NCOL; k++) {
-			double v = colval(c, k);
-			if (k == COL_I)
+		for (k = 0; k < ncol; k++) {
+			double v = collision_value(c, cols[k]);
+			const char *nm = cols[k]->name;
+			if (cols[k]->index)
 				snprintf(cell, sizeof cell, "%s%ld", i == at ? ">" : " ", c->i);
-			else if (!c->complete && k == COL_E)
+			else if (!c->complete && strcmp(nm, "e") == 0)
 				snprintf(cell, sizeof cell, "live");
-			else if (!c->complete && (k == COL_XCR || k == COL_LAMBDA))
+			else if (!c->complete && (strcmp(nm, "x_c_r") == 0 || strcmp(nm, "Lambda") == 0))
 				snprintf(cell, sizeof cell, "-");
 			else if (!isfinite(v))
 				snprintf(cell, sizeof cell, "-");
 			else {
 				snprintf(cell, sizeof cell, "%.4g", v / scale[k]);
-				if ((int)strlen(cell) >= cols[k].width)
+				if ((int)strlen(cell) >= width[k])
 					snprintf(cell, sizeof cell, "%.1e", v / scale[k]);
 			}
 			char w[64];
-			snprintf(w, sizeof w, "%*s", cols[k].width, cell);
+			snprintf(w, sizeof w, "%*s", width[k], cell);
 			strncat(line, w, sizeof line - strlen(line) - 1);
 		}
 		if (!c->complete)
