@@ -19,8 +19,10 @@
  *    ignored) and e, optionally x_c_r and/or t_d.  Each row is its own run
  *    of the scene started at contact (x0 = 0, v0 = -|v_i|) and stopped after
  *    the first separation; the observables are e, x_c^r and t_d of that
- *    collision.  A drop that does not separate before run.T has e = 0, and
- *    x_c^r and t_d at T.
+ *    collision.  A drop that does not separate before run.T (or within
+ *    5000 steps) has e = 0, and x_c^r and t_d where it stopped.
+ *    A sequence whose run ends in permanent contact has its missing
+ *    impacts at that contact's commencement (continuous in the parameters).
  * A column sd_NAME (sd_t_e, sd_e, sd_x_c_r, sd_t_d) gives the standard
  * deviation of each value of NAME; residuals are divided by it.  A column
  * without one is weighted by 1 / (largest |value| of the column), and the
@@ -133,7 +135,7 @@ struct fit_result {
 	double corr[FIT_MAX_FREE * FIT_MAX_FREE]; /* correlation matrix, row major */
 	size_t npoints;
 	struct fit_point *point;    /* npoints entries (malloc'd) */
-	double cost0, cost;         /* 1/2 sum resid^2 at the start and at the end */
+	double cost0, cost;         /* sum resid^2 at the start and at the end */
 	int sd_scaled;              /* 1: standard errors scaled by cost / (N - P) */
 	int iter;
 	long runs;                  /* simulator runs used */

@@ -4,8 +4,9 @@
  * aubio's onset detector (libaubio, method "hfc" by default, a hop of
  * 64 samples) finds each click; each onset is then placed on the sample
  * where the click's amplitude first reaches `level` of its peak (and rises
- * clearly above the noise before it), so that the time does not depend on
- * aubio's hop and delay.  The first sample of the file is t = 0.
+ * clearly above the noise), looked for within 2 ms before the peak, so that
+ * the time depends neither on aubio's hop and delay nor on the ringing of
+ * the click before.  The first sample of the file is t = 0.
  */
 #ifndef HYBOUNCE_ONSET_H
 #define HYBOUNCE_ONSET_H

@@ -243,11 +243,16 @@ report(const struct fit_result *r, const struct fit_data *d, int quiet)
 	printf("\nestimates   (SI units; standard errors %s)\n", r->sd_scaled
 	    ? "scaled by the residual variance cost/(N-P): the data carry no sd"
 	    : "from the data's standard deviations");
-	printf("  %-14s %14s %16s %12s %9s\n", "key", "start", "estimate", "std error",
-	    "relative");
-	for (int i = 0; i < p; i++)
-		printf("  %-14s %14.6g %16.9g %12.3g %9.2g\n", r->key[i], r->start[i],
-		    r->value[i], r->se[i], r->se[i] / fabs(r->value[i]));
+	printf("  %-14s %14s %16s %12s %9s  %s\n", "key", "start", "estimate", "std error",
+	    "relative", "unit");
+	for (int i = 0; i < p; i++) {
+		struct scene_keyinfo ki;
+
+		if (scene_get(&r->fitted, r->key[i], &ki, NULL) != HB_OK)
+			ki.unit[0] = '\0';
+		printf("  %-14s %14.6g %16.9g %12.3g %9.2g  %s\n", r->key[i], r->start[i],
+		    r->value[i], r->se[i], r->se[i] / fabs(r->value[i]), ki.unit);
+	}
 	if (p > 1) {
 		printf("\ncorrelation\n  %-14s", "");
 		for (int j = 0; j < p; j++)
@@ -272,6 +277,7 @@ report(const struct fit_result *r, const struct fit_data *d, int quiet)
 		printf("  %4zu %4zu %-6s %16.9g %16.9g %12.3g %10.3g\n", k, pt->row + 1,
 		    fit_obs_name(pt->obs), pt->measured, pt->simulated, pt->sd, pt->resid);
 	}
+	fit_plot(stdout, r, d);
 }
 
 int

@@ -11,8 +11,15 @@
 #ifndef HYBOUNCE_CLI_FIT_H
 #define HYBOUNCE_CLI_FIT_H
 
+#include <stdio.h>
+#include "hybounce/fit.h"
+
 /* argv[0] is "fit".  Returns the exit status. */
 int
 fit_main(int argc, char **argv);
+
+/* The text plot of measured against simulated values (fit_plot.c). */
+void
+fit_plot(FILE *f, const struct fit_result *r, const struct fit_data *d);
 
 #endif

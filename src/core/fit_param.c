@@ -1,8 +1,10 @@
 /*
  * fit_param.c - the free parameters of a fit: reading a numeric scene key,
  * its admissible range, and the transform theta(u) that keeps every trial
- * inside that range (see fit.h).  Values are written back with scene_set(),
- * which checks them and keeps the scene's invariants (derived masses, k).
+ * inside that range (see fit.h).  Values, units and ranges come from the
+ * scene's typed accessors (scene_get); values are written back with
+ * scene_set_number(), which checks them and keeps the scene's invariants
+ * (derived masses, k).
  */
 #include <math.h>
 #include <stddef.h>
@@ -13,68 +15,44 @@
 #include "hybounce/status.h"
 #include "fit_impl.h"
 
-/* The numeric keys that are not law parameters, with their ranges (scene.c). */
-static const struct {
-	const char *key;
-	size_t off;
-	double lo, hi;
-} keys[] = {
-#define OFF(f) offsetof(struct scene, f)
-	{ "body1.E", OFF(body[0].E), 0, HUGE_VAL },
-	{ "body1.nu", OFF(body[0].nu), -1, 0.5 },
-	{ "body1.rho", OFF(body[0].rho), 0, HUGE_VAL },
-	{ "body1.R", OFF(body[0].R), 0, HUGE_VAL },
-	{ "body1.mass", OFF(body[0].mass), 0, HUGE_VAL },
-	{ "body2.E", OFF(body[1].E), 0, HUGE_VAL },
-	{ "body2.nu", OFF(body[1].nu), -1, 0.5 },
-	{ "body2.rho", OFF(body[1].rho), 0, HUGE_VAL },
-	{ "body2.R", OFF(body[1].R), 0, HUGE_VAL },
-	{ "body2.mass", OFF(body[1].mass), 0, HUGE_VAL },
-	{ "loads.g", OFF(loads.g), -HUGE_VAL, HUGE_VAL },
-	{ "loads.F1", OFF(loads.F1), -HUGE_VAL, HUGE_VAL },
-	{ "loads.F2", OFF(loads.F2), -HUGE_VAL, HUGE_VAL },
-	{ "loads.F_e0", OFF(loads.Fe0), 0, HUGE_VAL },
-	{ "loads.T_e", OFF(loads.Te), 0, HUGE_VAL },
-	{ "loads.T_s", OFF(loads.Ts), 0, HUGE_VAL },
-	{ "initial.x0", OFF(init.x0), 0, HUGE_VAL },
-	{ "initial.v0", OFF(init.v0), -HUGE_VAL, HUGE_VAL },
-	{ "initial.x_m0", OFF(init.xm0), -HUGE_VAL, HUGE_VAL },
-	{ "initial.v_m0", OFF(init.vm0), -HUGE_VAL, HUGE_VAL },
-#undef OFF
-};
+/* 1 if the key can be free: a typed number of the scene, not a run setting. */
+static int
+fittable(const struct scene_keyinfo *ki)
+{
+	return ki->kind == SCENE_KEY_NUMBER && !ki->readonly
+	    && strncmp(ki->key, "run.", 4) != 0 && strncmp(ki->key, "derived.", 8) != 0;
+}
 
+/* "law.c, law.alpha, body1.E, ..." : the keys of this scene that can be free. */
 static void
 accepted(const struct scene *sc, char *buf, size_t n)
 {
+	struct scene_keyinfo row, ki;
 	size_t len;
 
-	snprintf(buf, n, "law.<parameter of %s>", sc->law != NULL ? sc->law->name : "the law");
-	for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++) {
+	buf[0] = '\0';
+	for (int i = 0; i < scene_nkeys(sc); i++) {
+		if (scene_key(sc, i, &row) != HB_OK || scene_get(sc, row.key, &ki, NULL) != HB_OK
+		    || !fittable(&ki))
+			continue;
 		len = strlen(buf);
-		snprintf(buf + len, n - len, ", %s", keys[i].key);
+		snprintf(buf + len, n - len, "%s%s", len ? ", " : "", ki.key);
 	}
 }
 
-/* Finds key: fills *p (index into keys, or -1 - law parameter index). */
+/* The typed value of a key that can be free, or HB_EINVAL with a message. */
 static int
-find(const struct scene *sc, const char *key, int *p, char *msg, size_t n)
+find(const struct scene *sc, const char *key, struct scene_keyinfo *ki, char *msg, size_t n)
 {
 	char acc[640];
 
-	if (strncmp(key, "law.", 4) == 0 && sc->law != NULL) {
-		int i = law_param_index(sc->law, key + 4);
-
-		if (i >= 0 && strcmp(sc->law->params[i].name, key + 4) == 0) {
-			*p = -1 - i;
-			return HB_OK;
-		}
-	}
-	for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
-		if (strcmp(keys[i].key, key) == 0) {
-			*p = (int)i;
-			return HB_OK;
-		}
+	if (scene_get(sc, key, ki, NULL) == HB_OK && fittable(ki))
+		return HB_OK;
 	accepted(sc, acc, sizeof acc);
+	if (strcmp(key, "law.k") == 0 || strncmp(key, "derived.", 8) == 0)
+		return status_set(msg, n, HB_EINVAL, "%s is derived from the materials (eq. "
+		    "k_hertz); free body1.E or body2.E instead, or give masses instead of "
+		    "materials to make k a parameter; accepted: %s", key, acc);
 	return status_set(msg, n, HB_EINVAL, "%s: not a numeric key that can be fitted; "
 	    "accepted: %s", key, acc);
 }
@@ -82,14 +60,11 @@ find(const struct scene *sc, const char *key, int *p, char *msg, size_t n)
 int
 fit_key_get(const struct scene *sc, const char *key, double *v, char *msg, size_t n)
 {
-	int p;
+	struct scene_keyinfo ki;
 
-	if (find(sc, key, &p, msg, n) != HB_OK)
+	if (find(sc, key, &ki, msg, n) != HB_OK)
 		return HB_EINVAL;
-	if (p < 0)
-		*v = sc->par[-1 - p];
-	else
-		*v = *(const double *)((const char *)sc + keys[p].off);
+	*v = ki.number;
 	return HB_OK;
 }
 
@@ -102,47 +77,36 @@ int
 fit_param_init(const struct scene *sc, const char *key, struct fit_param *fp,
                char *msg, size_t n)
 {
-	int p;
-	double v = NAN;
+	struct scene_keyinfo ki;
+	double v;
 
 	memset(fp, 0, sizeof *fp);
 	snprintf(fp->key, sizeof fp->key, "%s", key);
-	if (find(sc, key, &p, msg, n) != HB_OK)
+	if (find(sc, key, &ki, msg, n) != HB_OK)
 		return HB_EINVAL;
-	fit_key_get(sc, key, &v, msg, n);
+	v = ki.number;
 	fp->beta = -1;
-	if (p < 0) {
-		const struct law_param *pp = &sc->law->params[-1 - p];
+	fp->lo = ki.limits.lo;
+	fp->hi = ki.limits.hi;
+	if (strcmp(key, "law.gamma") == 0 && law_param_index(sc->law, "beta") >= 0
+	    && sc->law->check != NULL) {
+		fp->beta = law_param_index(sc->law, "beta");
+		fp->lo = -HUGE_VAL; /* bounded by beta through the transform */
+		fp->hi = HUGE_VAL;
+	}
+	if (strncmp(key, "body", 4) == 0) {
+		const struct scene_body *b = &sc->body[key[4] - '1'];
+		const char *f = key + 6;
 
-		if ((pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived)
-			return status_set(msg, n, HB_EINVAL, "%s is derived from the materials by "
-			    "eq. k_hertz; free body1.E or body2.E instead, or give masses instead of "
-			    "materials to make k a parameter", key);
-		fp->lo = pp->lo;
-		fp->hi = pp->hi;
-		if (strcmp(pp->name, "gamma") == 0 && law_param_index(sc->law, "beta") >= 0
-		    && sc->law->check != NULL) {
-			fp->beta = law_param_index(sc->law, "beta");
-			fp->lo = -HUGE_VAL; /* bounded by beta through the transform */
-			fp->hi = HUGE_VAL;
-		}
-	} else {
-		fp->lo = keys[p].lo;
-		fp->hi = keys[p].hi;
-		if (strncmp(key, "body", 4) == 0) {
-			const struct scene_body *b = &sc->body[key[4] - '1'];
-			const char *f = key + 6;
-
-			if ((strcmp(f, "E") == 0 || strcmp(f, "nu") == 0) && !b->has_material)
-				return status_set(msg, n, HB_EINVAL, "%s: body %c is given by its mass, "
-				    "not a material; accepted: a key the scene uses", key, key[4]);
-			if (strcmp(f, "rho") == 0 && (b->mass_given || !(b->rho > 0)))
-				return status_set(msg, n, HB_EINVAL, "%s: the mass of body %c is "
-				    "given, not derived from rho; free %.6s.mass instead", key, key[4], key);
-			if (strcmp(f, "mass") == 0 && !b->mass_given)
-				return status_set(msg, n, HB_EINVAL, "%s: the mass of body %c is "
-				    "derived from rho and R; free %.6s.rho instead", key, key[4], key);
-		}
+		if ((strcmp(f, "E") == 0 || strcmp(f, "nu") == 0) && !b->has_material)
+			return status_set(msg, n, HB_EINVAL, "%s: body %c is given by its mass, "
+			    "not a material; accepted: a key the scene uses", key, key[4]);
+		if (strcmp(f, "rho") == 0 && (b->mass_given || !(b->rho > 0)))
+			return status_set(msg, n, HB_EINVAL, "%s: the mass of body %c is "
+			    "given, not derived from rho; free %.6s.mass instead", key, key[4], key);
+		if (strcmp(f, "mass") == 0 && !b->mass_given)
+			return status_set(msg, n, HB_EINVAL, "%s: the mass of body %c is "
+			    "derived from rho and R; free %.6s.rho instead", key, key[4], key);
 	}
 	if (!isfinite(v))
 		return status_set(msg, n, HB_EINVAL, "%s = %g: a free parameter needs a finite "
@@ -212,7 +176,8 @@ int
 fit_param_apply(struct scene *sc, const struct fit_param *fp, int np, const double *u,
                 double *th, double *T, char *msg, size_t n)
 {
-	char txt[40];
+	struct scene_error err;
+	char m[512];
 	double d;
 
 	if (T != NULL)
@@ -234,9 +199,9 @@ fit_param_apply(struct scene *sc, const struct fit_param *fp, int np, const doub
 			}
 			if (T != NULL)
 				T[i * np + i] = d;
-			snprintf(txt, sizeof txt, "%.17g", th[i]);
-			if (scene_set(sc, fp[i].key, txt, msg, n) != HB_OK)
-				return HB_EINVAL;
+			if (scene_set_number(sc, fp[i].key, th[i], &err) != HB_OK)
+				return status_set(msg, n, HB_EINVAL, "%s",
+				    scene_error_str(&err, m, sizeof m));
 		}
 	return scene_derive(sc, msg, n);
 }

@@ -7,6 +7,8 @@
  * computed per hop and its time is corrected by a fixed delay); a click
  * from an impact rises within a few samples, so the threshold crossing
  * near aubio's time is the impact to about one sample (23 us at 44.1 kHz).
+ * The crossing is looked for at most RISE before the peak, since the
+ * previous click may still ring at the start of the search window.
  * aubio's own log output is captured into the message instead of going to
  * stderr (the engine never prints).
  */
@@ -21,6 +23,7 @@
 #include "hybounce/status.h"
 
 enum { HOP = 64, WIN = 512 };
+#define RISE 0.002 /* longest rise of a click from its start to its peak, s */
 
 void
 onset_result_free(struct onset_result *r)
@@ -176,8 +179,16 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 			}
 		if (!(P > 4 * r->noise))
 			continue; /* no click rises above the noise here */
-		for (on = lo; on < pk && fabsf(x[on]) < fmaxf(level * P, (float)(4 * r->noise)); on++)
+		/*
+		 * The start: the first sample reaching level x peak, at most
+		 * RISE before the peak, so that the ringing of the click before
+		 * (still loud a few ms later) is not taken for this one's start.
+		 */
+		on = pk - (long)(RISE * r->samplerate) > lo ? pk - (long)(RISE * r->samplerate) : lo;
+		for (; on < pk && fabsf(x[on]) < fmaxf(level * P, (float)(4 * r->noise)); on++)
 			;
+		if (prev >= 0 && on < prev + (long)(mioi * r->samplerate))
+			continue; /* the same click found twice */
 		if (r->n == cap) {
 			size_t nc = cap ? 2 * cap : 64;
 			double *t = realloc(r->t, nc * sizeof *t), *p;
