@@ -32,7 +32,8 @@ struct onset_result {
 /*
  * Reads the recording at path (any format aubio reads: WAV always) and
  * detects the onsets.  Returns 0, or HB_EIO / HB_EINVAL / HB_ENOMEM with
- * a message naming the file.  onset_result_free(r) in every case.
+ * a message naming the file.  onset_result_free(r) in every case.  Not
+ * for concurrent calls: aubio's log hook, captured meanwhile, is global.
  */
 int
 onset_detect(const char *path, const struct onset_options *o, struct onset_result *r,

@@ -157,6 +157,28 @@ is_recording(const char *path)
 	return memcmp(head, "RIFF", 4) == 0;
 }
 
+/*
+ * 0 if a file can be created at path (its folder exists and is writable),
+ * checked before the fit so that a long fit does not end in a bad --out.
+ */
+static int
+check_out(const char *opt, const char *path)
+{
+	char dir[4096];
+	const char *slash = strrchr(path, '/');
+
+	if (slash == NULL)
+		snprintf(dir, sizeof dir, ".");
+	else if (slash == path)
+		snprintf(dir, sizeof dir, "/");
+	else
+		snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
+	if (access(dir, W_OK) != 0)
+		return bad("%s %s: %s: %s; accepted: a file in a writable folder", opt, path, dir,
+		    strerror(errno));
+	return 0;
+}
+
 /* The default output: the data file's base name without extension + -fit.preset. */
 static void
 default_out(const char *data, char *out, size_t n)
@@ -399,6 +421,9 @@ fit_main(int argc, char **argv)
 		default_out(data, outbuf, sizeof outbuf);
 		out = outbuf;
 	}
+	if (check_out("--out", out) != 0
+	    || (resid_path != NULL && check_out("--residuals", resid_path) != 0))
+		goto out;
 
 	printf("hybounce %s fit\n", HYBOUNCE_VERSION);
 	printf("preset      %s (%s)\n", preset, path);

@@ -140,6 +140,22 @@ bad "times out of order" "increasing order" steel-on-bitumen --data "$T/order.cs
 bad "missing data file" "nope.csv" steel-on-bitumen --data "$T/nope.csv" --free law.c
 bad "a start with no collision" "at the start" steel-on-bitumen --data examples/fit/bounces.csv \
 	--free law.c --set loads.g=0
+bad "--residuals in a missing folder" "--residuals $T/nodir/r.csv" steel-on-bitumen \
+	--data examples/fit/bounces.csv --free law.c --residuals "$T/nodir/r.csv"
+"$BIN" fit steel-on-bitumen --data examples/fit/bounces.csv --free law.c \
+	--out "$T/nodir/x.preset" >/dev/null 2>"$T/nodir.err"
+rc=$?
+if [ "$rc" -eq 2 ] && grep -qF -- "--out $T/nodir/x.preset" "$T/nodir.err" &&
+	! grep -q iteration "$T/nodir.err"; then
+	ok "--out in a missing folder: exit 2 before fitting"
+else
+	notok "--out in a missing folder: exit 2 before fitting (exit $rc)"
+fi
+printf 'not sound\n' >"$T/fake.wav"
+bad "a .wav that is no recording" "cannot be read as a recording" steel-on-bitumen \
+	--data "$T/fake.wav" --free law.c
+bad "unknown onset method" "onset method 'nonsense'" steel-on-bitumen --data "$T/rec.wav" \
+	--free law.c --onset-method nonsense
 bad "unknown option" "unrecognized option" steel-on-bitumen --data examples/fit/bounces.csv --free law.c --frob
 
 "$BIN" fit steel-on-bitumen --data examples/fit/bounces.csv --free body1.E,body2.E \
