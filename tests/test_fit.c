@@ -545,3 +545,49 @@ Test(onset, errors_name_the_file)
 	onset_result_free(&r);
 	unlink(w);
 }
+
+/* fit_new / fit_iterate / fit_result_get: the best point so far while it runs,
+ * and at the end exactly what fit_run gives. */
+Test(fit, in_steps_as_fit_run)
+{
+	static const char *const keys[] = { "law.c", "law.alpha" };
+	struct fit_options o = { .keys = keys, .nkeys = 2 };
+	struct scene sc;
+	struct fit_data d;
+	struct fit_result r, mid, whole;
+	struct fit *f;
+	double t[8];
+	char msg[512];
+	int steps = 0;
+
+	scene_preset("steel-on-bitumen", &sc);
+	impact_times(&sc, 8, t);
+	cr_assert_eq(fit_data_from_times(t, NULL, 8, "seq", &d, msg, sizeof msg), 0, "%s", msg);
+	set(&sc, "law.c", "3000");
+	set(&sc, "law.alpha", "0.5");
+	f = fit_new(&sc, &d, &o, msg, sizeof msg);
+	cr_assert_not_null(f, "%s", msg);
+	cr_assert_eq(fit_iterate(f), 0);
+	cr_assert_eq(fit_result_get(f, &mid, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(mid.reason, FIT_RUNNING);
+	cr_assert_lt(mid.cost, mid.cost0);
+	cr_assert_eq(mid.iter, 1);
+	while (!fit_iterate(f))
+		steps++;
+	cr_assert_eq(fit_iterate(f), 1); /* stopped: nothing more happens */
+	cr_assert_eq(fit_result_get(f, &r, msg, sizeof msg), 0, "%s", msg);
+	fit_free(f);
+	cr_assert_eq(fit_run(&sc, &d, &o, &whole, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(r.iter, whole.iter);
+	cr_assert_eq(r.value[0], whole.value[0]);
+	cr_assert_eq(r.value[1], whole.value[1]);
+	cr_assert_eq(r.cost, whole.cost);
+	cr_assert_eq(r.reason, whole.reason);
+	cr_assert_lt(r.cost, mid.cost);
+	cr_assert_gt(steps, 0);
+	fit_free(NULL);
+	fit_result_free(&mid);
+	fit_result_free(&r);
+	fit_result_free(&whole);
+	fit_data_free(&d);
+}

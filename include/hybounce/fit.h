@@ -103,6 +103,7 @@ enum fit_reason {
 	FIT_NOPROGRESS,         /* no step lowered the cost */
 	FIT_SINGULAR,           /* the Jacobian is singular: see fit_result.unident */
 	FIT_FAILED,             /* runs failed (message in fit_result.why) */
+	FIT_RUNNING,            /* not stopped yet (fit_result_get during a fit) */
 };
 
 struct fit_options {
@@ -151,16 +152,50 @@ const char *
 fit_reason_str(int reason);
 
 /*
- * Fits.  Returns 0 when the fit ran (whatever the reason it stopped: see
+ * Fits: fit_new, fit_iterate until it returns 1, fit_result_get, fit_free.
+ * Returns 0 when the fit ran (whatever the reason it stopped: see
  * r->reason; r->fitted holds the best point found); HB_EINVAL with a
  * message for bad input (unknown or derived key, a key given twice, more
  * keys than data points, a start out of range, a start at which a run
- * fails or gives fewer collisions than the data); HB_ENOMEM.  Call
- * fit_result_free(r) in every case.
+ * fails or gives no collision); HB_ENOMEM.  Call fit_result_free(r) in
+ * every case.
  */
 int
 fit_run(const struct scene *sc, const struct fit_data *d, const struct fit_options *o,
         struct fit_result *r, char *msg, size_t n);
+
+/*
+ * The same in steps, for a front end that keeps drawing while it fits
+ * (initialize / iterate / test, as GSL's solvers):
+ *
+ *     struct fit *f = fit_new(&scene, &data, &opts, msg, sizeof msg);
+ *     while (f != NULL && !fit_iterate(f))
+ *             ... show progress, fit_result_get(f, &r, ...) for the best so far ...
+ *     fit_result_get(f, &r, msg, sizeof msg);
+ *     fit_free(f);
+ *
+ * fit_new checks the input and runs the start (NULL with a message as
+ * fit_run's errors); it copies the scene and borrows the data, which must
+ * outlive it.  fit_iterate does one trust-region iteration (1 + P or more
+ * runs) and returns 1 once the fit has stopped (then it does nothing), 0
+ * otherwise.  fit_result_get fills *r at the best point so far (reason
+ * FIT_RUNNING before the fit has stopped); fit_result_free(r) after.
+ * fit_free(NULL) does nothing.
+ */
+struct fit;
+
+struct fit *
+fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_options *o,
+        char *msg, size_t n);
+
+int
+fit_iterate(struct fit *f);
+
+int
+fit_result_get(struct fit *f, struct fit_result *r, char *msg, size_t n);
+
+void
+fit_free(struct fit *f);
 
 /*
  * The simulated observables of scene sc for the data's points, into

@@ -59,12 +59,13 @@ static const char *const reasons[] = {
 	[FIT_NOPROGRESS] = "stopped: no step lowered the cost",
 	[FIT_SINGULAR] = "stopped: singular Jacobian",
 	[FIT_FAILED] = "stopped: runs failed",
+	[FIT_RUNNING] = "running",
 };
 
 const char *
 fit_reason_str(int reason)
 {
-	return reason >= 0 && reason <= FIT_FAILED ? reasons[reason] : "?";
+	return reason >= 0 && reason <= FIT_RUNNING ? reasons[reason] : "?";
 }
 
 void
@@ -307,171 +308,247 @@ errors(const gsl_matrix *J, struct ctx *c, const double *u, struct fit_result *r
 	gsl_matrix_free(C);
 }
 
-int
-fit_run(const struct scene *sc, const struct fit_data *d, const struct fit_options *o,
-        struct fit_result *r, char *msg, size_t n)
-{
+/* The fit in progress (fit.h): the solver, its callbacks' context, the result so far. */
+struct fit {
+	struct ctx c;                 /* c.sc -> scene, c.fp -> fp */
+	struct scene scene;
 	struct fit_param fp[FIT_MAX_FREE];
-	struct ctx c;
-	gsl_multifit_nlinear_parameters par = gsl_multifit_nlinear_default_parameters();
 	gsl_multifit_nlinear_fdf fdf;
-	gsl_multifit_nlinear_workspace *w = NULL;
-	gsl_vector_view xv;
-	double u[FIT_MAX_FREE], th[FIT_MAX_FREE];
-	double xtol = o->xtol > 0 ? o->xtol : 1e-8, gtol = o->gtol > 0 ? o->gtol : 1e-10;
-	double ftol = o->ftol > 0 ? o->ftol : 1e-12;
-	int max_iter = o->max_iter > 0 ? o->max_iter : 100, st = HB_OK, *row = NULL, *obs = NULL;
-	int np = o->nkeys;
-	size_t npts = fit_npoints(d);
+	gsl_multifit_nlinear_workspace *w;
+	double xtol, gtol, ftol;
+	int max_iter;
+	void (*progress)(void *ctx, int iter, double cost, long runs);
+	void *pctx;
+	int done;
+	struct fit_result r;          /* keys, starts, points (start values), cost0; reason */
+};
 
-	memset(r, 0, sizeof *r);
-	memset(&c, 0, sizeof c);
+void
+fit_free(struct fit *f)
+{
+	if (f == NULL)
+		return;
+	if (f->w != NULL)
+		gsl_multifit_nlinear_free(f->w);
+	free(f->c.meas);
+	free(f->c.sd);
+	free(f->c.last_u);
+	free(f->c.last_r);
+	free(f->c.scs);
+	free(f->c.y);
+	free(f->c.fail);
+	free(f->r.point);
+	free(f);
+}
+
+struct fit *
+fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_options *o,
+        char *msg, size_t n)
+{
+	gsl_multifit_nlinear_parameters par = gsl_multifit_nlinear_default_parameters();
+	struct fit *f;
+	struct fit_result *r;
+	struct ctx *c;
+	double u[FIT_MAX_FREE];
+	int np = o->nkeys, *row = NULL, *obs = NULL;
+	size_t npts = fit_npoints(d);
+	gsl_vector_view xv;
+
 	gsl_set_error_handler_off();
-	if (np < 1 || np > FIT_MAX_FREE)
-		return status_set(msg, n, HB_EINVAL, "--free: %d keys; accepted: 1 to %d", np,
-		    FIT_MAX_FREE);
+	if (np < 1 || np > FIT_MAX_FREE) {
+		status_set(msg, n, HB_EINVAL, "--free: %d keys; accepted: 1 to %d", np, FIT_MAX_FREE);
+		return NULL;
+	}
+	if ((f = calloc(1, sizeof *f)) == NULL) {
+		status_set(msg, n, HB_ENOMEM, "out of memory");
+		return NULL;
+	}
+	r = &f->r;
+	c = &f->c;
+	f->scene = *sc;
 	for (int i = 0; i < np; i++) {
-		if (fit_param_init(sc, o->keys[i], &fp[i], msg, n) != HB_OK)
-			return HB_EINVAL;
+		if (fit_param_init(sc, o->keys[i], &f->fp[i], msg, n) != HB_OK)
+			goto fail;
 		for (int j = 0; j < i; j++)
-			if (strcmp(o->keys[i], o->keys[j]) == 0)
-				return status_set(msg, n, HB_EINVAL, "--free: %s given twice", o->keys[i]);
+			if (strcmp(o->keys[i], o->keys[j]) == 0) {
+				status_set(msg, n, HB_EINVAL, "--free: %s given twice", o->keys[i]);
+				goto fail;
+			}
 		snprintf(r->key[i], sizeof r->key[i], "%s", o->keys[i]);
-		u[i] = fp[i].u0;
+		u[i] = f->fp[i].u0;
 		fit_key_get(sc, o->keys[i], &r->start[i], msg, n);
 	}
-	if (npts < (size_t)np)
-		return status_set(msg, n, HB_EINVAL, "%s: %zu data point%s cannot determine %d "
+	if (npts < (size_t)np) {
+		status_set(msg, n, HB_EINVAL, "%s: %zu data point%s cannot determine %d "
 		    "parameters; accepted: at least as many points as free keys", d->source, npts,
 		    npts == 1 ? "" : "s", np);
+		goto fail;
+	}
+	f->xtol = o->xtol > 0 ? o->xtol : 1e-8;
+	f->gtol = o->gtol > 0 ? o->gtol : 1e-10;
+	f->ftol = o->ftol > 0 ? o->ftol : 1e-12;
+	f->max_iter = o->max_iter > 0 ? o->max_iter : 100;
+	f->progress = o->progress;
+	f->pctx = o->ctx;
 	r->np = np;
 	r->npoints = npts;
-	c.sc = sc;
-	c.d = d;
-	c.fp = fp;
-	c.np = np;
-	c.npts = npts;
-	c.jobs = o->jobs;
-	c.h_rel = sqrt(fmax(sc->run.rtol, 1e-14));
+	c->sc = &f->scene;
+	c->d = d;
+	c->fp = f->fp;
+	c->np = np;
+	c->npts = npts;
+	c->jobs = o->jobs;
+	c->h_rel = sqrt(fmax(sc->run.rtol, 1e-14));
 	r->point = calloc(npts, sizeof *r->point);
-	c.meas = malloc(npts * sizeof(double));
-	c.sd = malloc(npts * sizeof(double));
-	c.last_u = malloc(FIT_MAX_FREE * sizeof(double));
-	c.last_r = malloc(npts * sizeof(double));
-	c.scs = malloc((size_t)(np + 1) * sizeof *c.scs);
-	c.y = malloc((size_t)(np + 1) * npts * sizeof(double));
-	c.fail = malloc((size_t)(np + 1) * sizeof(int));
+	c->meas = malloc(npts * sizeof(double));
+	c->sd = malloc(npts * sizeof(double));
+	c->last_u = malloc(FIT_MAX_FREE * sizeof(double));
+	c->last_r = malloc(npts * sizeof(double));
+	c->scs = malloc((size_t)(np + 1) * sizeof *c->scs);
+	c->y = malloc((size_t)(np + 1) * npts * sizeof(double));
+	c->fail = malloc((size_t)(np + 1) * sizeof(int));
 	row = malloc(npts * sizeof(int));
 	obs = malloc(npts * sizeof(int));
-	if (r->point == NULL || c.meas == NULL || c.sd == NULL || c.last_u == NULL
-	    || c.last_r == NULL || c.scs == NULL || c.y == NULL || c.fail == NULL
+	if (r->point == NULL || c->meas == NULL || c->sd == NULL || c->last_u == NULL
+	    || c->last_r == NULL || c->scs == NULL || c->y == NULL || c->fail == NULL
 	    || row == NULL || obs == NULL) {
-		st = status_set(msg, n, HB_ENOMEM, "out of memory");
-		goto out;
+		status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto fail;
 	}
-	points_of(d, c.meas, c.sd, row, obs, &r->sd_scaled);
+	points_of(d, c->meas, c->sd, row, obs, &r->sd_scaled);
 
 	/* The start: every run must succeed, or the fit has nothing to go on. */
 	{
 		const double *up = u;
 		char m[384];
+		int st;
 
-		if ((st = eval_many(&c, &up, 1, m, sizeof m)) != HB_OK) {
+		if ((st = eval_many(c, &up, 1, m, sizeof m)) != HB_OK) {
 			status_set(msg, n, st, "the start: %s", m);
-			goto out;
+			goto fail;
 		}
-		if (c.fail[0]) {
-			st = status_set(msg, n, HB_EINVAL, "at the start: %s; choose another start "
-			    "with --set", m);
-			goto out;
+		if (c->fail[0]) {
+			status_set(msg, n, HB_EINVAL, "at the start: %s; choose another start with "
+			    "--set", m);
+			goto fail;
 		}
 		for (size_t k = 0; k < npts; k++) {
 			r->point[k].row = (size_t)row[k];
 			r->point[k].obs = obs[k];
-			r->point[k].measured = c.meas[k];
-			r->point[k].sd = c.sd[k];
-			r->point[k].start = c.y[k];
-			r->cost0 += pow((c.y[k] - c.meas[k]) / c.sd[k], 2);
+			r->point[k].measured = c->meas[k];
+			r->point[k].sd = c->sd[k];
+			r->point[k].start = c->y[k];
+			r->cost0 += pow((c->y[k] - c->meas[k]) / c->sd[k], 2);
 		}
 	}
+	free(row);
+	free(obs);
+	row = obs = NULL;
 
-	fdf.f = f_cb;
-	fdf.df = df_cb;
-	fdf.fvv = NULL;
-	fdf.n = npts;
-	fdf.p = (size_t)np;
-	fdf.params = &c;
+	f->fdf.f = f_cb;
+	f->fdf.df = df_cb;
+	f->fdf.fvv = NULL;
+	f->fdf.n = npts;
+	f->fdf.p = (size_t)np;
+	f->fdf.params = c;
 	par.trs = gsl_multifit_nlinear_trs_lm;
 	par.scale = gsl_multifit_nlinear_scale_more;
 	par.solver = gsl_multifit_nlinear_solver_qr;
-	w = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &par, npts, (size_t)np);
-	if (w == NULL) {
-		st = status_set(msg, n, HB_ENOMEM, "out of memory");
-		goto out;
+	f->w = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &par, npts, (size_t)np);
+	if (f->w == NULL) {
+		status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto fail;
 	}
 	xv = gsl_vector_view_array(u, (size_t)np);
-	gsl_multifit_nlinear_init(&xv.vector, &fdf, w);
-
-	if (identifiability(gsl_multifit_nlinear_jac(w), fp, np, &r->cond, r->unident,
+	gsl_multifit_nlinear_init(&xv.vector, &f->fdf, f->w);
+	/* A Jacobian singular at the start: no iteration can tell the keys apart. */
+	if (identifiability(gsl_multifit_nlinear_jac(f->w), f->fp, np, &r->cond, r->unident,
 	                    sizeof r->unident)) {
 		r->reason = FIT_SINGULAR;
-	} else {
-		for (;;) {
-			int info = 0, s = gsl_multifit_nlinear_iterate(w);
-			gsl_vector *fv = gsl_multifit_nlinear_residual(w);
-			double cost;
-
-			r->iter = (int)gsl_multifit_nlinear_niter(w);
-			gsl_blas_ddot(fv, fv, &cost);
-			if (o->progress != NULL)
-				o->progress(o->ctx, r->iter, cost, c.runs);
-			if (s == GSL_ENOPROG) {
-				r->reason = FIT_NOPROGRESS;
-				break;
-			}
-			if (s != GSL_SUCCESS) {
-				r->reason = FIT_FAILED;
-				snprintf(r->why, sizeof r->why, "%s", gsl_strerror(s));
-				break;
-			}
-			if (gsl_multifit_nlinear_test(xtol, gtol, ftol, &info, w) == GSL_SUCCESS) {
-				r->reason = info == 1 ? FIT_CONVERGED_STEP : info == 2
-				    ? FIT_CONVERGED_GRAD : FIT_CONVERGED_COST;
-				break;
-			}
-			if (r->iter >= max_iter) {
-				r->reason = FIT_MAXITER;
-				break;
-			}
-		}
-		if (identifiability(gsl_multifit_nlinear_jac(w), fp, np, &r->cond, r->unident,
-		                    sizeof r->unident))
-			r->reason = FIT_SINGULAR;
+		f->done = 1;
 	}
+	return f;
+fail:
+	free(row);
+	free(obs);
+	fit_free(f);
+	return NULL;
+}
 
+int
+fit_iterate(struct fit *f)
+{
+	struct fit_result *r = &f->r;
+	int info = 0, s;
+	gsl_vector *fv;
+	double cost;
+
+	if (f->done)
+		return 1;
+	s = gsl_multifit_nlinear_iterate(f->w);
+	fv = gsl_multifit_nlinear_residual(f->w);
+	r->iter = (int)gsl_multifit_nlinear_niter(f->w);
+	gsl_blas_ddot(fv, fv, &cost);
+	if (f->progress != NULL)
+		f->progress(f->pctx, r->iter, cost, f->c.runs);
+	if (s == GSL_ENOPROG) {
+		r->reason = FIT_NOPROGRESS;
+		f->done = 1;
+	} else if (s != GSL_SUCCESS) {
+		r->reason = FIT_FAILED;
+		snprintf(r->why, sizeof r->why, "%s", gsl_strerror(s));
+		f->done = 1;
+	} else if (gsl_multifit_nlinear_test(f->xtol, f->gtol, f->ftol, &info, f->w)
+	           == GSL_SUCCESS) {
+		r->reason = info == 1 ? FIT_CONVERGED_STEP : info == 2
+		    ? FIT_CONVERGED_GRAD : FIT_CONVERGED_COST;
+		f->done = 1;
+	} else if (r->iter >= f->max_iter) {
+		r->reason = FIT_MAXITER;
+		f->done = 1;
+	}
+	if (f->done && r->reason != FIT_FAILED
+	    && identifiability(gsl_multifit_nlinear_jac(f->w), f->fp, f->c.np, &r->cond,
+	                       r->unident, sizeof r->unident))
+		r->reason = FIT_SINGULAR;
+	return f->done;
+}
+
+int
+fit_result_get(struct fit *f, struct fit_result *out, char *msg, size_t n)
+{
+	struct fit_result *r = out;
+	struct ctx *c = &f->c;
+	int np = c->np;
+	double u[FIT_MAX_FREE], th[FIT_MAX_FREE];
+	gsl_vector *fv = gsl_multifit_nlinear_residual(f->w);
+
+	*r = f->r;
+	r->point = malloc(c->npts * sizeof *r->point);
+	if (r->point == NULL) {
+		r->npoints = 0;
+		return status_set(msg, n, HB_ENOMEM, "out of memory");
+	}
+	memcpy(r->point, f->r.point, c->npts * sizeof *r->point);
+	if (!f->done)
+		r->reason = FIT_RUNNING;
 	/* The best point: GSL's position is the last accepted one. */
 	for (int j = 0; j < np; j++)
-		u[j] = gsl_vector_get(gsl_multifit_nlinear_position(w), (size_t)j);
-	r->fitted = *sc;
-	if (fit_param_apply(&r->fitted, fp, np, u, th, NULL, msg, n) != HB_OK) {
-		st = HB_EINVAL;
-		goto out;
-	}
+		u[j] = gsl_vector_get(gsl_multifit_nlinear_position(f->w), (size_t)j);
+	r->fitted = f->scene;
+	if (fit_param_apply(&r->fitted, f->fp, np, u, th, NULL, msg, n) != HB_OK)
+		return HB_EINVAL;
 	for (int j = 0; j < np; j++)
 		fit_key_get(&r->fitted, r->key[j], &r->value[j], msg, n);
-	{
-		gsl_vector *fv = gsl_multifit_nlinear_residual(w);
+	r->cost = 0;
+	for (size_t k = 0; k < c->npts; k++) {
+		double rk = gsl_vector_get(fv, k);
 
-		r->cost = 0;
-		for (size_t k = 0; k < npts; k++) {
-			double rk = gsl_vector_get(fv, k);
-
-			r->point[k].resid = rk;
-			r->point[k].simulated = c.meas[k] + rk * c.sd[k];
-			r->cost += rk * rk;
-		}
+		r->point[k].resid = rk;
+		r->point[k].simulated = c->meas[k] + rk * c->sd[k];
+		r->cost += rk * rk;
 	}
-	errors(gsl_multifit_nlinear_jac(w), &c, u, r);
+	errors(gsl_multifit_nlinear_jac(f->w), c, u, r);
 	if (r->reason == FIT_SINGULAR) {
 		for (int j = 0; j < np; j++)
 			if (strstr(r->unident, r->key[j]) != NULL)
@@ -481,20 +558,24 @@ fit_run(const struct scene *sc, const struct fit_data *d, const struct fit_optio
 	} else if (r->reason != FIT_FAILED) {
 		snprintf(r->why, sizeof r->why, "%s", fit_reason_str(r->reason));
 	}
-	r->runs = c.runs;
-	st = HB_OK;
-out:
-	if (w != NULL)
-		gsl_multifit_nlinear_free(w);
-	free(c.meas);
-	free(c.sd);
-	free(c.last_u);
-	free(c.last_r);
-	free(c.scs);
-	free(c.y);
-	free(c.fail);
-	free(row);
-	free(obs);
+	r->runs = c->runs;
+	return HB_OK;
+}
+
+int
+fit_run(const struct scene *sc, const struct fit_data *d, const struct fit_options *o,
+        struct fit_result *r, char *msg, size_t n)
+{
+	struct fit *f;
+	int st;
+
+	memset(r, 0, sizeof *r);
+	if ((f = fit_new(sc, d, o, msg, n)) == NULL)
+		return msg != NULL && strstr(msg, "out of memory") != NULL ? HB_ENOMEM : HB_EINVAL;
+	while (!fit_iterate(f))
+		;
+	st = fit_result_get(f, r, msg, n);
+	fit_free(f);
 	return st;
 }
 
