@@ -52,6 +52,9 @@
 
 #include <stddef.h>
 #include "scene.h"
+#include "export.h"
+
+HB_BEGIN_DECLS
 
 enum fit_kind { FIT_SEQUENCE = 0, FIT_DROPS = 1 };
 
@@ -219,5 +222,7 @@ fit_result_free(struct fit_result *r);
  */
 int
 fit_key_get(const struct scene *sc, const char *key, double *v, char *msg, size_t n);
+
+HB_END_DECLS
 
 #endif

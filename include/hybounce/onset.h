@@ -12,6 +12,9 @@
 #define HYBOUNCE_ONSET_H
 
 #include <stddef.h>
+#include "export.h"
+
+HB_BEGIN_DECLS
 
 struct onset_options {
 	const char *method;  /* aubio onset method; NULL: "hfc" */
@@ -41,5 +44,7 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 
 void
 onset_result_free(struct onset_result *r);
+
+HB_END_DECLS
 
 #endif
