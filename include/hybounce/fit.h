@@ -51,6 +51,7 @@
 #define HYBOUNCE_FIT_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include "scene.h"
 #include "export.h"
 
@@ -84,6 +85,10 @@ fit_obs_name(int obs);
  */
 int
 fit_data_load(const char *path, struct fit_data *d, char *msg, size_t n);
+
+/* The same from an open stream (borrowed); `name` stands for the file in messages. */
+int
+fit_data_read(FILE *f, const char *name, struct fit_data *d, char *msg, size_t n);
 
 /*
  * A bouncing sequence from impact times t[0 .. n-1] (ascending, s), e.g.

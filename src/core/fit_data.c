@@ -164,6 +164,19 @@ int
 fit_data_load(const char *path, struct fit_data *d, char *msg, size_t mn)
 {
 	FILE *f;
+	int st;
+
+	memset(d, 0, sizeof *d);
+	if ((f = fopen(path, "r")) == NULL)
+		return status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(errno));
+	st = fit_data_read(f, path, d, msg, mn);
+	fclose(f);
+	return st;
+}
+
+int
+fit_data_read(FILE *f, const char *path, struct fit_data *d, char *msg, size_t mn)
+{
 	char *line = NULL, *fld[MAX_COLS];
 	size_t lcap = 0;
 	ssize_t len;
@@ -176,8 +189,6 @@ fit_data_load(const char *path, struct fit_data *d, char *msg, size_t mn)
 	memset(d, 0, sizeof *d);
 	memset(map, 0, sizeof map);
 	snprintf(d->source, sizeof d->source, "%s", path);
-	if ((f = fopen(path, "r")) == NULL)
-		return status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(errno));
 	for (int k = 0; k < FIT_OBS_COUNT; k++)
 		idx[k] = idx_sd[k] = -1;
 
@@ -273,7 +284,6 @@ fit_data_load(const char *path, struct fit_data *d, char *msg, size_t mn)
 	st = check_data(d, msg, mn);
 out:
 	free(line);
-	fclose(f);
 	if (st != HB_OK)
 		fit_data_free(d);
 	return st;
