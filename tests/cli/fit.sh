@@ -5,16 +5,8 @@
 # gives them back within 0.5 ms and the restitution within 1%, and fits;
 # bad input exits 2 and writes nothing; keys the data cannot tell apart
 # exit 1 and are named; the man page documents every option of fit --help.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
+. "$(dirname "$0")/common.inc"
 ROOT=$(pwd)
-: "${HYBOUNCE_PRESETS:=$ROOT/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
 
 # --- the README's worked example, run as written in a folder of its own -----
 mkdir "$T/readme"
