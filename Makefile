@@ -187,6 +187,7 @@ check: deps
 check-asan: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan SAN=address,undefined OPT=-O1 all unit
 	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	    LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
 	    sh tests/run.sh build-asan/hybounce build-asan/unit-tests
 
 # libFuzzer harnesses (tests/fuzz/fuzz_*.c), built with clang against the

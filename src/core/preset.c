@@ -591,26 +591,39 @@ preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 const char *const *
 preset_dirs(void)
 {
-	/* per thread, so that threads may look presets up at once */
-	static _Thread_local char *store, datadir[sizeof HYBOUNCE_DATADIR + 16];
+	/*
+	 * Per thread, so that threads may look presets up at once; built again
+	 * only when HYBOUNCE_PRESETS changes, so that a list returned earlier
+	 * stays valid while the environment does not change.
+	 */
+	static _Thread_local char *store, *seen, datadir[sizeof HYBOUNCE_DATADIR + 16];
 	static _Thread_local const char **dirs, *fallback[3];
+	static _Thread_local int built;
 	static const char here[] = "presets";
 	const char *env = getenv("HYBOUNCE_PRESETS");
 	size_t k = 0, count = 3;
 
+	if (built && dirs != NULL &&
+	    (env == NULL ? seen == NULL : seen != NULL && strcmp(env, seen) == 0))
+		return dirs;
 	snprintf(datadir, sizeof datadir, "%s/presets", HYBOUNCE_DATADIR);
 	free(store);
+	free(seen);
 	free(dirs);
-	store = NULL;
+	store = seen = NULL;
 	dirs = NULL;
+	built = 1;
 	if (env != NULL) {
 		for (const char *p = env; *p != '\0'; p++)
 			count += *p == ':';
 		store = strdup(env);
+		seen = strdup(env);
 	}
 	dirs = malloc((count + 1) * sizeof *dirs);
-	if (dirs == NULL || (env != NULL && store == NULL)) {
+	if (dirs == NULL || (env != NULL && (store == NULL || seen == NULL))) {
 		/* out of memory: the built-in folders only */
+		free(dirs);
+		dirs = NULL;
 		fallback[0] = here;
 		fallback[1] = datadir;
 		fallback[2] = NULL;
