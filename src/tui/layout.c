@@ -25,13 +25,17 @@ layout_compute(int cols, int lines, int show_params, struct layout *L)
 		return -1;
 	}
 	L->status = rect(0, 0, 1, cols);
+	L->readout = rect(lines - 3, 0, 1, cols);
 	L->msg = rect(lines - 2, 0, 1, cols);
 	L->footer = rect(lines - 1, 0, 1, cols);
-	mid = lines - 3; /* rows 1 .. lines-3 */
-	/* the bottom pane: about a third, at least 7 rows (header + 6) */
+	mid = lines - 4; /* rows 1 .. lines-4 */
+	/* the bottom pane: about a third, at least 7 rows (header + 6), less
+	 * on short terminals so that the plots keep 8 rows */
 	bottom = mid / 3;
 	if (bottom < 7)
 		bottom = 7;
+	if (lines < LAYOUT_FULL_LINES)
+		bottom = mid - 8;
 	if (cols >= LAYOUT_WIDE_COLS) {
 		L->wide = 1;
 		left = cols - LAYOUT_PARAMS_W - 1;
@@ -50,6 +54,15 @@ layout_compute(int cols, int lines, int show_params, struct layout *L)
 		}
 	}
 	return 0;
+}
+
+void
+layout_present(struct layout *L)
+{
+	L->plots = rect(1, 0, L->lines - 4, L->cols);
+	L->table_visible = L->params_visible = 0;
+	L->table.h = L->params.h = 0;
+	L->wide = 0;
 }
 
 int

@@ -2,7 +2,10 @@
  * pane_table.c - the collisions table (paper eqs. t_d .. Lambda): one row
  * per completed collision, then the contact in progress marked "live".
  * The unit of each column is chosen from its largest value (units_axis)
- * and written in the header.  Drawing only.
+ * and written in the header.  With compare on (c), the columns are those
+ * of the comparison: each collision against the one of the same index in
+ * a pinned run, the differences (now - pinned) of t_e, e and x_c^max.
+ * Drawing only.
  */
 #include <curses.h>
 #include <math.h>
@@ -13,7 +16,13 @@
 #include "tui.h"
 #include "units.h"
 
-enum { COL_I, COL_TE, COL_TD, COL_VI, COL_E, COL_XCMAX, COL_FCMAX, COL_XCR, COL_LAMBDA, NCOL };
+enum { COL_I, COL_TE, COL_TD, COL_VI, COL_E, COL_XCMAX, COL_FCMAX, COL_XCR, COL_LAMBDA,
+       COL_DTE, COL_DE, COL_DXC, NCOL };
+
+static const int plain[] = { COL_I, COL_TE, COL_TD, COL_VI, COL_E, COL_XCMAX, COL_FCMAX, COL_XCR,
+                             COL_LAMBDA, -1 };
+static const int compared[] = { COL_I, COL_TE, COL_DTE, COL_E, COL_DE, COL_XCMAX, COL_DXC,
+                                COL_FCMAX, -1 };
 
 static const struct {
 	const char *name;
@@ -29,12 +38,18 @@ static const struct {
 	{ "Fc^max", "N", 10 },
 	{ "xc^r", "m", 10 },
 	{ "Lambda", NULL, 10 },
+	{ "dt_e", "s", 10 },
+	{ "de", NULL, 10 },
+	{ "dxc^max", "m", 11 },
 };
 
 static double
-colval(const struct collision *c, int k)
+colval(const struct collision *c, const struct collision *p, int k)
 {
 	switch (k) {
+	case COL_DTE: return p ? c->te - p->te : NAN;
+	case COL_DE: return p && c->complete ? c->e - p->e : NAN;
+	case COL_DXC: return p ? c->xcmax - p->xcmax : NAN;
 	case COL_I: return (double)c->i;
 	case COL_TE: return c->te;
 	case COL_TD: return c->td;
@@ -47,6 +62,15 @@ colval(const struct collision *c, int k)
 	}
 }
 
+/* Collision i of a pinned run (completed ones only), or NULL. */
+static const struct collision *
+pinned(const struct sim *ps, long i)
+{
+	if (ps == NULL || i < 0 || (size_t)i >= sim_ncollisions(ps))
+		return NULL;
+	return sim_collision(ps, (size_t)i);
+}
+
 void
 pane_table_draw(const struct app *a)
 {
@@ -54,7 +78,9 @@ pane_table_draw(const struct app *a)
 	long n = app_ncollisions(a), top, i, rows = r->h - 1, sel = a->table_sel;
 	double scale[NCOL], mag[NCOL];
 	char unit[NCOL][16], line[512], cell[64];
-	int k, focused = a->focus == FOCUS_TABLE;
+	int k, m, focused = a->focus == FOCUS_TABLE;
+	const struct sim *ps = a->compare > 0 && a->compare <= a->npins ? a->pin[a->compare - 1].sim : NULL;
+	const int *set = ps ? compared : plain;
 	long at = -1;
 	const struct arc *arc = sim_arc(a->sim);
 	struct collision live;
@@ -72,13 +98,13 @@ pane_table_draw(const struct app *a)
 	for (k = 0; k < NCOL; k++)
 		mag[k] = 0;
 	for (i = 0; i < n; i++) {
-		const struct collision *c = app_collision(a, i, &live);
+		const struct collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
 		for (k = 0; c && k < NCOL; k++)
-			if (isfinite(colval(c, k)) && fabs(colval(c, k)) > mag[k])
-				mag[k] = fabs(colval(c, k));
+			if (isfinite(colval(c, p, k)) && fabs(colval(c, p, k)) > mag[k])
+				mag[k] = fabs(colval(c, p, k));
 	}
 	line[0] = 0;
-	for (k = 0; k < NCOL; k++) {
+	for (m = 0; (k = set[m]) >= 0; m++) {
 		char h[48];
 		if (cols[k].base) {
 			scale[k] = units_axis(mag[k] > 0 ? mag[k] : 1, cols[k].base, unit[k], sizeof unit[k]);
@@ -87,11 +113,19 @@ pane_table_draw(const struct app *a)
 			scale[k] = 1;
 			snprintf(h, sizeof h, "%s%s", cols[k].name, k == COL_VI ? "[m/s]" : "");
 		}
+		if (k == COL_DTE || k == COL_DXC) {
+			/* a difference: the prefix of its own magnitude */
+			scale[k] = units_axis(mag[k] > 0 ? mag[k] : 1, cols[k].base, unit[k], sizeof unit[k]);
+			snprintf(h, sizeof h, "%s[%s]", cols[k].name, unit[k]);
+		}
 		snprintf(cell, sizeof cell, "%*s", cols[k].width, h);
 		strncat(line, cell, sizeof line - strlen(line) - 1);
 	}
-	snprintf(cell, sizeof cell, "  collisions: %zu%s", sim_ncollisions(a->sim),
-	         n > (long)sim_ncollisions(a->sim) ? " + live" : "");
+	if (ps)
+		snprintf(cell, sizeof cell, "  d = now - pinned %d", a->compare);
+	else
+		snprintf(cell, sizeof cell, "  collisions: %zu%s", sim_ncollisions(a->sim),
+		         n > (long)sim_ncollisions(a->sim) ? " + live" : "");
 	strncat(line, cell, sizeof line - strlen(line) - 1);
 	tui_puts(r->y, r->x, r->w, line, A_BOLD | (focused ? A_UNDERLINE : 0));
 
@@ -108,13 +142,13 @@ pane_table_draw(const struct app *a)
 	if (top < 0)
 		top = 0;
 	for (i = top; i < n && i < top + rows; i++) {
-		const struct collision *c = app_collision(a, i, &live);
+		const struct collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
 		int attr = 0;
 		if (c == NULL)
 			continue;
 		line[0] = 0;
-		for (k = 0; k < NCOL; k++) {
-			double v = colval(c, k);
+		for (m = 0; (k = set[m]) >= 0; m++) {
+			double v = colval(c, p, k);
 			if (k == COL_I)
 				snprintf(cell, sizeof cell, "%s%ld", i == at ? ">" : " ", c->i);
 			else if (!c->complete && k == COL_E)
