@@ -57,14 +57,16 @@ cursor_follow_want(struct app *a)
 	if (a->want_t < 0 || l == NULL)
 		return;
 	if (l->t >= a->want_t || sim_end(a->sim) != SIM_RUNNING) {
-		a->cursor = arc_find_t(arc, a->want_t);
-		a->tcur = arc_at(arc, a->cursor)->t;
+		/* the sample nearest to that time */
+		size_t i = arc_find_t(arc, a->want_t);
+		if (i + 1 < arc_len(arc)
+		    && fabs(arc_at(arc, i + 1)->t - a->want_t) < fabs(arc_at(arc, i)->t - a->want_t))
+			i++;
+		a->cursor = i;
+		a->tcur = arc_at(arc, i)->t;
 		a->want_t = -1;
-		{
-			long i = coll_at_cursor(a);
-			if (i >= 0)
-				a->table_sel = i;
-		}
+		if (coll_at_cursor(a) >= 0)
+			a->table_sel = coll_at_cursor(a);
 	} else {
 		a->cursor = arc_len(arc) - 1;
 		a->tcur = a->want_t;
