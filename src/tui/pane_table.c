@@ -40,7 +40,7 @@ static const struct {
 	{ "Lambda", NULL, 10 },
 	{ "dt_e", "s", 10 },
 	{ "de", NULL, 10 },
-	{ "dxc^max", "m", 11 },
+	{ "dxc^max", "m", 12 },
 };
 
 static double
@@ -122,7 +122,7 @@ pane_table_draw(const struct app *a)
 		strncat(line, cell, sizeof line - strlen(line) - 1);
 	}
 	if (ps)
-		snprintf(cell, sizeof cell, "  d = now - pinned %d", a->compare);
+		snprintf(cell, sizeof cell, "  vs %d", a->compare);
 	else
 		snprintf(cell, sizeof cell, "  collisions: %zu%s", sim_ncollisions(a->sim),
 		         n > (long)sim_ncollisions(a->sim) ? " + live" : "");

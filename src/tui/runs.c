@@ -353,6 +353,11 @@ act_compare(struct app *a)
 		return;
 	}
 	a->compare = (a->compare + 1) % (a->npins + 1);
+	if (a->focus != FOCUS_TABLE) {
+		/* show the table (one bottom pane at a time below 130 columns) */
+		a->focus = FOCUS_TABLE;
+		app_relayout(a);
+	}
 	if (a->compare)
 		app_msg(a, 0, "table: differences of each collision against pinned run %d (%s)",
 		        a->compare, a->pin[a->compare - 1].label);
