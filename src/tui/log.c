@@ -133,7 +133,7 @@ put_line(void *p, int k, const char *line)
 static struct rect
 overlay_rect(const struct app *a)
 {
-	struct rect r = { 1, 1, a->L.lines - 4, a->L.cols - 2 };
+	struct rect r = { 1, 0, a->L.lines - 4, a->L.cols };
 
 	if (r.w > 100) {
 		r.x = (a->L.cols - 100) / 2;

@@ -119,8 +119,8 @@ pane_status_draw(const struct app *a)
 		         a->playing ? "playing" : "paused", state_name(a));
 		room = r->w - (int)strlen(tail) - 1;
 		if (room < 8)
-			room = 8;
-		snprintf(line, sizeof line, " %.*s%s", room, a->preset, tail);
+			room = 0; /* a narrow terminal: the run's state before the preset's name */
+		snprintf(line, sizeof line, "%s%.*s%s", room ? " " : "", room, a->preset, tail);
 	}
 	attron(attr);
 	mvhline(r->y, 0, ' ', r->w);
