@@ -100,6 +100,19 @@ $(UNIT): $(TEST_OBJ) $(TUI_LIB) $(CORE_LIB)
 $(BENCHBIN): $(BENCH_OBJ) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(BENCH_OBJ) $(CORE_LIB) $(CORE_LIBS)
 
+# The generated parts of the man page and the README (tools/gendoc.c):
+# `make docs` rewrites them; tests/cli/docs.sh fails when they are stale.
+GENDOC    := $(BUILD)/hybounce-gendoc
+.PHONY: docs
+all: $(GENDOC)
+$(BUILD)/tools/%.o: tools/%.c
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CORE_CFLAGS) $(CFLAGS) -c $< -o $@
+$(GENDOC): $(BUILD)/tools/gendoc.o $(CORE_LIB)
+	$(CC) $(LDFLAGS) -o $@ $(BUILD)/tools/gendoc.o $(CORE_LIB) $(CORE_LIBS)
+docs: $(GENDOC)
+	./$(GENDOC) man/hybounce.1 README.md
+
 # Installs the Debian packages that are missing (as root, or through sudo).
 deps:
 	@missing=""; for p in $(APT_PACKAGES); do \
@@ -174,3 +187,4 @@ keys-doc: $(GENKEYS)
 	awk -v f=$(BUILD)/keys.md '/^<!-- KEYS-END -->/ { while ((getline l < f) > 0) print l; skip = 0 } \
 	    skip { next } /^<!-- KEYS-BEGIN -->/ { print; skip = 1; next } { print }' README.md > $(BUILD)/README.md.new
 	mv $(BUILD)/README.md.new README.md
+docs: keys-doc

@@ -656,3 +656,122 @@ Test(scene, steppers)
 	cr_assert_eq(scene_stepper_find("euler"), -1);
 	cr_assert_eq(scene_stepper_find(NULL), -1);
 }
+
+/* ---------------------------------------------------------------- */
+/* Typed access and errors as data */
+
+Test(scene, get_is_typed)
+{
+	struct scene sc;
+	struct scene_keyinfo ki;
+	struct scene_error err;
+
+	study1(&sc);
+	cr_assert_eq(scene_get(&sc, "law.alpha", &ki, &err), HB_OK);
+	cr_assert_eq(ki.kind, SCENE_KEY_NUMBER);
+	cr_assert_eq(ki.number, sc.par[law_param_index(sc.law, "alpha")]);
+	cr_assert_str_eq(ki.unit, "");
+	cr_assert(ki.limits.lo == 0 && ki.limits.hi == 1 && ki.limits.lo_open && ki.limits.hi_open);
+
+	cr_assert_eq(scene_get(&sc, "law.beta", &ki, &err), HB_OK);
+	cr_assert_str_eq(ki.unit, "m^-2"); /* n = 2 applied */
+
+	cr_assert_eq(scene_get(&sc, "body1.R", &ki, &err), HB_OK);
+	cr_assert_eq(ki.number, 0.020);
+	cr_assert_str_eq(ki.unit, "m");
+	cr_assert(ki.limits.lo == 0 && isinf(ki.limits.hi) && !ki.limits.hi_open);
+
+	cr_assert_eq(scene_get(&sc, "run.J", &ki, &err), HB_OK);
+	cr_assert_eq(ki.kind, SCENE_KEY_WHOLE);
+	cr_assert(ki.limits.whole && ki.limits.lo == 1);
+
+	cr_assert_eq(scene_get(&sc, "run.stepper", &ki, &err), HB_OK);
+	cr_assert_eq(ki.kind, SCENE_KEY_CHOICE);
+	cr_assert_eq(ki.nchoices, STEPPER_COUNT);
+	cr_assert_str_eq(ki.choices[ki.choice], "rk8pd");
+	cr_assert_str_eq(ki.choices[STEPPER_AUTO], "auto");
+
+	cr_assert_eq(scene_get(&sc, "scene.law", &ki, &err), HB_OK);
+	cr_assert_str_eq(ki.choices[ki.choice], "bwmcl");
+	cr_assert_eq(scene_get(&sc, "run.reductions", &ki, &err), HB_OK);
+	cr_assert_eq(ki.nchoices, 8);
+
+	/* Hidden by the panel, still readable: F2 in the reduced system. */
+	cr_assert_eq(scene_get(&sc, "loads.F2", &ki, &err), HB_OK);
+	cr_assert_str_eq(ki.unit, "N");
+
+	cr_assert_eq(scene_get(&sc, "law.nosuch", &ki, &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "law.nosuch");
+	cr_assert(strstr(err.accepted, "law.alpha") != NULL, "%s", err.accepted);
+}
+
+Test(scene, errors_are_data)
+{
+	struct scene sc;
+	struct scene_error err;
+	char buf[512];
+
+	study1(&sc);
+	cr_assert_eq(scene_set_text(&sc, "law.alpha", "1.5", &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "law.alpha");
+	cr_assert_eq(err.has_range, 1);
+	cr_assert(err.range.lo == 0 && err.range.hi == 1);
+	cr_assert_str_eq(err.accepted, "(0, 1)");
+	cr_assert_str_eq(scene_error_str(&err, buf, sizeof buf),
+	    "law.alpha: value 1.5 is out of range; accepted: (0, 1)");
+
+	cr_assert_eq(scene_set_number(&sc, "initial.x0", -1e-3, &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "initial.x0");
+	cr_assert(err.has_range && err.range.lo == 0 && !err.range.lo_open);
+
+	cr_assert_eq(scene_set_text(&sc, "run.stepper", "euler", &err), HB_EINVAL);
+	cr_assert_eq(err.has_range, 0);
+	cr_assert(strstr(err.accepted, "bsimp") != NULL);
+
+	/* Validation names the key at fault, as data. */
+	sc.par[law_param_index(sc.law, "gamma")] = 2 * sc.par[law_param_index(sc.law, "beta")];
+	cr_assert_eq(scene_check(&sc, &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "law.gamma");
+	study1(&sc);
+	sc.run.chatter = 1;
+	cr_assert_eq(scene_check(&sc, &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "run.chatter");
+	cr_assert(err.has_range && err.range.whole && err.range.lo == 2);
+}
+
+Test(scene, set_number_is_set_text)
+{
+	struct scene a, b;
+	struct scene_error err;
+
+	study1(&a);
+	b = a;
+	cr_assert_eq(scene_set_number(&a, "body1.R", 0.0125, &err), HB_OK);
+	cr_assert_eq(scene_set_text(&b, "body1.R", "12.5 mm", &err), HB_OK);
+	cr_assert_eq(a.body[0].R, b.body[0].R);
+	cr_assert_eq(a.d.m1, b.d.m1);
+	cr_assert_eq(scene_set_number(&a, "run.J", 7, &err), HB_OK);
+	cr_assert_eq(a.run.J, 7);
+	cr_assert_eq(scene_set_number(&a, "run.J", 7.5, &err), HB_EINVAL);
+	cr_assert_eq(scene_set_number(&a, "run.stepper", 1, &err), HB_EINVAL);
+	cr_assert_eq(scene_set_number(&a, "body1.mass", 2, &err), HB_OK);
+	cr_assert_eq(a.body[0].mass_given, 1);
+}
+
+/* Every key of the table has a default that is valid, and the defaults are the scene's. */
+Test(scene, table_defaults_are_the_default_scene)
+{
+	struct scene sc;
+	char msg[512];
+
+	scene_defaults(&sc);
+	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(sc.law, &law_hertz);
+	cr_assert_eq(sc.body[0].R, 0.020);
+	cr_assert(isinf(sc.body[1].R));
+	cr_assert_eq(sc.body[1].rho, 0);
+	cr_assert_eq(sc.run.reduce, REDUCE_ALL);
+	cr_assert_eq(sc.run.kinks, 1);
+	cr_assert_eq(sc.ext, 1);
+	cr_assert_eq(sc.run.stepper, STEPPER_RK8PD);
+}

@@ -260,3 +260,52 @@ Test(units, axis)
 	cr_assert(fabs(s - 1e-3) < 1e-18);
 	cr_assert_str_eq(label, "g");
 }
+
+Test(units, format_exact_reads_back)
+{
+	static const double v[] = { 0.02, 0.3, 1.0 / 3.0, 2.13777e8, 7800, 1e-300, 123456789.123,
+		-0.1e-3, 4.4e3, 0 };
+	const struct unit_dim *dims[] = { &UNIT_LENGTH, &UNIT_NONE, &UNIT_PRESSURE, &UNIT_DENSITY,
+		&UNIT_VELOCITY, &UNIT_MASS };
+	char buf[64], msg[128];
+
+	for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
+		for (size_t d = 0; d < sizeof dims / sizeof dims[0]; d++) {
+			double back;
+			units_format_exact(v[i], *dims[d], buf, sizeof buf);
+			cr_assert_eq(units_parse(buf, *dims[d], &back, msg, sizeof msg), 0, "%s: %s",
+			    buf, msg);
+			cr_assert(back == v[i], "'%s' reads back as %.17g, not %.17g", buf, back, v[i]);
+		}
+	units_format_exact(0.02, UNIT_LENGTH, buf, sizeof buf);
+	cr_assert_str_eq(buf, "20 mm");
+}
+
+Test(units, range_str)
+{
+	struct unit_range r = { 0, HUGE_VAL, 1, 1, 0 }, w = { 2, 2147483647.0, 0, 0, 1 };
+	struct unit_range any = { -HUGE_VAL, HUGE_VAL, 1, 1, 0 }, inf = { 0, HUGE_VAL, 1, 0, 0 };
+	char buf[64];
+
+	cr_assert_str_eq(units_range_str(&r, &UNIT_TIME, buf, sizeof buf), "(0, inf) s");
+	cr_assert_str_eq(units_range_str(&r, NULL, buf, sizeof buf), "(0, inf)");
+	cr_assert_str_eq(units_range_str(&inf, &UNIT_LENGTH, buf, sizeof buf), "(0, inf] m");
+	cr_assert_str_eq(units_range_str(&w, NULL, buf, sizeof buf), "whole numbers >= 2");
+	cr_assert_str_eq(units_range_str(&any, &UNIT_FORCE, buf, sizeof buf), "any finite value");
+	cr_assert(units_in_range(HUGE_VAL, &inf));
+	cr_assert(!units_in_range(HUGE_VAL, &r));
+	cr_assert(!units_in_range(NAN, &any));
+	cr_assert(!units_in_range(2.5, &w));
+	cr_assert(units_in_range(3, &w));
+}
+
+/* An exponent far beyond INT_MAX is written with its digits (no cast to int). */
+Test(units, huge_exponent_is_written)
+{
+	struct unit_dim d = { 0, -4e97, 0, 0, 0 };
+	char buf[64], want[64];
+
+	units_dim_str(d, buf, sizeof buf);
+	snprintf(want, sizeof want, "m^%.17g", -4e97);
+	cr_assert_str_eq(buf, want);
+}

@@ -26,21 +26,12 @@
 
 #include <stddef.h>
 
+#include "units.h" /* struct unit_dim */
+
 enum {
 	LAW_MAX_Z = 2,       /* largest n_z of any law */
 	LAW_MAX_PARAMS = 10, /* largest parameter table */
 	LAW_MAX_KINKS = 4,   /* largest number of switching functions */
-};
-
-/*
- * Physical dimension of a quantity as exponents of kg, m and s.  The metre
- * exponent may depend on the law's exponents p and n:
- *     m exponent = m + mp * p + mn * n
- * (e.g. k of a Hertz-type term, N m^-p: kg = 1, m = 1, mp = -1, s = -2).
- */
-struct unit_dim {
-	double kg, m, s;
-	double mp, mn;
 };
 
 /* Flags of a parameter. */
@@ -50,6 +41,9 @@ enum {
 	                            the law has k_hertz; typed otherwise */
 	LAW_PARAM_EXPONENT_P = 2, /* the exponent p (used in unit dimensions) */
 	LAW_PARAM_EXPONENT_N = 4, /* the exponent n (used in unit dimensions) */
+	LAW_PARAM_CHECKED = 8,    /* constrained by the law's check beyond its own
+	                             range (gamma in [-beta, beta]): the key that
+	                             a failed check names */
 };
 
 struct law_param {
@@ -127,6 +121,10 @@ law_param_index(const struct law_type *law, const char *name);
 /* Fills par[0 .. n_params-1] with the defaults. */
 void
 law_defaults(const struct law_type *law, double *par);
+
+/* The parameter's admissible range. */
+struct unit_range
+law_param_range(const struct law_param *pp);
 
 /*
  * Checks one value against the parameter's range.  Returns 0, or HB_EINVAL

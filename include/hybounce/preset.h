@@ -32,6 +32,18 @@ preset_load_string(const char *text, const char *name, struct scene *sc,
                    char *msg, size_t n);
 
 /*
+ * Opens a preset for a run, as both front ends do: loads the file at path,
+ * applies each "KEY=VALUE" of sets in order (blanks around the key and the
+ * value are ignored: " run.T = 1 ms" is run.T = 1 ms), then validates the
+ * scene.  Returns 0, or HB_EINVAL / HB_EIO with msg holding
+ * "FILE:LINE: ...", "--set ARG: KEY: ...; accepted: ..." or
+ * "PATH: KEY: ...; accepted: ...".
+ */
+int
+preset_open(const char *path, const char *const *sets, int nsets, struct scene *sc,
+            char *msg, size_t n);
+
+/*
  * Writes the scene as a preset that reproduces it exactly (%.17g values),
  * to a temporary name in the same folder and renamed.  Returns 0, or HB_EIO
  * with "PATH: strerror" in msg; an existing file is left intact on failure.

@@ -16,12 +16,22 @@
  * Keys.  Every typed value has a key "section.name" (e.g. "law.c",
  * "body1.R", "initial.x0", "run.rtol") used by presets, by --set and by the
  * explorer's parameter panel; scene_set() parses "VALUE [UNIT]" for a key.
+ * One table (src/core/scene_keys.c, with the law's parameter table) holds
+ * each key's unit, range, default, meaning and how it is read and printed.
+ *
+ * Errors as data.  scene_set_text(), scene_set_number() and scene_check()
+ * fill a struct scene_error: the key, what is wrong and what is accepted
+ * (with the range as numbers when it is one); scene_error_str() writes it
+ * as "KEY: WHAT; accepted: ACCEPTED".  scene_set() and scene_validate() are
+ * the same with the message written out.
  */
 #ifndef HYBOUNCE_SCENE_H
 #define HYBOUNCE_SCENE_H
 
 #include <stddef.h>
+
 #include "law.h"
+#include "units.h"
 
 enum scene_system { SCENE_REDUCED = 0, SCENE_FULL = 1 };
 
@@ -104,6 +114,19 @@ struct scene {
 	struct scene_derived d; /* filled by scene_derive() */
 };
 
+/* An error of a key, as data. */
+struct scene_error {
+	char key[48];        /* "law.alpha"; "" when no key is concerned */
+	char what[256];      /* "value 1.2 is out of range" */
+	char accepted[192];  /* "(0, 1)", "rk8pd, rkf45, ..."; "" if none */
+	int has_range;       /* 1: range holds the accepted numbers */
+	struct unit_range range;
+};
+
+/* "KEY: WHAT; accepted: ACCEPTED" into buf; returns buf. */
+char *
+scene_error_str(const struct scene_error *e, char *buf, size_t n);
+
 /* A valid neutral scene: a steel ball dropped on a Hertz elastic flat. */
 void
 scene_defaults(struct scene *sc);
@@ -134,16 +157,62 @@ scene_validate(struct scene *sc, char *msg, size_t n);
 int
 scene_set(struct scene *sc, const char *key, const char *text, char *msg, size_t n);
 
-/* One row of the parameter panel / preset writer. */
+/* The same with the error as data (err may be NULL). */
+int
+scene_set_text(struct scene *sc, const char *key, const char *text, struct scene_error *err);
+
+/* Sets a number (SI) or whole-number key from a double; same checks. */
+int
+scene_set_number(struct scene *sc, const char *key, double v, struct scene_error *err);
+
+/* scene_validate() with the error as data (err may be NULL). */
+int
+scene_check(struct scene *sc, struct scene_error *err);
+
+enum scene_key_kind {
+	SCENE_KEY_NUMBER, /* a real number with a unit */
+	SCENE_KEY_WHOLE,  /* a whole number */
+	SCENE_KEY_TEXT,   /* free text */
+	SCENE_KEY_CHOICE, /* one of choices[] */
+};
+
+/* One row of the parameter panel, and the typed value of a key. */
 struct scene_keyinfo {
 	char key[48];       /* "law.alpha" */
 	char section[16];   /* "bodies", "derived", "law", "loads", "initial", "run" */
 	char label[32];     /* "alpha" / "E (body 1)" */
-	char value[64];     /* formatted with unit: "0.35", "200 GPa" */
-	char range[64];     /* accepted range, e.g. "(0, 1)" */
+	char value[64];     /* for display, with unit: "0.35", "200 GPa"; "-" not given */
+	char range[64];     /* accepted range for display, e.g. "(0, 1)" */
 	char help[128];
 	int readonly;       /* derived values */
+	char edit[64];      /* the value as text that reads back exactly ("20 mm") */
+	/* Typed: */
+	int kind;           /* enum scene_key_kind */
+	double number;      /* NUMBER, WHOLE: the SI value; NAN when not given */
+	struct unit_dim dim;/* NUMBER: its dimension (law exponents applied) */
+	char unit[32];      /* NUMBER: the SI unit ("N s m^-5/2"; "" dimensionless) */
+	struct unit_range limits; /* NUMBER, WHOLE: the admissible range */
+	const char *choices[16];  /* CHOICE: the accepted texts */
+	int nchoices;
+	int choice;         /* CHOICE: index of the current value in choices */
 };
+
+/*
+ * The typed value of any key (also those the panel hides: F2 in the
+ * reduced system, law.k when derived ...).  Returns 0, or HB_EINVAL with
+ * err filled for an unknown key.
+ */
+int
+scene_get(const struct scene *sc, const char *key, struct scene_keyinfo *out,
+          struct scene_error *err);
+
+/*
+ * The PRESETS reference of the man page (mdoc), generated from the key
+ * table: what tools/gendoc writes between the PRESET-KEYS markers of
+ * man/hybounce.1.  Returns the length needed (like snprintf).
+ */
+size_t
+scene_keys_mdoc(char *buf, size_t n);
 
 /* Number of rows (depends on law and system). */
 int

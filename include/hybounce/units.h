@@ -16,7 +16,27 @@
 #define HYBOUNCE_UNITS_H
 
 #include <stddef.h>
-#include "law.h"
+
+/*
+ * Physical dimension of a quantity as exponents of kg, m and s.  The metre
+ * exponent may depend on a contact law's exponents p and n:
+ *     m exponent = m + mp * p + mn * n
+ * (e.g. k of a Hertz-type term, N m^-p: kg = 1, m = 1, mp = -1, s = -2).
+ */
+struct unit_dim {
+	double kg, m, s;
+	double mp, mn;
+};
+
+/*
+ * An admissible range: lo .. hi, each bound excluded when its *_open is 1
+ * ([0, inf] admits inf, [0, inf) does not); whole = 1 for whole numbers.
+ */
+struct unit_range {
+	double lo, hi;
+	int lo_open, hi_open;
+	int whole;
+};
 
 /* Dimensions used by scenes (p and n terms zero). */
 extern const struct unit_dim UNIT_NONE;     /* dimensionless */
@@ -63,12 +83,33 @@ char *
 units_format(double value, struct unit_dim d, int sig, char *buf, size_t n);
 
 /*
+ * The shortest units_format() text (6 digits or more) that units_parse() reads back to the
+ * same double ("20 mm", "0.35"), else "%.17g UNIT": for text a user edits.
+ * Output is ASCII: micro is written "u".  Returns buf.
+ */
+char *
+units_format_exact(double value, struct unit_dim d, char *buf, size_t n);
+
+/*
  * Picks, for a quantity of plain base unit `base` ("m", "N", "s", "J"),
  * the prefix that suits a typical magnitude, for axis labels: writes the
  * label (e.g. "mm") into label and returns the scale (e.g. 1e-3), so that
- * the axis shows value / scale.
+ * the axis shows value / scale.  A compound base ("m/s", "N s") takes the
+ * prefix on its first factor ("mm/s").
  */
 double
 units_axis(double magnitude, const char *base, char *label, size_t n);
+
+/* 1 if v lies in r (NaN never does; whole numbers must be integers). */
+int
+units_in_range(double v, const struct unit_range *r);
+
+/*
+ * The one way a range is written: "(0, 1)", "[0, inf) m", "whole numbers
+ * >= 2", "any finite value"; the unit of dim (already resolved) follows an
+ * interval when dim is not NULL and not dimensionless.  Returns buf.
+ */
+char *
+units_range_str(const struct unit_range *r, const struct unit_dim *dim, char *buf, size_t n);
 
 #endif

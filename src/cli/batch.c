@@ -39,6 +39,7 @@
 #include "hybounce/arc.h"
 #include "hybounce/check.h"
 #include "hybounce/collisions.h"
+#include "hybounce/columns.h"
 #include "hybounce/csv.h"
 #include "hybounce/law.h"
 #include "hybounce/preset.h"
@@ -73,22 +74,6 @@ fmt(double v, struct unit_dim d, char *buf, size_t n)
 	return buf;
 }
 
-/* Replaces a UTF-8 micro sign by 'u', in place: the report is ASCII. */
-static void
-ascii_micro(char *s)
-{
-	char *p;
-
-	while ((p = strstr(s, "\xc2\xb5")) != NULL) {
-		*p = 'u';
-		memmove(p + 1, p + 2, strlen(p + 2) + 1);
-	}
-	while ((p = strstr(s, "\xce\xbc")) != NULL) {
-		*p = 'u';
-		memmove(p + 1, p + 2, strlen(p + 2) + 1);
-	}
-}
-
 /*
  * Prints text word-wrapped to 79 columns, every line starting with indent
  * (the first line too).
@@ -119,43 +104,6 @@ print_wrapped(FILE *out, const char *indent, const char *text)
 
 /* ------------------------------------------------------------------ */
 /* Input: preset, --set, export paths                                  */
-
-/*
- * Applies "KEY=VALUE" to the scene.  Returns 0, or 2 after printing a
- * message naming the key and what is accepted.
- */
-static int
-apply_set(struct scene *sc, const char *arg)
-{
-	char key[128], msg[512];
-	const char *eq = strchr(arg, '=');
-	const char *k0 = arg, *k1;
-
-	if (eq == NULL) {
-		fprintf(stderr, PROG ": --set '%s': expected KEY=VALUE, e.g. "
-		        "--set law.c=0.4 or --set initial.x0='40 um'\n", arg);
-		return 2;
-	}
-	k1 = eq;
-	while (k0 < k1 && (*k0 == ' ' || *k0 == '\t'))
-		k0++;
-	while (k1 > k0 && (k1[-1] == ' ' || k1[-1] == '\t'))
-		k1--;
-	if (k1 == k0 || (size_t)(k1 - k0) >= sizeof key) {
-		fprintf(stderr, PROG ": --set '%s': expected KEY=VALUE with a key "
-		        "such as law.c, body1.R, initial.x0, run.rtol, scene.law\n", arg);
-		return 2;
-	}
-	memcpy(key, k0, (size_t)(k1 - k0));
-	key[k1 - k0] = '\0';
-	msg[0] = '\0';
-	if (scene_set(sc, key, eq + 1, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": --set %s: %s\n", arg,
-		        msg[0] ? msg : "rejected");
-		return 2;
-	}
-	return 0;
-}
 
 /* 1 if an export path names standard output ("-"). */
 static int
@@ -363,23 +311,28 @@ struct col {
 	int dec, sci, width;
 };
 
-#define COL(n, b, f, k) { n, b, offsetof(struct collision, f), k, 1, "", 0, 0, 0 }
+enum { NCOLS_MAX = 32 };
 
-static const struct col cols_init[] = {
-	COL("i", NULL, i, COL_INDEX),
-	COL("t_e", "s", te, COL_VALUE),
-	COL("t_s", "s", ts, COL_VALUE),
-	COL("t_d", "s", td, COL_VALUE),
-	COL("t_f", "s", tf, COL_VALUE),
-	COL("v_i", "m/s", vi, COL_VALUE),
-	COL("e", NULL, e, COL_RATIO),
-	COL("x_c^max", "m", xcmax, COL_VALUE),
-	COL("F_c^max", "N", Fcmax, COL_VALUE),
-	COL("x_c^r", "m", xcr, COL_VALUE),
-	COL("W", "J", W, COL_VALUE),
-	COL("Lambda", NULL, Lambda, COL_RATIO),
-};
-enum { NCOLS = sizeof cols_init / sizeof cols_init[0] };
+/* The columns of the batch table, from the table of columns.h. */
+static int
+cols_from_table(struct col *cols)
+{
+	int nc = 0;
+
+	for (int k = 0; k < collision_ncolumns && nc < NCOLS_MAX; k++) {
+		const struct collision_column *cc = &collision_columns[k];
+		if (!(cc->shown & COLUMN_BATCH))
+			continue;
+		memset(&cols[nc], 0, sizeof cols[nc]);
+		cols[nc].name = cc->label;
+		cols[nc].base = cc->unit[0] ? cc->unit : NULL;
+		cols[nc].off = cc->off;
+		cols[nc].kind = cc->index ? COL_INDEX : cc->unit[0] ? COL_VALUE : COL_RATIO;
+		cols[nc].scale = 1;
+		nc++;
+	}
+	return nc;
+}
 
 static double
 col_get(const struct col *c, const struct collision *k)
@@ -399,14 +352,8 @@ col_choose(struct col *c, double mag)
 	if (c->base != NULL) {
 		char lab[16];
 
-		if (strcmp(c->base, "m/s") == 0) {
-			c->scale = units_axis(mag > 0 ? mag : 1, "m", lab, sizeof lab);
-			snprintf(c->unit, sizeof c->unit, "%s/s", lab);
-		} else {
-			c->scale = units_axis(mag > 0 ? mag : 1, c->base, lab, sizeof lab);
-			snprintf(c->unit, sizeof c->unit, "%s", lab);
-		}
-		ascii_micro(c->unit);
+		c->scale = units_axis(mag > 0 ? mag : 1, c->base, lab, sizeof lab);
+		snprintf(c->unit, sizeof c->unit, "%s", lab); /* ASCII: "um" */
 		if (!(c->scale > 0) || !isfinite(c->scale)) {
 			c->scale = 1;
 			snprintf(c->unit, sizeof c->unit, "%s", c->base);
@@ -467,13 +414,13 @@ col_head(const struct col *c, char *buf, size_t n)
 static void
 print_table(FILE *out, const struct sim *s, const struct collision *live)
 {
-	struct col cols[NCOLS];
+	struct col cols[NCOLS_MAX];
 	size_t nc = sim_ncollisions(s), r;
 	char buf[64];
 	int c, w;
+	const int ncols = cols_from_table(cols);
 
-	memcpy(cols, cols_init, sizeof cols);
-	for (c = 0; c < NCOLS; c++) {
+	for (c = 0; c < ncols; c++) {
 		double mag = 0;
 
 		/* Units from the completed collisions; the live row only when alone. */
@@ -504,7 +451,7 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 	}
 
 	fprintf(out, "collisions (%zu completed)\n", nc);
-	for (c = 0; c < NCOLS; c++) {
+	for (c = 0; c < ncols; c++) {
 		col_head(&cols[c], buf, sizeof buf);
 		fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 	}
@@ -512,7 +459,7 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 	for (r = 0; r < nc; r++) {
 		const struct collision *k = sim_collision(s, r);
 
-		for (c = 0; c < NCOLS; c++) {
+		for (c = 0; c < ncols; c++) {
 			col_cell(&cols[c], k, buf, sizeof buf);
 			fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 		}
@@ -520,7 +467,7 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 	}
 	if (live != NULL) {
 		fprintf(out, "contact in progress (values so far; t_s is the last sample):\n");
-		for (c = 0; c < NCOLS; c++) {
+		for (c = 0; c < ncols; c++) {
 			col_cell(&cols[c], live, buf, sizeof buf);
 			fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 		}
@@ -629,7 +576,7 @@ batch_run(const struct batch_options *o)
 	char path[1024], msg[1024], scene_out[1100];
 	struct collision live;
 	struct sim *s;
-	int i, status = 0, have_live, rc;
+	int status = 0, have_live, rc;
 	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
 	/* The files to export; "-" goes to stdout after them. */
 	const char *trace_file = trace_out ? NULL : o->trace;
@@ -644,16 +591,8 @@ batch_run(const struct batch_options *o)
 		return 2;
 	}
 	msg[0] = '\0';
-	if (preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
+	if (preset_open(path, o->sets, o->nsets, &sc, msg, sizeof msg) != HB_OK) {
 		err(msg[0] ? msg : path);
-		return 2;
-	}
-	for (i = 0; i < o->nsets; i++)
-		if (apply_set(&sc, o->sets[i]) != 0)
-			return 2;
-	msg[0] = '\0';
-	if (scene_validate(&sc, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": %s: %s\n", path, msg);
 		return 2;
 	}
 	if (trace_out && coll_out) {
@@ -785,25 +724,6 @@ batch_list_presets(void)
 	return 0;
 }
 
-/* "(0, 1)", "[1, inf)" ... */
-static void
-range_str(const struct law_param *pp, char *buf, size_t n)
-{
-	char lo[32], hi[32];
-
-	if (isinf(pp->lo))
-		snprintf(lo, sizeof lo, "-inf");
-	else
-		snprintf(lo, sizeof lo, "%g", pp->lo);
-	if (isinf(pp->hi))
-		snprintf(hi, sizeof hi, "inf");
-	else
-		snprintf(hi, sizeof hi, "%g", pp->hi);
-	snprintf(buf, n, "%c%s, %s%c",
-	         pp->lo_open || isinf(pp->lo) ? '(' : '[', lo, hi,
-	         pp->hi_open || isinf(pp->hi) ? ')' : ']');
-}
-
 int
 batch_list_laws(void)
 {
@@ -827,7 +747,8 @@ batch_list_laws(void)
 			char unit[48], range[80], dv[64];
 
 			units_dim_str(d, unit, sizeof unit);
-			range_str(pp, range, sizeof range);
+			struct unit_range rr = law_param_range(pp);
+			units_range_str(&rr, NULL, range, sizeof range);
 			fmt(pp->def, d, dv, sizeof dv);
 			printf("      %-8s %-14s range %-16s default %s%s\n",
 			       pp->name, unit[0] ? unit : "(1)", range, dv,

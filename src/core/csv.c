@@ -28,6 +28,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "hybounce/columns.h"
 #include "hybounce/csv.h"
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
@@ -214,15 +215,11 @@ write_arc(FILE *f, const struct sim *s)
 static int
 write_collisions(FILE *f, const struct sim *s)
 {
-	static const char *const head[] = {
-		"i", "t_e", "t_s", "t_d", "t_f", "v_i", "e", "x_c_max", "F_c_max", "x_c_r", "W",
-		"J_Fc", "J_Fe", "Lambda",
-	};
 	size_t nc = sim_ncollisions(s);
 	int e;
 
-	for (size_t k = 0; k < sizeof head / sizeof head[0]; k++)
-		put_field(f, head[k], k == 0);
+	for (int k = 0; k < collision_ncolumns; k++) /* the columns of columns.h */
+		put_field(f, collision_columns[k].name, k == 0);
 	fputc('\n', f);
 	if ((e = stream_err(f)) != 0)
 		return e;
@@ -230,20 +227,12 @@ write_collisions(FILE *f, const struct sim *s)
 		const struct collision *c = sim_collision(s, i);
 		if (c == NULL || !c->complete)
 			continue;
-		fprintf(f, "%ld", c->i);
-		put_num(f, c->te);
-		put_num(f, c->ts);
-		put_num(f, c->td);
-		put_num(f, c->tf);
-		put_num(f, c->vi);
-		put_num(f, c->e);
-		put_num(f, c->xcmax);
-		put_num(f, c->Fcmax);
-		put_num(f, c->xcr);
-		put_num(f, c->W);
-		put_num(f, c->JFc);
-		put_num(f, c->JFe);
-		put_num(f, c->Lambda);
+		for (int k = 0; k < collision_ncolumns; k++) {
+			if (collision_columns[k].index)
+				fprintf(f, "%s%ld", k ? "," : "", c->i);
+			else
+				put_num(f, collision_value(c, &collision_columns[k]));
+		}
 		fputc('\n', f);
 		if ((e = stream_err(f)) != 0)
 			return e;

@@ -1,6 +1,7 @@
 /*
- * law.c - the registry of contact laws, helpers over their parameter
- * tables (see law.h) and the callbacks several laws share (law_common.h).
+ * law.c - the registry of contact laws and helpers over their parameter
+ * tables (see law.h).  The callbacks several laws share are in
+ * law_common.c.
  *
  * Each law lives in its own file (law_shccl.c, law_bwshccl.c, law_bwmcl.c,
  * law_hertz.c, law_linear.c) and ends in one `const struct law_type`.  This
@@ -14,8 +15,7 @@
 
 #include "hybounce/law.h"
 #include "hybounce/status.h"
-
-#include "law_common.h"
+#include "hybounce/units.h"
 
 static const struct law_type *const laws[] = {
 	&law_shccl,
@@ -91,14 +91,14 @@ law_defaults(const struct law_type *law, double *par)
 		par[i] = law->params[i].def;
 }
 
-/* Writes one bound of a range, "inf"/"-inf" for none. */
-static void
-law_bound_str(double b, char *buf, size_t n)
+/* The range of a parameter; an infinite bound is never admitted. */
+struct unit_range
+law_param_range(const struct law_param *pp)
 {
-	if (isinf(b))
-		snprintf(buf, n, "%sinf", b < 0 ? "-" : "");
-	else
-		snprintf(buf, n, "%g", b);
+	struct unit_range r = { pp->lo, pp->hi, pp->lo_open || isinf(pp->lo),
+		pp->hi_open || isinf(pp->hi), 0 };
+
+	return r;
 }
 
 /*
@@ -109,22 +109,13 @@ law_bound_str(double b, char *buf, size_t n)
 int
 law_param_check(const struct law_param *pp, double value, char *msg, size_t n)
 {
-	char lo[32], hi[32];
-	int ok;
+	struct unit_range r = law_param_range(pp);
+	char rs[80];
 
-	ok = isfinite(value);
-	if (ok && !isinf(pp->lo))
-		ok = pp->lo_open ? value > pp->lo : value >= pp->lo;
-	if (ok && !isinf(pp->hi))
-		ok = pp->hi_open ? value < pp->hi : value <= pp->hi;
-	if (ok)
+	if (isfinite(value) && units_in_range(value, &r))
 		return HB_OK;
-	law_bound_str(pp->lo, lo, sizeof lo);
-	law_bound_str(pp->hi, hi, sizeof hi);
-	return status_set(msg, n, HB_EINVAL,
-	    "%s = %g is out of range; accepted: %c%s, %s%c", pp->name, value,
-	    pp->lo_open || isinf(pp->lo) ? '(' : '[', lo, hi,
-	    pp->hi_open || isinf(pp->hi) ? ')' : ']');
+	return status_set(msg, n, HB_EINVAL, "%s = %g is out of range; accepted: %s", pp->name,
+	    value, units_range_str(&r, NULL, rs, sizeof rs));
 }
 
 /* The value of the first parameter carrying `flag`, or 1 when none does. */
@@ -149,56 +140,4 @@ double
 law_exponent_n(const struct law_type *law, const double *par)
 {
 	return law_flagged(law, par, LAW_PARAM_EXPONENT_N);
-}
-
-/*
- * Switching function of a law whose only kink is at x_c = 0 (the clamp of
- * rule R1 with ext = 0, and |x_c|^p): g[0] = x_c.
- */
-void
-law_kinks_xc(const double *par, int ext, double xc, const double *z, double v,
-             double *g)
-{
-	(void)par;
-	(void)ext;
-	(void)z;
-	(void)v;
-	g[0] = xc;
-}
-
-/* k = k_H, for a law whose elastic term is the Hertzian relation itself. */
-double
-law_k_hertz_identity(const double *par, double kH)
-{
-	(void)par;
-	return kH;
-}
-
-/*
- * Checks a Bouc-Wen parameter set (layout LAW_BW_*): eqs. bwshc_psi and
- * bwm_psi1 require gamma in [-beta, beta].  Returns 0, or HB_EINVAL with
- * the accepted range in msg (size n).
- */
-int
-law_bw_check(const double *par, char *msg, size_t n)
-{
-	double beta = par[LAW_BW_BETA], gamma = par[LAW_BW_GAMMA];
-
-	if (gamma >= -beta && gamma <= beta)
-		return HB_OK;
-	return status_set(msg, n, HB_EINVAL,
-	    "gamma = %g must lie in [-beta, beta] = [%g, %g]", gamma, -beta, beta);
-}
-
-/*
- * Eq. k_hertz for a Bouc-Wen law (layout LAW_BW_*): the k whose two
- * branches together match the Hertz coefficient kH,
- * k = k_H / (alpha + (1 - alpha) A^p).
- */
-double
-law_bw_k_hertz(const double *par, double kH)
-{
-	double alpha = par[LAW_BW_ALPHA];
-
-	return kH / (alpha + (1.0 - alpha) * apow(par[LAW_BW_A], par[LAW_BW_P]));
 }

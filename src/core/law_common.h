@@ -1,6 +1,7 @@
 /*
  * law_common.h - what the contact laws (src/core/law_*.c) share: parameter
- * descriptors, rule R1 and the Bouc-Wen terms (private to the engine).
+ * descriptors, rule R1, the Bouc-Wen terms and the shared callbacks of
+ * law_common.c (private to the engine).
  *
  * Parameter rows.  A row that means the same in several laws (the Hertz
  * stiffness k, the exponent p, the Hunt-Crossley damping c, the Bouc-Wen
@@ -82,7 +83,8 @@ enum {
 	        "share of the elastic branch; 1 - alpha is hysteretic (eq. " phi_eq ")" }, \
 	[LAW_BW_BETA] = { "beta", LAW_DIM_PER_M_N, LAW_RANGE_NONNEG, (beta_def), 0, \
 	        "Bouc-Wen beta, m^-n: shapes the hysteresis loop (eq. " psi_eq ")" }, \
-	[LAW_BW_GAMMA] = { "gamma", LAW_DIM_PER_M_N, LAW_RANGE_ANY, (gamma_def), 0, \
+	[LAW_BW_GAMMA] = { "gamma", LAW_DIM_PER_M_N, LAW_RANGE_ANY, (gamma_def), \
+	        LAW_PARAM_CHECKED, \
 	        "Bouc-Wen gamma, m^-n, in [-beta, beta] (eq. " psi_eq ")" }, \
 	[LAW_BW_N] = { "n", LAW_DIM_NONE, LAW_RANGE_EXPONENT, 2.0, LAW_PARAM_EXPONENT_N, \
 	        "Bouc-Wen exponent n: sharpness of the yield (eq. " psi_eq ")" }, \
@@ -187,7 +189,7 @@ law_bw_rate_dw(const double *par, double z, double w)
 }
 
 /*
- * Callbacks of struct law_type shared by several laws (defined in law.c).
+ * Callbacks of struct law_type shared by several laws (law_common.c).
  */
 
 /* kinks of a law whose only kink is at x_c = 0: g = {x_c}. */

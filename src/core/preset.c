@@ -41,6 +41,8 @@
 #include "hybounce/status.h"
 #include "hybounce/units.h"
 
+#include "scene_keys.h"
+
 #ifndef HYBOUNCE_DATADIR
 #define HYBOUNCE_DATADIR "/usr/local/share/hybounce"
 #endif
@@ -141,87 +143,83 @@ collect_free(struct collect *c)
 	c->n = 0;
 }
 
-/* The keys of each section other than [law], for "known keys" messages. */
-static const struct {
-	const char *section;
-	const char *keys[12];
-} known[] = {
-	{ "scene", { "name", "description", "law", "extension" } },
-	{ "body1", { "name", "E", "nu", "rho", "R", "mass" } },
-	{ "body2", { "name", "E", "nu", "rho", "R", "mass" } },
-	{ "law", { NULL } },
-	{ "loads", { "g", "F1", "F2", "ramp", "F_e0", "T_e", "T_s" } },
-	{ "initial", { "x0", "v0", "x_m0", "v_m0" } },
-	{ "run", { "T", "J", "stepper", "rtol", "atol", "h_max", "max_samples", "chatter",
-	           "reductions", "kinks" } },
-};
-#define NKNOWN (sizeof known / sizeof known[0])
+/* The sections, in the order a preset is written. */
+static const char *const sections[] = { "scene", "body1", "body2", "law", "loads", "initial",
+	"run" };
+#define NSECTIONS (sizeof sections / sizeof sections[0])
 
 static int
 section_index(const char *s)
 {
-	for (size_t i = 0; i < NKNOWN; i++)
-		if (strcmp(known[i].section, s) == 0)
+	for (size_t i = 0; i < NSECTIONS; i++)
+		if (strcmp(sections[i], s) == 0)
 			return (int)i;
 	return -1;
 }
 
+/* 1 if key "SECTION.NAME" is in the table (or the current law's parameters). */
 static int
-key_known(const struct scene *sc, int si, const char *name)
+key_known(const struct scene *sc, const char *section, const char *name)
 {
-	if (strcmp(known[si].section, "law") == 0) {
+	char key[128];
+
+	if (strcmp(section, "law") == 0) {
 		int i = law_param_index(sc->law, name);
 		return i >= 0 && strcmp(sc->law->params[i].name, name) == 0;
 	}
-	for (int k = 0; k < 12 && known[si].keys[k] != NULL; k++)
-		if (strcmp(known[si].keys[k], name) == 0)
-			return 1;
-	return 0;
+	snprintf(key, sizeof key, "%s.%s", section, name);
+	return scene_keydef_find(key) != NULL;
 }
 
+/* The keys of a section, for "known keys" messages. */
 static void
-known_list(const struct scene *sc, int si, char *buf, size_t n)
+known_list(const struct scene *sc, const char *section, char *buf, size_t n)
 {
+	size_t sl = strlen(section);
+
 	buf[0] = '\0';
-	if (strcmp(known[si].section, "law") == 0) {
+	if (strcmp(section, "law") == 0) {
 		for (int i = 0; i < sc->law->n_params; i++) {
 			size_t l = strlen(buf);
 			snprintf(buf + l, n - l, "%s%s", i ? ", " : "", sc->law->params[i].name);
 		}
 		return;
 	}
-	for (int k = 0; k < 12 && known[si].keys[k] != NULL; k++) {
-		size_t l = strlen(buf);
-		snprintf(buf + l, n - l, "%s%s", k ? ", " : "", known[si].keys[k]);
+	for (int k = 0; k < scene_nkeydefs; k++) {
+		const char *key = scene_keydefs[k].key;
+		if (strncmp(key, section, sl) == 0 && key[sl] == '.') {
+			size_t l = strlen(buf);
+			snprintf(buf + l, n - l, "%s%s", buf[0] ? ", " : "", key + sl + 1);
+		}
 	}
 }
 
-/*
- * Applies one entry through scene_set, turning "KEY: rest" into
- * "FILE:LINE: [section] name: rest".
- */
+/* "FILE:LINE: [section] name: WHAT; accepted: ACCEPTED" */
+static int
+entry_error(const struct entry *e, const char *file, const struct scene_error *err, char *msg,
+            size_t n)
+{
+	return status_set(msg, n, HB_EINVAL, "%s:%d: [%s] %s: %s%s%s", file, e->line, e->section,
+	    e->name, err->what, err->accepted[0] ? "; accepted: " : "", err->accepted);
+}
+
+/* Applies one entry through scene_set_text. */
 static int
 apply(struct scene *sc, const struct entry *e, const char *file, char *msg, size_t n)
 {
-	char key[128], m[512];
-	int si = section_index(e->section), st;
-	size_t kl;
+	struct scene_error err;
+	char key[128];
 
-	if (!key_known(sc, si, e->name)) {
+	if (!key_known(sc, e->section, e->name)) {
 		char list[256];
-		known_list(sc, si, list, sizeof list);
+		known_list(sc, e->section, list, sizeof list);
 		return status_set(msg, n, HB_EINVAL, "%s:%d: [%s] %s: unknown key; known keys: %s",
 		    file, e->line, e->section, e->name, list);
 	}
 	snprintf(key, sizeof key, "%s.%s", e->section, e->name);
-	st = scene_set(sc, key, e->value, m, sizeof m);
-	if (st == HB_OK)
+	if (scene_set_text(sc, key, e->value, &err) == HB_OK)
 		return HB_OK;
-	kl = strlen(key);
-	if (strncmp(m, key, kl) == 0 && m[kl] == ':' && m[kl + 1] == ' ')
-		return status_set(msg, n, st, "%s:%d: [%s] %s: %s", file, e->line, e->section,
-		    e->name, m + kl + 2);
-	return status_set(msg, n, st, "%s:%d: [%s] %s: %s", file, e->line, e->section, e->name, m);
+	return entry_error(e, file, &err, msg, n);
 }
 
 static const struct entry *
@@ -237,7 +235,12 @@ entry_find(const struct collect *c, const char *section, const char *name)
 static int
 is_string_key(const struct entry *e)
 {
-	return strcmp(e->name, "name") == 0 || strcmp(e->name, "description") == 0;
+	char key[128];
+	const struct scene_keydef *kd;
+
+	snprintf(key, sizeof key, "%s.%s", e->section, e->name);
+	kd = scene_keydef_find(key);
+	return kd != NULL && kd->store == ST_STRING;
 }
 
 /* Is entry e a law exponent (p or n) of the current law? */
@@ -334,28 +337,26 @@ load_entries(struct collect *c, const char *file, struct scene *sc, char *msg, s
 				return st;
 
 	/* The scene as a whole; name the line of the key at fault. */
-	char m[512];
-	st = scene_validate(sc, m, sizeof m);
+	struct scene_error err;
+	st = scene_check(sc, &err);
 	if (st != HB_OK) {
-		char sec[32] = "", name[64] = "";
-		const char *colon = strstr(m, ": ");
-		const char *dot = strchr(m, '.');
+		const char *dot = strchr(err.key, '.');
+		char sec[32] = "";
 		const struct entry *e = NULL;
-		if (colon != NULL && dot != NULL && dot < colon &&
-		    (size_t)(dot - m) < sizeof sec && (size_t)(colon - dot - 1) < sizeof name) {
-			memcpy(sec, m, (size_t)(dot - m));
-			sec[dot - m] = '\0';
-			memcpy(name, dot + 1, (size_t)(colon - dot - 1));
-			name[colon - dot - 1] = '\0';
-			e = entry_find(c, sec, name);
-			if (e == NULL)
-				e = entry_find(c, sec, NULL);
-			if (e != NULL)
-				return status_set(msg, n, st, "%s:%d: [%s] %s: %s", file, e->line, sec,
-				    name, colon + 2);
-			return status_set(msg, n, st, "%s: [%s] %s: %s", file, sec, name, colon + 2);
+		if (dot == NULL || (size_t)(dot - err.key) >= sizeof sec) {
+			char m[512];
+			return status_set(msg, n, st, "%s: %s", file, scene_error_str(&err, m, sizeof m));
 		}
-		return status_set(msg, n, st, "%s: %s", file, m);
+		memcpy(sec, err.key, (size_t)(dot - err.key));
+		sec[dot - err.key] = '\0';
+		e = entry_find(c, sec, dot + 1);
+		if (e == NULL)
+			e = entry_find(c, sec, NULL);
+		if (e != NULL)
+			return status_set(msg, n, st, "%s:%d: [%s] %s: %s%s%s", file, e->line, sec,
+			    dot + 1, err.what, err.accepted[0] ? "; accepted: " : "", err.accepted);
+		return status_set(msg, n, st, "%s: [%s] %s: %s%s%s", file, sec, dot + 1, err.what,
+		    err.accepted[0] ? "; accepted: " : "", err.accepted);
 	}
 	return HB_OK;
 }
@@ -459,6 +460,47 @@ preset_load(const char *path, struct scene *sc, char *msg, size_t n)
 	return st;
 }
 
+/* "KEY=VALUE" applied to sc; the key is trimmed of blanks. */
+static int
+apply_set(struct scene *sc, const char *arg, char *msg, size_t n)
+{
+	struct scene_error err;
+	char key[128], m[512];
+	const char *eq = strchr(arg, '='), *k0 = arg, *k1;
+
+	if (eq == NULL)
+		return status_set(msg, n, HB_EINVAL, "--set '%s': expected KEY=VALUE, e.g. "
+		    "--set law.c=0.4 or --set initial.x0='40 um'", arg);
+	k1 = eq;
+	while (k0 < k1 && isspace((unsigned char)*k0))
+		k0++;
+	while (k1 > k0 && isspace((unsigned char)k1[-1]))
+		k1--;
+	if (k1 == k0 || (size_t)(k1 - k0) >= sizeof key)
+		return status_set(msg, n, HB_EINVAL, "--set '%s': expected KEY=VALUE with a key "
+		    "such as law.c, body1.R, initial.x0, run.rtol, scene.law", arg);
+	memcpy(key, k0, (size_t)(k1 - k0));
+	key[k1 - k0] = '\0';
+	if (scene_set_text(sc, key, eq + 1, &err) != HB_OK)
+		return status_set(msg, n, HB_EINVAL, "--set %s: %s", arg,
+		    scene_error_str(&err, m, sizeof m));
+	return HB_OK;
+}
+
+int
+preset_open(const char *path, const char *const *sets, int nsets, struct scene *sc,
+            char *msg, size_t n)
+{
+	char m[512];
+	int st = preset_load(path, sc, msg, n);
+
+	for (int i = 0; st == HB_OK && i < nsets; i++)
+		st = apply_set(sc, sets[i], msg, n);
+	if (st == HB_OK && (st = scene_validate(sc, m, sizeof m)) != HB_OK)
+		status_set(msg, n, st, "%s: %s", path, m);
+	return st;
+}
+
 /* ---------------------------------------------------------------- */
 /* Writing */
 
@@ -484,25 +526,21 @@ out_printf(struct out *o, const char *fmt, ...)
 		o->len += (size_t)k;
 }
 
-/* "key = %.17g UNIT" */
+/*
+ * "key = VALUE".  A value that begins with ';' or '#' is written right
+ * after the '=': inih takes those for a comment only after white space.
+ */
 static void
-out_value(struct out *o, const char *key, double v, struct unit_dim dim)
+out_entry(struct out *o, const char *key, const char *value)
 {
-	char u[64];
-
-	units_dim_str(dim, u, sizeof u);
-	if (strcmp(u, "") == 0)
-		out_printf(o, "%s = %.17g\n", key, v);
-	else
-		out_printf(o, "%s = %.17g %s\n", key, v, u);
+	out_printf(o, "%s =%s%s\n", key, value[0] == ';' || value[0] == '#' ? "" : " ", value);
 }
 
 size_t
 preset_format(const struct scene *sc, char *buf, size_t n)
 {
 	struct out o = { buf, n, 0 };
-	char r[16];
-	double p, nn;
+	char v[512], sec[16], u[64];
 
 	if (buf != NULL && n > 0)
 		buf[0] = '\0';
@@ -512,75 +550,28 @@ preset_format(const struct scene *sc, char *buf, size_t n)
 #else
 	out_printf(&o, "; hybounce preset: SI values that reproduce the scene exactly\n");
 #endif
-	out_printf(&o, "\n[scene]\n");
-	out_printf(&o, "name = %s\n", sc->name);
-	out_printf(&o, "description = %s\n", sc->description);
-	out_printf(&o, "law = %s\n", sc->law != NULL ? sc->law->name : "");
-	out_printf(&o, "extension = %s\n", sc->ext ? "adhesive" : "none");
-	for (int b = 0; b < 2; b++) {
-		const struct scene_body *bd = &sc->body[b];
-		out_printf(&o, "\n[body%d]\n", b + 1);
-		out_printf(&o, "name = %s\n", bd->name);
-		if (bd->has_material) {
-			out_value(&o, "E", bd->E, UNIT_PRESSURE);
-			out_value(&o, "nu", bd->nu, UNIT_NONE);
+	for (size_t s = 0; s < NSECTIONS; s++) {
+		out_printf(&o, "\n[%s]\n", sections[s]);
+		if (strcmp(sections[s], "law") == 0) {
+			for (int i = 0; sc->law != NULL && i < sc->law->n_params; i++) {
+				const struct law_param *pp = &sc->law->params[i];
+				if ((pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived)
+					continue;
+				units_dim_str(scene_lawpar_dim(sc, i), u, sizeof u);
+				snprintf(v, sizeof v, "%.17g%s%s", sc->par[i], u[0] ? " " : "", u);
+				out_entry(&o, pp->name, v);
+			}
+			continue;
 		}
-		if (!bd->mass_given && bd->rho != 0)
-			out_value(&o, "rho", bd->rho, UNIT_DENSITY);
-		out_value(&o, "R", bd->R, UNIT_LENGTH);
-		if (bd->mass_given)
-			out_value(&o, "mass", bd->mass, UNIT_MASS);
-	}
-	out_printf(&o, "\n[law]\n");
-	if (sc->law != NULL) {
-		p = law_exponent_p(sc->law, sc->par);
-		nn = law_exponent_n(sc->law, sc->par);
-		for (int i = 0; i < sc->law->n_params; i++) {
-			const struct law_param *pp = &sc->law->params[i];
-			if ((pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived)
+		for (int k = 0; k < scene_nkeydefs; k++) {
+			const struct scene_keydef *kd = &scene_keydefs[k];
+			if (strcmp(scene_keydef_section(kd, sec, sizeof sec), sections[s]) != 0 ||
+			    !scene_keydef_present(sc, kd))
 				continue;
-			out_value(&o, pp->name, sc->par[i], units_resolve(pp->dim, p, nn));
+			scene_keydef_print(sc, kd, v, sizeof v);
+			out_entry(&o, kd->key + strlen(sec) + 1, v);
 		}
 	}
-	out_printf(&o, "\n[loads]\n");
-	out_value(&o, "g", sc->loads.g, UNIT_ACCEL);
-	out_value(&o, "F1", sc->loads.F1, UNIT_FORCE);
-	out_value(&o, "F2", sc->loads.F2, UNIT_FORCE);
-	out_printf(&o, "ramp = %s\n", sc->loads.ramp ? "yes" : "no");
-	out_value(&o, "F_e0", sc->loads.Fe0, UNIT_FORCE);
-	out_value(&o, "T_e", sc->loads.Te, UNIT_TIME);
-	out_value(&o, "T_s", sc->loads.Ts, UNIT_TIME);
-	out_printf(&o, "\n[initial]\n");
-	out_value(&o, "x0", sc->init.x0, UNIT_LENGTH);
-	out_value(&o, "v0", sc->init.v0, UNIT_VELOCITY);
-	out_value(&o, "x_m0", sc->init.xm0, UNIT_LENGTH);
-	out_value(&o, "v_m0", sc->init.vm0, UNIT_VELOCITY);
-	out_printf(&o, "\n[run]\n");
-	out_value(&o, "T", sc->run.T, UNIT_TIME);
-	out_printf(&o, "J = %ld\n", sc->run.J);
-	out_printf(&o, "stepper = %s\n", scene_stepper_name(sc->run.stepper));
-	out_value(&o, "rtol", sc->run.rtol, UNIT_NONE);
-	out_value(&o, "atol", sc->run.atol, UNIT_NONE);
-	out_value(&o, "h_max", sc->run.h_max, UNIT_TIME);
-	out_printf(&o, "max_samples = %ld\n", sc->run.max_samples);
-	out_printf(&o, "chatter = %d\n", sc->run.chatter);
-	if ((sc->run.reduce & REDUCE_ALL) == REDUCE_ALL)
-		snprintf(r, sizeof r, "all");
-	else if (sc->run.reduce == 0)
-		snprintf(r, sizeof r, "none");
-	else
-		r[0] = '\0';
-	if (r[0] != '\0')
-		out_printf(&o, "reductions = %s\n", r);
-	else
-		out_printf(&o, "reductions = %s%s%s%s%s\n",
-		    sc->run.reduce & REDUCE_FLIGHT ? "flight" : "",
-		    (sc->run.reduce & REDUCE_FLIGHT) && (sc->run.reduce & 6) ? "," : "",
-		    sc->run.reduce & REDUCE_CONTACT ? "contact" : "",
-		    (sc->run.reduce & REDUCE_CONTACT) && (sc->run.reduce & REDUCE_COM) ? "," : "",
-		    sc->run.reduce & REDUCE_COM ? "com" : "");
-	if (!sc->run.kinks)
-		out_printf(&o, "kinks = no\n");
 	return o.len;
 }
 

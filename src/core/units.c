@@ -310,18 +310,23 @@ units_parse(const char *text, struct unit_dim expect, double *value, char *msg, 
 	return HB_OK;
 }
 
-/* Writes an exponent: "2", "-5/2", "0.3333". */
+/*
+ * Writes an exponent: "2", "-5/2", or all the digits that read back to the
+ * same double ("1.23456789", "3000000000"), so that a unit written for a
+ * law's exponent parses back to the same dimension.  "%.0f", never a cast
+ * to int: an exponent may be far beyond INT_MAX.
+ */
 static void
 exp_str(double e, char *buf, size_t n)
 {
 	double r2 = round(2 * e);
 
-	if (fabs(e - round(e)) < UNITS_TOL)
-		snprintf(buf, n, "%d", (int)round(e));
-	else if (fabs(2 * e - r2) < UNITS_TOL)
-		snprintf(buf, n, "%d/2", (int)r2);
+	if (fabs(e - round(e)) < UNITS_TOL && fabs(e) < 1e15)
+		snprintf(buf, n, "%.0f", round(e) == 0 ? 0.0 : round(e));
+	else if (fabs(2 * e - r2) < UNITS_TOL && fabs(e) < 1e15)
+		snprintf(buf, n, "%.0f/2", r2);
 	else
-		snprintf(buf, n, "%.6g", e);
+		snprintf(buf, n, "%.17g", e);
 }
 
 static void
@@ -511,13 +516,44 @@ units_format(double value, struct unit_dim d, int sig, char *buf, size_t n)
 	return buf;
 }
 
+char *
+units_format_exact(double value, struct unit_dim d, char *buf, size_t n)
+{
+	char u[64];
+	double back;
+
+	for (int sig = 6; sig <= 17; sig++) { /* %g of 6 digits and more: no "2e+01" */
+		units_format(value, d, sig, buf, n);
+		if (units_parse(buf, units_resolve(d, 0, 0), &back, NULL, 0) == 0 &&
+		    memcmp(&back, &value, sizeof back) == 0)
+			return buf;
+	}
+	units_dim_str(d, u, sizeof u);
+	snprintf(buf, n, "%.17g%s%s", value, u[0] ? " " : "", u);
+	return buf;
+}
+
 double
 units_axis(double magnitude, const char *base, char *label, size_t n)
 {
 	double a = fabs(magnitude), f = 1;
 	const char *b = base;
+	size_t hl = strcspn(base, " /");
 	int k = 5;
 
+	/* A compound unit ("m/s", "N s") takes the prefix on its first factor. */
+	if (base[hl] != '\0') {
+		char head[16];
+		double sc;
+		if (hl >= sizeof head)
+			hl = sizeof head - 1;
+		memcpy(head, base, hl);
+		head[hl] = '\0';
+		sc = units_axis(magnitude, head, label, n);
+		if (strlen(label) + strlen(base + hl) < n)
+			strcat(label, base + hl);
+		return sc;
+	}
 	/* A base of "kg" is prefixed as grams. */
 	if (strcmp(base, "kg") == 0) {
 		b = "g";
@@ -531,4 +567,53 @@ units_axis(double magnitude, const char *base, char *label, size_t n)
 	}
 	snprintf(label, n, "%s%s", out_prefixes[k].name, b);
 	return out_prefixes[k].factor * f;
+}
+
+int
+units_in_range(double v, const struct unit_range *r)
+{
+	if (isnan(v))
+		return 0;
+	if (r->lo_open ? !(v > r->lo) : !(v >= r->lo))
+		return 0;
+	if (r->hi_open ? !(v < r->hi) : !(v <= r->hi))
+		return 0;
+	return !r->whole || v == floor(v);
+}
+
+/* One bound: "inf", "-inf" or %g. */
+static void
+bound_str(double b, char *buf, size_t n)
+{
+	if (isinf(b))
+		snprintf(buf, n, "%sinf", b < 0 ? "-" : "");
+	else
+		snprintf(buf, n, "%g", b);
+}
+
+char *
+units_range_str(const struct unit_range *r, const struct unit_dim *dim, char *buf, size_t n)
+{
+	char l[32], h[32], u[64] = "";
+
+	if (n == 0)
+		return buf;
+	bound_str(r->lo, l, sizeof l);
+	bound_str(r->hi, h, sizeof h);
+	if (r->whole) {
+		if (r->hi >= 2147483647.0) /* INT_MAX and beyond: no bound a user meets */
+			snprintf(buf, n, "whole numbers >= %s", l);
+		else
+			snprintf(buf, n, "whole numbers in [%s, %s]", l, h);
+		return buf;
+	}
+	if (isinf(r->lo) && r->lo < 0 && isinf(r->hi) && r->hi > 0 && r->lo_open && r->hi_open) {
+		snprintf(buf, n, "any finite value");
+		return buf;
+	}
+	if (dim != NULL)
+		units_dim_str(*dim, u, sizeof u);
+	snprintf(buf, n, "%c%s, %s%c%s%s", r->lo_open ? '(' : '[', l, h, r->hi_open ? ')' : ']',
+	    u[0] ? " " : "", u);
+	return buf;
 }

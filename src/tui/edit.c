@@ -11,7 +11,6 @@
  * and an export says so.  The scene is validated first, so a refused edit
  * loses nothing.
  */
-#include <ctype.h>
 #include <curses.h>
 #include <math.h>
 #include <stdio.h>
@@ -94,20 +93,13 @@ void
 edit_value(struct app *a, const char *key, const char *text)
 {
 	struct scene sc = *sim_scene(a->sim);
+	struct scene_error err;
 	char emsg[512], what[160];
 
-	if (scene_set(&sc, key, text, emsg, sizeof emsg) != HB_OK) {
-		/* add the accepted range from the panel when the message lacks it */
-		for (int i = 0; i < scene_nkeys(&sc); i++) {
-			struct scene_keyinfo ki;
-			if (scene_key(sim_scene(a->sim), i, &ki) == 0 && strcmp(ki.key, key) == 0
-			    && ki.range[0] && strstr(emsg, ki.range) == NULL) {
-				size_t l = strlen(emsg);
-				snprintf(emsg + l, sizeof emsg - l, "; accepted: %s", ki.range);
-			}
-		}
+	/* The error names the key and what is accepted (scene_error). */
+	if (scene_set_text(&sc, key, text, &err) != HB_OK) {
 		a->branch_armed = 0;
-		app_msg(a, 1, "refused (old value kept): %s", emsg);
+		app_msg(a, 1, "refused (old value kept): %s", scene_error_str(&err, emsg, sizeof emsg));
 		return;
 	}
 	snprintf(what, sizeof what, "%s = %s", key, text);
@@ -142,42 +134,18 @@ param_key_index(const struct app *a)
 }
 
 /*
- * For a value chosen from a list (stepper, law, extension, yes/no ...):
- * the choice dir steps after the current one in the key's range ("rk8pd
- * rkf45 ...", "adhesive, none"), cycling.  Returns 0 with it in out, or -1
- * when the range is not a list holding the current value.
- */
-static int
-next_choice(const struct scene_keyinfo *ki, int dir, char *out, size_t n)
-{
-	char range[sizeof ki->range], *tok[32], *save = NULL, *t;
-	int ntok = 0, cur = -1, i;
-
-	snprintf(range, sizeof range, "%s", ki->range);
-	for (t = strtok_r(range, ", ", &save); t != NULL && ntok < 32; t = strtok_r(NULL, ", ", &save)) {
-		for (i = 0; t[i]; i++)
-			if (!isalnum((unsigned char)t[i]) && t[i] != '_' && t[i] != '-')
-				return -1; /* "(0, 1)", ">= 1": a numeric range, not a list */
-		if (strcmp(t, ki->value) == 0)
-			cur = ntok;
-		tok[ntok++] = t;
-	}
-	if (cur < 0 || ntok < 2)
-		return -1;
-	snprintf(out, n, "%s", tok[((cur + dir) % ntok + ntok) % ntok]);
-	return 0;
-}
-
-/*
  * Multiplies (dir > 0) or divides the selected value by 1.1, keeping its
  * unit; a value chosen from a list steps to the next (previous) choice.
+ * The value is read typed (scene_keyinfo), never from its display text.
  */
 static void
 nudge(struct app *a, int dir)
 {
 	struct scene_keyinfo ki;
+	struct scene sc = *sim_scene(a->sim);
+	struct scene_error err;
 	int k = param_key_index(a);
-	char *end, text[96];
+	char text[96], emsg[512];
 	double v;
 
 	if (k < 0 || scene_key(sim_scene(a->sim), k, &ki) != 0)
@@ -186,23 +154,34 @@ nudge(struct app *a, int dir)
 		app_msg(a, 1, "%s is derived: computed from the bodies, never typed", ki.label);
 		return;
 	}
-	v = strtod(ki.value, &end);
-	if (end == ki.value || !isfinite(v)) {
-		if (next_choice(&ki, dir, text, sizeof text) == 0)
-			edit_value(a, ki.key, text);
-		else
-			app_msg(a, 1, "%s is not a number: press Enter to type a value", ki.label);
+	if (ki.kind == SCENE_KEY_CHOICE) {
+		if (ki.choice >= 0 && ki.nchoices >= 2)
+			edit_value(a, ki.key,
+			    ki.choices[((ki.choice + dir) % ki.nchoices + ki.nchoices) % ki.nchoices]);
 		return;
 	}
-	if (v == 0) {
+	if (ki.kind == SCENE_KEY_TEXT || !isfinite(ki.number)) {
+		app_msg(a, 1, "%s is not a number: press Enter to type a value", ki.label);
+		return;
+	}
+	if (ki.number == 0) {
 		app_msg(a, 1, "%s is 0: press Enter to type a value", ki.label);
 		return;
 	}
-	v = dir > 0 ? v * 1.1 : v / 1.1;
-	while (*end == ' ')
-		end++;
-	snprintf(text, sizeof text, "%.6g%s%s", v, *end ? " " : "", end);
-	edit_value(a, ki.key, text);
+	v = dir > 0 ? ki.number * 1.1 : ki.number / 1.1;
+	if (ki.kind == SCENE_KEY_WHOLE)
+		v = dir > 0 ? fmax(ceil(v), ki.number + 1) : fmin(floor(v), ki.number - 1);
+	if (scene_set_number(&sc, ki.key, v, &err) != HB_OK) {
+		a->branch_armed = 0;
+		app_msg(a, 1, "refused (old value kept): %s", scene_error_str(&err, emsg, sizeof emsg));
+		return;
+	}
+	if (ki.kind == SCENE_KEY_WHOLE)
+		snprintf(text, sizeof text, "%.0f", v);
+	else
+		units_format(v, ki.dim, 6, text, sizeof text);
+	snprintf(emsg, sizeof emsg, "%s = %s", ki.key, text);
+	apply_scene(a, &sc, emsg);
 }
 
 static void
@@ -217,7 +196,7 @@ prompt_edit_begin(struct app *a)
 		app_msg(a, 1, "%s is derived: computed from the bodies, never typed", ki.label);
 		return;
 	}
-	prompt_open(a, PROMPT_EDIT, ki.value, "%.47s %.47s%s", ki.key, ki.range,
+	prompt_open(a, PROMPT_EDIT, ki.edit /* reads back exactly */, "%.47s %.47s%s", ki.key, ki.range,
 	            a->branch_armed ? " (branch here)" : "");
 	snprintf(a->prompt_key, sizeof a->prompt_key, "%s", ki.key);
 }

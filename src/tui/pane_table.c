@@ -4,8 +4,8 @@
  * The unit of each column is chosen from its largest value (units_axis)
  * and written in the header.  With compare on (c), the columns are those
  * of the comparison: each collision against the one of the same index in
- * a pinned run, the differences (now - pinned) of t_e, e and x_c^max.
- * Drawing only.
+ * a pinned run, with the differences (now - pinned) of t_e, e and x_c^max
+ * in columns "dt_e", "de", "dx_c^max".  Drawing only.
  */
 #include <curses.h>
 #include <math.h>
@@ -14,52 +14,59 @@
 
 #include "term.h"
 #include "tui.h"
+#include "columns.h"
 #include "units.h"
 
-enum { COL_I, COL_TE, COL_TD, COL_VI, COL_E, COL_XCMAX, COL_FCMAX, COL_XCR, COL_LAMBDA,
-       COL_DTE, COL_DE, COL_DXC, NCOL };
+enum { NCOL_MAX = 16 };
 
-static const int plain[] = { COL_I, COL_TE, COL_TD, COL_VI, COL_E, COL_XCMAX, COL_FCMAX, COL_XCR,
-                             COL_LAMBDA, -1 };
-static const int compared[] = { COL_I, COL_TE, COL_DTE, COL_E, COL_DE, COL_XCMAX, COL_DXC,
-                                COL_FCMAX, -1 };
-
+/* The comparison's columns: a column of columns.h, or (delta) its difference. */
 static const struct {
 	const char *name;
-	const char *base;   /* NULL: no prefix */
-	int width;
-} cols[NCOL] = {
-	{ "i", NULL, 4 },
-	{ "t_e", "s", 9 },
-	{ "t_d", "s", 8 },
-	{ "v_i", NULL, 10 },
-	{ "e", NULL, 7 },
-	{ "xc^max", "m", 11 },
-	{ "Fc^max", "N", 10 },
-	{ "xc^r", "m", 10 },
-	{ "Lambda", NULL, 10 },
-	{ "dt_e", "s", 10 },
-	{ "de", NULL, 10 },
-	{ "dxc^max", "m", 12 },
+	int delta;
+} compared[] = {
+	{ "i", 0 }, { "t_e", 0 }, { "t_e", 1 }, { "e", 0 }, { "e", 1 },
+	{ "x_c_max", 0 }, { "x_c_max", 1 }, { "F_c_max", 0 },
 };
 
-static double
-colval(const struct collision *c, const struct collision *p, int k)
+/*
+ * The explorer's columns, from the table of columns.h, with their widths;
+ * delta[k] 1 where column k is a difference against a pinned run.
+ */
+static int
+columns(int compare, const struct collision_column **cols, int *width, int *delta)
 {
-	switch (k) {
-	case COL_DTE: return p ? c->te - p->te : NAN;
-	case COL_DE: return p && c->complete ? c->e - p->e : NAN;
-	case COL_DXC: return p ? c->xcmax - p->xcmax : NAN;
-	case COL_I: return (double)c->i;
-	case COL_TE: return c->te;
-	case COL_TD: return c->td;
-	case COL_VI: return c->vi;
-	case COL_E: return c->e;
-	case COL_XCMAX: return c->xcmax;
-	case COL_FCMAX: return c->Fcmax;
-	case COL_XCR: return c->xcr;
-	default: return c->Lambda;
+	int n = 0;
+
+	if (compare) {
+		for (size_t k = 0; k < sizeof compared / sizeof compared[0]; k++) {
+			const struct collision_column *c = collision_column_find(compared[k].name);
+			if (c == NULL)
+				continue;
+			cols[n] = c;
+			delta[n] = compared[k].delta;
+			width[n] = c->index ? 4 : (int)(strlen(c->label) + strlen(c->unit) + 4 + delta[n]);
+			if (!c->index && width[n] < 7)
+				width[n] = 7;
+			n++;
+		}
+		return n;
 	}
+	for (int k = 0; k < collision_ncolumns && n < NCOL_MAX; k++) {
+		const struct collision_column *c = &collision_columns[k];
+		if (!(c->shown & COLUMN_EXPLORER))
+			continue;
+		cols[n] = c;
+		delta[n] = 0;
+		/* room for " LABEL[pUNIT]", or for a ratio such as -0.01122 */
+		if (c->index)
+			width[n] = 4;
+		else if (c->unit[0])
+			width[n] = (int)(strlen(c->label) + strlen(c->unit) + 4);
+		else
+			width[n] = (int)strlen(c->label) + 3 > 7 ? (int)strlen(c->label) + 3 : 7;
+		n++;
+	}
+	return n;
 }
 
 /* Collision i of a pinned run (completed ones only), or NULL. */
@@ -71,16 +78,29 @@ pinned(const struct sim *ps, long i)
 	return sim_collision(ps, (size_t)i);
 }
 
+/* The value shown in column k: the column's, or its difference against p. */
+static double
+value(const struct collision *c, const struct collision *p, const struct collision_column *col,
+      int delta)
+{
+	if (!delta)
+		return collision_value(c, col);
+	if (p == NULL || (!c->complete && strcmp(col->name, "e") == 0))
+		return NAN;
+	return collision_value(c, col) - collision_value(p, col);
+}
+
 void
 pane_table_draw(const struct app *a)
 {
 	const struct rect *r = &a->L.table;
 	long n = app_ncollisions(a), top, i, rows = r->h - 1, sel = a->table_sel;
-	double scale[NCOL], mag[NCOL];
-	char unit[NCOL][16], line[512], cell[64];
-	int k, m, focused = a->focus == FOCUS_TABLE;
 	const struct sim *ps = a->compare > 0 && a->compare <= a->npins ? a->pin[a->compare - 1].sim : NULL;
-	const int *set = ps ? compared : plain;
+	const struct collision_column *cols[NCOL_MAX];
+	int width[NCOL_MAX], delta[NCOL_MAX], ncol = columns(ps != NULL, cols, width, delta);
+	double scale[NCOL_MAX], mag[NCOL_MAX];
+	char unit[NCOL_MAX][16], line[512], cell[64];
+	int k, focused = a->focus == FOCUS_TABLE;
 	long at = -1;
 	const struct arc *arc = sim_arc(a->sim);
 	struct collision live;
@@ -95,30 +115,27 @@ pane_table_draw(const struct app *a)
 				at = i;
 		}
 	}
-	for (k = 0; k < NCOL; k++)
+	for (k = 0; k < ncol; k++)
 		mag[k] = 0;
 	for (i = 0; i < n; i++) {
 		const struct collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
-		for (k = 0; c && k < NCOL; k++)
-			if (isfinite(colval(c, p, k)) && fabs(colval(c, p, k)) > mag[k])
-				mag[k] = fabs(colval(c, p, k));
+		for (k = 0; c && k < ncol; k++) {
+			double v = value(c, p, cols[k], delta[k]);
+			if (isfinite(v) && fabs(v) > mag[k])
+				mag[k] = fabs(v);
+		}
 	}
 	line[0] = 0;
-	for (m = 0; (k = set[m]) >= 0; m++) {
+	for (k = 0; k < ncol; k++) {
 		char h[48];
-		if (cols[k].base) {
-			scale[k] = units_axis(mag[k] > 0 ? mag[k] : 1, cols[k].base, unit[k], sizeof unit[k]);
-			snprintf(h, sizeof h, "%s[%s]", cols[k].name, unit[k]);
+		if (cols[k]->unit[0]) {
+			scale[k] = units_axis(mag[k] > 0 ? mag[k] : 1, cols[k]->unit, unit[k], sizeof unit[k]);
+			snprintf(h, sizeof h, "%s%s[%s]", delta[k] ? "d" : "", cols[k]->label, unit[k]);
 		} else {
 			scale[k] = 1;
-			snprintf(h, sizeof h, "%s%s", cols[k].name, k == COL_VI ? "[m/s]" : "");
+			snprintf(h, sizeof h, "%s%s", delta[k] ? "d" : "", cols[k]->label);
 		}
-		if (k == COL_DTE || k == COL_DXC) {
-			/* a difference: the prefix of its own magnitude */
-			scale[k] = units_axis(mag[k] > 0 ? mag[k] : 1, cols[k].base, unit[k], sizeof unit[k]);
-			snprintf(h, sizeof h, "%s[%s]", cols[k].name, unit[k]);
-		}
-		snprintf(cell, sizeof cell, "%*s", cols[k].width, h);
+		snprintf(cell, sizeof cell, "%*s", width[k], h);
 		strncat(line, cell, sizeof line - strlen(line) - 1);
 	}
 	if (ps)
@@ -147,23 +164,24 @@ pane_table_draw(const struct app *a)
 		if (c == NULL)
 			continue;
 		line[0] = 0;
-		for (m = 0; (k = set[m]) >= 0; m++) {
-			double v = colval(c, p, k);
-			if (k == COL_I)
+		for (k = 0; k < ncol; k++) {
+			double v = value(c, p, cols[k], delta[k]);
+			const char *nm = cols[k]->name;
+			if (cols[k]->index)
 				snprintf(cell, sizeof cell, "%s%ld", i == at ? ">" : " ", c->i);
-			else if (!c->complete && k == COL_E)
+			else if (!c->complete && strcmp(nm, "e") == 0 && !delta[k])
 				snprintf(cell, sizeof cell, "live");
-			else if (!c->complete && (k == COL_XCR || k == COL_LAMBDA))
+			else if (!c->complete && (strcmp(nm, "x_c_r") == 0 || strcmp(nm, "Lambda") == 0))
 				snprintf(cell, sizeof cell, "-");
 			else if (!isfinite(v))
 				snprintf(cell, sizeof cell, "-");
 			else {
 				snprintf(cell, sizeof cell, "%.4g", v / scale[k]);
-				if ((int)strlen(cell) >= cols[k].width)
+				if ((int)strlen(cell) >= width[k])
 					snprintf(cell, sizeof cell, "%.1e", v / scale[k]);
 			}
 			char w[64];
-			snprintf(w, sizeof w, "%*s", cols[k].width, cell);
+			snprintf(w, sizeof w, "%*s", width[k], cell);
 			strncat(line, w, sizeof line - strlen(line) - 1);
 		}
 		if (!c->complete)

@@ -25,35 +25,11 @@ load_sim(const char *name, const char *const *sets, int nsets, char *path, size_
          char *msg, size_t n)
 {
 	struct scene sc;
-	char emsg[512];
 
 	if (preset_resolve(name, path, pn, msg, n) != HB_OK)
 		return NULL;
-	if (preset_load(path, &sc, msg, n) != HB_OK)
+	if (preset_open(path, sets, nsets, &sc, msg, n) != HB_OK)
 		return NULL;
-	for (int i = 0; i < nsets; i++) {
-		char kv[512], *eq, *k, *e;
-		snprintf(kv, sizeof kv, "%s", sets[i]);
-		eq = strchr(kv, '=');
-		if (eq == NULL) {
-			snprintf(msg, n, "--set '%s': expected KEY=VALUE", sets[i]);
-			return NULL;
-		}
-		*eq = 0;
-		/* as in batch mode: blanks around the key are not part of it */
-		for (k = kv; *k == ' ' || *k == '\t'; k++)
-			;
-		for (e = eq; e > k && (e[-1] == ' ' || e[-1] == '\t'); e--)
-			e[-1] = 0;
-		if (scene_set(&sc, k, eq + 1, emsg, sizeof emsg) != HB_OK) {
-			snprintf(msg, n, "--set %s: %s", sets[i], emsg);
-			return NULL;
-		}
-	}
-	if (scene_validate(&sc, emsg, sizeof emsg) != HB_OK) {
-		snprintf(msg, n, "%s: %s", path, emsg);
-		return NULL;
-	}
 	return sim_new(&sc, msg, n);
 }
 

@@ -49,9 +49,9 @@ fi
 # ---- the table's differences -------------------------------------------------------
 keys a c
 if wait_for a 'differences of each collision against pinned run 1' 30 \
-   && wait_for a 'dt_e\[[a-z]*s\] .* de .*dxc\^max\[[a-z]*m\]' 30 && wait_for a 'Fc\^max\[[a-zA-Z]*N\]  vs 1$' 10 \
+   && wait_for a 'dt_e\[[a-z]*s\] .* de .*dx_c\^max\[[a-z]*m\]' 30 && wait_for a 'F_c\^max\[[a-zA-Z]*N\]  vs 1$' 10 \
    && screen a | grep -Eq '^ +>?1 +[0-9.]+ +-?[0-9.e+-]+ +[0-9.]+ +-?[0-9.e+-]+ '; then
-	ok "c: the table shows dt_e, de and dxc^max against pinned run 1"
+	ok "c: the table shows dt_e, de and dx_c^max against pinned run 1"
 else
 	notok "c: the table shows the differences against pinned run 1" a
 fi

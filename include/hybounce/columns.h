@@ -1,0 +1,51 @@
+/*
+ * columns.h - the table of collision columns: name, unit and meaning of
+ * each observable of struct collision (paper eqs. t_d .. Lambda).  The CSV
+ * header (--collisions), the batch table, the explorer's table, the man
+ * page and the README all come from it.
+ */
+#ifndef HYBOUNCE_COLUMNS_H
+#define HYBOUNCE_COLUMNS_H
+
+#include <stddef.h>
+
+#include "collisions.h"
+
+enum {
+	COLUMN_BATCH = 1,    /* shown in the batch report's table */
+	COLUMN_EXPLORER = 2, /* shown in the explorer's table */
+};
+
+struct collision_column {
+	const char *name;    /* CSV header: "x_c_max" */
+	const char *label;   /* tables: "x_c^max" */
+	const char *unit;    /* SI unit: "m", "m/s", "N s"; "" for a pure number */
+	const char *meaning; /* "greatest indentation" */
+	int index;           /* 1: the collision index i (a whole number) */
+	size_t off;          /* offset of the double in struct collision */
+	int shown;           /* COLUMN_* */
+};
+
+/* The columns, in CSV order. */
+extern const struct collision_column collision_columns[];
+extern const int collision_ncolumns;
+
+/* The column named (CSV name or label), or NULL. */
+const struct collision_column *
+collision_column_find(const char *name);
+
+/* The value of a column in a collision (i as a double). */
+double
+collision_value(const struct collision *c, const struct collision_column *col);
+
+/*
+ * The CSV reference of the man page (mdoc list) and of the README
+ * (Markdown table): what tools/gendoc writes between the markers.
+ * Return the length needed (like snprintf).
+ */
+size_t
+collision_columns_mdoc(char *buf, size_t n);
+size_t
+collision_columns_markdown(char *buf, size_t n);
+
+#endif

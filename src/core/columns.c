@@ -1,0 +1,106 @@
+/*
+ * columns.c - the table of collision columns (see columns.h), and its
+ * reference text for the man page and the README.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "hybounce/columns.h"
+
+#define V(f) 0, offsetof(struct collision, f)
+#define BOTH (COLUMN_BATCH | COLUMN_EXPLORER)
+
+const struct collision_column collision_columns[] = {
+	{ "i", "i", "", "index, from 0", 1, 0, BOTH },
+	{ "t_e", "t_e", "s", "commencement", V(te), BOTH },
+	{ "t_s", "t_s", "s", "separation", V(ts), COLUMN_BATCH },
+	{ "t_d", "t_d", "s", "duration t_s - t_e", V(td), BOTH },
+	{ "t_f", "t_f", "s", "the flight that follows (empty until known)", V(tf), COLUMN_BATCH },
+	{ "v_i", "v_i", "m/s", "approach velocity (negative)", V(vi), BOTH },
+	{ "e", "e", "", "coefficient of restitution -v(t_s) / v_i", V(e), BOTH },
+	{ "x_c_max", "x_c^max", "m", "greatest indentation", V(xcmax), BOTH },
+	{ "F_c_max", "F_c^max", "N", "greatest contact force", V(Fcmax), BOTH },
+	{ "x_c_r", "x_c^r", "m", "residual indentation |x_c(t_s)|", V(xcr), BOTH },
+	{ "W", "W", "J", "work -int F_c v dt", V(W), COLUMN_BATCH },
+	{ "J_Fc", "J_Fc", "N s", "impulse of the contact force", V(JFc), 0 },
+	{ "J_Fe", "J_Fe", "N s", "impulse of the applied force", V(JFe), 0 },
+	{ "Lambda", "Lambda", "", "J_Fe / J_Fc", V(Lambda), BOTH },
+};
+const int collision_ncolumns = (int)(sizeof collision_columns / sizeof collision_columns[0]);
+
+const struct collision_column *
+collision_column_find(const char *name)
+{
+	for (int i = 0; i < collision_ncolumns; i++)
+		if (strcmp(collision_columns[i].name, name) == 0 ||
+		    strcmp(collision_columns[i].label, name) == 0)
+			return &collision_columns[i];
+	return NULL;
+}
+
+double
+collision_value(const struct collision *c, const struct collision_column *col)
+{
+	if (col->index)
+		return (double)c->i;
+	return *(const double *)((const char *)c + col->off);
+}
+
+struct dout {
+	char *buf;
+	size_t n, len;
+};
+
+static void
+dprintf_(struct dout *o, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+static void
+dprintf_(struct dout *o, const char *fmt, ...)
+{
+	va_list ap;
+	size_t room = o->len < o->n ? o->n - o->len : 0;
+	int k;
+
+	va_start(ap, fmt);
+	k = vsnprintf(room ? o->buf + o->len : NULL, room, fmt, ap);
+	va_end(ap);
+	if (k > 0)
+		o->len += (size_t)k;
+}
+
+size_t
+collision_columns_mdoc(char *buf, size_t n)
+{
+	struct dout o = { buf, n, 0 };
+
+	if (buf != NULL && n > 0)
+		buf[0] = '\0';
+	dprintf_(&o, ".Bl -tag -width \"F_c_max\" -compact\n");
+	for (int i = 0; i < collision_ncolumns; i++) {
+		const struct collision_column *c = &collision_columns[i];
+		dprintf_(&o, ".It Li %s\n%s%s%s\n", c->name, c->meaning, c->unit[0] ? ", " : "",
+		    c->unit);
+	}
+	dprintf_(&o, ".El\n");
+	return o.len;
+}
+
+size_t
+collision_columns_markdown(char *buf, size_t n)
+{
+	struct dout o = { buf, n, 0 };
+
+	if (buf != NULL && n > 0)
+		buf[0] = '\0';
+	dprintf_(&o, "| column | meaning | unit |\n|---|---|---|\n");
+	for (int i = 0; i < collision_ncolumns; i++) {
+		const struct collision_column *c = &collision_columns[i];
+		dprintf_(&o, "| `%s` | ", c->name);
+		for (const char *m = c->meaning; *m; m++) /* a '|' would end the cell */
+			dprintf_(&o, "%s%c", *m == '|' ? "\\" : "", *m);
+		dprintf_(&o, " | %s |\n", c->unit[0] ? c->unit : "–");
+	}
+	return o.len;
+}

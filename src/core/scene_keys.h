@@ -1,0 +1,124 @@
+/*
+ * scene_keys.h - the table of scene keys (private to the engine).
+ *
+ * One row per typed key other than the law's parameters (whose rows are the
+ * law's own table, struct law_param): where the value is stored, how it is
+ * read and printed, its unit, admissible range, default, panel section,
+ * label and meaning.  scene_defaults(), scene_set(), scene_validate(), the
+ * panel rows (scene_key), the preset reader and writer and the man page's
+ * PRESETS section all read this table (scene_keys.c).
+ */
+#ifndef HYBOUNCE_SCENE_KEYS_H
+#define HYBOUNCE_SCENE_KEYS_H
+
+#include <stddef.h>
+
+#include "hybounce/scene.h"
+#include "hybounce/units.h"
+
+/* How a value is stored in struct scene, and so read and printed. */
+enum scene_store {
+	ST_DOUBLE,  /* double, "VALUE [UNIT]" */
+	ST_LONG,    /* long, a whole number */
+	ST_INT,     /* int, a whole number */
+	ST_STRING,  /* char[size] */
+	ST_LAW,     /* const struct law_type *: a law name */
+	ST_EXT,     /* int: adhesive | none */
+	ST_STEPPER, /* int: a stepper name */
+	ST_BOOL,    /* int: yes | no */
+	ST_REDUCE,  /* int: REDUCE_* flags, all | none | a comma list */
+};
+
+/* What else a value means (SP_FULL and SP_RAMP: when it is shown and checked). */
+enum scene_special {
+	SP_NONE,
+	SP_MATERIAL, /* E, nu: typing one gives the body a material */
+	SP_RHO,      /* typing it makes the mass derived again */
+	SP_MASS,     /* typing it makes the mass given (and forgets rho) */
+	SP_FULL,     /* used by the full system only */
+	SP_RAMP,     /* used only with loads.ramp = yes */
+};
+
+struct scene_keydef {
+	const char *key;     /* "body1.E" */
+	const char *panel;   /* panel section: "bodies", "law", "loads", "initial", "run" */
+	const char *label;   /* "E (body 1)" */
+	int store;           /* enum scene_store */
+	const struct unit_dim *dim; /* ST_DOUBLE */
+	struct unit_range range;    /* ST_DOUBLE, ST_LONG, ST_INT */
+	double def;          /* default of a number; NAN: not given */
+	const char *deftext; /* default of a string or a choice */
+	size_t off;          /* offset in struct scene */
+	size_t size;         /* ST_STRING: buffer size */
+	int special;         /* enum scene_special */
+	const char *help;    /* meaning */
+};
+
+/* The table, in preset order. */
+extern const struct scene_keydef scene_keydefs[];
+extern const int scene_nkeydefs;
+
+/* The row of a key, or NULL. */
+const struct scene_keydef *
+scene_keydef_find(const char *key);
+
+/* The body (0, 1) a key belongs to, or -1. */
+int
+scene_keydef_body(const struct scene_keydef *kd);
+
+/* The preset section of a key ("body1"), into buf. */
+const char *
+scene_keydef_section(const struct scene_keydef *kd, char *buf, size_t n);
+
+/*
+ * 1 if the key holds a value in this scene (written in a preset, validated;
+ * SP_RAMP values are written always and validated with the ramp on).
+ */
+int
+scene_keydef_present(const struct scene *sc, const struct scene_keydef *kd);
+
+/* The choices of a choice key (law, extension, stepper, yes/no, reductions). */
+int
+scene_keydef_choices(const struct scene_keydef *kd, const char **out, int max);
+
+/*
+ * Reads a choice ("adhesive", "yes", "flight,com", a law name ...) into *v
+ * (for ST_LAW the index in law_list()).  Returns 0, or -1 if not accepted.
+ */
+int
+scene_keydef_read_choice(const struct scene_keydef *kd, const char *text, int *v);
+
+/* The current value of a choice key as its choice's text. */
+const char *
+scene_keydef_choice(const struct scene *sc, const struct scene_keydef *kd);
+
+/* The value printed so that it reads back exactly ("%.17g UNIT", a name ...). */
+void
+scene_keydef_print(const struct scene *sc, const struct scene_keydef *kd, char *buf, size_t n);
+
+/* The resolved unit of law parameter i in this scene (p and n applied). */
+struct unit_dim
+scene_lawpar_dim(const struct scene *sc, int i);
+
+/* The index of the law's stiffness parameter, or -1. */
+int
+scene_stiffness_index(const struct law_type *law);
+
+/* The typed row of a table key / of law parameter i (HB_EINVAL: no such). */
+int
+scene_key_info(const struct scene *sc, const struct scene_keydef *kd, struct scene_keyinfo *out);
+int
+scene_key_info_law(const struct scene *sc, int i, struct scene_keyinfo *out);
+
+/* Fills an error (what: printf format); returns HB_EINVAL. */
+int
+scene_error_set(struct scene_error *e, const char *key, const char *accepted,
+                const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+
+/* The same with a range (and unit) as the accepted values. */
+int
+scene_error_range(struct scene_error *e, const char *key, const struct unit_range *r,
+                  const struct unit_dim *dim, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+
+#endif

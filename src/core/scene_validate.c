@@ -1,0 +1,160 @@
+/*
+ * scene_validate.c - checking a whole scene against the admissible ranges
+ * of the key table and of the law's parameters, and the constraints between
+ * values (see scene.h).  The error is data: the key at fault, its value and
+ * the accepted range.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "hybounce/scene.h"
+#include "hybounce/status.h"
+#include "hybounce/units.h"
+
+#include "scene_keys.h"
+
+/* Checks number v of key against r; vs is written with dim. */
+static int
+check_value(const char *key, double v, const struct unit_range *r, struct unit_dim dim,
+            const struct unit_dim *rdim, const char *what, struct scene_error *err)
+{
+	char vs[64];
+
+	if (units_in_range(v, r))
+		return HB_OK;
+	units_format(v, dim, 6, vs, sizeof vs);
+	return scene_error_range(err, key, r, rdim, "%s %s is out of range", what, vs);
+}
+
+/* The values of the table that this scene uses. */
+static int
+check_table(const struct scene *sc, struct scene_error *err)
+{
+	const char *base = (const char *)sc;
+	int st;
+
+	for (int i = 0; i < scene_nkeydefs; i++) {
+		const struct scene_keydef *kd = &scene_keydefs[i];
+		double v;
+
+		if (!scene_keydef_present(sc, kd) || (kd->special == SP_RAMP && !sc->loads.ramp))
+			continue;
+		switch (kd->store) {
+		case ST_DOUBLE:
+			v = *(const double *)(base + kd->off);
+			st = check_value(kd->key, v, &kd->range, *kd->dim, kd->dim, "value", err);
+			break;
+		case ST_LONG:
+		case ST_INT:
+			v = kd->store == ST_LONG ? (double)*(const long *)(base + kd->off)
+			                         : (double)*(const int *)(base + kd->off);
+			st = check_value(kd->key, v, &kd->range, UNIT_NONE, NULL, "value", err);
+			break;
+		case ST_LAW:
+			st = sc->law == NULL ? scene_error_set(err, kd->key, NULL, "no contact law")
+			                     : HB_OK;
+			break;
+		case ST_STEPPER:
+			st = sc->run.stepper < 0 || sc->run.stepper >= STEPPER_COUNT
+			    ? scene_error_set(err, kd->key, NULL, "value %d is out of range",
+			          sc->run.stepper) : HB_OK;
+			break;
+		case ST_REDUCE:
+			st = sc->run.reduce < 0 || sc->run.reduce > REDUCE_ALL
+			    ? scene_error_set(err, kd->key, NULL, "value %d is out of range",
+			          sc->run.reduce) : HB_OK;
+			break;
+		default:
+			st = HB_OK;
+			break;
+		}
+		if (st != HB_OK)
+			return st;
+	}
+	return HB_OK;
+}
+
+/* The law's parameters, each in its range, then the law's own check. */
+static int
+check_law(const struct scene *sc, struct scene_error *err)
+{
+	const struct law_type *law = sc->law;
+	char lm[256], key[48], vs[64];
+	int st;
+
+	for (int i = 0; i < law->n_params; i++) {
+		const struct law_param *pp = &law->params[i];
+		struct unit_range r = law_param_range(pp);
+		int derived = (pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived;
+
+		snprintf(key, sizeof key, "law.%s", pp->name);
+		st = check_value(key, sc->par[i], &r, scene_lawpar_dim(sc, i), NULL,
+		    derived ? "derived value" : "value", err);
+		if (st != HB_OK) {
+			if (derived && err != NULL) {
+				size_t l = strlen(err->accepted);
+				snprintf(err->accepted + l, sizeof err->accepted - l,
+				    " (check the materials)");
+			}
+			return st;
+		}
+	}
+	if (law->check != NULL && law->check(sc->par, lm, sizeof lm) != HB_OK) {
+		int pi = 0;
+		for (int i = 0; i < law->n_params; i++)
+			if (law->params[i].flags & LAW_PARAM_CHECKED) {
+				pi = i;
+				break;
+			}
+		snprintf(key, sizeof key, "law.%s", law->params[pi].name);
+		units_format(sc->par[pi], scene_lawpar_dim(sc, pi), 6, vs, sizeof vs);
+		return scene_error_set(err, key, lm, "value %s is out of range", vs);
+	}
+	return HB_OK;
+}
+
+int
+scene_check(struct scene *sc, struct scene_error *err)
+{
+	static const struct unit_range m1 = { 0, HUGE_VAL, 1, 1, 0 }, m2 = { 0, HUGE_VAL, 1, 0, 0 };
+	char key[16];
+	int st;
+
+	if (sc->law == NULL)
+		return scene_error_set(err, "scene.law", NULL, "no contact law");
+	if ((st = check_table(sc, err)) != HB_OK)
+		return st;
+	if (sc->loads.ramp) { /* the ramp needs a drawing force: F_e0 > 0 */
+		static const struct unit_range fe0 = { 0, HUGE_VAL, 1, 1, 0 };
+		if ((st = check_value("loads.F_e0", sc->loads.Fe0, &fe0, UNIT_FORCE, &UNIT_FORCE,
+		    "value", err)) != HB_OK)
+			return st;
+	}
+	for (int b = 0; b < 2; b++) {
+		const struct scene_body *bd = &sc->body[b];
+		if (!bd->mass_given && !(bd->rho > 0 && isfinite(bd->R)) && !(b == 1 && isinf(bd->R))) {
+			snprintf(key, sizeof key, "body%d.mass", b + 1);
+			return scene_error_set(err, key,
+			    b == 1 ? "a mass, or rho with a finite R (or R = inf: a fixed obstacle)"
+			           : "a mass, or rho with a finite R", "body %d has no mass", b + 1);
+		}
+	}
+	scene_derive(sc, NULL, 0);
+	if ((st = check_value("body1.mass", sc->d.m1, &m1, UNIT_MASS, &UNIT_MASS, "value", err)))
+		return st;
+	if ((st = check_value("body2.mass", sc->d.m2, &m2, UNIT_MASS, &UNIT_MASS, "value", err)))
+		return st;
+	return check_law(sc, err);
+}
+
+int
+scene_validate(struct scene *sc, char *msg, size_t n)
+{
+	struct scene_error e;
+	int st = scene_check(sc, &e);
+
+	if (st != HB_OK && msg != NULL && n > 0)
+		scene_error_str(&e, msg, n);
+	return st;
+}
