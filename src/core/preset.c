@@ -630,11 +630,43 @@ preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 
 #define PRESET_MAX_DIRS 16
 
+/*
+ * The folders near the running executable (Linux /proc/self/exe): BIN/../presets
+ * (build/hybounce in the source tree) and BIN/../share/hybounce/presets
+ * (PREFIX/bin/hybounce installed anywhere), when they exist, after dirs[0..k-1].
+ * Returns the new count (at most max - 1, leaving room for the NULL).
+ */
+static int
+exe_dirs(char store[][512], const char **dirs, int k, int max)
+{
+	static const char *const rel[] = { "/../presets", "/../share/hybounce/presets" };
+	char exe[512], *slash;
+	ssize_t l = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	struct stat st;
+
+	if (l <= 0)
+		return k;
+	exe[l] = '\0';
+	slash = strrchr(exe, '/');
+	if (slash == NULL)
+		return k;
+	*slash = '\0';
+	for (size_t i = 0; i < sizeof rel / sizeof rel[0] && k < max - 1; i++) {
+		if ((size_t)snprintf(store[k], 512, "%s%s", exe, rel[i]) >= 512)
+			continue;
+		if (stat(store[k], &st) == 0 && S_ISDIR(st.st_mode)) {
+			dirs[k] = store[k];
+			k++;
+		}
+	}
+	return k;
+}
+
 const char *const *
 preset_dirs(void)
 {
-	static char store[PRESET_MAX_DIRS][512];
-	static const char *dirs[PRESET_MAX_DIRS + 1];
+	static char store[PRESET_MAX_DIRS + 2][512];
+	static const char *dirs[PRESET_MAX_DIRS + 3];
 	const char *env = getenv("HYBOUNCE_PRESETS");
 	int k = 0;
 
@@ -660,6 +692,7 @@ preset_dirs(void)
 	snprintf(store[k], sizeof store[k], "%s/presets", HYBOUNCE_DATADIR);
 	dirs[k] = store[k];
 	k++;
+	k = exe_dirs(store, dirs, k, PRESET_MAX_DIRS + 3);
 	dirs[k] = NULL;
 	return dirs;
 }

@@ -263,8 +263,13 @@ act_preset(struct app *a)
 		term_oom();
 	a->npresets = n;
 	if (n == 0) {
-		app_msg(a, 1, "no presets found (looked in $HYBOUNCE_PRESETS, ./presets and %s)",
-		        HYBOUNCE_DATADIR "/presets");
+		const char *const *d = preset_dirs();
+		char where[1024] = "";
+		for (int i = 0; d[i] != NULL; i++) {
+			size_t l = strlen(where);
+			snprintf(where + l, sizeof where - l, "%s%s", i ? ", " : "", d[i]);
+		}
+		app_msg(a, 1, "no presets found (looked in %s; HYBOUNCE_PRESETS adds folders)", where);
 		return;
 	}
 	a->overlay = OV_PRESET;
