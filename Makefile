@@ -188,3 +188,11 @@ keys-doc: $(GENKEYS)
 	    skip { next } /^<!-- KEYS-BEGIN -->/ { print; skip = 1; next } { print }' README.md > $(BUILD)/README.md.new
 	mv $(BUILD)/README.md.new README.md
 docs: keys-doc
+
+# The README's explorer screen and batch example, from real runs
+# (tests/tui/readme.inc); tests/tui/readme.sh fails when they are stale.
+.PHONY: readme-examples
+readme-examples: $(BIN)
+	. tests/tui/readme.inc && readme_screen $(abspath $(BIN)) | readme_splice README.md SCREEN \
+	    && readme_batch $(abspath $(BIN)) | readme_splice README.md BATCH
+docs: readme-examples

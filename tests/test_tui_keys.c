@@ -172,8 +172,10 @@ Test(layout, sizes)
 			}
 			/* full layout from 80x23 (an 80x24 terminal under tmux or screen) */
 			cr_assert(L.plots.h >= (l >= 23 ? 12 : 8), "%dx%d: plots %d rows", c, l, L.plots.h);
-			cr_assert(L.table.h + L.params.h >= (l >= 23 ? 7 : 4), "%dx%d: bottom pane", c, l);
-			cr_assert_eq(L.readout.h, 1);
+			cr_assert(L.table.h + L.params.h >= (l >= 24 ? 7 : l >= 23 ? 6 : 4), "%dx%d: bottom pane", c, l);
+			/* two rows where one would cut the values (23 lines and up, narrow) */
+			cr_assert_eq(L.readout.h, l >= 23 && c < LAYOUT_READOUT_COLS ? 2 : 1, "%dx%d", c, l);
+			cr_assert_eq(L.readout.y + L.readout.h, L.msg.y);
 			cr_assert(L.table_visible || L.params_visible);
 			cr_assert_eq(L.wide, c >= LAYOUT_WIDE_COLS);
 			if (!L.wide)
@@ -189,9 +191,10 @@ Test(layout, presentation)
 	cr_assert_eq(layout_compute(80, 24, 0, &L), 0);
 	layout_present(&L);
 	cr_assert(!L.table_visible && !L.params_visible);
-	cr_assert_eq(L.plots.h, 20);
+	cr_assert_eq(L.plots.h, 19);
 	cr_assert_eq(L.plots.w, 80);
-	cr_assert_eq(L.readout.y, 21);
+	cr_assert_eq(L.readout.y, 20);
+	cr_assert_eq(L.plots.y + L.plots.h, L.readout.y);
 }
 
 /* Every action of the key table has a function (actions.c); no function for ACT_NONE. */

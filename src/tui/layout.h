@@ -6,7 +6,9 @@
  *   bottom          collisions table and parameter panel: side by side when
  *                   wide (>= LAYOUT_WIDE_COLS), otherwise one of them at a
  *                   time (Tab switches)
- *   row lines-3     readout: the values at the cursor
+ *   readout         the values at the cursor: rows lines-4 and lines-3
+ *                   from 23 lines when narrower than LAYOUT_READOUT_COLS,
+ *                   else row lines-3 (what does not fit is left out)
  *   row lines-2     message / prompt line
  *   row lines-1     footer (keys)
  *
@@ -24,6 +26,7 @@ enum {
 	LAYOUT_MIN_COLS = 60,
 	LAYOUT_MIN_LINES = 16,
 	LAYOUT_FULL_LINES = 21,
+	LAYOUT_READOUT_COLS = 120,
 	LAYOUT_WIDE_COLS = 130,
 	LAYOUT_PARAMS_W = 52,
 };

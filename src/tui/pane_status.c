@@ -60,8 +60,8 @@ readout_draw(const struct app *a)
 	const struct arc *arc = sim_arc(a->sim);
 	const struct rect *r = &a->L.readout;
 	const struct arc_sample *s;
-	char line[512], tb[48], xb[32], vb[32], xcb[32], fb[32], zb[32];
-	int sig = 6;
+	char f[9][96], tb[48], vb[32], line[512];
+	int sig, nf = 0, row = 0, col = 0;
 
 	if (r->h < 1 || arc_len(arc) == 0)
 		return;
@@ -82,18 +82,44 @@ readout_draw(const struct app *a)
 		if (ok)
 			break;
 	}
-	units_format(s->x, UNIT_LENGTH, 4, xb, sizeof xb);
+	snprintf(f[nf++], sizeof f[0], "#%zu", a->cursor);
+	snprintf(f[nf++], sizeof f[0], "t=%s", tb);
+	snprintf(f[nf++], sizeof f[0], "j=%ld", s->j);
+	snprintf(f[nf++], sizeof f[0], "q_c=%d", s->q);
+	units_format(s->x, UNIT_LENGTH, 4, vb, sizeof vb);
+	snprintf(f[nf++], sizeof f[0], "x=%s", vb);
 	units_format(s->v, UNIT_VELOCITY, 4, vb, sizeof vb);
-	units_format(s->xc, UNIT_LENGTH, 4, xcb, sizeof xcb);
-	units_format(s->Fc, UNIT_FORCE, 4, fb, sizeof fb);
-	zb[0] = 0;
-	for (int k = 0; k < sim_scene(a->sim)->law->n_z && k < LAW_MAX_Z; k++) {
-		size_t l = strlen(zb);
-		snprintf(zb + l, sizeof zb - l, "%s%.4g", k ? "," : "", s->z[k]);
+	snprintf(f[nf++], sizeof f[0], "v=%s", vb);
+	units_format(s->xc, UNIT_LENGTH, 4, vb, sizeof vb);
+	snprintf(f[nf++], sizeof f[0], "x_c=%s", vb);
+	units_format(s->Fc, UNIT_FORCE, 4, vb, sizeof vb);
+	snprintf(f[nf++], sizeof f[0], "F_c=%s", vb);
+	if (sim_scene(a->sim)->law->n_z > 0) {
+		f[nf][0] = 0;
+		for (int k = 0; k < sim_scene(a->sim)->law->n_z && k < LAW_MAX_Z; k++) {
+			size_t l = strlen(f[nf]);
+			snprintf(f[nf] + l, sizeof f[0] - l, "%sz_c%d=%.4g", k ? " " : "", k + 1, s->z[k]);
+		}
+		nf++;
 	}
-	snprintf(line, sizeof line, "#%zu t=%s j=%ld q=%d x=%s v=%s xc=%s Fc=%s%s%s", a->cursor, tb,
-	         s->j, s->q, xb, vb, xcb, fb, zb[0] ? " z=" : "", zb);
-	tui_puts(r->y, r->x, r->w, line, 0);
+	/* fields in order, wrapped onto the readout's rows; what does not fit is left out */
+	line[0] = 0;
+	for (int i = 0; i < nf; i++) {
+		int w = (int)strlen(f[i]) + (col ? 1 : 0);
+		if (col + w > r->w) {
+			tui_puts(r->y + row, r->x, r->w, line, 0);
+			if (++row >= r->h)
+				return;
+			line[0] = 0;
+			col = 0;
+			w = (int)strlen(f[i]);
+		}
+		if (w > r->w)
+			continue;
+		snprintf(line + strlen(line), sizeof line - strlen(line), "%s%s", col ? " " : "", f[i]);
+		col += w;
+	}
+	tui_puts(r->y + row, r->x, r->w, line, 0);
 }
 
 void

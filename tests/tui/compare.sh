@@ -66,17 +66,17 @@ wait_for a 'pinned runs cleared' 30
 
 # ---- the readout: step sample by sample --------------------------------------------
 keys a Home
-wait_for a '^#0 t=0 s j=0 q=0 x=20 mm v=0 m/s xc=0 m Fc=' 30
+wait_for a '^#0 t=0 s j=0 q_c=0 x=20 mm v=0 m/s' 30
 keys a '}'
 wait_for a ' j=1 q_c=1 ' 30
-r1=$(screen a | grep '^#[0-9]')
+r1=$(screen a | grep -A1 '^#[0-9]' | tr '\n' ' ')
 keys a .
-wait_gone a "^$r1\$" 30
-r2=$(screen a | grep '^#[0-9]')
+wait_gone a "^$(echo "$r1" | cut -d' ' -f1-3) " 30
+r2=$(screen a | grep -A1 '^#[0-9]' | tr '\n' ' ')
 n1=$(echo "$r1" | sed 's/^#\([0-9]*\) .*/\1/'); n2=$(echo "$r2" | sed 's/^#\([0-9]*\) .*/\1/')
 t1=$(echo "$r1" | sed 's/.* t=\([^ ]*\) .*/\1/'); t2=$(echo "$r2" | sed 's/.* t=\([^ ]*\) .*/\1/')
 if [ "$n2" = $((n1 + 1)) ] && [ "$t1" != "$t2" ] \
-   && echo "$r2" | grep -Eq '^#[0-9]+ t=[0-9.]+ ms j=1 q=1 x=-?[0-9.]+ [a-z]*m v=-?[0-9.]+ [a-z]*m/s xc=-?[0-9.]+ [a-z]*m Fc=-?[0-9.]+ [a-zA-Z]*N z=' ; then
+   && echo "$r2" | grep -Eq '^#[0-9]+ t=[0-9.]+ ms j=1 q_c=1 x=-?[0-9.]+ [a-z]*m v=-?[0-9.]+ [a-z]*m/s +x_c=-?[0-9.]+ [a-z]*m F_c=-?[0-9.]+ [a-zA-Z]*N z_c1=[-0-9.e]+ z_c2=[-0-9.e]+' ; then
 	ok "readout: sample $n1 -> $n2, t $t1 -> $t2 ms told apart, with x, v, x_c, F_c, z_c and units"
 else
 	notok "readout while stepping ($r1 / $r2)" a
