@@ -48,6 +48,16 @@ else
 	notok "F10 quits with status 0"
 fi
 
+# ---- an extreme horizon: the time axis stays readable --------------------------------
+start h 80 24 --set run.T=1e308
+if wait_for h '^t -> .*[0-9]e\+[0-9]+' 100 && ! screen h | grep -q '[0-9]\{12\}'; then
+	ok "run.T = 1e308: the time axis reads 2e+295-style labels, never 30 digits"
+else
+	notok "run.T = 1e308: the time axis stays readable" h
+fi
+keys h q
+wait_exit h 50
+
 # ---- help, unknown keys --------------------------------------------------------------
 start a 80 24
 wait_for a ' finished$' 150
