@@ -14,6 +14,8 @@
  */
 #ifndef HYBOUNCE_PRESET_H
 #define HYBOUNCE_PRESET_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "scene.h"
@@ -70,7 +72,7 @@ preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn);
  * then beside the running program: BIN/../presets (the source tree's
  * build/hybounce) and BIN/../share/hybounce/presets (an installation moved
  * elsewhere), those that exist.
- * NULL-terminated, static storage.
+ * NULL-terminated, in storage of the calling thread, valid until its next call.
  */
 const char *const *
 preset_dirs(void);
@@ -89,5 +91,7 @@ struct preset_info {
  */
 int
 preset_list(struct preset_info **out);
+
+HB_END_DECLS
 
 #endif

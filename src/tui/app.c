@@ -160,16 +160,18 @@ app_run(const struct app_options *o, char *msg, size_t n)
 
 	if (n > 0)
 		msg[0] = 0;
-	if (o->script == NULL && (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO))) {
-		snprintf(msg, n, "the explorer needs a terminal: standard %s is not one "
-		         "(use --batch PRESET for a report, or --script FILE to play keys without a terminal)",
-		         !isatty(STDIN_FILENO) ? "input" : "output");
-		return 2;
-	}
+	/* bad input first: a bad preset or --set is reported alike with or without a terminal */
 	s = load_sim(o->preset ? o->preset : DEFAULT_PRESET, o->sets, o->nsets, path,
 	             sizeof path, msg, n);
 	if (s == NULL)
 		return 2;
+	if (o->script == NULL && (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO))) {
+		snprintf(msg, n, "the explorer needs a terminal: standard %s is not one "
+		         "(use --batch PRESET for a report, or --script FILE to play keys without a terminal)",
+		         !isatty(STDIN_FILENO) ? "input" : "output");
+		sim_free(s);
+		return 2;
+	}
 	a = calloc(1, sizeof *a);
 	if (a == NULL) {
 		sim_free(s);

@@ -33,12 +33,12 @@
 #include <curses.h>
 #include <errno.h>
 #include <limits.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 #include <wchar.h>
 
 #include "keys.h"
@@ -158,9 +158,10 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 		snprintf(msg, n, "%s: %s", path, strerror(errno));
 		return 2;
 	}
-	if (fstat(fileno(f), &st) != 0 || S_ISDIR(st.st_mode)) {
-		snprintf(msg, n, "%s: %s (--script wants a file of script lines)", path,
-		         S_ISDIR(st.st_mode) ? "is a folder" : strerror(errno));
+	/* fopen() opens a directory; reading it would end the script at once, exit 0 */
+	if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+		snprintf(msg, n, "--script %s: is a directory; expected a file of script lines "
+		         "(see SCRIPTS in the man page)", path);
 		fclose(f);
 		return 2;
 	}

@@ -45,7 +45,7 @@ fi
 mkdir -p "$TMP/adir"
 "$BIN" --script "$TMP/adir" </dev/null >"$TMP/out" 2>&1
 rc=$?
-if [ "$rc" = 2 ] && grep -q 'adir: is a folder' "$TMP/out"; then
+if [ "$rc" = 2 ] && grep -q "adir: is a directory" "$TMP/out"; then
 	ok "--script given a folder: exit 2 with a message"
 else
 	notok "--script given a folder: exit 2 (rc $rc: $(cat "$TMP/out"))"
