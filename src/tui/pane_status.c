@@ -156,8 +156,22 @@ pane_status_draw(const struct app *a)
 	/* message or prompt */
 	r = &a->L.msg;
 	if (a->overlay == OV_PROMPT) {
+		/* too long for the line: the end, where the typing is, stays in view */
+		int cols = 0, skip;
+		const char *p;
 		snprintf(line, sizeof line, "%s: %s_", a->prompt_title, a->prompt_buf);
-		tui_puts(r->y, 0, r->w, line, A_BOLD);
+		for (p = line; *p; p++)
+			cols += ((unsigned char)*p & 0xC0) != 0x80;
+		skip = cols - (r->w - 1);
+		p = line;
+		if (skip > 0) {
+			for (skip += 3; *p && skip > 0; p++)
+				skip -= ((unsigned char)p[1] & 0xC0) != 0x80;
+			tui_puts(r->y, 0, 3, "...", A_BOLD);
+			tui_puts(r->y, 3, r->w - 3, p, A_BOLD);
+		} else {
+			tui_puts(r->y, 0, r->w, line, A_BOLD);
+		}
 	} else {
 		int mattr = a->msg_error ? (a->colour ? COLOR_PAIR(PAIR_ERROR) | A_BOLD : A_BOLD) : 0;
 		static const char more[] = "... m: whole";

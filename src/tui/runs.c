@@ -292,14 +292,32 @@ act_export(struct app *a)
 	strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
 	if (getcwd(cwd, sizeof cwd) == NULL)
 		snprintf(cwd, sizeof cwd, ".");
-	prompt_open(a, PROMPT_EXPORT, "", "export to %.60s/BASE-trace.csv etc.; BASE", cwd);
+	prompt_open(a, PROMPT_EXPORT, "", "export to %.60s/BASE-trace.csv, -collisions.csv, scene; BASE",
+	            cwd);
 	snprintf(a->prompt_buf, sizeof a->prompt_buf, "%.40s-%s", a->preset, stamp);
 }
 
+/* " (replaced)" and the like: how a target of the export was written, for the message. */
+static const char *
+how_written(const struct atomic_target *t)
+{
+	if (t->how == ATOMIC_IN_PLACE)
+		return " (written in place)";
+	if (t->via_link)
+		return t->how == ATOMIC_REPLACE ? " (through a link, replacing its target)" : " (through a link)";
+	return t->how == ATOMIC_REPLACE ? " (replaced the existing file)" : "";
+}
+
+/*
+ * Writes BASE-trace.csv, BASE-collisions.csv and the scene beside them
+ * through csv_export_files(): all or nothing, never over the preset being
+ * run or a shipped preset, every overwrite named in the message.
+ */
 void
 export_do(struct app *a, const char *base)
 {
-	char trace[600], coll[600], scene[600], emsg[512], note[256] = "";
+	char trace[600], coll[600], emsg[512], note[256] = "";
+	struct csv_export_report *rep;
 
 	if (base[0] == 0) {
 		app_msg(a, 1, "export cancelled: empty name");
@@ -307,9 +325,12 @@ export_do(struct app *a, const char *base)
 	}
 	snprintf(trace, sizeof trace, "%s-trace.csv", base);
 	snprintf(coll, sizeof coll, "%s-collisions.csv", base);
-	scene[0] = 0;
-	if (csv_export(a->sim, trace, coll, scene, sizeof scene, emsg, sizeof emsg) != HB_OK) {
+	rep = calloc(1, sizeof *rep);
+	if (rep == NULL)
+		term_oom();
+	if (csv_export_files(a->sim, trace, coll, a->preset_path, rep, emsg, sizeof emsg) != HB_OK) {
 		app_msg(a, 1, "export failed, nothing written: %s", emsg);
+		free(rep);
 		return;
 	}
 	if (a->branch_t >= 0) {
@@ -319,9 +340,11 @@ export_do(struct app *a, const char *base)
 		         "; NOTE: this run was branched at t = %s, j = %ld: the scene file holds the values after the branch and does NOT reproduce it (r, then export, gives a reproducible run)",
 		         tb, a->branch_j);
 	}
-	app_msg(a, a->branch_t >= 0, "wrote %s, %s and %s (%zu samples, %zu collisions)%s", trace,
-	        coll, scene[0] ? scene : "the scene", arc_len(sim_arc(a->sim)),
-	        sim_ncollisions(a->sim), note);
+	app_msg(a, a->branch_t >= 0, "wrote %s%s, %s%s and %s%s (%zu samples, %zu collisions)%s", trace,
+	        how_written(&rep->target[0]), coll, how_written(&rep->target[1]),
+	        rep->scene[0] ? rep->scene : "no scene", rep->scene[0] ? how_written(&rep->target[2]) : "",
+	        arc_len(sim_arc(a->sim)), sim_ncollisions(a->sim), note);
+	free(rep);
 }
 
 /* c: the table's differences against pinned run 1, 2, ..., then off. */

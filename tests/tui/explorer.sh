@@ -134,8 +134,8 @@ wait_for a 'pinned runs cleared' 30 || notok "P clears pins" a
 
 # ---- 7. export -------------------------------------------------------------
 keys a e
-if wait_for a '^export to /.*/BASE-trace\.csv etc\.; BASE' 30; then
-	keys a C-u
+if wait_for a 'BASE: ' 30 && keys a C-u \
+   && wait_for a '^export to /.*/BASE-trace\.csv, -collisions\.csv, scene; BASE: _' 30; then
 	keys a -l "$TMP/out/run1"
 	mkdir -p "$TMP/out"
 	keys a Enter
@@ -156,7 +156,7 @@ else
 fi
 # a failed export says why and loses nothing
 keys a e
-wait_for a '^export to .*BASE' 30
+wait_for a 'BASE: ' 30
 keys a C-u
 keys a -l "$TMP/no/such/dir/run2"
 keys a Enter

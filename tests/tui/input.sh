@@ -40,7 +40,7 @@ fi
 # non-ASCII typed into the export prompt: the file gets the name as typed
 mkdir -p "$TMP/out"
 keys a e
-wait_for a '^export to .*BASE' 30
+wait_for a 'BASE: ' 30
 keys a C-u
 keys a -l "$TMP/out/Ñandú"
 keys a Enter
@@ -52,7 +52,7 @@ else
 fi
 # Backspace removes a whole character, not a byte
 keys a e
-wait_for a '^export to .*BASE' 30
+wait_for a 'BASE: ' 30
 keys a C-u
 keys a -l "ñú"
 keys a BSpace

@@ -54,7 +54,7 @@ else
 	notok "} five times reaches collision 5 (j = 9)" a
 fi
 keys a e
-wait_for a '^export to .*BASE' 30
+wait_for a 'BASE: ' 30
 keys a C-u
 keys a -l "$TMP/out/c44"
 keys a Enter
@@ -98,7 +98,7 @@ else
 	notok "b then an edit continues from the cursor" a
 fi
 keys a e
-wait_for a '^export to .*BASE' 30
+wait_for a 'BASE: ' 30
 keys a C-u
 keys a -l "$TMP/out/br"
 keys a Enter
