@@ -289,3 +289,29 @@ check-tsan: deps
 bench-sweep: deps
 	@$(MAKE) --no-print-directory all
 	@sh tests/bench/sweep.sh $(BIN) $(BUILD)/bench
+
+# The explorer's key list in the man page and the README, generated from the
+# key table (src/tui/keys.c) between the KEYS-BEGIN and KEYS-END markers;
+# tests/test_tui_keys.c fails when they differ.
+GENKEYS := $(BUILD)/gen-keys
+$(GENKEYS): $(BUILD)/tests/gen_keys.o $(TUI_LIB) $(CORE_LIB)
+	$(CC) $(LDFLAGS) -o $@ $(BUILD)/tests/gen_keys.o $(TUI_LIB) $(CORE_LIB) $(TUI_LIBS) $(CORE_LIBS)
+.PHONY: keys-doc
+keys-doc: $(GENKEYS)
+	$(GENKEYS) man > $(BUILD)/keys.man
+	$(GENKEYS) md > $(BUILD)/keys.md
+	awk -v f=$(BUILD)/keys.man '/^\.\\" KEYS-END/ { while ((getline l < f) > 0) print l; skip = 0 } \
+	    skip { next } /^\.\\" KEYS-BEGIN/ { print; skip = 1; next } { print }' man/hybounce.1 > $(BUILD)/hybounce.1.new
+	mv $(BUILD)/hybounce.1.new man/hybounce.1
+	awk -v f=$(BUILD)/keys.md '/^<!-- KEYS-END -->/ { while ((getline l < f) > 0) print l; skip = 0 } \
+	    skip { next } /^<!-- KEYS-BEGIN -->/ { print; skip = 1; next } { print }' README.md > $(BUILD)/README.md.new
+	mv $(BUILD)/README.md.new README.md
+docs: keys-doc
+
+# The README's explorer screen and batch example, from real runs
+# (tests/tui/readme.inc); tests/tui/readme.sh fails when they are stale.
+.PHONY: readme-examples
+readme-examples: $(BIN)
+	. tests/tui/readme.inc && readme_screen $(abspath $(BIN)) | readme_splice README.md SCREEN \
+	    && readme_batch $(abspath $(BIN)) | readme_splice README.md BATCH
+docs: readme-examples

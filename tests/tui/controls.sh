@@ -137,7 +137,7 @@ keys a Tab
 if wait_for a 'parameters \(Enter edits' 30 && select_param a initial.x0; then
 	before=$(screen a | grep -E '^ +x0 ' | awk '{print $2, $3}')
 	keys a +
-	if wait_for a 'initial\.x0 = [0-9.e+-]+ [a-z]*m; the run restarted from t = 0' 30; then
+	if wait_for a 'initial\.x0 = [0-9.e+-]+ [a-z]*m: the run restarted from t = 0' 30; then
 		after=$(screen a | grep -E '^ +x0 ' | awk '{print $2, $3}')
 		if [ "$before" != "$after" ]; then
 			ok "+ in the panel nudges x0 ($before -> $after) and says the run restarted"
