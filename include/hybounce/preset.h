@@ -68,7 +68,10 @@ preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn);
 
 /*
  * The folders searched for presets, in order: $HYBOUNCE_PRESETS (colon
- * separated), ./presets, the install folder (PREFIX/share/hybounce/presets).
+ * separated), ./presets, the install folder (PREFIX/share/hybounce/presets),
+ * then beside the running program: BIN/../presets (the source tree's
+ * build/hybounce) and BIN/../share/hybounce/presets (an installation moved
+ * elsewhere), those that exist.
  * NULL-terminated, in storage of the calling thread, valid until a later call
  * of that thread sees HYBOUNCE_PRESETS changed.
  */

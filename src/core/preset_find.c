@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <ini.h>
 
@@ -23,88 +24,120 @@
 #endif
 
 /*
- * Any number of folders: the entries of $HYBOUNCE_PRESETS are split into a
- * buffer that grows.  The buffer is per thread, so that threads may look
- * presets up at once, and is freed when its thread ends (a pthread key's
- * destructor); it is built again only when HYBOUNCE_PRESETS changes, so a
- * list returned earlier stays valid while the environment does not change.
+ * The folders near the running executable (Linux /proc/self/exe):
+ * BIN/../presets (build/hybounce in the source tree) and
+ * BIN/../share/hybounce/presets (PREFIX/bin/hybounce installed anywhere),
+ * those that exist, written into out[0..1].  Returns how many.
+ */
+static int
+exe_dirs(char out[2][1024])
+{
+	static const char *const rel[] = { "/../presets", "/../share/hybounce/presets" };
+	char exe[1024], *slash;
+	ssize_t l = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	struct stat st;
+	int k = 0;
+
+	if (l <= 0)
+		return 0;
+	exe[l] = '\0';
+	slash = strrchr(exe, '/');
+	if (slash == NULL)
+		return 0;
+	*slash = '\0';
+	for (size_t i = 0; i < sizeof rel / sizeof rel[0]; i++) {
+		if ((size_t)snprintf(out[k], sizeof out[k], "%s%s", exe, rel[i]) >= sizeof out[k])
+			continue;
+		if (stat(out[k], &st) == 0 && S_ISDIR(st.st_mode))
+			k++;
+	}
+	return k;
+}
+
+/*
+ * Any number of folders: the entries of $HYBOUNCE_PRESETS split into one
+ * block per thread (a thread-specific value, freed when the thread ends),
+ * built again only when HYBOUNCE_PRESETS changes, so that a list returned
+ * earlier stays valid while the environment does not change.
  */
 struct dirs_cache {
-	char *store;       /* the entries, split in place */
-	char *seen;        /* the HYBOUNCE_PRESETS they came from; NULL: unset */
-	const char **dirs; /* NULL-terminated */
+	char *seen;        /* HYBOUNCE_PRESETS when built; NULL if unset */
+	int built;
+	const char **dirs; /* points into the same block as the strings */
 };
 
-/* Set once (pthread_once), then only read: the key of every thread's cache. */
-static struct {
-	pthread_key_t key;
-	int ok;
-} dirs_tls;
-static pthread_once_t dirs_once = PTHREAD_ONCE_INIT;
+/* Written once, under pthread_once: the only static of the core that is not const. */
+static pthread_key_t preset_dirs_key;
+static pthread_once_t preset_dirs_once = PTHREAD_ONCE_INIT;
 
 static void
 dirs_cache_free(void *p)
 {
 	struct dirs_cache *c = p;
 
-	free(c->store);
-	free(c->seen);
-	free(c->dirs);
-	free(c);
+	if (c != NULL) {
+		free(c->seen);
+		free(c->dirs);
+		free(c);
+	}
 }
 
 static void
-dirs_key_make(void)
+preset_dirs_key_make(void)
 {
-	dirs_tls.ok = pthread_key_create(&dirs_tls.key, dirs_cache_free) == 0;
+	(void)pthread_key_create(&preset_dirs_key, dirs_cache_free);
 }
 
 const char *const *
 preset_dirs(void)
 {
-	static _Thread_local char datadir[sizeof HYBOUNCE_DATADIR + 16];
+	static _Thread_local char datadir[sizeof HYBOUNCE_DATADIR + 16], near[2][1024];
 	static _Thread_local const char *fallback[3];
 	static const char here[] = "presets";
 	const char *env = getenv("HYBOUNCE_PRESETS");
-	struct dirs_cache *c = NULL;
-	size_t k = 0, count = 3;
+	struct dirs_cache *c;
+	size_t k = 0, count = 5, len = env != NULL ? strlen(env) + 1 : 0;
+	int nnear;
+	char *store;
 
 	snprintf(datadir, sizeof datadir, "%s/presets", HYBOUNCE_DATADIR);
 	fallback[0] = here;
 	fallback[1] = datadir;
 	fallback[2] = NULL;
-	pthread_once(&dirs_once, dirs_key_make);
-	if (!dirs_tls.ok)
+	if (pthread_once(&preset_dirs_once, preset_dirs_key_make) != 0)
 		return fallback;
-	c = pthread_getspecific(dirs_tls.key);
+	c = pthread_getspecific(preset_dirs_key);
 	if (c == NULL) {
 		c = calloc(1, sizeof *c);
-		if (c == NULL || pthread_setspecific(dirs_tls.key, c) != 0) {
+		if (c == NULL)
+			return fallback;
+		if (pthread_setspecific(preset_dirs_key, c) != 0) {
 			free(c);
-			return fallback; /* out of memory: the built-in folders only */
+			return fallback;
 		}
 	}
-	if (c->dirs != NULL &&
+	if (c->built && c->dirs != NULL &&
 	    (env == NULL ? c->seen == NULL : c->seen != NULL && strcmp(env, c->seen) == 0))
 		return c->dirs;
-	free(c->store);
 	free(c->seen);
 	free(c->dirs);
-	c->store = c->seen = NULL;
+	c->seen = NULL;
 	c->dirs = NULL;
-	if (env != NULL) {
+	c->built = 1;
+	if (env != NULL)
 		for (const char *p = env; *p != '\0'; p++)
 			count += *p == ':';
-		c->store = strdup(env);
-		c->seen = strdup(env);
-	}
-	c->dirs = malloc((count + 1) * sizeof *c->dirs);
-	if (c->dirs == NULL || (env != NULL && (c->store == NULL || c->seen == NULL))) {
+	/* the pointers, then a copy of the entries they point into */
+	c->dirs = malloc((count + 1) * sizeof *c->dirs + len);
+	if (c->dirs == NULL || (env != NULL && (c->seen = strdup(env)) == NULL)) {
 		free(c->dirs);
 		c->dirs = NULL;
 		return fallback; /* out of memory: the built-in folders only */
 	}
-	for (char *p = c->store; p != NULL && *p != '\0';) {
+	store = (char *)(c->dirs + count + 1);
+	if (env != NULL)
+		memcpy(store, env, len);
+	for (char *p = env != NULL ? store : NULL; p != NULL && *p != '\0';) {
 		char *q = strchr(p, ':');
 
 		if (q != NULL)
@@ -115,6 +148,9 @@ preset_dirs(void)
 	}
 	c->dirs[k++] = here;
 	c->dirs[k++] = datadir;
+	nnear = exe_dirs(near);
+	for (int i = 0; i < nnear; i++)
+		c->dirs[k++] = near[i];
 	c->dirs[k] = NULL;
 	return c->dirs;
 }

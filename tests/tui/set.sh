@@ -16,7 +16,6 @@ if wait_for a 't -> .* 1\.0 ms' 50; then
 else
 	notok "explorer: the time axis ends at T = 1 ms" a
 fi
-$TM send-keys -t a q
 
 # Typed values in the panel: + on a whole number steps it as a whole number
 # (run.J 100000 -> 110000), and Enter starts the prompt from text that reads
@@ -40,13 +39,14 @@ else
 fi
 if select_param b run.J; then
 	keys b +
-	if wait_for b 'run\.J = 110000;' 30; then ok "+ on run.J steps the whole number 100000 to 110000"
+	if wait_for b 'run\.J = 110000[;:]' 30; then ok "+ on run.J steps the whole number 100000 to 110000"
 	else notok "+ on run.J steps the whole number 100000 to 110000" b; fi
 	keys b -
-	if wait_for b 'run\.J = 100000;' 30; then ok "- on run.J steps it back to 100000"
+	if wait_for b 'run\.J = 100000[;:]' 30; then ok "- on run.J steps it back to 100000"
 	else notok "- on run.J steps it back to 100000" b; fi
 else
 	notok "parameter row run.J found" b
 fi
 $TM send-keys -t b q
+$TM send-keys -t a q
 exit $((failed > 0))
