@@ -2,10 +2,14 @@
 #
 #   make            build build/hybounce
 #   make run        install missing packages, build, open the explorer on the default preset
-#   make check      install missing packages, build, run every test
+#   make check      install missing packages, build, run every test and the fuzz smoke
+#   make fuzz       the libFuzzer campaign, FUZZ_TIME seconds per harness (tests/fuzz)
 #   make check-asan the unit tests under AddressSanitizer + UBSan
 #   make bench      the work-precision benchmark (report in build/bench/)
-#   make install / uninstall   honour PREFIX, DESTDIR, MANPREFIX
+#   make golden     rewrite tests/golden/*.csv (the collision tables the tests compare with)
+#   make install / uninstall   honour PREFIX, DESTDIR, MANPREFIX, LIBDIR, INCLUDEDIR
+#                   (the binary, man page, presets, and libhybounce: shared, static,
+#                   headers under include/hybounce/, pkg-config file hybounce.pc)
 #   make SAN=address,undefined   any target with sanitizers
 #   make debug      -O0 -g3
 
@@ -13,6 +17,11 @@ VERSION   := 0.1.0
 PREFIX    ?= /usr/local
 MANPREFIX ?= $(PREFIX)/share/man
 DATADIR   ?= $(PREFIX)/share/hybounce
+LIBDIR    ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+# libhybounce.so.SOVERSION: raise it when the ABI changes incompatibly.
+SOVERSION := 0
 CC        ?= gcc
 PKG_CONFIG ?= pkg-config
 
@@ -29,7 +38,9 @@ ifdef WERROR
 WARN      += -Werror
 endif
 ifdef SAN
-SANFLAGS  := -fsanitize=$(SAN) -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+# float-cast-overflow: gcc's (and clang's) "undefined" leaves it out
+SANFLAGS  := -fsanitize=$(SAN) -fsanitize=float-cast-overflow -fno-omit-frame-pointer \
+             -fno-sanitize-recover=undefined,float-cast-overflow
 endif
 
 CURSES_PC := $(shell $(PKG_CONFIG) --exists ncursesw 2>/dev/null && echo ncursesw || echo ncurses)
@@ -64,13 +75,26 @@ BIN       := $(BUILD)/hybounce
 UNIT      := $(BUILD)/unit-tests
 BENCHBIN  := $(BUILD)/hybounce-bench
 
-.PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man
+# libhybounce.so: the core objects are position-independent and hidden
+# unless a public header declares them (HB_BEGIN_DECLS, include/hybounce/export.h).
+LIB_CFLAGS := -fPIC -fvisibility=hidden
+SHLIB_SO   := libhybounce.so.$(SOVERSION)
+SHLIB      := $(BUILD)/libhybounce.so.$(VERSION)
+PCFILE     := $(BUILD)/hybounce.pc
+PUBLIC_H   := $(sort $(wildcard include/hybounce/*.h))
+# Paths under PREFIX are written relative to ${prefix} in hybounce.pc.
+pc_rel      = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
+.PHONY: fuzz fuzzers fuzz-smoke
 
-all: $(BIN)
+.PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man lib FORCE golden
+
+all: $(BIN) lib
+
+lib: $(CORE_LIB) $(SHLIB) $(PCFILE)
 
 $(BUILD)/src/core/%.o: src/core/%.c
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(CORE_CFLAGS) $(CFLAGS) -c $< -o $@
+	$(CC) $(CPPFLAGS) $(CORE_CFLAGS) $(CFLAGS) $(LIB_CFLAGS) -c $< -o $@
 $(BUILD)/src/tui/%.o: src/tui/%.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Isrc/tui $(TUI_CFLAGS) $(CFLAGS) -c $< -o $@
@@ -87,6 +111,21 @@ $(BUILD)/tests/%.o: tests/%.c
 $(CORE_LIB): $(CORE_OBJ)
 	@mkdir -p $(@D)
 	rm -f $@ && ar rcs $@ $^
+# The objects are rebuilt when what is compiled into them changes: the
+# library flags, or the preset folder of PREFIX (make PREFIX=/opt/x install
+# after a plain make installs a program that looks in /opt/x).
+BUILD_CONFIG := $(LIB_CFLAGS) $(VERSION) $(PREFIX) $(DATADIR) $(LIBDIR) $(INCLUDEDIR)
+$(BUILD)/build-config: FORCE
+	@mkdir -p $(@D)
+	@echo '$(BUILD_CONFIG)' | cmp -s - $@ || echo '$(BUILD_CONFIG)' >$@
+$(CORE_OBJ) $(TUI_OBJ) $(CLI_OBJ): $(BUILD)/build-config
+FORCE:
+$(SHLIB): $(CORE_OBJ)
+	$(CC) -shared $(LDFLAGS) -Wl,-soname,$(SHLIB_SO) -Wl,--no-undefined -o $@ $^ $(CORE_LIBS)
+$(PCFILE): hybounce.pc.in $(BUILD)/build-config
+	@mkdir -p $(@D)
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(call pc_rel,$(LIBDIR))|' \
+	    -e 's|@INCLUDEDIR@|$(call pc_rel,$(INCLUDEDIR))|' -e 's|@VERSION@|$(VERSION)|' $< >$@
 $(TUI_LIB): $(TUI_OBJ)
 	@mkdir -p $(@D)
 	rm -f $@ && ar rcs $@ $^
@@ -138,11 +177,48 @@ unit: $(UNIT)
 check: deps
 	@$(MAKE) --no-print-directory all unit
 	@sh tests/run.sh $(BIN) $(UNIT)
+	@$(MAKE) --no-print-directory fuzz-smoke
 
 check-asan: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan SAN=address,undefined OPT=-O1 all unit
 	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	    sh tests/run.sh build-asan/hybounce build-asan/unit-tests
+
+# libFuzzer harnesses (tests/fuzz/fuzz_*.c), built with clang against the
+# engine's sources with ASan + UBSan (float-cast-overflow included), always
+# in build/fuzz.  `make fuzz` is the long campaign: FUZZ_TIME seconds per
+# harness (default 60), corpus grown in build/fuzz/corpus/NAME from the seeds
+# in tests/fuzz/corpus and presets/, findings (crash-*, leak-*, timeout-*) left in
+# build/fuzz/findings/.  `make fuzz-smoke` (the last step of make check)
+# runs each harness FUZZ_RUNS times (default 100000), from its seeds.
+FUZZ_CC    ?= clang
+FUZZ_TIME  ?= 60
+FUZZ_RUNS  ?= 100000
+FUZZ_DIR   := build/fuzz
+FUZZ_SAN   := -fsanitize=address,undefined,float-cast-overflow \
+              -fno-sanitize-recover=undefined,float-cast-overflow -fno-omit-frame-pointer
+FUZZ_FLAGS := -g -O1 -std=c17 -Wall -Wextra -MMD -MP $(FUZZ_SAN)
+FUZZ_SRC   := $(sort $(wildcard tests/fuzz/fuzz_*.c))
+FUZZ_BINS  := $(FUZZ_SRC:tests/fuzz/%.c=$(FUZZ_DIR)/%)
+FUZZ_OBJ   := $(CORE_SRC:%.c=$(FUZZ_DIR)/obj/%.o)
+
+$(FUZZ_DIR)/obj/%.o: %.c
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(CPPFLAGS) $(CORE_CFLAGS) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
+$(FUZZ_DIR)/%: tests/fuzz/%.c tests/fuzz/fuzz.h $(FUZZ_OBJ)
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(CPPFLAGS) $(CORE_CFLAGS) $(FUZZ_FLAGS) -fsanitize=fuzzer -o $@ $< \
+	    $(FUZZ_OBJ) $(CORE_LIBS)
+
+fuzzers: $(FUZZ_BINS)
+
+fuzz: deps
+	@$(MAKE) --no-print-directory fuzzers
+	@sh tests/fuzz/run.sh campaign $(FUZZ_TIME) $(FUZZ_BINS)
+
+fuzz-smoke: deps
+	@$(MAKE) --no-print-directory fuzzers
+	@sh tests/fuzz/run.sh smoke $(FUZZ_RUNS) $(FUZZ_BINS)
 
 debug:
 	@$(MAKE) --no-print-directory BUILD=build-debug OPT=-O0 CFLAGS='-g3' all
@@ -152,19 +228,38 @@ bench: deps
 	@mkdir -p $(BUILD)/bench
 	./$(BENCHBIN) --out $(BUILD)/bench
 
+# Rewrites the golden collision tables (tests/golden/*.csv) from this engine:
+# only after a change meant to move the numbers; review the diff (tests/test_golden.c).
+golden: $(UNIT)
+	@mkdir -p tests/golden
+	HYBOUNCE_GOLDEN_WRITE=1 ./$(UNIT) --filter 'golden/paper_presets_reproduce_their_collision_tables'
+
 lint-man:
 	mandoc -Tlint -W warning man/hybounce.1
 
-install: $(BIN)
+install: $(BIN) lib
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(MANPREFIX)/man1 $(DESTDIR)$(DATADIR)/presets
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/hybounce
 	install -m 644 man/hybounce.1 $(DESTDIR)$(MANPREFIX)/man1/hybounce.1
 	install -m 644 presets/*.preset $(DESTDIR)$(DATADIR)/presets/
+	install -d $(DESTDIR)$(LIBDIR) $(DESTDIR)$(INCLUDEDIR)/hybounce $(DESTDIR)$(PKGCONFIGDIR)
+	install -m 755 $(SHLIB) $(DESTDIR)$(LIBDIR)/
+	ln -sf libhybounce.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SHLIB_SO)
+	ln -sf $(SHLIB_SO) $(DESTDIR)$(LIBDIR)/libhybounce.so
+	install -m 644 $(CORE_LIB) $(DESTDIR)$(LIBDIR)/libhybounce.a
+	install -m 644 $(PUBLIC_H) $(DESTDIR)$(INCLUDEDIR)/hybounce/
+	install -m 644 $(PCFILE) $(DESTDIR)$(PKGCONFIGDIR)/hybounce.pc
+	@if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ] && command -v ldconfig >/dev/null; then ldconfig; fi
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/hybounce $(DESTDIR)$(MANPREFIX)/man1/hybounce.1
 	rm -f $(DESTDIR)$(DATADIR)/presets/*.preset
 	-rmdir $(DESTDIR)$(DATADIR)/presets $(DESTDIR)$(DATADIR)
+	rm -f $(DESTDIR)$(LIBDIR)/libhybounce.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SHLIB_SO) \
+	      $(DESTDIR)$(LIBDIR)/libhybounce.so $(DESTDIR)$(LIBDIR)/libhybounce.a \
+	      $(DESTDIR)$(PKGCONFIGDIR)/hybounce.pc
+	rm -f $(PUBLIC_H:include/hybounce/%=$(DESTDIR)$(INCLUDEDIR)/hybounce/%)
+	-rmdir $(DESTDIR)$(INCLUDEDIR)/hybounce
 
 clean:
 	rm -rf build build-asan build-debug

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "canvas.h"
+#include "testutil.h"
 
 static const char *
 label(const struct axis *ax, int i)
@@ -17,12 +18,12 @@ label(const struct axis *ax, int i)
 
 Test(canvas, nice_step_125)
 {
-	cr_assert_float_eq(canvas_nice_step(0.0213, 5), 0.005, 1e-15);
-	cr_assert_float_eq(canvas_nice_step(1.0, 5), 0.2, 1e-15);
-	cr_assert_float_eq(canvas_nice_step(3.0, 3), 1.0, 1e-15);
-	cr_assert_float_eq(canvas_nice_step(2385, 4), 1000, 1e-9);
-	cr_assert_float_eq(canvas_nice_step(0.37, 1), 0.5, 1e-15);
-	cr_assert_float_eq(canvas_nice_step(0, 4), 1, 0); /* degenerate: a usable step */
+	assert_abs(canvas_nice_step(0.0213, 5), 0.005, 1e-15);
+	assert_abs(canvas_nice_step(1.0, 5), 0.2, 1e-15);
+	assert_abs(canvas_nice_step(3.0, 3), 1.0, 1e-15);
+	assert_abs(canvas_nice_step(2385, 4), 1000, 1e-9);
+	assert_abs(canvas_nice_step(0.37, 1), 0.5, 1e-15);
+	assert_abs(canvas_nice_step(0, 4), 1, 0); /* degenerate: a usable step */
 }
 
 Test(canvas, ticks_millimetres)
@@ -31,11 +32,11 @@ Test(canvas, ticks_millimetres)
 
 	canvas_axis(0, 0.0213, 6, "m", &ax);
 	cr_assert_str_eq(ax.unit, "mm");
-	cr_assert_float_eq(ax.scale, 1e-3, 1e-18);
-	cr_assert_float_eq(ax.step, 0.005, 1e-15);
+	assert_abs(ax.scale, 1e-3, 1e-18);
+	assert_abs(ax.step, 0.005, 1e-15);
 	cr_assert_eq(ax.nticks, 6);
-	cr_assert_float_eq(ax.lo, 0, 1e-18);
-	cr_assert_float_eq(ax.hi, 0.025, 1e-15);
+	assert_abs(ax.lo, 0, 1e-18);
+	assert_abs(ax.hi, 0.025, 1e-15);
 	cr_assert_str_eq(label(&ax, 0), "0");
 	cr_assert_str_eq(label(&ax, 1), "5");
 	cr_assert_str_eq(label(&ax, 5), "25");
@@ -47,7 +48,7 @@ Test(canvas, ticks_kilonewtons_with_decimals)
 
 	canvas_axis(0, 2385, 6, "N", &ax);
 	cr_assert_str_eq(ax.unit, "kN");
-	cr_assert_float_eq(ax.step, 500, 1e-9);
+	assert_abs(ax.step, 500, 1e-9);
 	cr_assert_eq(ax.nticks, 6);
 	cr_assert_eq(ax.decimals, 1);
 	cr_assert_str_eq(label(&ax, 0), "0.0");
@@ -61,7 +62,7 @@ Test(canvas, ticks_milliseconds)
 
 	canvas_axis(0, 0.5, 6, "s", &ax);
 	cr_assert_str_eq(ax.unit, "ms");
-	cr_assert_float_eq(ax.step, 0.1, 1e-15);
+	assert_abs(ax.step, 0.1, 1e-15);
 	cr_assert_str_eq(label(&ax, 3), "300");
 }
 
@@ -71,7 +72,7 @@ Test(canvas, ticks_negative_range_no_minus_zero)
 
 	canvas_axis(-0.0031, -0.0004, 6, "m", &ax);
 	cr_assert_str_eq(ax.unit, "mm");
-	cr_assert_float_eq(ax.step, 0.001, 1e-15);
+	assert_abs(ax.step, 0.001, 1e-15);
 	cr_assert_eq(ax.nticks, 5);
 	cr_assert_str_eq(label(&ax, 0), "-4");
 	cr_assert_str_eq(label(&ax, 3), "-1");

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <criterion/criterion.h>
@@ -24,16 +25,7 @@
 #include "hybounce/preset.h"
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
-
-static const char *
-preset_dir(void)
-{
-	const char *e = getenv("HYBOUNCE_PRESETS");
-
-	if (e != NULL && e[0] != '\0' && strchr(e, ':') == NULL)
-		return e;
-	return "presets";
-}
+#include "testutil.h"
 
 /* Loads a preset, applies KEY=VALUE overrides, runs it to the end. */
 static struct sim *
@@ -51,24 +43,6 @@ run(const char *name, const char *const *set)
 	cr_assert(s != NULL, "%s", msg);
 	cr_assert_eq(sim_run(s), HB_OK, "%s", sim_errmsg(s));
 	return s;
-}
-
-static char *
-slurp(const char *path)
-{
-	FILE *f = fopen(path, "rb");
-	char *buf;
-	long len;
-
-	cr_assert(f != NULL, "%s missing", path);
-	fseek(f, 0, SEEK_END);
-	len = ftell(f);
-	fseek(f, 0, SEEK_SET);
-	buf = malloc((size_t)len + 1);
-	cr_assert(fread(buf, 1, (size_t)len, f) == (size_t)len);
-	buf[len] = '\0';
-	fclose(f);
-	return buf;
 }
 
 /* Splits the next line of *p into at most max fields (in place). */
@@ -328,13 +302,15 @@ Test(csv, failure_leaves_nothing)
 	cr_assert(access(spath, F_OK) != 0, "the scene file was left");
 	cr_assert_eq(count_entries(dir), 1, "a temporary file was left");
 
-	/* A directory in the way of the collisions' rename: all or nothing. */
+	/* A folder in the way of the collisions: refused before anything is
+	 * written (a failed rename is undone too: tests/cli/export-kill.sh). */
 	snprintf(cpath, sizeof cpath, "%s/busy.csv", dir);
 	cr_assert_eq(mkdir(cpath, 0700), 0);
 	snprintf(spath, sizeof spath, "%.200s/k", cpath);
 	f = fopen(spath, "w");
 	fclose(f);
-	cr_assert_eq(csv_export(s, path, cpath, NULL, 0, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(csv_export(s, path, cpath, NULL, 0, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strstr(msg, "is a folder") != NULL, "%s", msg);
 	old = slurp(path);
 	cr_assert_str_eq(old, "t,x\n1,2\n", "the good file was replaced by a failed export");
 	free(old);
@@ -473,5 +449,180 @@ Test(csv, stream_to_a_closed_pipe_is_epipe)
 	/* A stream already in error fails too. */
 	cr_assert_eq(csv_stream_arc(f, s, msg, sizeof msg), HB_EIO);
 	fclose(f);
+	sim_free(s);
+}
+
+/* ------------------------------------------------------------------ */
+/* The export's rules: links, devices, protected presets, stale files   */
+
+static void
+put(const char *path, const char *text)
+{
+	FILE *f = fopen(path, "w");
+
+	cr_assert(f != NULL, "%s", path);
+	fputs(text, f);
+	fclose(f);
+}
+
+Test(csv, export_keeps_a_link_and_writes_through_it)
+{
+	char dir[] = "/tmp/hb-csv-XXXXXX", real[256], link[256], cpath[256], msg[512] = "";
+	struct sim *s = run("nonunique-separation", NULL);
+	struct csv_export_report r;
+	struct stat st;
+	char *text;
+
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(real, sizeof real, "%s/real.csv", dir);
+	snprintf(link, sizeof link, "%s/link.csv", dir);
+	snprintf(cpath, sizeof cpath, "%s/coll.csv", dir);
+	put(real, "old\n");
+	cr_assert_eq(symlink("real.csv", link), 0);
+	cr_assert_eq(csv_export_files(s, link, cpath, NULL, &r, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(lstat(link, &st), 0);
+	cr_assert(S_ISLNK(st.st_mode), "the link was replaced by a file");
+	cr_assert(r.target[0].via_link && r.target[0].how == ATOMIC_REPLACE);
+	text = slurp(real);
+	cr_assert(strncmp(text, "t,j,q_c", 7) == 0, "the linked file was not written");
+	free(text);
+	cr_assert_eq(r.target[1].how, ATOMIC_NEW);
+	/* A dangling link: the file it names is created. */
+	unlink(real);
+	cr_assert_eq(csv_export_files(s, link, NULL, NULL, &r, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(lstat(link, &st), 0);
+	cr_assert(S_ISLNK(st.st_mode));
+	cr_assert_eq(access(real, F_OK), 0);
+	cr_assert_eq(r.target[0].how, ATOMIC_NEW);
+	unlink(real);
+	unlink(link);
+	unlink(cpath);
+	snprintf(real, sizeof real, "%s/link.preset", dir);
+	unlink(real);
+	cr_assert_eq(count_entries(dir), 0);
+	rmdir(dir);
+	sim_free(s);
+}
+
+Test(csv, export_writes_a_device_in_place_and_no_scene_beside_it)
+{
+	char dir[] = "/tmp/hb-csv-XXXXXX", cpath[256], want[256], msg[512] = "";
+	struct sim *s = run("nonunique-separation", NULL);
+	struct csv_export_report r;
+	struct stat st;
+
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(cpath, sizeof cpath, "%s/coll.csv", dir);
+	snprintf(want, sizeof want, "%s/coll.preset", dir);
+	cr_assert_eq(csv_export_files(s, "/dev/null", cpath, NULL, &r, msg, sizeof msg), HB_OK,
+	    "%s", msg);
+	cr_assert_eq(r.target[0].how, ATOMIC_IN_PLACE);
+	cr_assert_str_eq(r.scene, want, "the scene goes beside the file, not the device");
+	cr_assert_eq(stat("/dev/null", &st), 0);
+	cr_assert(S_ISCHR(st.st_mode));
+	cr_assert_eq(access("/dev/null.preset", F_OK), -1);
+	/* A device alone: no scene at all. */
+	cr_assert_eq(csv_export_files(s, NULL, "/dev/null", NULL, &r, msg, sizeof msg), HB_OK);
+	cr_assert_str_eq(r.scene, "");
+	/* A device that refuses the bytes fails the export. */
+	if (access("/dev/full", W_OK) == 0)
+		cr_assert_eq(csv_export_files(s, "/dev/full", NULL, NULL, &r, msg, sizeof msg),
+		    HB_EIO);
+	unlink(cpath);
+	unlink(want);
+	rmdir(dir);
+	sim_free(s);
+}
+
+Test(csv, export_never_overwrites_the_preset_being_run)
+{
+	char dir[] = "/tmp/hb-csv-XXXXXX", pre[256], cpath[256], msg[512] = "";
+	struct sim *s = run("nonunique-separation", NULL);
+	struct csv_export_report r;
+	char *text;
+
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(pre, sizeof pre, "%s/my.preset", dir);
+	snprintf(cpath, sizeof cpath, "%s/my.csv", dir);
+	put(pre, "; my comments\n");
+	cr_assert_eq(csv_export_check(NULL, cpath, pre, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strstr(msg, "is the preset being run") != NULL, "%s", msg);
+	cr_assert_eq(csv_export_files(s, NULL, cpath, pre, &r, msg, sizeof msg), HB_EINVAL);
+	text = slurp(pre);
+	cr_assert_str_eq(text, "; my comments\n");
+	free(text);
+	cr_assert_eq(count_entries(dir), 1, "a file was written");
+	/* Another name is fine. */
+	snprintf(cpath, sizeof cpath, "%s/my-run.csv", dir);
+	cr_assert_eq(csv_export_files(s, NULL, cpath, pre, &r, msg, sizeof msg), HB_OK, "%s", msg);
+	unlink(cpath);
+	unlink(r.scene);
+	unlink(pre);
+	rmdir(dir);
+	sim_free(s);
+}
+
+Test(csv, export_never_overwrites_a_shipped_preset)
+{
+	char msg[512] = "", path[1024];
+	struct sim *s = run("nonunique-separation", NULL);
+	struct csv_export_report r;
+	const char *const *d = preset_dirs();
+
+	cr_assert_eq(preset_resolve("steel-on-bitumen", path, sizeof path, msg, sizeof msg), HB_OK,
+	    "%s", msg);
+	cr_assert(d != NULL && d[0] != NULL);
+	strcpy(strrchr(path, '.'), ".csv");
+	cr_assert_eq(csv_export_files(s, path, NULL, NULL, &r, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strstr(msg, "is a shipped preset") != NULL, "%s", msg);
+	cr_assert_eq(access(path, F_OK), -1, "the CSV was written");
+	sim_free(s);
+}
+
+Test(csv, export_stamps_every_file_alike_and_cleans_stale_temporaries)
+{
+	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], stale[300], live[300];
+	char msg[512] = "", *text;
+	struct sim *s = run("nonunique-separation", NULL);
+	struct csv_export_report r;
+	struct stat a, b, c;
+	pid_t dead;
+
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(path, sizeof path, "%s/run.csv", dir);
+	snprintf(cpath, sizeof cpath, "%s/coll.csv", dir);
+	/* What a killed writer leaves: a temporary of a process that is gone
+	 * (a child that exited), and one of a live process (ours: kept). */
+	dead = fork();
+	if (dead == 0)
+		_exit(0);
+	cr_assert(dead > 0);
+	waitpid(dead, NULL, 0);
+	snprintf(stale, sizeof stale, "%s.hbtmp-%ld-abcdef", path, (long)dead);
+	snprintf(live, sizeof live, "%s.hbtmp-%ld-abcdef", path, (long)getppid());
+	put(stale, "half");
+	put(live, "half");
+	put(cpath, "old\n");
+	chmod(cpath, 0640);
+	cr_assert_eq(csv_export_files(s, path, cpath, NULL, &r, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(access(stale, F_OK), -1, "the stale temporary file is still there");
+	cr_assert_eq(access(live, F_OK), 0, "a live process's temporary file was removed");
+	unlink(live);
+	cr_assert_eq(r.target[1].how, ATOMIC_REPLACE);
+	cr_assert_eq(stat(path, &a), 0);
+	cr_assert_eq(stat(cpath, &b), 0);
+	cr_assert_eq(stat(r.scene, &c), 0);
+	cr_assert((b.st_mode & 0777) == 0640, "the replaced file's mode is kept");
+	cr_assert(a.st_mtim.tv_sec == b.st_mtim.tv_sec && a.st_mtim.tv_nsec == b.st_mtim.tv_nsec &&
+	    a.st_mtim.tv_sec == c.st_mtim.tv_sec && a.st_mtim.tv_nsec == c.st_mtim.tv_nsec,
+	    "the files of one export have different modification times");
+	text = slurp(r.scene);
+	cr_assert(strstr(text, r.id) != NULL, "the scene does not name the export %s", r.id);
+	free(text);
+	unlink(path);
+	unlink(cpath);
+	unlink(r.scene);
+	cr_assert_eq(count_entries(dir), 0);
+	rmdir(dir);
 	sim_free(s);
 }

@@ -26,6 +26,7 @@
 #include "hybounce/scene.h"
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
+#include "testutil.h"
 
 #define TOL 1e-10
 #define GROWTH 1e3
@@ -34,15 +35,6 @@ struct herr {
 	double t, e, xc, F, T;
 	long dn;
 };
-
-static void
-load(const char *name, struct scene *sc)
-{
-	char path[512], msg[1024];
-
-	snprintf(path, sizeof path, "presets/%s.preset", name);
-	cr_assert_eq(preset_load(path, sc, msg, sizeof msg), 0, "%s", msg);
-}
 
 static void
 set(struct scene *sc, const char *key, const char *val)
@@ -77,7 +69,7 @@ run_at(const char *name, int stepper, double rtol, double atol)
 {
 	struct scene sc;
 
-	load(name, &sc);
+	scene_preset(name, &sc);
 	sc.run.stepper = stepper;
 	sc.run.rtol = rtol;
 	sc.run.atol = atol;
@@ -183,7 +175,7 @@ Test(hard, drop_from_1um)
 	double vi;
 
 	assert_within_tolerance("hard-drop-1um");
-	load("hard-drop-1um", &sc);
+	scene_preset("hard-drop-1um", &sc);
 	vi = -sqrt(2 * sc.loads.g * sc.init.x0);
 	s = run_checked(&sc, "hard-drop-1um");
 	if (sim_ncollisions(s) > 0)
@@ -228,7 +220,7 @@ Test(hard, slow_impact_hertz)
 	double m, k, v, d;
 	size_t i;
 
-	load("hard-slow-impact-hertz", &sc);
+	scene_preset("hard-slow-impact-hertz", &sc);
 	m = sc.d.m;
 	k = sc.par[law_param_index(sc.law, "k")];
 	v = fabs(sc.init.v0);
@@ -292,7 +284,7 @@ Test(hard, linear_maxwell_never_separates)
 	const struct arc_sample *l;
 	double k, c, m, xinf;
 
-	load("hard-linear-maxwell", &sc);
+	scene_preset("hard-linear-maxwell", &sc);
 	k = sc.par[law_param_index(sc.law, "k")];
 	c = sc.par[law_param_index(sc.law, "c")];
 	m = sc.d.m;
@@ -321,7 +313,7 @@ Test(hard, long_run_memory_bounded)
 	struct sim *s, *r;
 	size_t i;
 
-	load("steel-on-bitumen", &sc);
+	scene_preset("steel-on-bitumen", &sc);
 	set(&sc, "run.T", "3 s");
 	set(&sc, "run.max_samples", "2048");
 	s = run_checked(&sc, "steel-on-bitumen, T = 3 s");
@@ -330,7 +322,7 @@ Test(hard, long_run_memory_bounded)
 	cr_expect_leq(arc_len(sim_arc(s)), 2 * 2048, "%zu samples kept", arc_len(sim_arc(s)));
 	cr_expect_lt(arc_bytes(sim_arc(s)), 64u << 20, "arc holds %zu bytes", arc_bytes(sim_arc(s)));
 	cr_expect_eq(arc_at(sim_arc(s), 0)->t, 0.0, "the first sample must stay");
-	load("steel-on-bitumen", &sc);
+	scene_preset("steel-on-bitumen", &sc);
 	r = run_checked(&sc, "steel-on-bitumen");
 	cr_expect_eq(sim_ncollisions(s), sim_ncollisions(r));
 	for (i = 0; i < sim_ncollisions(r) && i < sim_ncollisions(s); i++)
@@ -414,7 +406,7 @@ Test(hard, oscillatory_stiffness_sinking_phase, .timeout = 120)
 	struct sim *e, *a;
 	const struct arc_sample *le, *la;
 
-	load("steel-on-bitumen", &sc);
+	scene_preset("steel-on-bitumen", &sc);
 	sc.run.T = 500.0;
 	sc.run.stepper = STEPPER_DOP853;
 	e = run_checked(&sc, "steel-on-bitumen T = 500 s");

@@ -12,10 +12,6 @@
 #include "hybounce/check.h"
 #include "testutil.h"
 
-static const char *const paper_presets[] = {
-	"steel-on-bitumen", "ptfe-pom", "permanent-contact-shccl", "permanent-contact-bwshccl",
-	"permanent-contact-bwmcl", "nonunique-rest", "nonunique-separation", "hertz-elastic", NULL,
-};
 
 /* Every preset in presets/: the solution-pair check and the work-energy identity. */
 Test(paper, every_preset_is_a_solution_pair_and_keeps_energy, .timeout = 300)

@@ -9,27 +9,7 @@
 
 #include "keys.h"
 #include "layout.h"
-
-static char *
-slurp(const char *path)
-{
-	FILE *f = fopen(path, "r");
-	char *buf;
-	long n;
-
-	if (f == NULL)
-		return NULL;
-	fseek(f, 0, SEEK_END);
-	n = ftell(f);
-	rewind(f);
-	buf = calloc((size_t)n + 1, 1);
-	if (buf != NULL && fread(buf, 1, (size_t)n, f) != (size_t)n) {
-		free(buf);
-		buf = NULL;
-	}
-	fclose(f);
-	return buf;
-}
+#include "testutil.h"
 
 Test(keys, no_key_bound_twice_in_one_context)
 {
@@ -126,8 +106,9 @@ Test(keys, man_page_matches_table)
 			char a2[80], c2[80];
 			snprintf(a2, sizeof a2, "Ic %s ", tok);
 			snprintf(c2, sizeof c2, "Ic \\&%s ", tok);
-			cr_assert(strstr(b, a) || strstr(b, c) || strstr(b, a2) || strstr(b, c2),
-			          "key '%s' missing from the man page", tok);
+			/* the generated list (equal to the man page's, above) names every key */
+			cr_assert(strstr(gen, a) || strstr(gen, c) || strstr(gen, a2) || strstr(gen, c2),
+			          "key '%s' missing from keys_man(), hence from the man page", tok);
 		}
 	}
 	free(man);

@@ -13,6 +13,7 @@
 
 #include "hybounce/status.h"
 #include "hybounce/units.h"
+#include "testutil.h"
 
 static void
 dim_is(struct unit_dim d, double kg, double m, double s)
@@ -257,7 +258,7 @@ Test(units, axis)
 	cr_assert_eq(s, 1);
 	cr_assert_str_eq(label, "J");
 	s = units_axis(0.2614, "kg", label, sizeof label);
-	cr_assert(fabs(s - 1e-3) < 1e-18);
+	assert_abs(s, 1e-3, 1e-18);
 	cr_assert_str_eq(label, "g");
 }
 
@@ -308,4 +309,27 @@ Test(units, huge_exponent_is_written)
 	units_dim_str(d, buf, sizeof buf);
 	snprintf(want, sizeof want, "m^%.17g", -4e97);
 	cr_assert_str_eq(buf, want);
+}
+
+/* Issue 10 item 4: an exponent beyond int was cast to int (undefined). */
+Test(units, absurd_exponents)
+{
+	char msg[256], buf[64];
+	double v;
+	struct unit_dim huge = { 0, 3e9, 0, 0, 0 }, big = { 0, -4e97, 0, 0, 0 };
+
+	cr_assert_eq(units_parse("1 m^-4e97", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strstr(msg, "bad exponent") != NULL, "%s", msg);
+	cr_assert_eq(units_parse("1 m^1e400", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(units_parse("1 m^2e15", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(units_parse("1 m^3000000000/3000000000", UNIT_LENGTH, &v, msg, sizeof msg),
+	             HB_OK);
+	cr_assert_eq(v, 1.0);
+	/* what units_dim_str writes for law.n = 3e9 reads back */
+	cr_assert_eq(units_parse("2 m^3000000000", huge, &v, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(v, 2.0);
+	/* dimensions derived from law.n = 3e9 print without a cast */
+	cr_assert_str_eq(units_dim_str(huge, buf, sizeof buf), "m^3000000000");
+	units_dim_str(big, buf, sizeof buf);
+	cr_assert(strstr(buf, "e+97") != NULL, "%s", buf);
 }

@@ -1,13 +1,74 @@
-/* testutil.h - helpers shared by the engine's Criterion tests. */
+/*
+ * testutil.h - helpers shared by every Criterion test file (tests/test_*.c):
+ * the paper's presets, where presets are, loading and running a scene,
+ * reading a file, and comparisons of numbers with their tolerance stated.
+ * Each helper fails the test with a message that names what went wrong.
+ */
 #ifndef HYBOUNCE_TESTUTIL_H
 #define HYBOUNCE_TESTUTIL_H
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #include <criterion/criterion.h>
 
 #include "hybounce/preset.h"
 #include "hybounce/sim.h"
+#include "hybounce/status.h"
+
+/* The presets of the paper's studies (presets/NAME.preset), NULL-terminated. */
+static const char *const paper_presets[] = {
+	"steel-on-bitumen", "ptfe-pom", "permanent-contact-shccl", "permanent-contact-bwshccl",
+	"permanent-contact-bwmcl", "nonunique-rest", "nonunique-separation", "hertz-elastic", NULL,
+};
+#define NPAPER_PRESETS (sizeof paper_presets / sizeof paper_presets[0] - 1)
+
+/* The preset folder: $HYBOUNCE_PRESETS when it names one folder, else presets/. */
+static inline const char *
+preset_dir(void)
+{
+	const char *e = getenv("HYBOUNCE_PRESETS");
+
+	if (e != NULL && e[0] != '\0' && strchr(e, ':') == NULL)
+		return e;
+	return "presets";
+}
+
+/* The whole file, NUL-terminated, malloc'd (free it); fails the test if unreadable. */
+static inline char *
+slurp(const char *path)
+{
+	FILE *f = fopen(path, "rb");
+	char *buf;
+	long len;
+
+	cr_assert(f != NULL, "%s: %s (run the tests from the repository root)", path, strerror(errno));
+	fseek(f, 0, SEEK_END);
+	len = ftell(f);
+	fseek(f, 0, SEEK_SET);
+	cr_assert(len >= 0, "%s: not a regular file", path);
+	buf = malloc((size_t)len + 1);
+	cr_assert_not_null(buf);
+	cr_assert(fread(buf, 1, (size_t)len, f) == (size_t)len, "%s: short read", path);
+	buf[len] = '\0';
+	fclose(f);
+	return buf;
+}
+
+/*
+ * x agrees with the printed value to the digits printed: |x - printed| is
+ * at most half a unit in the last printed place.
+ */
+static inline void
+printed(double x, double value, int sig, const char *what)
+{
+	double ulp = pow(10, floor(log10(fabs(value))) - (sig - 1));
+
+	cr_assert(fabs(x - value) <= 0.5 * ulp, "%s = %.6e, the paper prints %.*e", what, x,
+	    sig - 1, value);
+}
 
 /* |a - b| <= tol |b| */
 #define assert_rel(a, b, tol)                                                              \
@@ -26,6 +87,33 @@
 		          #a, a_, b_, fabs(a_ - b_), t_);                                  \
 	} while (0)
 
+/* The value of the scene's law parameter NAME; fails the test if the law has none. */
+static inline double
+scene_par(const struct scene *sc, const char *name)
+{
+	int i = law_param_index(sc->law, name);
+
+	cr_assert(i >= 0, "%s has no parameter %s", sc->law->name, name);
+	return sc->par[i];
+}
+
+/*
+ * The derived values the paper prints for its second study (PTFE on POM,
+ * Table tab:two), checked to the digits printed.
+ */
+static inline void
+study2_printed(const struct scene *sc)
+{
+	cr_assert_eq(sc->d.system, SCENE_FULL);
+	printed(sc->d.Estar, 5.321e8, 4, "E*");
+	printed(sc->d.Re, 10e-3, 2, "R_e");
+	printed(sc->d.m1, 7.372e-2, 4, "m1");
+	printed(sc->d.m2, 4.725e-2, 4, "m2");
+	printed(sc->d.m, 2.879e-2, 4, "m");
+	printed(sc->d.eta, 0.6094, 4, "eta");
+	printed(scene_par(sc, "k"), 7.095e7, 4, "k");
+}
+
 /* Loads a scene from INI text; fails the test on error. */
 static inline void
 scene_from(const char *ini, struct scene *sc)
@@ -35,13 +123,13 @@ scene_from(const char *ini, struct scene *sc)
 	cr_assert_eq(preset_load_string(ini, "test.preset", sc, msg, sizeof msg), 0, "%s", msg);
 }
 
-/* Loads a preset file by name from presets/. */
+/* Loads a preset file by name from preset_dir(). */
 static inline void
 scene_preset(const char *name, struct scene *sc)
 {
 	char path[512], msg[1024];
 
-	snprintf(path, sizeof path, "presets/%s.preset", name);
+	snprintf(path, sizeof path, "%s/%s.preset", preset_dir(), name);
 	cr_assert_eq(preset_load(path, sc, msg, sizeof msg), 0, "%s", msg);
 }
 

@@ -10,16 +10,24 @@
  * Flow intervals: for each j that has samples, the index of its first and
  * last sample, q_c, and its ordinary-time extent [t_j, t_{j+1}].
  *
- * Memory is bounded: past the scene's run.max_samples the arc thins the
- * interior samples of old flow intervals by half (never the first or last
- * sample of an interval, never a jump), so rewind always reaches t = 0.
- * arc_thinned() counts the passes.
+ * Memory is bounded, whatever the number of samples and jumps: the arc
+ * holds at most what the scene's run.max_samples samples would (samples,
+ * interval index and jump records together).  Past that it thins the
+ * interior samples of old flow intervals by half; when the arc is mostly
+ * jumps, whose samples that cannot remove, it removes every other whole
+ * old flow interval too, with its two jumps, so that j then steps by more
+ * than one between two samples (arc_skipped() counts the intervals
+ * removed; the jump records list only the jumps whose two samples remain).
+ * The first interval and the one in progress are never removed, so rewind
+ * always reaches t = 0.  arc_thinned() counts the passes.
  *
  * The arc is owned by the sim that produced it; pointers returned here stay
  * valid until the next sim_advance / sim_seek / sim_restart / sim_free.
  */
 #ifndef HYBOUNCE_ARC_H
 #define HYBOUNCE_ARC_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "law.h"
@@ -106,7 +114,12 @@ size_t arc_find_t(const struct arc *a, double t);
 /* Number of thinning passes so far (0: every sample is kept). */
 int arc_thinned(const struct arc *a);
 
+/* Number of flow intervals thinned out (0: j steps by one between samples). */
+long arc_skipped(const struct arc *a);
+
 /* Bytes held by the arc. */
 size_t arc_bytes(const struct arc *a);
+
+HB_END_DECLS
 
 #endif

@@ -9,6 +9,8 @@
  */
 #ifndef HYBOUNCE_CHECK_H
 #define HYBOUNCE_CHECK_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "scene.h"
@@ -31,5 +33,59 @@ check_solution_pair(const struct scene *sc, const struct arc *a, char *msg, size
 int
 check_euler(const struct scene *sc, const struct arc *a, size_t k, double *order,
             char *msg, size_t n);
+
+/*
+ * The physics a computed arc must obey, to the accuracy asked for
+ * (tol = max(run.rtol, run.atol)):
+ *  - the work-energy identity of the relative motion, at every sample:
+ *        m v^2/2 - m v0^2/2 = E_e + W_c
+ *    (E_e and W_c are the works of F_er and F_c since t = 0, integrated
+ *    with the flow); its residual, relative to the run's energy scale, is
+ *    the run's error estimate, and must stay within CHECK_PHYS_FACTOR tol;
+ *  - passivity: for a law that cannot give energy back (every law so far:
+ *    springs, dampers, Bouc-Wen with |gamma| <= beta), each completed
+ *    contact absorbs W >= 0, up to CHECK_PHYS_FACTOR tol of its impact
+ *    energy m v_i^2/2;
+ *  - restitution: for such a law e <= sqrt(1 + 2 max(E_e,c, 0) / (m v_i^2)),
+ *    E_e,c the work of the applied force over the contact (1 without
+ *    loads), up to the same margin;
+ *  - for an elastic law (hertz, linear) W = 0 and e = that bound, to the
+ *    same margin: their deviations are the contact's error.
+ * Collision i is read from the arc: the contact's first sample (t_e) and
+ * its pre-jump sample (t_s).
+ */
+#define CHECK_PHYS_FACTOR 100.0
+
+struct check_physics {
+	double tol;          /* max(rtol, atol): what was asked */
+	double escale;       /* energy scale of the run, J */
+	double resid;        /* largest |work-energy residual| / escale */
+	size_t resid_at;     /* sample where it is largest */
+	int passive;         /* 1: the law cannot give energy back */
+	int elastic;         /* 1: the law stores and returns, no dissipation */
+	size_t ncontacts;    /* completed contacts checked */
+	double wmin;         /* smallest W / (m v_i^2 / 2) over them (elastic: largest |W| / ...) */
+	long wmin_at;        /* its collision index, -1 if none */
+	double W_at;         /* that contact's W, J */
+	double emax;         /* largest e - e_bound over them (elastic: |e - e_bound|) */
+	long emax_at;        /* its collision index, -1 if none */
+	double e_at;         /* that contact's e */
+	double e_bound;      /* and its bound */
+	size_t nzero;        /* contacts begun at zero approach velocity: m v_i^2/2 at most
+	                        tol times the energy scale (e meaningless, not checked) */
+	long zero_at;        /* the first of them, -1 if none */
+	double vi_zero;      /* its v_i, m/s */
+	int failed;          /* number of checks that failed (0..3) */
+};
+
+/*
+ * Fills *r; returns 0 when every check passes, or HB_EINVAL with one line
+ * per failure ("; "-separated) in msg.
+ */
+int
+check_physics(const struct scene *sc, const struct arc *a, struct check_physics *r,
+              char *msg, size_t n);
+
+HB_END_DECLS
 
 #endif

@@ -8,6 +8,8 @@
  */
 #ifndef HYBOUNCE_COLLISIONS_H
 #define HYBOUNCE_COLLISIONS_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 struct collision {
 	long i;          /* 0, 1, ... */
@@ -25,5 +27,7 @@ struct collision {
 	double Lambda;   /* J_Fe / J_Fc */
 	int complete;    /* 0 for the contact in progress (values so far, ts = now) */
 };
+
+HB_END_DECLS
 
 #endif

@@ -10,6 +10,8 @@
 #include <stddef.h>
 
 #include "collisions.h"
+#include "export.h"
+HB_BEGIN_DECLS
 
 enum {
 	COLUMN_BATCH = 1,    /* shown in the batch report's table */
@@ -47,5 +49,7 @@ size_t
 collision_columns_mdoc(char *buf, size_t n);
 size_t
 collision_columns_markdown(char *buf, size_t n);
+
+HB_END_DECLS
 
 #endif

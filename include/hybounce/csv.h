@@ -6,16 +6,21 @@
  * x_m,v_m,v_m1,v_m2 (z columns as many as the law has).
  * Collision columns: i,t_e,t_s,t_d,t_f,v_i,e,x_c_max,F_c_max,x_c_r,W,J_Fc,J_Fe,Lambda.
  *
- * Every file is written to a temporary name in its folder and renamed, so a
- * failed export never leaves a half file or clobbers a good one.  The
+ * Every file goes through the atomic writer (atomic.h): written to a
+ * temporary name in its folder and renamed, so a failed export never leaves
+ * a half file or clobbers a good one; an existing device or FIFO is written
+ * in place; a symbolic link is kept and the file it leads to is written.  The
  * csv_stream_* functions write the same bytes to an open stream (e.g.
  * stdout), where no such promise can be kept.
  */
 #ifndef HYBOUNCE_CSV_H
 #define HYBOUNCE_CSV_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include <stdio.h>
+#include "atomic.h"
 #include "sim.h"
 
 int
@@ -49,5 +54,36 @@ csv_stream_collisions(FILE *f, const struct sim *s, char *msg, size_t n);
 int
 csv_export(const struct sim *s, const char *trace_path, const char *coll_path,
            char *scene_out, size_t sn, char *msg, size_t n);
+
+/* How an export went: what csv_export_files() wrote, and how. */
+struct csv_export_report {
+	char scene[4096];        /* the .preset written; "" when none */
+	int scene_of;            /* 0 beside the trace, 1 beside the collisions, -1 none */
+	char id[48];             /* the export's identifier (atomic_set.id) */
+	struct atomic_target target[3];  /* trace, collisions, scene: how each went */
+};
+
+/*
+ * csv_export with the rules of a front end: the trace and/or the
+ * collisions (either may be NULL), the scene beside the first of them
+ * that is a file (not beside a device or FIFO written in place), with the
+ * export's identifier in a comment; every file of the export gets that
+ * identifier as its modification time, so that a set mixed by a kill
+ * between two renames shows.  Refuses (HB_EINVAL, nothing written) to
+ * overwrite run_preset (the preset being run; may be NULL) or a shipped
+ * preset (a .preset in one of preset_dirs()), to write both CSVs to one
+ * file or the scene over a CSV.  *r says which targets were replaced, are
+ * links, or were written in place.
+ */
+int
+csv_export_files(const struct sim *s, const char *trace, const char *coll,
+                 const char *run_preset, struct csv_export_report *r, char *msg, size_t n);
+
+/* Every check of csv_export_files that can be made before the run. */
+int
+csv_export_check(const char *trace, const char *coll, const char *run_preset,
+                 char *msg, size_t n);
+
+HB_END_DECLS
 
 #endif

@@ -23,6 +23,8 @@
  */
 #ifndef HYBOUNCE_LAW_H
 #define HYBOUNCE_LAW_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 
@@ -157,5 +159,7 @@ extern const struct law_type law_bwshccl;
 extern const struct law_type law_bwmcl;
 extern const struct law_type law_hertz;
 extern const struct law_type law_linear;
+
+HB_END_DECLS
 
 #endif

@@ -14,6 +14,8 @@
  */
 #ifndef HYBOUNCE_PRESET_H
 #define HYBOUNCE_PRESET_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "scene.h"
@@ -67,7 +69,7 @@ preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn);
 /*
  * The folders searched for presets, in order: $HYBOUNCE_PRESETS (colon
  * separated), ./presets, the install folder (PREFIX/share/hybounce/presets).
- * NULL-terminated, static storage.
+ * NULL-terminated, in storage of the calling thread, valid until its next call.
  */
 const char *const *
 preset_dirs(void);
@@ -86,5 +88,7 @@ struct preset_info {
  */
 int
 preset_list(struct preset_info **out);
+
+HB_END_DECLS
 
 #endif

@@ -27,6 +27,8 @@
  */
 #ifndef HYBOUNCE_SCENE_H
 #define HYBOUNCE_SCENE_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 
@@ -208,6 +210,14 @@ scene_get(const struct scene *sc, const char *key, struct scene_keyinfo *out,
           struct scene_error *err);
 
 /*
+ * The typed row of parameter i of a law at its defaults (number = the
+ * law's default, unit at the default exponents), for references such as
+ * --list-laws.  Returns 0, or HB_EINVAL for a bad i.
+ */
+int
+scene_law_param_info(const struct law_type *law, int i, struct scene_keyinfo *out);
+
+/*
  * The PRESETS reference of the man page (mdoc), generated from the key
  * table: what tools/gendoc writes between the PRESET-KEYS markers of
  * man/hybounce.1.  Returns the length needed (like snprintf).
@@ -258,5 +268,7 @@ const char *
 scene_stepper_name(int stepper);
 int
 scene_stepper_find(const char *name);
+
+HB_END_DECLS
 
 #endif

@@ -41,6 +41,8 @@
  */
 #ifndef HYBOUNCE_SIM_H
 #define HYBOUNCE_SIM_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "scene.h"
@@ -133,9 +135,16 @@ sim_arc(const struct sim *s);
 const struct sim_stats *
 sim_stats(const struct sim *s);
 
-/* Completed collisions (those ended by a separation). */
+/*
+ * Completed collisions (those ended by a separation) that are kept.  The
+ * list is bounded: past run.max_samples / 8 of them every other one of the
+ * older three quarters is thinned out, and each kept one has its index i
+ * among all (so i then has gaps); sim_collisions_total() counts them all.
+ */
 size_t
 sim_ncollisions(const struct sim *s);
+long
+sim_collisions_total(const struct sim *s);
 const struct collision *
 sim_collision(const struct sim *s, size_t i);
 
@@ -168,5 +177,7 @@ sim_set_scene(struct sim *s, const struct scene *sc, int *restarted, char *msg, 
 /* Discards the run and starts again from t = 0 with the current scene. */
 int
 sim_restart(struct sim *s);
+
+HB_END_DECLS
 
 #endif

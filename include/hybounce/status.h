@@ -7,6 +7,8 @@
  */
 #ifndef HYBOUNCE_STATUS_H
 #define HYBOUNCE_STATUS_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 
@@ -32,5 +34,7 @@ status_str(int status);
 int
 status_set(char *buf, size_t n, int status, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
+
+HB_END_DECLS
 
 #endif

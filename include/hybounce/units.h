@@ -14,6 +14,8 @@
  */
 #ifndef HYBOUNCE_UNITS_H
 #define HYBOUNCE_UNITS_H
+#include "export.h"
+HB_BEGIN_DECLS
 
 #include <stddef.h>
 
@@ -111,5 +113,6 @@ units_in_range(double v, const struct unit_range *r);
  */
 char *
 units_range_str(const struct unit_range *r, const struct unit_dim *dim, char *buf, size_t n);
+HB_END_DECLS
 
 #endif

@@ -29,14 +29,17 @@
  */
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "hybounce/arc.h"
+#include "hybounce/atomic.h"
 #include "hybounce/check.h"
 #include "hybounce/collisions.h"
 #include "hybounce/columns.h"
@@ -122,16 +125,16 @@ ends_with(const char *path, const char *suffix)
 }
 
 /*
- * Checks, before the run, that an export path can be written: its folder
- * exists and is writable, and the path is not a folder.  Returns 0, or 2
- * after printing why.
+ * Checks, before the run, that an export path can be written (atomic.h:
+ * a new or replaced file needs a writable folder, a device or FIFO is
+ * written in place, a folder is refused).  Returns 0, or 2 after printing
+ * why.
  */
 static int
 check_export_path(const char *opt, const char *path)
 {
-	char dir[4096];
-	const char *slash;
-	struct stat st;
+	struct atomic_target t;
+	char msg[1024];
 
 	if (path[0] == '\0') {
 		fprintf(stderr, PROG ": %s: empty file name; expected a path such as "
@@ -144,36 +147,32 @@ check_export_path(const char *opt, const char *path)
 		        opt, path);
 		return 2;
 	}
-	if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-		fprintf(stderr, PROG ": %s %s: is a folder; expected a file path\n",
-		        opt, path);
-		return 2;
-	}
-	slash = strrchr(path, '/');
-	if (slash == NULL)
-		snprintf(dir, sizeof dir, ".");
-	else if (slash == path)
-		snprintf(dir, sizeof dir, "/");
-	else
-		snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
-	if (stat(dir, &st) != 0) {
-		fprintf(stderr, PROG ": %s %s: cannot write there: folder %s: %s; "
-		        "expected a path in an existing, writable folder\n",
-		        opt, path, dir, strerror(errno));
-		return 2;
-	}
-	if (!S_ISDIR(st.st_mode)) {
-		fprintf(stderr, PROG ": %s %s: cannot write there: %s is not a folder\n",
-		        opt, path, dir);
-		return 2;
-	}
-	if (access(dir, W_OK) != 0) {
-		fprintf(stderr, PROG ": %s %s: cannot write there: folder %s: %s; "
-		        "expected a path in an existing, writable folder\n",
-		        opt, path, dir, strerror(errno));
+	msg[0] = '\0';
+	if (atomic_probe(path, &t, msg, sizeof msg) != HB_OK) {
+		size_t pl = strlen(path);
+		/* "PATH: reason": the path is already named */
+		const char *why = strncmp(msg, path, pl) == 0 && msg[pl] == ':' ? msg + pl + 2 : msg;
+
+		fprintf(stderr, PROG ": %s %s: cannot write there: %s; expected a file "
+		        "path in an existing, writable folder\n", opt, path, why);
 		return 2;
 	}
 	return 0;
+}
+
+/* "wrote PATH", and how when it was not a plain new file. */
+static void
+print_wrote(const char *path, const struct atomic_target *t)
+{
+	fprintf(stderr, "wrote %s", path);
+	if (t->how == ATOMIC_IN_PLACE)
+		fprintf(stderr, " (written in place)");
+	else if (t->via_link)
+		fprintf(stderr, " (through the link, to %s%s)", t->real,
+		        t->how == ATOMIC_REPLACE ? ", replacing it" : "");
+	else if (t->how == ATOMIC_REPLACE)
+		fprintf(stderr, " (replaced the existing file)");
+	fprintf(stderr, "\n");
 }
 
 /* ------------------------------------------------------------------ */
@@ -450,7 +449,11 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 		cols[c].width = w;
 	}
 
-	fprintf(out, "collisions (%zu completed)\n", nc);
+	if (sim_collisions_total(s) > (long)nc)
+		fprintf(out, "collisions (%ld completed; %zu kept, the older ones thinned)\n",
+		        sim_collisions_total(s), nc);
+	else
+		fprintf(out, "collisions (%zu completed)\n", nc);
 	for (c = 0; c < ncols; c++) {
 		col_head(&cols[c], buf, sizeof buf);
 		fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
@@ -513,7 +516,7 @@ print_jumps(FILE *out, const struct arc *a)
 }
 
 static void
-print_summary(FILE *out, const struct sim *s)
+print_summary(FILE *out, const struct sim *s, int sig)
 {
 	const struct scene *sc = sim_scene(s);
 	const struct arc *a = sim_arc(s);
@@ -523,7 +526,13 @@ print_summary(FILE *out, const struct sim *s)
 	int i;
 
 	fprintf(out, "summary\n");
-	fprintf(out, "  ended       %s\n", sim_end_str(s));
+	if (sig != 0)
+		fprintf(out, "  ended       interrupted by %s at t = %s, j = %ld (run.T = %s)\n",
+		        sig == SIGINT ? "SIGINT" : "SIGTERM",
+		        fmt(last != NULL ? last->t : 0, UNIT_TIME, b1, sizeof b1),
+		        last != NULL ? last->j : 0L, fmt(sc->run.T, UNIT_TIME, b2, sizeof b2));
+	else
+		fprintf(out, "  ended       %s\n", sim_end_str(s));
 	if (last != NULL) {
 		fprintf(out, "  end state   t = %s, j = %ld, q_c = %d, x = %s, v = %s, x_c = %s",
 		        fmt(last->t, UNIT_TIME, b1, sizeof b1), last->j, last->q,
@@ -534,7 +543,12 @@ print_summary(FILE *out, const struct sim *s)
 			fprintf(out, ", z_c%d = %.6g", i + 1, last->z[i]);
 		fprintf(out, "\n");
 	}
-	fprintf(out, "  collisions  %zu\n", sim_ncollisions(s));
+	if (sim_collisions_total(s) > (long)sim_ncollisions(s))
+		fprintf(out, "  collisions  %ld (%zu kept in the table and CSV: the older ones are "
+		        "thinned, each row keeps its index i)\n", sim_collisions_total(s),
+		        sim_ncollisions(s));
+	else
+		fprintf(out, "  collisions  %zu\n", sim_ncollisions(s));
 	fprintf(out, "  run time    %s CPU", fmt(st->seconds, UNIT_TIME, b1, sizeof b1));
 	fprintf(out, ", %s wall\n", fmt(st->wall, UNIT_TIME, b1, sizeof b1));
 	fprintf(out, "  steps       %ld accepted, %ld rejected\n", st->steps, st->rejected);
@@ -563,9 +577,87 @@ print_summary(FILE *out, const struct sim *s)
 	if (arc_thinned(a) > 0)
 		fprintf(out, ", thinned %d times (past run.max_samples = %ld)",
 		        arc_thinned(a), sc->run.max_samples);
+	if (arc_skipped(a) > 0)
+		fprintf(out, ", %ld flow intervals thinned out with their jumps", arc_skipped(a));
 	else
 		fprintf(out, ", not thinned");
 	fprintf(out, "\n");
+}
+
+/* ------------------------------------------------------------------ */
+/* The run: signals and progress                                       */
+
+static volatile sig_atomic_t got_signal;
+
+static void
+on_signal(int sig)
+{
+	got_signal = sig;
+}
+
+/* Catches sig once, unless it was ignored on entry; *old to restore. */
+static void
+watch_signal(int sig, struct sigaction *old)
+{
+	struct sigaction sa;
+
+	memset(&sa, 0, sizeof sa);
+	sigaction(sig, NULL, old);
+	if (old->sa_handler == SIG_IGN)
+		return;
+	sa.sa_handler = on_signal;
+	sa.sa_flags = SA_RESETHAND;
+	sigemptyset(&sa.sa_mask);
+	sigaction(sig, &sa, NULL);
+}
+
+static double
+wall_seconds(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/*
+ * Runs s in slices of 0.1 s to its end or to a caught signal (*sig).
+ * Past one second, standard error a terminal, a progress line there,
+ * rewritten in place four times a second and erased at the end.
+ */
+static int
+run_watched(struct sim *s, int *sig)
+{
+	const double T = sim_scene(s)->run.T;
+	const int tty = isatty(STDERR_FILENO);
+	double start = wall_seconds(), shown = 0;
+	int rc = HB_OK;
+
+	got_signal = 0;
+	while (got_signal == 0) {
+		double now;
+
+		rc = sim_advance(s, 0, 0.1);
+		if (rc != HB_OK || sim_end(s) != SIM_RUNNING)
+			break;
+		now = wall_seconds();
+		if (tty && now - start > 1.0 && now - shown >= 0.25) {
+			const struct arc_sample *p = arc_last(sim_arc(s));
+			char tb[32], Tb[32];
+
+			fmt(p != NULL ? p->t : 0, UNIT_TIME, tb, sizeof tb);
+			fmt(T, UNIT_TIME, Tb, sizeof Tb);
+			fprintf(stderr, "\r" PROG ": t = %s of %s (%.0f%%), j = %ld, %zu collisions, "
+			        "%.0f s; Ctrl-C stops and writes\033[K", tb, Tb,
+			        p != NULL && T > 0 ? 100 * p->t / T : 0.0,
+			        p != NULL ? p->j : 0L, sim_ncollisions(s), now - start);
+			shown = now;
+		}
+	}
+	if (shown > 0)
+		fprintf(stderr, "\r\033[K");
+	*sig = got_signal;
+	return rc;
 }
 
 /* ------------------------------------------------------------------ */
@@ -574,10 +666,11 @@ int
 batch_run(const struct batch_options *o)
 {
 	struct scene sc;
-	char path[1024], msg[1024], scene_out[1100];
+	char path[1024], msg[1024];
 	struct collision live;
 	struct sim *s;
-	int status = 0, have_live, rc;
+	struct sigaction old_term, old_int;
+	int status = 0, have_live, rc, sig = 0;
 	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
 	/* The files to export; "-" goes to stdout after them. */
 	const char *trace_file = trace_out ? NULL : o->trace;
@@ -611,14 +704,30 @@ batch_run(const struct batch_options *o)
 		        "expected two different paths\n", trace_file);
 		return 2;
 	}
+	msg[0] = '\0';
+	if ((trace_file != NULL || coll_file != NULL) &&
+	    csv_export_check(trace_file, coll_file, path, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": export: %s\n", msg);
+		return 2;
+	}
 
+	/*
+	 * SIGTERM and SIGINT end the run, and what was computed is reported
+	 * and written, as after a numerical failure; a second one ends the
+	 * process (SA_RESETHAND).  A signal ignored on entry (nohup, a
+	 * background job of a script) stays ignored.
+	 */
+	watch_signal(SIGTERM, &old_term);
+	watch_signal(SIGINT, &old_int);
 	msg[0] = '\0';
 	s = sim_new(&sc, msg, sizeof msg);
 	if (s == NULL) {
 		fprintf(stderr, PROG ": %s: %s\n", path, msg[0] ? msg : "cannot start the run");
+		sigaction(SIGTERM, &old_term, NULL);
+		sigaction(SIGINT, &old_int, NULL);
 		return 2;
 	}
-	rc = sim_run(s);
+	rc = run_watched(s, &sig);
 	if (sim_end(s) == SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE))
 		status = 1;
 
@@ -630,7 +739,7 @@ batch_run(const struct batch_options *o)
 	}
 	if (o->jumps)
 		print_jumps(out, sim_arc(s));
-	print_summary(out, s);
+	print_summary(out, s, sig);
 
 	if (o->check) {
 		msg[0] = '\0';
@@ -647,9 +756,51 @@ batch_run(const struct batch_options *o)
 				status = 1;
 		}
 	}
-	fflush(out);
+	{
+		/*
+		 * The physics (check.h): a failure is a warning, and exit 1 with
+		 * --check; a pass is said only when --check asks.
+		 */
+		struct check_physics ph;
+
+		msg[0] = '\0';
+		if (check_physics(sim_scene(s), sim_arc(s), &ph, msg, sizeof msg) == HB_OK) {
+			if (o->check)
+				fprintf(out, "  check       physics: ok (work-energy residual %.2g of the "
+				        "energy scale, %.2g x the tolerance %.2g; %zu contacts: W and e "
+				        "within what %s allows)\n", ph.resid, ph.resid / ph.tol, ph.tol,
+				        ph.ncontacts, sim_scene(s)->law->name);
+		} else {
+			fprintf(out, "  %-11s physics: %s: %s\n", o->check ? "check" : "warning",
+			        o->check ? "FAILED" : "the run breaks what it must obey", msg);
+			if (out != stderr)
+				fprintf(stderr, PROG ": %s: the computed run fails %d physics "
+				        "check%s (see 'physics' in the report); a tighter run.rtol and "
+				        "run.atol, or another run.stepper, should fix it\n",
+				        o->check ? "check failed" : "warning", ph.failed,
+				        ph.failed == 1 ? "" : "s");
+			if (o->check && status == 0)
+				status = 1;
+		}
+		if (ph.nzero > 0)
+			fprintf(out, "  note        collision %ld%s began at zero approach velocity "
+			        "(v_i = %.3g m/s, an impact energy below what the tolerance "
+			        "resolves): e = -v(t_s)/v_i means nothing there (\"-\" when v_i = 0); "
+			        "what separates the bodies is the applied force\n", ph.zero_at,
+			        ph.nzero > 1 ? " and others" : "", ph.vi_zero);
+	}
+	/* Now: the messages below come after the report. */
+	if (out == stdout) {
+		if (batch_flush_stdout() != 0)
+			status = 2;
+	} else {
+		fflush(out);
+	}
 	/* After the report, so that it is the last thing a terminal shows. */
-	if (status == 1 && sim_end(s) == SIM_END_FAIL)
+	if (sig != 0)
+		fprintf(stderr, PROG ": interrupted by %s: what was computed is reported "
+		        "and written\n", sig == SIGINT ? "SIGINT" : "SIGTERM");
+	else if (status == 1 && sim_end(s) == SIM_END_FAIL)
 		fprintf(stderr, PROG ": the run failed: %s\n",
 		        sim_errmsg(s)[0] ? sim_errmsg(s) : status_str(rc));
 	else if (rc != HB_OK && rc != HB_EDONE)
@@ -660,19 +811,20 @@ batch_run(const struct batch_options *o)
 	 * ends the process by SIGPIPE, and the files are written by then.
 	 */
 	if (trace_file != NULL || coll_file != NULL) {
+		struct csv_export_report rep;
+
 		msg[0] = '\0';
-		scene_out[0] = '\0';
-		if (csv_export(s, trace_file, coll_file, scene_out, sizeof scene_out,
-		               msg, sizeof msg) != HB_OK) {
+		if (csv_export_files(s, trace_file, coll_file, path, &rep, msg,
+		                     sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": export failed: %s\n", msg);
 			status = 2;
 		} else {
 			if (trace_file != NULL)
-				fprintf(stderr, "wrote %s\n", trace_file);
+				print_wrote(trace_file, &rep.target[0]);
 			if (coll_file != NULL)
-				fprintf(stderr, "wrote %s\n", coll_file);
-			if (scene_out[0])
-				fprintf(stderr, "wrote %s\n", scene_out);
+				print_wrote(coll_file, &rep.target[1]);
+			if (rep.scene[0])
+				print_wrote(rep.scene, &rep.target[2]);
 		}
 	}
 	if (trace_out || coll_out) {
@@ -687,9 +839,32 @@ batch_run(const struct batch_options *o)
 			fprintf(stderr, PROG ": export failed: standard output: %s\n", msg);
 			status = 2;
 		}
+		clearerr(stdout);   /* said here (or quiet on EPIPE): not again in main */
 	}
 	sim_free(s);
-	return status;
+	sigaction(SIGTERM, &old_term, NULL);
+	sigaction(SIGINT, &old_int, NULL);
+	if (sig == 0)
+		sig = got_signal;   /* caught while reporting: the report is whole */
+	/* An interrupted run: 128 + the signal, as a shell reports a kill. */
+	return sig != 0 ? 128 + sig : status;
+}
+
+int
+batch_flush_stdout(void)
+{
+	int e = 0;
+
+	errno = 0;
+	if (fflush(stdout) != 0)
+		e = errno != 0 ? errno : EIO;
+	else if (ferror(stdout))
+		e = EIO;
+	clearerr(stdout);
+	if (e == 0 || e == EPIPE)
+		return 0;
+	fprintf(stderr, PROG ": write error on standard output: %s\n", strerror(e));
+	return 2;
 }
 
 /* ------------------------------------------------------------------ */
@@ -732,31 +907,25 @@ batch_list_laws(void)
 
 	for (l = law_list(); *l != NULL; l++) {
 		const struct law_type *law = *l;
-		double def[LAW_MAX_PARAMS], p, nn;
 		int i;
 
-		law_defaults(law, def);
-		p = law_exponent_p(law, def);
-		nn = law_exponent_n(law, def);
 		printf("%s  %s\n", law->name, law->title);
 		print_wrapped(stdout, "    ", law->description);
 		printf("    internal states n_z = %d; parameters (units for the default "
 		       "exponents):\n", law->n_z);
 		for (i = 0; i < law->n_params; i++) {
 			const struct law_param *pp = &law->params[i];
-			struct unit_dim d = units_resolve(pp->dim, p, nn);
-			char unit[48], range[80], dv[64];
+			struct scene_keyinfo ki; /* the typed row: unit, range, default */
+			char dv[64];
 
-			units_dim_str(d, unit, sizeof unit);
-			struct unit_range rr = law_param_range(pp);
-			units_range_str(&rr, NULL, range, sizeof range);
-			fmt(pp->def, d, dv, sizeof dv);
+			scene_law_param_info(law, i, &ki);
+			fmt(ki.number, ki.dim, dv, sizeof dv);
 			printf("      %-8s %-14s range %-16s default %s%s\n",
-			       pp->name, unit[0] ? unit : "(1)", range, dv,
+			       pp->name, ki.unit[0] ? ki.unit : "(1)", ki.range, dv,
 			       (pp->flags & LAW_PARAM_STIFFNESS) && law->k_hertz != NULL
 			           ? " (derived from k_H when both bodies have materials)" : "");
-			if (pp->help != NULL && pp->help[0])
-				printf("      %-8s %s\n", "", pp->help);
+			if (ki.help[0])
+				printf("      %-8s %s\n", "", ki.help);
 		}
 		printf("\n");
 	}

@@ -9,6 +9,8 @@
  *        computed is still printed and written;
  *     2  bad input: a preset that does not resolve or load, a bad --set, an
  *        export path that cannot be written.  Nothing is written then.
+ *        Also output that could not be written (an export, the report):
+ *        what could be written is, and the failure is said on stderr.
  */
 #ifndef HYBOUNCE_CLI_BATCH_H
 #define HYBOUNCE_CLI_BATCH_H
@@ -35,5 +37,13 @@ batch_list_presets(void);
 /* --list-laws: each law with its parameters (unit, range, default). */
 int
 batch_list_laws(void);
+
+/*
+ * Flushes standard output and says on stderr why it failed, if it did
+ * ("write error on standard output: REASON"), clearing its error.  Returns
+ * 0, or 2 after the message.  A reader gone away (EPIPE) is no failure.
+ */
+int
+batch_flush_stdout(void);
 
 #endif

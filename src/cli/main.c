@@ -7,15 +7,19 @@
  *     hybounce --list-presets | --list-laws | --help | --version
  *
  * Exit status: 0 success; 1 the run failed numerically; 2 bad input
- * (unknown option, bad preset, bad --set, unwritable export path).
+ * (unknown option, bad preset, bad --set, unwritable export path) or
+ * output that could not be written (standard output too: finish()).
  * Messages from the explorer are printed here, after it has restored the
  * terminal.
  */
+#include <errno.h>
+#include <fcntl.h>
 #include <getopt.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "hybounce/status.h"
 #include "app.h"
@@ -86,7 +90,8 @@ DEFAULT_PRESET ")\n"
 "\n"
 "PRESET is a name (presets/NAME.preset, searched in $HYBOUNCE_PRESETS,\n"
 "./presets and the installed presets) or a path to a .preset file.\n"
-"Exit status: 0 success, 1 the run failed numerically, 2 bad input.\n"
+"Exit status: 0 success, 1 the run failed numerically, 2 bad input or output\n"
+"that could not be written.\n"
 "See hybounce(1).\n");
 }
 
@@ -106,8 +111,39 @@ bad_usage(const char *fmt, ...)
 	return 2;
 }
 
+/*
+ * Keeps descriptors 0, 1 and 2 taken: one closed by the caller gets
+ * /dev/null read-only, so that a file the program opens cannot become its
+ * standard output and a write to a closed stdout still fails (EBADF).
+ */
+static void
+hold_std_fds(void)
+{
+	for (int fd = 0; fd <= 2; fd++)
+		if (fcntl(fd, F_GETFD) == -1 && errno == EBADF) {
+			int nfd = open("/dev/null", O_RDONLY);
+
+			if (nfd >= 0 && nfd != fd) {
+				dup2(nfd, fd);
+				close(nfd);
+			}
+		}
+}
+
+static int hybounce_main(int argc, char **argv);
+
 int
 main(int argc, char **argv)
+{
+	hold_std_fds();
+	int status = hybounce_main(argc, argv);
+
+	/* Output that could not all be written is exit 2 (batch.h). */
+	return batch_flush_stdout() != 0 ? 2 : status;
+}
+
+static int
+hybounce_main(int argc, char **argv)
 {
 	struct batch_options bo;
 	struct app_options ao;

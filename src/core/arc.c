@@ -8,10 +8,16 @@
  *    sample indices of interval k and cover the samples without gap;
  *  - jp[] lists the jumps in order; jump k leads from interval j to j + 1
  *    and both of its samples are present;
- *  - n <= max(max_samples, number of protected samples): when n reaches the
- *    bound, the interior samples of the older three quarters are thinned by
- *    half.  First and last samples of an interval are never removed, so
- *    every jump survives and rewind reaches t = 0.
+ *  - memory: the samples, intervals and jump records together hold at most
+ *    what max_samples samples would.  At the bound the interior samples of
+ *    the older three quarters are thinned by half; when that frees little
+ *    (an arc made mostly of jumps, whose first and last samples are kept),
+ *    every other whole flow interval of the older three quarters goes too,
+ *    with the jumps into and out of it.  The first interval (t = 0, so that
+ *    rewind reaches it) and the interval in progress are never removed.
+ *    skipped counts the intervals removed: where j steps by more than one
+ *    between two samples, that many were thinned out (check.c checks the
+ *    count).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -28,6 +34,7 @@ struct arc {
 	size_t nj, jcap;
 	size_t max;
 	int thinned;
+	long skipped;     /* flow intervals removed by thin_jumps() */
 };
 
 enum { ARC_CHUNK = 4096 };
@@ -122,16 +129,65 @@ thin(struct arc *a, size_t upto)
 	reindex(a); /* cannot fail: the index only shrinks */
 }
 
+/*
+ * Removes every other whole flow interval among those that end before
+ * sample upto, never the first nor the last, with the jump records into
+ * and out of them.  The interval index is rebuilt afterwards.
+ */
+static void
+thin_jumps(struct arc *a, size_t upto)
+{
+	size_t k, i, w = 0, r, kw;
+
+	for (k = 0; k < a->niv; k++) {
+		const struct arc_interval *iv = &a->iv[k];
+
+		if (k % 2 == 1 && k + 1 < a->niv && iv->last < upto) {
+			a->skipped++;
+			continue;
+		}
+		for (i = iv->first; i <= iv->last; i++)
+			a->s[w++] = a->s[i];
+	}
+	a->n = w;
+	a->thinned++;
+	reindex(a);
+	/* Keep a jump record when both intervals it joins are kept. */
+	for (r = 0, kw = 0, k = 0; r < a->nj; r++) {
+		long j = a->jp[r].j;
+
+		while (k < a->niv && a->iv[k].j < j)
+			k++;
+		if (k + 1 < a->niv && a->iv[k].j == j && a->iv[k + 1].j == j + 1)
+			a->jp[kw++] = a->jp[r];
+	}
+	a->nj = kw;
+}
+
+/* Bytes in use: samples, intervals and jump records. */
+static size_t
+used(const struct arc *a)
+{
+	return a->n * sizeof *a->s + a->niv * sizeof *a->iv + a->nj * sizeof *a->jp;
+}
+
+/* Thins until the arc is within its bound; 0 if nothing more can go. */
+static int
+make_room(struct arc *a, size_t bound, size_t upto)
+{
+	size_t before = used(a);
+
+	thin(a, upto);
+	if (used(a) > before - before / 8)   /* mostly jumps: thin them too */
+		thin_jumps(a, upto < a->n ? upto : a->n);
+	return used(a) < before && used(a) >= bound;
+}
+
 int
 arc_push(struct arc *a, const struct arc_sample *s)
 {
-	if (a->n >= a->max) {
-		size_t before = a->n;
-
-		thin(a, a->n - a->n / 4);
-		if (a->n > before - before / 8) /* mostly jumps: let it grow */
-			a->max *= 2;
-	}
+	if (used(a) + sizeof *s >= a->max * sizeof *s)
+		make_room(a, 0, a->n - a->n / 4);
 	if (grow((void **)&a->s, &a->cap, a->n + 1, sizeof *a->s))
 		return HB_ENOMEM;
 	if (a->niv == 0 || a->iv[a->niv - 1].j != s->j) {
@@ -165,6 +221,10 @@ arc_truncate(struct arc *a, size_t keep)
 		return;
 	a->n = keep;
 	reindex(a);
+	/* The intervals thinned out that are still before the end. */
+	a->skipped = 0;
+	for (size_t k = 1; k < a->niv; k++)
+		a->skipped += a->iv[k].j - a->iv[k - 1].j - 1;
 	jlast = a->n ? a->s[a->n - 1].j : -1;
 	while (a->nj > 0 && a->jp[a->nj - 1].j >= jlast)
 		a->nj--;
@@ -174,13 +234,8 @@ void
 arc_set_max(struct arc *a, size_t max_samples)
 {
 	a->max = max_samples < 1024 ? 1024 : max_samples;
-	while (a->n > a->max) {
-		size_t before = a->n;
-
-		thin(a, a->n);
-		if (a->n == before)
-			break;
-	}
+	while (used(a) > a->max * sizeof *a->s && make_room(a, a->max * sizeof *a->s, a->n))
+		;
 }
 
 size_t
@@ -289,6 +344,12 @@ int
 arc_thinned(const struct arc *a)
 {
 	return a->thinned;
+}
+
+long
+arc_skipped(const struct arc *a)
+{
+	return a->skipped;
 }
 
 size_t

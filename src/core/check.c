@@ -6,6 +6,8 @@
  * reduced phases, so that it checks them.
  */
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "hybounce/check.h"
@@ -38,6 +40,7 @@ check_solution_pair(const struct scene *sc, const struct arc *arc, char *msg, si
 {
 	size_t i, len = arc_len(arc);
 	int nz = sc->law->n_z, k;
+	long skipped = 0;   /* flow intervals thinned out so far */
 
 	if (len == 0)
 		return status_set(msg, n, HB_EINVAL, "empty arc");
@@ -73,6 +76,23 @@ check_solution_pair(const struct scene *sc, const struct arc *arc, char *msg, si
 						return status_set(msg, n, HB_EINVAL,
 						                  "sample %zu: z_c is not reset by the jump", i + 1);
 				continue;
+			} else if (b->j > a->j + 1 && skipped + (b->j - a->j - 1) <= arc_skipped(arc)) {
+				/*
+				 * Flow intervals thinned out (arc.h): a is still a
+				 * pre-jump state in D, b a post-jump one (x_c = 0,
+				 * z_c = 0, q_c alternating), later or at once.
+				 */
+				skipped += b->j - a->j - 1;
+				if (!(b->t >= a->t) || !check_in_D(sc, a) || b->xc != 0.0 ||
+				    b->q != (int)((a->q + b->j - a->j) % 2))
+					return status_set(msg, n, HB_EINVAL,
+					                  "sample %zu: the jumps thinned out between j = %ld "
+					                  "and j = %ld do not join", i, a->j, b->j);
+				for (k = 0; k < nz; k++)
+					if (b->z[k] != 0.0)
+						return status_set(msg, n, HB_EINVAL,
+						                  "sample %zu: z_c is not reset by the jump", i + 1);
+				continue;
 			} else {
 				return status_set(msg, n, HB_EINVAL, "sample %zu: j goes from %ld to %ld",
 				                  i, a->j, b->j);
@@ -83,6 +103,9 @@ check_solution_pair(const struct scene *sc, const struct arc *arc, char *msg, si
 			                  "sample %zu (t = %.17g, j = %ld, q_c = %d) is not in C",
 			                  i, a->t, a->j, a->q);
 	}
+	if (skipped != arc_skipped(arc))
+		return status_set(msg, n, HB_EINVAL, "%ld flow intervals are missing, but the arc "
+		                  "thinned out %ld", skipped, arc_skipped(arc));
 	return 0;
 }
 
@@ -195,4 +218,177 @@ check_euler(const struct scene *sc, const struct arc *arc, size_t k, double *ord
 	}
 	*order = log2(e_prev / e);
 	return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* Physics: work-energy identity, passivity, restitution (check.h)     */
+
+/*
+ * How the registered laws handle energy.  Every law so far is passive
+ * (Bouc-Wen with |gamma| <= beta, which the laws' check enforces, is); the
+ * elastic ones dissipate nothing either.  A law not listed is not checked
+ * for passivity.
+ */
+static const struct {
+	const char *name;
+	int passive, elastic;
+} law_energy[] = {
+	{ "shccl", 1, 0 }, { "bwshccl", 1, 0 }, { "bwmcl", 1, 0 },
+	{ "hertz", 1, 1 }, { "linear", 1, 1 },
+};
+
+/* Appends one failure to msg, "; "-separated. */
+static void append_msg(char *msg, size_t n, const char *fmt_, ...)
+	__attribute__((format(printf, 3, 4)));
+
+static void
+append_msg(char *msg, size_t n, const char *fmt_, ...)
+{
+	size_t l;
+	va_list ap;
+
+	if (msg == NULL || n == 0)
+		return;
+	l = strlen(msg);
+	if (l > 0 && l + 3 < n) {
+		memcpy(msg + l, "; ", 3);
+		l += 2;
+	}
+	if (l + 1 < n) {
+		va_start(ap, fmt_);
+		vsnprintf(msg + l, n - l, fmt_, ap);
+		va_end(ap);
+	}
+}
+
+int
+check_physics(const struct scene *sc, const struct arc *arc, struct check_physics *r,
+              char *msg, size_t n)
+{
+	const double m = sc->d.m, K = CHECK_PHYS_FACTOR;
+	size_t i, k, len = arc_len(arc), nint = arc_nintervals(arc);
+	double v0, escale = 0.0, eworst = 0.0;
+	long ci = 0;
+
+	memset(r, 0, sizeof *r);
+	r->tol = fmax(sc->run.rtol, sc->run.atol);
+	r->wmin = INFINITY;
+	r->wmin_at = r->emax_at = r->zero_at = -1;
+	r->emax = -INFINITY;
+	if (msg != NULL && n > 0)
+		msg[0] = '\0';
+	for (i = 0; i < sizeof law_energy / sizeof law_energy[0]; i++)
+		if (strcmp(sc->law->name, law_energy[i].name) == 0) {
+			r->passive = law_energy[i].passive;
+			r->elastic = law_energy[i].elastic;
+		}
+	if (len == 0 || !(m > 0.0) || !isfinite(m))
+		return 0;
+
+	/* the work-energy identity at every sample */
+	v0 = arc_at(arc, 0)->v;
+	for (i = 0; i < len; i++) {
+		const struct arc_sample *a = arc_at(arc, i);
+
+		escale = fmax(escale, fmax(0.5 * m * a->v * a->v, fmax(fabs(a->Ee), fabs(a->Wc))));
+	}
+	r->escale = escale;
+	for (i = 0; i < len && escale > 0.0; i++) {
+		const struct arc_sample *a = arc_at(arc, i);
+		/* (v - v0)(v + v0) keeps the difference exact when v is near v0 */
+		double res = fabs(0.5 * m * (a->v - v0) * (a->v + v0) - (a->Ee + a->Wc)) / escale;
+
+		if (!(res <= eworst)) {  /* NaN counts as the worst */
+			eworst = isnan(res) ? INFINITY : res;
+			r->resid_at = i;
+		}
+	}
+	r->resid = eworst;
+	if (!(r->resid <= K * r->tol)) {
+		const struct arc_sample *a = arc_at(arc, r->resid_at);
+
+		r->failed++;
+		append_msg(msg, n, "work-energy identity: the residual of m v^2/2 - m v0^2/2 = "
+		           "E_e + W_c reaches %.3g of the energy scale %.3g J (t = %.9g s, "
+		           "j = %ld): the error estimate is %.3g times the tolerance %.3g asked "
+		           "(at most %g accepted)", r->resid, escale, a->t, a->j,
+		           r->resid / r->tol, r->tol, K);
+	}
+
+	/* each completed contact: the contact interval followed by a jump */
+	for (k = 0; k + 1 < nint; k++) {
+		const struct arc_interval *iv = arc_interval_at(arc, k);
+		const struct arc_sample *a0, *a1;
+		double Ei, Eec, eref, w, e, ebound, dev;
+
+		if (iv->q != 1)
+			continue;
+		a0 = arc_at(arc, iv->first);
+		a1 = arc_at(arc, iv->last);
+		Ei = 0.5 * m * a0->v * a0->v;
+		Eec = a1->Ee - a0->Ee;
+		eref = fmax(Ei, fabs(Eec));
+		if (!(eref > 0.0))
+			eref = escale;
+		r->ncontacts++;
+		if (r->passive && eref > 0.0) {
+			/* dissipative: W / E_i, smallest; elastic: -|W| / E_i */
+			w = r->elastic ? -fabs(a1->W) / eref : a1->W / eref;
+			if (!(w >= r->wmin)) {
+				r->wmin = isnan(w) ? -INFINITY : w;
+				r->wmin_at = ci;
+				r->W_at = a1->W;
+			}
+		}
+		/*
+		 * An impact energy below what the run resolves (v_i = 0, or a
+		 * round-off v_i like -1e-285 m/s): e = -v(t_s)/v_i says nothing.
+		 */
+		if (a0->v < 0.0 && Ei > r->tol * escale) {
+			e = -a1->v / a0->v;
+			ebound = sqrt(1.0 + fmax(Eec, 0.0) / Ei);
+			/* elastic: e = ebound exactly, so an e below it is an error too */
+			dev = r->elastic ? fabs(e - ebound) : e - ebound;
+			if (r->passive && !(dev <= r->emax)) {
+				r->emax = isnan(dev) ? INFINITY : dev;
+				r->emax_at = ci;
+				r->e_at = e;
+				r->e_bound = ebound;
+			}
+		} else {
+			if (r->nzero++ == 0) {
+				r->zero_at = ci;
+				r->vi_zero = a0->v;
+			}
+		}
+		ci++;
+	}
+	if (r->passive && r->wmin_at >= 0 && !(r->wmin >= -K * r->tol)) {
+		r->failed++;
+		if (r->elastic)
+			append_msg(msg, n, "elastic law: collision %ld has W = %.6g J, %.3g of its "
+			           "impact energy, where %s dissipates nothing: the error estimate is "
+			           "%.3g times the tolerance %.3g asked (at most %g accepted)",
+			           r->wmin_at, r->W_at, -r->wmin, sc->law->name, -r->wmin / r->tol,
+			           r->tol, K);
+		else
+			append_msg(msg, n, "passivity: collision %ld returns energy, W = %.6g J "
+			           "(%.3g of its impact energy), where %s can only absorb it "
+			           "(W >= 0 up to %g x the tolerance %.3g)", r->wmin_at, r->W_at,
+			           r->wmin, sc->law->name, K, r->tol);
+	}
+	if (r->passive && r->emax_at >= 0 && !(r->emax <= K * r->tol)) {
+		r->failed++;
+		if (r->elastic)
+			append_msg(msg, n, "restitution: collision %ld has e = %.9g where the elastic "
+			           "%s gives exactly %.9g: the error estimate is %.3g times the "
+			           "tolerance %.3g asked (at most %g accepted)", r->emax_at, r->e_at,
+			           sc->law->name, r->e_bound, r->emax / r->tol, r->tol, K);
+		else
+			append_msg(msg, n, "restitution: collision %ld has e = %.9g, above the %.9g "
+			           "that %s allows (it cannot give energy back; the applied force's "
+			           "work over the contact included), beyond %g x the tolerance %.3g",
+			           r->emax_at, r->e_at, r->e_bound, sc->law->name, K, r->tol);
+	}
+	return r->failed ? HB_EINVAL : 0;
 }

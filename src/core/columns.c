@@ -2,12 +2,13 @@
  * columns.c - the table of collision columns (see columns.h), and its
  * reference text for the man page and the README.
  */
-#include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "hybounce/columns.h"
+
+#include "textbuf.h"
 
 #define V(f) 0, offsetof(struct collision, f)
 #define BOTH (COLUMN_BATCH | COLUMN_EXPLORER)
@@ -48,59 +49,37 @@ collision_value(const struct collision *c, const struct collision_column *col)
 	return *(const double *)((const char *)c + col->off);
 }
 
-struct dout {
-	char *buf;
-	size_t n, len;
-};
-
-static void
-dprintf_(struct dout *o, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-
-static void
-dprintf_(struct dout *o, const char *fmt, ...)
-{
-	va_list ap;
-	size_t room = o->len < o->n ? o->n - o->len : 0;
-	int k;
-
-	va_start(ap, fmt);
-	k = vsnprintf(room ? o->buf + o->len : NULL, room, fmt, ap);
-	va_end(ap);
-	if (k > 0)
-		o->len += (size_t)k;
-}
-
 size_t
 collision_columns_mdoc(char *buf, size_t n)
 {
-	struct dout o = { buf, n, 0 };
+	struct textbuf o = { buf, n, 0 };
 
 	if (buf != NULL && n > 0)
 		buf[0] = '\0';
-	dprintf_(&o, ".Bl -tag -width \"F_c_max\" -compact\n");
+	textbuf_printf(&o, ".Bl -tag -width \"F_c_max\" -compact\n");
 	for (int i = 0; i < collision_ncolumns; i++) {
 		const struct collision_column *c = &collision_columns[i];
-		dprintf_(&o, ".It Li %s\n%s%s%s\n", c->name, c->meaning, c->unit[0] ? ", " : "",
+		textbuf_printf(&o, ".It Li %s\n%s%s%s\n", c->name, c->meaning, c->unit[0] ? ", " : "",
 		    c->unit);
 	}
-	dprintf_(&o, ".El\n");
+	textbuf_printf(&o, ".El\n");
 	return o.len;
 }
 
 size_t
 collision_columns_markdown(char *buf, size_t n)
 {
-	struct dout o = { buf, n, 0 };
+	struct textbuf o = { buf, n, 0 };
 
 	if (buf != NULL && n > 0)
 		buf[0] = '\0';
-	dprintf_(&o, "| column | meaning | unit |\n|---|---|---|\n");
+	textbuf_printf(&o, "| column | meaning | unit |\n|---|---|---|\n");
 	for (int i = 0; i < collision_ncolumns; i++) {
 		const struct collision_column *c = &collision_columns[i];
-		dprintf_(&o, "| `%s` | ", c->name);
+		textbuf_printf(&o, "| `%s` | ", c->name);
 		for (const char *m = c->meaning; *m; m++) /* a '|' would end the cell */
-			dprintf_(&o, "%s%c", *m == '|' ? "\\" : "", *m);
-		dprintf_(&o, " | %s |\n", c->unit[0] ? c->unit : "–");
+			textbuf_printf(&o, "%s%c", *m == '|' ? "\\" : "", *m);
+		textbuf_printf(&o, " | %s |\n", c->unit[0] ? c->unit : "–");
 	}
 	return o.len;
 }

@@ -7,115 +7,31 @@
  * that strtod() gives back the same doubles; an unknown value (NaN, e.g.
  * t_f of the last collision) is an empty field.
  *
- * Atomicity.  Each file is written to PATH.tmpXXXXXX in its own folder,
- * flushed to disk, and only then renamed over PATH.  csv_export() writes
- * every temporary file first and renames them only when all are complete;
- * on any failure it removes the temporary files, so no new file is left
- * and an existing file is untouched.  The renames themselves are not one
- * atomic step: should a later one fail, the earlier ones are undone, from
- * hard links to the replaced files made just before (a file that did not
- * exist is removed).
+ * Files.  Every file goes through the atomic writer (atomic.h): a set of
+ * files written to temporary names and renamed together, a device or FIFO
+ * written in place, a symbolic link kept and written through.  An export
+ * never overwrites the preset being run nor a shipped preset (one in the
+ * preset folders), and the scene is saved beside the first CSV that is a
+ * file, with the export's identifier, which is also every file's
+ * modification time.
  *
  * The same row writers serve the files and the streams (csv_stream_*),
  * so a CSV on stdout is byte for byte the file's.  They check the stream
  * after every row and stop at the first failed write.
  */
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
+#include "hybounce/atomic.h"
 #include "hybounce/columns.h"
 #include "hybounce/csv.h"
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
-
-/* A file being written under a temporary name. */
-struct tmpfile {
-	char path[1024];
-	char tmp[1040];
-	FILE *f;
-	int open;
-};
-
-static int
-tmp_open(struct tmpfile *t, const char *path, char *msg, size_t n)
-{
-	int fd;
-	mode_t um;
-
-	memset(t, 0, sizeof *t);
-	if (strlen(path) >= sizeof t->path)
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(ENAMETOOLONG));
-	strcpy(t->path, path);
-	snprintf(t->tmp, sizeof t->tmp, "%s.tmpXXXXXX", path);
-	fd = mkstemp(t->tmp);
-	if (fd < 0)
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
-	um = umask(0);
-	umask(um);
-	(void)fchmod(fd, 0666 & ~um);
-	t->f = fdopen(fd, "w");
-	if (t->f == NULL) {
-		int e = errno;
-		close(fd);
-		unlink(t->tmp);
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
-	}
-	t->open = 1;
-	return HB_OK;
-}
-
-/* Flushes and closes the temporary file; on failure removes it. */
-static int
-tmp_close(struct tmpfile *t, char *msg, size_t n)
-{
-	int e = 0;
-
-	if (ferror(t->f))
-		e = errno ? errno : EIO;
-	if (fflush(t->f) != 0 && e == 0)
-		e = errno;
-	if (e == 0 && fsync(fileno(t->f)) != 0)
-		e = errno;
-	if (fclose(t->f) != 0 && e == 0)
-		e = errno;
-	t->f = NULL;
-	if (e != 0) {
-		unlink(t->tmp);
-		t->open = 0;
-		return status_set(msg, n, HB_EIO, "%s: %s", t->path, strerror(e));
-	}
-	return HB_OK;
-}
-
-/* Removes the temporary file (closing it first if still open). */
-static void
-tmp_discard(struct tmpfile *t)
-{
-	if (t->f != NULL)
-		fclose(t->f);
-	t->f = NULL;
-	if (t->open)
-		unlink(t->tmp);
-	t->open = 0;
-}
-
-static int
-tmp_commit(struct tmpfile *t, char *msg, size_t n)
-{
-	if (rename(t->tmp, t->path) != 0) {
-		int e = errno;
-		unlink(t->tmp);
-		t->open = 0;
-		return status_set(msg, n, HB_EIO, "%s: %s", t->path, strerror(e));
-	}
-	t->open = 0;
-	return HB_OK;
-}
 
 /* Writes one field, quoted as RFC 4180 asks when it needs to be. */
 static void
@@ -245,18 +161,16 @@ typedef int (*rows_fn)(FILE *, const struct sim *);
 static int
 write_one(const char *path, const struct sim *s, rows_fn fn, char *msg, size_t n)
 {
-	struct tmpfile t;
-	int st = tmp_open(&t, path, msg, n), e;
+	struct atomic_set set;
+	FILE *f;
 
-	if (st != HB_OK)
-		return st;
+	atomic_begin(&set);
+	f = atomic_add(&set, path, msg, n);
+	if (f == NULL)
+		return HB_EIO;
 	errno = 0;
-	if ((e = fn(t.f, s)) != 0)
-		errno = e;      /* for tmp_close's message */
-	st = tmp_close(&t, msg, n);
-	if (st == HB_OK)
-		st = tmp_commit(&t, msg, n);
-	return st;
+	(void)fn(f, s);     /* a failed write shows at commit */
+	return atomic_commit(&set, msg, n);
 }
 
 int
@@ -318,88 +232,178 @@ scene_path(const char *path, char *out, size_t n)
 	return 0;
 }
 
+/* 1 if a and b are the same existing file. */
+static int
+same_file(const char *a, const char *b)
+{
+	struct stat sa, sb;
+
+	return a != NULL && b != NULL && stat(a, &sa) == 0 && stat(b, &sb) == 0 &&
+	       sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+/* 1 if path is an existing .preset file in one of the preset folders. */
+static int
+is_shipped_preset(const char *path)
+{
+	char dir[4096], rdir[4096], rp[4096];
+	const char *slash;
+	size_t l = strlen(path);
+	struct stat st;
+
+	if (l < 7 || strcmp(path + l - 7, ".preset") != 0 || stat(path, &st) != 0 ||
+	    realpath(path, rp) == NULL)
+		return 0;
+	slash = strrchr(rp, '/');
+	if (slash == NULL)
+		return 0;
+	snprintf(dir, sizeof dir, "%.*s", (int)(slash - rp), rp);
+	for (const char *const *d = preset_dirs(); d != NULL && *d != NULL; d++)
+		if (realpath(*d, rdir) != NULL && strcmp(rdir, dir) == 0)
+			return 1;
+	return 0;
+}
+
+/* Refuses a target that is the preset being run or a shipped preset. */
+static int
+protect(const char *path, const char *what, const char *run_preset, char *msg, size_t n)
+{
+	if (same_file(path, run_preset))
+		return status_set(msg, n, HB_EINVAL,
+		    "%s%s is the preset being run; an export never overwrites it: name the "
+		    "CSV file otherwise (e.g. run.csv)", path, what);
+	if (is_shipped_preset(path))
+		return status_set(msg, n, HB_EINVAL,
+		    "%s%s is a shipped preset; an export never overwrites it: put the CSV "
+		    "file in another folder or name it otherwise", path, what);
+	return HB_OK;
+}
+
+/*
+ * Where each file of an export goes: p[0] trace, p[1] collisions, p[2] the
+ * scene (NULL when none).  Every check that can be made before writing.
+ */
+static int
+plan(const char *trace, const char *coll, const char *run_preset, struct csv_export_report *r,
+     char *msg, size_t n)
+{
+	const char *csv[2] = { trace, coll };
+	char what[4200];
+	int st;
+
+	memset(r, 0, sizeof *r);
+	r->scene_of = -1;
+	if (trace == NULL && coll == NULL)
+		return status_set(msg, n, HB_EINVAL, "nothing to export: no file named");
+	if (trace != NULL && coll != NULL &&
+	    (strcmp(trace, coll) == 0 || same_file(trace, coll)))
+		return status_set(msg, n, HB_EINVAL,
+		    "%s: the trace and the collisions need two different files", trace);
+	for (int k = 0; k < 2; k++) {
+		if (csv[k] == NULL)
+			continue;
+		if ((st = atomic_probe(csv[k], &r->target[k], msg, n)) != HB_OK)
+			return st;
+		if ((st = protect(csv[k], "", run_preset, msg, n)) != HB_OK)
+			return st;
+		/* The scene goes beside the first CSV that is a file. */
+		if (r->scene_of < 0 && r->target[k].how != ATOMIC_IN_PLACE) {
+			if (scene_path(csv[k], r->scene, sizeof r->scene) != 0)
+				return status_set(msg, n, HB_EIO, "%s: %s", csv[k],
+				                  strerror(ENAMETOOLONG));
+			r->scene_of = k;
+		}
+	}
+	if (r->scene[0] == '\0')
+		return HB_OK;
+	snprintf(what, sizeof what, " (the scene saved beside %s)", csv[r->scene_of]);
+	for (int k = 0; k < 2; k++)
+		if (csv[k] != NULL && (strcmp(r->scene, csv[k]) == 0 || same_file(r->scene, csv[k])))
+			return status_set(msg, n, HB_EINVAL,
+			    "%s%s would overwrite this export; name the CSV file otherwise "
+			    "(e.g. run.csv)", r->scene, what);
+	if ((st = protect(r->scene, what, run_preset, msg, n)) != HB_OK)
+		return st;
+	return atomic_probe(r->scene, &r->target[2], msg, n);
+}
+
+int
+csv_export_check(const char *trace, const char *coll, const char *run_preset,
+                 char *msg, size_t n)
+{
+	struct csv_export_report r;
+
+	return plan(trace, coll, run_preset, &r, msg, n);
+}
+
+/* The scene as a preset, then the export's identifier and its files. */
+static int
+write_scene(FILE *f, const struct sim *s, const struct atomic_set *set,
+            const char *trace, const char *coll)
+{
+	size_t len = preset_format(sim_scene(s), NULL, 0);
+	char *buf = malloc(len + 1);
+
+	if (buf == NULL)
+		return ENOMEM;
+	preset_format(sim_scene(s), buf, len + 1);
+	fwrite(buf, 1, len, f);
+	free(buf);
+	fprintf(f, "\n; export %s: this scene", set->id);
+	if (trace != NULL)
+		fprintf(f, ", the trace %s", trace);
+	if (coll != NULL)
+		fprintf(f, ", the collisions %s", coll);
+	fprintf(f, " (every file of the export has this modification time)\n");
+	return 0;
+}
+
+int
+csv_export_files(const struct sim *s, const char *trace, const char *coll,
+                 const char *run_preset, struct csv_export_report *r, char *msg, size_t n)
+{
+	struct atomic_set set;
+	const char *paths[3];
+	int st;
+
+	if ((st = plan(trace, coll, run_preset, r, msg, n)) != HB_OK)
+		return st;
+	paths[0] = trace;
+	paths[1] = coll;
+	paths[2] = r->scene[0] ? r->scene : NULL;
+	atomic_begin(&set);
+	snprintf(r->id, sizeof r->id, "%s", set.id);
+	for (int k = 0; k < 3; k++) {
+		FILE *f;
+		int e;
+
+		if (paths[k] == NULL)
+			continue;
+		f = atomic_add(&set, paths[k], msg, n);
+		if (f == NULL) {
+			atomic_abort(&set);
+			return HB_EIO;
+		}
+		r->target[k] = set.file[set.n - 1].target;
+		errno = 0;
+		e = k == 0 ? write_arc(f, s) : k == 1 ? write_collisions(f, s)
+		           : write_scene(f, s, &set, trace, coll);
+		if (e == ENOMEM) {
+			atomic_abort(&set);
+			return status_set(msg, n, HB_ENOMEM, "%s: out of memory", paths[k]);
+		}
+	}
+	return atomic_commit(&set, msg, n);
+}
+
 int
 csv_export(const struct sim *s, const char *trace_path, const char *coll_path,
            char *scene_out, size_t sn, char *msg, size_t n)
 {
-	struct tmpfile t[3];
-	const char *paths[3];
-	char spath[1024];
-	int nt = 0, st = HB_OK, committed = 0;
-	const char *first = trace_path != NULL ? trace_path : coll_path;
+	struct csv_export_report r;
+	int st = csv_export_files(s, trace_path, coll_path, NULL, &r, msg, n);
 
-	if (first == NULL)
-		return status_set(msg, n, HB_EINVAL, "nothing to export: no file named");
-	if (scene_path(first, spath, sizeof spath) != 0)
-		return status_set(msg, n, HB_EIO, "%s: %s", first, strerror(ENAMETOOLONG));
-	if ((trace_path != NULL && strcmp(spath, trace_path) == 0) ||
-	    (coll_path != NULL && strcmp(spath, coll_path) == 0))
-		return status_set(msg, n, HB_EINVAL,
-		    "%s: the scene would overwrite this export; name the CSV file otherwise "
-		    "(e.g. run.csv)", spath);
-	if (trace_path != NULL && coll_path != NULL && strcmp(trace_path, coll_path) == 0)
-		return status_set(msg, n, HB_EINVAL,
-		    "%s: the trace and the collisions need two different files", trace_path);
-	paths[0] = trace_path;
-	paths[1] = coll_path;
-	paths[2] = spath;
-
-	memset(t, 0, sizeof t);
-	for (int k = 0; k < 3 && st == HB_OK; k++) {
-		if (paths[k] == NULL)
-			continue;
-		st = tmp_open(&t[nt], paths[k], msg, n);
-		if (st != HB_OK)
-			break;
-		errno = 0;
-		if (k == 0)
-			errno = write_arc(t[nt].f, s);
-		else if (k == 1)
-			errno = write_collisions(t[nt].f, s);
-		else {
-			size_t len = preset_format(sim_scene(s), NULL, 0);
-			char *buf = malloc(len + 1);
-			if (buf == NULL) {
-				nt++;
-				st = status_set(msg, n, HB_ENOMEM, "%s: out of memory", paths[k]);
-				break;
-			}
-			preset_format(sim_scene(s), buf, len + 1);
-			fwrite(buf, 1, len, t[nt].f);
-			free(buf);
-		}
-		st = tmp_close(&t[nt], msg, n);
-		nt++;
-	}
-	/*
-	 * Before the renames, keep a hard link to each file about to be
-	 * replaced, so that a failed rename can put the earlier ones back.
-	 */
-	char bak[3][1060];
-	int has_bak[3] = { 0, 0, 0 };
-	for (int k = 0; k < nt && st == HB_OK; k++) {
-		snprintf(bak[k], sizeof bak[k], "%s.old", t[k].tmp);
-		has_bak[k] = link(t[k].path, bak[k]) == 0;
-	}
-	for (int k = 0; k < nt && st == HB_OK; k++) {
-		st = tmp_commit(&t[k], msg, n);
-		if (st == HB_OK)
-			committed = k + 1;
-	}
-	if (st != HB_OK) {
-		for (int k = 0; k < nt; k++)
-			tmp_discard(&t[k]);
-		/* Undo the renames already done: no new file is left. */
-		for (int k = 0; k < committed; k++)
-			if (!has_bak[k] || rename(bak[k], t[k].path) != 0)
-				unlink(t[k].path);
-	}
-	for (int k = 0; k < nt; k++)
-		if (has_bak[k])
-			unlink(bak[k]);
-	if (st != HB_OK)
-		return st;
-	if (scene_out != NULL && sn > 0)
-		snprintf(scene_out, sn, "%s", spath);
-	return HB_OK;
+	if (st == HB_OK && scene_out != NULL && sn > 0)
+		snprintf(scene_out, sn, "%s", r.scene);
+	return st;
 }

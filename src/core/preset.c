@@ -20,15 +20,15 @@
  * (preceded by white space), lines up to PRESET_MAX_LINE bytes.
  *
  * Writing prints every value in SI with %.17g and its unit, so that
- * loading the file reproduces the scene bit for bit; the file is written to
- * PATH.tmpXXXXXX in the same folder, flushed to disk and renamed.
+ * loading the file reproduces the scene bit for bit; the file is written by
+ * the atomic writer (atomic.h): a temporary name in its folder, flushed to
+ * disk and renamed.
  */
 #include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,11 +37,13 @@
 
 #include <ini.h>
 
+#include "hybounce/atomic.h"
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
 #include "hybounce/units.h"
 
 #include "scene_keys.h"
+#include "textbuf.h"
 
 #ifndef HYBOUNCE_DATADIR
 #define HYBOUNCE_DATADIR "/usr/local/share/hybounce"
@@ -62,6 +64,7 @@ struct collect {
 	int n;
 	int oom;
 	int overflow_line; /* first line with a section or key name too long */
+	int toomany_line;  /* first key beyond PRESET_MAX_ENTRIES */
 };
 
 struct source {
@@ -112,7 +115,8 @@ collect_handler(void *user, const char *section, const char *name, const char *v
 	struct entry *e;
 
 	if (c->n >= PRESET_MAX_ENTRIES) {
-		c->oom = 1;
+		if (c->toomany_line == 0)
+			c->toomany_line = h->src->line;
 		return 1;
 	}
 	e = &c->e[c->n];
@@ -390,13 +394,22 @@ preset_load_string(const char *text, const char *name, struct scene *sc, char *m
 		st = status_set(msg, n, HB_EINVAL,
 		    "%s:%d: malformed line (expected key = value or [section]); accepted: "
 		    "[section], key = value, ; comment", name, r);
-	else if (r < 0 || c.oom)
-		st = status_set(msg, n, HB_ENOMEM, "%s: out of memory (or more than %d keys)", name,
+	else if (c.toomany_line)
+		st = status_set(msg, n, HB_EINVAL, "%s:%d: too many keys; accepted: at most %d "
+		    "key = value lines (a preset has about 40)", name, c.toomany_line,
 		    PRESET_MAX_ENTRIES);
+	else if (r < 0 || c.oom)
+		st = status_set(msg, n, HB_ENOMEM, "%s: out of memory", name);
 	else if (c.overflow_line)
 		st = status_set(msg, n, HB_EINVAL,
 		    "%s:%d: section or key name too long; accepted: the keys of preset.h", name,
 		    c.overflow_line);
+	else if (c.n == 0)
+		/* not the default scene in disguise: an empty file is a mistake */
+		st = status_set(msg, n, HB_EINVAL,
+		    "%s: the preset is empty (no key = value line); expected [scene], [body1], "
+		    "[body2], [law], [loads], [initial] and [run] sections with their keys, "
+		    "as in presets/*.preset", name);
 	else
 		st = load_entries(&c, name, sc, msg, n);
 	collect_free(&c);
@@ -440,8 +453,8 @@ read_file(const char *path, char **out, char *msg, size_t n)
 	buf[len] = '\0';
 	if (strlen(buf) != len) {
 		free(buf);
-		return status_set(msg, n, HB_EINVAL, "%s: not a text file (contains NUL bytes)",
-		    path);
+		return status_set(msg, n, HB_EINVAL, "%s: not a text file (contains NUL bytes); "
+		    "expected a preset: text lines [section] and key = value", path);
 	}
 	*out = buf;
 	return HB_OK;
@@ -504,54 +517,32 @@ preset_open(const char *path, const char *const *sets, int nsets, struct scene *
 /* ---------------------------------------------------------------- */
 /* Writing */
 
-struct out {
-	char *buf;
-	size_t n, len;
-};
-
-static void
-out_printf(struct out *o, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-
-static void
-out_printf(struct out *o, const char *fmt, ...)
-{
-	va_list ap;
-	int k;
-	size_t room = o->len < o->n ? o->n - o->len : 0;
-
-	va_start(ap, fmt);
-	k = vsnprintf(room ? o->buf + o->len : NULL, room, fmt, ap);
-	va_end(ap);
-	if (k > 0)
-		o->len += (size_t)k;
-}
-
 /*
  * "key = VALUE".  A value that begins with ';' or '#' is written right
  * after the '=': inih takes those for a comment only after white space.
  */
 static void
-out_entry(struct out *o, const char *key, const char *value)
+out_entry(struct textbuf *o, const char *key, const char *value)
 {
-	out_printf(o, "%s =%s%s\n", key, value[0] == ';' || value[0] == '#' ? "" : " ", value);
+	textbuf_printf(o, "%s =%s%s\n", key, value[0] == ';' || value[0] == '#' ? "" : " ", value);
 }
 
 size_t
 preset_format(const struct scene *sc, char *buf, size_t n)
 {
-	struct out o = { buf, n, 0 };
+	struct textbuf o = { buf, n, 0 };
 	char v[512], sec[16], u[64];
 
 	if (buf != NULL && n > 0)
 		buf[0] = '\0';
 #ifdef HYBOUNCE_VERSION
-	out_printf(&o, "; hybounce %s preset: SI values that reproduce the scene exactly\n",
+	textbuf_printf(&o, "; hybounce %s preset: SI values that reproduce the scene exactly\n",
 	    HYBOUNCE_VERSION);
 #else
-	out_printf(&o, "; hybounce preset: SI values that reproduce the scene exactly\n");
+	textbuf_printf(&o, "; hybounce preset: SI values that reproduce the scene exactly\n");
 #endif
 	for (size_t s = 0; s < NSECTIONS; s++) {
-		out_printf(&o, "\n[%s]\n", sections[s]);
+		textbuf_printf(&o, "\n[%s]\n", sections[s]);
 		if (strcmp(sections[s], "law") == 0) {
 			for (int i = 0; sc->law != NULL && i < sc->law->n_params; i++) {
 				const struct law_param *pp = &sc->law->params[i];
@@ -578,88 +569,64 @@ preset_format(const struct scene *sc, char *buf, size_t n)
 int
 preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 {
-	size_t len = preset_format(sc, NULL, 0), tl = strlen(path) + 16;
-	char *buf = malloc(len + 1), *tmp = malloc(tl);
-	int fd, e = 0;
-	mode_t um;
+	size_t len = preset_format(sc, NULL, 0);
+	char *buf = malloc(len + 1);
+	int st;
 
-	if (buf == NULL || tmp == NULL) {
-		free(buf);
-		free(tmp);
+	if (buf == NULL)
 		return status_set(msg, n, HB_ENOMEM, "%s: out of memory", path);
-	}
 	preset_format(sc, buf, len + 1);
-	snprintf(tmp, tl, "%s.tmpXXXXXX", path);
-	fd = mkstemp(tmp);
-	if (fd < 0) {
-		e = errno;
-		free(buf);
-		free(tmp);
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
-	}
-	um = umask(0);
-	umask(um);
-	if (fchmod(fd, 0666 & ~um) != 0)
-		e = errno;
-	for (size_t off = 0; e == 0 && off < len;) {
-		ssize_t w = write(fd, buf + off, len - off);
-		if (w < 0) {
-			if (errno == EINTR)
-				continue;
-			e = errno;
-		} else
-			off += (size_t)w;
-	}
-	if (e == 0 && fsync(fd) != 0)
-		e = errno;
-	if (close(fd) != 0 && e == 0)
-		e = errno;
-	if (e == 0 && rename(tmp, path) != 0)
-		e = errno;
-	if (e != 0)
-		unlink(tmp);
+	st = atomic_write_file(path, buf, len, msg, n);
 	free(buf);
-	free(tmp);
-	if (e != 0)
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
-	return HB_OK;
+	return st == HB_OK ? HB_OK : HB_EIO;
 }
 
 /* ---------------------------------------------------------------- */
 /* Finding presets */
 
-#define PRESET_MAX_DIRS 16
-
+/*
+ * Any number of folders: the entries of $HYBOUNCE_PRESETS are split into a
+ * buffer that grows (each call rebuilds it; earlier results are invalid).
+ */
 const char *const *
 preset_dirs(void)
 {
-	static char store[PRESET_MAX_DIRS][512];
-	static const char *dirs[PRESET_MAX_DIRS + 1];
+	/* per thread, so that threads may look presets up at once */
+	static _Thread_local char *store, datadir[sizeof HYBOUNCE_DATADIR + 16];
+	static _Thread_local const char **dirs, *fallback[3];
+	static const char here[] = "presets";
 	const char *env = getenv("HYBOUNCE_PRESETS");
-	int k = 0;
+	size_t k = 0, count = 3;
 
+	snprintf(datadir, sizeof datadir, "%s/presets", HYBOUNCE_DATADIR);
+	free(store);
+	free(dirs);
+	store = NULL;
+	dirs = NULL;
 	if (env != NULL) {
-		const char *p = env;
-		while (*p != '\0' && k < PRESET_MAX_DIRS - 2) {
-			const char *q = strchr(p, ':');
-			size_t l = q != NULL ? (size_t)(q - p) : strlen(p);
-			if (l > 0 && l < sizeof store[0]) {
-				memcpy(store[k], p, l);
-				store[k][l] = '\0';
-				dirs[k] = store[k];
-				k++;
-			}
-			p += l;
-			if (*p == ':')
-				p++;
-		}
+		for (const char *p = env; *p != '\0'; p++)
+			count += *p == ':';
+		store = strdup(env);
 	}
-	snprintf(store[k], sizeof store[k], "presets");
-	dirs[k] = store[k];
-	k++;
-	snprintf(store[k], sizeof store[k], "%s/presets", HYBOUNCE_DATADIR);
-	dirs[k] = store[k];
-	k++;
+	dirs = malloc((count + 1) * sizeof *dirs);
+	if (dirs == NULL || (env != NULL && store == NULL)) {
+		/* out of memory: the built-in folders only */
+		fallback[0] = here;
+		fallback[1] = datadir;
+		fallback[2] = NULL;
+		return fallback;
+	}
+	for (char *p = store; p != NULL && *p != '\0';) {
+		char *q = strchr(p, ':');
+
+		if (q != NULL)
+			*q = '\0';
+		if (*p != '\0') /* an empty entry ("a::b") names no folder */
+			dirs[k++] = p;
+		p = q != NULL ? q + 1 : NULL;
+	}
+	dirs[k++] = here;
+	dirs[k++] = datadir;
 	dirs[k] = NULL;
 	return dirs;
 }
@@ -672,15 +639,62 @@ is_file(const char *path)
 	return stat(path, &st) == 0 && S_ISREG(st.st_mode);
 }
 
+/* A path given as the preset itself may also be a pipe: -b <(sed ... x.preset). */
+static int
+is_file_or_pipe(const char *path)
+{
+	struct stat st;
+
+	return stat(path, &st) == 0 && (S_ISREG(st.st_mode) || S_ISFIFO(st.st_mode));
+}
+
+/*
+ * Why an existing path is not a preset file, in its own words: "is a
+ * directory", "is a symbolic link loop", "is a socket" ... (ENOENT only
+ * when nothing is there).
+ */
+static int
+not_a_preset(const char *name, char *msg, size_t mn)
+{
+	struct stat st, lst;
+	const char *what = NULL;
+
+	if (lstat(name, &lst) != 0)
+		return status_set(msg, mn, HB_EINVAL, "%s: %s", name, strerror(errno));
+	if (stat(name, &st) != 0) {
+		if (errno == ELOOP)
+			return status_set(msg, mn, HB_EINVAL, "%s: a loop of symbolic links (%s); "
+			    "expected a preset file", name, strerror(ELOOP));
+		if (S_ISLNK(lst.st_mode))
+			return status_set(msg, mn, HB_EINVAL, "%s: a symbolic link to nothing (%s); "
+			    "expected a preset file", name, strerror(errno));
+		return status_set(msg, mn, HB_EINVAL, "%s: %s", name, strerror(errno));
+	}
+	if (S_ISDIR(st.st_mode))
+		what = "a directory";
+	else if (S_ISCHR(st.st_mode))
+		what = "a character device";
+	else if (S_ISBLK(st.st_mode))
+		what = "a block device";
+	else if (S_ISSOCK(st.st_mode))
+		what = "a socket";
+	else
+		what = "not a regular file";
+	return status_set(msg, mn, HB_EINVAL, "%s: is %s; expected a preset file (or a pipe, "
+	    "e.g. <(...)) or a preset name", name, what);
+}
+
 int
 preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn)
 {
 	const char *const *dirs;
 	char path[1024], where[1024] = "";
+	struct stat lst;
 
 	if (name == NULL || name[0] == '\0')
-		return status_set(msg, mn, HB_EINVAL, "no preset name given");
-	if (is_file(name)) {
+		return status_set(msg, mn, HB_EINVAL, "no preset name given; expected a preset name "
+		    "(hybounce --list-presets) or the path of a preset file");
+	if (is_file_or_pipe(name)) {
 		if (strlen(name) >= n)
 			return status_set(msg, mn, HB_EINVAL, "%s: path too long", name);
 		snprintf(out, n, "%s", name);
@@ -703,11 +717,13 @@ preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn)
 			size_t l = strlen(where);
 			snprintf(where + l, sizeof where - l, "%s%s", i ? ", " : "", dirs[i]);
 		}
+		if (lstat(name, &lst) == 0) /* something is there: say what */
+			return not_a_preset(name, msg, mn);
 		return status_set(msg, mn, HB_EINVAL,
 		    "no preset '%s': not a file, and neither %s nor %s.preset is in %s", name, name,
 		    name, where);
 	}
-	return status_set(msg, mn, HB_EINVAL, "%s: %s", name, strerror(ENOENT));
+	return not_a_preset(name, msg, mn);
 }
 
 struct title_ctx {

@@ -506,6 +506,21 @@ scene_key_info_law(const struct scene *sc, int i, struct scene_keyinfo *out)
 }
 
 int
+scene_law_param_info(const struct law_type *law, int i, struct scene_keyinfo *out)
+{
+	struct scene sc;
+
+	memset(out, 0, sizeof *out);
+	if (law == NULL || i < 0 || i >= law->n_params)
+		return HB_EINVAL;
+	memset(&sc, 0, sizeof sc);
+	sc.law = law;
+	law_defaults(law, sc.par);
+	info_lawpar(&sc, i, out);
+	return HB_OK;
+}
+
+int
 scene_key_info(const struct scene *sc, const struct scene_keydef *kd, struct scene_keyinfo *out)
 {
 	memset(out, 0, sizeof *out);
@@ -542,81 +557,4 @@ scene_get(const struct scene *sc, const char *key, struct scene_keyinfo *out,
 		return scene_error_set(err, key, NULL, "unknown key");
 	info_keydef(sc, kd, out);
 	return HB_OK;
-}
-
-/* ---------------------------------------------------------------- */
-/* The man page's PRESETS reference */
-
-struct mout {
-	char *buf;
-	size_t n, len;
-};
-
-static void
-mprintf(struct mout *o, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-
-static void
-mprintf(struct mout *o, const char *fmt, ...)
-{
-	va_list ap;
-	size_t room = o->len < o->n ? o->n - o->len : 0;
-	int k;
-
-	va_start(ap, fmt);
-	k = vsnprintf(room ? o->buf + o->len : NULL, room, fmt, ap);
-	va_end(ap);
-	if (k > 0)
-		o->len += (size_t)k;
-}
-
-size_t
-scene_keys_mdoc(char *buf, size_t n)
-{
-	struct mout o = { buf, n, 0 };
-	struct scene sc;
-	char sec[16], prev[16] = "";
-
-	if (buf != NULL && n > 0)
-		buf[0] = '\0';
-	scene_defaults(&sc);
-	for (int i = 0; i < scene_nkeydefs; i++) {
-		const struct scene_keydef *kd = &scene_keydefs[i];
-		struct scene_keyinfo ki;
-		char def[96];
-
-		scene_keydef_section(kd, sec, sizeof sec);
-		if (strcmp(sec, prev) != 0) {
-			if (prev[0])
-				mprintf(&o, ".El\n");
-			if (strcmp(prev, "body2") == 0)
-				mprintf(&o, ".It Li [law]\nThe law's parameters, by the names, units and "
-				    "ranges\n.Fl -list-laws\nshows; the stiffness\n.Cm k\nis typed only "
-				    "when it cannot be derived from the materials.\n");
-			mprintf(&o, ".It Li [%s]\n.Bl -tag -width \"description\" -compact\n", sec);
-			snprintf(prev, sizeof prev, "%s", sec);
-		}
-		info_keydef(&sc, kd, &ki);
-		if (kd->store == ST_DOUBLE) {
-			if (isnan(kd->def))
-				snprintf(def, sizeof def, "not given");
-			else
-				units_format(kd->def, *kd->dim, 6, def, sizeof def);
-		} else if (kd->store == ST_LONG || kd->store == ST_INT)
-			snprintf(def, sizeof def, "%.0f", kd->def);
-		else
-			snprintf(def, sizeof def, "%s", kd->deftext);
-		mprintf(&o, ".It Cm %s\n%s.\n", kd->key + strlen(sec) + 1, kd->help);
-		if (ki.kind == SCENE_KEY_CHOICE) {
-			mprintf(&o, "Accepted:");
-			for (int c = 0; c < ki.nchoices; c++)
-				mprintf(&o, "%s %s", c ? "," : "", ki.choices[c]);
-			mprintf(&o, ".\n");
-		} else if (ki.kind == SCENE_KEY_TEXT)
-			mprintf(&o, "Accepted: text of at most %zu bytes.\n", kd->size - 1);
-		else
-			mprintf(&o, "Accepted: %s.\n", ki.range);
-		mprintf(&o, "Default: %s%s\n", def, def[strlen(def) - 1] == '.' ? "" : ".");
-	}
-	mprintf(&o, ".El\n");
-	return o.len;
 }

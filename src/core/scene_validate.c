@@ -118,7 +118,7 @@ int
 scene_check(struct scene *sc, struct scene_error *err)
 {
 	static const struct unit_range m1 = { 0, HUGE_VAL, 1, 1, 0 }, m2 = { 0, HUGE_VAL, 1, 0, 0 };
-	char key[16];
+	char key[32];
 	int st;
 
 	if (sc->law == NULL)

@@ -102,6 +102,7 @@ struct sim {
 	struct arc *arc;
 	struct collision *col;
 	size_t ncol, colcap;
+	long ncol_total;        /* collisions completed, kept or thinned out (col[].i) */
 	enum sim_end end;
 	char err[640];
 	char endmsg[700];
@@ -457,6 +458,20 @@ push_collision(struct sim *s)
 {
 	struct collision c;
 
+	/*
+	 * Bounded like the arc: at run.max_samples / 8 collisions every other
+	 * one of the older three quarters goes; each kept row has its index i.
+	 */
+	size_t bound = s->sc.run.max_samples / 8 < 128 ? 128 : (size_t)s->sc.run.max_samples / 8;
+
+	if (s->ncol >= bound) {
+		size_t w = 0, upto = s->ncol - s->ncol / 4;
+
+		for (size_t r = 0; r < s->ncol; r++)
+			if (r >= upto || r % 2 == 0)
+				s->col[w++] = s->col[r];
+		s->ncol = w;
+	}
 	if (s->ncol == s->colcap) {
 		size_t cap = s->colcap ? 2 * s->colcap : 64;
 		struct collision *p = realloc(s->col, cap * sizeof *p);
@@ -467,7 +482,7 @@ push_collision(struct sim *s)
 		s->colcap = cap;
 	}
 	memset(&c, 0, sizeof c);
-	c.i = (long)s->ncol;
+	c.i = s->ncol_total++;
 	c.j = s->j;
 	c.te = s->te;
 	c.ts = s->t;
@@ -1799,6 +1814,7 @@ reset_state(struct sim *s)
 	s->setup = 1;
 	s->resume = 0;
 	s->ncol = 0;
+	s->ncol_total = 0;
 	s->stepper[1] = sc->run.stepper == STEPPER_AUTO ? STEPPER_DOP853 : sc->run.stepper;
 	arc_truncate(s->arc, 0);
 	{
@@ -1822,7 +1838,7 @@ build(struct sim *s, char *msg, size_t n)
 		if (phase_alloc(s, &s->ph[q], q))
 			return status_set(msg, n, HB_ENOMEM, "out of memory for the integrator");
 	{
-		static const char *names[MAXDIM];
+		const char *names[MAXDIM];
 		const struct layout *L = &s->ph[1].L;
 		int i;
 
@@ -1976,6 +1992,12 @@ sim_ncollisions(const struct sim *s)
 	return s->ncol;
 }
 
+long
+sim_collisions_total(const struct sim *s)
+{
+	return s->ncol_total;
+}
+
 const struct collision *
 sim_collision(const struct sim *s, size_t i)
 {
@@ -1988,7 +2010,7 @@ sim_contact_live(const struct sim *s, struct collision *out)
 	if (!s->q)
 		return 0;
 	memset(out, 0, sizeof *out);
-	out->i = (long)s->ncol;
+	out->i = s->ncol_total;
 	out->j = s->j;
 	out->te = s->te;
 	out->ts = s->t;
@@ -2051,6 +2073,7 @@ sim_seek(struct sim *s, size_t i)
 	}
 	while (s->ncol > 0 && s->col[s->ncol - 1].j >= s->j)
 		s->ncol--;
+	s->ncol_total = s->ncol > 0 ? s->col[s->ncol - 1].i + 1 : 0;
 	if (s->ncol > 0 && s->col[s->ncol - 1].j + 1 >= s->j && !s->q)
 		s->col[s->ncol - 1].tf = NAN;
 	if (s->ncol > 0 && s->col[s->ncol - 1].j + 1 == s->j)

@@ -411,4 +411,4 @@ static const gsl_odeiv2_step_type dop853_type = {
 	dop853_reset, dop853_order, dop853_free,
 };
 
-const gsl_odeiv2_step_type *hb_step_dop853 = &dop853_type;
+const gsl_odeiv2_step_type *const hb_step_dop853 = &dop853_type;

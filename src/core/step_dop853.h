@@ -26,7 +26,7 @@
 
 #include <gsl/gsl_odeiv2.h>
 
-extern const gsl_odeiv2_step_type *hb_step_dop853;
+extern const gsl_odeiv2_step_type *const hb_step_dop853;
 
 /*
  * The continuous extension of the last step made by st (a dop853 step):

@@ -30,6 +30,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <wchar.h>
 
@@ -128,8 +129,17 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 	char line[1024];
 	int lineno = 0, status = 0;
 
+	struct stat st;
+
 	if (f == NULL) {
 		snprintf(msg, n, "%s: %s", path, strerror(errno));
+		return 2;
+	}
+	/* fopen() opens a directory; reading it would end the script at once, exit 0 */
+	if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+		snprintf(msg, n, "--script %s: is a directory; expected a file of keystrokes, "
+		         "one per line", path);
+		fclose(f);
 		return 2;
 	}
 	if (term_begin_script(80, 24, msg, n) != 0) {

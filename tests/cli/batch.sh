@@ -3,20 +3,7 @@
 # the summary; the paper's first study (steel-on-bitumen) has at least ten
 # collisions; --check --jumps passes on every preset.
 # Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() {
-	echo "not ok - $1"
-	fails=$((fails + 1))
-	[ $# -gt 1 ] && [ -f "$2" ] && sed 's/^/# /' "$2" | head -n 20
-	return 0
-}
+. "$(dirname "$0")/common.inc"
 
 npresets=0
 for f in presets/*.preset; do

@@ -3,15 +3,7 @@
 # the same number of fields on every row and numbers that parse, plus the
 # scene as a .preset beside them; batch on that saved preset reproduces the
 # collisions CSV byte for byte.  Done for every preset in presets/.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
+. "$(dirname "$0")/common.inc"
 
 COLL_HEADER='i,t_e,t_s,t_d,t_f,v_i,e,x_c_max,F_c_max,x_c_r,W,J_Fc,J_Fe,Lambda'
 ARC_HEADER_RE='^t,j,q_c,x,v,x_c(,z_c1(,z_c2)?)?,F_c,F_er(,x_m,v_m,v_m1,v_m2)?$'
@@ -91,11 +83,15 @@ for f in presets/*.preset; do
 		diff "$d/coll.csv" "$d/again.csv" | head -n 6 | sed 's/^/# /'
 		sed 's/^/# /' "$d/err2" | head -n 5
 	fi
-	if [ -s "$d/again.preset" ] && cmp -s "$d/arc.preset" "$d/again.preset"; then
+	# The line "; export ID: ..." names each export (csv.h): left out here.
+	grep -v '^; export ' "$d/arc.preset" >"$d/a.scene"
+	grep -v '^; export ' "$d/again.preset" >"$d/b.scene"
+	if [ -s "$d/again.preset" ] && [ "$(wc -l <"$d/a.scene")" -gt 10 ] &&
+	    cmp -s "$d/a.scene" "$d/b.scene"; then
 		ok "$name: the saved preset saves itself identically"
 	else
 		notok "$name: the saved preset saves itself identically"
-		diff "$d/arc.preset" "$d/again.preset" | head -n 6 | sed 's/^/# /'
+		diff "$d/a.scene" "$d/b.scene" | head -n 6 | sed 's/^/# /'
 	fi
 done
 

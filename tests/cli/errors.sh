@@ -3,16 +3,8 @@
 # what is accepted, and leaves no CSV behind: unknown option, missing
 # preset, out-of-range and wrongly-united --set, a malformed preset file,
 # an unwritable --trace path.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/common.inc"
 mkdir "$T/out"
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
 
 # bad NAME PATTERN ARGS...: runs hybounce ARGS with both exports into
 # $T/out; expects exit 2, PATTERN (grep -F, may be "") on stderr, nothing

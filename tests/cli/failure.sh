@@ -3,15 +3,7 @@
 # report), still prints the table and the summary, and still writes what it
 # computed.  The failure is provoked with a step bound far below what the
 # integrator can take (run.h_max = 1e-300 s).
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
+. "$(dirname "$0")/common.inc"
 
 "$BIN" -b steel-on-bitumen --set run.h_max=1e-300 -t "$T/arc.csv" -c "$T/coll.csv" \
     >"$T/out" 2>"$T/err"

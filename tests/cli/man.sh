@@ -1,11 +1,7 @@
 #!/bin/sh
 # The man page lints clean with mandoc and documents every long option
 # that --help lists.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
+. "$(dirname "$0")/common.inc"
 
 if ! command -v mandoc >/dev/null 2>&1; then
 	notok "mandoc is installed (make deps installs it)"

@@ -1,15 +1,7 @@
 #!/bin/sh
 # --help mentions every option; --version prints the version; --list-laws
 # lists the five laws; --list-presets lists every file in presets/.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
+. "$(dirname "$0")/common.inc"
 
 "$BIN" --help >"$T/help" 2>"$T/err"
 rc=$?

@@ -6,16 +6,8 @@
 # once is refused (exit 2); a failed run (exit 1) still writes its CSV; a
 # reader that stops early (| head) gets no error storm, with SIGPIPE left
 # alone or ignored; any other write error on stdout exits 2 and says so.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
+. "$(dirname "$0")/common.inc"
 case $BIN in /*) ;; *) BIN=$(pwd)/$BIN ;; esac
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
 show() { sed 's/^/# /' "$1" | head -n 5; }
 
 COLL_HEADER='i,t_e,t_s,t_d,t_f,v_i,e,x_c_max,F_c_max,x_c_r,W,J_Fc,J_Fe,Lambda'

@@ -38,14 +38,13 @@ wait_for a ' paused ' 30
 keys a End
 wait_for a ' paused ' 30
 j1=$(status_field a j)
+t1=$(status_field a t)
 keys a '{'
-wait_for a 'j=[0-9]' 30
-sleep 0.2
+wait_gone a " t=$t1 " 30
 j2=$(status_field a j)
 t2=$(status_field a t)
 keys a '{'
-sleep 0.1
-wait_gone a "j=$j2 " 30
+wait_gone a " j=$j2 " 30
 j3=$(status_field a j)
 t3=$(status_field a t)
 i3=$(( (j3 - 1) / 2 ))

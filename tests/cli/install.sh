@@ -1,0 +1,149 @@
+#!/bin/sh
+# libhybounce as an outside program sees it: `make install` into a DESTDIR
+# puts the shared library (with its soname), the static library, the public
+# headers under include/hybounce/ and hybounce.pc in place; the shared
+# library exports only what the public headers declare; the examples (C and
+# C++) build with `pkg-config --cflags --libs hybounce` alone and print the
+# collisions the batch mode prints, to the bit; `make uninstall` removes it
+# all.  Also: the core keeps no mutable static state (re-entrancy).
+. "$(dirname "$0")/common.inc"
+
+# The build folder of $BIN, relative to the repository when inside it.
+case $BIN in
+"$(pwd)"/*) BUILD=$(dirname "${BIN#"$(pwd)"/}") ;;
+*) BUILD=$(dirname "$BIN") ;;
+esac
+DEST=$T/dest
+# The PREFIX the build was made for (make's default unless given): installed
+# with it, so that nothing is rebuilt.
+MAKEFLAGS= MAKELEVEL= make -s BUILD="$BUILD" DESTDIR="$DEST" install >"$T/install.log" 2>&1
+rc=$?
+pc=$(find "$DEST" -name hybounce.pc | head -n 1)
+PREFIX=$(sed -n 's/^prefix=//p' "$pc" 2>/dev/null)
+LIB=$(dirname "$(dirname "${pc:-$DEST/none/x}")")
+if [ "$rc" -eq 0 ] && [ -n "$pc" ] && [ -n "$PREFIX" ]; then ok "make install into a DESTDIR (prefix $PREFIX)"
+else notok "make install into a DESTDIR (exit $rc)" "$T/install.log"; fi
+
+missing=
+for f in lib/libhybounce.a lib/libhybounce.so lib/libhybounce.so.0 lib/pkgconfig/hybounce.pc \
+    bin/hybounce share/man/man1/hybounce.1; do
+	[ -e "$DEST$PREFIX/$f" ] || missing="$missing $f"
+done
+for h in include/hybounce/*.h; do
+	[ -f "$DEST$PREFIX/$h" ] || missing="$missing $h"
+done
+if [ -z "$missing" ]; then ok "libraries, headers, hybounce.pc, binary and man page installed"
+else notok "libraries, headers, hybounce.pc, binary and man page installed (missing:$missing)"; fi
+
+so=$(readelf -d "$LIB/libhybounce.so" 2>/dev/null | sed -n 's/.*(SONAME).*\[\(.*\)\]/\1/p')
+if [ "$so" = libhybounce.so.0 ] && [ "$(readlink "$LIB/libhybounce.so")" = libhybounce.so.0 ] &&
+    [ -f "$LIB/$(readlink "$LIB/libhybounce.so.0")" ]; then
+	ok "the shared library has the soname libhybounce.so.0 and its links"
+else
+	notok "the shared library has the soname libhybounce.so.0 and its links (soname '$so')"
+fi
+
+# Exported: every defined dynamic symbol must be declared in a public header
+# (but for the compiler's own, __*: the sanitizers add __odr_asan.*).
+nm -D --defined-only "$LIB/libhybounce.so" | awk 'NF == 3 && $3 !~ /^__/ { print $3 }' >"$T/exported"
+n=0 extra=
+while read -r sym; do
+	n=$((n + 1))
+	grep -qw -- "$sym" include/hybounce/*.h || extra="$extra $sym"
+done <"$T/exported"
+if [ "$n" -ge 50 ] && [ -z "$extra" ]; then
+	ok "libhybounce.so exports only what the public headers declare ($n symbols)"
+else
+	notok "libhybounce.so exports only what the public headers declare ($n symbols; internal:$extra)"
+fi
+
+# C++: every public header opens and closes with the extern "C" guards.
+unguarded=
+for h in include/hybounce/*.h; do
+	[ "$h" = include/hybounce/export.h ] && continue
+	grep -q '^HB_BEGIN_DECLS$' "$h" && grep -q '^HB_END_DECLS$' "$h" || unguarded="$unguarded $h"
+done
+if [ -z "$unguarded" ]; then ok "every public header has HB_BEGIN_DECLS / HB_END_DECLS"
+else notok "every public header has HB_BEGIN_DECLS / HB_END_DECLS (not:$unguarded)"; fi
+
+export PKG_CONFIG_PATH="$LIB/pkgconfig" PKG_CONFIG_SYSROOT_DIR="$DEST"
+PC=$(pkg-config --cflags --libs hybounce 2>"$T/pc.err")
+if [ -n "$PC" ]; then ok "pkg-config --cflags --libs hybounce finds the installed library"; echo "# $PC"
+else notok "pkg-config --cflags --libs hybounce finds the installed library" "$T/pc.err"; fi
+PCS=$(pkg-config --static --cflags --libs hybounce 2>/dev/null)
+# A sanitized library (make check-asan) needs the sanitizer runtime first.
+SAN=
+readelf -d "$LIB/libhybounce.so" | grep -q 'libasan' && SAN=-fsanitize=address,undefined
+
+# Each public header compiles on its own, as C17 and as C++17.
+bad=
+for h in include/hybounce/*.h; do
+	printf '#include <hybounce/%s>\ntypedef int hb_not_empty;\n' "${h##*/}" >"$T/h.c"
+	cp "$T/h.c" "$T/h.cpp"
+	cc -std=c17 -Wall -Wextra -pedantic -Werror $(pkg-config --cflags hybounce) \
+	    -fsyntax-only "$T/h.c" >>"$T/h.log" 2>&1 || bad="$bad C:${h##*/}"
+	c++ -std=c++17 -Wall -Wextra -pedantic -Werror $(pkg-config --cflags hybounce) \
+	    -fsyntax-only "$T/h.cpp" >>"$T/h.log" 2>&1 || bad="$bad C++:${h##*/}"
+done
+if [ -z "$bad" ]; then ok "each installed header compiles alone as C17 and as C++17"
+else notok "each installed header compiles alone as C17 and as C++17 (fails:$bad)" "$T/h.log"; fi
+
+"$BIN" --batch steel-on-bitumen --collisions - 2>/dev/null |
+    awk -F, 'NR > 1 { print $1, $2, $3, $6, $7 }' >"$T/want"
+[ -s "$T/want" ] || notok "batch --collisions - gives the reference collisions"
+
+# example NAME COMPILER FLAGS... SOURCE: builds, runs on steel-on-bitumen,
+# compares with the batch mode's collisions.
+example() {
+	name=$1 cc=$2
+	shift 2
+	if ! $cc "$@" -o "$T/$name" >"$T/$name.log" 2>&1; then
+		notok "$name builds with pkg-config alone" "$T/$name.log"
+		return
+	fi
+	ok "$name builds with pkg-config alone"
+	LD_LIBRARY_PATH=$LIB "$T/$name" steel-on-bitumen >"$T/$name.out" 2>"$T/$name.err"
+	rc=$?
+	grep -v '^#' "$T/$name.out" >"$T/$name.rows"
+	if [ "$rc" -eq 0 ] && [ -s "$T/$name.rows" ] && cmp -s "$T/$name.rows" "$T/want"; then
+		ok "$name prints the collisions of hybounce --batch, to the bit ($(wc -l <"$T/want") rows)"
+	else
+		notok "$name prints the collisions of hybounce --batch, to the bit (exit $rc)" "$T/$name.err"
+		diff "$T/$name.rows" "$T/want" | head -n 5 | sed 's/^/# /'
+	fi
+}
+example run_preset cc -std=c17 -Wall -Wextra -Werror $SAN examples/run_preset.c $PC
+example run_preset_cpp c++ -std=c++17 -Wall -Wextra -Werror $SAN examples/run_preset.cpp $PC
+if [ -z "$SAN" ]; then
+	example run_preset_static cc -std=c17 -Wall -Wextra -Werror -static examples/run_preset.c $PCS
+else
+	ok "run_preset_static # SKIP a sanitized build cannot link -static"
+fi
+if LD_LIBRARY_PATH=$LIB "$T/run_preset" no-such-preset >/dev/null 2>"$T/err"; [ $? -eq 2 ] &&
+    grep -q 'no-such-preset' "$T/err"; then
+	ok "run_preset reports a bad preset with the library's message and exits 2"
+else
+	notok "run_preset reports a bad preset with the library's message and exits 2" "$T/err"
+fi
+
+v=$("$DEST$PREFIX/bin/hybounce" --version 2>&1)
+case $v in
+hybounce*) ok "the installed binary runs ($v)" ;;
+*) notok "the installed binary runs ($v)" ;;
+esac
+
+# Re-entrancy: no object of the core in writable static storage, except
+# preset_dirs()'s per-thread buffer (.tbss) and the step type pointer
+# hb_step_bsimp_shifted, which is set once at compile time, like GSL's own.
+objdump -t "$BUILD"/src/core/*.o |
+    awk '$2 ~ /^[lg]$/ && $0 ~ / O / && $0 ~ /[ \t]\.(data|bss)/ && $0 !~ /\.data\.rel\.ro/ {
+	    print $NF }' | grep -v '^hb_step_bsimp_shifted$' | grep -v '^__\|^\.' >"$T/statics"
+if [ ! -s "$T/statics" ]; then ok "the core keeps no mutable static state"
+else notok "the core keeps no mutable static state (found: $(tr '\n' ' ' <"$T/statics"))"; fi
+
+MAKEFLAGS= MAKELEVEL= make -s BUILD="$BUILD" DESTDIR="$DEST" uninstall >"$T/uninstall.log" 2>&1
+left=$(find "$DEST" ! -type d | sed "s|^$DEST||")
+if [ -z "$left" ]; then ok "make uninstall removes every installed file"
+else notok "make uninstall removes every installed file (left:$(echo $left))"; fi
+
+[ "$fails" -eq 0 ]
