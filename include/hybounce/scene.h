@@ -217,14 +217,6 @@ scene_get(const struct scene *sc, const char *key, struct scene_keyinfo *out,
 int
 scene_law_param_info(const struct law_type *law, int i, struct scene_keyinfo *out);
 
-/*
- * The PRESETS reference of the man page (mdoc), generated from the key
- * table: what tools/gendoc writes between the PRESET-KEYS markers of
- * man/hybounce.1.  Returns the length needed (like snprintf).
- */
-size_t
-scene_keys_mdoc(char *buf, size_t n);
-
 /* Number of rows (depends on law and system). */
 int
 scene_nkeys(const struct scene *sc);

@@ -29,6 +29,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -585,50 +586,100 @@ preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 /* Finding presets */
 
 /*
- * Any number of folders: the entries of $HYBOUNCE_PRESETS are split into a
- * buffer that grows (each call rebuilds it; earlier results are invalid).
+ * Any number of folders: the entries of $HYBOUNCE_PRESETS split into one
+ * block per thread (a thread-specific value, freed when the thread ends),
+ * built again only when HYBOUNCE_PRESETS changes, so that a list returned
+ * earlier stays valid while the environment does not change.
  */
+struct dirs_cache {
+	char *seen;        /* HYBOUNCE_PRESETS when built; NULL if unset */
+	int built;
+	const char **dirs; /* points into the same block as the strings */
+};
+
+/* Written once, under pthread_once: the only static of the core that is not const. */
+static pthread_key_t preset_dirs_key;
+static pthread_once_t preset_dirs_once = PTHREAD_ONCE_INIT;
+
+static void
+dirs_cache_free(void *p)
+{
+	struct dirs_cache *c = p;
+
+	if (c != NULL) {
+		free(c->seen);
+		free(c->dirs);
+		free(c);
+	}
+}
+
+static void
+preset_dirs_key_make(void)
+{
+	(void)pthread_key_create(&preset_dirs_key, dirs_cache_free);
+}
+
 const char *const *
 preset_dirs(void)
 {
-	/* per thread, so that threads may look presets up at once */
-	static _Thread_local char *store, datadir[sizeof HYBOUNCE_DATADIR + 16];
-	static _Thread_local const char **dirs, *fallback[3];
+	static _Thread_local char datadir[sizeof HYBOUNCE_DATADIR + 16];
+	static _Thread_local const char *fallback[3];
 	static const char here[] = "presets";
 	const char *env = getenv("HYBOUNCE_PRESETS");
-	size_t k = 0, count = 3;
+	struct dirs_cache *c;
+	size_t k = 0, count = 3, len = env != NULL ? strlen(env) + 1 : 0;
+	char *store;
 
 	snprintf(datadir, sizeof datadir, "%s/presets", HYBOUNCE_DATADIR);
-	free(store);
-	free(dirs);
-	store = NULL;
-	dirs = NULL;
-	if (env != NULL) {
+	fallback[0] = here;
+	fallback[1] = datadir;
+	fallback[2] = NULL;
+	if (pthread_once(&preset_dirs_once, preset_dirs_key_make) != 0)
+		return fallback;
+	c = pthread_getspecific(preset_dirs_key);
+	if (c == NULL) {
+		c = calloc(1, sizeof *c);
+		if (c == NULL)
+			return fallback;
+		if (pthread_setspecific(preset_dirs_key, c) != 0) {
+			free(c);
+			return fallback;
+		}
+	}
+	if (c->built && c->dirs != NULL &&
+	    (env == NULL ? c->seen == NULL : c->seen != NULL && strcmp(env, c->seen) == 0))
+		return c->dirs;
+	free(c->seen);
+	free(c->dirs);
+	c->seen = NULL;
+	c->dirs = NULL;
+	c->built = 1;
+	if (env != NULL)
 		for (const char *p = env; *p != '\0'; p++)
 			count += *p == ':';
-		store = strdup(env);
+	/* the pointers, then a copy of the entries they point into */
+	c->dirs = malloc((count + 1) * sizeof *c->dirs + len);
+	if (c->dirs == NULL || (env != NULL && (c->seen = strdup(env)) == NULL)) {
+		free(c->dirs);
+		c->dirs = NULL;
+		return fallback; /* out of memory: the built-in folders only */
 	}
-	dirs = malloc((count + 1) * sizeof *dirs);
-	if (dirs == NULL || (env != NULL && store == NULL)) {
-		/* out of memory: the built-in folders only */
-		fallback[0] = here;
-		fallback[1] = datadir;
-		fallback[2] = NULL;
-		return fallback;
-	}
-	for (char *p = store; p != NULL && *p != '\0';) {
+	store = (char *)(c->dirs + count + 1);
+	if (env != NULL)
+		memcpy(store, env, len);
+	for (char *p = env != NULL ? store : NULL; p != NULL && *p != '\0';) {
 		char *q = strchr(p, ':');
 
 		if (q != NULL)
 			*q = '\0';
 		if (*p != '\0') /* an empty entry ("a::b") names no folder */
-			dirs[k++] = p;
+			c->dirs[k++] = p;
 		p = q != NULL ? q + 1 : NULL;
 	}
-	dirs[k++] = here;
-	dirs[k++] = datadir;
-	dirs[k] = NULL;
-	return dirs;
+	c->dirs[k++] = here;
+	c->dirs[k++] = datadir;
+	c->dirs[k] = NULL;
+	return c->dirs;
 }
 
 static int
