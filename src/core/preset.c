@@ -15,9 +15,9 @@
  * Then the scene is validated as a whole.  Every error is reported as
  * "FILE:LINE: [section] key: message; accepted: ...".
  *
- * inih's options are process globals in this build; they are set before
- * each parse: no multi-line values, inline comments after ';' or '#'
- * (preceded by white space), lines up to PRESET_MAX_LINE bytes.
+ * inih's options are process globals in this build; preset_ini_options()
+ * sets them before each parse (preset_ini.h).  Finding presets is in
+ * preset_find.c.
  *
  * Writing prints every value in SI with %.17g and its unit, so that
  * loading the file reproduces the scene bit for bit; the file is written by
@@ -25,16 +25,11 @@
  * disk and renamed.
  */
 #include <ctype.h>
-#include <dirent.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <math.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <ini.h>
 
@@ -43,14 +38,10 @@
 #include "hybounce/status.h"
 #include "hybounce/units.h"
 
+#include "preset_ini.h"
 #include "scene_keys.h"
 #include "textbuf.h"
 
-#ifndef HYBOUNCE_DATADIR
-#define HYBOUNCE_DATADIR "/usr/local/share/hybounce"
-#endif
-
-#define PRESET_MAX_LINE 1024
 #define PRESET_MAX_ENTRIES 512
 
 struct entry {
@@ -366,6 +357,18 @@ load_entries(struct collect *c, const char *file, struct scene *sc, char *msg, s
 	return HB_OK;
 }
 
+void
+preset_ini_options(void)
+{
+	ini_allow_multiline = 0;
+	ini_allow_inline_comments = 1;
+	ini_inline_comment_prefixes = (char *)";#";
+	ini_start_comment_prefixes = (char *)";#";
+	ini_allow_no_value = 0;
+	ini_stop_on_first_error = 0;
+	ini_max_line = PRESET_MAX_LINE;
+}
+
 int
 preset_load_string(const char *text, const char *name, struct scene *sc, char *msg, size_t n)
 {
@@ -379,13 +382,7 @@ preset_load_string(const char *text, const char *name, struct scene *sc, char *m
 	c.e = calloc(PRESET_MAX_ENTRIES, sizeof *c.e);
 	if (c.e == NULL)
 		return status_set(msg, n, HB_ENOMEM, "%s: out of memory", name);
-	ini_allow_multiline = 0;
-	ini_allow_inline_comments = 1;
-	ini_inline_comment_prefixes = (char *)";#";
-	ini_start_comment_prefixes = (char *)";#";
-	ini_allow_no_value = 0;
-	ini_stop_on_first_error = 0;
-	ini_max_line = PRESET_MAX_LINE;
+	preset_ini_options();
 	r = ini_parse_stream(source_read, &src, collect_handler, &h);
 	if (src.long_line != 0 && (r <= 0 || src.long_line <= r))
 		st = status_set(msg, n, HB_EINVAL,
@@ -580,321 +577,4 @@ preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 	st = atomic_write_file(path, buf, len, msg, n);
 	free(buf);
 	return st == HB_OK ? HB_OK : HB_EIO;
-}
-
-/* ---------------------------------------------------------------- */
-/* Finding presets */
-
-/*
- * The folders near the running executable (Linux /proc/self/exe):
- * BIN/../presets (build/hybounce in the source tree) and
- * BIN/../share/hybounce/presets (PREFIX/bin/hybounce installed anywhere),
- * those that exist, written into out[0..1].  Returns how many.
- */
-static int
-exe_dirs(char out[2][1024])
-{
-	static const char *const rel[] = { "/../presets", "/../share/hybounce/presets" };
-	char exe[1024], *slash;
-	ssize_t l = readlink("/proc/self/exe", exe, sizeof exe - 1);
-	struct stat st;
-	int k = 0;
-
-	if (l <= 0)
-		return 0;
-	exe[l] = '\0';
-	slash = strrchr(exe, '/');
-	if (slash == NULL)
-		return 0;
-	*slash = '\0';
-	for (size_t i = 0; i < sizeof rel / sizeof rel[0]; i++) {
-		if ((size_t)snprintf(out[k], sizeof out[k], "%s%s", exe, rel[i]) >= sizeof out[k])
-			continue;
-		if (stat(out[k], &st) == 0 && S_ISDIR(st.st_mode))
-			k++;
-	}
-	return k;
-}
-
-/*
- * Any number of folders: the entries of $HYBOUNCE_PRESETS split into one
- * block per thread (a thread-specific value, freed when the thread ends),
- * built again only when HYBOUNCE_PRESETS changes, so that a list returned
- * earlier stays valid while the environment does not change.
- */
-struct dirs_cache {
-	char *seen;        /* HYBOUNCE_PRESETS when built; NULL if unset */
-	int built;
-	const char **dirs; /* points into the same block as the strings */
-};
-
-/* Written once, under pthread_once: the only static of the core that is not const. */
-static pthread_key_t preset_dirs_key;
-static pthread_once_t preset_dirs_once = PTHREAD_ONCE_INIT;
-
-static void
-dirs_cache_free(void *p)
-{
-	struct dirs_cache *c = p;
-
-	if (c != NULL) {
-		free(c->seen);
-		free(c->dirs);
-		free(c);
-	}
-}
-
-static void
-preset_dirs_key_make(void)
-{
-	(void)pthread_key_create(&preset_dirs_key, dirs_cache_free);
-}
-
-const char *const *
-preset_dirs(void)
-{
-	static _Thread_local char datadir[sizeof HYBOUNCE_DATADIR + 16], near[2][1024];
-	static _Thread_local const char *fallback[3];
-	static const char here[] = "presets";
-	const char *env = getenv("HYBOUNCE_PRESETS");
-	struct dirs_cache *c;
-	size_t k = 0, count = 5, len = env != NULL ? strlen(env) + 1 : 0;
-	int nnear;
-	char *store;
-
-	snprintf(datadir, sizeof datadir, "%s/presets", HYBOUNCE_DATADIR);
-	fallback[0] = here;
-	fallback[1] = datadir;
-	fallback[2] = NULL;
-	if (pthread_once(&preset_dirs_once, preset_dirs_key_make) != 0)
-		return fallback;
-	c = pthread_getspecific(preset_dirs_key);
-	if (c == NULL) {
-		c = calloc(1, sizeof *c);
-		if (c == NULL)
-			return fallback;
-		if (pthread_setspecific(preset_dirs_key, c) != 0) {
-			free(c);
-			return fallback;
-		}
-	}
-	if (c->built && c->dirs != NULL &&
-	    (env == NULL ? c->seen == NULL : c->seen != NULL && strcmp(env, c->seen) == 0))
-		return c->dirs;
-	free(c->seen);
-	free(c->dirs);
-	c->seen = NULL;
-	c->dirs = NULL;
-	c->built = 1;
-	if (env != NULL)
-		for (const char *p = env; *p != '\0'; p++)
-			count += *p == ':';
-	/* the pointers, then a copy of the entries they point into */
-	c->dirs = malloc((count + 1) * sizeof *c->dirs + len);
-	if (c->dirs == NULL || (env != NULL && (c->seen = strdup(env)) == NULL)) {
-		free(c->dirs);
-		c->dirs = NULL;
-		return fallback; /* out of memory: the built-in folders only */
-	}
-	store = (char *)(c->dirs + count + 1);
-	if (env != NULL)
-		memcpy(store, env, len);
-	for (char *p = env != NULL ? store : NULL; p != NULL && *p != '\0';) {
-		char *q = strchr(p, ':');
-
-		if (q != NULL)
-			*q = '\0';
-		if (*p != '\0') /* an empty entry ("a::b") names no folder */
-			c->dirs[k++] = p;
-		p = q != NULL ? q + 1 : NULL;
-	}
-	c->dirs[k++] = here;
-	c->dirs[k++] = datadir;
-	nnear = exe_dirs(near);
-	for (int i = 0; i < nnear; i++)
-		c->dirs[k++] = near[i];
-	c->dirs[k] = NULL;
-	return c->dirs;
-}
-
-static int
-is_file(const char *path)
-{
-	struct stat st;
-
-	return stat(path, &st) == 0 && S_ISREG(st.st_mode);
-}
-
-/* A path given as the preset itself may also be a pipe: -b <(sed ... x.preset). */
-static int
-is_file_or_pipe(const char *path)
-{
-	struct stat st;
-
-	return stat(path, &st) == 0 && (S_ISREG(st.st_mode) || S_ISFIFO(st.st_mode));
-}
-
-/*
- * Why an existing path is not a preset file, in its own words: "is a
- * directory", "is a symbolic link loop", "is a socket" ... (ENOENT only
- * when nothing is there).
- */
-static int
-not_a_preset(const char *name, char *msg, size_t mn)
-{
-	struct stat st, lst;
-	const char *what = NULL;
-
-	if (lstat(name, &lst) != 0)
-		return status_set(msg, mn, HB_EINVAL, "%s: %s", name, strerror(errno));
-	if (stat(name, &st) != 0) {
-		if (errno == ELOOP)
-			return status_set(msg, mn, HB_EINVAL, "%s: a loop of symbolic links (%s); "
-			    "expected a preset file", name, strerror(ELOOP));
-		if (S_ISLNK(lst.st_mode))
-			return status_set(msg, mn, HB_EINVAL, "%s: a symbolic link to nothing (%s); "
-			    "expected a preset file", name, strerror(errno));
-		return status_set(msg, mn, HB_EINVAL, "%s: %s", name, strerror(errno));
-	}
-	if (S_ISDIR(st.st_mode))
-		what = "a directory";
-	else if (S_ISCHR(st.st_mode))
-		what = "a character device";
-	else if (S_ISBLK(st.st_mode))
-		what = "a block device";
-	else if (S_ISSOCK(st.st_mode))
-		what = "a socket";
-	else
-		what = "not a regular file";
-	return status_set(msg, mn, HB_EINVAL, "%s: is %s; expected a preset file (or a pipe, "
-	    "e.g. <(...)) or a preset name", name, what);
-}
-
-int
-preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn)
-{
-	const char *const *dirs;
-	char path[1024], where[1024] = "";
-	struct stat lst;
-
-	if (name == NULL || name[0] == '\0')
-		return status_set(msg, mn, HB_EINVAL, "no preset name given; expected a preset name "
-		    "(hybounce --list-presets) or the path of a preset file");
-	if (is_file_or_pipe(name)) {
-		if (strlen(name) >= n)
-			return status_set(msg, mn, HB_EINVAL, "%s: path too long", name);
-		snprintf(out, n, "%s", name);
-		return HB_OK;
-	}
-	if (strchr(name, '/') == NULL) {
-		dirs = preset_dirs();
-		for (int i = 0; dirs[i] != NULL; i++) {
-			for (int ext = 0; ext < 2; ext++) {
-				snprintf(path, sizeof path, "%s/%s%s", dirs[i], name,
-				    ext ? ".preset" : "");
-				if (is_file(path)) {
-					if (strlen(path) >= n)
-						return status_set(msg, mn, HB_EINVAL, "%s: path too long",
-						    path);
-					snprintf(out, n, "%s", path);
-					return HB_OK;
-				}
-			}
-			size_t l = strlen(where);
-			snprintf(where + l, sizeof where - l, "%s%s", i ? ", " : "", dirs[i]);
-		}
-		if (lstat(name, &lst) == 0) /* something is there: say what */
-			return not_a_preset(name, msg, mn);
-		return status_set(msg, mn, HB_EINVAL,
-		    "no preset '%s': not a file, and neither %s nor %s.preset is in %s", name, name,
-		    name, where);
-	}
-	return not_a_preset(name, msg, mn);
-}
-
-struct title_ctx {
-	char title[96];
-	char description[256];
-};
-
-static int
-title_handler(void *user, const char *section, const char *name, const char *value)
-{
-	struct title_ctx *t = user;
-
-	if (strcmp(section, "scene") != 0)
-		return 1;
-	if (strcmp(name, "name") == 0)
-		snprintf(t->title, sizeof t->title, "%s", value);
-	else if (strcmp(name, "description") == 0)
-		snprintf(t->description, sizeof t->description, "%s", value);
-	return 1;
-}
-
-static int
-info_cmp(const void *a, const void *b)
-{
-	return strcmp(((const struct preset_info *)a)->name, ((const struct preset_info *)b)->name);
-}
-
-int
-preset_list(struct preset_info **out)
-{
-	const char *const *dirs = preset_dirs();
-	struct preset_info *v = NULL;
-	int cnt = 0, cap = 0;
-
-	*out = NULL;
-	for (int i = 0; dirs[i] != NULL; i++) {
-		DIR *d = opendir(dirs[i]);
-		struct dirent *de;
-		if (d == NULL)
-			continue;
-		while ((de = readdir(d)) != NULL) {
-			size_t l = strlen(de->d_name);
-			struct preset_info pi;
-			struct title_ctx t = { "", "" };
-			int dup = 0;
-			if (l <= 7 || strcmp(de->d_name + l - 7, ".preset") != 0 || l - 7 >= sizeof pi.name)
-				continue;
-			memset(&pi, 0, sizeof pi);
-			memcpy(pi.name, de->d_name, l - 7);
-			for (int k = 0; k < cnt; k++)
-				if (strcmp(v[k].name, pi.name) == 0)
-					dup = 1;
-			if (dup)
-				continue;
-			if ((size_t)snprintf(pi.path, sizeof pi.path, "%s/%s", dirs[i], de->d_name) >=
-			    sizeof pi.path || !is_file(pi.path))
-				continue;
-			ini_max_line = PRESET_MAX_LINE;
-			ini_inline_comment_prefixes = (char *)";#";
-			ini_parse(pi.path, title_handler, &t);
-			snprintf(pi.title, sizeof pi.title, "%s", t.title);
-			snprintf(pi.description, sizeof pi.description, "%s", t.description);
-			if (cnt == cap) {
-				int nc = cap ? 2 * cap : 16;
-				struct preset_info *nv = realloc(v, (size_t)nc * sizeof *nv);
-				if (nv == NULL) {
-					closedir(d);
-					free(v);
-					return -1;
-				}
-				v = nv;
-				cap = nc;
-			}
-			v[cnt++] = pi;
-		}
-		closedir(d);
-	}
-	if (cnt > 1)
-		qsort(v, (size_t)cnt, sizeof *v, info_cmp);
-	if (cnt == 0) {
-		free(v);
-		v = malloc(sizeof *v); /* a valid pointer to free even when empty */
-		if (v == NULL)
-			return -1;
-	}
-	*out = v;
-	return cnt;
 }

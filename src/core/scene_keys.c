@@ -10,6 +10,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
+#include <strings.h>
 
 #include "hybounce/scene.h"
 #include "hybounce/status.h"
@@ -195,32 +196,6 @@ scene_keydef_choices(const struct scene_keydef *kd, const char **out, int max)
 	return k;
 }
 
-/* 1 if the first len bytes of a equal b, ignoring ASCII case. */
-static int
-strncasecmp_ascii(const char *a, const char *b, size_t len)
-{
-	for (size_t i = 0; i < len; i++) {
-		char x = a[i] >= 'A' && a[i] <= 'Z' ? (char)(a[i] - 'A' + 'a') : a[i];
-		char y = b[i] >= 'A' && b[i] <= 'Z' ? (char)(b[i] - 'A' + 'a') : b[i];
-		if (x != y)
-			return 0;
-	}
-	return 1;
-}
-
-/* ASCII case-insensitive equality. */
-static int
-name_eq(const char *a, const char *b)
-{
-	for (; *a && *b; a++, b++) {
-		char x = *a >= 'A' && *a <= 'Z' ? (char)(*a - 'A' + 'a') : *a;
-		char y = *b >= 'A' && *b <= 'Z' ? (char)(*b - 'A' + 'a') : *b;
-		if (x != y)
-			return 0;
-	}
-	return *a == *b;
-}
-
 int
 scene_keydef_read_choice(const struct scene_keydef *kd, const char *t, int *v)
 {
@@ -231,14 +206,14 @@ scene_keydef_read_choice(const struct scene_keydef *kd, const char *t, int *v)
 	case ST_LAW: {
 		const struct law_type *const *l = law_list();
 		for (int i = 0; l[i] != NULL; i++)
-			if (name_eq(l[i]->name, t))
+			if (strcasecmp(l[i]->name, t) == 0)
 				return *v = i, 0;
 		return -1;
 	}
 	case ST_EXT:
-		if (name_eq(t, "adhesive"))
+		if (strcasecmp(t, "adhesive") == 0)
 			return *v = 1, 0;
-		if (name_eq(t, "none") || name_eq(t, "clamped"))
+		if (strcasecmp(t, "none") == 0 || strcasecmp(t, "clamped") == 0)
 			return *v = 0, 0;
 		return -1;
 	case ST_STEPPER:
@@ -246,24 +221,24 @@ scene_keydef_read_choice(const struct scene_keydef *kd, const char *t, int *v)
 		return *v < 0 ? -1 : 0;
 	case ST_BOOL:
 		for (int i = 0; i < 4; i++) {
-			if (name_eq(t, yes[i]))
+			if (strcasecmp(t, yes[i]) == 0)
 				return *v = 1, 0;
-			if (name_eq(t, no[i]))
+			if (strcasecmp(t, no[i]) == 0)
 				return *v = 0, 0;
 		}
 		return -1;
 	case ST_REDUCE: {
 		static const char *const flag[] = { "flight", "contact", "com" };
 		int r = 0;
-		if (name_eq(t, "all"))
+		if (strcasecmp(t, "all") == 0)
 			return *v = REDUCE_ALL, 0;
-		if (name_eq(t, "none"))
+		if (strcasecmp(t, "none") == 0)
 			return *v = 0, 0;
 		while (*t) {
 			size_t len = strcspn(t, ", \t");
 			int f = -1;
 			for (int i = 0; i < 3; i++)
-				if (strlen(flag[i]) == len && strncasecmp_ascii(t, flag[i], len))
+				if (strlen(flag[i]) == len && strncasecmp(t, flag[i], len) == 0)
 					f = i;
 			if (len > 0 && f < 0)
 				return -1;

@@ -170,7 +170,7 @@ nudge(struct app *a, int dir)
 	}
 	v = dir > 0 ? ki.number * 1.1 : ki.number / 1.1;
 	if (ki.kind == SCENE_KEY_WHOLE)
-		v = dir > 0 ? fmax(ceil(v), ki.number + 1) : fmin(floor(v), ki.number - 1);
+		v = dir > 0 ? fmax(round(v), ki.number + 1) : fmin(round(v), ki.number - 1);
 	if (scene_set_number(&sc, ki.key, v, &err) != HB_OK) {
 		a->branch_armed = 0;
 		app_msg(a, 1, "refused (old value kept): %s", scene_error_str(&err, emsg, sizeof emsg));
