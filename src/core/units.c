@@ -327,16 +327,9 @@ exp_str(double e, char *buf, size_t n)
 {
 	double r2 = round(2 * e);
 
-	/*
-	 * %.0f, not a cast to int: an exponent derived from law.n = 3e9 (or any
-	 * double) must print, and (int) of a double beyond INT_MAX is undefined.
-	 * Every digit is written, so that what is printed reads back.
-	 */
-	if (!isfinite(e) || fabs(e) > UNITS_MAX_EXP)
-		snprintf(buf, n, "%.17g", e);
-	else if (fabs(e - round(e)) < UNITS_TOL)
-		snprintf(buf, n, "%.0f", round(e) + 0.0); /* + 0.0: never "-0" */
-	else if (fabs(2 * e - r2) < UNITS_TOL)
+	if (fabs(e - round(e)) < UNITS_TOL && fabs(e) < 1e15)
+		snprintf(buf, n, "%.0f", round(e) == 0 ? 0.0 : round(e));
+	else if (fabs(2 * e - r2) < UNITS_TOL && fabs(e) < 1e15)
 		snprintf(buf, n, "%.0f/2", r2);
 	else
 		snprintf(buf, n, "%.17g", e);
