@@ -585,63 +585,89 @@ preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 /* Finding presets */
 
 /*
- * Any number of folders: the entries of $HYBOUNCE_PRESETS are split into a
- * buffer that grows (each call rebuilds it; earlier results are invalid).
+ * The folders of $HYBOUNCE_PRESETS, split in place in storage of the
+ * calling thread (no heap: nothing to free when a thread ends).  Up to
+ * PRESET_DIRS_MAX folders and PRESET_DIRS_TEXT - 1 characters; beyond that
+ * the rest is not searched, and dirs_cut() says so (preset_resolve's
+ * message names it): never a silent cut.
  */
+enum { PRESET_DIRS_MAX = 256, PRESET_DIRS_TEXT = 8192 };
+
+static _Thread_local char dirs_store[PRESET_DIRS_TEXT];
+static _Thread_local size_t dirs_len;       /* bytes of HYBOUNCE_PRESETS kept */
+static _Thread_local int dirs_built, dirs_env, dirs_overflow;
+static _Thread_local const char *dirs_list[PRESET_DIRS_MAX + 3];
+static _Thread_local char dirs_datadir[sizeof HYBOUNCE_DATADIR + 16];
+
+/* 1 if the list was built from this value of HYBOUNCE_PRESETS. */
+static int
+dirs_same(const char *env)
+{
+	if (!dirs_built || (env != NULL) != dirs_env)
+		return 0;
+	if (env == NULL)
+		return 1;
+	for (size_t i = 0; i < dirs_len; i++) /* ':' became '\0' in the store */
+		if (env[i] != (dirs_store[i] != '\0' ? dirs_store[i] : ':'))
+			return 0;
+	return env[dirs_len] == '\0' || dirs_overflow;
+}
+
 const char *const *
 preset_dirs(void)
 {
-	/*
-	 * Per thread, so that threads may look presets up at once; built again
-	 * only when HYBOUNCE_PRESETS changes, so that a list returned earlier
-	 * stays valid while the environment does not change.
-	 */
-	static _Thread_local char *store, *seen, datadir[sizeof HYBOUNCE_DATADIR + 16];
-	static _Thread_local const char **dirs, *fallback[3];
-	static _Thread_local int built;
 	static const char here[] = "presets";
 	const char *env = getenv("HYBOUNCE_PRESETS");
-	size_t k = 0, count = 3;
+	size_t k = 0, len;
 
-	if (built && dirs != NULL &&
-	    (env == NULL ? seen == NULL : seen != NULL && strcmp(env, seen) == 0))
-		return dirs;
-	snprintf(datadir, sizeof datadir, "%s/presets", HYBOUNCE_DATADIR);
-	free(store);
-	free(seen);
-	free(dirs);
-	store = seen = NULL;
-	dirs = NULL;
-	built = 1;
+	if (dirs_same(env))
+		return dirs_list;
+	snprintf(dirs_datadir, sizeof dirs_datadir, "%s/presets", HYBOUNCE_DATADIR);
+	dirs_built = 1;
+	dirs_env = env != NULL;
+	dirs_overflow = 0;
+	dirs_len = 0;
 	if (env != NULL) {
-		for (const char *p = env; *p != '\0'; p++)
-			count += *p == ':';
-		store = strdup(env);
-		seen = strdup(env);
-	}
-	dirs = malloc((count + 1) * sizeof *dirs);
-	if (dirs == NULL || (env != NULL && (store == NULL || seen == NULL))) {
-		/* out of memory: the built-in folders only */
-		free(dirs);
-		dirs = NULL;
-		fallback[0] = here;
-		fallback[1] = datadir;
-		fallback[2] = NULL;
-		return fallback;
-	}
-	for (char *p = store; p != NULL && *p != '\0';) {
-		char *q = strchr(p, ':');
+		len = strlen(env);
+		if (len >= sizeof dirs_store) {
+			/* keep whole entries only */
+			len = sizeof dirs_store - 1;
+			while (len > 0 && env[len] != ':')
+				len--;
+			dirs_overflow = 1;
+		}
+		memcpy(dirs_store, env, len);
+		dirs_store[len] = '\0';
+		dirs_len = len;
+		for (char *p = dirs_store; p < dirs_store + len;) {
+			char *q = strchr(p, ':');
 
-		if (q != NULL)
-			*q = '\0';
-		if (*p != '\0') /* an empty entry ("a::b") names no folder */
-			dirs[k++] = p;
-		p = q != NULL ? q + 1 : NULL;
+			if (q != NULL)
+				*q = '\0';
+			if (*p != '\0') { /* an empty entry ("a::b") names no folder */
+				if (k == PRESET_DIRS_MAX) {
+					dirs_overflow = 1;
+					break;
+				}
+				dirs_list[k++] = p;
+			}
+			if (q == NULL)
+				break;
+			p = q + 1;
+		}
 	}
-	dirs[k++] = here;
-	dirs[k++] = datadir;
-	dirs[k] = NULL;
-	return dirs;
+	dirs_list[k++] = here;
+	dirs_list[k++] = dirs_datadir;
+	dirs_list[k] = NULL;
+	return dirs_list;
+}
+
+/* What a "no preset" message adds when $HYBOUNCE_PRESETS was cut. */
+static const char *
+dirs_cut(void)
+{
+	return dirs_overflow ? " (HYBOUNCE_PRESETS has more than 256 folders or 8191 "
+	    "characters: the rest was not searched)" : "";
 }
 
 static int
@@ -733,8 +759,8 @@ preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn)
 		if (lstat(name, &lst) == 0) /* something is there: say what */
 			return not_a_preset(name, msg, mn);
 		return status_set(msg, mn, HB_EINVAL,
-		    "no preset '%s': not a file, and neither %s nor %s.preset is in %s", name, name,
-		    name, where);
+		    "no preset '%s'%s: not a file, and neither %s nor %s.preset is in %s", name,
+		    dirs_cut(), name, name, where);
 	}
 	return not_a_preset(name, msg, mn);
 }
