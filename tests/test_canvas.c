@@ -219,3 +219,19 @@ Test(canvas, row_truncates_safely)
 	cr_assert_str_eq(row, "***");
 	canvas_free(c);
 }
+
+/* A horizon of 1e308 s: short tick labels, never 30 digits (issue: run.T = 1e308). */
+Test(canvas, ticks_huge_values_stay_short)
+{
+	struct axis ax;
+	char lab[32], line[128];
+
+	canvas_axis(0, 1e308, 6, "s", &ax);
+	for (int i = 0; i < ax.nticks; i++) {
+		canvas_tick_label(&ax, ax.tick[i], lab, sizeof lab);
+		cr_assert(strlen(lab) <= 9, "label '%s'", lab);
+	}
+	canvas_axis_line(&ax, ax.lo, ax.hi, 70, line, sizeof line);
+	cr_assert(strstr(line, "e+") != NULL, "'%s'", line);
+	cr_assert(strlen(line) <= 70);
+}

@@ -10,6 +10,7 @@
 #include "keys.h"
 #include "layout.h"
 #include "testutil.h"
+#include "tui.h"
 
 Test(keys, no_key_bound_twice_in_one_context)
 {
@@ -131,30 +132,95 @@ disjoint(struct rect a, struct rect b)
 Test(layout, sizes)
 {
 	struct layout L;
-	int sizes[][2] = { { 80, 24 }, { 100, 30 }, { 129, 40 }, { 130, 40 }, { 160, 48 }, { 300, 90 } };
+	int sizes[][2] = { { 60, 16 }, { 70, 20 }, { 80, 23 }, { 80, 24 }, { 100, 30 }, { 129, 40 },
+	                   { 130, 40 }, { 160, 48 }, { 300, 90 } };
 
-	cr_assert_eq(layout_compute(79, 24, 0, &L), -1);
+	cr_assert_eq(layout_compute(59, 24, 0, &L), -1);
 	cr_assert(L.too_small);
-	cr_assert_eq(layout_compute(80, 23, 0, &L), -1);
+	cr_assert_eq(layout_compute(80, 15, 0, &L), -1);
 	cr_assert_eq(layout_compute(60, 15, 0, &L), -1);
+	cr_assert_eq(layout_compute(60, 16, 0, &L), 0, "the documented minimum is 60x16");
 	for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++)
 		for (int p = 0; p < 2; p++) {
 			int c = sizes[i][0], l = sizes[i][1];
 			cr_assert_eq(layout_compute(c, l, p, &L), 0);
-			struct rect r[] = { L.status, L.plots, L.table, L.params, L.msg, L.footer };
-			for (size_t k = 0; k < 6; k++) {
+			struct rect r[] = { L.status, L.plots, L.table, L.params, L.readout, L.msg, L.footer };
+			for (size_t k = 0; k < 7; k++) {
 				cr_assert(inside(r[k], c, l), "%dx%d pane %zu outside", c, l, k);
-				for (size_t m = k + 1; m < 6; m++)
+				for (size_t m = k + 1; m < 7; m++)
 					cr_assert(disjoint(r[k], r[m]), "%dx%d panes %zu and %zu overlap",
 					          c, l, k, m);
 			}
-			cr_assert(L.plots.h >= 12, "%dx%d: plots %d rows", c, l, L.plots.h);
+			/* full layout from 80x23 (an 80x24 terminal under tmux or screen) */
+			cr_assert(L.plots.h >= (l >= 23 ? 12 : 8), "%dx%d: plots %d rows", c, l, L.plots.h);
+			cr_assert(L.table.h + L.params.h >= (l >= 24 ? 7 : l >= 23 ? 6 : 4), "%dx%d: bottom pane", c, l);
+			/* two rows where one would cut the values (23 lines and up, narrow) */
+			cr_assert_eq(L.readout.h, l >= 23 && c < LAYOUT_READOUT_COLS ? 2 : 1, "%dx%d", c, l);
+			cr_assert_eq(L.readout.y + L.readout.h, L.msg.y);
 			cr_assert(L.table_visible || L.params_visible);
 			cr_assert_eq(L.wide, c >= LAYOUT_WIDE_COLS);
 			if (!L.wide)
 				cr_assert_eq(L.params_visible, p);
 			cr_assert_eq(L.footer.y, l - 1);
 		}
+}
+
+Test(layout, presentation)
+{
+	struct layout L;
+
+	cr_assert_eq(layout_compute(80, 24, 0, &L), 0);
+	layout_present(&L);
+	cr_assert(!L.table_visible && !L.params_visible);
+	cr_assert_eq(L.plots.h, 19);
+	cr_assert_eq(L.plots.w, 80);
+	cr_assert_eq(L.readout.y, 20);
+	cr_assert_eq(L.plots.y + L.plots.h, L.readout.y);
+}
+
+/* Every action of the key table has a function (actions.c); no function for ACT_NONE. */
+Test(keys, every_action_dispatched)
+{
+	size_t n;
+	const struct key_binding *t = keys_table(&n);
+
+	cr_assert_null(action_get(ACT_NONE));
+	cr_assert_null(action_get(ACT_COUNT));
+	for (int act = ACT_NONE + 1; act < ACT_COUNT; act++) {
+		int bound = 0;
+		cr_assert_not_null(action_get(act), "action %d has no function", act);
+		for (size_t i = 0; i < n; i++)
+			bound |= t[i].action == act;
+		cr_assert(bound, "action %d has no key", act);
+	}
+}
+
+/* The README's Explorer section holds the Markdown key table generated from the table. */
+Test(keys, readme_matches_table)
+{
+	char *md = slurp("README.md"), *b, *e, gen[16384];
+
+	cr_assert_not_null(md, "README.md not readable (run from the top folder)");
+	b = strstr(md, "<!-- KEYS-BEGIN -->\n");
+	e = strstr(md, "<!-- KEYS-END -->");
+	cr_assert(b && e && b < e, "KEYS-BEGIN / KEYS-END markers missing in README.md");
+	b += strlen("<!-- KEYS-BEGIN -->\n");
+	*e = 0;
+	cr_assert(keys_markdown(gen, sizeof gen) < sizeof gen);
+	cr_assert_str_eq(b, gen, "the README's key table differs from the key table: make keys-doc");
+	free(md);
+}
+
+/* F1 and F10 are help and quit, as in htop and mc. */
+Test(keys, function_keys)
+{
+	cr_assert_eq(keys_action(keys_from_name("F1"), 0), ACT_HELP);
+	cr_assert_eq(keys_action(keys_from_name("F10"), 1), ACT_QUIT);
+	cr_assert_eq(keys_action('/', 0), ACT_SEARCH);
+	/* Home and End move the list in the panel, the time cursor elsewhere */
+	cr_assert_eq(keys_action(keys_from_name("Home"), 1), ACT_TOP);
+	cr_assert_eq(keys_action(keys_from_name("Home"), 0), ACT_HOME);
+	cr_assert_eq(keys_action('1', 0), ACT_NONE);
 }
 
 Test(layout, stack)

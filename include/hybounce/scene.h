@@ -44,7 +44,8 @@ enum scene_stepper {
 	STEPPER_MSBDF,     /* implicit, uses the law's Jacobian */
 	STEPPER_RK4IMP,
 	STEPPER_BSIMP,
-	STEPPER_AUTO,      /* rk8pd, then bsimp for contacts once one is found stiff */
+	STEPPER_AUTO,      /* dop853, then bsimp for contacts once one is found stiff */
+	STEPPER_DOP853,    /* explicit Dormand-Prince 8(5,3) with dense output (the engine's own) */
 	STEPPER_COUNT
 };
 

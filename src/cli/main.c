@@ -5,6 +5,7 @@
  *     hybounce [OPTIONS] [PRESET]          the explorer
  *     hybounce --batch PRESET [OPTIONS]    batch mode (batch.c)
  *     hybounce --list-presets | --list-laws | --help | --version
+ *     hybounce fit PRESET --data FILE --free KEY,...   (fit_cmd.c)
  *
  * Exit status: 0 success; 1 the run failed numerically; 2 bad input
  * (unknown option, bad preset, bad --set, unwritable export path) or
@@ -24,6 +25,8 @@
 #include "hybounce/status.h"
 #include "app.h"
 #include "batch.h"
+#include "sweep_cli.h"
+#include "fit_cmd.h"
 
 #define PROG "hybounce"
 #define DEFAULT_PRESET "steel-on-bitumen"
@@ -63,6 +66,9 @@ DEFAULT_PRESET ")\n"
 "       hybounce --batch PRESET [--set KEY=VALUE]... [--trace FILE]\n"
 "                [--collisions FILE] [--jumps] [--check] [--quiet]\n"
 "       hybounce --list-presets | --list-laws | --help | --version\n"
+"       hybounce sweep PRESET --vary KEY=SPEC... --out DIR   (see hybounce sweep --help)\n"
+"       hybounce fit PRESET --data FILE --free KEY[,KEY...] [OPTIONS]\n"
+"                               fit parameters to measurements (hybounce fit --help)\n"
 "\n"
 "Repeated impacts of two bodies under incremental contact laws, as a hybrid\n"
 "system (flows and jumps over hybrid time (t, j)).\n"
@@ -152,6 +158,14 @@ hybounce_main(int argc, char **argv)
 	int nsets = 0, ascii = 0, list_presets = 0, list_laws = 0, c, status;
 	char msg[1024];
 
+	if (argc > 1 && strcmp(argv[1], "sweep") == 0)
+		return sweep_main(argc - 1, argv + 1);   /* hybounce sweep ... (sweep.c) */
+	if (argc > 1 && strcmp(argv[1], "fit") == 0) {
+		static char fitprog[] = PROG " fit";
+
+		argv[1] = fitprog;
+		return fit_main(argc - 1, argv + 1);
+	}
 	memset(&bo, 0, sizeof bo);
 	sets = calloc((size_t)argc + 1, sizeof *sets);
 	if (sets == NULL) {

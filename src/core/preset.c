@@ -29,6 +29,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -585,89 +586,135 @@ preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 /* Finding presets */
 
 /*
- * The folders of $HYBOUNCE_PRESETS, split in place in storage of the
- * calling thread (no heap: nothing to free when a thread ends).  Up to
- * PRESET_DIRS_MAX folders and PRESET_DIRS_TEXT - 1 characters; beyond that
- * the rest is not searched, and dirs_cut() says so (preset_resolve's
- * message names it): never a silent cut.
+ * The folders near the running executable (Linux /proc/self/exe):
+ * BIN/../presets (build/hybounce in the source tree) and
+ * BIN/../share/hybounce/presets (PREFIX/bin/hybounce installed anywhere),
+ * those that exist, written into out[0..1].  Returns how many.
  */
-enum { PRESET_DIRS_MAX = 256, PRESET_DIRS_TEXT = 8192 };
-
-static _Thread_local char dirs_store[PRESET_DIRS_TEXT];
-static _Thread_local size_t dirs_len;       /* bytes of HYBOUNCE_PRESETS kept */
-static _Thread_local int dirs_built, dirs_env, dirs_overflow;
-static _Thread_local const char *dirs_list[PRESET_DIRS_MAX + 3];
-static _Thread_local char dirs_datadir[sizeof HYBOUNCE_DATADIR + 16];
-
-/* 1 if the list was built from this value of HYBOUNCE_PRESETS. */
 static int
-dirs_same(const char *env)
+exe_dirs(char out[2][1024])
 {
-	if (!dirs_built || (env != NULL) != dirs_env)
+	static const char *const rel[] = { "/../presets", "/../share/hybounce/presets" };
+	char exe[1024], *slash;
+	ssize_t l = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	struct stat st;
+	int k = 0;
+
+	if (l <= 0)
 		return 0;
-	if (env == NULL)
-		return 1;
-	for (size_t i = 0; i < dirs_len; i++) /* ':' became '\0' in the store */
-		if (env[i] != (dirs_store[i] != '\0' ? dirs_store[i] : ':'))
-			return 0;
-	return env[dirs_len] == '\0' || dirs_overflow;
+	exe[l] = '\0';
+	slash = strrchr(exe, '/');
+	if (slash == NULL)
+		return 0;
+	*slash = '\0';
+	for (size_t i = 0; i < sizeof rel / sizeof rel[0]; i++) {
+		if ((size_t)snprintf(out[k], sizeof out[k], "%s%s", exe, rel[i]) >= sizeof out[k])
+			continue;
+		if (stat(out[k], &st) == 0 && S_ISDIR(st.st_mode))
+			k++;
+	}
+	return k;
+}
+
+/*
+ * Any number of folders: the entries of $HYBOUNCE_PRESETS split into one
+ * block per thread (a thread-specific value, freed when the thread ends),
+ * built again only when HYBOUNCE_PRESETS changes, so that a list returned
+ * earlier stays valid while the environment does not change.
+ */
+struct dirs_cache {
+	char *seen;        /* HYBOUNCE_PRESETS when built; NULL if unset */
+	int built;
+	const char **dirs; /* points into the same block as the strings */
+};
+
+/* Written once, under pthread_once: the only static of the core that is not const. */
+static pthread_key_t preset_dirs_key;
+static pthread_once_t preset_dirs_once = PTHREAD_ONCE_INIT;
+
+static void
+dirs_cache_free(void *p)
+{
+	struct dirs_cache *c = p;
+
+	if (c != NULL) {
+		free(c->seen);
+		free(c->dirs);
+		free(c);
+	}
+}
+
+static void
+preset_dirs_key_make(void)
+{
+	(void)pthread_key_create(&preset_dirs_key, dirs_cache_free);
 }
 
 const char *const *
 preset_dirs(void)
 {
+	static _Thread_local char datadir[sizeof HYBOUNCE_DATADIR + 16], near[2][1024];
+	static _Thread_local const char *fallback[3];
 	static const char here[] = "presets";
 	const char *env = getenv("HYBOUNCE_PRESETS");
-	size_t k = 0, len;
+	struct dirs_cache *c;
+	size_t k = 0, count = 5, len = env != NULL ? strlen(env) + 1 : 0;
+	int nnear;
+	char *store;
 
-	if (dirs_same(env))
-		return dirs_list;
-	snprintf(dirs_datadir, sizeof dirs_datadir, "%s/presets", HYBOUNCE_DATADIR);
-	dirs_built = 1;
-	dirs_env = env != NULL;
-	dirs_overflow = 0;
-	dirs_len = 0;
-	if (env != NULL) {
-		len = strlen(env);
-		if (len >= sizeof dirs_store) {
-			/* keep whole entries only */
-			len = sizeof dirs_store - 1;
-			while (len > 0 && env[len] != ':')
-				len--;
-			dirs_overflow = 1;
-		}
-		memcpy(dirs_store, env, len);
-		dirs_store[len] = '\0';
-		dirs_len = len;
-		for (char *p = dirs_store; p < dirs_store + len;) {
-			char *q = strchr(p, ':');
-
-			if (q != NULL)
-				*q = '\0';
-			if (*p != '\0') { /* an empty entry ("a::b") names no folder */
-				if (k == PRESET_DIRS_MAX) {
-					dirs_overflow = 1;
-					break;
-				}
-				dirs_list[k++] = p;
-			}
-			if (q == NULL)
-				break;
-			p = q + 1;
+	snprintf(datadir, sizeof datadir, "%s/presets", HYBOUNCE_DATADIR);
+	fallback[0] = here;
+	fallback[1] = datadir;
+	fallback[2] = NULL;
+	if (pthread_once(&preset_dirs_once, preset_dirs_key_make) != 0)
+		return fallback;
+	c = pthread_getspecific(preset_dirs_key);
+	if (c == NULL) {
+		c = calloc(1, sizeof *c);
+		if (c == NULL)
+			return fallback;
+		if (pthread_setspecific(preset_dirs_key, c) != 0) {
+			free(c);
+			return fallback;
 		}
 	}
-	dirs_list[k++] = here;
-	dirs_list[k++] = dirs_datadir;
-	dirs_list[k] = NULL;
-	return dirs_list;
-}
+	if (c->built && c->dirs != NULL &&
+	    (env == NULL ? c->seen == NULL : c->seen != NULL && strcmp(env, c->seen) == 0))
+		return c->dirs;
+	free(c->seen);
+	free(c->dirs);
+	c->seen = NULL;
+	c->dirs = NULL;
+	c->built = 1;
+	if (env != NULL)
+		for (const char *p = env; *p != '\0'; p++)
+			count += *p == ':';
+	/* the pointers, then a copy of the entries they point into */
+	c->dirs = malloc((count + 1) * sizeof *c->dirs + len);
+	if (c->dirs == NULL || (env != NULL && (c->seen = strdup(env)) == NULL)) {
+		free(c->dirs);
+		c->dirs = NULL;
+		return fallback; /* out of memory: the built-in folders only */
+	}
+	store = (char *)(c->dirs + count + 1);
+	if (env != NULL)
+		memcpy(store, env, len);
+	for (char *p = env != NULL ? store : NULL; p != NULL && *p != '\0';) {
+		char *q = strchr(p, ':');
 
-/* What a "no preset" message adds when $HYBOUNCE_PRESETS was cut. */
-static const char *
-dirs_cut(void)
-{
-	return dirs_overflow ? " (HYBOUNCE_PRESETS has more than 256 folders or 8191 "
-	    "characters: the rest was not searched)" : "";
+		if (q != NULL)
+			*q = '\0';
+		if (*p != '\0') /* an empty entry ("a::b") names no folder */
+			c->dirs[k++] = p;
+		p = q != NULL ? q + 1 : NULL;
+	}
+	c->dirs[k++] = here;
+	c->dirs[k++] = datadir;
+	nnear = exe_dirs(near);
+	for (int i = 0; i < nnear; i++)
+		c->dirs[k++] = near[i];
+	c->dirs[k] = NULL;
+	return c->dirs;
 }
 
 static int
@@ -759,8 +806,8 @@ preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn)
 		if (lstat(name, &lst) == 0) /* something is there: say what */
 			return not_a_preset(name, msg, mn);
 		return status_set(msg, mn, HB_EINVAL,
-		    "no preset '%s'%s: not a file, and neither %s nor %s.preset is in %s", name,
-		    dirs_cut(), name, name, where);
+		    "no preset '%s': not a file, and neither %s nor %s.preset is in %s", name, name,
+		    name, where);
 	}
 	return not_a_preset(name, msg, mn);
 }

@@ -405,6 +405,11 @@ canvas_tick_label(const struct axis *ax, double v, char *buf, size_t n)
 
 	if (fabs(s) < 0.5 * pow(10, -ax->decimals))
 		s = 0; /* never "-0" */
+	if (fabs(s) >= 1e6 || !isfinite(s)) {
+		/* beyond the largest prefix: a short exponent, never 30 digits */
+		snprintf(buf, n, "%.3g", s);
+		return buf;
+	}
 	snprintf(buf, n, "%.*f", ax->decimals, s);
 	if (strcmp(buf, "-0") == 0)
 		snprintf(buf, n, "0");

@@ -16,19 +16,23 @@
 #define CTRL(c) ((c) & 0x1f)
 
 static const struct key_binding table[] = {
-	{ '?', 0, CTX_ANY, ACT_HELP, "?", "show this help (any key closes it)", "help" },
-	{ 'q', 0, CTX_ANY, ACT_QUIT, "q", "quit, restoring the terminal", "quit" },
+	{ '?', KEY_F(1), CTX_ANY, ACT_HELP, "? F1", "show this help (Up/Down scroll, any other key closes it)", "help" },
+	{ 'q', KEY_F(10), CTX_ANY, ACT_QUIT, "q F10", "quit, restoring the terminal", "quit" },
 	{ ' ', 0, CTX_ANY, ACT_PLAY, "space", "play / pause the cursor (the run computes ahead either way)", "play" },
 	{ '.', 0, CTX_ANY, ACT_STEP_FWD, ".", "step the cursor one sample forward (pauses)", NULL },
 	{ ',', 0, CTX_ANY, ACT_STEP_BACK, ",", "step the cursor one sample back (pauses)", NULL },
 	{ '[', 0, CTX_ANY, ACT_PREV_JUMP, "[", "cursor to the previous jump", NULL },
 	{ ']', 0, CTX_ANY, ACT_NEXT_JUMP, "]", "cursor to the next jump", NULL },
-	{ '{', 0, CTX_ANY, ACT_PREV_COLL, "{", "cursor to the previous collision (selects its row)", NULL },
-	{ '}', 0, CTX_ANY, ACT_NEXT_COLL, "}", "cursor to the next collision (selects its row)", NULL },
+	{ '{', 0, CTX_NOT_PARAMS, ACT_PREV_COLL, "{", "cursor to the previous collision (selects its row)", NULL },
+	{ '}', 0, CTX_NOT_PARAMS, ACT_NEXT_COLL, "}", "cursor to the next collision (selects its row)", NULL },
+	{ '{', 0, CTX_PARAMS, ACT_PREV_SECTION, "{", "(parameter panel) the previous section", NULL },
+	{ '}', 0, CTX_PARAMS, ACT_NEXT_SECTION, "}", "(parameter panel) the next section", NULL },
 	{ KEY_LEFT, 'h', CTX_ANY, ACT_SCRUB_BACK, "Left h", "scrub the cursor back in time (1/100 of the view)", NULL },
 	{ KEY_RIGHT, 'l', CTX_ANY, ACT_SCRUB_FWD, "Right l", "scrub the cursor forward in time", NULL },
-	{ KEY_HOME, 'g', CTX_ANY, ACT_HOME, "Home g", "cursor to t = 0", NULL },
-	{ KEY_END, 'G', CTX_ANY, ACT_END, "End G", "cursor to the last computed sample", NULL },
+	{ KEY_HOME, 'g', CTX_NOT_PARAMS, ACT_HOME, "Home g", "cursor to t = 0", NULL },
+	{ KEY_END, 'G', CTX_NOT_PARAMS, ACT_END, "End G", "cursor to the last computed sample", NULL },
+	{ KEY_HOME, 'g', CTX_PARAMS, ACT_TOP, "Home g", "(parameter panel) the first row", NULL },
+	{ KEY_END, 'G', CTX_PARAMS, ACT_BOTTOM, "End G", "(parameter panel) the last row", NULL },
 	{ '+', '=', CTX_NOT_PARAMS, ACT_FASTER, "+ =", "faster playback (1-2-5 steps)", NULL },
 	{ '-', '_', CTX_NOT_PARAMS, ACT_SLOWER, "- _", "slower playback", NULL },
 	{ 's', 0, CTX_ANY, ACT_SLOWMO, "s", "slow motion through contacts on / off", NULL },
@@ -41,18 +45,25 @@ static const struct key_binding table[] = {
 	{ KEY_DOWN, 'j', CTX_ANY, ACT_DOWN, "Down j", "next row of the focused table", NULL },
 	{ KEY_PPAGE, 0, CTX_ANY, ACT_PGUP, "PgUp", "a page up in the focused table", NULL },
 	{ KEY_NPAGE, 0, CTX_ANY, ACT_PGDN, "PgDn", "a page down in the focused table", NULL },
+	{ '/', 0, CTX_ANY, ACT_SEARCH, "/", "search the parameters by name (focuses the panel)", "search" },
 	{ '\n', KEY_ENTER, CTX_ANY, ACT_ENTER, "Enter",
-	  "collisions: zoom on the row and move the cursor there; parameters: type a new value", "select" },
+	  "collisions: zoom on the row and move the cursor there; parameters: type a new value", "edit" },
 	{ '+', '=', CTX_PARAMS, ACT_NUDGE_UP, "+ =", "(parameter panel) multiply the value by 1.1, or take the next choice", NULL },
 	{ '-', '_', CTX_PARAMS, ACT_NUDGE_DOWN, "- _", "(parameter panel) divide the value by 1.1, or take the previous choice", NULL },
+	{ 'b', 0, CTX_ANY, ACT_BRANCH, "b",
+	  "branch here: the next edit continues the run from the cursor instead of restarting it", NULL },
 	{ 'L', 0, CTX_ANY, ACT_LAW, "L", "choose the contact law", "law" },
 	{ 'o', 0, CTX_ANY, ACT_PRESET, "o", "open a preset", NULL },
 	{ 'r', 0, CTX_ANY, ACT_RESTART, "r", "restart the run from t = 0", NULL },
-	{ 'p', 0, CTX_ANY, ACT_PIN, "p", "pin the run as a ghost curve; the next run is drawn over it", "pin" },
+	{ 'p', 0, CTX_ANY, ACT_PIN, "p", "pin the run to compare with (up to 3); edits then change a copy", "pin" },
 	{ 'P', 0, CTX_ANY, ACT_UNPIN, "P", "clear the pinned runs", NULL },
+	{ 'c', 0, CTX_ANY, ACT_COMPARE, "c", "table: differences against pinned run 1, 2, 3, off", NULL },
 	{ '3', 0, CTX_ANY, ACT_STUDY3, "3",
 	  "the paper's third study: permanent-contact-shccl, -bwshccl, -bwmcl pinned together", NULL },
 	{ 'e', 0, CTX_ANY, ACT_EXPORT, "e", "export BASE-trace.csv, BASE-collisions.csv and the scene", "export" },
+	{ 'm', 0, CTX_ANY, ACT_LOG, "m", "the message log: every message, whole", "log" },
+	{ 'T', 0, CTX_ANY, ACT_PRESENT, "T",
+	  "presentation: no table, large plots, each contact followed in slow motion, looping", NULL },
 	{ CTRL('l'), 0, CTX_ANY, ACT_REDRAW, "C-l", "redraw the screen", NULL },
 };
 
@@ -159,6 +170,32 @@ keys_man(char *buf, size_t n)
 	return len;
 }
 
+size_t
+keys_markdown(char *buf, size_t n)
+{
+	size_t i, len = 0;
+
+	if (n > 0)
+		buf[0] = 0;
+	put(buf, n, &len, "| Key | Action |\n|-----|--------|\n");
+	for (i = 0; i < sizeof table / sizeof table[0]; i++) {
+		const struct key_binding *b = &table[i];
+		char lab[64], *p, *tok;
+		put(buf, n, &len, "|");
+		snprintf(lab, sizeof lab, "%s", b->label);
+		for (tok = strtok_r(lab, " ", &p); tok; tok = strtok_r(NULL, " ", &p)) {
+			put(buf, n, &len, tok == lab ? " `" : ", `");
+			/* a | inside a table cell ends the cell */
+			put(buf, n, &len, strcmp(tok, "|") == 0 ? "\\|" : tok);
+			put(buf, n, &len, "`");
+		}
+		put(buf, n, &len, " | ");
+		put(buf, n, &len, b->help);
+		put(buf, n, &len, " |\n");
+	}
+	return len;
+}
+
 static const struct {
 	const char *name;
 	int key;
@@ -168,6 +205,10 @@ static const struct {
 	{ "Left", KEY_LEFT }, { "Right", KEY_RIGHT }, { "Up", KEY_UP }, { "Down", KEY_DOWN },
 	{ "Home", KEY_HOME }, { "End", KEY_END }, { "PgUp", KEY_PPAGE }, { "PgDn", KEY_NPAGE },
 	{ "BSpace", KEY_BACKSPACE }, { "Backspace", KEY_BACKSPACE },
+	{ "F1", KEY_F(1) }, { "F2", KEY_F(2) }, { "F3", KEY_F(3) }, { "F4", KEY_F(4) },
+	{ "F5", KEY_F(5) }, { "F6", KEY_F(6) }, { "F7", KEY_F(7) }, { "F8", KEY_F(8) },
+	{ "F9", KEY_F(9) }, { "F10", KEY_F(10) }, { "F11", KEY_F(11) }, { "F12", KEY_F(12) },
+	{ "Delete", KEY_DC }, { "Insert", KEY_IC },
 };
 
 int

@@ -22,6 +22,8 @@ enum key_action {
 	ACT_NUDGE_UP, ACT_NUDGE_DOWN,
 	ACT_LAW, ACT_PRESET, ACT_RESTART,
 	ACT_PIN, ACT_UNPIN, ACT_STUDY3, ACT_EXPORT, ACT_REDRAW,
+	ACT_BRANCH, ACT_SEARCH, ACT_TOP, ACT_BOTTOM, ACT_PREV_SECTION, ACT_NEXT_SECTION,
+	ACT_LOG, ACT_PRESENT, ACT_COMPARE,
 	ACT_COUNT
 };
 
@@ -58,6 +60,13 @@ keys_footer(char *buf, size_t n, int width);
  */
 size_t
 keys_man(char *buf, size_t n);
+
+/*
+ * The same list as a Markdown table for the README's Explorer section
+ * ("| Key | Action |" ...).  Returns the length needed (like snprintf).
+ */
+size_t
+keys_markdown(char *buf, size_t n);
 
 /*
  * A key name as used by scripts and labels: "space", "Enter", "Tab", "Esc",

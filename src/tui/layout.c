@@ -15,7 +15,7 @@ rect(int y, int x, int h, int w)
 int
 layout_compute(int cols, int lines, int show_params, struct layout *L)
 {
-	int mid, bottom, left;
+	int mid, bottom, left, ro;
 
 	memset(L, 0, sizeof *L);
 	L->cols = cols;
@@ -25,13 +25,21 @@ layout_compute(int cols, int lines, int show_params, struct layout *L)
 		return -1;
 	}
 	L->status = rect(0, 0, 1, cols);
+	/* the readout: two rows where one cannot hold every value */
+	ro = lines >= 23 && cols < LAYOUT_READOUT_COLS ? 2 : 1;
+	L->readout = rect(lines - 2 - ro, 0, ro, cols);
 	L->msg = rect(lines - 2, 0, 1, cols);
 	L->footer = rect(lines - 1, 0, 1, cols);
-	mid = lines - 3; /* rows 1 .. lines-3 */
-	/* the bottom pane: about a third, at least 7 rows (header + 6) */
+	mid = lines - 3 - ro; /* rows 1 .. lines-3-ro */
+	/* the bottom pane: about a third, at least 7 rows (header + 6), less
+	 * on short terminals so that the plots keep 8 rows */
 	bottom = mid / 3;
 	if (bottom < 7)
 		bottom = 7;
+	if (mid - bottom < 12 && mid - 12 >= 6)
+		bottom = mid - 12; /* 80x23: the plots keep 12 rows, the table 5 */
+	if (lines < LAYOUT_FULL_LINES)
+		bottom = mid - 8;
 	if (cols >= LAYOUT_WIDE_COLS) {
 		L->wide = 1;
 		left = cols - LAYOUT_PARAMS_W - 1;
@@ -50,6 +58,15 @@ layout_compute(int cols, int lines, int show_params, struct layout *L)
 		}
 	}
 	return 0;
+}
+
+void
+layout_present(struct layout *L)
+{
+	L->plots = rect(1, 0, L->readout.y - 1, L->cols);
+	L->table_visible = L->params_visible = 0;
+	L->table.h = L->params.h = 0;
+	L->wide = 0;
 }
 
 int

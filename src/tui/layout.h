@@ -6,18 +6,27 @@
  *   bottom          collisions table and parameter panel: side by side when
  *                   wide (>= LAYOUT_WIDE_COLS), otherwise one of them at a
  *                   time (Tab switches)
+ *   readout         the values at the cursor: rows lines-4 and lines-3
+ *                   from 23 lines when narrower than LAYOUT_READOUT_COLS,
+ *                   else row lines-3 (what does not fit is left out)
  *   row lines-2     message / prompt line
  *   row lines-1     footer (keys)
  *
  * On wide terminals the parameter panel takes a column on the right of
- * the plots and the table instead.
+ * the plots and the table instead.  Below LAYOUT_FULL_LINES rows the
+ * bottom pane shrinks (to a header and 3 rows) so the plots keep 8 rows;
+ * the smallest usable terminal is LAYOUT_MIN_COLS x LAYOUT_MIN_LINES
+ * (80x23, what tmux or screen leave of an 80x24 terminal, gets the full
+ * layout).
  */
 #ifndef HYBOUNCE_LAYOUT_H
 #define HYBOUNCE_LAYOUT_H
 
 enum {
-	LAYOUT_MIN_COLS = 80,
-	LAYOUT_MIN_LINES = 24,
+	LAYOUT_MIN_COLS = 60,
+	LAYOUT_MIN_LINES = 16,
+	LAYOUT_FULL_LINES = 21,
+	LAYOUT_READOUT_COLS = 120,
 	LAYOUT_WIDE_COLS = 130,
 	LAYOUT_PARAMS_W = 52,
 };
@@ -30,7 +39,7 @@ struct layout {
 	int cols, lines;
 	int too_small;          /* below LAYOUT_MIN_COLS x LAYOUT_MIN_LINES: nothing else is set */
 	int wide;               /* table and parameters both visible */
-	struct rect status, plots, table, params, msg, footer;
+	struct rect status, plots, table, params, readout, msg, footer;
 	int table_visible, params_visible;
 };
 
@@ -40,6 +49,10 @@ struct layout {
  */
 int
 layout_compute(int cols, int lines, int show_params, struct layout *L);
+
+/* Presentation mode: the plots take the table's and the panel's rows. */
+void
+layout_present(struct layout *L);
 
 /*
  * Splits a plot area of h rows into n stacked plots above `extra` shared

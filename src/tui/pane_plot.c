@@ -179,25 +179,67 @@ margin_labels(const struct axis *ax, int y, int h, const char *name)
 		}
 }
 
+static int
+ink_attr(const struct app *a, int ink)
+{
+	if (a->colour)
+		return COLOR_PAIR(PAIR_INK1 + ink - 1) | A_BOLD;
+	return ink == 1 ? A_BOLD : 0;
+}
+
+/*
+ * Row 0 of the plots: the view's title on the left, then one entry per run
+ * ("1. c = 4400 N s/m"), each in its colour with its marker, the current
+ * run last; entries that do not fit are cut at the right.
+ */
 static void
 legend(const struct app *a, int y, int x, int w, const char *title)
 {
-	char buf[512], item[96];
-	int len;
+	char item[128];
+	int col = x, end = x + w;
 
-	snprintf(buf, sizeof buf, "%s", title);
-	if (a->npins > 0) {
-		for (int i = 0; i < a->npins; i++) {
-			snprintf(item, sizeof item, "  %c %s", canvas_glyph(i + 2), a->pin[i].label);
-			strncat(buf, item, sizeof buf - strlen(buf) - 1);
-		}
-		snprintf(item, sizeof item, "  %c %s (now)", canvas_glyph(1), a->run_label);
-		strncat(buf, item, sizeof buf - strlen(buf) - 1);
+	tui_puts(y, col, end - col, title, A_BOLD);
+	col += (int)strlen(title);
+	if (a->npins == 0)
+		return;
+	for (int i = 0; i <= a->npins && col + 4 < end; i++) {
+		int ink = i < a->npins ? i + 2 : 1;
+		if (i < a->npins)
+			snprintf(item, sizeof item, "  %c%d %s", canvas_glyph(ink), i + 1, a->pin[i].label);
+		else
+			snprintf(item, sizeof item, "  %c now %s", canvas_glyph(1), a->run_label);
+		tui_puts(y, col, end - col, item, ink_attr(a, ink));
+		col += (int)strlen(item);
 	}
-	len = (int)strlen(buf);
-	if (len > w)
-		len = w;
-	tui_puts(y, x + w - len, len, buf, A_BOLD);
+}
+
+/*
+ * Braille dots carry no glyph: each pinned run also gets its marker
+ * (canvas_glyph) on its curve every few columns, so the runs can be told
+ * apart without colour.  In ASCII the curve is drawn with the glyph.
+ */
+static void
+pin_marks(const struct app *a, struct canvas *c, const struct sim *const *s, const int *ink,
+          int n, int q, double t0, double t1)
+{
+	if (!c->braille)
+		return;
+	for (int k = 0; k < n; k++) {
+		const struct arc *ak = sim_arc(s[k]);
+		if (ink[k] == 1 || arc_len(ak) == 0)
+			continue;
+		for (int col = 2 + 3 * (ink[k] - 2); col < c->w; col += 10) {
+			double t = t0 + (t1 - t0) * (col + 0.5) / c->w;
+			const struct arc_sample *p;
+			int row;
+			if (a->view == VIEW_J || t > arc_last(ak)->t)
+				break;
+			p = arc_at(ak, arc_find_t(ak, t));
+			row = (int)floor(canvas_pyf(c, qval(p, q)) / 4);
+			if (row >= 0 && row < c->h)
+				canvas_mark(c, col, row, canvas_glyph(ink[k]), ink[k]);
+		}
+	}
 }
 
 /* The F_c against x_c loop of collision a->zoom_i, for every run. */
@@ -344,6 +386,7 @@ pane_plot_draw(const struct app *a)
 				canvas_point(c, absc(a, p), qval(p, q), ink[k]);
 			}
 		}
+		pin_marks(a, c, s, ink, n, q, t0, t1);
 		if (arc_len(arc) > 0)
 			curcol = canvas_col(c, absc(a, arc_at(arc, a->cursor)));
 		blit(a, c, y, r->x + LM, curcol);
@@ -402,4 +445,18 @@ pane_plot_draw(const struct app *a)
 		tui_puts(y, r->x + LM, cw, line, 0);
 		tui_puts(y, 0, LM - 1, a->view == VIEW_J ? "j ->" : "t ->", A_BOLD);
 	}
+}
+
+int
+plot_abscissa_at(const struct app *a, int x, double *t)
+{
+	const struct rect *r = &a->L.plots;
+	int cw = r->w - LM;
+	double t0, t1;
+
+	if (a->view == VIEW_LOOP || cw < 10 || x < r->x + LM || x >= r->x + r->w)
+		return -1;
+	view_range(a, &t0, &t1);
+	*t = t0 + (t1 - t0) * (double)(x - r->x - LM) / (cw - 1);
+	return 0;
 }

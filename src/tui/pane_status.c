@@ -49,6 +49,79 @@ state_name(const struct app *a)
 	}
 }
 
+/*
+ * The readout line: the sample at the cursor, whole: its index, t with
+ * enough digits to tell it from its neighbours, j, q_c, x, v, x_c, F_c and
+ * the law's internal state z_c, with units.
+ */
+static void
+readout_draw(const struct app *a)
+{
+	const struct arc *arc = sim_arc(a->sim);
+	const struct rect *r = &a->L.readout;
+	const struct arc_sample *s;
+	char f[9][96], tb[48], vb[32], line[512];
+	int sig, nf = 0, row = 0, col = 0;
+
+	if (r->h < 1 || arc_len(arc) == 0)
+		return;
+	s = arc_at(arc, a->cursor);
+	/* digits of t: enough that both neighbours read differently */
+	for (sig = 6; sig < 17; sig++) {
+		char p[48], nb[48];
+		int ok = 1;
+		units_format(s->t, UNIT_TIME, sig, tb, sizeof tb);
+		if (a->cursor > 0 && arc_at(arc, a->cursor - 1)->t != s->t) {
+			units_format(arc_at(arc, a->cursor - 1)->t, UNIT_TIME, sig, p, sizeof p);
+			ok = ok && strcmp(p, tb) != 0;
+		}
+		if (a->cursor + 1 < arc_len(arc) && arc_at(arc, a->cursor + 1)->t != s->t) {
+			units_format(arc_at(arc, a->cursor + 1)->t, UNIT_TIME, sig, nb, sizeof nb);
+			ok = ok && strcmp(nb, tb) != 0;
+		}
+		if (ok)
+			break;
+	}
+	snprintf(f[nf++], sizeof f[0], "#%zu", a->cursor);
+	snprintf(f[nf++], sizeof f[0], "t=%s", tb);
+	snprintf(f[nf++], sizeof f[0], "j=%ld", s->j);
+	snprintf(f[nf++], sizeof f[0], "q_c=%d", s->q);
+	units_format(s->x, UNIT_LENGTH, 4, vb, sizeof vb);
+	snprintf(f[nf++], sizeof f[0], "x=%s", vb);
+	units_format(s->v, UNIT_VELOCITY, 4, vb, sizeof vb);
+	snprintf(f[nf++], sizeof f[0], "v=%s", vb);
+	units_format(s->xc, UNIT_LENGTH, 4, vb, sizeof vb);
+	snprintf(f[nf++], sizeof f[0], "x_c=%s", vb);
+	units_format(s->Fc, UNIT_FORCE, 4, vb, sizeof vb);
+	snprintf(f[nf++], sizeof f[0], "F_c=%s", vb);
+	if (sim_scene(a->sim)->law->n_z > 0) {
+		f[nf][0] = 0;
+		for (int k = 0; k < sim_scene(a->sim)->law->n_z && k < LAW_MAX_Z; k++) {
+			size_t l = strlen(f[nf]);
+			snprintf(f[nf] + l, sizeof f[0] - l, "%sz_c%d=%.4g", k ? " " : "", k + 1, s->z[k]);
+		}
+		nf++;
+	}
+	/* fields in order, wrapped onto the readout's rows; what does not fit is left out */
+	line[0] = 0;
+	for (int i = 0; i < nf; i++) {
+		int w = (int)strlen(f[i]) + (col ? 1 : 0);
+		if (col + w > r->w) {
+			tui_puts(r->y + row, r->x, r->w, line, 0);
+			if (++row >= r->h)
+				return;
+			line[0] = 0;
+			col = 0;
+			w = (int)strlen(f[i]);
+		}
+		if (w > r->w)
+			continue;
+		snprintf(line + strlen(line), sizeof line - strlen(line), "%s%s", col ? " " : "", f[i]);
+		col += w;
+	}
+	tui_puts(r->y + row, r->x, r->w, line, 0);
+}
+
 void
 pane_status_draw(const struct app *a)
 {
@@ -72,8 +145,8 @@ pane_status_draw(const struct app *a)
 		         a->playing ? "playing" : "paused", state_name(a));
 		room = r->w - (int)strlen(tail) - 1;
 		if (room < 8)
-			room = 8;
-		snprintf(line, sizeof line, " %.*s%s", room, a->preset, tail);
+			room = 0; /* a narrow terminal: the run's state before the preset's name */
+		snprintf(line, sizeof line, "%s%.*s%s", room ? " " : "", room, a->preset, tail);
 	}
 	attron(attr);
 	mvhline(r->y, 0, ' ', r->w);
@@ -83,43 +156,38 @@ pane_status_draw(const struct app *a)
 	/* message or prompt */
 	r = &a->L.msg;
 	if (a->overlay == OV_PROMPT) {
+		/* too long for the line: the end, where the typing is, stays in view */
+		int cols = 0, skip;
+		const char *p;
 		snprintf(line, sizeof line, "%s: %s_", a->prompt_title, a->prompt_buf);
-		tui_puts(r->y, 0, r->w, line, A_BOLD);
+		for (p = line; *p; p++)
+			cols += ((unsigned char)*p & 0xC0) != 0x80;
+		skip = cols - (r->w - 1);
+		p = line;
+		if (skip > 0) {
+			for (skip += 3; *p && skip > 0; p++)
+				skip -= ((unsigned char)p[1] & 0xC0) != 0x80;
+			tui_puts(r->y, 0, 3, "...", A_BOLD);
+			tui_puts(r->y, 3, r->w - 3, p, A_BOLD);
+		} else {
+			tui_puts(r->y, 0, r->w, line, A_BOLD);
+		}
 	} else {
 		int mattr = a->msg_error ? (a->colour ? COLOR_PAIR(PAIR_ERROR) | A_BOLD : A_BOLD) : 0;
-		tui_puts(r->y, 0, r->w, a->msg, mattr);
+		static const char more[] = "... m: whole";
+		if ((int)strlen(a->msg) > r->w - 1 && r->w > (int)sizeof more + 8) {
+			int keep = r->w - 1 - (int)strlen(more);
+			snprintf(line, sizeof line, "%.*s%s", keep, a->msg, more);
+			tui_puts(r->y, 0, r->w, line, mattr);
+		} else {
+			tui_puts(r->y, 0, r->w, a->msg, mattr);
+		}
 	}
+	readout_draw(a);
 
 	r = &a->L.footer;
 	keys_footer(foot, sizeof foot, r->w - 1);
 	tui_puts(r->y, 0, r->w, foot, A_DIM);
-}
-
-void
-pane_help_draw(const struct app *a)
-{
-	size_t n, i;
-	const struct key_binding *t = keys_table(&n);
-	int w = a->L.cols - 4 < 96 ? a->L.cols - 4 : 96;
-	int h = a->L.lines - 2, x0 = (a->L.cols - w) / 2, y0 = 1, row;
-	int top = a->help_top;
-	char line[256];
-
-	if (top > (int)n - (h - 3))
-		top = (int)n - (h - 3);
-	if (top < 0)
-		top = 0;
-	for (row = 0; row < h; row++)
-		mvhline(y0 + row, x0, ' ', w);
-	attron(A_BOLD);
-	mvhline(y0, x0, '-', w);
-	mvhline(y0 + h - 1, x0, '-', w);
-	attroff(A_BOLD);
-	tui_puts(y0, x0 + 2, w - 4, " hybounce keys (Up/Down scroll, any other key closes) ", A_BOLD);
-	for (i = (size_t)top, row = 1; i < n && row < h - 1; i++, row++) {
-		snprintf(line, sizeof line, " %-9s %s", t[i].label, t[i].help);
-		tui_puts(y0 + row, x0, w, line, 0);
-	}
 }
 
 void
@@ -130,6 +198,8 @@ pane_too_small_draw(const struct app *a)
 
 	snprintf(line, sizeof line, "terminal too small: need at least %dx%d", LAYOUT_MIN_COLS,
 	         LAYOUT_MIN_LINES);
+	if (a->L.cols < 40)
+		snprintf(line, sizeof line, "too small: min %dx%d", LAYOUT_MIN_COLS, LAYOUT_MIN_LINES);
 	tui_puts(y > 0 ? y - 1 : 0, 0, a->L.cols, line, A_BOLD);
 	snprintf(line, sizeof line, "(now %dx%d; q quits)", a->L.cols, a->L.lines);
 	tui_puts(y, 0, a->L.cols, line, 0);

@@ -2,7 +2,10 @@
  * pane_table.c - the collisions table (paper eqs. t_d .. Lambda): one row
  * per completed collision, then the contact in progress marked "live".
  * The unit of each column is chosen from its largest value (units_axis)
- * and written in the header.  Drawing only.
+ * and written in the header.  With compare on (c), the columns are those
+ * of the comparison: each collision against the one of the same index in
+ * a pinned run, with the differences (now - pinned) of t_e, e and x_c^max
+ * in columns "dt_e", "de", "dx_c^max".  Drawing only.
  */
 #include <curses.h>
 #include <math.h>
@@ -16,17 +19,44 @@
 
 enum { NCOL_MAX = 16 };
 
-/* The explorer's columns, from the table of columns.h, with their widths. */
+/* The comparison's columns: a column of columns.h, or (delta) its difference. */
+static const struct {
+	const char *name;
+	int delta;
+} compared[] = {
+	{ "i", 0 }, { "t_e", 0 }, { "t_e", 1 }, { "e", 0 }, { "e", 1 },
+	{ "x_c_max", 0 }, { "x_c_max", 1 }, { "F_c_max", 0 },
+};
+
+/*
+ * The explorer's columns, from the table of columns.h, with their widths;
+ * delta[k] 1 where column k is a difference against a pinned run.
+ */
 static int
-columns(const struct collision_column **cols, int *width)
+columns(int compare, const struct collision_column **cols, int *width, int *delta)
 {
 	int n = 0;
 
+	if (compare) {
+		for (size_t k = 0; k < sizeof compared / sizeof compared[0]; k++) {
+			const struct collision_column *c = collision_column_find(compared[k].name);
+			if (c == NULL)
+				continue;
+			cols[n] = c;
+			delta[n] = compared[k].delta;
+			width[n] = c->index ? 4 : (int)(strlen(c->label) + strlen(c->unit) + 4 + delta[n]);
+			if (!c->index && width[n] < 7)
+				width[n] = 7;
+			n++;
+		}
+		return n;
+	}
 	for (int k = 0; k < collision_ncolumns && n < NCOL_MAX; k++) {
 		const struct collision_column *c = &collision_columns[k];
 		if (!(c->shown & COLUMN_EXPLORER))
 			continue;
 		cols[n] = c;
+		delta[n] = 0;
 		/* room for " LABEL[pUNIT]", or for a ratio such as -0.01122 */
 		if (c->index)
 			width[n] = 4;
@@ -39,13 +69,35 @@ columns(const struct collision_column **cols, int *width)
 	return n;
 }
 
+/* Collision i of a pinned run (completed ones only), or NULL. */
+static const struct collision *
+pinned(const struct sim *ps, long i)
+{
+	if (ps == NULL || i < 0 || (size_t)i >= sim_ncollisions(ps))
+		return NULL;
+	return sim_collision(ps, (size_t)i);
+}
+
+/* The value shown in column k: the column's, or its difference against p. */
+static double
+value(const struct collision *c, const struct collision *p, const struct collision_column *col,
+      int delta)
+{
+	if (!delta)
+		return collision_value(c, col);
+	if (p == NULL || (!c->complete && strcmp(col->name, "e") == 0))
+		return NAN;
+	return collision_value(c, col) - collision_value(p, col);
+}
+
 void
 pane_table_draw(const struct app *a)
 {
 	const struct rect *r = &a->L.table;
 	long n = app_ncollisions(a), top, i, rows = r->h - 1, sel = a->table_sel;
+	const struct sim *ps = a->compare > 0 && a->compare <= a->npins ? a->pin[a->compare - 1].sim : NULL;
 	const struct collision_column *cols[NCOL_MAX];
-	int width[NCOL_MAX], ncol = columns(cols, width);
+	int width[NCOL_MAX], delta[NCOL_MAX], ncol = columns(ps != NULL, cols, width, delta);
 	double scale[NCOL_MAX], mag[NCOL_MAX];
 	char unit[NCOL_MAX][16], line[512], cell[64];
 	int k, focused = a->focus == FOCUS_TABLE;
@@ -66,26 +118,31 @@ pane_table_draw(const struct app *a)
 	for (k = 0; k < ncol; k++)
 		mag[k] = 0;
 	for (i = 0; i < n; i++) {
-		const struct collision *c = app_collision(a, i, &live);
-		for (k = 0; c && k < ncol; k++)
-			if (isfinite(collision_value(c, cols[k])) && fabs(collision_value(c, cols[k])) > mag[k])
-				mag[k] = fabs(collision_value(c, cols[k]));
+		const struct collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
+		for (k = 0; c && k < ncol; k++) {
+			double v = value(c, p, cols[k], delta[k]);
+			if (isfinite(v) && fabs(v) > mag[k])
+				mag[k] = fabs(v);
+		}
 	}
 	line[0] = 0;
 	for (k = 0; k < ncol; k++) {
 		char h[48];
 		if (cols[k]->unit[0]) {
 			scale[k] = units_axis(mag[k] > 0 ? mag[k] : 1, cols[k]->unit, unit[k], sizeof unit[k]);
-			snprintf(h, sizeof h, "%s[%s]", cols[k]->label, unit[k]);
+			snprintf(h, sizeof h, "%s%s[%s]", delta[k] ? "d" : "", cols[k]->label, unit[k]);
 		} else {
 			scale[k] = 1;
-			snprintf(h, sizeof h, "%s", cols[k]->label);
+			snprintf(h, sizeof h, "%s%s", delta[k] ? "d" : "", cols[k]->label);
 		}
 		snprintf(cell, sizeof cell, "%*s", width[k], h);
 		strncat(line, cell, sizeof line - strlen(line) - 1);
 	}
-	snprintf(cell, sizeof cell, "  collisions: %zu%s", sim_ncollisions(a->sim),
-	         n > (long)sim_ncollisions(a->sim) ? " + live" : "");
+	if (ps)
+		snprintf(cell, sizeof cell, "  vs %d", a->compare);
+	else
+		snprintf(cell, sizeof cell, "  collisions: %zu%s", sim_ncollisions(a->sim),
+		         n > (long)sim_ncollisions(a->sim) ? " + live" : "");
 	strncat(line, cell, sizeof line - strlen(line) - 1);
 	tui_puts(r->y, r->x, r->w, line, A_BOLD | (focused ? A_UNDERLINE : 0));
 
@@ -102,17 +159,17 @@ pane_table_draw(const struct app *a)
 	if (top < 0)
 		top = 0;
 	for (i = top; i < n && i < top + rows; i++) {
-		const struct collision *c = app_collision(a, i, &live);
+		const struct collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
 		int attr = 0;
 		if (c == NULL)
 			continue;
 		line[0] = 0;
 		for (k = 0; k < ncol; k++) {
-			double v = collision_value(c, cols[k]);
+			double v = value(c, p, cols[k], delta[k]);
 			const char *nm = cols[k]->name;
 			if (cols[k]->index)
 				snprintf(cell, sizeof cell, "%s%ld", i == at ? ">" : " ", c->i);
-			else if (!c->complete && strcmp(nm, "e") == 0)
+			else if (!c->complete && strcmp(nm, "e") == 0 && !delta[k])
 				snprintf(cell, sizeof cell, "live");
 			else if (!c->complete && (strcmp(nm, "x_c_r") == 0 || strcmp(nm, "Lambda") == 0))
 				snprintf(cell, sizeof cell, "-");

@@ -2,7 +2,8 @@
  * pickers.c - the law picker (law_list: name, title, description,
  * parameters) and the preset picker (preset_list: the *.preset files of presets/ and
  * $HYBOUNCE_PRESETS, with descriptions), drawn as a box over the plots.
- * Up/Down (k/j) move, Enter chooses, Esc or q closes.
+ * Up/Down (k/j) move, PgUp/PgDn a page, Home/End (g/G) to the ends,
+ * Enter chooses, Esc or q closes.
  */
 #include <curses.h>
 #include <stdio.h>
@@ -23,6 +24,15 @@ count(const struct app *a)
 	return n;
 }
 
+/* Rows of the picker's list (as pickers_draw lays it out). */
+static int
+page(const struct app *a)
+{
+	int rows = a->L.plots.h + 1 - 5;
+
+	return rows > 1 ? rows : 1;
+}
+
 void
 pickers_key(struct app *a, int ch)
 {
@@ -39,6 +49,27 @@ pickers_key(struct app *a, int ch)
 	case 'j':
 		if (a->pick_sel + 1 < n)
 			a->pick_sel++;
+		break;
+	case KEY_PPAGE:
+		a->pick_sel -= page(a);
+		if (a->pick_sel < 0)
+			a->pick_sel = 0;
+		break;
+	case KEY_NPAGE:
+		a->pick_sel += page(a);
+		if (a->pick_sel >= n)
+			a->pick_sel = n - 1;
+		break;
+	case KEY_HOME:
+	case 'g':
+		a->pick_sel = 0;
+		break;
+	case KEY_END:
+	case 'G':
+		a->pick_sel = n - 1;
+		break;
+	case KEY_RESIZE:
+		app_relayout(a);
 		break;
 	case 27:
 	case 'q':
@@ -75,15 +106,11 @@ pickers_draw(const struct app *a)
 		rows = 1;
 	if (a->pick_sel >= rows)
 		top = a->pick_sel - rows + 1;
-	for (i = 0; i < h; i++)
-		mvhline(y0 + i, x0, ' ', w);
-	attron(A_BOLD);
-	mvhline(y0, x0, '-', w);
-	mvhline(y0 + h - 1, x0, '-', w);
-	attroff(A_BOLD);
-	tui_puts(y0, x0 + 2, w - 4,
-	         a->overlay == OV_PRESET ? " open a preset (Enter opens, Esc closes) "
-	                                 : " contact law (Enter chooses, Esc closes) ", A_BOLD);
+	box_draw(y0, x0, h, w, a->overlay == OV_PRESET ? " open a preset (Enter opens, Esc closes) "
+	                                               : " contact law (Enter chooses, Esc closes) ");
+	/* the text inside the border */
+	x0++;
+	w -= 2;
 	for (i = top; i < n && i < top + rows; i++) {
 		int attr = i == a->pick_sel ? A_REVERSE : 0;
 		if (a->overlay == OV_PRESET)

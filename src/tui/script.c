@@ -1,6 +1,9 @@
 /*
- * script.c - scripted mode (--script FILE): plays keys from a file and
- * dumps the screen as text, without a terminal.
+ * script.c - scripted mode (--script FILE): plays keys from a file, on the
+ * real screen when standard input and output are a terminal (a
+ * presentation: waits take real time and every frame is drawn, captions
+ * appear on the message line), otherwise without a terminal, dumping the
+ * screen as text.
  *
  * What was chosen: the real curses code path, on a curses screen created
  * with newterm() whose output and input are /dev/null (term.c,
@@ -20,9 +23,12 @@
  *     wait MS          computes and plays for MS ms of wall time, or until idle
  *     wait-finished    computes until every run has ended (at most 120 s)
  *     dump FILE        writes the current screen to FILE
- *     size COLSxLINES  resizes the screen (as a terminal resize would)
+ *     size COLSxLINES  resizes the screen (as a terminal resize would;
+ *                      ignored on a real terminal)
+ *     caption TEXT     shows TEXT on the message line (for a presentation)
  * After each key one frame of work is done, as in the interactive loop.
- * The script ends at its last line, or at a `q` key.
+ * The script ends at its last line, or at a `q` key; on a real terminal
+ * any key pressed ends it too.  The man page (SCRIPTS) documents this.
  */
 #include <curses.h>
 #include <errno.h>
@@ -32,6 +38,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 #include <wchar.h>
 
 #include "keys.h"
@@ -96,16 +103,33 @@ script_dump(const char *path)
 	return 0;
 }
 
-/* Work for up to ms milliseconds of wall time, or until idle. */
+static int live;   /* playing on the real screen */
+
+/* On the real screen: draws a frame; a key pressed by the viewer ends the script. */
+static void
+frame(struct app *a)
+{
+	if (!live)
+		return;
+	app_draw(a);
+	if (getch() != ERR)
+		a->quit = 1;
+}
+
+/*
+ * Work for up to ms milliseconds of wall time, or until idle; on the real
+ * screen the whole time, drawing every frame.
+ */
 static void
 wait_ms(struct app *a, double ms)
 {
 	double t0 = wall();
 
-	while (!term_signalled() && (wall() - t0) * 1e3 < ms) {
+	while (!term_signalled() && !a->quit && (wall() - t0) * 1e3 < ms) {
 		int computing = sim_end(a->sim) == SIM_RUNNING;
-		if (!app_tick(a))
+		if (!app_tick(a) && !live)
 			break;
+		frame(a);
 		if (!computing)
 			nap();
 	}
@@ -128,7 +152,6 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 	FILE *f = fopen(path, "r");
 	char line[1024];
 	int lineno = 0, status = 0;
-
 	struct stat st;
 
 	if (f == NULL) {
@@ -137,19 +160,23 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 	}
 	/* fopen() opens a directory; reading it would end the script at once, exit 0 */
 	if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
-		snprintf(msg, n, "--script %s: is a directory; expected a file of keystrokes, "
-		         "one per line", path);
+		snprintf(msg, n, "--script %s: is a directory; expected a file of script lines "
+		         "(see SCRIPTS in the man page)", path);
 		fclose(f);
 		return 2;
 	}
-	if (term_begin_script(80, 24, msg, n) != 0) {
+	live = isatty(STDIN_FILENO) && isatty(STDOUT_FILENO);
+	if (live ? term_begin(msg, n) != 0 : term_begin_script(80, 24, msg, n) != 0) {
 		fclose(f);
 		return 1;
 	}
 	a->braille = term_utf8() && !a->opt->ascii;
-	a->colour = 0;
+	a->colour = live ? term_colour() : 0;
+	if (live)
+		timeout(0);
 	app_relayout(a);
 	app_tick(a);
+	frame(a);
 	while (!a->quit && !term_signalled() && fgets(line, sizeof line, f) != NULL) {
 		size_t l = strlen(line);
 		int key, cols, lines;
@@ -162,6 +189,10 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 			for (const char *p = line + 5; *p; p++)
 				app_key(a, (unsigned char)*p);
 			app_tick(a);
+			frame(a);
+		} else if (strncmp(line, "caption", 7) == 0 && (line[7] == ' ' || line[7] == 0)) {
+			app_msg(a, 0, "%s", line[7] ? line + 8 : "");
+			frame(a);
 		} else if (strncmp(line, "wait-finished", 13) == 0 && line[13] == 0) {
 			double t0 = wall();
 			while (!all_ended(a) && !term_signalled()) {
@@ -172,6 +203,7 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 					break;
 				}
 				app_tick(a);
+				frame(a);
 			}
 			if (status)
 				break;
@@ -197,19 +229,28 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 				status = 2;
 				break;
 			}
-			resizeterm(lines, cols);
-			app_key(a, KEY_RESIZE);
+			if (!live) {
+				resizeterm(lines, cols);
+				app_key(a, KEY_RESIZE);
+			}
 		} else if ((key = keys_from_name(line)) >= 0) {
 			app_key(a, key);
 			app_tick(a);
+			frame(a);
 		} else {
 			snprintf(msg, n, "%s:%d: unknown script line '%s' (a key name, text:, wait, "
-			         "wait-finished, dump or size)", path, lineno, line);
+			         "wait-finished, dump, size or caption)", path, lineno, line);
 			status = 2;
 			break;
 		}
 	}
+	if (status == 0 && ferror(f)) {
+		snprintf(msg, n, "%s:%d: %s", path, lineno + 1, strerror(errno));
+		status = 2;
+	}
 	fclose(f);
 	term_end();
+	if (status == 0 && term_signalled())
+		status = 128 + term_signalled();
 	return status;
 }

@@ -1,10 +1,12 @@
 /*
  * term.c - curses setup and teardown (like htop's CRT.c).
  *
- * Signals: SIGINT, SIGTERM and SIGHUP only set a volatile sig_atomic_t
- * flag (installed without SA_RESTART so a blocking read returns); the
- * loop in app.c sees it and leaves through term_end().  Nothing is drawn
- * from a handler.  SIGWINCH belongs to ncurses (KEY_RESIZE).
+ * Signals: SIGINT, SIGTERM, SIGHUP and SIGQUIT (Ctrl-\) only set a
+ * volatile sig_atomic_t flag (installed without SA_RESTART so a blocking
+ * read returns); the loop in app.c sees it, leaves through term_end()
+ * (cursor shown, alternate screen left, modes reset) and the program exits
+ * with 128 + the signal's number.  Nothing is drawn from a handler.
+ * SIGWINCH and SIGTSTP belong to ncurses.
  */
 #include <curses.h>
 #include <langinfo.h>
@@ -42,6 +44,7 @@ signals_install(void)
 	sigaction(SIGINT, &sa, NULL);
 	sigaction(SIGTERM, &sa, NULL);
 	sigaction(SIGHUP, &sa, NULL);
+	sigaction(SIGQUIT, &sa, NULL);
 }
 
 static void
@@ -165,6 +168,7 @@ term_end(void)
 	if (!active)
 		return;
 	active = 0;
+	mousemask(0, NULL);
 	curs_set(1);
 	endwin();
 	if (script_screen != NULL) {
@@ -173,6 +177,19 @@ term_end(void)
 		fclose(script_out);
 		fclose(script_in);
 		script_out = script_in = NULL;
+	}
+}
+
+void
+term_mouse(int on)
+{
+	if (!active)
+		return;
+	if (on) {
+		mousemask(BUTTON1_PRESSED | BUTTON1_CLICKED | BUTTON4_PRESSED | BUTTON5_PRESSED, NULL);
+		mouseinterval(0);
+	} else {
+		mousemask(0, NULL);
 	}
 }
 

@@ -43,6 +43,10 @@ term_end(void);
 int
 term_colour(void);
 
+/* Mouse reports on (clicks and the wheel) or off; a no-op without a terminal. */
+void
+term_mouse(int on);
+
 /* 1 if the locale's codeset is UTF-8 (Braille plots possible). */
 int
 term_utf8(void);

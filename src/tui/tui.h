@@ -1,9 +1,11 @@
 /*
  * tui.h - the explorer's state, shared by its files (private to src/tui/).
  *
- * app.c owns the loop and every change of state (keys -> actions -> sim
- * calls); the pane_*.c files only read the state and draw it; pickers.c
- * and script.c are helpers called by app.c.
+ * app.c owns the loop; a key becomes an action (keys.c) and the action a
+ * function (actions.c) in the file that owns that part of the state:
+ * nav.c, playback.c, edit.c, runs.c, log.c, mouse.c.  The pane_*.c files
+ * only read the state and draw it.  No file calls back into app.c except
+ * through app_msg (log.c) and app_relayout.
  *
  * The cursor is a sample index into the current run's arc (always valid:
  * < arc_len); tcur is the playback time it follows while playing.
@@ -18,16 +20,17 @@
 #include "preset.h"
 #include "sim.h"
 
-enum { APP_MAX_PINS = 5 };
+enum { APP_MAX_PINS = 3, APP_LOG_MAX = 64 };
 
 enum view { VIEW_WHOLE = 0, VIEW_FOLLOW, VIEW_ZOOM, VIEW_LOOP, VIEW_J, VIEW_COUNT };
 enum focus { FOCUS_TABLE = 0, FOCUS_PARAMS };
-enum overlay { OV_NONE = 0, OV_HELP, OV_LAW, OV_PRESET, OV_PROMPT };
-enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT };
+enum overlay { OV_NONE = 0, OV_HELP, OV_LAW, OV_PRESET, OV_PROMPT, OV_LOG };
+enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH };
 
 struct pin {
 	struct sim *sim;
-	char label[64];
+	char label[96];             /* what differs from the current run */
+	int branched;               /* the run contains a "branch here" */
 };
 
 struct app {
@@ -35,13 +38,20 @@ struct app {
 	struct sim *sim;
 	char preset[64];            /* name shown in the status line */
 	char preset_path[512];
-	char run_label[64];         /* legend label of the current run */
+	char run_label[96];         /* legend label of the current run */
 
 	struct pin pin[APP_MAX_PINS];
 	int npins;
 
 	size_t cursor;              /* sample index in sim_arc(sim) */
 	double tcur;                /* playback time, s */
+	double want_t;              /* after an edit: the cursor goes back to this t (-1: none) */
+	int branch_armed;           /* the next edit continues from the cursor (b) */
+	double branch_t;            /* the run contains a branch at (branch_t, branch_j); -1: none */
+	long branch_j;
+	int nbranches;
+	int compare;                /* table differences against pin compare-1 (0: off) */
+	int present;                /* presentation mode (T) */
 	int playing;
 	double speed;               /* playback: simulated s per wall s */
 	int slowmo;                 /* slow motion through contacts enabled */
@@ -65,6 +75,9 @@ struct app {
 
 	char msg[512];
 	int msg_error;              /* the message reports a failure */
+	char *log[APP_LOG_MAX];     /* every message, oldest first (a ring) */
+	int log_n, log_head, log_top;
+	int search_from;            /* panel row when the search began */
 
 	int braille, colour;
 	struct layout L;
@@ -73,6 +86,62 @@ struct app {
 	double budget;              /* compute seconds per frame */
 	unsigned long frames;
 };
+
+/* An action of the key table (actions.c). */
+typedef void action_fn(struct app *a);
+action_fn *action_get(int act);
+
+action_fn act_play, act_step_fwd, act_step_back, act_prev_jump, act_next_jump,
+	act_prev_coll, act_next_coll, act_scrub_back, act_scrub_fwd, act_home, act_end,
+	act_faster, act_slower, act_slowmo, act_view, act_zoom, act_loop, act_jview,
+	act_focus, act_up, act_down, act_pgup, act_pgdn, act_top, act_bottom,
+	act_prev_section, act_next_section, act_search, act_enter,
+	act_nudge_up, act_nudge_down, act_branch, act_law, act_preset, act_restart,
+	act_pin, act_unpin, act_compare, act_study3, act_export, act_log, act_present;
+
+/* nav.c: the cursor and the selections. */
+void cursor_set(struct app *a, size_t i);
+void cursor_clamp(struct app *a);                 /* keeps it < arc_len */
+long coll_at_cursor(const struct app *a);         /* the collision at the cursor, or -1 */
+void cursor_to_collision(struct app *a, long i);  /* to its commencement; selects its row */
+double view_span(const struct app *a);
+void zoom_on(struct app *a, int view);
+void sel_move(struct app *a, long d);
+/* search: moves the panel selection to the first row whose key or label holds text */
+void search_do(struct app *a, const char *text, int final);
+
+/* playback.c */
+double speed_default(double T);
+int playback_tick(struct app *a, double dt);      /* 1 while playing */
+const char *stiff_note(const struct app *a, char *buf, size_t n);
+
+/* edit.c: the what-if loop. */
+void edit_value(struct app *a, const char *key, const char *text);
+int param_key_index(const struct app *a);
+
+/* runs.c */
+struct sim *load_sim(const char *name, const char *const *sets, int nsets, char *path,
+                     size_t pn, char *msg, size_t n);
+void app_adopt(struct app *a, struct sim *s, const char *path);
+void app_label_runs(struct app *a);               /* legend labels from what differs */
+void pins_clear(struct app *a);
+void export_do(struct app *a, const char *base);
+
+/* prompt.c */
+void prompt_open(struct app *a, int kind, const char *text, const char *fmt, ...)
+	__attribute__((format(printf, 4, 5)));
+void prompt_key(struct app *a, int ch);
+
+/* log.c: keys while the help or the log is open; the log's memory. */
+void overlay_key(struct app *a, int ch);
+void log_free(struct app *a);
+const char *log_get(const struct app *a, int i);  /* i-th message, oldest first */
+void pane_log_draw(const struct app *a);
+/* An overlay box with a border on all four sides, cleared inside; returns the inner rect. */
+struct rect box_draw(int y, int x, int h, int w, const char *title);
+
+/* mouse.c */
+void mouse_event(struct app *a);
 
 /* Cells of text drawing with clipping (pane_status.c). */
 void
@@ -86,12 +155,14 @@ void pane_status_draw(const struct app *a);
 void pane_help_draw(const struct app *a);
 void pane_too_small_draw(const struct app *a);
 void pickers_draw(const struct app *a);
+/* The abscissa (t, or j in the (t, j) view) under screen column x of the plots; -1 outside. */
+int plot_abscissa_at(const struct app *a, int x, double *t);
 
 /* The whole frame: erase, draw every pane, refresh. */
 void
 app_draw(struct app *a);
 
-/* Handles one key (as from getch) and returns nothing; sets a->quit to leave. */
+/* Handles one key (as from getch) and returns nothing; sets a->quit to leave (actions.c). */
 void
 app_key(struct app *a, int ch);
 

@@ -46,7 +46,7 @@ if grep -q '^-- bodies --' "$TMP/d2" && grep -q 'parameters (Enter edits' "$TMP/
 else
 	notok "dump after Tab: the parameter panel" "$TMP/d2"
 fi
-if grep -q 'terminal too small: need at least 80x24' "$TMP/d3" && [ "$(wc -l <"$TMP/d3")" = 15 ]; then
+if grep -q 'terminal too small: need at least 60x16' "$TMP/d3" && [ "$(wc -l <"$TMP/d3")" = 15 ]; then
 	ok "size 60x15: the too-small screen"
 else
 	notok "size 60x15: the too-small screen" "$TMP/d3"
@@ -74,6 +74,7 @@ if [ -n "$found" ]; then
 		j=0; while [ $j -lt "$found" ]; do echo Down; j=$((j + 1)); done
 		echo Enter; echo C-u; echo "text:1.5"; echo Enter
 		echo "dump $TMP/e2"
+		echo m; echo "dump $TMP/e2m"; echo Esc
 		echo Enter; echo C-u; echo "text:0.4"; echo Enter
 		echo wait-finished
 		echo "dump $TMP/e3"
@@ -81,7 +82,8 @@ if [ -n "$found" ]; then
 		echo "dump $TMP/e4"
 	} >"$TMP/s4"
 	"$BIN" --ascii --script "$TMP/s4" </dev/null >"$TMP/out" 2>&1
-	if grep -q 'refused.*(0, 1)' "$TMP/e2" && grep -Eq '^ +alpha +0\.35' "$TMP/e2"; then
+	if grep -q 'refused.*m: whole' "$TMP/e2" && grep -Eq '^ +alpha +0\.35' "$TMP/e2" \
+	   && grep -q 'messages, oldest first' "$TMP/e2m" && tr -d '\n' <"$TMP/e2m" | grep -q 'refused.*(0, 1)'; then
 		ok "script: alpha = 1.5 refused with (0, 1), old value kept"
 	else
 		notok "script: alpha = 1.5 refused with (0, 1), old value kept" "$TMP/e2"

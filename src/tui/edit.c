@@ -1,0 +1,247 @@
+/*
+ * edit.c - the what-if loop: a value or the law changes, and the run
+ * shows the consequence.
+ *
+ * An edit restarts the run from t = 0 with the new scene, the cursor
+ * keeping its time: the whole consequence of the change is on screen at
+ * once (runs take milliseconds).  "Branch here" (b) arms the next edit to
+ * continue from the cursor instead: the run is cut there (sim_seek) and
+ * goes on with the new values.  A run that contains such a branch records
+ * it (a->branch_t, a->branch_j): its scene alone no longer reproduces it,
+ * and an export says so.  The scene is validated first, so a refused edit
+ * loses nothing.
+ */
+#include <curses.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "status.h"
+#include "tui.h"
+#include "units.h"
+
+/* Applies a changed scene: from t = 0 (the default), or at the cursor after b. */
+static void
+apply_scene(struct app *a, const struct scene *sc_in, const char *what)
+{
+	struct scene sc = *sc_in;
+	char emsg[512], tb[32];
+	int restarted = 0, rc, branch = a->branch_armed;
+
+	a->branch_armed = 0;
+	if (scene_validate(&sc, emsg, sizeof emsg) != HB_OK) {
+		app_msg(a, 1, "refused (old value kept): %s", emsg);
+		return;
+	}
+	cursor_clamp(a);
+	units_format(a->tcur, UNIT_TIME, 6, tb, sizeof tb);
+	if (branch) {
+		size_t at = a->cursor;
+		const struct arc_sample *s = arc_len(sim_arc(a->sim)) ? arc_at(sim_arc(a->sim), at) : NULL;
+		long j = s ? s->j : 0;
+
+		if (s != NULL && sim_seek(a->sim, at) != HB_OK) {
+			app_msg(a, 1, "cannot branch at the cursor: %s", sim_errmsg(a->sim));
+			return;
+		}
+		rc = sim_set_scene(a->sim, &sc, &restarted, emsg, sizeof emsg);
+		if (rc != HB_OK) {
+			app_msg(a, 1, "refused (old value kept): %s", emsg);
+			return;
+		}
+		app_label_runs(a);
+		if (restarted) {
+			a->branch_t = -1;
+			cursor_set(a, 0);
+			app_msg(a, 0, "%s: cannot branch here (a change of the law in contact, the bodies or the initial state); the run restarted from t = 0",
+			        what);
+		} else {
+			if (a->branch_t < 0) {
+				a->branch_t = a->tcur;
+				a->branch_j = j;
+			}
+			a->nbranches++;
+			app_msg(a, 0, "%s from t = %s, j = %ld (branch here): the run continues from the cursor",
+			        what, tb, j);
+		}
+	} else {
+		rc = sim_set_scene(a->sim, &sc, &restarted, emsg, sizeof emsg);
+		if (rc == HB_OK && !restarted && sim_restart(a->sim) != HB_OK) {
+			app_msg(a, 1, "restart failed: %s", sim_errmsg(a->sim));
+			return;
+		}
+		if (rc != HB_OK) {
+			app_msg(a, 1, "refused (old value kept): %s", emsg);
+			return;
+		}
+		app_label_runs(a);
+		a->branch_t = -1;
+		a->nbranches = 0;
+		a->want_t = a->tcur;
+		a->playing = 0;
+		cursor_set(a, 0);
+		a->tcur = a->want_t;
+		app_msg(a, 0, "%s: the run restarted from t = 0 (b: branch here)", what);
+	}
+	cursor_clamp(a);
+	if (a->table_sel >= app_ncollisions(a))
+		a->table_sel = app_ncollisions(a) > 0 ? app_ncollisions(a) - 1 : 0;
+}
+
+void
+edit_value(struct app *a, const char *key, const char *text)
+{
+	struct scene sc = *sim_scene(a->sim);
+	struct scene_error err;
+	char emsg[512], what[160];
+
+	/* The error names the key and what is accepted (scene_error). */
+	if (scene_set_text(&sc, key, text, &err) != HB_OK) {
+		a->branch_armed = 0;
+		app_msg(a, 1, "refused (old value kept): %s", scene_error_str(&err, emsg, sizeof emsg));
+		return;
+	}
+	snprintf(what, sizeof what, "%s = %s", key, text);
+	apply_scene(a, &sc, what);
+}
+
+void
+app_set_law(struct app *a, const char *law)
+{
+	struct scene sc = *sim_scene(a->sim);
+	char emsg[512], what[96];
+
+	if (scene_set(&sc, "scene.law", law, emsg, sizeof emsg) != HB_OK) {
+		a->branch_armed = 0;
+		app_msg(a, 1, "refused: %s", emsg);
+		return;
+	}
+	snprintf(what, sizeof what, "law %s", law);
+	apply_scene(a, &sc, what);
+}
+
+/* The scene_key index of the selected panel row, or -1. */
+int
+param_key_index(const struct app *a)
+{
+	struct param_row rows[256];
+	int n = params_rows(sim_scene(a->sim), rows, 256);
+
+	if (a->param_sel < 0 || a->param_sel >= n)
+		return -1;
+	return rows[a->param_sel].key;
+}
+
+/*
+ * Multiplies (dir > 0) or divides the selected value by 1.1, keeping its
+ * unit; a value chosen from a list steps to the next (previous) choice.
+ * The value is read typed (scene_keyinfo), never from its display text.
+ */
+static void
+nudge(struct app *a, int dir)
+{
+	struct scene_keyinfo ki;
+	struct scene sc = *sim_scene(a->sim);
+	struct scene_error err;
+	int k = param_key_index(a);
+	char text[96], emsg[512];
+	double v;
+
+	if (k < 0 || scene_key(sim_scene(a->sim), k, &ki) != 0)
+		return;
+	if (ki.readonly) {
+		app_msg(a, 1, "%s is derived: computed from the bodies, never typed", ki.label);
+		return;
+	}
+	if (ki.kind == SCENE_KEY_CHOICE) {
+		if (ki.choice >= 0 && ki.nchoices >= 2)
+			edit_value(a, ki.key,
+			    ki.choices[((ki.choice + dir) % ki.nchoices + ki.nchoices) % ki.nchoices]);
+		return;
+	}
+	if (ki.kind == SCENE_KEY_TEXT || !isfinite(ki.number)) {
+		app_msg(a, 1, "%s is not a number: press Enter to type a value", ki.label);
+		return;
+	}
+	if (ki.number == 0) {
+		app_msg(a, 1, "%s is 0: press Enter to type a value", ki.label);
+		return;
+	}
+	v = dir > 0 ? ki.number * 1.1 : ki.number / 1.1;
+	if (ki.kind == SCENE_KEY_WHOLE)
+		v = dir > 0 ? fmax(ceil(v), ki.number + 1) : fmin(floor(v), ki.number - 1);
+	if (scene_set_number(&sc, ki.key, v, &err) != HB_OK) {
+		a->branch_armed = 0;
+		app_msg(a, 1, "refused (old value kept): %s", scene_error_str(&err, emsg, sizeof emsg));
+		return;
+	}
+	if (ki.kind == SCENE_KEY_WHOLE)
+		snprintf(text, sizeof text, "%.0f", v);
+	else
+		units_format(v, ki.dim, 6, text, sizeof text);
+	snprintf(emsg, sizeof emsg, "%s = %s", ki.key, text);
+	apply_scene(a, &sc, emsg);
+}
+
+static void
+prompt_edit_begin(struct app *a)
+{
+	struct scene_keyinfo ki;
+	int k = param_key_index(a);
+
+	if (k < 0 || scene_key(sim_scene(a->sim), k, &ki) != 0)
+		return;
+	if (ki.readonly) {
+		app_msg(a, 1, "%s is derived: computed from the bodies, never typed", ki.label);
+		return;
+	}
+	prompt_open(a, PROMPT_EDIT, ki.edit /* reads back exactly */, "%.47s %.47s%s", ki.key, ki.range,
+	            a->branch_armed ? " (branch here)" : "");
+	snprintf(a->prompt_key, sizeof a->prompt_key, "%s", ki.key);
+}
+
+/* ---- actions ---------------------------------------------------------- */
+
+void act_nudge_up(struct app *a) { nudge(a, 1); }
+void act_nudge_down(struct app *a) { nudge(a, -1); }
+
+void
+act_enter(struct app *a)
+{
+	if (a->focus == FOCUS_PARAMS) {
+		prompt_edit_begin(a);
+	} else if (app_ncollisions(a) > 0) {
+		a->playing = 0;
+		a->zoom_i = a->table_sel;
+		a->view = VIEW_ZOOM;
+		cursor_to_collision(a, a->table_sel);
+	}
+}
+
+void
+act_branch(struct app *a)
+{
+	char tb[32];
+
+	cursor_clamp(a);
+	units_format(a->tcur, UNIT_TIME, 6, tb, sizeof tb);
+	a->branch_armed = !a->branch_armed;
+	if (a->branch_armed)
+		app_msg(a, 0, "branch here: the next edit (Enter, +/-, L) continues the run from t = %s instead of restarting it (b again: cancel)",
+		        tb);
+	else
+		app_msg(a, 0, "branch cancelled: edits restart the run from t = 0");
+}
+
+void
+act_law(struct app *a)
+{
+	const struct law_type *const *l = law_list();
+
+	a->overlay = OV_LAW;
+	a->pick_sel = a->pick_top = 0;
+	for (int i = 0; l[i]; i++)
+		if (l[i] == sim_scene(a->sim)->law)
+			a->pick_sel = i;
+}

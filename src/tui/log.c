@@ -1,0 +1,258 @@
+/*
+ * log.c - messages: the message line, the log of every message (m), and
+ * the scrolling of the two text overlays (help, log).
+ *
+ * The message line shows the latest message; one too long for it ends in
+ * "... (m: whole message)" and the log shows it wrapped to the screen.
+ */
+#include <curses.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "keys.h"
+#include "term.h"
+#include "tui.h"
+
+void
+app_msg(struct app *a, int error, const char *fmt, ...)
+{
+	va_list ap;
+	char *copy;
+	int slot;
+
+	va_start(ap, fmt);
+	vsnprintf(a->msg, sizeof a->msg, fmt, ap);
+	va_end(ap);
+	a->msg_error = error;
+	copy = malloc(strlen(a->msg) + 3);
+	if (copy == NULL)
+		term_oom();
+	snprintf(copy, strlen(a->msg) + 3, "%c %s", error ? '!' : ' ', a->msg);
+	slot = (a->log_head + a->log_n) % APP_LOG_MAX;
+	if (a->log_n == APP_LOG_MAX) {
+		free(a->log[a->log_head]);
+		a->log_head = (a->log_head + 1) % APP_LOG_MAX;
+		slot = (a->log_head + a->log_n - 1) % APP_LOG_MAX;
+	} else {
+		a->log_n++;
+	}
+	a->log[slot] = copy;
+}
+
+const char *
+log_get(const struct app *a, int i)
+{
+	if (i < 0 || i >= a->log_n)
+		return NULL;
+	return a->log[(a->log_head + i) % APP_LOG_MAX];
+}
+
+void
+log_free(struct app *a)
+{
+	for (int i = 0; i < a->log_n; i++)
+		free(a->log[(a->log_head + i) % APP_LOG_MAX]);
+	a->log_n = a->log_head = 0;
+}
+
+struct rect
+box_draw(int y, int x, int h, int w, const char *title)
+{
+	struct rect in = { y + 1, x + 2, h - 2, w - 4 };
+
+	for (int r = 0; r < h; r++)
+		mvhline(y + r, x, ' ', w);
+	attron(A_BOLD);
+	mvhline(y, x + 1, ACS_HLINE, w - 2);
+	mvhline(y + h - 1, x + 1, ACS_HLINE, w - 2);
+	mvvline(y + 1, x, ACS_VLINE, h - 2);
+	mvvline(y + 1, x + w - 1, ACS_VLINE, h - 2);
+	mvaddch(y, x, ACS_ULCORNER);
+	mvaddch(y, x + w - 1, ACS_URCORNER);
+	mvaddch(y + h - 1, x, ACS_LLCORNER);
+	mvaddch(y + h - 1, x + w - 1, ACS_LRCORNER);
+	attroff(A_BOLD);
+	tui_puts(y, x + 2, w - 4, title, A_BOLD);
+	return in;
+}
+
+/*
+ * Wraps s into lines of at most w columns at blanks (a word longer than w
+ * is cut); calls out for each line with its text.  Returns the line count.
+ * indent: columns of blank put before every line after the first.
+ */
+static int
+wrap(const char *s, int w, int indent, void (*out)(void *, int, const char *), void *ctx)
+{
+	char line[1024];
+	int n = 0, first = 1;
+
+	if (w < 8)
+		w = 8;
+	while (*s) {
+		int room = first ? w : w - indent, len = (int)strlen(s), cut = len;
+		if (len > room) {
+			cut = room;
+			while (cut > room / 2 && s[cut] != ' ')
+				cut--;
+			if (s[cut] != ' ')
+				cut = room;
+		}
+		snprintf(line, sizeof line, "%*s%.*s", first ? 0 : indent, "", cut, s);
+		if (out)
+			out(ctx, n, line);
+		n++;
+		s += cut;
+		while (*s == ' ')
+			s++;
+		first = 0;
+	}
+	return n;
+}
+
+/* ---- drawing ----------------------------------------------------------- */
+
+struct wctx {
+	int y0, x0, w, top, rows, row;
+};
+
+static void
+put_line(void *p, int k, const char *line)
+{
+	struct wctx *c = p;
+
+	(void)k;
+	if (c->row >= c->top && c->row < c->top + c->rows)
+		tui_puts(c->y0 + c->row - c->top, c->x0, c->w, line, 0);
+	c->row++;
+}
+
+/* The overlay box: the plots' and bottom panes' rows, the full width but 2. */
+static struct rect
+overlay_rect(const struct app *a)
+{
+	struct rect r = { 1, 0, a->L.lines - 4, a->L.cols };
+
+	if (r.w > 100) {
+		r.x = (a->L.cols - 100) / 2;
+		r.w = 100;
+	}
+	return r;
+}
+
+static int
+help_lines(const struct app *a, struct wctx *c)
+{
+	size_t n;
+	const struct key_binding *t = keys_table(&n);
+	char line[512];
+	int w = overlay_rect(a).w - 4;
+
+	if (c)
+		c->row = 0;
+	int total = 0;
+	for (size_t i = 0; i < n; i++) {
+		snprintf(line, sizeof line, "%-9s %s", t[i].label, t[i].help);
+		total += wrap(line, w, 10, c ? put_line : NULL, c);
+	}
+	static const char *legend[] = {
+		"",
+		"Status line: the preset, law, t, j, q_c, the number of collisions, the playback speed (x0.02: simulated seconds per second), slow (in slow motion), playing/paused, and computing/finished/failed for the run.",
+		"Readout: the sample at the cursor (#index), its t, j, q_c, x, v, x_c, F_c and z_c, with units.",
+		"Contact strip under the plots: # a contact in progress, [] a short contact, [===] a longer contact, ^ the cursor.",
+		"Legend: each pinned run is labelled by what differs from the current one, in its own colour and marker.",
+		"Edits restart the run from t = 0 and keep the cursor's t; b makes the next edit continue from the cursor (branch here).",
+	};
+	for (size_t i = 0; i < sizeof legend / sizeof legend[0]; i++)
+		total += wrap(legend[i][0] ? legend[i] : " ", w, 2, c ? put_line : NULL, c);
+	return total;
+}
+
+static int
+log_lines(const struct app *a, struct wctx *c)
+{
+	int total = 0, w = overlay_rect(a).w - 4;
+
+	if (c)
+		c->row = 0;
+	for (int i = 0; i < a->log_n; i++)
+		total += wrap(log_get(a, i), w, 2, c ? put_line : NULL, c);
+	if (a->log_n == 0)
+		total += wrap("(no messages yet)", w, 0, c ? put_line : NULL, c);
+	return total;
+}
+
+static int
+clamp_top(int top, int total, int rows)
+{
+	if (top > total - rows)
+		top = total - rows;
+	return top < 0 ? 0 : top;
+}
+
+void
+pane_help_draw(const struct app *a)
+{
+	struct rect r = overlay_rect(a);
+	struct rect in = box_draw(r.y, r.x, r.h, r.w, " hybounce keys (Up/Down PgUp/PgDn scroll, any other key closes) ");
+	struct wctx c = { in.y, in.x, in.w, 0, in.h, 0 };
+
+	c.top = clamp_top(a->help_top, help_lines(a, NULL), in.h);
+	help_lines(a, &c);
+}
+
+void
+pane_log_draw(const struct app *a)
+{
+	struct rect r = overlay_rect(a);
+	struct rect in = box_draw(r.y, r.x, r.h, r.w, " messages, oldest first (Up/Down scroll, any other key closes) ");
+	struct wctx c = { in.y, in.x, in.w, 0, in.h, 0 };
+	int total = log_lines(a, NULL);
+
+	/* log_top < 0: the end of the log (the newest messages) */
+	c.top = clamp_top(a->log_top < 0 ? total : a->log_top, total, in.h);
+	log_lines(a, &c);
+}
+
+void
+overlay_key(struct app *a, int ch)
+{
+	struct rect r = overlay_rect(a);
+	int rows = r.h - 2, total = a->overlay == OV_HELP ? help_lines(a, NULL) : log_lines(a, NULL);
+	int *top = a->overlay == OV_HELP ? &a->help_top : &a->log_top;
+	int d = 0;
+
+	if (*top < 0)
+		*top = clamp_top(total, total, rows);
+	if (ch == KEY_DOWN || ch == 'j')
+		d = 1;
+	else if (ch == KEY_UP || ch == 'k')
+		d = -1;
+	else if (ch == KEY_NPAGE || ch == ' ')
+		d = rows - 1;
+	else if (ch == KEY_PPAGE)
+		d = -(rows - 1);
+	else if (ch == KEY_MOUSE) {
+		MEVENT ev;
+		if (getmouse(&ev) == OK && (ev.bstate & (BUTTON4_PRESSED | BUTTON5_PRESSED)))
+			d = ev.bstate & BUTTON4_PRESSED ? -3 : 3;
+		else
+			return;
+	} else if (ch == KEY_RESIZE) {
+		app_relayout(a);
+		return;
+	} else {
+		a->overlay = OV_NONE;
+		return;
+	}
+	*top = clamp_top(*top + d, total, rows);
+}
+
+void
+act_log(struct app *a)
+{
+	a->overlay = OV_LOG;
+	a->log_top = -1;
+}

@@ -1,0 +1,372 @@
+/*
+ * nav.c - the time cursor, the collisions and the selection of the
+ * focused table: moving around a run without changing it.
+ *
+ * The cursor is a sample index into the current run's arc (always valid:
+ * < arc_len); tcur is the time it stands for.  Every function here only
+ * reads the run (sim_arc, sim_collision) and moves the cursor or a
+ * selection.
+ */
+#include <curses.h>
+#include <math.h>
+#include <string.h>
+#include <strings.h>
+
+#include "tui.h"
+
+long
+app_ncollisions(const struct app *a)
+{
+	struct collision live;
+
+	return (long)sim_ncollisions(a->sim) + (sim_contact_live(a->sim, &live) ? 1 : 0);
+}
+
+const struct collision *
+app_collision(const struct app *a, long i, struct collision *live)
+{
+	size_t nc = sim_ncollisions(a->sim);
+
+	if (i < 0)
+		return NULL;
+	if ((size_t)i < nc)
+		return sim_collision(a->sim, (size_t)i);
+	if ((size_t)i == nc && sim_contact_live(a->sim, live))
+		return live;
+	return NULL;
+}
+
+void
+cursor_set(struct app *a, size_t i)
+{
+	const struct arc *arc = sim_arc(a->sim);
+	size_t n = arc_len(arc);
+
+	if (n == 0) {
+		a->cursor = 0;
+		a->tcur = 0;
+		return;
+	}
+	if (i >= n)
+		i = n - 1;
+	a->cursor = i;
+	a->tcur = arc_at(arc, i)->t;
+}
+
+void
+cursor_clamp(struct app *a)
+{
+	size_t n = arc_len(sim_arc(a->sim));
+
+	if (n == 0)
+		a->cursor = 0;
+	else if (a->cursor >= n)
+		a->cursor = n - 1;
+}
+
+long
+coll_at_cursor(const struct app *a)
+{
+	const struct arc *arc = sim_arc(a->sim);
+	const struct arc_sample *s;
+
+	if (arc_len(arc) == 0)
+		return -1;
+	s = arc_at(arc, a->cursor);
+	if (!s->q)
+		return -1;
+	for (long i = 0; i < app_ncollisions(a); i++) {
+		struct collision live;
+		const struct collision *c = app_collision(a, i, &live);
+		if (c && c->j == s->j)
+			return i;
+	}
+	return -1;
+}
+
+void
+cursor_to_collision(struct app *a, long i)
+{
+	struct collision live;
+	const struct collision *c = app_collision(a, i, &live);
+
+	if (c == NULL)
+		return;
+	cursor_set(a, arc_find(sim_arc(a->sim), c->te, c->j));
+	a->table_sel = i;
+}
+
+/* The table selection follows the cursor onto a contact. */
+static void
+follow(struct app *a)
+{
+	long i = coll_at_cursor(a);
+
+	if (i >= 0)
+		a->table_sel = i;
+}
+
+static void
+jump_move(struct app *a, int dir)
+{
+	const struct arc *arc = sim_arc(a->sim);
+	size_t k, nk = arc_nintervals(arc);
+
+	a->playing = 0;
+	if (arc_len(arc) == 0 || nk == 0)
+		return;
+	k = arc_interval_of(arc, a->cursor);
+	if (dir > 0) {
+		if (k + 1 < nk)
+			cursor_set(a, arc_interval_at(arc, k + 1)->first);
+		else
+			app_msg(a, 0, "no later jump (yet)");
+	} else {
+		if (a->cursor > arc_interval_at(arc, k)->first && k > 0)
+			cursor_set(a, arc_interval_at(arc, k)->first);
+		else if (k > 0)
+			cursor_set(a, arc_interval_at(arc, k - 1)->first);
+		else {
+			cursor_set(a, 0);
+			app_msg(a, 0, "no earlier jump");
+		}
+	}
+	follow(a);
+}
+
+static void
+coll_move(struct app *a, int dir)
+{
+	const struct arc *arc = sim_arc(a->sim);
+	long nc = app_ncollisions(a), i, best = -1;
+	const struct arc_sample *s;
+	size_t first;
+
+	a->playing = 0;
+	if (arc_len(arc) == 0)
+		return;
+	s = arc_at(arc, a->cursor);
+	first = arc_interval_at(arc, arc_interval_of(arc, a->cursor))->first;
+	for (i = 0; i < nc; i++) {
+		struct collision live;
+		const struct collision *c = app_collision(a, i, &live);
+		if (c == NULL)
+			continue;
+		if (dir > 0 && c->j > s->j) {
+			best = i;
+			break;
+		}
+		if (dir < 0 && (c->j < s->j || (c->j == s->j && a->cursor > first)))
+			best = i;
+	}
+	if (best < 0) {
+		app_msg(a, 0, dir > 0 ? "no later collision (yet)" : "no earlier collision");
+		return;
+	}
+	cursor_to_collision(a, best);
+}
+
+double
+view_span(const struct app *a)
+{
+	const struct arc_sample *l = arc_last(sim_arc(a->sim));
+	double T = sim_scene(a->sim)->run.T;
+
+	if (a->view == VIEW_FOLLOW)
+		return T / 10;
+	if (a->view == VIEW_ZOOM) {
+		struct collision live;
+		const struct collision *c = app_collision(a, a->zoom_i, &live);
+		if (c)
+			return 1.5 * fmax(c->ts - c->te, 1e-9);
+	}
+	return l && sim_end(a->sim) != SIM_RUNNING ? l->t : T;
+}
+
+static void
+scrub(struct app *a, int dir)
+{
+	const struct arc *arc = sim_arc(a->sim);
+	double d = view_span(a) / 100;
+
+	if (arc_len(arc) == 0)
+		return;
+	a->playing = 0;
+	a->tcur += dir * d;
+	if (a->tcur < 0)
+		a->tcur = 0;
+	if (a->tcur > arc_last(arc)->t)
+		a->tcur = arc_last(arc)->t;
+	a->cursor = arc_find_t(arc, a->tcur);
+	follow(a);
+}
+
+void
+zoom_on(struct app *a, int view)
+{
+	long i = coll_at_cursor(a);
+
+	if (i < 0)
+		i = a->table_sel;
+	if (app_ncollisions(a) == 0) {
+		app_msg(a, 1, "no collision yet");
+		return;
+	}
+	if (i >= app_ncollisions(a))
+		i = app_ncollisions(a) - 1;
+	a->zoom_i = i;
+	a->view = view;
+	a->table_sel = i;
+}
+
+/* Rows of the focused pane that a page holds. */
+static long
+page_rows(const struct app *a)
+{
+	int h = a->focus == FOCUS_PARAMS ? a->L.params.h : a->L.table.h;
+
+	return h > 2 ? h - 2 : 1;
+}
+
+void
+sel_move(struct app *a, long d)
+{
+	if (a->focus == FOCUS_TABLE) {
+		long n = app_ncollisions(a);
+		a->table_sel += d;
+		if (a->table_sel >= n)
+			a->table_sel = n - 1;
+		if (a->table_sel < 0)
+			a->table_sel = 0;
+	} else {
+		struct param_row rows[256];
+		int n = params_rows(sim_scene(a->sim), rows, 256), s = a->param_sel;
+		int step = d > 0 ? 1 : -1;
+		for (long k = 0; k < (d > 0 ? d : -d); k++) {
+			int t = s + step;
+			while (t >= 0 && t < n && rows[t].key < 0)
+				t += step;
+			if (t < 0 || t >= n)
+				break;
+			s = t;
+		}
+		a->param_sel = s;
+	}
+}
+
+/* ---- actions ---------------------------------------------------------- */
+
+void act_step_fwd(struct app *a) { a->playing = 0; cursor_set(a, a->cursor + 1); follow(a); }
+void act_step_back(struct app *a)
+{
+	a->playing = 0;
+	cursor_set(a, a->cursor > 0 ? a->cursor - 1 : 0);
+	follow(a);
+}
+void act_prev_jump(struct app *a) { jump_move(a, -1); }
+void act_next_jump(struct app *a) { jump_move(a, 1); }
+void act_prev_coll(struct app *a) { coll_move(a, -1); }
+void act_next_coll(struct app *a) { coll_move(a, 1); }
+void act_scrub_back(struct app *a) { scrub(a, -1); }
+void act_scrub_fwd(struct app *a) { scrub(a, 1); }
+void act_home(struct app *a) { a->playing = 0; cursor_set(a, 0); follow(a); }
+void act_end(struct app *a) { a->playing = 0; cursor_set(a, (size_t)-1); follow(a); }
+void act_up(struct app *a) { sel_move(a, -1); }
+void act_down(struct app *a) { sel_move(a, 1); }
+void act_pgup(struct app *a) { sel_move(a, -page_rows(a)); }
+void act_pgdn(struct app *a) { sel_move(a, page_rows(a)); }
+void act_top(struct app *a) { sel_move(a, -100000); }
+void act_bottom(struct app *a) { sel_move(a, 100000); }
+
+void
+act_focus(struct app *a)
+{
+	a->focus = a->focus == FOCUS_TABLE ? FOCUS_PARAMS : FOCUS_TABLE;
+	app_relayout(a);
+}
+
+/* ---- the parameter panel: search and sections ------------------------------ */
+
+/* Case-insensitive strstr. */
+static int
+contains(const char *hay, const char *needle)
+{
+	size_t n = strlen(needle);
+
+	if (n == 0)
+		return 1;
+	for (; *hay; hay++)
+		if (strncasecmp(hay, needle, n) == 0)
+			return 1;
+	return 0;
+}
+
+void
+search_do(struct app *a, const char *text, int final)
+{
+	struct param_row rows[256];
+	const struct scene *sc = sim_scene(a->sim);
+	int n = params_rows(sc, rows, 256);
+
+	for (int i = 0; i < n; i++) {
+		struct scene_keyinfo ki;
+		if (rows[i].key < 0 || scene_key(sc, rows[i].key, &ki) != 0)
+			continue;
+		if (contains(ki.key, text) || contains(ki.label, text)) {
+			a->param_sel = i;
+			if (final)
+				app_msg(a, 0, "%s: Enter edits, +/- nudge, / searches again", ki.key);
+			return;
+		}
+	}
+	if (final) {
+		a->param_sel = a->search_from;
+		app_msg(a, 1, "no parameter matches '%s' (names as in the panel or presets: c, law.c, x0)",
+		        text);
+	}
+}
+
+void
+act_search(struct app *a)
+{
+	if (a->focus != FOCUS_PARAMS) {
+		a->focus = FOCUS_PARAMS;
+		app_relayout(a);
+	}
+	a->search_from = a->param_sel;
+	prompt_open(a, PROMPT_SEARCH, "", "search parameters (Enter keeps, Esc cancels)");
+}
+
+/* Moves the panel selection to the first key of the next (dir > 0) or previous section. */
+static void
+section_move(struct app *a, int dir)
+{
+	struct param_row rows[256];
+	int n = params_rows(sim_scene(a->sim), rows, 256), i = a->param_sel, head = -1;
+
+	/* the heading of the current section */
+	for (int k = i; k >= 0; k--)
+		if (rows[k].key < 0) {
+			head = k;
+			break;
+		}
+	if (dir > 0) {
+		for (i = a->param_sel + 1; i < n && rows[i].key >= 0; i++)
+			;
+	} else {
+		/* the heading before the current one */
+		for (i = head - 1; i >= 0 && rows[i].key >= 0; i--)
+			;
+		if (i < 0)
+			i = head;
+	}
+	if (i < 0 || i >= n)
+		return;
+	while (i < n && rows[i].key < 0)
+		i++;
+	if (i < n)
+		a->param_sel = i;
+}
+
+void act_prev_section(struct app *a) { section_move(a, -1); }
+void act_next_section(struct app *a) { section_move(a, 1); }

@@ -1,0 +1,188 @@
+/*
+ * playback.c - the cursor moving in simulated time, and the views.
+ *
+ * Playback is separate from computation: the cursor advances in
+ * simulated time at the chosen speed (simulated seconds per wall second),
+ * slowed inside contacts when slow motion is on, and never passes the last
+ * computed sample.
+ */
+#include <math.h>
+#include <stdio.h>
+
+#include "tui.h"
+#include "units.h"
+
+#define SLOW_WALL 2.0         /* a contact lasts about this many wall seconds in slow motion */
+#define SLOW_SPAN 3.0         /* slow motion ends this many contact durations after t_e */
+
+/* Steps a speed along the 1-2-5 sequence (dir 0: rounds onto it). */
+static double
+speed_step(double s, int dir)
+{
+	double e = floor(log10(s) + 1e-9), p = pow(10, e), m = s / p;
+
+	if (m < 1.5)
+		m = 1;
+	else if (m < 3.5)
+		m = 2;
+	else
+		m = 5;
+	if (dir > 0)
+		m = m == 1 ? 2 : m == 2 ? 5 : 10;
+	else if (dir < 0)
+		m = m == 1 ? 0.5 : m == 2 ? 1 : 2;
+	s = m * p;
+	if (s < 1e-7)
+		s = 1e-7;
+	if (s > 100)
+		s = 100;
+	return s;
+}
+
+double
+speed_default(double T)
+{
+	if (!(T > 0) || !isfinite(T))
+		T = 1;
+	return speed_step(T / 20 * 0.99, 0);
+}
+
+const char *
+stiff_note(const struct app *a, char *buf, size_t n)
+{
+	const struct sim_stats *st = sim_stats(a->sim);
+	char tb[32];
+
+	buf[0] = '\0';
+	if (!st->stiff)
+		return buf;
+	units_format(st->stiff_t, UNIT_TIME, 4, tb, sizeof tb);
+	if (st->switched)
+		snprintf(buf, n, "; stiff contact at t = %s: auto went over to bsimp", tb);
+	else
+		snprintf(buf, n, "; stiff contact at t = %s: run.stepper = auto (or bsimp) is faster",
+		         tb);
+	return buf;
+}
+
+int
+playback_tick(struct app *a, double dt)
+{
+	const struct arc *arc = sim_arc(a->sim);
+	const struct arc_sample *cs, *ls;
+	double sp = a->speed, tnew;
+	size_t k;
+
+	a->in_slow = 0;
+	if (!a->playing || arc_len(arc) == 0)
+		return 0;
+	cs = arc_at(arc, a->cursor);
+	ls = arc_last(arc);
+	k = arc_interval_of(arc, a->cursor);
+	if (a->slowmo && cs->q) {
+		/* a contact as long as the last completed one takes SLOW_WALL
+		 * seconds; a contact that lasts far longer (a permanent
+		 * contact) is played at the normal speed after a while */
+		double td = 1e-3;
+		size_t nc = sim_ncollisions(a->sim);
+		const struct arc_interval *iv = arc_interval_at(arc, k);
+		if (nc > 0 && sim_collision(a->sim, nc - 1)->td > 0)
+			td = sim_collision(a->sim, nc - 1)->td;
+		if (a->tcur - iv->t0 < SLOW_SPAN * td) {
+			if (sp > td / SLOW_WALL)
+				sp = td / SLOW_WALL;
+			a->in_slow = 1;
+		}
+	}
+	tnew = a->tcur + sp * dt;
+	/* slow motion: stop at the start of a contact rather than skip it */
+	if (a->slowmo && !cs->q && k + 1 < arc_nintervals(arc)) {
+		const struct arc_interval *nx = arc_interval_at(arc, k + 1);
+		if (nx->q && nx->t0 <= tnew) {
+			cursor_set(a, nx->first);
+			return 1;
+		}
+	}
+	if (tnew >= ls->t) {
+		a->tcur = ls->t;
+		a->cursor = arc_len(arc) - 1;
+		if (sim_end(a->sim) != SIM_RUNNING) {
+			char note[160];
+
+			if (a->present) {
+				/* presentation mode loops */
+				cursor_set(a, 0);
+				return 1;
+			}
+			a->playing = 0;
+			app_msg(a, 0, "end of the run: %s%s", sim_end_str(a->sim),
+			        stiff_note(a, note, sizeof note));
+		}
+	} else {
+		a->tcur = tnew;
+		a->cursor = arc_find_t(arc, tnew);
+	}
+	return 1;
+}
+
+/* ---- actions ---------------------------------------------------------- */
+
+void
+act_play(struct app *a)
+{
+	a->playing = !a->playing;
+	if (a->playing && sim_end(a->sim) != SIM_RUNNING && a->cursor + 1 >= arc_len(sim_arc(a->sim)))
+		cursor_set(a, 0); /* at the end of a finished run: play it again */
+}
+
+void act_faster(struct app *a) { a->speed = speed_step(a->speed, 1); }
+void act_slower(struct app *a) { a->speed = speed_step(a->speed, -1); }
+
+void
+act_slowmo(struct app *a)
+{
+	a->slowmo = !a->slowmo;
+	app_msg(a, 0, "slow motion through contacts %s", a->slowmo ? "on" : "off");
+}
+
+void
+act_view(struct app *a)
+{
+	a->view = (a->view + 1) % VIEW_COUNT;
+	if ((a->view == VIEW_ZOOM || a->view == VIEW_LOOP) && app_ncollisions(a) == 0)
+		a->view = VIEW_J;
+	if ((a->view == VIEW_ZOOM || a->view == VIEW_LOOP) && a->zoom_i >= app_ncollisions(a))
+		a->zoom_i = app_ncollisions(a) - 1;
+}
+
+void act_zoom(struct app *a) { zoom_on(a, VIEW_ZOOM); }
+void act_loop(struct app *a) { zoom_on(a, VIEW_LOOP); }
+void act_jview(struct app *a) { a->view = a->view == VIEW_J ? VIEW_WHOLE : VIEW_J; }
+
+/*
+ * T: presentation mode for teaching: no table nor panel, the plots take
+ * their rows, the view follows the cursor, each contact is played in slow
+ * motion, and the run loops.  T again restores what was before.
+ */
+void
+act_present(struct app *a)
+{
+	static int saved_view, saved_slowmo;
+
+	a->present = !a->present;
+	if (a->present) {
+		saved_view = a->view;
+		saved_slowmo = a->slowmo;
+		a->view = VIEW_FOLLOW;
+		a->slowmo = 1;
+		a->playing = 1;
+		if (sim_end(a->sim) != SIM_RUNNING && a->cursor + 1 >= arc_len(sim_arc(a->sim)))
+			cursor_set(a, 0);
+		app_msg(a, 0, "presentation: contacts in slow motion, looping (T: back)");
+	} else {
+		a->view = saved_view;
+		a->slowmo = saved_slowmo;
+		app_msg(a, 0, "presentation off");
+	}
+	app_relayout(a);
+}
