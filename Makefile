@@ -46,6 +46,7 @@ endif
 CURSES_PC := $(shell $(PKG_CONFIG) --exists ncursesw 2>/dev/null && echo ncursesw || echo ncurses)
 CORE_CFLAGS := $(shell $(PKG_CONFIG) --cflags gsl inih 2>/dev/null)
 CORE_LIBS   := $(shell $(PKG_CONFIG) --libs gsl inih 2>/dev/null) -lm
+CORE_LIBS   += -pthread
 # ncursesw's pkg-config adds -D_XOPEN_SOURCE=600, which would redefine ours (700).
 TUI_CFLAGS  := $(filter-out -D_XOPEN_SOURCE=%,$(shell $(PKG_CONFIG) --cflags $(CURSES_PC) 2>/dev/null))
 TUI_LIBS    := $(shell $(PKG_CONFIG) --libs $(CURSES_PC) 2>/dev/null)
@@ -182,6 +183,7 @@ check: deps
 check-asan: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan SAN=address,undefined OPT=-O1 all unit
 	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	    LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
 	    sh tests/run.sh build-asan/hybounce build-asan/unit-tests
 
 # libFuzzer harnesses (tests/fuzz/fuzz_*.c), built with clang against the
@@ -291,3 +293,20 @@ readme-examples: $(BIN)
 	. tests/tui/readme.inc && readme_screen $(abspath $(BIN)) | readme_splice README.md SCREEN \
 	    && readme_batch $(abspath $(BIN)) | readme_splice README.md BATCH
 docs: readme-examples
+
+# The sweep's threads under ThreadSanitizer (build-tsan/): the engine's
+# writable statics and the same point on many threads at once
+# (tests/cli/sweep_reentrant.sh, which make check runs on the plain build).
+.PHONY: check-tsan
+check-tsan: deps
+	@$(MAKE) --no-print-directory BUILD=build-tsan SAN=thread OPT=-O1 all
+	@TSAN_OPTIONS=halt_on_error=1:exitcode=66 HYBOUNCE_BIN=$(CURDIR)/build-tsan/hybounce \
+	    HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/cli/sweep_reentrant.sh | tee build-tsan/tsan.log; \
+	    ! grep -q '^not ok' build-tsan/tsan.log
+
+# The sweep's speed targets: rate on 2 cores, overhead per point, memory of a
+# 100,000-point sweep (report in build/bench/sweep.txt; about a minute).
+.PHONY: bench-sweep
+bench-sweep: deps
+	@$(MAKE) --no-print-directory all
+	@sh tests/bench/sweep.sh $(BIN) $(BUILD)/bench

@@ -567,10 +567,11 @@ Test(csv, export_never_overwrites_a_shipped_preset)
 	char msg[512] = "", path[1024];
 	struct sim *s = run("nonunique-separation", NULL);
 	struct csv_export_report r;
-	const char *const *d = preset_dirs();
+	const char *const *d;
 
 	cr_assert_eq(preset_resolve("steel-on-bitumen", path, sizeof path, msg, sizeof msg), HB_OK,
 	    "%s", msg);
+	d = preset_dirs();   /* after preset_resolve, which renews the per-thread list */
 	cr_assert(d != NULL && d[0] != NULL);
 	strcpy(strrchr(path, '.'), ".csv");
 	cr_assert_eq(csv_export_files(s, path, NULL, NULL, &r, msg, sizeof msg), HB_EINVAL);

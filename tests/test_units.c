@@ -319,7 +319,8 @@ Test(units, absurd_exponents)
 	struct unit_dim huge = { 0, 3e9, 0, 0, 0 }, big = { 0, -4e97, 0, 0, 0 };
 
 	cr_assert_eq(units_parse("1 m^-4e97", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
-	cr_assert(strstr(msg, "bad exponent") != NULL, "%s", msg);
+	cr_assert(strstr(msg, "m^-4.0000000000000003e+97") != NULL, "%s", msg);
+	cr_assert(strstr(msg, "a length (e.g. mm) is expected") != NULL, "%s", msg);
 	cr_assert_eq(units_parse("1 m^1e400", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
 	cr_assert_eq(units_parse("1 m^2e15", UNIT_LENGTH, &v, msg, sizeof msg), HB_EINVAL);
 	cr_assert_eq(units_parse("1 m^3000000000/3000000000", UNIT_LENGTH, &v, msg, sizeof msg),

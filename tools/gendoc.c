@@ -19,8 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "hybounce/columns.h"
-#include "hybounce/scene.h"
+#include "docs.h"
 
 static const struct {
 	const char *name;

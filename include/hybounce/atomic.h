@@ -103,6 +103,14 @@ atomic_commit(struct atomic_set *set, char *msg, size_t n);
 void
 atomic_abort(struct atomic_set *set);
 
+/*
+ * The POSIX cksum of what file k of the set (in the order added) holds so
+ * far, read back from its temporary file: the two numbers cksum(1) prints
+ * for the file once committed.  HB_EIO for a file written in place.
+ */
+int
+atomic_cksum(struct atomic_set *set, int k, unsigned long *crc, unsigned long long *len);
+
 /* Writes len bytes to path alone, atomically as above. */
 int
 atomic_write_file(const char *path, const void *buf, size_t len, char *msg, size_t n);

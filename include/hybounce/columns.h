@@ -40,16 +40,6 @@ collision_column_find(const char *name);
 double
 collision_value(const struct collision *c, const struct collision_column *col);
 
-/*
- * The CSV reference of the man page (mdoc list) and of the README
- * (Markdown table): what tools/gendoc writes between the markers.
- * Return the length needed (like snprintf).
- */
-size_t
-collision_columns_mdoc(char *buf, size_t n);
-size_t
-collision_columns_markdown(char *buf, size_t n);
-
 HB_END_DECLS
 
 #endif

@@ -66,8 +66,9 @@ struct csv_export_report {
 /*
  * csv_export with the rules of a front end: the trace and/or the
  * collisions (either may be NULL), the scene beside the first of them
- * that is a file (not beside a device or FIFO written in place), with the
- * export's identifier in a comment; every file of the export gets that
+ * that is a file (not beside a device or FIFO written in place), with a
+ * last comment line naming the export's identifier and each CSV file with
+ * its cksum(1) numbers; every file of the export gets that
  * identifier as its modification time, so that a set mixed by a kill
  * between two renames shows.  Refuses (HB_EINVAL, nothing written) to
  * overwrite run_preset (the preset being run; may be NULL) or a shipped

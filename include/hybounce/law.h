@@ -106,6 +106,18 @@ struct law_type {
 	 * (the clamped linear law, whose k is N/m).
 	 */
 	double (*k_hertz)(const double *par, double kH);
+
+	/*
+	 * Kinks as modes (may be NULL).  Psi with the |w| term of switching
+	 * function g[mode_kink] given its sign: |w| is replaced by sign * w
+	 * (sign = +1 or -1; 0 keeps |w|), the smooth continuation of the
+	 * branch the state is on.  The engine freezes the sign at a step's
+	 * start, so the flow is smooth inside the step, and ends the step
+	 * where g changes sign.  mode_kink is read only when psi_mode is set.
+	 */
+	void (*psi_mode)(const double *par, int ext, double xc, const double *z, double v,
+	                 int sign, double *dz);
+	int mode_kink;
 };
 
 /* The registered laws, NULL-terminated, in a fixed order. */

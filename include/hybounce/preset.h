@@ -72,7 +72,8 @@ preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn);
  * then beside the running program: BIN/../presets (the source tree's
  * build/hybounce) and BIN/../share/hybounce/presets (an installation moved
  * elsewhere), those that exist.
- * NULL-terminated, in storage of the calling thread, valid until its next call.
+ * NULL-terminated, in storage of the calling thread, valid until a later call
+ * of that thread sees HYBOUNCE_PRESETS changed.
  */
 const char *const *
 preset_dirs(void);

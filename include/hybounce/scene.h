@@ -44,7 +44,8 @@ enum scene_stepper {
 	STEPPER_MSBDF,     /* implicit, uses the law's Jacobian */
 	STEPPER_RK4IMP,
 	STEPPER_BSIMP,
-	STEPPER_AUTO,      /* rk8pd, then bsimp for contacts once one is found stiff */
+	STEPPER_AUTO,      /* dop853, then bsimp for contacts once one is found stiff */
+	STEPPER_DOP853,    /* explicit Dormand-Prince 8(5,3) with dense output (the engine's own) */
 	STEPPER_COUNT
 };
 
@@ -215,14 +216,6 @@ scene_get(const struct scene *sc, const char *key, struct scene_keyinfo *out,
  */
 int
 scene_law_param_info(const struct law_type *law, int i, struct scene_keyinfo *out);
-
-/*
- * The PRESETS reference of the man page (mdoc), generated from the key
- * table: what tools/gendoc writes between the PRESET-KEYS markers of
- * man/hybounce.1.  Returns the length needed (like snprintf).
- */
-size_t
-scene_keys_mdoc(char *buf, size_t n);
 
 /* Number of rows (depends on law and system). */
 int

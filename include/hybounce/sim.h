@@ -22,14 +22,22 @@
  *  - contact: GSL odeiv2 on (x_c, v, z_c, W, J_Fc, J_Fe), x = x_e + x_c;
  *  - the absolute tolerance of each component is atol times its scale,
  *    taken from the scene's own sizes (sim_stats.scale);
- *  - a step that leaves C is re-stepped from its start with a bracketing
- *    root finder on the flow-set indicator (max(x, v) in flight,
- *    -min(Phi, v) in contact; only a strictly negative value leaves C),
- *    and the bracket's end in D becomes the pre-jump sample; g is applied
+ *  - a step that leaves C is bracketed with a root finder on the
+ *    flow-set indicator (max(x, v) in flight, -min(Phi, v) in contact;
+ *    only a strictly negative value leaves C): on the step's continuous
+ *    extension under dop853 (then once more on re-steps in a narrow
+ *    window), on re-steps from the step's start under the GSL steppers;
+ *    the bracket's end in D becomes the pre-jump sample; g is applied
  *    exactly;
  *  - steps end on the zero crossings of the law's switching functions and
  *    at the load's kinks, and on v = 0 and dPhi/dt = 0 in contact (the
- *    extrema of x_c and F_c), without a jump.
+ *    extrema of x_c and F_c), without a jump;
+ *  - kinks as modes: the sign of a law's |w| term (law_type.psi_mode) is
+ *    frozen for each step, so the flow is smooth inside it; the step is
+ *    cut where w changes sign and the next one starts on the other mode;
+ *  - a receding contact whose Phi vanishes within the noise of v stays on
+ *    the boundary of C (rule R2): the contact ends where the exact law
+ *    ends it, not where a force within rounding of zero changes sign.
  */
 #ifndef HYBOUNCE_SIM_H
 #define HYBOUNCE_SIM_H
@@ -60,17 +68,20 @@ struct sim_stats {
 	long flights_closed; /* flight intervals solved in closed form */
 	/*
 	 * Stiffness of the contact flow, checked every 32nd step of an explicit
-	 * stepper in contact: h max(-Re lambda) over the eigenvalues of the
-	 * flow's Jacobian.  Beyond 1 the step is limited by stability, not
-	 * accuracy; eight such checks in a row make the contact stiff.
+	 * stepper in contact: h |lambda| over the decaying eigenvalues (Re
+	 * lambda <= 0) of the flow's Jacobian, real or oscillatory.  Beyond half
+	 * the stepper's stability radius (6.1 for dop853, 5.3 for rk8pd, 3 for
+	 * rkf45 and rkck) the step is limited by stability, not accuracy; eight
+	 * such checks in a row make the contact stiff.
 	 */
 	long stiff_checks;
-	long stiff_hits;   /* checks with h max(-Re lambda) > 1 */
-	double stiff_hrho; /* largest h max(-Re lambda) seen */
+	long stiff_hits;   /* checks with h |lambda| beyond half the stability radius */
+	double stiff_hrho; /* largest h |lambda| seen */
 	int stiff;         /* 1: a contact was found stiff: an implicit stepper is faster */
 	double stiff_t;    /* the time it was found, s */
 	int switched;      /* 1: run.stepper = auto went over to bsimp for the contacts */
-	double seconds;    /* CPU time spent in sim_advance */
+	double seconds;    /* CPU time spent in sim_advance (CLOCK_PROCESS_CPUTIME_ID), s */
+	double wall;       /* wall time spent in sim_advance (CLOCK_MONOTONIC), s */
 	int ncomp;         /* components of the contact ODE */
 	double scale[8];   /* per-component scale of the absolute tolerance */
 	const char *comp[8]; /* their names */
@@ -92,7 +103,7 @@ sim_free(struct sim *s);
 
 /*
  * Advances the run by at most max_steps accepted steps (0: no limit) and at
- * most max_seconds of CPU time (0: no limit), or to its end.  Returns HB_OK
+ * most max_seconds of wall time (0: no limit; a frame's budget), or to its end.  Returns HB_OK
  * (check sim_end), HB_EDONE if the run had already ended, or the failure
  * (HB_ENUMERIC, HB_ECHATTER, HB_ENOMEM) with sim_errmsg() set; after a
  * failure sim_end() is SIM_END_FAIL and the arc ends at the last good sample.

@@ -549,7 +549,8 @@ print_summary(FILE *out, const struct sim *s, int sig)
 		        sim_ncollisions(s));
 	else
 		fprintf(out, "  collisions  %zu\n", sim_ncollisions(s));
-	fprintf(out, "  run time    %s (CPU)\n", fmt(st->seconds, UNIT_TIME, b1, sizeof b1));
+	fprintf(out, "  run time    %s CPU", fmt(st->seconds, UNIT_TIME, b1, sizeof b1));
+	fprintf(out, ", %s wall\n", fmt(st->wall, UNIT_TIME, b1, sizeof b1));
 	fprintf(out, "  steps       %ld accepted, %ld rejected\n", st->steps, st->rejected);
 	fprintf(out, "  evaluations %ld right-hand side, %ld Jacobian\n", st->rhs, st->jac);
 	fprintf(out, "  events      %ld jumps, %ld kinks, %ld located by root finding, "

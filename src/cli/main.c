@@ -24,6 +24,7 @@
 #include "hybounce/status.h"
 #include "app.h"
 #include "batch.h"
+#include "sweep_cli.h"
 
 #define PROG "hybounce"
 #define DEFAULT_PRESET "steel-on-bitumen"
@@ -63,6 +64,7 @@ DEFAULT_PRESET ")\n"
 "       hybounce --batch PRESET [--set KEY=VALUE]... [--trace FILE]\n"
 "                [--collisions FILE] [--jumps] [--check] [--quiet]\n"
 "       hybounce --list-presets | --list-laws | --help | --version\n"
+"       hybounce sweep PRESET --vary KEY=SPEC... --out DIR   (see hybounce sweep --help)\n"
 "\n"
 "Repeated impacts of two bodies under incremental contact laws, as a hybrid\n"
 "system (flows and jumps over hybrid time (t, j)).\n"
@@ -152,6 +154,8 @@ hybounce_main(int argc, char **argv)
 	int nsets = 0, ascii = 0, list_presets = 0, list_laws = 0, c, status;
 	char msg[1024];
 
+	if (argc > 1 && strcmp(argv[1], "sweep") == 0)
+		return sweep_main(argc - 1, argv + 1);   /* hybounce sweep ... (sweep.c) */
 	memset(&bo, 0, sizeof bo);
 	sets = calloc((size_t)argc + 1, sizeof *sets);
 	if (sets == NULL) {

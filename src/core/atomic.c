@@ -19,6 +19,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -370,6 +371,54 @@ atomic_commit(struct atomic_set *set, char *msg, size_t n)
 	}
 	if (e != 0)
 		return status_set(msg, n, HB_EIO, "%s: %s", set->file[failed].path, strerror(e));
+	return HB_OK;
+}
+
+/* The table of the CRC of cksum(1): polynomial 0x04C11DB7, most significant bit first. */
+static void
+crc_table(uint32_t t[256])
+{
+	for (uint32_t i = 0; i < 256; i++) {
+		uint32_t c = i << 24;
+
+		for (int b = 0; b < 8; b++)
+			c = c & 0x80000000u ? (c << 1) ^ 0x04C11DB7u : c << 1;
+		t[i] = c;
+	}
+}
+
+int
+atomic_cksum(struct atomic_set *set, int k, unsigned long *crc, unsigned long long *len)
+{
+	struct atomic_file *af = &set->file[k];
+	unsigned char buf[65536];
+	uint32_t t[256], c = 0;
+	unsigned long long n = 0;
+	ssize_t got;
+	int fd;
+
+	if (k < 0 || k >= set->n || af->f == NULL || !af->tmp[0] || fflush(af->f) != 0)
+		return HB_EIO;
+	fd = open(af->tmp, O_RDONLY | O_CLOEXEC);
+	if (fd < 0)
+		return HB_EIO;
+	crc_table(t);
+	while ((got = read(fd, buf, sizeof buf)) != 0) {
+		if (got < 0) {
+			if (errno == EINTR)
+				continue;
+			close(fd);
+			return HB_EIO;
+		}
+		for (ssize_t i = 0; i < got; i++)
+			c = (c << 8) ^ t[(c >> 24) ^ buf[i]];
+		n += (unsigned long long)got;
+	}
+	close(fd);
+	for (unsigned long long m = n; m != 0; m >>= 8)
+		c = (c << 8) ^ t[((c >> 24) ^ m) & 0xFF];
+	*crc = (unsigned long)(uint32_t)~c;
+	*len = n;
 	return HB_OK;
 }
 

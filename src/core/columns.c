@@ -8,6 +8,7 @@
 
 #include "hybounce/columns.h"
 
+#include "docs.h"
 #include "textbuf.h"
 
 #define V(f) 0, offsetof(struct collision, f)

@@ -336,10 +336,26 @@ csv_export_check(const char *trace, const char *coll, const char *run_preset,
 	return plan(trace, coll, run_preset, &r, msg, n);
 }
 
-/* The scene as a preset, then the export's identifier and its files. */
+/* ", the trace PATH (cksum CRC LENGTH)": one CSV of the export, file k of set. */
+static void
+name_csv(FILE *f, struct atomic_set *set, int k, const char *what, const char *path)
+{
+	unsigned long crc;
+	unsigned long long len;
+
+	fprintf(f, ", the %s %s", what, path);
+	if (k >= 0 && atomic_cksum(set, k, &crc, &len) == HB_OK)
+		fprintf(f, " (cksum %lu %llu)", crc, len);
+}
+
+/*
+ * The scene as a preset, then one line naming the export: its identifier
+ * and each CSV with its cksum, so that a set mixed by a kill between two
+ * renames shows (each file of set is index k_trace, k_coll or -1).
+ */
 static int
-write_scene(FILE *f, const struct sim *s, const struct atomic_set *set,
-            const char *trace, const char *coll)
+write_scene(FILE *f, const struct sim *s, struct atomic_set *set,
+            const char *trace, int k_trace, const char *coll, int k_coll)
 {
 	size_t len = preset_format(sim_scene(s), NULL, 0);
 	char *buf = malloc(len + 1);
@@ -351,10 +367,10 @@ write_scene(FILE *f, const struct sim *s, const struct atomic_set *set,
 	free(buf);
 	fprintf(f, "\n; export %s: this scene", set->id);
 	if (trace != NULL)
-		fprintf(f, ", the trace %s", trace);
+		name_csv(f, set, k_trace, "trace", trace);
 	if (coll != NULL)
-		fprintf(f, ", the collisions %s", coll);
-	fprintf(f, " (every file of the export has this modification time)\n");
+		name_csv(f, set, k_coll, "collisions", coll);
+	fprintf(f, "; every file of the export has this modification time\n");
 	return 0;
 }
 
@@ -364,7 +380,7 @@ csv_export_files(const struct sim *s, const char *trace, const char *coll,
 {
 	struct atomic_set set;
 	const char *paths[3];
-	int st;
+	int st, index[2] = { -1, -1 };   /* trace, collisions: their file in set */
 
 	if ((st = plan(trace, coll, run_preset, r, msg, n)) != HB_OK)
 		return st;
@@ -385,9 +401,11 @@ csv_export_files(const struct sim *s, const char *trace, const char *coll,
 			return HB_EIO;
 		}
 		r->target[k] = set.file[set.n - 1].target;
+		if (k < 2)
+			index[k] = set.n - 1;
 		errno = 0;
 		e = k == 0 ? write_arc(f, s) : k == 1 ? write_collisions(f, s)
-		           : write_scene(f, s, &set, trace, coll);
+		           : write_scene(f, s, &set, trace, index[0], coll, index[1]);
 		if (e == ENOMEM) {
 			atomic_abort(&set);
 			return status_set(msg, n, HB_ENOMEM, "%s: out of memory", paths[k]);

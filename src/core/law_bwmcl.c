@@ -59,6 +59,17 @@ bwmcl_psi(const double *par, int ext, double xc, const double *z, double v,
  *                 + [w = z1] (-beta n|z1|^(n-1) |Psi_2|
  *                             - gamma n z1|z1|^(n-2) Psi_2).
  */
+/* Psi with the sign of Psi_2 in |Psi_2| given (kink g[2]). */
+static void
+bwmcl_psi_mode(const double *par, int ext, double xc, const double *z, double v, int sign,
+               double *dz)
+{
+	double psi2 = v - bwmcl_phi(par, ext, xc, z, v) / par[LAW_BW_C];
+
+	dz[0] = law_bw_rate_mode(par, z[0], psi2, sign);
+	dz[1] = psi2;
+}
+
 static void
 bwmcl_jac(const double *par, int ext, double xc, const double *z, double v,
           double *dphi, double *dpsi)
@@ -110,6 +121,8 @@ const struct law_type law_bwmcl = {
 	.psi = bwmcl_psi,
 	.jac = bwmcl_jac,
 	.kinks = bwmcl_kinks,
+	.psi_mode = bwmcl_psi_mode, /* |Psi_2| as a mode */
+	.mode_kink = 2,
 	.check = law_bw_check,     /* gamma in [-beta, beta] */
 	.k_hertz = law_bw_k_hertz, /* k_H / (alpha + (1 - alpha) A^p) */
 };

@@ -49,6 +49,16 @@ bwshccl_psi(const double *par, int ext, double xc, const double *z, double v,
 }
 
 /* Columns (x_c, z, v); dpsi is one row. */
+/* Psi with the sign of v in |v| given (kink g[2]). */
+static void
+bwshccl_psi_mode(const double *par, int ext, double xc, const double *z, double v, int sign,
+                 double *dz)
+{
+	(void)ext;
+	(void)xc;
+	dz[0] = law_bw_rate_mode(par, z[0], v, sign);
+}
+
 static void
 bwshccl_jac(const double *par, int ext, double xc, const double *z, double v,
             double *dphi, double *dpsi)
@@ -92,6 +102,8 @@ const struct law_type law_bwshccl = {
 	.psi = bwshccl_psi,
 	.jac = bwshccl_jac,
 	.kinks = bwshccl_kinks,
+	.psi_mode = bwshccl_psi_mode, /* |v| as a mode */
+	.mode_kink = 2,
 	.check = law_bw_check,     /* gamma in [-beta, beta] */
 	.k_hertz = law_bw_k_hertz, /* k_H / (alpha + (1 - alpha) A^p) */
 };

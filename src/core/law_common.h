@@ -165,6 +165,20 @@ law_bw_rate(const double *par, double z, double w)
 	    - par[LAW_BW_GAMMA] * apow(z, n) * w;
 }
 
+/*
+ * law_bw_rate on a mode: |w| replaced by sign * w (sign = +1 or -1), or
+ * |w| itself when sign = 0 (then the same doubles as law_bw_rate).
+ */
+static inline double
+law_bw_rate_mode(const double *par, double z, double w, int sign)
+{
+	double n = par[LAW_BW_N];
+	double aw = sign ? (double)sign * w : fabs(w);
+
+	return par[LAW_BW_A] * w - par[LAW_BW_BETA] * spow(z, n) * aw
+	    - par[LAW_BW_GAMMA] * apow(z, n) * w;
+}
+
 /* d/dz of law_bw_rate: -beta n|z|^(n-1) |w| - gamma n z|z|^(n-2) w. */
 static inline double
 law_bw_rate_dz(const double *par, double z, double w)

@@ -29,6 +29,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -585,19 +586,53 @@ preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 /* Finding presets */
 
 /*
+ * Any number of folders: the entries of $HYBOUNCE_PRESETS split into one
+ * block per thread (a thread-specific value, freed when the thread ends),
+ * built again only when HYBOUNCE_PRESETS changes, so that a list returned
+ * earlier stays valid while the environment does not change.
+ */
+struct dirs_cache {
+	char *seen;        /* HYBOUNCE_PRESETS when built; NULL if unset */
+	int built;
+	const char **dirs; /* points into the same block as the strings */
+};
+
+/* Written once, under pthread_once: the only static of the core that is not const. */
+static pthread_key_t preset_dirs_key;
+static pthread_once_t preset_dirs_once = PTHREAD_ONCE_INIT;
+
+static void
+dirs_cache_free(void *p)
+{
+	struct dirs_cache *c = p;
+
+	if (c != NULL) {
+		free(c->seen);
+		free(c->dirs);
+		free(c);
+	}
+}
+
+static void
+preset_dirs_key_make(void)
+{
+	(void)pthread_key_create(&preset_dirs_key, dirs_cache_free);
+}
+
+/*
  * The folders near the running executable (Linux /proc/self/exe):
  * BIN/../presets (build/hybounce in the source tree) and
  * BIN/../share/hybounce/presets (PREFIX/bin/hybounce installed anywhere),
- * those that exist, written into out[0..1].  Returns how many.
+ * those that exist, into out.  Returns how many.
  */
 static int
-exe_dirs(char out[2][1024])
+near_find(char out[2][1024])
 {
 	static const char *const rel[] = { "/../presets", "/../share/hybounce/presets" };
 	char exe[1024], *slash;
 	ssize_t l = readlink("/proc/self/exe", exe, sizeof exe - 1);
 	struct stat st;
-	int k = 0;
+	int n = 0;
 
 	if (l <= 0)
 		return 0;
@@ -607,63 +642,87 @@ exe_dirs(char out[2][1024])
 		return 0;
 	*slash = '\0';
 	for (size_t i = 0; i < sizeof rel / sizeof rel[0]; i++) {
-		if ((size_t)snprintf(out[k], sizeof out[k], "%s%s", exe, rel[i]) >= sizeof out[k])
+		if ((size_t)snprintf(out[n], sizeof out[0], "%s%s", exe, rel[i]) >= sizeof out[0])
 			continue;
-		if (stat(out[k], &st) == 0 && S_ISDIR(st.st_mode))
-			k++;
+		if (stat(out[n], &st) == 0 && S_ISDIR(st.st_mode))
+			n++;
 	}
-	return k;
+	return n;
 }
 
-/*
- * Any number of folders: the entries of $HYBOUNCE_PRESETS are split into a
- * buffer that grows (each call rebuilds it; earlier results are invalid).
- */
 const char *const *
 preset_dirs(void)
 {
-	/* per thread, so that threads may look presets up at once */
-	static _Thread_local char *store, datadir[sizeof HYBOUNCE_DATADIR + 16];
-	static _Thread_local const char **dirs, *fallback[3];
-	static _Thread_local char near[2][1024];
+	static _Thread_local char datadir[sizeof HYBOUNCE_DATADIR + 16];
+	static _Thread_local const char *fallback[3];
 	static const char here[] = "presets";
 	const char *env = getenv("HYBOUNCE_PRESETS");
-	size_t k = 0, count = 5;
-	int nnear = exe_dirs(near);
+	struct dirs_cache *c;
+	size_t k = 0, count = 3, len = env != NULL ? strlen(env) + 1 : 0, envlen = len;
+	char *store, near[2][1024];
+	int near_n = 0;
 
 	snprintf(datadir, sizeof datadir, "%s/presets", HYBOUNCE_DATADIR);
-	free(store);
-	free(dirs);
-	store = NULL;
-	dirs = NULL;
-	if (env != NULL) {
+	fallback[0] = here;
+	fallback[1] = datadir;
+	fallback[2] = NULL;
+	if (pthread_once(&preset_dirs_once, preset_dirs_key_make) != 0)
+		return fallback;
+	c = pthread_getspecific(preset_dirs_key);
+	if (c == NULL) {
+		c = calloc(1, sizeof *c);
+		if (c == NULL)
+			return fallback;
+		if (pthread_setspecific(preset_dirs_key, c) != 0) {
+			free(c);
+			return fallback;
+		}
+	}
+	if (c->built && c->dirs != NULL &&
+	    (env == NULL ? c->seen == NULL : c->seen != NULL && strcmp(env, c->seen) == 0))
+		return c->dirs;
+	free(c->seen);
+	free(c->dirs);
+	c->seen = NULL;
+	c->dirs = NULL;
+	c->built = 1;
+	near_n = near_find(near);
+	for (int i = 0; i < near_n; i++) {
+		count++;
+		len += strlen(near[i]) + 1;
+	}
+	if (env != NULL)
 		for (const char *p = env; *p != '\0'; p++)
 			count += *p == ':';
-		store = strdup(env);
+	/* the pointers, then a copy of the entries they point into */
+	c->dirs = malloc((count + 1) * sizeof *c->dirs + len);
+	if (c->dirs == NULL || (env != NULL && (c->seen = strdup(env)) == NULL)) {
+		free(c->dirs);
+		c->dirs = NULL;
+		return fallback; /* out of memory: the built-in folders only */
 	}
-	dirs = malloc((count + 1) * sizeof *dirs);
-	if (dirs == NULL || (env != NULL && store == NULL)) {
-		/* out of memory: the built-in folders only */
-		fallback[0] = here;
-		fallback[1] = datadir;
-		fallback[2] = NULL;
-		return fallback;
-	}
-	for (char *p = store; p != NULL && *p != '\0';) {
+	store = (char *)(c->dirs + count + 1);
+	if (env != NULL)
+		memcpy(store, env, envlen);
+	for (char *p = env != NULL ? store : NULL; p != NULL && *p != '\0';) {
 		char *q = strchr(p, ':');
 
 		if (q != NULL)
 			*q = '\0';
 		if (*p != '\0') /* an empty entry ("a::b") names no folder */
-			dirs[k++] = p;
+			c->dirs[k++] = p;
 		p = q != NULL ? q + 1 : NULL;
 	}
-	dirs[k++] = here;
-	dirs[k++] = datadir;
-	for (int i = 0; i < nnear; i++)
-		dirs[k++] = near[i];
-	dirs[k] = NULL;
-	return dirs;
+	c->dirs[k++] = here;
+	c->dirs[k++] = datadir;
+	for (int i = 0, off = (int)envlen; i < near_n; i++) {
+		/* the folders beside the program, copied after the entries */
+		memcpy(store + off, near[i], strlen(near[i]) + 1);
+		c->dirs[k++] = store + off;
+		off += (int)strlen(near[i]) + 1;
+	}
+	c->dirs[k] = NULL;
+	return c->dirs;
 }
 
 static int

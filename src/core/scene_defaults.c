@@ -24,7 +24,7 @@
 /* Steppers */
 
 static const char *const stepper_names[STEPPER_COUNT] = {
-	"rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto",
+	"rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto", "dop853",
 };
 
 const char *

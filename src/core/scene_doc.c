@@ -10,6 +10,7 @@
 #include "hybounce/scene.h"
 #include "hybounce/units.h"
 
+#include "docs.h"
 #include "scene_keys.h"
 #include "textbuf.h"
 

@@ -134,7 +134,7 @@ scene_check(struct scene *sc, struct scene_error *err)
 	for (int b = 0; b < 2; b++) {
 		const struct scene_body *bd = &sc->body[b];
 		if (!bd->mass_given && !(bd->rho > 0 && isfinite(bd->R)) && !(b == 1 && isinf(bd->R))) {
-			snprintf(key, sizeof key, "body%d.mass", b + 1);
+			snprintf(key, sizeof key, "%s", b == 0 ? "body1.mass" : "body2.mass");
 			return scene_error_set(err, key,
 			    b == 1 ? "a mass, or rho with a finite R (or R = inf: a fixed obstacle)"
 			           : "a mass, or rho with a finite R", "body %d has no mass", b + 1);

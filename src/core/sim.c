@@ -50,6 +50,7 @@
 #include <string.h>
 #include <time.h>
 
+#include <gsl/gsl_complex_math.h>
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
@@ -61,6 +62,7 @@
 #include "arc_impl.h"
 #include "control.h"
 #include "step_bsimp.h"
+#include "step_dop853.h"
 
 enum {
 	MAXDIM = 11,           /* x, v, x_c, z1, z2, W, JFc, JFe, E_e, x_m, v_m */
@@ -138,6 +140,14 @@ struct sim {
 	struct cached cache[CACHE];
 	int ncache, cache_next;
 	int fun_target, fun_sign0;
+	int use_dense;      /* 1: restep() reads the last step's continuous extension */
+	int hug;            /* 1: the step began on Phi = 0 to the noise, receding (see snap_separation) */
+	int msign;          /* the frozen sign of the law's mode kink in this step (0: none) */
+	int resume;         /* 1: the next interval continues one cut by sim_seek (see resume_interval) */
+	size_t resume_first, resume_last; /* its samples kept in the arc */
+	double resume_h;    /* the step the run had taken from the seek point, or 0 */
+	int mforce;         /* the sign the mode takes at t = mforce_t (a located crossing) */
+	double mforce_t;
 	int loc_iter;
 	gsl_root_fsolver *root;
 	long work;          /* units of work, for the step budget */
@@ -153,7 +163,8 @@ struct sim {
 static int
 explicit_stepper(int stepper)
 {
-	return stepper == STEPPER_RK8PD || stepper == STEPPER_RKF45 || stepper == STEPPER_RKCK;
+	return stepper == STEPPER_RK8PD || stepper == STEPPER_RKF45 || stepper == STEPPER_RKCK ||
+	       stepper == STEPPER_DOP853;
 }
 
 static const gsl_odeiv2_step_type *
@@ -165,16 +176,19 @@ stepper_type(int stepper)
 	case STEPPER_MSBDF: return gsl_odeiv2_step_msbdf;
 	case STEPPER_RK4IMP: return gsl_odeiv2_step_rk4imp;
 	case STEPPER_BSIMP: return hb_step_bsimp_shifted;
+	case STEPPER_DOP853: return hb_step_dop853;
 	default: return gsl_odeiv2_step_rk8pd;
 	}
 }
 
+/* Seconds on a clock: CLOCK_MONOTONIC (wall) or CLOCK_PROCESS_CPUTIME_ID (CPU). */
 static double
-now_seconds(void)
+now_seconds(clockid_t clock)
 {
 	struct timespec ts;
 
-	clock_gettime(CLOCK_MONOTONIC, &ts);
+	if (clock_gettime(clock, &ts) != 0)
+		return 0.0;
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
@@ -223,7 +237,9 @@ rhs(double t, const double u[], double du[], void *params)
 
 		phi = sc->law->phi(sc->par, sc->ext, y[L->ixc], z, v);
 		dy[L->ixc] = v;
-		if (sc->law->n_z)
+		if (s->msign)
+			sc->law->psi_mode(sc->par, sc->ext, y[L->ixc], z, v, s->msign, &dy[L->iz]);
+		else if (sc->law->n_z)
 			sc->law->psi(sc->par, sc->ext, y[L->ixc], z, v, &dy[L->iz]);
 		dy[L->iW] = phi * v;
 		dy[L->iJc] = -phi;
@@ -919,6 +935,7 @@ crossed(int kind, double a, double b)
 }
 
 static void snap_stick(struct sim *s, double *u);
+static int snap_separation(struct sim *s, double *u);
 
 /* The state one step of length h from (t0, u0), cached. */
 static int
@@ -936,6 +953,20 @@ restep(struct sim *s, double h, double *u)
 		memcpy(u, s->u1, sizeof s->u1);
 		return 0;
 	}
+	if (s->use_dense) {
+		/* on the step's continuous extension: no evaluation of f */
+		if ((rc = hb_dop853_dense(p->d->s, s->t0 + h, u)) != GSL_SUCCESS)
+			return rc;
+		for (i = 0; i < p->L.dim; i++)
+			if (!isfinite(u[i]))
+				return GSL_FAILURE;
+		if (p->q) {
+			snap_stick(s, u);
+			if (s->hug)
+				snap_separation(s, u);
+		}
+		return 0;
+	}
 	for (i = 0; i < s->ncache; i++)
 		if (s->cache[i].h == h) {
 			memcpy(u, s->cache[i].u, sizeof s->u0);
@@ -950,8 +981,11 @@ restep(struct sim *s, double h, double *u)
 	for (i = 0; i < p->L.dim; i++)
 		if (!isfinite(u[i]) || !isfinite(yerr[i]))
 			return GSL_FAILURE;
-	if (p->q)
+	if (p->q) {
 		snap_stick(s, u);
+		if (s->hug)
+			snap_separation(s, u);
+	}
 	i = s->cache_next;
 	s->cache_next = (s->cache_next + 1) % CACHE;
 	if (s->ncache < CACHE)
@@ -959,6 +993,13 @@ restep(struct sim *s, double h, double *u)
 	s->cache[i].h = h;
 	memcpy(s->cache[i].u, u, sizeof s->u0);
 	return 0;
+}
+
+/* The kind of the function being located (fun_target): 0 is the indicator, the event. */
+static int
+kind_of_target(const struct sim *s)
+{
+	return s->fun_target == 0 ? FUN_EVENT : FUN_KINK;
 }
 
 /*
@@ -974,6 +1015,8 @@ oriented(double h, void *params)
 	int kind[MAXFUN];
 
 	s->loc_iter++;
+	if (kind_of_target(s) != FUN_EVENT && s->t0 + h == s->t0)
+		return DBL_MIN; /* the step's start has not crossed (a mode's side is its sign there) */
 	if (restep(s, h, u))
 		return NAN;
 	watch(s, s->cur, s->t0 + h, u, f, kind);
@@ -1077,6 +1120,89 @@ snap_stick(struct sim *s, double *u)
 		u[L->iv] = 0.0;
 }
 
+/*
+ * The noise of v at a scaled state: NOISE times the tolerance the control
+ * allows it (atol + rtol |u_v| of its scale).
+ */
+enum { NOISE = 100 };
+
+static double
+v_noise(const struct sim *s, const double *u)
+{
+	int iv = s->cur->L.iv;
+
+	return NOISE * s->scale[iv] * (s->sc.run.atol + s->sc.run.rtol * fabs(u[iv]));
+}
+
+/*
+ * A separation that rounding cannot fake.  Under heavy damping (SHCCL
+ * with c v0 / k beyond about 35) the receding velocity creeps up to the
+ * value at which Phi = 0 (k / c for SHCCL) while x_c returns to 0: Phi is
+ * then zero to within the integration's noise for the whole restitution,
+ * and its computed sign says nothing.  A receding state (v > 0) whose Phi
+ * is positive but vanishes within the noise of v (Newton's step on Phi in
+ * v, Phi / (dPhi/dv), below v_noise) is on the boundary of C to the
+ * precision of the computation: its v is moved by that step (and ulps)
+ * until Phi <= 0, so that it stays in C (rule R2).  The contact then ends where Phi turns positive beyond
+ * the noise, which is where the exact law ends it (x_c = 0 for SHCCL).
+ * Laws whose Phi does not grow with v are left alone.  Returns 1 if the
+ * state was moved.
+ */
+static int
+snap_separation(struct sim *s, double *u)
+{
+	const struct phase *p = s->cur;
+	const struct layout *L = &p->L;
+	const struct scene *sc = &s->sc;
+	double y[MAXDIM], z[LAW_MAX_Z] = { 0 }, dphi[LAW_MAX_Z + 2], phi, v, vn, dv;
+	int nz = sc->law->n_z, i;
+
+	if (!p->q)
+		return 0;
+	unscale(p, u, y);
+	v = y[L->iv];
+	if (!(v > 0))
+		return 0;
+	for (i = 0; i < nz; i++)
+		z[i] = y[L->iz + i];
+	phi = phi_at(s, y[L->ixc], z, v);
+	if (!(phi > 0))
+		return 0;
+	sc->law->jac(sc->par, sc->ext, y[L->ixc], z, v, dphi, NULL);
+	dv = dphi[nz + 1];
+	if (!(dv > 0) || phi > dv * v_noise(s, u))
+		return 0;
+	vn = v - phi / dv;
+	for (i = 0; i < 8 && phi_at(s, y[L->ixc], z, vn) > 0; i++)
+		vn -= ldexp(fabs(vn) * DBL_EPSILON, i);
+	if (phi_at(s, y[L->ixc], z, vn) > 0)
+		return 0;
+	u[L->iv] = vn * s->iscale[L->iv];
+	return 1;
+}
+
+/* Does the step from the scaled state u begin on Phi = 0 to the noise, receding? */
+static int
+hugging(struct sim *s, const double *u)
+{
+	const struct phase *p = s->cur;
+	const struct layout *L = &p->L;
+	const struct scene *sc = &s->sc;
+	double y[MAXDIM], z[LAW_MAX_Z] = { 0 }, dphi[LAW_MAX_Z + 2], phi;
+	int nz = sc->law->n_z, i;
+
+	if (!p->q)
+		return 0;
+	unscale(p, u, y);
+	if (!(y[L->iv] > 0))
+		return 0;
+	for (i = 0; i < nz; i++)
+		z[i] = y[L->iz + i];
+	phi = phi_at(s, y[L->ixc], z, y[L->iv]);
+	sc->law->jac(sc->par, sc->ext, y[L->ixc], z, y[L->iv], dphi, NULL);
+	return dphi[nz + 1] > 0 && fabs(phi) <= dphi[nz + 1] * v_noise(s, u);
+}
+
 /* Is function i a candidate crossing from f0 to fx (with the noise filter of after_step)? */
 static int
 candidate(const struct sim *s, int kind, int i, double f0, double fx)
@@ -1159,6 +1285,52 @@ dip(struct sim *s, const double *f0, const double *f1, int n, double *fx)
 }
 
 /*
+ * From a point located on the continuous extension to the step's own
+ * state there.  A kink or an extremum: the state at b is recomputed by one
+ * step of the method from the step's start (it is then as accurate as any
+ * step end), unless that state has left C, when the interpolated one
+ * (which has not) is kept.  An event: the indicator of the recomputed
+ * states is bracketed again in a window about b, widened until it holds
+ * the crossing, so that the pre-jump state is a step's state in D; if no
+ * window does, the interpolated bracket stands (its end is in D too).
+ * Leaves use_dense set when the interpolated points stand.
+ */
+static void
+real_point(struct sim *s, int event, double hi, double *a, double *b)
+{
+	double w = fmax(16.0 * (*b - *a), 1e-10 * s->H), ra, rb;
+	int tries;
+
+	s->use_dense = 0;
+	if (!event) {
+		double u[MAXDIM], f[MAXFUN];
+		int kind[MAXFUN];
+
+		if (restep(s, *b, u) != 0)
+			goto keep;
+		watch(s, s->cur, s->t0 + *b, u, f, kind);
+		if (!(f[0] >= 0.0))
+			goto keep;
+		return;
+	}
+	for (tries = 0; tries < 5; tries++, w *= 64.0) {
+		double lo = fmax(0.0, *b - w), up = fmin(hi, *b + w);
+
+		if (up <= *b || tries == 4) /* the last window: the whole step */
+			up = hi;
+		if (tries == 4)
+			lo = 0.0;
+		if (bracket(s, 0, 1, lo, up, &ra, &rb) == 0) {
+			*a = ra;
+			*b = rb;
+			return;
+		}
+	}
+keep:
+	s->use_dense = 1;
+}
+
+/*
  * Handles an accepted step (t0, u0) -> (t0 + H, u1): finds the earliest
  * crossing of the watched functions, if any, and acts on it.
  */
@@ -1176,10 +1348,23 @@ after_step(struct sim *s, int load_kink)
 	s->cache_next = 0;
 	if (p->q) {
 		snap_stick(s, s->u1);
+		snap_separation(s, s->u1);
 		s->vmax = fmax(s->vmax, fabs(s->u1[p->L.iv] * s->scale[p->L.iv]));
 	}
 	n = watch(s, p, s->t0, s->u0, f0, kind);
 	watch(s, p, s->t0 + s->H, s->u1, f1, kind);
+	if (s->msign) {
+		/*
+		 * The mode's side is its frozen sign, even where the switching
+		 * function is still zero to rounding on the other side (a step
+		 * that begins on a located crossing): it crosses when its sign
+		 * differs from the mode's.
+		 */
+		int k = 1 + s->sc.law->mode_kink;
+
+		if (!(f0[k] * s->msign > 0))
+			f0[k] = s->msign * DBL_MIN;
+	}
 	for (i = 0; i < n; i++)
 		if (candidate(s, kind[i], i, f0[i], f1[i]))
 			cand[ncand++] = i;
@@ -1254,13 +1439,88 @@ after_step(struct sim *s, int load_kink)
 			}
 		if (!any)
 			return fail(s, HB_ENUMERIC, "event location lost its bracket");
+		if (s->use_dense)
+			real_point(s, event, hi, &a, &b);
 		restep(s, a, ua);
 		watch(s, p, s->t0 + a, ua, fa, kb);
 		accept_at(s, b);
 		if (event)
 			return jump(s, LOCATE_BRENT, s->loc_iter, b - a, fa[0], fb[0]);
+		if (s->msign && crossed(FUN_KINK, f0[1 + s->sc.law->mode_kink],
+		                        fb[1 + s->sc.law->mode_kink])) {
+			/* the mode's switching function crossed: the next step is on the other side */
+			s->mforce = -s->msign;
+			s->mforce_t = s->t;
+		}
 		s->st.kinks += kink;
 		return push_sample(s, kink ? ARC_KINK : ARC_EXTREMUM);
+	}
+}
+
+/* The scaled state of an arc sample, in the layout L (as pack() for the canonical state). */
+static void
+pack_sample(const struct sim *s, const struct layout *L, const struct arc_sample *a, double *u)
+{
+	double y[MAXDIM];
+	int i;
+
+	if (L->ix >= 0)
+		y[L->ix] = a->x;
+	y[L->iv] = a->v;
+	if (L->ixc >= 0) {
+		y[L->ixc] = a->xc;
+		for (i = 0; i < s->sc.law->n_z; i++)
+			y[L->iz + i] = a->z[i];
+		y[L->iW] = a->W;
+		y[L->iJc] = a->JFc;
+		y[L->iJe] = a->JFe;
+	}
+	y[L->iEe] = a->Ee;
+	if (L->ixm >= 0) {
+		y[L->ixm] = a->xm;
+		y[L->ivm] = a->vm;
+	}
+	for (i = 0; i < L->dim; i++)
+		u[i] = y[i] * s->iscale[i];
+}
+
+/*
+ * A flow interval continued after sim_seek (or sim_set_scene) from inside
+ * it: what a run that had not stopped would carry on with.  The scales are
+ * those of the interval's first sample (a fresh run took them there), and
+ * the noise filter's largest values (gmax, vmax) are those of the samples
+ * kept, so that round-off-level kink crossings are ignored as they were
+ * before the seek (without them every step "locates" one).
+ */
+static void
+resume_interval(struct sim *s)
+{
+	const struct layout *L = &s->cur->L;
+	const struct arc_sample *f = arc_at(s->arc, s->resume_first);
+	double t = s->t, x = s->x, v = s->v, xm = s->xm, vm = s->vm;
+	double fv[MAXFUN], u[MAXDIM];
+	int kind[MAXFUN], n, i;
+	size_t k;
+
+	s->t = f->t;
+	s->x = f->x;
+	s->v = f->v;
+	s->xm = f->xm;
+	s->vm = f->vm;
+	scales(s, L, s->q);
+	s->t = t;
+	s->x = x;
+	s->v = v;
+	s->xm = xm;
+	s->vm = vm;
+	for (k = s->resume_first; k <= s->resume_last; k++) {
+		const struct arc_sample *a = arc_at(s->arc, k);
+
+		pack_sample(s, L, a, u);
+		n = watch(s, s->cur, a->t, u, fv, kind);
+		for (i = 0; i < n; i++)
+			s->gmax[i] = fmax(s->gmax[i], fabs(fv[i]));
+		s->vmax = fmax(s->vmax, fabs(a->v));
 	}
 }
 
@@ -1272,18 +1532,24 @@ setup_interval(struct sim *s)
 
 	s->setup = 0;
 	s->ntiny = 0;
+	s->msign = s->mforce = 0;
 	memset(s->gmax, 0, sizeof s->gmax);
 	s->vmax = fabs(s->v);
 	s->closed = !s->q && (sc->run.reduce & REDUCE_FLIGHT) &&
 	            scene_Fer_constant(sc, s->t, sc->run.T) &&
 	            (sc->d.system == SCENE_REDUCED || (sc->run.reduce & REDUCE_COM));
-	if (s->closed)
+	if (s->closed) {
+		s->resume = 0;
 		return 0;
+	}
 	s->stiff_row = 0;
 	if (s->built[s->q] != s->stepper[s->q] && phase_alloc(s, &s->ph[s->q], s->q))
 		return fail(s, HB_ENOMEM, "out of memory for the integrator");
 	s->cur = &s->ph[s->q];
-	scales(s, &s->cur->L, s->q);
+	if (s->resume)
+		resume_interval(s);
+	else
+		scales(s, &s->cur->L, s->q);
 	pack(s, &s->cur->L, s->u);
 	gsl_odeiv2_driver_reset(s->cur->d);
 	{
@@ -1291,19 +1557,43 @@ setup_interval(struct sim *s)
 		                 : s->scale[s->cur->L.ix] / s->scale[s->cur->L.iv];
 		s->Tc = Tc;
 		s->h = fmin(1e-2 * Tc, sc->run.T - s->t);
+		if (s->resume && s->resume_h > 0)
+			s->h = fmin(s->resume_h, sc->run.T - s->t);
 		if (!(s->h > 0))
 			s->h = 1e-9;
 	}
+	s->resume = 0;
 	return 0;
 }
 
 /*
+ * The radius of an explicit stepper's region of absolute stability along
+ * the negative real axis (h |lambda| at its boundary), roughly the same
+ * along the rays a damped oscillation lies on: DOP853's 6.1 is Hairer's
+ * (the threshold of dop853.f's own stiffness test); rk8pd's 13-stage
+ * Prince-Dormand 8(7) about 5.3; rkf45 and rkck about 3.
+ */
+static double
+stability_radius(int stepper)
+{
+	switch (stepper) {
+	case STEPPER_DOP853: return 6.1;
+	case STEPPER_RK8PD: return 5.3;
+	default: return 3.0;
+	}
+}
+
+/* A check is a hit when h |lambda| is beyond this share of the stability radius. */
+#define STIFF_FRACTION 0.5
+
+/*
  * Stiffness of the contact flow after an accepted step of an explicit
- * stepper: h max(-Re lambda) over the eigenvalues of the Jacobian of the
- * dynamic components (the quadratures W, J_Fc, J_Fe, E_e add only zero
- * eigenvalues).  An explicit method's step is accurate long before it is
- * unstable, so h max(-Re lambda) > 1 means the stepper is held back by
- * stability: a stiff flow, where an implicit stepper takes far fewer steps.
+ * stepper: h |lambda| over the decaying eigenvalues (Re lambda <= 0) of the
+ * Jacobian of the dynamic components (the quadratures W, J_Fc, J_Fe, E_e
+ * add only zero eigenvalues).  An explicit method's step is accurate long
+ * before it is unstable, so h |lambda| beyond half the stepper's stability
+ * radius means the stepper is held back by stability: a stiff flow, real
+ * or oscillatory, where an implicit stepper takes far fewer steps.
  * Checked every 32nd step; eight hits in a row make the contact stiff, and
  * with run.stepper = auto the contacts go over to bsimp from then on.
  */
@@ -1342,12 +1632,22 @@ stiffness(struct sim *s)
 			gsl_matrix_set(s->Jdyn, (size_t)i, (size_t)k, J[idx[i] * L->dim + idx[k]]);
 	if (gsl_eigen_nonsymm(s->Jdyn, s->lambda, s->eig) != GSL_SUCCESS)
 		return 0;
-	for (i = 0; i < nd; i++)
-		rho = fmax(rho, -GSL_REAL(gsl_vector_complex_get(s->lambda, (size_t)i)));
+	/*
+	 * The modes that decay (Re lambda <= 0) limit an explicit step by
+	 * their modulus, not by their real part alone: an oscillatory mode
+	 * -83 +- 1674i (study 1's sinking) holds the step at h |lambda| near the
+	 * stability boundary although h max(-Re lambda) is 0.24.
+	 */
+	for (i = 0; i < nd; i++) {
+		gsl_complex l = gsl_vector_complex_get(s->lambda, (size_t)i);
+
+		if (GSL_REAL(l) <= 0.0)
+			rho = fmax(rho, gsl_complex_abs(l));
+	}
 	hr = s->H * rho;
 	s->st.stiff_checks++;
 	s->st.stiff_hrho = fmax(s->st.stiff_hrho, hr);
-	if (!(hr > 1.0)) {
+	if (!(hr > STIFF_FRACTION * stability_radius(s->stepper[1]))) {
 		s->stiff_row = 0;
 		return 0;
 	}
@@ -1365,6 +1665,42 @@ stiffness(struct sim *s)
 		gsl_odeiv2_driver_reset(s->cur->d);
 	}
 	return 0;
+}
+
+/*
+ * Kinks as modes: the sign of the law's |w| term (law_type.psi_mode) is
+ * frozen for the step that begins at the current state, so that the flow
+ * is smooth inside it; its value is the sign of the switching function
+ * there, or the side a crossing located at this instant went over to.
+ * When it changes, the stepper forgets its stored derivative (first same
+ * as last), which was of the other mode.
+ */
+static void
+set_mode(struct sim *s)
+{
+	const struct scene *sc = &s->sc;
+	const struct phase *p = s->cur;
+	int m = 0;
+
+	if (p->q && sc->law->psi_mode && sc->run.kinks) {
+		double y[MAXDIM], g[LAW_MAX_KINKS], z[LAW_MAX_Z] = { 0 };
+		const struct layout *L = &p->L;
+		int i;
+
+		if (s->mforce && s->mforce_t == s->t) {
+			m = s->mforce;
+		} else {
+			unscale(p, s->u0, y);
+			for (i = 0; i < sc->law->n_z; i++)
+				z[i] = y[L->iz + i];
+			sc->law->kinks(sc->par, sc->ext, y[L->ixc], z, y[L->iv], g);
+			m = g[sc->law->mode_kink] > 0 ? 1 : (g[sc->law->mode_kink] < 0 ? -1 : 0);
+		}
+	}
+	if (m != s->msign) {
+		s->msign = m;
+		gsl_odeiv2_driver_reset(s->cur->d);
+	}
 }
 
 /* One accepted step of the numeric phase, with what follows from it. */
@@ -1397,6 +1733,8 @@ numeric_step(struct sim *s)
 	}
 	memcpy(s->u0, s->u, sizeof s->u);
 	s->t0 = t;
+	s->hug = hugging(s, s->u0);
+	set_mode(s);
 retry:
 	failed0 = p->d->e->failed_steps;
 	rc = gsl_odeiv2_evolve_apply(p->d->e, p->d->c, p->d->s, &p->sys, &t, t1, &s->h, s->u);
@@ -1424,6 +1762,12 @@ retry:
 	}
 	s->st.steps++;
 	s->H = t - s->t0;
+	{
+		double dt0, dh;
+
+		/* on Phi = 0 to the noise, the interpolant's error would exceed the noise: re-step */
+		s->use_dense = !s->hug && hb_dop853_last(p->d->s, &dt0, &dh) == 0 && dt0 == s->t0;
+	}
 	if (s->H <= fmax(4.0 * DBL_EPSILON * fabs(t), 1e-13 * s->Tc)) {
 		if (++s->ntiny > MAX_TINY)
 			return fail(s, HB_ENUMERIC, "step size underflow: the error cannot be controlled");
@@ -1468,9 +1812,10 @@ reset_state(struct sim *s)
 	s->xe = s->te = s->vi = 0.0;
 	s->n_instant = 0;
 	s->setup = 1;
+	s->resume = 0;
 	s->ncol = 0;
 	s->ncol_total = 0;
-	s->stepper[1] = sc->run.stepper == STEPPER_AUTO ? STEPPER_RK8PD : sc->run.stepper;
+	s->stepper[1] = sc->run.stepper == STEPPER_AUTO ? STEPPER_DOP853 : sc->run.stepper;
 	arc_truncate(s->arc, 0);
 	{
 		struct sim_stats keep = s->st;
@@ -1488,7 +1833,7 @@ build(struct sim *s, char *msg, size_t n)
 	int q;
 
 	for (q = 0; q < 2; q++)
-		s->stepper[q] = s->sc.run.stepper == STEPPER_AUTO ? STEPPER_RK8PD : s->sc.run.stepper;
+		s->stepper[q] = s->sc.run.stepper == STEPPER_AUTO ? STEPPER_DOP853 : s->sc.run.stepper;
 	for (q = 0; q < 2; q++)
 		if (phase_alloc(s, &s->ph[q], q))
 			return status_set(msg, n, HB_ENOMEM, "out of memory for the integrator");
@@ -1570,7 +1915,7 @@ sim_free(struct sim *s)
 int
 sim_advance(struct sim *s, long max_steps, double max_seconds)
 {
-	double start = now_seconds();
+	double start = now_seconds(CLOCK_MONOTONIC), cpu0 = now_seconds(CLOCK_PROCESS_CPUTIME_ID);
 	long work0 = s->work;
 	int rc = 0;
 
@@ -1580,7 +1925,7 @@ sim_advance(struct sim *s, long max_steps, double max_seconds)
 		if (max_steps > 0 && s->work - work0 >= max_steps)
 			break;
 		if (max_seconds > 0 && ((s->work - work0) & 7) == 0 &&
-		    now_seconds() - start >= max_seconds)
+		    now_seconds(CLOCK_MONOTONIC) - start >= max_seconds)
 			break;
 		if (s->setup) {
 			if ((rc = setup_interval(s)))
@@ -1594,7 +1939,8 @@ sim_advance(struct sim *s, long max_steps, double max_seconds)
 		if (rc)
 			break;
 	}
-	s->st.seconds += now_seconds() - start;
+	s->st.seconds += now_seconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0;
+	s->st.wall += now_seconds(CLOCK_MONOTONIC) - start;
 	return rc;
 }
 
@@ -1691,9 +2037,16 @@ sim_seek(struct sim *s, size_t i)
 
 	if (i >= arc_len(s->arc))
 		return HB_EINVAL;
+	s->resume_h = 0.0;
+	if (i + 1 < arc_len(s->arc) && arc_at(s->arc, i + 1)->j == arc_at(s->arc, i)->j)
+		s->resume_h = arc_at(s->arc, i + 1)->t - arc_at(s->arc, i)->t;
 	arc_truncate(s->arc, i + 1);
 	a = arc_at(s->arc, i);
 	iv = arc_interval_at(s->arc, arc_interval_of(s->arc, i));
+	/* continuing inside the interval (not at its pre-jump end) */
+	s->resume = a->kind != ARC_PRE_JUMP;
+	s->resume_first = iv->first;
+	s->resume_last = i;
 	s->t = a->t;
 	s->j = a->j;
 	s->q = a->q;
@@ -1758,10 +2111,30 @@ sim_set_scene(struct sim *s, const struct scene *sc, int *restarted, char *msg, 
 	restart = nsc.d.system != s->sc.d.system ||
 	          memcmp(&nsc.init, &s->sc.init, sizeof nsc.init) != 0 ||
 	          (s->q && (nsc.law != s->sc.law || nsc.ext != s->sc.ext || !same_bodies(&nsc, &s->sc)));
-	s->sc = nsc;
+	{
+		/* build for the new scene aside: on failure the simulator is exactly as it was */
+		struct scene old = s->sc;
+		struct phase oldph[2] = { s->ph[0], s->ph[1] };
+		int oldstepper[2] = { s->stepper[0], s->stepper[1] };
+		int oldbuilt[2] = { s->built[0], s->built[1] };
+		struct sim_stats oldst = s->st;
+
+		s->sc = nsc;
+		memset(s->ph, 0, sizeof s->ph);
+		if (build(s, msg, n) != 0) {
+			phase_free(&s->ph[0]);
+			phase_free(&s->ph[1]);
+			s->sc = old;
+			memcpy(s->ph, oldph, sizeof s->ph);
+			memcpy(s->stepper, oldstepper, sizeof s->stepper);
+			memcpy(s->built, oldbuilt, sizeof s->built);
+			s->st = oldst;
+			return HB_ENOMEM;
+		}
+		phase_free(&oldph[0]);
+		phase_free(&oldph[1]);
+	}
 	arc_set_max(s->arc, (size_t)nsc.run.max_samples);
-	if (build(s, msg, n) != 0)
-		return HB_ENOMEM;
 	if (restart) {
 		reset_state(s);
 		if (restarted)

@@ -85,6 +85,7 @@ while IFS= read -r line; do
 		why="the message lacks '$frag'"
 	elif [ "$want" = 2 ] && ! grep -a -q -i -e accepted -e expected -e known -e "Try 'hybounce --help'" \
 	    -e 'No such file' -e 'Permission denied' -e 'Not a directory' -e 'File name too long' \
+	    -e 'No space left on device' -e 'e\.g\.' \
 	    -e "nor .* is in " "$E"; then
 		why="the refusal does not say what is accepted: $(head -c 200 "$E")"
 	elif [ "$want" != 0 ] && [ "$before" != "$after" ]; then

@@ -1,9 +1,10 @@
 #!/bin/sh
 # A kill at any instant of an export leaves every target either its complete
-# old version or its complete new version; a mixed set shows as different
-# modification times (every file of one export carries the export's
-# identifier as its modification time); what a killed export leaves behind
-# is removed by the next export.  strace (Debian's strace package) kills
+# old version or its complete new version; a mixed set shows, both as
+# different modification times (every file of one export carries the
+# export's identifier as its modification time) and as CSV files whose
+# cksum(1) differs from what the preset's export line says; what a killed
+# export leaves behind is removed by the next export.  strace (Debian's strace package) kills
 # the export at its Nth rename, write, link, unlink and fsync, for every N
 # until the export runs through; and a failed rename is undone.
 set -u
@@ -37,6 +38,13 @@ mkdir "$W" "$T/old" "$T/new"
 scene() { grep -v '^; export ' "$1"; }
 scene "$T/new/arc.preset" >"$T/new.scene"
 
+# cksum_says FILE: 0 when the cksum the preset's export line gives for FILE
+# is what cksum(1) computes.
+cksum_says() {
+	want=$(tail -n 1 "$W/arc.preset" | sed -n "s/.* $1 (cksum \([0-9]*\) \([0-9]*\)).*/\1 \2/p")
+	[ -n "$want" ] && [ "$want" = "$(cksum <"$W/$1" | sed 's/ *-$//')" ]
+}
+
 # version FILE: old, new or damaged.
 version() {
 	f=$1
@@ -45,7 +53,7 @@ version() {
 	*.preset)
 		# complete: the scene of the new run and a whole export line
 		if scene "$W/$f" | cmp -s - "$T/new.scene" &&
-		    tail -n 1 "$W/$f" | grep -q '^; export .*modification time)$'; then
+		    tail -n 1 "$W/$f" | grep -q '^; export .*modification time$'; then
 			echo new; return
 		fi ;;
 	*) if cmp -s "$W/$f" "$T/new/$f"; then echo new; return; fi ;;
@@ -53,7 +61,7 @@ version() {
 	echo damaged
 }
 
-trials=0 killed=0 damaged=0 hidden=0 mixed=0
+trials=0 killed=0 damaged=0 hidden=0 unseen=0 mixed=0
 for call in rename write link unlink fsync; do
 	n=1
 	while [ "$n" -lt 400 ]; do
@@ -83,6 +91,15 @@ for call in rename write link unlink fsync; do
 				hidden=$((hidden + 1))
 				echo "# $call #$n: mixed set ($*) with one modification time"
 			fi
+			if cksum_says arc.csv && cksum_says coll.csv; then
+				unseen=$((unseen + 1))
+				echo "# $call #$n: mixed set ($*) whose preset's cksums match"
+			fi
+		fi
+		if [ "$*" = "new new new" ] || [ "$*" = "old old old" ]; then
+			if ! cksum_says arc.csv || ! cksum_says coll.csv; then
+				notok "$call #$n: a whole set ($1) whose preset's cksums do not match"
+			fi
 		fi
 		# The next export removes what the killed one left.
 		(cd "$W" && "$BIN" -b steel-on-bitumen -q $NEW -t arc.csv -c coll.csv >/dev/null 2>&1)
@@ -106,6 +123,11 @@ if [ "$hidden" -eq 0 ]; then
 	ok "every mixed set shows as different modification times ($mixed mixed, 0 undetectable)"
 else
 	notok "every mixed set shows as different modification times ($hidden of $mixed not)"
+fi
+if [ "$unseen" -eq 0 ] && [ "$mixed" -gt 0 ]; then
+	ok "every mixed set shows in the preset's cksums ($mixed mixed, 0 undetectable)"
+else
+	notok "every mixed set shows in the preset's cksums ($unseen of $mixed not)"
 fi
 
 # A rename that fails: the renames made are undone, the old set stays,

@@ -165,10 +165,10 @@ if wait_for b 'parameters \(Enter edits' 30 && select_param b run.stepper; then
 	keys b +
 	if wait_for b 'run\.stepper = rkf45' 30 && screen b | grep -Eq '^ +stepper +rkf45'; then
 		keys b - -
-		if wait_for b 'run\.stepper = auto' 30 && screen b | grep -Eq '^ +stepper +auto'; then
-			ok "+ and - step run.stepper through its choices (rk8pd -> rkf45 -> rk8pd -> auto)"
+		if wait_for b 'run\.stepper = dop853' 30 && screen b | grep -Eq '^ +stepper +dop853'; then
+			ok "+ and - step run.stepper through its choices (rk8pd -> rkf45 -> rk8pd -> dop853)"
 		else
-			notok "- steps run.stepper back, cycling to auto" b
+			notok "- steps run.stepper back, cycling to dop853" b
 		fi
 	else
 		notok "+ steps run.stepper to the next choice" b

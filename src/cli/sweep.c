@@ -1,0 +1,510 @@
+/*
+ * sweep.c - the "hybounce sweep" command: a thin shell over the sweep
+ * engine (src/core/sweep*.c).  It parses the options, loads the preset and
+ * the --set overrides, builds the axes, refuses bad input before anything
+ * runs (exit 2), and shows progress on stderr; the engine does the rest.
+ *
+ *     hybounce sweep PRESET [--set KEY=VALUE]... [--vary KEY=SPEC]...
+ *                    [--jobs N] [--shard K/N] [--quiet] --out DIR
+ *     hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]
+ *                    [--sshlogin HOSTS]
+ *     hybounce sweep --merge DIR
+ *
+ * Exit status: 0 the sweep is complete (points that failed numerically are
+ * rows with their message); 1 it could not be completed (I/O, memory, an
+ * incomplete merge); 2 bad input.
+ */
+#include <errno.h>
+#include <signal.h>
+#include <getopt.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "hybounce/preset.h"
+#include "hybounce/scene.h"
+#include "hybounce/status.h"
+#include "hybounce/sweep.h"
+
+#include "sweep_cli.h"
+
+#define PROG "hybounce sweep"
+
+/* Set by SIGINT, SIGTERM and SIGHUP: the sweep stops after the points in hand. */
+static volatile sig_atomic_t stop_signal;
+
+static void
+on_stop_signal(int sig)
+{
+	stop_signal = sig;
+}
+
+enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS };
+
+static const struct option sweep_options_long[] = {
+	{ "set",      required_argument, NULL, 's' },
+	{ "vary",     required_argument, NULL, 'v' },
+	{ "jobs",     required_argument, NULL, 'j' },
+	{ "shard",    required_argument, NULL, 'k' },
+	{ "out",      required_argument, NULL, 'o' },
+	{ "quiet",    no_argument,       NULL, 'q' },
+	{ "emit",     required_argument, NULL, OPT_EMIT },
+	{ "shards",   required_argument, NULL, OPT_SHARDS },
+	{ "sshlogin", required_argument, NULL, OPT_SSHLOGIN },
+	{ "merge",    required_argument, NULL, OPT_MERGE },
+	{ "progress", required_argument, NULL, OPT_PROGRESS },
+	{ "help",     no_argument,       NULL, 'h' },
+	{ NULL, 0, NULL, 0 },
+};
+
+static void
+sweep_usage(FILE *f)
+{
+	fprintf(f,
+"usage: hybounce sweep PRESET [--set KEY=VALUE]... --vary KEY=SPEC [--vary ...]\n"
+"                      [--jobs N] [--shard K/N] [--quiet] --out DIR\n"
+"       hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]\n"
+"                      [--sshlogin HOSTS]\n"
+"       hybounce sweep --merge DIR\n"
+"\n"
+"Runs the Cartesian product of the varied values (the last --vary varies\n"
+"fastest); every other value comes from PRESET and --set.\n"
+"\n"
+"  -v, --vary KEY=SPEC     an axis: FROM:TO:N (N values, ends included),\n"
+"                          FROM:TO:N:log (log spacing), or V1,V2,... (units as\n"
+"                          in --set: --vary initial.x0='10 um,40 um'); the\n"
+"                          preset's '; sweep: --vary' lines are axes too\n"
+"  -s, --set KEY=VALUE     override one value of the preset (repeatable)\n"
+"  -j, --jobs N            worker threads (default: the online processors)\n"
+"      --shard K/N         compute only shard K of N (points K, K+N, ...);\n"
+"                          then merge with --merge DIR\n"
+"  -o, --out DIR           the folder: runs.csv, collisions.csv, sweep.preset;\n"
+"                          run again with the same command to resume\n"
+"  -q, --quiet             no progress\n"
+"      --progress PCT      without a terminal, a progress line every PCT %%\n"
+"                          of the points (default 10)\n"
+"      --emit slurm        print a script that submits the shards as a Slurm\n"
+"                          job array and a dependent merge job (sh FILE)\n"
+"      --emit parallel     print a GNU parallel command line for the shards\n"
+"      --shards N          shards of --emit (default: the online processors)\n"
+"      --sshlogin HOSTS    (--emit parallel) hosts for parallel --sshlogin;\n"
+"                          DIR and the binary must be on a shared file system\n"
+"      --merge DIR         merge the shards' journals in DIR into runs.csv and\n"
+"                          collisions.csv\n"
+"  -h, --help              show this help\n"
+"\n"
+"Exit status: 0 complete (numerically failed points are rows with their\n"
+"message), 1 could not complete, 2 bad input, 128+N stopped by signal N\n"
+"(SIGINT, SIGTERM, SIGHUP: the points done are kept; run again to resume).\n"
+"See hybounce(1).\n");
+}
+
+static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+#include <stdarg.h>
+static int
+bad(const char *fmt, ...)
+{
+	va_list ap;
+
+	fprintf(stderr, PROG ": ");
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "\nTry 'hybounce sweep --help'.\n");
+	return 2;
+}
+
+static int
+parse_long(const char *t, long lo, long hi, long *out)
+{
+	char *end;
+	long v;
+
+	errno = 0;
+	v = strtol(t, &end, 10);
+	if (end == t || *end != '\0' || errno != 0 || v < lo || v > hi)
+		return -1;
+	*out = v;
+	return 0;
+}
+
+static long
+online_cpus(void)
+{
+	long n = sysconf(_SC_NPROCESSORS_ONLN);
+
+	return n < 1 ? 1 : n;
+}
+
+/* ------------------------------------------------------------------ */
+/* Progress                                                            */
+
+struct progress {
+	int tty, quiet;
+	double step;       /* fraction between lines without a terminal */
+	double next;       /* next fraction to report */
+	double last_draw;  /* s, for the terminal bar */
+};
+
+static double
+mono(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void
+fmt_eta(double s, char *buf, size_t n)
+{
+	long t = (long)(s + 0.5);
+
+	if (s != s || s < 0 || s > 1e8)
+		snprintf(buf, n, "--:--");
+	else if (t >= 3600)
+		snprintf(buf, n, "%ld:%02ld:%02ld", t / 3600, t / 60 % 60, t % 60);
+	else
+		snprintf(buf, n, "%ld:%02ld", t / 60, t % 60);
+}
+
+static void
+on_progress(void *ctx, const struct sweep_progress *p)
+{
+	struct progress *g = ctx;
+	long computed = p->done - p->resumed;
+	double frac = p->total ? (double)p->done / (double)p->total : 1;
+	double rate = p->elapsed > 0 ? (double)computed / p->elapsed : 0;
+	double eta = rate > 0 ? (double)(p->total - p->done) / rate : -1;
+	char e[32];
+
+	if (g->quiet)
+		return;
+	if (computed == 0) {
+		if (p->resumed > 0)
+			fprintf(stderr, "sweep: resuming: %ld of %ld points already done\n",
+			        p->resumed, p->total);
+		return;
+	}
+	fmt_eta(eta, e, sizeof e);
+	if (g->tty) {
+		double now = mono();
+		int w = 30, fill = (int)(frac * w);
+
+		if (p->done < p->total && now - g->last_draw < 0.1)
+			return;
+		g->last_draw = now;
+		fprintf(stderr, "\r[%.*s%*s] %ld/%ld %3.0f%%  %.1f points/s  ETA %s  failed %ld\033[K",
+		        fill, "##############################", w - fill, "", p->done,
+		        p->total, 100 * frac, rate, e, p->failed);
+		if (p->done == p->total)
+			fputc('\n', stderr);
+		return;
+	}
+	if (frac + 1e-12 < g->next && p->done < p->total)
+		return;
+	while (g->next <= frac + 1e-12)
+		g->next += g->step;
+	fprintf(stderr, "sweep: %ld/%ld points (%.0f%%), %.1f points/s, ETA %s, %ld failed\n",
+	        p->done, p->total, 100 * frac, rate, e, p->failed);
+}
+
+/* ------------------------------------------------------------------ */
+/* Input                                                               */
+
+static char *
+read_text(const char *path)
+{
+	FILE *f = fopen(path, "r");
+	char *buf = NULL;
+	size_t len = 0;
+	FILE *m;
+	int c;
+
+	if (f == NULL)
+		return NULL;
+	m = open_memstream(&buf, &len);
+	if (m == NULL) {
+		fclose(f);
+		return NULL;
+	}
+	while ((c = getc(f)) != EOF)
+		putc(c, m);
+	fclose(f);
+	if (fclose(m) != 0) {
+		free(buf);
+		return NULL;
+	}
+	return buf;
+}
+
+/* The preset, the --set values and the axes; NULL after printing why (exit 2). */
+static struct sweep *
+build(const char *preset, const char *const *sets, int nsets,
+      const char *const *varies, int nvaries)
+{
+	char path[4096], msg[1024];
+	struct scene sc;
+	struct sweep *sw;
+	char *text;
+
+	msg[0] = '\0';
+	if (preset_resolve(preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": preset '%s': %s\n", preset, msg[0] ? msg : "not found");
+		return NULL;
+	}
+	msg[0] = '\0';
+	if (preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": %s\n", msg[0] ? msg : path);
+		return NULL;
+	}
+	for (int i = 0; i < nsets; i++) {
+		const char *eq = strchr(sets[i], '=');
+		char key[128];
+
+		if (eq == NULL || eq == sets[i] || (size_t)(eq - sets[i]) >= sizeof key) {
+			fprintf(stderr, PROG ": --set '%s': expected KEY=VALUE, e.g. "
+			        "--set law.c=0.4\n", sets[i]);
+			return NULL;
+		}
+		snprintf(key, sizeof key, "%.*s", (int)(eq - sets[i]), sets[i]);
+		msg[0] = '\0';
+		if (scene_set(&sc, key, eq + 1, msg, sizeof msg) != HB_OK) {
+			fprintf(stderr, PROG ": --set %s: %s\n", sets[i], msg);
+			return NULL;
+		}
+	}
+	msg[0] = '\0';
+	if (scene_validate(&sc, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": %s: %s\n", path, msg);
+		return NULL;
+	}
+	sw = sweep_new(&sc, msg, sizeof msg);
+	if (sw == NULL) {
+		fprintf(stderr, PROG ": %s\n", msg);
+		return NULL;
+	}
+	text = read_text(path);
+	if (text == NULL) {
+		fprintf(stderr, PROG ": %s: %s\n", path, strerror(errno));
+		sweep_free(sw);
+		return NULL;
+	}
+	msg[0] = '\0';
+	if (sweep_vary_from_preset(sw, text, path, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": %s\n", msg);
+		free(text);
+		sweep_free(sw);
+		return NULL;
+	}
+	free(text);
+	for (int i = 0; i < nvaries; i++) {
+		msg[0] = '\0';
+		if (sweep_vary(sw, varies[i], msg, sizeof msg) != HB_OK) {
+			fprintf(stderr, PROG ": %s\n", msg);
+			sweep_free(sw);
+			return NULL;
+		}
+	}
+	if (sweep_npoints(sw) == 0) {
+		bad("nothing to vary: expected --vary KEY=SPEC (e.g. --vary "
+		    "law.c=1e8:1e10:20:log), or a preset with '; sweep: --vary' lines");
+		sweep_free(sw);
+		return NULL;
+	}
+	msg[0] = '\0';
+	if (sweep_check(sw, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": %s\n", msg);
+		sweep_free(sw);
+		return NULL;
+	}
+	return sw;
+}
+
+int
+sweep_main(int argc, char **argv)
+{
+	const char **sets, **varies;
+	int nsets = 0, nvaries = 0, quiet = 0, c, status = 2;
+	long jobs = 0, shard_k = 0, shard_n = 1, shards = 0, pct = 10;
+	const char *out = NULL, *emit = NULL, *sshlogin = NULL, *merge = NULL;
+	struct sweep *sw = NULL;
+	char msg[2048];
+
+	sets = calloc((size_t)argc + 1, sizeof *sets);
+	varies = calloc((size_t)argc + 1, sizeof *varies);
+	if (sets == NULL || varies == NULL) {
+		free(sets);
+		free(varies);
+		fprintf(stderr, PROG ": out of memory\n");
+		return 1;
+	}
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "s:v:j:o:qh", sweep_options_long, NULL)) != -1) {
+		switch (c) {
+		case 's': sets[nsets++] = optarg; break;
+		case 'v': varies[nvaries++] = optarg; break;
+		case 'j':
+			if (parse_long(optarg, 1, 4096, &jobs) != 0) {
+				status = bad("--jobs '%s': accepted: an integer from 1 to 4096", optarg);
+				goto done;
+			}
+			break;
+		case 'k': {
+			const char *sl = strchr(optarg, '/');
+			char kk[32];
+
+			snprintf(kk, sizeof kk, "%.*s", sl ? (int)(sl - optarg) : 0, optarg);
+			if (sl == NULL || parse_long(sl + 1, 1, 1000000, &shard_n) != 0 ||
+			    parse_long(kk, 0, shard_n - 1, &shard_k) != 0) {
+				status = bad("--shard '%s': expected K/N with 0 <= K < N, e.g. "
+				             "--shard 0/4", optarg);
+				goto done;
+			}
+			break;
+		}
+		case 'o': out = optarg; break;
+		case 'q': quiet = 1; break;
+		case OPT_EMIT:
+			if (strcmp(optarg, "slurm") != 0 && strcmp(optarg, "parallel") != 0) {
+				status = bad("--emit '%s': accepted: slurm, parallel", optarg);
+				goto done;
+			}
+			emit = optarg;
+			break;
+		case OPT_SHARDS:
+			if (parse_long(optarg, 1, 1000000, &shards) != 0) {
+				status = bad("--shards '%s': accepted: an integer from 1 to 1000000",
+				             optarg);
+				goto done;
+			}
+			break;
+		case OPT_SSHLOGIN: sshlogin = optarg; break;
+		case OPT_MERGE: merge = optarg; break;
+		case OPT_PROGRESS:
+			if (parse_long(optarg, 1, 100, &pct) != 0) {
+				status = bad("--progress '%s': accepted: a percentage from 1 to 100",
+				             optarg);
+				goto done;
+			}
+			break;
+		case 'h':
+			sweep_usage(stdout);
+			status = 0;
+			goto done;
+		default:
+			fprintf(stderr, "Try 'hybounce sweep --help'.\n");
+			goto done;
+		}
+	}
+
+	if (merge != NULL) {
+		if (optind < argc || nvaries || nsets || out || emit) {
+			status = bad("--merge DIR takes no preset and no other option");
+			goto done;
+		}
+		msg[0] = '\0';
+		if (sweep_merge(merge, msg, sizeof msg) != HB_OK) {
+			fprintf(stderr, PROG ": merge: %s\n", msg);
+			status = 1;
+			goto done;
+		}
+		if (!quiet)
+			fprintf(stderr, "wrote %s/runs.csv\nwrote %s/collisions.csv\n", merge, merge);
+		status = 0;
+		goto done;
+	}
+	if (optind >= argc) {
+		status = bad("no preset; expected hybounce sweep PRESET --vary KEY=SPEC "
+		             "--out DIR");
+		goto done;
+	}
+	if (argc - optind > 1) {
+		status = bad("more than one preset given ('%s' ...)", argv[optind + 1]);
+		goto done;
+	}
+	if (out == NULL) {
+		status = bad("no output folder; expected --out DIR");
+		goto done;
+	}
+	if (emit == NULL && (shards || sshlogin)) {
+		status = bad("%s is an option of --emit", shards ? "--shards" : "--sshlogin");
+		goto done;
+	}
+	if (emit != NULL && (shard_n > 1 || (sshlogin && strcmp(emit, "slurm") == 0))) {
+		status = bad("--emit %s: %s", emit, shard_n > 1 ? "the emitted jobs choose "
+		             "their shards; --shard goes without --emit"
+		             : "--sshlogin goes with --emit parallel");
+		goto done;
+	}
+	sw = build(argv[optind], sets, nsets, varies, nvaries);
+	if (sw == NULL)
+		goto done;      /* exit 2: build said why */
+
+	if (emit != NULL) {
+		if (shards == 0)
+			shards = online_cpus();
+		msg[0] = '\0';
+		status = sweep_emit(sw, out, emit, shards, sshlogin, msg, sizeof msg);
+		if (status != 0)
+			fprintf(stderr, PROG ": %s\n", msg);
+		goto done;
+	}
+
+	{
+		struct progress g = { 0 };
+		struct sweep_options o = { 0 };
+
+		g.tty = isatty(STDERR_FILENO);
+		g.quiet = quiet;
+		g.step = (double)pct / 100;
+		g.next = g.step;
+		o.dir = out;
+		o.jobs = (int)(jobs ? jobs : online_cpus());
+		o.shard_k = shard_k;
+		o.shard_n = shard_n;
+		o.progress = on_progress;
+		o.ctx = &g;
+		o.cancel = &stop_signal;
+		{
+			struct sigaction sa;
+
+			memset(&sa, 0, sizeof sa);
+			sa.sa_handler = on_stop_signal;
+			sigemptyset(&sa.sa_mask);
+			sigaction(SIGINT, &sa, NULL);
+			sigaction(SIGTERM, &sa, NULL);
+			sigaction(SIGHUP, &sa, NULL);
+		}
+		msg[0] = '\0';
+		status = sweep_run(sw, &o, msg, sizeof msg);
+		if (status == HB_EDONE) {
+			/* Interrupted: what was done is journaled; exit as the signal would. */
+			if (g.tty && !quiet)
+				fputc('\n', stderr);
+			fprintf(stderr, PROG ": %s\n", msg);
+			status = 128 + (int)stop_signal;
+		} else if (status == HB_EINVAL) {
+			fprintf(stderr, PROG ": %s\n", msg);
+			status = 2;
+		} else if (status != HB_OK) {
+			fprintf(stderr, PROG ": %s\n", msg);
+			status = 1;
+		} else if (!quiet) {
+			if (shard_n > 1)
+				fprintf(stderr, "sweep: shard %ld of %ld done in %s; merge the shards "
+				        "with: hybounce sweep --merge %s\n", shard_k, shard_n, out, out);
+			else
+				fprintf(stderr, "wrote %s/runs.csv\nwrote %s/collisions.csv\n", out, out);
+		}
+	}
+done:
+	sweep_free(sw);
+	free(sets);
+	free(varies);
+	return status;
+}

@@ -1,0 +1,642 @@
+/*
+ * sweep.c - the points of a sweep: axes from "KEY=SPEC", the scene of a
+ * point, the spec file, and one point run into its journal block (see
+ * sweep.h).  The threads, the journal and the merge are in sweep_run.c.
+ *
+ * Values.  Every axis value is kept as canonical text: the value read
+ * back from the preset writer after scene_set (a %.17g SI number, or a
+ * word such as a law name).  A point's scene applies exactly those texts,
+ * and runs.csv shows exactly those texts, so "--batch --set KEY=VALUE" with
+ * a row's values reproduces the point to the bit.
+ */
+#include <errno.h>
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "hybounce/arc.h"
+#include "hybounce/csv.h"
+#include "hybounce/preset.h"
+#include "hybounce/sim.h"
+#include "hybounce/status.h"
+#include "hybounce/sweep.h"
+#include "sweep_impl.h"
+
+#define SWEEP_MAX_POINTS 1000000000L
+#define SWEEP_MAX_AXES 16
+
+struct axis {
+	char key[48];
+	char spec[256];   /* as given, after '=' */
+	long n;
+	char **val;       /* n canonical texts */
+};
+
+struct sweep {
+	struct scene base;
+	/*
+	 * sim_new() switches GSL's process-wide error handler off: one global
+	 * written by every call.  The sweep's threads take this lock around it
+	 * (no static lock: the engine keeps no mutable static state).
+	 */
+	pthread_mutex_t *simnew;
+	int naxes;
+	struct axis ax[SWEEP_MAX_AXES];
+};
+
+struct sim *
+sweep_sim_new(const struct sweep *sw, const struct scene *sc, char *msg, size_t n)
+{
+	struct sim *s;
+
+	pthread_mutex_lock(sw->simnew);
+	s = sim_new(sc, msg, n);
+	pthread_mutex_unlock(sw->simnew);
+	return s;
+}
+
+static void
+axis_free(struct axis *a)
+{
+	for (long i = 0; a->val != NULL && i < a->n; i++)
+		free(a->val[i]);
+	free(a->val);
+	memset(a, 0, sizeof *a);
+}
+
+struct sweep *
+sweep_new(const struct scene *base, char *msg, size_t n)
+{
+	struct sweep *sw = calloc(1, sizeof *sw);
+
+	if (sw == NULL || (sw->simnew = malloc(sizeof *sw->simnew)) == NULL) {
+		free(sw);
+		status_set(msg, n, HB_ENOMEM, "out of memory");
+		return NULL;
+	}
+	pthread_mutex_init(sw->simnew, NULL);
+	sw->base = *base;
+	return sw;
+}
+
+void
+sweep_free(struct sweep *sw)
+{
+	if (sw == NULL)
+		return;
+	for (int k = 0; k < sw->naxes; k++)
+		axis_free(&sw->ax[k]);
+	pthread_mutex_destroy(sw->simnew);
+	free(sw->simnew);
+	free(sw);
+}
+
+int
+sweep_naxes(const struct sweep *sw)
+{
+	return sw->naxes;
+}
+
+long
+sweep_npoints(const struct sweep *sw)
+{
+	long p = 1;
+
+	if (sw->naxes == 0)
+		return 0;
+	for (int k = 0; k < sw->naxes; k++)
+		p *= sw->ax[k].n;
+	return p;
+}
+
+/*
+ * The value of key in sc as text that scene_set() reads back to the same
+ * value: a number in SI as %.17g, or the word of a choice.  Returns 0, or
+ * -1 for a key that has no such value (unknown, free text, derived).
+ */
+static int
+key_value(const struct scene *sc, const char *key, char *buf, size_t n)
+{
+	struct scene_keyinfo ki;
+
+	if (scene_get(sc, key, &ki, NULL) != HB_OK || ki.readonly)
+		return -1;
+	switch (ki.kind) {
+	case SCENE_KEY_NUMBER:
+	case SCENE_KEY_WHOLE:
+		if (isnan(ki.number))
+			return -1;
+		snprintf(buf, n, "%.17g", ki.number);
+		return 0;
+	case SCENE_KEY_CHOICE:
+		if (ki.choice < 0 || ki.choice >= ki.nchoices || strlen(ki.choices[ki.choice]) >= n)
+			return -1;
+		snprintf(buf, n, "%s", ki.choices[ki.choice]);
+		return 0;
+	default:
+		return -1;
+	}
+}
+
+/* The scene on which axis k's values are checked: base + earlier axes' first values. */
+static void
+check_scene(const struct sweep *sw, int k, struct scene *sc)
+{
+	char m[256];
+
+	*sc = sw->base;
+	for (int i = 0; i < k; i++)
+		(void)scene_set(sc, sw->ax[i].key, sw->ax[i].val[0], m, sizeof m);
+}
+
+/* Applies text to key on a copy of sc and reads the canonical value back. */
+static int
+canonical(const struct scene *sc, const char *key, const char *text, char *out, size_t on,
+          char *msg, size_t n)
+{
+	struct scene t = *sc;
+	char m[512];
+
+	m[0] = '\0';
+	if (scene_set(&t, key, text, m, sizeof m) != HB_OK)
+		return status_set(msg, n, HB_EINVAL, "--vary %s: value '%s': %s", key, text,
+		                  m[0] ? m : "rejected");
+	if (key_value(&t, key, out, on) != 0)
+		return status_set(msg, n, HB_EINVAL, "--vary %s: this key cannot be varied "
+		                  "(it is not a typed value of the scene)", key);
+	return HB_OK;
+}
+
+static char *
+trimmed(const char *a, const char *b)
+{
+	char *s;
+
+	while (a < b && (*a == ' ' || *a == '\t'))
+		a++;
+	while (b > a && (b[-1] == ' ' || b[-1] == '\t'))
+		b--;
+	s = malloc((size_t)(b - a) + 1);
+	if (s != NULL) {
+		memcpy(s, a, (size_t)(b - a));
+		s[b - a] = '\0';
+	}
+	return s;
+}
+
+static int
+parse_count(const char *t, long *out)
+{
+	char *end;
+	long v;
+
+	errno = 0;
+	v = strtol(t, &end, 10);
+	if (end == t || *end != '\0' || errno != 0 || v < 1 || v > SWEEP_MAX_POINTS)
+		return -1;
+	*out = v;
+	return 0;
+}
+
+#define RANGE_HELP "expected KEY=FROM:TO:N, KEY=FROM:TO:N:log or KEY=V1,V2,... " \
+	"(e.g. --vary law.c=1e8:1e10:50:log, --vary initial.x0='10 um,40 um')"
+
+/* A range FROM:TO:N[:log] into a->val. */
+static int
+parse_range(struct axis *a, const struct scene *sc, char *msg, size_t n)
+{
+	char *part[5] = { 0 }, num[64];
+	const char *p = a->spec, *c;
+	int np = 0, rc = HB_OK, lg = 0;
+	double from, to;
+	char *end;
+
+	while (np < 5) {
+		c = strchr(p, ':');
+		part[np++] = trimmed(p, c ? c : p + strlen(p));
+		if (part[np - 1] == NULL) {
+			rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+			goto out;
+		}
+		if (c == NULL)
+			break;
+		p = c + 1;
+	}
+	if (np < 3 || np > 4 || (np == 4 && strcmp(part[3], "log") != 0 &&
+	    strcmp(part[3], "lin") != 0)) {
+		rc = status_set(msg, n, HB_EINVAL, "--vary %s=%s: " RANGE_HELP, a->key, a->spec);
+		goto out;
+	}
+	lg = np == 4 && strcmp(part[3], "log") == 0;
+	if (parse_count(part[2], &a->n) != 0) {
+		rc = status_set(msg, n, HB_EINVAL, "--vary %s=%s: N '%s' is not a count; "
+		                "accepted: an integer from 1 to %ld", a->key, a->spec, part[2],
+		                SWEEP_MAX_POINTS);
+		goto out;
+	}
+	if ((rc = canonical(sc, a->key, part[0], num, sizeof num, msg, n)) != HB_OK)
+		goto out;
+	from = strtod(num, &end);
+	if (*end != '\0') {
+		rc = status_set(msg, n, HB_EINVAL, "--vary %s=%s: a range needs a numeric key; "
+		                "accepted for %s: a list V1,V2,...", a->key, a->spec, a->key);
+		goto out;
+	}
+	if ((rc = canonical(sc, a->key, part[1], num, sizeof num, msg, n)) != HB_OK)
+		goto out;
+	to = strtod(num, &end);
+	if (!isfinite(from) || !isfinite(to)) {
+		rc = status_set(msg, n, HB_EINVAL, "--vary %s=%s: the ends of a range must be "
+		                "finite", a->key, a->spec);
+		goto out;
+	}
+	if (lg && (from == 0 || to == 0 || (from < 0) != (to < 0))) {
+		rc = status_set(msg, n, HB_EINVAL, "--vary %s=%s: a log range needs FROM and TO "
+		                "of the same sign, not 0", a->key, a->spec);
+		goto out;
+	}
+	a->val = calloc((size_t)a->n, sizeof *a->val);
+	if (a->val == NULL) {
+		rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto out;
+	}
+	for (long i = 0; i < a->n; i++) {
+		double v, f = a->n > 1 ? (double)i / (double)(a->n - 1) : 0;
+		char t[64];
+
+		if (i == 0)
+			v = from;
+		else if (i == a->n - 1)
+			v = to;
+		else if (lg)
+			v = copysign(exp(log(fabs(from)) + (log(fabs(to)) - log(fabs(from))) * f), from);
+		else
+			v = from + (to - from) * f;
+		snprintf(t, sizeof t, "%.17g", v);
+		if ((rc = canonical(sc, a->key, t, num, sizeof num, msg, n)) != HB_OK)
+			goto out;
+		if ((a->val[i] = strdup(num)) == NULL) {
+			rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+			goto out;
+		}
+	}
+out:
+	for (int i = 0; i < 5; i++)
+		free(part[i]);
+	return rc;
+}
+
+/* A list V1,V2,... into a->val. */
+static int
+parse_list(struct axis *a, const struct scene *sc, char *msg, size_t n)
+{
+	const char *p = a->spec, *c;
+	long cnt = 1;
+	char num[256];
+
+	for (c = p; *c; c++)
+		cnt += *c == ',';
+	a->val = calloc((size_t)cnt, sizeof *a->val);
+	if (a->val == NULL)
+		return status_set(msg, n, HB_ENOMEM, "out of memory");
+	for (a->n = 0; a->n < cnt; a->n++) {
+		char *t;
+		int rc;
+
+		c = strchr(p, ',');
+		t = trimmed(p, c ? c : p + strlen(p));
+		if (t == NULL)
+			return status_set(msg, n, HB_ENOMEM, "out of memory");
+		if (t[0] == '\0') {
+			free(t);
+			return status_set(msg, n, HB_EINVAL, "--vary %s=%s: empty value in the "
+			                  "list; " RANGE_HELP, a->key, a->spec);
+		}
+		rc = canonical(sc, a->key, t, num, sizeof num, msg, n);
+		free(t);
+		if (rc != HB_OK)
+			return rc;
+		if ((a->val[a->n] = strdup(num)) == NULL)
+			return status_set(msg, n, HB_ENOMEM, "out of memory");
+		p = c ? c + 1 : p;
+	}
+	return HB_OK;
+}
+
+int
+sweep_vary(struct sweep *sw, const char *arg, char *msg, size_t n)
+{
+	const char *eq = strchr(arg, '=');
+	struct axis a;
+	struct scene sc;
+	char *key;
+	int k, rc;
+	long total;
+
+	memset(&a, 0, sizeof a);
+	if (eq == NULL)
+		return status_set(msg, n, HB_EINVAL, "--vary '%s': " RANGE_HELP, arg);
+	key = trimmed(arg, eq);
+	if (key == NULL)
+		return status_set(msg, n, HB_ENOMEM, "out of memory");
+	if (key[0] == '\0' || strlen(key) >= sizeof a.key) {
+		free(key);
+		return status_set(msg, n, HB_EINVAL, "--vary '%s': " RANGE_HELP, arg);
+	}
+	strcpy(a.key, key);
+	free(key);
+	if (strlen(eq + 1) >= sizeof a.spec)
+		return status_set(msg, n, HB_EINVAL, "--vary %s: value too long", a.key);
+	snprintf(a.spec, sizeof a.spec, "%s", eq + 1);
+	for (k = 0; k < sw->naxes; k++)
+		if (strcmp(sw->ax[k].key, a.key) == 0)
+			break;
+	if (k == sw->naxes && sw->naxes == SWEEP_MAX_AXES)
+		return status_set(msg, n, HB_EINVAL, "--vary %s: too many axes; accepted: at "
+		                  "most %d", a.key, SWEEP_MAX_AXES);
+	check_scene(sw, k, &sc);
+	if (strchr(a.spec, ':') != NULL)
+		rc = parse_range(&a, &sc, msg, n);
+	else
+		rc = parse_list(&a, &sc, msg, n);
+	if (rc != HB_OK) {
+		axis_free(&a);
+		return rc;
+	}
+	total = a.n;
+	for (int i = 0; i < sw->naxes; i++)
+		if (i != k) {
+			if (total > SWEEP_MAX_POINTS / sw->ax[i].n) {
+				axis_free(&a);
+				return status_set(msg, n, HB_EINVAL, "--vary %s: the sweep would have "
+				                  "more than %ld points", a.key, SWEEP_MAX_POINTS);
+			}
+			total *= sw->ax[i].n;
+		}
+	if (k < sw->naxes)
+		axis_free(&sw->ax[k]);
+	else
+		sw->naxes++;
+	sw->ax[k] = a;
+	return HB_OK;
+}
+
+int
+sweep_vary_from_preset(struct sweep *sw, const char *text, const char *name,
+                       char *msg, size_t n)
+{
+	const char *p = text;
+	int line = 0;
+	static const char tag[] = "; sweep: --vary ";
+
+	while (*p) {
+		const char *end = strchr(p, '\n');
+		size_t len = end ? (size_t)(end - p) : strlen(p);
+
+		line++;
+		if (len > strlen(tag) && strncmp(p, tag, strlen(tag)) == 0) {
+			char arg[512], m[512];
+
+			snprintf(arg, sizeof arg, "%.*s", (int)(len - strlen(tag)), p + strlen(tag));
+			m[0] = '\0';
+			if (sweep_vary(sw, arg, m, sizeof m) != HB_OK)
+				return status_set(msg, n, HB_EINVAL, "%s:%d: %s", name, line, m);
+		}
+		p = end ? end + 1 : p + len;
+	}
+	return HB_OK;
+}
+
+/* Index of axis k at point id (row-major, the last axis fastest). */
+static long
+axis_index(const struct sweep *sw, long id, int k)
+{
+	for (int i = sw->naxes - 1; i > k; i--)
+		id /= sw->ax[i].n;
+	return id % sw->ax[k].n;
+}
+
+int
+sweep_point_value(const struct sweep *sw, long id, int k, char *buf, size_t n)
+{
+	if (k < 0 || k >= sw->naxes || id < 0 || id >= sweep_npoints(sw))
+		return HB_EINVAL;
+	snprintf(buf, n, "%s", sw->ax[k].val[axis_index(sw, id, k)]);
+	return HB_OK;
+}
+
+int
+sweep_point_scene(const struct sweep *sw, long id, struct scene *out, char *msg, size_t n)
+{
+	char m[512];
+
+	if (id < 0 || id >= sweep_npoints(sw))
+		return status_set(msg, n, HB_EINVAL, "point %ld: no such point", id);
+	*out = sw->base;
+	for (int k = 0; k < sw->naxes; k++) {
+		const char *v = sw->ax[k].val[axis_index(sw, id, k)];
+
+		m[0] = '\0';
+		if (scene_set(out, sw->ax[k].key, v, m, sizeof m) != HB_OK)
+			return status_set(msg, n, HB_EINVAL, "point %ld: %s=%s: %s", id,
+			                  sw->ax[k].key, v, m);
+	}
+	m[0] = '\0';
+	if (scene_validate(out, m, sizeof m) != HB_OK) {
+		char vals[512] = "";
+		size_t l = 0;
+
+		for (int k = 0; k < sw->naxes && l < sizeof vals; k++)
+			l += (size_t)snprintf(vals + l, sizeof vals - l, "%s%s=%s", k ? " " : "",
+			                      sw->ax[k].key, sw->ax[k].val[axis_index(sw, id, k)]);
+		return status_set(msg, n, HB_EINVAL, "point %ld (%s): %s", id, vals, m);
+	}
+	return HB_OK;
+}
+
+int
+sweep_check(const struct sweep *sw, char *msg, size_t n)
+{
+	struct scene sc;
+	long np = sweep_npoints(sw);
+
+	if (np == 0)
+		return status_set(msg, n, HB_EINVAL, "nothing to vary; expected at least one "
+		                  "--vary KEY=SPEC");
+	for (long id = 0; id < np; id++)
+		if (sweep_point_scene(sw, id, &sc, msg, n) != HB_OK)
+			return HB_EINVAL;
+	return HB_OK;
+}
+
+size_t
+sweep_spec_format(const struct sweep *sw, char *buf, size_t n)
+{
+	size_t len = preset_format(&sw->base, buf, n);
+
+	len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
+	    "\n; The sweep (hybounce sweep FILE --out DIR runs it):\n");
+	for (int k = 0; k < sw->naxes; k++)
+		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
+		                        "; sweep: --vary %s=%s\n", sw->ax[k].key, sw->ax[k].spec);
+	return len;
+}
+
+static const char runs_cols[] =
+	"status,message,collisions,t_pc,e_first,v_i_first,e_last,v_i_last,x_c_r_total,"
+	"t_end,j_end,q_c_end,x_end,v_end,x_c_end,steps,rejected,rhs,jac,cpu_s";
+
+size_t
+sweep_runs_header(const struct sweep *sw, char *buf, size_t n)
+{
+	size_t len = (size_t)snprintf(buf, n, "id");
+
+	for (int k = 0; k < sw->naxes; k++)
+		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
+		                        ",%s", sw->ax[k].key);
+	len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
+	                        ",%s", runs_cols);
+	return len;
+}
+
+/* A CSV field: quoted when it holds a comma, a quote or a line break. */
+static void
+put_field(FILE *f, const char *s)
+{
+	if (strpbrk(s, ",\"\r\n") == NULL) {
+		fputs(s, f);
+		return;
+	}
+	fputc('"', f);
+	for (; *s; s++) {
+		if (*s == '"')
+			fputc('"', f);
+		fputc(*s, f);
+	}
+	fputc('"', f);
+}
+
+static void
+put_num(FILE *f, double v)
+{
+	fputc(',', f);
+	if (!isnan(v))
+		fprintf(f, "%.17g", v);
+}
+
+static double
+thread_cpu(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The runs row of a finished sim (no newline). */
+static void
+runs_row(FILE *f, const struct sweep *sw, long id, const struct sim *s, double cpu)
+{
+	const struct sim_stats *st = sim_stats(s);
+	const struct arc_sample *last = arc_last(sim_arc(s));
+	size_t nc = sim_ncollisions(s);
+	const struct collision *c0 = nc ? sim_collision(s, 0) : NULL;
+	const struct collision *cl = nc ? sim_collision(s, nc - 1) : NULL;
+	struct collision live;
+	double xcr = 0, tpc = NAN;
+	int failed = sim_end(s) == SIM_END_FAIL;
+
+	for (size_t i = 0; i < nc; i++)
+		xcr += sim_collision(s, i)->xcr;
+	if (!failed && sim_contact_live(s, &live))
+		tpc = live.te;
+	fprintf(f, "r,%ld", id);
+	for (int k = 0; k < sw->naxes; k++) {
+		fputc(',', f);
+		put_field(f, sw->ax[k].val[axis_index(sw, id, k)]);
+	}
+	fprintf(f, ",%s,", failed ? "failed" : "ok");
+	put_field(f, failed && sim_errmsg(s)[0] ? sim_errmsg(s) : sim_end_str(s));
+	fprintf(f, ",%zu", nc);
+	put_num(f, tpc);
+	put_num(f, c0 ? c0->e : NAN);
+	put_num(f, c0 ? c0->vi : NAN);
+	put_num(f, cl ? cl->e : NAN);
+	put_num(f, cl ? cl->vi : NAN);
+	put_num(f, xcr);
+	put_num(f, last ? last->t : NAN);
+	fprintf(f, ",%ld,%d", last ? last->j : 0L, last ? last->q : 0);
+	put_num(f, last ? last->x : NAN);
+	put_num(f, last ? last->v : NAN);
+	put_num(f, last ? last->xc : NAN);
+	fprintf(f, ",%ld,%ld,%ld,%ld", st->steps, st->rejected, st->rhs, st->jac);
+	put_num(f, cpu);
+	fputc('\n', f);
+}
+
+int
+sweep_point_block(const struct sweep *sw, long id, char **out, int *failed,
+                  char *msg, size_t n)
+{
+	double c0 = thread_cpu();
+	struct scene sc;
+	struct sim *s;
+	char *coll = NULL, *blk = NULL, m[512];
+	size_t clen = 0, blen = 0;
+	FILE *f;
+	int rc;
+
+	*out = NULL;
+	*failed = 0;
+	if ((rc = sweep_point_scene(sw, id, &sc, msg, n)) != HB_OK)
+		return rc;
+	m[0] = '\0';
+	s = sweep_sim_new(sw, &sc, m, sizeof m);
+	if (s == NULL)
+		return status_set(msg, n, HB_EINVAL, "point %ld: %s", id, m[0] ? m : "no memory");
+	(void)sim_run(s);
+	*failed = sim_end(s) == SIM_END_FAIL;
+
+	/* The collisions exactly as --collisions writes them, each row prefixed. */
+	f = open_memstream(&coll, &clen);
+	if (f == NULL) {
+		sim_free(s);
+		return status_set(msg, n, HB_ENOMEM, "out of memory");
+	}
+	rc = csv_stream_collisions(f, s, m, sizeof m);
+	if (fclose(f) != 0 || rc != HB_OK) {
+		free(coll);
+		sim_free(s);
+		return status_set(msg, n, HB_ENOMEM, "point %ld: collisions: %s", id, m);
+	}
+	f = open_memstream(&blk, &blen);
+	if (f == NULL) {
+		free(coll);
+		sim_free(s);
+		return status_set(msg, n, HB_ENOMEM, "out of memory");
+	}
+	{
+		const char *p = strchr(coll, '\n');    /* skip the header */
+
+		p = p ? p + 1 : coll + clen;
+		while (*p) {
+			const char *e = strchr(p, '\n');
+			size_t l = e ? (size_t)(e - p) : strlen(p);
+
+			fprintf(f, "c,%ld,%.*s\n", id, (int)l, p);
+			p += l + (e != NULL);
+		}
+	}
+	free(coll);
+	runs_row(f, sw, id, s, thread_cpu() - c0);
+	sim_free(s);
+	if (fclose(f) != 0 || blk == NULL) {
+		free(blk);
+		return status_set(msg, n, HB_ENOMEM, "out of memory");
+	}
+	*out = blk;
+	return HB_OK;
+}

@@ -1,0 +1,276 @@
+/*
+ * sweep_curve.c - one observable over one parameter, computed by
+ * background threads for the explorer (see sweep.h, "Curves").
+ *
+ * The curve is a one-axis sweep: the same point scenes as sweep_run, run
+ * by sim_advance in slices of SLICE_STEPS accepted steps so that a worker
+ * sees a cancellation within one slice.  Results go into arrays under a
+ * mutex; sweep_curve_poll copies them and never waits for a point.
+ */
+#include <errno.h>
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "hybounce/sim.h"
+#include "hybounce/status.h"
+#include "hybounce/sweep.h"
+#include "sweep_impl.h"
+
+#define SLICE_STEPS 2000
+#define CURVE_MAX_JOBS 64
+
+static const char *const obs_names[CURVE_COUNT] = {
+	"e", "v_i", "x_c_r", "collisions", "t_pc", "x_c_r_total",
+};
+
+struct sweep_curve {
+	struct sweep *sw;
+	char key[48];
+	int obs;
+	long coll_i, np;
+	double *x, *y;
+	int *state;
+	long next, done;
+	int stop;
+	pthread_mutex_t mu;
+	pthread_t th[CURVE_MAX_JOBS];
+	int nth;
+};
+
+const char *
+sweep_observable_name(int obs)
+{
+	return obs >= 0 && obs < CURVE_COUNT ? obs_names[obs] : NULL;
+}
+
+static double
+observe(const struct sim *s, int obs, long i)
+{
+	size_t nc = sim_ncollisions(s);
+	const struct collision *c = i >= 0 && (size_t)i < nc ? sim_collision(s, (size_t)i) : NULL;
+	struct collision live;
+	double sum = 0;
+
+	switch (obs) {
+	case CURVE_E: return c ? c->e : NAN;
+	case CURVE_VI: return c ? c->vi : NAN;
+	case CURVE_XCR: return c ? c->xcr : NAN;
+	case CURVE_COLLISIONS: return (double)nc;
+	case CURVE_TPC:
+		return sim_end(s) != SIM_END_FAIL && sim_contact_live(s, &live) ? live.te : NAN;
+	default:
+		for (size_t k = 0; k < nc; k++)
+			sum += sim_collision(s, k)->xcr;
+		return sum;
+	}
+}
+
+static void *
+curve_worker(void *arg)
+{
+	struct sweep_curve *c = arg;
+
+	for (;;) {
+		struct scene sc;
+		struct sim *s = NULL;
+		char m[256];
+		long id;
+		int st = CURVE_FAILED, stop = 0;
+		double y = NAN;
+
+		pthread_mutex_lock(&c->mu);
+		if (c->stop || c->next >= c->np) {
+			pthread_mutex_unlock(&c->mu);
+			return NULL;
+		}
+		id = c->next++;
+		pthread_mutex_unlock(&c->mu);
+
+		if (sweep_point_scene(c->sw, id, &sc, m, sizeof m) == HB_OK)
+			s = sweep_sim_new(c->sw, &sc, m, sizeof m);
+		while (s != NULL && sim_end(s) == SIM_RUNNING) {
+			if (sim_advance(s, SLICE_STEPS, 0) != HB_OK)
+				break;
+			pthread_mutex_lock(&c->mu);
+			stop = c->stop;
+			pthread_mutex_unlock(&c->mu);
+			if (stop)
+				break;
+		}
+		if (s != NULL && !stop && sim_end(s) != SIM_RUNNING) {
+			y = observe(s, c->obs, c->coll_i);
+			st = sim_end(s) == SIM_END_FAIL ? CURVE_FAILED : CURVE_DONE;
+		}
+		sim_free(s);
+		if (stop)
+			return NULL;
+		pthread_mutex_lock(&c->mu);
+		c->y[id] = y;
+		c->state[id] = st;
+		c->done++;
+		pthread_mutex_unlock(&c->mu);
+	}
+}
+
+void
+sweep_curve_free(struct sweep_curve *c)
+{
+	if (c == NULL)
+		return;
+	pthread_mutex_lock(&c->mu);
+	c->stop = 1;
+	pthread_mutex_unlock(&c->mu);
+	for (int i = 0; i < c->nth; i++)
+		pthread_join(c->th[i], NULL);
+	pthread_mutex_destroy(&c->mu);
+	sweep_free(c->sw);
+	free(c->x);
+	free(c->y);
+	free(c->state);
+	free(c);
+}
+
+struct sweep_curve *
+sweep_curve_start(const struct scene *base, const char *key, const char *spec, int obs,
+                  long coll_i, int jobs, char *msg, size_t n)
+{
+	struct sweep_curve *c;
+	char arg[512], v[64];
+
+	if (obs < 0 || obs >= CURVE_COUNT) {
+		status_set(msg, n, HB_EINVAL, "observable %d: accepted: e, v_i, x_c_r, "
+		           "collisions, t_pc, x_c_r_total", obs);
+		return NULL;
+	}
+	if (strlen(key) >= sizeof c->key) {
+		status_set(msg, n, HB_EINVAL, "%s: unknown key", key);
+		return NULL;
+	}
+	c = calloc(1, sizeof *c);
+	if (c == NULL || (c->sw = sweep_new(base, msg, n)) == NULL) {
+		free(c);
+		status_set(msg, n, HB_ENOMEM, "out of memory");
+		return NULL;
+	}
+	pthread_mutex_init(&c->mu, NULL);
+	snprintf(c->key, sizeof c->key, "%s", key);
+	c->obs = obs;
+	c->coll_i = coll_i;
+	snprintf(arg, sizeof arg, "%s=%s", key, spec);
+	if (sweep_vary(c->sw, arg, msg, n) != HB_OK || sweep_check(c->sw, msg, n) != HB_OK) {
+		sweep_curve_free(c);
+		return NULL;
+	}
+	c->np = sweep_npoints(c->sw);
+	c->x = malloc((size_t)c->np * sizeof *c->x);
+	c->y = malloc((size_t)c->np * sizeof *c->y);
+	c->state = calloc((size_t)c->np, sizeof *c->state);
+	if (c->x == NULL || c->y == NULL || c->state == NULL) {
+		sweep_curve_free(c);
+		status_set(msg, n, HB_ENOMEM, "out of memory");
+		return NULL;
+	}
+	for (long i = 0; i < c->np; i++) {
+		sweep_point_value(c->sw, i, 0, v, sizeof v);
+		c->x[i] = strtod(v, NULL);   /* NAN-free: a word (a law name) gives 0 */
+		c->y[i] = NAN;
+	}
+	if (jobs < 1)
+		jobs = 1;
+	if (jobs > CURVE_MAX_JOBS)
+		jobs = CURVE_MAX_JOBS;
+	for (c->nth = 0; c->nth < jobs && c->nth < c->np; c->nth++)
+		if (pthread_create(&c->th[c->nth], NULL, curve_worker, c) != 0)
+			break;
+	if (c->nth == 0) {
+		sweep_curve_free(c);
+		status_set(msg, n, HB_ENOMEM, "cannot start a thread");
+		return NULL;
+	}
+	return c;
+}
+
+long
+sweep_curve_npoints(const struct sweep_curve *c)
+{
+	return c->np;
+}
+
+long
+sweep_curve_poll(struct sweep_curve *c, double *x, double *y, int *state, long n)
+{
+	long done;
+
+	if (n > c->np)
+		n = c->np;
+	pthread_mutex_lock(&c->mu);
+	for (long i = 0; i < n; i++) {
+		if (x)
+			x[i] = c->x[i];
+		if (y)
+			y[i] = c->y[i];
+		if (state)
+			state[i] = c->state[i];
+	}
+	done = c->done;
+	pthread_mutex_unlock(&c->mu);
+	return done;
+}
+
+int
+sweep_curve_write_csv(struct sweep_curve *c, const char *path, char *msg, size_t n)
+{
+	char tmp[4200];
+	double *y = malloc((size_t)c->np * sizeof *y);
+	int *st = malloc((size_t)c->np * sizeof *st);
+	FILE *f = NULL;
+	int fd, e = 0;
+
+	if (y == NULL || st == NULL) {
+		free(y);
+		free(st);
+		return status_set(msg, n, HB_ENOMEM, "out of memory");
+	}
+	sweep_curve_poll(c, NULL, y, st, c->np);
+	snprintf(tmp, sizeof tmp, "%s.tmpXXXXXX", path);
+	fd = mkstemp(tmp);
+	if (fd < 0 || (f = fdopen(fd, "w")) == NULL) {
+		e = errno;
+		if (fd >= 0) {
+			close(fd);
+			unlink(tmp);
+		}
+		free(y);
+		free(st);
+		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
+	}
+	fprintf(f, "%s,%s\n", c->key, obs_names[c->obs]);
+	for (long i = 0; i < c->np; i++) {
+		char v[64];
+
+		if (st[i] == CURVE_PENDING)
+			continue;
+		sweep_point_value(c->sw, i, 0, v, sizeof v);
+		fprintf(f, "%s,", v);
+		if (!isnan(y[i]))
+			fprintf(f, "%.17g", y[i]);
+		fputc('\n', f);
+	}
+	free(y);
+	free(st);
+	if (ferror(f) || fflush(f) != 0 || fsync(fileno(f)) != 0)
+		e = errno ? errno : EIO;
+	if (fclose(f) != 0 && e == 0)
+		e = errno;
+	if (e == 0 && rename(tmp, path) != 0)
+		e = errno;
+	if (e != 0) {
+		unlink(tmp);
+		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
+	}
+	return HB_OK;
+}

@@ -1,0 +1,774 @@
+/*
+ * sweep_run.c - running a sweep into a folder: the folder's identity
+ * (sweep.preset), the journal that makes it resumable, the worker threads,
+ * and the merge into runs.csv and collisions.csv (see sweep.h).
+ *
+ * Journal.  Each shard appends to its own journal (points.journal for a
+ * one-machine sweep, shard-K-of-N.journal otherwise) one block per point,
+ * in the order the points complete: its collision rows "c,ID,...", then
+ * its runs row "r,ID,...", the whole block in one write(2) from the
+ * calling thread.  A block counts once its runs row is complete (ends in a
+ * newline); a SIGKILL can leave at most one partial block at the end, which
+ * the next start cuts off before it appends.  Nothing is cached in memory
+ * but one bit per point, and the merge keeps one offset per point, so
+ * memory stays flat in the number of points computed.
+ *
+ * Merge.  The union of the journals in the folder (by point id; the first
+ * copy wins) is written in id order to runs.csv and collisions.csv as one
+ * set of the atomic writer (atomic.h): a reader never sees half a file and
+ * a failed merge leaves the old ones.
+ *
+ * Threads.  Workers take the next id under a mutex, run the point on their
+ * own scene and sim (sweep_point_block), and queue the block; the calling
+ * thread writes blocks and reports progress.  The results do not depend on
+ * the number of threads or the order of completion: each point's bytes come
+ * from its own run alone, and the files are sorted by id.
+ */
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <pthread.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "hybounce/atomic.h"
+#include "hybounce/csv.h"
+#include "hybounce/preset.h"
+#include "hybounce/sim.h"
+#include "hybounce/status.h"
+#include "hybounce/sweep.h"
+
+#define SPEC_NAME "sweep.preset"
+
+static double
+mono_now(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static double
+thread_cpu(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The whole of a file into a malloc'd string (*len bytes).  NULL and errno on failure. */
+static char *
+slurp(const char *path, size_t *len)
+{
+	FILE *f = fopen(path, "r");
+	char *buf = NULL;
+	size_t cap = 0, n = 0, r;
+
+	if (f == NULL)
+		return NULL;
+	do {
+		if (n + 4096 + 1 > cap) {
+			char *nb = realloc(buf, cap = 2 * cap + 8192);
+
+			if (nb == NULL) {
+				free(buf);
+				fclose(f);
+				errno = ENOMEM;
+				return NULL;
+			}
+			buf = nb;
+		}
+		r = fread(buf + n, 1, 4096, f);
+		n += r;
+	} while (r > 0);
+	if (ferror(f)) {
+		int e = errno;
+
+		free(buf);
+		fclose(f);
+		errno = e ? e : EIO;
+		return NULL;
+	}
+	fclose(f);
+	buf[n] = '\0';
+	if (len)
+		*len = n;
+	return buf;
+}
+
+static int
+write_all(int fd, const char *p, size_t len)
+{
+	while (len > 0) {
+		ssize_t w = write(fd, p, len);
+
+		if (w < 0) {
+			if (errno == EINTR)
+				continue;
+			return -1;
+		}
+		p += w;
+		len -= (size_t)w;
+	}
+	return 0;
+}
+
+static char *
+spec_text(const struct sweep *sw, size_t *len)
+{
+	size_t l = sweep_spec_format(sw, NULL, 0);
+	char *t = malloc(l + 1);
+
+	if (t != NULL)
+		sweep_spec_format(sw, t, l + 1);
+	*len = l;
+	return t;
+}
+
+/* 1 for the files a sweep folder may hold before its sweep.preset exists. */
+static int
+ours(const char *name)
+{
+	size_t l = strlen(name);
+
+	return strcmp(name, ".") == 0 || strcmp(name, "..") == 0 ||
+	       strncmp(name, SPEC_NAME ".tmp", strlen(SPEC_NAME ".tmp")) == 0 ||
+	       (l > 8 && strcmp(name + l - 8, ".journal") == 0);
+}
+
+int
+sweep_prepare_dir(const struct sweep *sw, const char *dir, char *msg, size_t n)
+{
+	char path[4096];
+	struct stat st;
+	size_t len, have_len;
+	char *want, *have;
+	int rc;
+
+	if (dir == NULL || dir[0] == '\0')
+		return status_set(msg, n, HB_EINVAL, "--out: empty folder name; expected a "
+		                  "folder for runs.csv and collisions.csv");
+	if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+		return status_set(msg, n, HB_EINVAL, "--out %s: cannot create the folder: %s",
+		                  dir, strerror(errno));
+	if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
+		return status_set(msg, n, HB_EINVAL, "--out %s: not a folder; expected a folder "
+		                  "(created if missing)", dir);
+	if (access(dir, W_OK) != 0)
+		return status_set(msg, n, HB_EINVAL, "--out %s: cannot write there: %s", dir,
+		                  strerror(errno));
+	want = spec_text(sw, &len);
+	if (want == NULL)
+		return status_set(msg, n, HB_ENOMEM, "out of memory");
+	snprintf(path, sizeof path, "%s/" SPEC_NAME, dir);
+	have = slurp(path, &have_len);
+	if (have != NULL) {
+		rc = have_len == len && memcmp(have, want, len) == 0 ? HB_OK
+		   : status_set(msg, n, HB_EINVAL, "--out %s: the folder holds a different "
+		                "sweep (%s differs from this one's); expected a new folder, "
+		                "or this sweep's own folder to resume it", dir, path);
+		free(have);
+		free(want);
+		return rc;
+	}
+	if (errno != ENOENT) {
+		free(want);
+		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+	}
+	{
+		DIR *d = opendir(dir);
+		struct dirent *e;
+
+		if (d == NULL) {
+			free(want);
+			return status_set(msg, n, HB_EIO, "%s: %s", dir, strerror(errno));
+		}
+		while ((e = readdir(d)) != NULL)
+			if (!ours(e->d_name)) {
+				status_set(msg, n, HB_EINVAL, "--out %s: the folder is not empty "
+				    "and holds no sweep (found %s); expected a new or empty folder",
+				    dir, e->d_name);
+				closedir(d);
+				free(want);
+				return HB_EINVAL;
+			}
+		closedir(d);
+	}
+	rc = atomic_write_file(path, want, len, msg, n);
+	free(want);
+	return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* Journal                                                             */
+
+/* "c,ID," or "r,ID,": kind and id; -1 if the line is not a journal line. */
+static int
+journal_line(const char *line, size_t len, long *id)
+{
+	char *end;
+
+	if (len < 4 || (line[0] != 'c' && line[0] != 'r') || line[1] != ',')
+		return -1;
+	errno = 0;
+	*id = strtol(line + 2, &end, 10);
+	if (end == line + 2 || *end != ',' || errno != 0 || *id < 0)
+		return -1;
+	return line[0];
+}
+
+/*
+ * Reads a journal: calls seen(ctx, id, off, len) for each complete block
+ * and cuts a partial block off the end when trunc is set.  Returns HB_OK,
+ * HB_EIO, or HB_EINVAL for a damaged journal.
+ */
+static int
+journal_scan(const char *path, long npoints, int trunc,
+             int (*seen)(void *, long, off_t, size_t), void *ctx, char *msg, size_t n)
+{
+	FILE *f = fopen(path, "r");
+	char *line = NULL;
+	size_t cap = 0;
+	ssize_t got;
+	off_t pos = 0, block = 0;
+	long id, block_id = -1, lineno = 0;
+	int kind, rc = HB_OK;
+
+	if (f == NULL)
+		return errno == ENOENT ? HB_OK : status_set(msg, n, HB_EIO, "%s: %s", path,
+		                                             strerror(errno));
+	while ((got = getline(&line, &cap, f)) > 0) {
+		lineno++;
+		if (line[got - 1] != '\n')
+			break;  /* a torn last line */
+		kind = journal_line(line, (size_t)got, &id);
+		if (kind < 0 || id >= npoints || (block_id >= 0 && id != block_id)) {
+			rc = status_set(msg, n, HB_EINVAL, "%s:%ld: not a line of this sweep's "
+			                "journal; remove the file to compute its points again",
+			                path, lineno);
+			break;
+		}
+		pos += got;
+		if (kind == 'r') {
+			if ((rc = seen(ctx, id, block, (size_t)(pos - block))) != HB_OK)
+				break;
+			block = pos;
+			block_id = -1;
+		} else {
+			block_id = id;
+		}
+	}
+	free(line);
+	if (ferror(f) && rc == HB_OK)
+		rc = status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+	fclose(f);
+	if (rc == HB_OK && trunc && truncate(path, block) != 0)
+		rc = status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+	return rc;
+}
+
+static void
+journal_name(char *buf, size_t n, const char *dir, long k, long nshards)
+{
+	if (nshards <= 1)
+		snprintf(buf, n, "%s/points.journal", dir);
+	else
+		snprintf(buf, n, "%s/shard-%ld-of-%ld.journal", dir, k, nshards);
+}
+
+struct doneset {
+	unsigned char *bits;
+	long count, failed;
+};
+
+static int
+mark_done(void *ctx, long id, off_t off, size_t len)
+{
+	struct doneset *d = ctx;
+
+	(void)off;
+	(void)len;
+	if (!(d->bits[id / 8] & (1u << (id % 8)))) {
+		d->bits[id / 8] |= (unsigned char)(1u << (id % 8));
+		d->count++;
+	}
+	return HB_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Worker threads                                                      */
+
+struct result {
+	struct result *next;
+	long id;
+	char *blk;
+	int failed, rc;
+	double cpu;
+	char msg[256];
+};
+
+struct pool {
+	const struct sweep *sw;
+	pthread_mutex_t mu;
+	pthread_cond_t cv;
+	const long *todo;
+	long ntodo, next;
+	int stop;
+	struct result *head, *tail;
+};
+
+static void *
+worker(void *arg)
+{
+	struct pool *p = arg;
+
+	for (;;) {
+		struct result *r;
+		long id;
+		double c0;
+
+		pthread_mutex_lock(&p->mu);
+		if (p->stop || p->next >= p->ntodo) {
+			pthread_mutex_unlock(&p->mu);
+			return NULL;
+		}
+		id = p->todo[p->next++];
+		pthread_mutex_unlock(&p->mu);
+
+		r = calloc(1, sizeof *r);
+		c0 = thread_cpu();
+		if (r != NULL) {
+			r->id = id;
+			r->rc = sweep_point_block(p->sw, id, &r->blk, &r->failed, r->msg,
+			                          sizeof r->msg);
+			r->cpu = thread_cpu() - c0;
+		}
+		pthread_mutex_lock(&p->mu);
+		if (r == NULL) {
+			p->stop = 2;  /* out of memory: the caller says so */
+		} else {
+			if (p->tail)
+				p->tail->next = r;
+			else
+				p->head = r;
+			p->tail = r;
+		}
+		pthread_cond_signal(&p->cv);
+		pthread_mutex_unlock(&p->mu);
+	}
+}
+
+int
+sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size_t n)
+{
+	long np = sweep_npoints(sw), k = o->shard_k, ns = o->shard_n < 1 ? 1 : o->shard_n;
+	struct sweep_progress pr;
+	struct doneset ds = { 0 };
+	struct pool p;
+	pthread_t *th = NULL;
+	long *todo = NULL, got = 0, nth = 0;
+	char jpath[4200];
+	int fd = -1, rc, cancelled = 0;
+	double t0 = mono_now();
+
+	memset(&pr, 0, sizeof pr);
+	memset(&p, 0, sizeof p);
+	if (np == 0)
+		return status_set(msg, n, HB_EINVAL, "nothing to vary; expected at least one "
+		                  "--vary KEY=SPEC");
+	if (k < 0 || k >= ns)
+		return status_set(msg, n, HB_EINVAL, "--shard %ld/%ld: accepted: K/N with "
+		                  "0 <= K < N", k, ns);
+	if ((rc = sweep_prepare_dir(sw, o->dir, msg, n)) != HB_OK)
+		return rc;
+	journal_name(jpath, sizeof jpath, o->dir, k, ns);
+	if (ns == 1 && access(jpath, F_OK) != 0 && errno == ENOENT) {
+		char r[4200], c[4200];
+
+		/* Merged and its journal removed: the sweep is complete. */
+		snprintf(r, sizeof r, "%s/runs.csv", o->dir);
+		snprintf(c, sizeof c, "%s/collisions.csv", o->dir);
+		if (access(r, F_OK) == 0 && access(c, F_OK) == 0) {
+			pr.total = pr.done = pr.resumed = np;
+			if (o->progress)
+				o->progress(o->ctx, &pr);
+			return HB_OK;
+		}
+	}
+	ds.bits = calloc((size_t)np / 8 + 1, 1);
+	if (ds.bits == NULL)
+		return status_set(msg, n, HB_ENOMEM, "out of memory");
+	if ((rc = journal_scan(jpath, np, 1, mark_done, &ds, msg, n)) != HB_OK)
+		goto out;
+	/* The shard's points that the journal does not hold. */
+	for (long id = k; id < np; id += ns)
+		pr.total++;
+	todo = malloc((size_t)(pr.total - ds.count + 1) * sizeof *todo);
+	if (todo == NULL) {
+		rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto out;
+	}
+	for (long id = k; id < np; id += ns)
+		if (!(ds.bits[id / 8] & (1u << (id % 8))))
+			todo[p.ntodo++] = id;
+	pr.resumed = pr.done = pr.total - p.ntodo;
+	if (o->progress)
+		o->progress(o->ctx, &pr);
+
+	if (p.ntodo > 0) {
+		fd = open(jpath, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+		if (fd < 0) {
+			rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+			goto out;
+		}
+		p.sw = sw;
+		p.todo = todo;
+		pthread_mutex_init(&p.mu, NULL);
+		pthread_cond_init(&p.cv, NULL);
+		nth = o->jobs < 1 ? 1 : o->jobs;
+		if (nth > p.ntodo)
+			nth = p.ntodo;
+		th = calloc((size_t)nth, sizeof *th);
+		if (th == NULL) {
+			rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+			goto threads_done;
+		}
+		for (long i = 0; i < nth; i++)
+			if (pthread_create(&th[i], NULL, worker, &p) != 0) {
+				nth = i;
+				if (nth == 0) {
+					rc = status_set(msg, n, HB_ENOMEM, "cannot start a thread");
+					goto threads_done;
+				}
+				break;
+			}
+		pthread_mutex_lock(&p.mu);
+		while (got < p.ntodo && rc == HB_OK) {
+			struct result *r;
+
+			while (p.head == NULL && p.stop == 0 && !cancelled) {
+				struct timespec until;
+
+				if (o->cancel != NULL && *o->cancel) {
+					cancelled = 1;
+					break;
+				}
+				clock_gettime(CLOCK_REALTIME, &until);
+				until.tv_nsec += 100000000L;   /* look at *o->cancel every 0.1 s */
+				if (until.tv_nsec >= 1000000000L) {
+					until.tv_sec++;
+					until.tv_nsec -= 1000000000L;
+				}
+				pthread_cond_timedwait(&p.cv, &p.mu, &until);
+			}
+			if (cancelled || (o->cancel != NULL && *o->cancel)) {
+				cancelled = 1;
+				break;
+			}
+			if (p.head == NULL) {
+				rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+				break;
+			}
+			r = p.head;
+			p.head = r->next;
+			if (p.head == NULL)
+				p.tail = NULL;
+			pthread_mutex_unlock(&p.mu);
+			if (r->rc != HB_OK)
+				rc = status_set(msg, n, r->rc, "%s", r->msg);
+			else if (write_all(fd, r->blk, strlen(r->blk)) != 0)
+				rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+			else {
+				got++;
+				pr.done++;
+				pr.failed += r->failed;
+				pr.point_cpu += r->cpu;
+				pr.elapsed = mono_now() - t0;
+				if (o->progress)
+					o->progress(o->ctx, &pr);
+			}
+			free(r->blk);
+			free(r);
+			pthread_mutex_lock(&p.mu);
+		}
+		p.stop = p.stop ? p.stop : rc != HB_OK || cancelled;
+		pthread_mutex_unlock(&p.mu);
+threads_done:
+		for (long i = 0; i < nth; i++)
+			pthread_join(th[i], NULL);
+		while (p.head) {
+			struct result *r = p.head;
+
+			/* Stopped: the points that were finishing are kept too. */
+			if (cancelled && rc == HB_OK && r->rc == HB_OK) {
+				if (write_all(fd, r->blk, strlen(r->blk)) != 0)
+					rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+				else {
+					pr.done++;
+					pr.failed += r->failed;
+				}
+			}
+			p.head = r->next;
+			free(r->blk);
+			free(r);
+		}
+		if (cancelled && rc == HB_OK)
+			rc = status_set(msg, n, HB_EDONE, "stopped with %ld of %ld points done; "
+			                "the same command resumes", pr.done, pr.total);
+		free(th);
+		pthread_cond_destroy(&p.cv);
+		pthread_mutex_destroy(&p.mu);
+		if (close(fd) != 0 && rc == HB_OK)
+			rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+		if (rc != HB_OK)
+			goto out;
+	}
+	if (ns == 1) {
+		if ((rc = sweep_merge(o->dir, msg, n)) == HB_OK && unlink(jpath) != 0 &&
+		    errno != ENOENT)
+			rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+	}
+out:
+	free(todo);
+	free(ds.bits);
+	return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* Merge                                                               */
+
+struct index {
+	int64_t *off;     /* -1: not seen */
+	uint32_t *len;
+	uint16_t *file;
+	int cur;
+	long count;
+};
+
+static int
+index_add(void *ctx, long id, off_t off, size_t len)
+{
+	struct index *x = ctx;
+
+	if (x->off[id] >= 0)
+		return HB_OK;  /* the first copy wins */
+	x->off[id] = off;
+	x->len[id] = (uint32_t)len;
+	x->file[id] = (uint16_t)x->cur;
+	x->count++;
+	return HB_OK;
+}
+
+/* The collisions header of --collisions (from an empty run's CSV). */
+static int
+collisions_header(const struct scene *sc, char *buf, size_t n, char *msg, size_t mn)
+{
+	struct sim *s = sim_new(sc, msg, mn);
+	char *t = NULL;
+	size_t tl = 0;
+	FILE *f;
+	int rc;
+
+	if (s == NULL)
+		return HB_EINVAL;
+	f = open_memstream(&t, &tl);
+	if (f == NULL) {
+		sim_free(s);
+		return status_set(msg, mn, HB_ENOMEM, "out of memory");
+	}
+	rc = csv_stream_collisions(f, s, msg, mn);
+	fclose(f);
+	sim_free(s);
+	if (rc == HB_OK && t != NULL)
+		snprintf(buf, n, "%.*s", (int)strcspn(t, "\n"), t);
+	free(t);
+	return rc;
+}
+
+/* Loads DIR/sweep.preset into a sweep. */
+static struct sweep *
+load_spec(const char *dir, struct scene *sc, char *msg, size_t n)
+{
+	char path[4096], m[1024];
+	struct sweep *sw;
+	char *text;
+
+	snprintf(path, sizeof path, "%s/" SPEC_NAME, dir);
+	text = slurp(path, NULL);
+	if (text == NULL) {
+		status_set(msg, n, HB_EINVAL, "%s: %s; expected a sweep folder (--out DIR of "
+		           "hybounce sweep)", path, strerror(errno));
+		return NULL;
+	}
+	m[0] = '\0';
+	if (preset_load_string(text, path, sc, m, sizeof m) != HB_OK) {
+		status_set(msg, n, HB_EINVAL, "%s", m);
+		free(text);
+		return NULL;
+	}
+	sw = sweep_new(sc, msg, n);
+	if (sw != NULL && sweep_vary_from_preset(sw, text, path, msg, n) != HB_OK) {
+		sweep_free(sw);
+		sw = NULL;
+	}
+	if (sw != NULL && sweep_npoints(sw) == 0) {
+		status_set(msg, n, HB_EINVAL, "%s: no '; sweep: --vary' line", path);
+		sweep_free(sw);
+		sw = NULL;
+	}
+	free(text);
+	return sw;
+}
+
+int
+sweep_merge(const char *dir, char *msg, size_t n)
+{
+	struct scene sc;
+	struct sweep *sw = load_spec(dir, &sc, msg, n);
+	struct index x = { 0 };
+	char **names = NULL, hdr[4096], path[4200];
+	int nnames = 0, *fds = NULL, rc = HB_OK;
+	struct atomic_set set;
+	FILE *runs = NULL, *coll = NULL;
+	int set_open = 0;
+	char *blk = NULL;
+	size_t cap = 0;
+	long np;
+	DIR *d;
+	struct dirent *e;
+
+	if (sw == NULL)
+		return HB_EINVAL;
+	np = sweep_npoints(sw);
+	x.off = malloc((size_t)np * sizeof *x.off);
+	x.len = malloc((size_t)np * sizeof *x.len);
+	x.file = malloc((size_t)np * sizeof *x.file);
+	if (x.off == NULL || x.len == NULL || x.file == NULL) {
+		rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto out;
+	}
+	for (long i = 0; i < np; i++)
+		x.off[i] = -1;
+	d = opendir(dir);
+	if (d == NULL) {
+		rc = status_set(msg, n, HB_EIO, "%s: %s", dir, strerror(errno));
+		goto out;
+	}
+	while ((e = readdir(d)) != NULL) {
+		size_t l = strlen(e->d_name);
+		char **nn;
+
+		if (l <= 8 || strcmp(e->d_name + l - 8, ".journal") != 0)
+			continue;
+		if (nnames == 65535 || (nn = realloc(names, (size_t)(nnames + 1) * sizeof *names)) == NULL) {
+			rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+			break;
+		}
+		names = nn;
+		if ((names[nnames] = strdup(e->d_name)) == NULL) {
+			rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+			break;
+		}
+		nnames++;
+	}
+	closedir(d);
+	if (rc != HB_OK)
+		goto out;
+	fds = malloc((size_t)(nnames + 1) * sizeof *fds);
+	if (fds == NULL) {
+		rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto out;
+	}
+	for (int i = 0; i < nnames; i++)
+		fds[i] = -1;
+	for (int i = 0; i < nnames && rc == HB_OK; i++) {
+		snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+		x.cur = i;
+		rc = journal_scan(path, np, 0, index_add, &x, msg, n);
+		if (rc == HB_OK && (fds[i] = open(path, O_RDONLY | O_CLOEXEC)) < 0)
+			rc = status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+	}
+	if (rc != HB_OK)
+		goto out;
+	if (x.count < np) {
+		long first = 0;
+
+		while (first < np && x.off[first] >= 0)
+			first++;
+		rc = status_set(msg, n, HB_EINVAL, "%s: %ld of %ld points are missing (the "
+		                "first is point %ld); expected every shard to have finished "
+		                "(%d journal%s found)", dir, np - x.count, np, first, nnames,
+		                nnames == 1 ? "" : "s");
+		goto out;
+	}
+	atomic_begin(&set);
+	set_open = 1;
+	snprintf(path, sizeof path, "%s/runs.csv", dir);
+	if ((runs = atomic_add(&set, path, msg, n)) == NULL) {
+		rc = HB_EIO;
+		goto out;
+	}
+	snprintf(path, sizeof path, "%s/collisions.csv", dir);
+	if ((coll = atomic_add(&set, path, msg, n)) == NULL) {
+		rc = HB_EIO;
+		goto out;
+	}
+	sweep_runs_header(sw, hdr, sizeof hdr);
+	fprintf(runs, "%s\n", hdr);
+	if ((rc = collisions_header(&sc, hdr, sizeof hdr, msg, n)) != HB_OK)
+		goto out;
+	fprintf(coll, "id,%s\n", hdr);
+	for (long id = 0; id < np && rc == HB_OK; id++) {
+		size_t len = x.len[id];
+		const char *p;
+
+		if (len + 1 > cap) {
+			char *nb = realloc(blk, cap = len + 1);
+
+			if (nb == NULL) {
+				rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+				break;
+			}
+			blk = nb;
+		}
+		if (pread(fds[x.file[id]], blk, len, (off_t)x.off[id]) != (ssize_t)len) {
+			rc = status_set(msg, n, HB_EIO, "%s/%s: short read", dir, names[x.file[id]]);
+			break;
+		}
+		blk[len] = '\0';
+		for (p = blk; *p; ) {
+			const char *end = strchr(p, '\n');
+			size_t l = (size_t)(end - p) + 1;
+
+			fwrite(p + 2, 1, l - 2, p[0] == 'r' ? runs : coll);
+			p += l;
+		}
+	}
+out:
+	if (set_open) {
+		if (rc == HB_OK)
+			rc = atomic_commit(&set, msg, n);   /* both files, or neither */
+		else
+			atomic_abort(&set);
+	}
+	for (int i = 0; i < nnames; i++) {
+		if (fds && fds[i] >= 0)
+			close(fds[i]);
+		free(names[i]);
+	}
+	free(fds);
+	free(names);
+	free(blk);
+	free(x.off);
+	free(x.len);
+	free(x.file);
+	sweep_free(sw);
+	return rc;
+}

@@ -1,0 +1,140 @@
+#!/bin/sh
+# hybounce sweep --emit slurm, run for real on a single-node Slurm cluster
+# that this test starts itself (Debian's slurm-wlm and munge, installed by
+# make deps): munged with a fresh key, slurmctld and slurmd from a
+# slurm.conf naming this host, with every state, spool, log and socket in a
+# temporary folder and ports of their own.  The emitted script submits the
+# job array and the dependent merge job; the merged files must equal the
+# one-machine sweep's.  The daemons are stopped by the pids they wrote.
+# Needs root (slurmd runs jobs as their user; munged and slurm as root here).
+# Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
+set -u
+BIN=${HYBOUNCE_BIN:-build/hybounce}
+: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
+export HYBOUNCE_PRESETS
+ok() { echo "ok - $1"; }
+notok() {
+	echo "not ok - $1"
+	[ $# -gt 1 ] && [ -f "$2" ] && sed 's/^/# /' "$2" | tail -n 20
+	return 0
+}
+if [ "$(id -u)" != 0 ]; then
+	echo "ok # SKIP Slurm sweep: starting slurmctld, slurmd and munged needs root"
+	exit 0
+fi
+for c in munged slurmctld slurmd sbatch squeue sinfo scontrol; do
+	if ! command -v $c >/dev/null 2>&1 && [ ! -x /usr/sbin/$c ]; then
+		notok "$c is installed (make deps installs slurm-wlm and munge)"
+		exit 0
+	fi
+done
+PATH=$PATH:/usr/sbin
+
+T=$(mktemp -d /tmp/hybounce-slurm.XXXXXX)
+chmod 755 "$T"
+stop() {
+	for p in slurmd slurmctld munged; do
+		[ -f "$T/$p.pid" ] && kill "$(cat "$T/$p.pid")" 2>/dev/null
+	done
+	i=0
+	while [ $i -lt 50 ]; do
+		alive=0
+		for p in slurmd slurmctld munged; do
+			[ -f "$T/$p.pid" ] && kill -0 "$(cat "$T/$p.pid")" 2>/dev/null && alive=1
+		done
+		[ $alive = 0 ] && break
+		i=$((i + 1))
+		sleep 0.1
+	done
+	rm -rf "$T"
+}
+trap stop EXIT
+H=$(hostname -s)
+# Ports of our own, away from a real cluster's 6817/6818.
+base=$((20000 + $$ % 20000))
+
+mkdir -p "$T/state" "$T/spool" "$T/log"
+dd if=/dev/urandom of="$T/munge.key" bs=1024 count=1 2>/dev/null
+chmod 600 "$T/munge.key"
+if ! munged -f --key-file="$T/munge.key" --socket="$T/munge.sock" --pid-file="$T/munged.pid" \
+    --log-file="$T/log/munged.log" --seed-file="$T/munged.seed" 2>"$T/log/munged.err"; then
+	notok "munged starts" "$T/log/munged.err"
+	exit 0
+fi
+cat >"$T/slurm.conf" <<CONF
+ClusterName=hybounce-test
+SlurmctldHost=$H
+SlurmctldPort=$base
+SlurmdPort=$((base + 1))
+AuthType=auth/munge
+AuthInfo=socket=$T/munge.sock
+CredType=cred/munge
+SlurmUser=root
+SlurmdUser=root
+StateSaveLocation=$T/state
+SlurmdSpoolDir=$T/spool
+SlurmctldPidFile=$T/slurmctld.pid
+SlurmdPidFile=$T/slurmd.pid
+SlurmctldLogFile=$T/log/slurmctld.log
+SlurmdLogFile=$T/log/slurmd.log
+ProctrackType=proctrack/linuxproc
+TaskPlugin=task/none
+SelectType=select/cons_tres
+SelectTypeParameters=CR_Core
+MpiDefault=none
+ReturnToService=2
+JobAcctGatherType=jobacct_gather/none
+AccountingStorageType=accounting_storage/none
+SlurmdParameters=config_overrides
+NodeName=$H CPUs=$(nproc) State=UNKNOWN
+PartitionName=debug Nodes=ALL Default=YES MaxTime=INFINITE State=UP
+CONF
+export SLURM_CONF="$T/slurm.conf"
+if ! slurmctld -i -f "$SLURM_CONF" 2>"$T/log/ctld.err" || ! slurmd -f "$SLURM_CONF" 2>"$T/log/d.err"; then
+	notok "slurmctld and slurmd start" "$T/log/slurmctld.log"
+	exit 0
+fi
+i=0
+while [ $i -lt 300 ]; do
+	sinfo -h -o %t 2>/dev/null | grep -q '^idle' && break
+	i=$((i + 1))
+	sleep 0.2
+done
+if sinfo -h -o %t 2>/dev/null | grep -q '^idle'; then
+	ok "a single-node Slurm cluster comes up ($H, $((i / 5)) s)"
+else
+	notok "a single-node Slurm cluster comes up" "$T/log/slurmctld.log"
+	exit 0
+fi
+
+P=permanent-contact-shccl
+set -- --vary "initial.x0=5um:60um:10" --vary "law.c=1e9,4.3e9"
+"$BIN" sweep $P "$@" --quiet --out "$T/one" 2>"$T/err" || notok "one-machine sweep" "$T/err"
+"$BIN" sweep $P "$@" --out "$T/cluster" --emit slurm --shards 4 >"$T/job.sh" 2>"$T/err"
+rc=$?
+if [ $rc -eq 0 ] && grep -q -- '--array=0-3' "$T/job.sh" && grep -q 'SLURM_ARRAY_TASK_ID/4' "$T/job.sh" &&
+    grep -q -- '--dependency=afterok:' "$T/job.sh" && sh -n "$T/job.sh"; then
+	ok "--emit slurm writes a job-array script (--array=0-3, shard from SLURM_ARRAY_TASK_ID, afterok merge)"
+else notok "--emit slurm writes a job-array script (exit $rc)" "$T/job.sh"; fi
+(cd "$T" && sh "$T/job.sh") >"$T/submit" 2>&1
+rc=$?
+merge=$(sed -n 's/^submitted array job \([0-9]*\) and merge job \([0-9]*\)$/\2/p' "$T/submit")
+if [ $rc -eq 0 ] && [ -n "$merge" ]; then ok "sh job.sh submits the array and the merge job"
+else notok "sh job.sh submits the array and the merge job (exit $rc)" "$T/submit"; exit 0; fi
+i=0
+while [ $i -lt 600 ]; do
+	[ -z "$(squeue -h 2>/dev/null)" ] && break
+	i=$((i + 1))
+	sleep 0.2
+done
+state=$(scontrol show job "$merge" 2>/dev/null | sed -n 's/.*JobState=\([A-Z_]*\).*/\1/p')
+nocpu() { sed 's/,[^,]*$//' "$1"; }
+if [ "$state" = COMPLETED ] && [ -f "$T/cluster/runs.csv" ] &&
+    nocpu "$T/one/runs.csv" >"$T/a" && nocpu "$T/cluster/runs.csv" >"$T/b" && cmp -s "$T/a" "$T/b" &&
+    cmp -s "$T/one/collisions.csv" "$T/cluster/collisions.csv"; then
+	ok "Slurm ran the 4 shards and the merge: runs.csv and collisions.csv equal the one-machine sweep"
+else
+	notok "Slurm ran the shards and the merge (merge job $merge: ${state:-unknown})" "$T/log/slurmctld.log"
+	cat "$T"/cluster/slurm-*.out 2>/dev/null | sed 's/^/# /' | tail -n 20
+fi
+exit 0
