@@ -52,6 +52,9 @@ TUI_CFLAGS  := $(filter-out -D_XOPEN_SOURCE=%,$(shell $(PKG_CONFIG) --cflags $(C
 TUI_LIBS    := $(shell $(PKG_CONFIG) --libs $(CURSES_PC) 2>/dev/null)
 TEST_CFLAGS := $(shell $(PKG_CONFIG) --cflags criterion 2>/dev/null)
 TEST_LIBS   := $(shell $(PKG_CONFIG) --libs criterion 2>/dev/null)
+# aubio (onset detection for `hybounce fit` on recordings): onset.o only.
+AUBIO_CFLAGS := $(shell $(PKG_CONFIG) --cflags aubio 2>/dev/null)
+AUBIO_LIBS   := $(shell $(PKG_CONFIG) --libs aubio 2>/dev/null)
 
 CPPFLAGS  += -Iinclude -Iinclude/hybounce -Isrc/core -DHYBOUNCE_VERSION='"$(VERSION)"' \
              -DHYBOUNCE_DATADIR='"$(DATADIR)"' -D_POSIX_C_SOURCE=200809L -D_XOPEN_SOURCE=700
@@ -109,6 +112,8 @@ $(BUILD)/tests/%.o: tests/%.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Isrc/tui $(CORE_CFLAGS) $(TEST_CFLAGS) $(CFLAGS) -c $< -o $@
 
+$(BUILD)/src/core/onset.o: CORE_CFLAGS += $(AUBIO_CFLAGS)
+
 $(CORE_LIB): $(CORE_OBJ)
 	@mkdir -p $(@D)
 	rm -f $@ && ar rcs $@ $^
@@ -122,7 +127,7 @@ $(BUILD)/build-config: FORCE
 $(CORE_OBJ) $(TUI_OBJ) $(CLI_OBJ): $(BUILD)/build-config
 FORCE:
 $(SHLIB): $(CORE_OBJ)
-	$(CC) -shared $(LDFLAGS) -Wl,-soname,$(SHLIB_SO) -Wl,--no-undefined -o $@ $^ $(CORE_LIBS)
+	$(CC) -shared $(LDFLAGS) -Wl,-soname,$(SHLIB_SO) -Wl,--no-undefined -o $@ $^ $(CORE_LIBS) $(AUBIO_LIBS)
 $(PCFILE): hybounce.pc.in $(BUILD)/build-config
 	@mkdir -p $(@D)
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(call pc_rel,$(LIBDIR))|' \
@@ -132,10 +137,10 @@ $(TUI_LIB): $(TUI_OBJ)
 	rm -f $@ && ar rcs $@ $^
 
 $(BIN): $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
-	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(TUI_LIBS) $(CORE_LIBS)
+	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
 
 $(UNIT): $(TEST_OBJ) $(TUI_LIB) $(CORE_LIB)
-	$(CC) $(LDFLAGS) -o $@ $(TEST_OBJ) $(TUI_LIB) $(CORE_LIB) $(TEST_LIBS) $(TUI_LIBS) $(CORE_LIBS)
+	$(CC) $(LDFLAGS) -o $@ $(TEST_OBJ) $(TUI_LIB) $(CORE_LIB) $(TEST_LIBS) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
 
 $(BENCHBIN): $(BENCH_OBJ) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(BENCH_OBJ) $(CORE_LIB) $(CORE_LIBS)
@@ -210,7 +215,7 @@ $(FUZZ_DIR)/obj/%.o: %.c
 $(FUZZ_DIR)/%: tests/fuzz/%.c tests/fuzz/fuzz.h $(FUZZ_OBJ)
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(CPPFLAGS) $(CORE_CFLAGS) $(FUZZ_FLAGS) -fsanitize=fuzzer -o $@ $< \
-	    $(FUZZ_OBJ) $(CORE_LIBS)
+	    $(FUZZ_OBJ) $(CORE_LIBS) $(AUBIO_LIBS)
 
 fuzzers: $(FUZZ_BINS)
 
@@ -268,6 +273,23 @@ clean:
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
 
+# The sweep's threads under ThreadSanitizer (build-tsan/): the engine's
+# writable statics and the same point on many threads at once
+# (tests/cli/sweep_reentrant.sh, which make check runs on the plain build).
+.PHONY: check-tsan
+check-tsan: deps
+	@$(MAKE) --no-print-directory BUILD=build-tsan SAN=thread OPT=-O1 all
+	@TSAN_OPTIONS=halt_on_error=1:exitcode=66 HYBOUNCE_BIN=$(CURDIR)/build-tsan/hybounce \
+	    HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/cli/sweep_reentrant.sh | tee build-tsan/tsan.log; \
+	    ! grep -q '^not ok' build-tsan/tsan.log
+
+# The sweep's speed targets: rate on 2 cores, overhead per point, memory of a
+# 100,000-point sweep (report in build/bench/sweep.txt; about a minute).
+.PHONY: bench-sweep
+bench-sweep: deps
+	@$(MAKE) --no-print-directory all
+	@sh tests/bench/sweep.sh $(BIN) $(BUILD)/bench
+
 # The explorer's key list in the man page and the README, generated from the
 # key table (src/tui/keys.c) between the KEYS-BEGIN and KEYS-END markers;
 # tests/test_tui_keys.c fails when they differ.
@@ -293,20 +315,3 @@ readme-examples: $(BIN)
 	. tests/tui/readme.inc && readme_screen $(abspath $(BIN)) | readme_splice README.md SCREEN \
 	    && readme_batch $(abspath $(BIN)) | readme_splice README.md BATCH
 docs: readme-examples
-
-# The sweep's threads under ThreadSanitizer (build-tsan/): the engine's
-# writable statics and the same point on many threads at once
-# (tests/cli/sweep_reentrant.sh, which make check runs on the plain build).
-.PHONY: check-tsan
-check-tsan: deps
-	@$(MAKE) --no-print-directory BUILD=build-tsan SAN=thread OPT=-O1 all
-	@TSAN_OPTIONS=halt_on_error=1:exitcode=66 HYBOUNCE_BIN=$(CURDIR)/build-tsan/hybounce \
-	    HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/cli/sweep_reentrant.sh | tee build-tsan/tsan.log; \
-	    ! grep -q '^not ok' build-tsan/tsan.log
-
-# The sweep's speed targets: rate on 2 cores, overhead per point, memory of a
-# 100,000-point sweep (report in build/bench/sweep.txt; about a minute).
-.PHONY: bench-sweep
-bench-sweep: deps
-	@$(MAKE) --no-print-directory all
-	@sh tests/bench/sweep.sh $(BIN) $(BUILD)/bench

@@ -5,6 +5,7 @@
  *     hybounce [OPTIONS] [PRESET]          the explorer
  *     hybounce --batch PRESET [OPTIONS]    batch mode (batch.c)
  *     hybounce --list-presets | --list-laws | --help | --version
+ *     hybounce fit PRESET --data FILE --free KEY,...   (fit_cmd.c)
  *
  * Exit status: 0 success; 1 the run failed numerically; 2 bad input
  * (unknown option, bad preset, bad --set, unwritable export path) or
@@ -25,6 +26,7 @@
 #include "app.h"
 #include "batch.h"
 #include "sweep_cli.h"
+#include "fit_cmd.h"
 
 #define PROG "hybounce"
 #define DEFAULT_PRESET "steel-on-bitumen"
@@ -65,6 +67,8 @@ DEFAULT_PRESET ")\n"
 "                [--collisions FILE] [--jumps] [--check] [--quiet]\n"
 "       hybounce --list-presets | --list-laws | --help | --version\n"
 "       hybounce sweep PRESET --vary KEY=SPEC... --out DIR   (see hybounce sweep --help)\n"
+"       hybounce fit PRESET --data FILE --free KEY[,KEY...] [OPTIONS]\n"
+"                               fit parameters to measurements (hybounce fit --help)\n"
 "\n"
 "Repeated impacts of two bodies under incremental contact laws, as a hybrid\n"
 "system (flows and jumps over hybrid time (t, j)).\n"
@@ -156,6 +160,12 @@ hybounce_main(int argc, char **argv)
 
 	if (argc > 1 && strcmp(argv[1], "sweep") == 0)
 		return sweep_main(argc - 1, argv + 1);   /* hybounce sweep ... (sweep.c) */
+	if (argc > 1 && strcmp(argv[1], "fit") == 0) {
+		static char fitprog[] = PROG " fit";
+
+		argv[1] = fitprog;
+		return fit_main(argc - 1, argv + 1);
+	}
 	memset(&bo, 0, sizeof bo);
 	sets = calloc((size_t)argc + 1, sizeof *sets);
 	if (sets == NULL) {

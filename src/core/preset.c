@@ -586,6 +586,37 @@ preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
 /* Finding presets */
 
 /*
+ * The folders near the running executable (Linux /proc/self/exe):
+ * BIN/../presets (build/hybounce in the source tree) and
+ * BIN/../share/hybounce/presets (PREFIX/bin/hybounce installed anywhere),
+ * those that exist, written into out[0..1].  Returns how many.
+ */
+static int
+exe_dirs(char out[2][1024])
+{
+	static const char *const rel[] = { "/../presets", "/../share/hybounce/presets" };
+	char exe[1024], *slash;
+	ssize_t l = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	struct stat st;
+	int k = 0;
+
+	if (l <= 0)
+		return 0;
+	exe[l] = '\0';
+	slash = strrchr(exe, '/');
+	if (slash == NULL)
+		return 0;
+	*slash = '\0';
+	for (size_t i = 0; i < sizeof rel / sizeof rel[0]; i++) {
+		if ((size_t)snprintf(out[k], sizeof out[k], "%s%s", exe, rel[i]) >= sizeof out[k])
+			continue;
+		if (stat(out[k], &st) == 0 && S_ISDIR(st.st_mode))
+			k++;
+	}
+	return k;
+}
+
+/*
  * Any number of folders: the entries of $HYBOUNCE_PRESETS split into one
  * block per thread (a thread-specific value, freed when the thread ends),
  * built again only when HYBOUNCE_PRESETS changes, so that a list returned
@@ -619,48 +650,17 @@ preset_dirs_key_make(void)
 	(void)pthread_key_create(&preset_dirs_key, dirs_cache_free);
 }
 
-/*
- * The folders near the running executable (Linux /proc/self/exe):
- * BIN/../presets (build/hybounce in the source tree) and
- * BIN/../share/hybounce/presets (PREFIX/bin/hybounce installed anywhere),
- * those that exist, into out.  Returns how many.
- */
-static int
-near_find(char out[2][1024])
-{
-	static const char *const rel[] = { "/../presets", "/../share/hybounce/presets" };
-	char exe[1024], *slash;
-	ssize_t l = readlink("/proc/self/exe", exe, sizeof exe - 1);
-	struct stat st;
-	int n = 0;
-
-	if (l <= 0)
-		return 0;
-	exe[l] = '\0';
-	slash = strrchr(exe, '/');
-	if (slash == NULL)
-		return 0;
-	*slash = '\0';
-	for (size_t i = 0; i < sizeof rel / sizeof rel[0]; i++) {
-		if ((size_t)snprintf(out[n], sizeof out[0], "%s%s", exe, rel[i]) >= sizeof out[0])
-			continue;
-		if (stat(out[n], &st) == 0 && S_ISDIR(st.st_mode))
-			n++;
-	}
-	return n;
-}
-
 const char *const *
 preset_dirs(void)
 {
-	static _Thread_local char datadir[sizeof HYBOUNCE_DATADIR + 16];
+	static _Thread_local char datadir[sizeof HYBOUNCE_DATADIR + 16], near[2][1024];
 	static _Thread_local const char *fallback[3];
 	static const char here[] = "presets";
 	const char *env = getenv("HYBOUNCE_PRESETS");
 	struct dirs_cache *c;
-	size_t k = 0, count = 3, len = env != NULL ? strlen(env) + 1 : 0, envlen = len;
-	char *store, near[2][1024];
-	int near_n = 0;
+	size_t k = 0, count = 5, len = env != NULL ? strlen(env) + 1 : 0;
+	int nnear;
+	char *store;
 
 	snprintf(datadir, sizeof datadir, "%s/presets", HYBOUNCE_DATADIR);
 	fallback[0] = here;
@@ -686,11 +686,6 @@ preset_dirs(void)
 	c->seen = NULL;
 	c->dirs = NULL;
 	c->built = 1;
-	near_n = near_find(near);
-	for (int i = 0; i < near_n; i++) {
-		count++;
-		len += strlen(near[i]) + 1;
-	}
 	if (env != NULL)
 		for (const char *p = env; *p != '\0'; p++)
 			count += *p == ':';
@@ -703,7 +698,7 @@ preset_dirs(void)
 	}
 	store = (char *)(c->dirs + count + 1);
 	if (env != NULL)
-		memcpy(store, env, envlen);
+		memcpy(store, env, len);
 	for (char *p = env != NULL ? store : NULL; p != NULL && *p != '\0';) {
 		char *q = strchr(p, ':');
 
@@ -715,12 +710,9 @@ preset_dirs(void)
 	}
 	c->dirs[k++] = here;
 	c->dirs[k++] = datadir;
-	for (int i = 0, off = (int)envlen; i < near_n; i++) {
-		/* the folders beside the program, copied after the entries */
-		memcpy(store + off, near[i], strlen(near[i]) + 1);
-		c->dirs[k++] = store + off;
-		off += (int)strlen(near[i]) + 1;
-	}
+	nnear = exe_dirs(near);
+	for (int i = 0; i < nnear; i++)
+		c->dirs[k++] = near[i];
 	c->dirs[k] = NULL;
 	return c->dirs;
 }

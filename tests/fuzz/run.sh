@@ -24,6 +24,7 @@ for bin in "$@"; do
 	# tests/fuzz/corpus/preset) and dictionary
 	case $name in
 	fuzz_units) seeds=tests/fuzz/corpus/units dict=-dict=tests/fuzz/units.dict ;;
+	fuzz_fitdata) seeds="tests/fuzz/corpus/fitdata examples/fit" dict= ;;
 	*) seeds="tests/fuzz/corpus/preset presets" dict=-dict=tests/fuzz/preset.dict ;;
 	esac
 	if [ "$mode" = smoke ]; then

@@ -20,7 +20,7 @@ keys a C-u
 keys a -l "out/x"
 keys a Enter
 if wait_for a '^wrote out/x-trace\.csv' 50 && keys a m && wait_for a 'messages, oldest first' 30 \
-   && logtext a | grep -Eq 'wrote out/x-trace\.csv, out/x-collisions\.csv and out/x-trace\.preset \([0-9]+ samples, 12 collisions\)' \
+   && logtext a | grep -q 'wrote out/x-trace\.csv, out/x-collisions\.csv and out/x-trace\.preset ([0-9][0-9]* samples, 12 collisions)' \
    && [ -s "$TMP/out/x-trace.csv" ] && [ -s "$TMP/out/x-collisions.csv" ] && [ -s "$TMP/out/x-trace.preset" ]; then
 	ok "export: the message names the three files written"
 else

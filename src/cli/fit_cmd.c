@@ -1,0 +1,501 @@
+/*
+ * fit_cmd.c - `hybounce fit PRESET --data FILE --free KEY[,KEY...]`: reads
+ * the data (a CSV file, or a recording whose onsets give the impact times,
+ * shown first), fits, prints the estimates with standard errors, the
+ * correlation matrix, the residuals and the cost, and writes the fitted
+ * scene as a preset.  Progress goes to stderr, the report to stdout.
+ */
+#include <errno.h>
+#include <stdarg.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <unistd.h>
+
+#include "hybounce/fit.h"
+#include "hybounce/onset.h"
+#include "hybounce/preset.h"
+#include "hybounce/scene.h"
+#include "hybounce/status.h"
+#include "fit_cmd.h"
+
+#define PROG "hybounce"
+
+enum { OPT_ONSET_METHOD = 256, OPT_ONSET_THRESHOLD, OPT_ONSET_LEVEL, OPT_MIN_INTERVAL,
+       OPT_MAX_ITER, OPT_RESIDUALS };
+
+static const struct option long_options[] = {
+	{ "data",            required_argument, NULL, 'd' },
+	{ "free",            required_argument, NULL, 'f' },
+	{ "set",             required_argument, NULL, 's' },
+	{ "out",             required_argument, NULL, 'o' },
+	{ "residuals",       required_argument, NULL, OPT_RESIDUALS },
+	{ "jobs",            required_argument, NULL, 'j' },
+	{ "max-iter",        required_argument, NULL, OPT_MAX_ITER },
+	{ "onset-method",    required_argument, NULL, OPT_ONSET_METHOD },
+	{ "onset-threshold", required_argument, NULL, OPT_ONSET_THRESHOLD },
+	{ "onset-level",     required_argument, NULL, OPT_ONSET_LEVEL },
+	{ "min-interval",    required_argument, NULL, OPT_MIN_INTERVAL },
+	{ "quiet",           no_argument,       NULL, 'q' },
+	{ "help",            no_argument,       NULL, 'h' },
+	{ NULL, 0, NULL, 0 },
+};
+
+static void
+usage(FILE *f)
+{
+	fprintf(f,
+"usage: hybounce fit PRESET --data FILE --free KEY[,KEY...] [--set KEY=VALUE]...\n"
+"                [--out FILE] [--residuals FILE] [--jobs N] [--max-iter N]\n"
+"                [--onset-method M] [--onset-threshold X] [--onset-level X]\n"
+"                [--min-interval T] [--quiet]\n"
+"\n"
+"Fits the free keys of PRESET so that its runs reproduce the measured\n"
+"collisions (nonlinear least squares, GSL trust region), and writes the\n"
+"fitted scene as a preset.\n"
+"\n"
+"  -d, --data FILE         the measurements: a CSV file with a column t_e (impact\n"
+"                          times of one bouncing sequence), or v_i with e, x_c_r\n"
+"                          and/or t_d (separate drops), each optionally with\n"
+"                          sd_NAME; or a recording (.wav) of a bouncing sequence\n"
+"  -f, --free KEY,...      the keys to fit, e.g. law.c,law.alpha (repeatable)\n"
+"  -s, --set KEY=VALUE     change the preset first, e.g. a start (repeatable)\n"
+"  -o, --out FILE          the fitted preset (default: DATA's name + -fit.preset)\n"
+"      --residuals FILE    write the points as CSV: measured, simulated, sd ...\n"
+"  -j, --jobs N            runs in parallel (default: every core)\n"
+"      --max-iter N        iteration cap (default 100)\n"
+"      --onset-method M    aubio onset method for a recording (default hfc)\n"
+"      --onset-threshold X aubio's peak-picking threshold (default 0.3)\n"
+"      --onset-level X     a click starts where it reaches X of its peak (0.3)\n"
+"      --min-interval T    shortest interval between clicks (default 2 ms)\n"
+"  -q, --quiet             no progress lines on stderr, no residual table\n"
+"\n"
+"Exit status: 0 converged, 1 stopped without converging (iteration cap, no\n"
+"progress, parameters not identifiable), 2 bad input.  See hybounce(1).\n");
+}
+
+static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+static int
+bad(const char *fmt, ...)
+{
+	va_list ap;
+
+	fprintf(stderr, PROG " fit: ");
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "\n");
+	return 2;
+}
+
+/* Applies "KEY=VALUE" to sc; 0 or exit status 2 with the message printed. */
+static int
+apply_set(struct scene *sc, const char *arg)
+{
+	const char *eq = strchr(arg, '=');
+	char key[64], msg[512];
+	size_t kl;
+
+	if (eq == NULL || eq == arg || (kl = (size_t)(eq - arg)) >= sizeof key)
+		return bad("--set '%s': expected KEY=VALUE, e.g. --set law.c=0.4", arg);
+	memcpy(key, arg, kl);
+	key[kl] = '\0';
+	while (kl > 0 && (key[kl - 1] == ' ' || key[kl - 1] == '\t'))
+		key[--kl] = '\0';
+	msg[0] = '\0';
+	if (scene_set(sc, key, eq + 1, msg, sizeof msg) != HB_OK)
+		return bad("--set %s: %s", arg, msg);
+	return 0;
+}
+
+/* Parses a positive whole number for an option. */
+static int
+parse_int(const char *opt, const char *s, int *out)
+{
+	char *end;
+	long v;
+
+	errno = 0;
+	v = strtol(s, &end, 10);
+	if (*s == '\0' || *end != '\0' || errno != 0 || v < 1 || v > 100000)
+		return bad("%s '%s': accepted: a whole number from 1 to 100000", opt, s);
+	*out = (int)v;
+	return 0;
+}
+
+static int
+parse_pos(const char *opt, const char *s, double *out)
+{
+	char *end;
+	double v = strtod(s, &end);
+
+	if (*s == '\0' || *end != '\0' || !(v > 0) || !isfinite(v))
+		return bad("%s '%s': accepted: a number > 0", opt, s);
+	*out = v;
+	return 0;
+}
+
+/* 1 if path is a recording: a .wav name or a RIFF header. */
+static int
+is_recording(const char *path)
+{
+	size_t len = strlen(path);
+	char head[4] = { 0 };
+	FILE *f;
+
+	if (len > 4 && strcasecmp(path + len - 4, ".wav") == 0)
+		return 1;
+	if ((f = fopen(path, "rb")) == NULL)
+		return 0;
+	if (fread(head, 1, 4, f) != 4)
+		head[0] = 0;
+	fclose(f);
+	return memcmp(head, "RIFF", 4) == 0;
+}
+
+/*
+ * 0 if a file can be created at path (its folder exists and is writable),
+ * checked before the fit so that a long fit does not end in a bad --out.
+ */
+static int
+check_out(const char *opt, const char *path)
+{
+	char dir[4096];
+	const char *slash = strrchr(path, '/');
+
+	if (slash == NULL)
+		snprintf(dir, sizeof dir, ".");
+	else if (slash == path)
+		snprintf(dir, sizeof dir, "/");
+	else
+		snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
+	if (access(dir, W_OK) != 0)
+		return bad("%s %s: %s: %s; accepted: a file in a writable folder", opt, path, dir,
+		    strerror(errno));
+	return 0;
+}
+
+/* The default output: the data file's base name without extension + -fit.preset. */
+static void
+default_out(const char *data, char *out, size_t n)
+{
+	const char *b = strrchr(data, '/');
+	const char *dot;
+	int len;
+
+	b = b != NULL ? b + 1 : data;
+	dot = strrchr(b, '.');
+	len = dot != NULL && dot != b ? (int)(dot - b) : (int)strlen(b);
+	snprintf(out, n, "%.*s-fit.preset", len, b);
+}
+
+static void
+progress(void *ctx, int iter, double cost, long runs)
+{
+	(void)ctx;
+	fprintf(stderr, PROG " fit: iteration %d: cost %.6g (%ld runs)\n", iter, cost, runs);
+}
+
+/* Shows the onsets found in a recording and the restitution they imply. */
+static void
+print_onsets(const char *path, const struct onset_result *on)
+{
+	printf("onsets      %zu in %s (%.0f Hz, %.3f s, noise rms %.2g of full scale)\n",
+	    on->n, path, on->samplerate, on->duration, on->noise);
+	printf("   i      t [s]    interval [ms]   e ~ ratio of intervals   peak\n");
+	for (size_t i = 0; i < on->n; i++) {
+		printf("%4zu %10.6f", i, on->t[i]);
+		if (i > 0)
+			printf(" %16.3f", 1e3 * (on->t[i] - on->t[i - 1]));
+		else
+			printf(" %16s", "-");
+		if (i > 1)
+			printf(" %24.4f", (on->t[i] - on->t[i - 1]) / (on->t[i - 1] - on->t[i - 2]));
+		else
+			printf(" %24s", "-");
+		printf(" %6.3f\n", on->peak[i]);
+	}
+	printf("            (e of collision i-1 ~ interval i / interval i-1, neglecting the "
+	       "contact's duration)\n");
+}
+
+/* Writes the points as CSV to a temporary name and renames it. */
+static int
+write_residuals(const char *path, const struct fit_result *r)
+{
+	char tmp[4096];
+	FILE *f;
+	int ok;
+
+	snprintf(tmp, sizeof tmp, "%s.tmp%ld", path, (long)getpid());
+	if ((f = fopen(tmp, "w")) == NULL)
+		return bad("--residuals %s: %s", path, strerror(errno));
+	fprintf(f, "point,row,observable,measured,simulated,sd,resid,start\n");
+	for (size_t k = 0; k < r->npoints; k++) {
+		const struct fit_point *p = &r->point[k];
+
+		fprintf(f, "%zu,%zu,%s,%.17g,%.17g,%.17g,%.17g,%.17g\n", k, p->row,
+		    fit_obs_name(p->obs), p->measured, p->simulated, p->sd, p->resid, p->start);
+	}
+	ok = !ferror(f);
+	ok = fclose(f) == 0 && ok;
+	if (!ok || rename(tmp, path) != 0) {
+		int e = errno;
+
+		unlink(tmp);
+		return bad("--residuals %s: %s", path, strerror(e));
+	}
+	fprintf(stderr, "wrote %s\n", path);
+	return 0;
+}
+
+static void
+report(const struct fit_result *r, const struct fit_data *d, int quiet)
+{
+	int p = r->np;
+
+	printf("stopped     %s after %d iteration%s, %ld runs\n", r->why, r->iter,
+	    r->iter == 1 ? "" : "s", r->runs);
+	printf("cost        %.6g at the start, %.6g at the estimates (sum of squared "
+	       "residuals / sd, %zu points)\n", r->cost0, r->cost, r->npoints);
+	printf("\nestimates   (SI units; standard errors %s)\n", r->sd_scaled
+	    ? "scaled by the residual variance cost/(N-P): the data carry no sd"
+	    : "from the data's standard deviations");
+	printf("  %-14s %14s %16s %12s %9s  %s\n", "key", "start", "estimate", "std error",
+	    "relative", "unit");
+	for (int i = 0; i < p; i++) {
+		struct scene_keyinfo ki;
+
+		if (scene_get(&r->fitted, r->key[i], &ki, NULL) != HB_OK)
+			ki.unit[0] = '\0';
+		printf("  %-14s %14.6g %16.9g %12.3g %9.2g  %s\n", r->key[i], r->start[i],
+		    r->value[i], r->se[i], r->se[i] / fabs(r->value[i]), ki.unit);
+	}
+	if (p > 1) {
+		printf("\ncorrelation\n  %-14s", "");
+		for (int j = 0; j < p; j++)
+			printf(" %10.10s", r->key[j]);
+		printf("\n");
+		for (int i = 0; i < p; i++) {
+			printf("  %-14s", r->key[i]);
+			for (int j = 0; j < p; j++)
+				printf(" %10.4f", r->corr[i * FIT_MAX_FREE + j]);
+			printf("\n");
+		}
+	}
+	if (quiet)
+		return;
+	printf("\nresiduals   (%s)\n", d->kind == FIT_SEQUENCE
+	    ? "t_e: time since the first impact" : "one run per drop");
+	printf("  %4s %4s %-6s %16s %16s %12s %10s\n", "pt", "row", "obs", "measured",
+	    "simulated", "sd", "resid/sd");
+	for (size_t k = 0; k < r->npoints; k++) {
+		const struct fit_point *pt = &r->point[k];
+
+		printf("  %4zu %4zu %-6s %16.9g %16.9g %12.3g %10.3g\n", k, pt->row + 1,
+		    fit_obs_name(pt->obs), pt->measured, pt->simulated, pt->sd, pt->resid);
+	}
+	fit_plot(stdout, r, d);
+}
+
+int
+fit_main(int argc, char **argv)
+{
+	const char *data = NULL, *out = NULL, *resid_path = NULL, *preset;
+	const char **sets = NULL, *keys[FIT_MAX_FREE];
+	char *freebuf = NULL, path[1024], outbuf[1024], msg[1024];
+	struct onset_options oo = { 0 };
+	struct fit_options fo = { 0 };
+	struct fit_data d = { 0 };
+	struct fit_result r = { 0 };
+	struct scene sc;
+	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2;
+	size_t freelen = 0;
+
+	if ((sets = calloc((size_t)argc + 1, sizeof *sets)) == NULL)
+		return bad("out of memory");
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "d:f:s:o:j:qh", long_options, NULL)) != -1) {
+		switch (c) {
+		case 'd': data = optarg; break;
+		case 'f': {
+			size_t l = strlen(optarg);
+			char *nb = realloc(freebuf, freelen + l + 2);
+
+			if (nb == NULL) {
+				status = bad("out of memory");
+				goto out;
+			}
+			freebuf = nb;
+			if (freelen > 0)
+				freebuf[freelen++] = ',';
+			memcpy(freebuf + freelen, optarg, l + 1);
+			freelen += l;
+			break;
+		}
+		case 's': sets[nsets++] = optarg; break;
+		case 'o': out = optarg; break;
+		case OPT_RESIDUALS: resid_path = optarg; break;
+		case 'j':
+			if (parse_int("--jobs", optarg, &fo.jobs))
+				goto out;
+			break;
+		case OPT_MAX_ITER:
+			if (parse_int("--max-iter", optarg, &fo.max_iter))
+				goto out;
+			break;
+		case OPT_ONSET_METHOD: oo.method = optarg; break;
+		case OPT_ONSET_THRESHOLD:
+			if (parse_pos("--onset-threshold", optarg, &oo.threshold))
+				goto out;
+			break;
+		case OPT_ONSET_LEVEL:
+			if (parse_pos("--onset-level", optarg, &oo.level))
+				goto out;
+			break;
+		case OPT_MIN_INTERVAL:
+			if (parse_pos("--min-interval", optarg, &oo.min_interval))
+				goto out;
+			break;
+		case 'q': quiet = 1; break;
+		case 'h':
+			usage(stdout);
+			status = 0;
+			goto out;
+		default:
+			fprintf(stderr, "Try 'hybounce fit --help'.\n");
+			goto out;
+		}
+	}
+	if (optind >= argc) {
+		status = bad("no preset; usage: hybounce fit PRESET --data FILE --free KEY,...");
+		goto out;
+	}
+	if (argc - optind > 1) {
+		status = bad("more than one preset given ('%s' ...)", argv[optind + 1]);
+		goto out;
+	}
+	preset = argv[optind];
+	if (data == NULL) {
+		status = bad("--data FILE is required (a CSV of measurements or a .wav recording)");
+		goto out;
+	}
+	if (freebuf == NULL) {
+		status = bad("--free KEY[,KEY...] is required, e.g. --free law.c,law.alpha");
+		goto out;
+	}
+	for (char *save = NULL, *k = strtok_r(freebuf, ", ", &save); k != NULL;
+	     k = strtok_r(NULL, ", ", &save)) {
+		if (nkeys == FIT_MAX_FREE) {
+			status = bad("--free: more than %d keys", FIT_MAX_FREE);
+			goto out;
+		}
+		keys[nkeys++] = k;
+	}
+	if (nkeys == 0) {
+		status = bad("--free: no key given, e.g. --free law.c,law.alpha");
+		goto out;
+	}
+
+	msg[0] = '\0';
+	if (preset_resolve(preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
+		status = bad("preset '%s': %s", preset, msg);
+		goto out;
+	}
+	if (preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
+		status = bad("%s", msg);
+		goto out;
+	}
+	for (int i = 0; i < nsets; i++)
+		if (apply_set(&sc, sets[i]) != 0)
+			goto out;
+	if (scene_validate(&sc, msg, sizeof msg) != HB_OK) {
+		status = bad("%s: %s", path, msg);
+		goto out;
+	}
+	if (out == NULL) {
+		default_out(data, outbuf, sizeof outbuf);
+		out = outbuf;
+	}
+	if (check_out("--out", out) != 0
+	    || (resid_path != NULL && check_out("--residuals", resid_path) != 0))
+		goto out;
+
+	printf("hybounce %s fit\n", HYBOUNCE_VERSION);
+	printf("preset      %s (%s)\n", preset, path);
+	if (is_recording(data)) {
+		struct onset_result on;
+
+		if (onset_detect(data, &oo, &on, msg, sizeof msg) != HB_OK) {
+			onset_result_free(&on);
+			status = bad("--data %s", msg);
+			goto out;
+		}
+		print_onsets(data, &on);
+		if (fit_data_from_times(on.t, NULL, on.n, data, &d, msg, sizeof msg) != HB_OK) {
+			onset_result_free(&on);
+			status = bad("--data %s", msg);
+			goto out;
+		}
+		onset_result_free(&on);
+	} else if (fit_data_load(data, &d, msg, sizeof msg) != HB_OK) {
+		status = bad("--data %s", msg);
+		goto out;
+	}
+	printf("data        %s: %s, %zu row%s, %zu points, %s\n", data,
+	    d.kind == FIT_SEQUENCE ? "one bouncing sequence (t_e; the first aligns the clocks)"
+	                           : "separate drops (one run per row from contact at v_i)",
+	    d.n, d.n == 1 ? "" : "s", fit_npoints(&d),
+	    d.sd[d.kind == FIT_SEQUENCE ? FIT_OBS_TE : FIT_OBS_E] != NULL
+	    ? "weighted by sd" : "no standard deviations");
+	printf("free        ");
+	for (int i = 0; i < nkeys; i++)
+		printf("%s%s", i ? ", " : "", keys[i]);
+	printf("\n");
+	fflush(stdout);
+
+	fo.keys = keys;
+	fo.nkeys = nkeys;
+	fo.progress = quiet ? NULL : progress;
+	if (fit_run(&sc, &d, &fo, &r, msg, sizeof msg) != HB_OK) {
+		status = bad("%s", msg);
+		goto out;
+	}
+	report(&r, &d, quiet);
+
+	/* The fitted scene: named after the data, reproducing the best fit. */
+	{
+		char name[sizeof r.fitted.name], desc[sizeof r.fitted.description];
+		size_t len;
+
+		snprintf(name, sizeof name, "%.70s (fitted)", sc.name);
+		snprintf(desc, sizeof desc, "Fitted to %.80s:", data);
+		for (int i = 0; i < r.np; i++) {
+			len = strlen(desc);
+			snprintf(desc + len, sizeof desc - len, " %s = %.9g", r.key[i], r.value[i]);
+		}
+		len = strlen(desc);
+		snprintf(desc + len, sizeof desc - len, " (%.60s).", fit_reason_str(r.reason));
+		memcpy(r.fitted.name, name, sizeof name);
+		memcpy(r.fitted.description, desc, sizeof desc);
+	}
+	if (preset_save(out, &r.fitted, msg, sizeof msg) != HB_OK) {
+		status = bad("--out %s", msg);
+		goto out;
+	}
+	fflush(stdout);
+	fprintf(stderr, "wrote %s\n", out);
+	if (resid_path != NULL && write_residuals(resid_path, &r) != 0)
+		goto out;
+	status = r.reason <= FIT_CONVERGED_COST ? 0 : 1;
+out:
+	fit_result_free(&r);
+	fit_data_free(&d);
+	free(freebuf);
+	free(sets);
+	return status;
+}

@@ -1,0 +1,595 @@
+/*
+ * fit.c - nonlinear least squares over runs of the simulator (GSL
+ * gsl_multifit_nlinear, trust region): the residuals are
+ *
+ *     r_k(u) = (y_k(theta(u)) - y_k^meas) / sd_k,   cost = sum_k r_k^2,
+ *
+ * y_k the simulated observables (fit_eval.c) and theta(u) the transform
+ * that keeps each free parameter in its range (fit_param.c).  The Jacobian
+ * is taken by forward differences in u, all P perturbed runs at once on
+ * the worker threads.  Identifiability is read from the singular values of
+ * the column-scaled Jacobian: a direction whose singular value is below
+ * FIT_SINGULAR_RATIO of the largest cannot be told apart by the data within
+ * the accuracy of the differences, and its parameters are named.
+ *
+ * Errors: the covariance of u is (J^T J)^-1 (times cost / (N - P) when the
+ * data carry no standard deviations), that of theta is T C T^T with
+ * T = d theta / d u (first-order propagation).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_multifit_nlinear.h>
+
+#include "hybounce/fit.h"
+#include "hybounce/status.h"
+#include "fit_impl.h"
+
+#define FIT_SINGULAR_RATIO 1e-4 /* s_min / s_max below this: not identifiable */
+#define FIT_FAIL_RESID 1e6      /* residual of a point whose run failed */
+
+struct ctx {
+	const struct scene *sc;
+	const struct fit_data *d;
+	const struct fit_param *fp;
+	int np;
+	size_t npts;
+	int jobs;
+	double *meas, *sd;    /* per point */
+	double h_rel;         /* finite-difference step, relative */
+	long runs;
+	/* the last f evaluation, reused by df at the same x */
+	double *last_u, *last_r;
+	int have_last;
+	struct scene *scs;    /* np + 1 scenes */
+	double *y;            /* (np + 1) * npts simulated values */
+	int *fail;
+};
+
+static const char *const reasons[] = {
+	[FIT_CONVERGED_STEP] = "converged (the step became small)",
+	[FIT_CONVERGED_GRAD] = "converged (the gradient became small)",
+	[FIT_CONVERGED_COST] = "converged (the cost stopped decreasing)",
+	[FIT_MAXITER] = "stopped at the iteration cap",
+	[FIT_NOPROGRESS] = "stopped: no step lowered the cost",
+	[FIT_SINGULAR] = "stopped: singular Jacobian",
+	[FIT_FAILED] = "stopped: runs failed",
+	[FIT_RUNNING] = "running",
+};
+
+const char *
+fit_reason_str(int reason)
+{
+	return reason >= 0 && reason <= FIT_RUNNING ? reasons[reason] : "?";
+}
+
+void
+fit_result_free(struct fit_result *r)
+{
+	if (r == NULL)
+		return;
+	free(r->point);
+	r->point = NULL;
+	r->npoints = 0;
+}
+
+/* Fills the measured values and their sd, point by point (see fit_eval). */
+static void
+points_of(const struct fit_data *d, double *meas, double *sd, int *row, int *obs, int *scaled)
+{
+	size_t k = 0;
+
+	*scaled = 0;
+	if (d->kind == FIT_SEQUENCE) {
+		double m = 0;
+
+		for (size_t i = 1; i < d->n; i++)
+			m = fmax(m, fabs(d->col[FIT_OBS_TE][i] - d->col[FIT_OBS_TE][0]));
+		for (size_t i = 1; i < d->n; i++, k++) {
+			meas[k] = d->col[FIT_OBS_TE][i] - d->col[FIT_OBS_TE][0];
+			/* the difference of two times: the variances add */
+			sd[k] = d->sd[FIT_OBS_TE] != NULL
+			    ? hypot(d->sd[FIT_OBS_TE][i], d->sd[FIT_OBS_TE][0]) : m;
+			row[k] = (int)i;
+			obs[k] = FIT_OBS_TE;
+		}
+		*scaled = d->sd[FIT_OBS_TE] == NULL;
+		return;
+	}
+	for (int ob = FIT_OBS_E; ob < FIT_OBS_COUNT; ob++) {
+		double m = 0;
+
+		if (d->col[ob] == NULL)
+			continue;
+		for (size_t i = 0; i < d->n; i++)
+			m = fmax(m, fabs(d->col[ob][i]));
+		if (!(m > 0))
+			m = 1;
+		if (d->sd[ob] == NULL)
+			*scaled = 1;
+		for (size_t i = 0; i < d->n; i++, k++) {
+			meas[k] = d->col[ob][i];
+			sd[k] = d->sd[ob] != NULL ? d->sd[ob][i] : m;
+			row[k] = (int)i;
+			obs[k] = ob;
+		}
+	}
+}
+
+/* Simulates the scenes for parameter vectors u[0..ns-1] into c->y. */
+static int
+eval_many(struct ctx *c, const double *const *u, int ns, char *msg, size_t n)
+{
+	double th[FIT_MAX_FREE];
+
+	for (int s = 0; s < ns; s++) {
+		c->scs[s] = *c->sc;
+		if (fit_param_apply(&c->scs[s], c->fp, c->np, u[s], th, NULL, msg, n) != HB_OK)
+			return HB_EINVAL;
+	}
+	return fit_eval(c->scs, ns, c->d, c->jobs, NAN, c->y, c->fail, &c->runs, msg, n);
+}
+
+/* Residuals of simulated values y (scene s) into r. */
+static void
+resid_of(const struct ctx *c, const double *y, int failed, double *r)
+{
+	for (size_t k = 0; k < c->npts; k++)
+		r[k] = failed || !isfinite(y[k]) ? FIT_FAIL_RESID : (y[k] - c->meas[k]) / c->sd[k];
+}
+
+static int
+f_cb(const gsl_vector *x, void *params, gsl_vector *f)
+{
+	struct ctx *c = params;
+	double u[FIT_MAX_FREE];
+	const double *up = u;
+	char m[256];
+
+	for (int j = 0; j < c->np; j++)
+		u[j] = gsl_vector_get(x, (size_t)j);
+	if (eval_many(c, &up, 1, m, sizeof m) != HB_OK)
+		c->fail[0] = 1;
+	resid_of(c, c->y, c->fail[0], f->data);
+	memcpy(c->last_u, u, (size_t)c->np * sizeof *u);
+	memcpy(c->last_r, f->data, c->npts * sizeof *c->last_r);
+	c->have_last = 1;
+	return GSL_SUCCESS;
+}
+
+static int
+df_cb(const gsl_vector *x, void *params, gsl_matrix *J)
+{
+	struct ctx *c = params;
+	double u[FIT_MAX_FREE + 1][FIT_MAX_FREE], h[FIT_MAX_FREE];
+	const double *up[FIT_MAX_FREE + 1];
+	double *r0, *r1;
+	int base = 1, same = c->have_last;
+	char m[256];
+
+	for (int j = 0; j < c->np; j++) {
+		u[0][j] = gsl_vector_get(x, (size_t)j);
+		same = same && c->last_u[j] == u[0][j];
+	}
+	base = same ? 0 : 1; /* f at x is known when GSL evaluated it last */
+	for (int j = 0; j < c->np; j++) {
+		memcpy(u[j + 1], u[0], (size_t)c->np * sizeof u[0][0]);
+		h[j] = c->h_rel * fmax(fabs(u[0][j]), 1);
+		u[j + 1][j] += h[j];
+		/* the step as represented, so the quotient uses the exact difference */
+		h[j] = u[j + 1][j] - u[0][j];
+	}
+	for (int s = 0; s <= c->np; s++)
+		up[s] = u[s];
+	if (eval_many(c, up + 1 - base, c->np + base, m, sizeof m) != HB_OK)
+		for (int s = 0; s <= c->np; s++)
+			c->fail[s] = 1;
+	r0 = malloc(2 * c->npts * sizeof *r0);
+	if (r0 == NULL)
+		return GSL_ENOMEM;
+	r1 = r0 + c->npts;
+	if (same)
+		memcpy(r0, c->last_r, c->npts * sizeof *r0);
+	else
+		resid_of(c, c->y, c->fail[0], r0);
+	for (int j = 0; j < c->np; j++) {
+		int s = j + base;
+
+		resid_of(c, c->y + (size_t)s * c->npts, c->fail[s], r1);
+		for (size_t k = 0; k < c->npts; k++)
+			gsl_matrix_set(J, k, (size_t)j, (r1[k] - r0[k]) / h[j]);
+	}
+	free(r0);
+	return GSL_SUCCESS;
+}
+
+/*
+ * Singular values of J with its columns scaled to unit norm: the condition
+ * number, and the parameters of the weakest direction when it is below
+ * FIT_SINGULAR_RATIO (or a column is zero: a parameter with no effect).
+ * Returns 1 when not identifiable.
+ */
+static int
+identifiability(const gsl_matrix *J, const struct fit_param *fp, int np, double *cond,
+                char *names, size_t nn)
+{
+	size_t n = J->size1, p = J->size2;
+	gsl_matrix *A, *V;
+	gsl_vector *S, *work;
+	int bad = 0;
+
+	names[0] = '\0';
+	*cond = NAN;
+	for (size_t j = 0; j < p; j++) {
+		gsl_vector_const_view col = gsl_matrix_const_column(J, j);
+
+		if (!(gsl_blas_dnrm2(&col.vector) > 0)) {
+			snprintf(names, nn, "%s (no effect on these data)", fp[j].key);
+			*cond = INFINITY;
+			return 1;
+		}
+	}
+	if (n < p)
+		return 0;
+	A = gsl_matrix_alloc(n, p);
+	V = gsl_matrix_alloc(p, p);
+	S = gsl_vector_alloc(p);
+	work = gsl_vector_alloc(p);
+	if (A == NULL || V == NULL || S == NULL || work == NULL)
+		goto out;
+	gsl_matrix_memcpy(A, J);
+	for (size_t j = 0; j < p; j++) {
+		gsl_vector_view col = gsl_matrix_column(A, j);
+
+		gsl_vector_scale(&col.vector, 1 / gsl_blas_dnrm2(&col.vector));
+	}
+	if (gsl_linalg_SV_decomp(A, V, S, work) != GSL_SUCCESS)
+		goto out;
+	*cond = gsl_vector_get(S, 0) / gsl_vector_get(S, p - 1);
+	if (gsl_vector_get(S, p - 1) < FIT_SINGULAR_RATIO * gsl_vector_get(S, 0)) {
+		bad = 1;
+		for (size_t j = 0; j < (size_t)np; j++) {
+			size_t len = strlen(names);
+
+			if (fabs(gsl_matrix_get(V, j, p - 1)) > 0.1)
+				snprintf(names + len, nn - len, "%s%s", len ? ", " : "", fp[j].key);
+		}
+	}
+out:
+	gsl_matrix_free(A);
+	gsl_matrix_free(V);
+	gsl_vector_free(S);
+	gsl_vector_free(work);
+	return bad;
+}
+
+/* Standard errors and correlations of theta at u from J (see the top). */
+static void
+errors(const gsl_matrix *J, struct ctx *c, const double *u, struct fit_result *r)
+{
+	int p = c->np;
+	gsl_matrix *C = gsl_matrix_alloc((size_t)p, (size_t)p);
+	double T[FIT_MAX_FREE * FIT_MAX_FREE], th[FIT_MAX_FREE], s2 = 1;
+	double cov[FIT_MAX_FREE * FIT_MAX_FREE];
+	struct scene tmp = *c->sc;
+	char m[256];
+
+	for (int i = 0; i < p; i++)
+		r->se[i] = NAN;
+	for (int i = 0; i < p * p; i++)
+		r->corr[i] = NAN;
+	if (C == NULL || fit_param_apply(&tmp, c->fp, p, u, th, T, m, sizeof m) != HB_OK
+	    || gsl_multifit_nlinear_covar(J, 0.0, C) != GSL_SUCCESS) {
+		gsl_matrix_free(C);
+		return;
+	}
+	if (r->sd_scaled && c->npts > (size_t)p)
+		s2 = r->cost / (double)(c->npts - (size_t)p);
+	for (int i = 0; i < p; i++)
+		for (int j = 0; j < p; j++) {
+			double acc = 0;
+
+			for (int a = 0; a < p; a++)
+				for (int b = 0; b < p; b++)
+					acc += T[i * p + a] * gsl_matrix_get(C, (size_t)a, (size_t)b)
+					    * T[j * p + b];
+			cov[i * p + j] = s2 * acc;
+		}
+	for (int i = 0; i < p; i++)
+		r->se[i] = sqrt(cov[i * p + i]);
+	for (int i = 0; i < p; i++)
+		for (int j = 0; j < p; j++)
+			r->corr[i * FIT_MAX_FREE + j] = cov[i * p + j] / (r->se[i] * r->se[j]);
+	gsl_matrix_free(C);
+}
+
+/* The fit in progress (fit.h): the solver, its callbacks' context, the result so far. */
+struct fit {
+	struct ctx c;                 /* c.sc -> scene, c.fp -> fp */
+	struct scene scene;
+	struct fit_param fp[FIT_MAX_FREE];
+	gsl_multifit_nlinear_fdf fdf;
+	gsl_multifit_nlinear_workspace *w;
+	double xtol, gtol, ftol;
+	int max_iter;
+	void (*progress)(void *ctx, int iter, double cost, long runs);
+	void *pctx;
+	int done;
+	struct fit_result r;          /* keys, starts, points (start values), cost0; reason */
+};
+
+void
+fit_free(struct fit *f)
+{
+	if (f == NULL)
+		return;
+	if (f->w != NULL)
+		gsl_multifit_nlinear_free(f->w);
+	free(f->c.meas);
+	free(f->c.sd);
+	free(f->c.last_u);
+	free(f->c.last_r);
+	free(f->c.scs);
+	free(f->c.y);
+	free(f->c.fail);
+	free(f->r.point);
+	free(f);
+}
+
+struct fit *
+fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_options *o,
+        char *msg, size_t n)
+{
+	gsl_multifit_nlinear_parameters par = gsl_multifit_nlinear_default_parameters();
+	struct fit *f;
+	struct fit_result *r;
+	struct ctx *c;
+	double u[FIT_MAX_FREE];
+	int np = o->nkeys, *row = NULL, *obs = NULL;
+	size_t npts = fit_npoints(d);
+	gsl_vector_view xv;
+
+	gsl_set_error_handler_off();
+	if (np < 1 || np > FIT_MAX_FREE) {
+		status_set(msg, n, HB_EINVAL, "--free: %d keys; accepted: 1 to %d", np, FIT_MAX_FREE);
+		return NULL;
+	}
+	if ((f = calloc(1, sizeof *f)) == NULL) {
+		status_set(msg, n, HB_ENOMEM, "out of memory");
+		return NULL;
+	}
+	r = &f->r;
+	c = &f->c;
+	f->scene = *sc;
+	for (int i = 0; i < np; i++) {
+		if (fit_param_init(sc, o->keys[i], &f->fp[i], msg, n) != HB_OK)
+			goto fail;
+		for (int j = 0; j < i; j++)
+			if (strcmp(o->keys[i], o->keys[j]) == 0) {
+				status_set(msg, n, HB_EINVAL, "--free: %s given twice", o->keys[i]);
+				goto fail;
+			}
+		snprintf(r->key[i], sizeof r->key[i], "%s", o->keys[i]);
+		u[i] = f->fp[i].u0;
+		fit_key_get(sc, o->keys[i], &r->start[i], msg, n);
+	}
+	if (npts < (size_t)np) {
+		status_set(msg, n, HB_EINVAL, "%s: %zu data point%s cannot determine %d "
+		    "parameters; accepted: at least as many points as free keys", d->source, npts,
+		    npts == 1 ? "" : "s", np);
+		goto fail;
+	}
+	f->xtol = o->xtol > 0 ? o->xtol : 1e-8;
+	f->gtol = o->gtol > 0 ? o->gtol : 1e-10;
+	f->ftol = o->ftol > 0 ? o->ftol : 1e-12;
+	f->max_iter = o->max_iter > 0 ? o->max_iter : 100;
+	f->progress = o->progress;
+	f->pctx = o->ctx;
+	r->np = np;
+	r->npoints = npts;
+	c->sc = &f->scene;
+	c->d = d;
+	c->fp = f->fp;
+	c->np = np;
+	c->npts = npts;
+	c->jobs = o->jobs;
+	c->h_rel = sqrt(fmax(sc->run.rtol, 1e-14));
+	r->point = calloc(npts, sizeof *r->point);
+	c->meas = malloc(npts * sizeof(double));
+	c->sd = malloc(npts * sizeof(double));
+	c->last_u = malloc(FIT_MAX_FREE * sizeof(double));
+	c->last_r = malloc(npts * sizeof(double));
+	c->scs = malloc((size_t)(np + 1) * sizeof *c->scs);
+	c->y = malloc((size_t)(np + 1) * npts * sizeof(double));
+	c->fail = malloc((size_t)(np + 1) * sizeof(int));
+	row = malloc(npts * sizeof(int));
+	obs = malloc(npts * sizeof(int));
+	if (r->point == NULL || c->meas == NULL || c->sd == NULL || c->last_u == NULL
+	    || c->last_r == NULL || c->scs == NULL || c->y == NULL || c->fail == NULL
+	    || row == NULL || obs == NULL) {
+		status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto fail;
+	}
+	points_of(d, c->meas, c->sd, row, obs, &r->sd_scaled);
+
+	/* The start: every run must succeed, or the fit has nothing to go on. */
+	{
+		const double *up = u;
+		char m[384];
+		int st;
+
+		if ((st = eval_many(c, &up, 1, m, sizeof m)) != HB_OK) {
+			status_set(msg, n, st, "the start: %s", m);
+			goto fail;
+		}
+		if (c->fail[0]) {
+			status_set(msg, n, HB_EINVAL, "at the start: %s; choose another start with "
+			    "--set", m);
+			goto fail;
+		}
+		for (size_t k = 0; k < npts; k++) {
+			r->point[k].row = (size_t)row[k];
+			r->point[k].obs = obs[k];
+			r->point[k].measured = c->meas[k];
+			r->point[k].sd = c->sd[k];
+			r->point[k].start = c->y[k];
+			r->cost0 += pow((c->y[k] - c->meas[k]) / c->sd[k], 2);
+		}
+	}
+	free(row);
+	free(obs);
+	row = obs = NULL;
+
+	f->fdf.f = f_cb;
+	f->fdf.df = df_cb;
+	f->fdf.fvv = NULL;
+	f->fdf.n = npts;
+	f->fdf.p = (size_t)np;
+	f->fdf.params = c;
+	par.trs = gsl_multifit_nlinear_trs_lm;
+	par.scale = gsl_multifit_nlinear_scale_more;
+	par.solver = gsl_multifit_nlinear_solver_qr;
+	f->w = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &par, npts, (size_t)np);
+	if (f->w == NULL) {
+		status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto fail;
+	}
+	xv = gsl_vector_view_array(u, (size_t)np);
+	gsl_multifit_nlinear_init(&xv.vector, &f->fdf, f->w);
+	/* A Jacobian singular at the start: no iteration can tell the keys apart. */
+	if (identifiability(gsl_multifit_nlinear_jac(f->w), f->fp, np, &r->cond, r->unident,
+	                    sizeof r->unident)) {
+		r->reason = FIT_SINGULAR;
+		f->done = 1;
+	}
+	return f;
+fail:
+	free(row);
+	free(obs);
+	fit_free(f);
+	return NULL;
+}
+
+int
+fit_iterate(struct fit *f)
+{
+	struct fit_result *r = &f->r;
+	int info = 0, s;
+	gsl_vector *fv;
+	double cost;
+
+	if (f->done)
+		return 1;
+	s = gsl_multifit_nlinear_iterate(f->w);
+	fv = gsl_multifit_nlinear_residual(f->w);
+	r->iter = (int)gsl_multifit_nlinear_niter(f->w);
+	gsl_blas_ddot(fv, fv, &cost);
+	if (f->progress != NULL)
+		f->progress(f->pctx, r->iter, cost, f->c.runs);
+	if (s == GSL_ENOPROG) {
+		r->reason = FIT_NOPROGRESS;
+		f->done = 1;
+	} else if (s != GSL_SUCCESS) {
+		r->reason = FIT_FAILED;
+		snprintf(r->why, sizeof r->why, "%s", gsl_strerror(s));
+		f->done = 1;
+	} else if (gsl_multifit_nlinear_test(f->xtol, f->gtol, f->ftol, &info, f->w)
+	           == GSL_SUCCESS) {
+		r->reason = info == 1 ? FIT_CONVERGED_STEP : info == 2
+		    ? FIT_CONVERGED_GRAD : FIT_CONVERGED_COST;
+		f->done = 1;
+	} else if (r->iter >= f->max_iter) {
+		r->reason = FIT_MAXITER;
+		f->done = 1;
+	}
+	if (f->done && r->reason != FIT_FAILED
+	    && identifiability(gsl_multifit_nlinear_jac(f->w), f->fp, f->c.np, &r->cond,
+	                       r->unident, sizeof r->unident))
+		r->reason = FIT_SINGULAR;
+	return f->done;
+}
+
+int
+fit_result_get(struct fit *f, struct fit_result *out, char *msg, size_t n)
+{
+	struct fit_result *r = out;
+	struct ctx *c = &f->c;
+	int np = c->np;
+	double u[FIT_MAX_FREE], th[FIT_MAX_FREE];
+	gsl_vector *fv = gsl_multifit_nlinear_residual(f->w);
+
+	*r = f->r;
+	r->point = malloc(c->npts * sizeof *r->point);
+	if (r->point == NULL) {
+		r->npoints = 0;
+		return status_set(msg, n, HB_ENOMEM, "out of memory");
+	}
+	memcpy(r->point, f->r.point, c->npts * sizeof *r->point);
+	if (!f->done)
+		r->reason = FIT_RUNNING;
+	/* The best point: GSL's position is the last accepted one. */
+	for (int j = 0; j < np; j++)
+		u[j] = gsl_vector_get(gsl_multifit_nlinear_position(f->w), (size_t)j);
+	r->fitted = f->scene;
+	if (fit_param_apply(&r->fitted, f->fp, np, u, th, NULL, msg, n) != HB_OK)
+		return HB_EINVAL;
+	for (int j = 0; j < np; j++)
+		fit_key_get(&r->fitted, r->key[j], &r->value[j], msg, n);
+	r->cost = 0;
+	for (size_t k = 0; k < c->npts; k++) {
+		double rk = gsl_vector_get(fv, k);
+
+		r->point[k].resid = rk;
+		r->point[k].simulated = c->meas[k] + rk * c->sd[k];
+		r->cost += rk * rk;
+	}
+	errors(gsl_multifit_nlinear_jac(f->w), c, u, r);
+	if (r->reason == FIT_SINGULAR) {
+		for (int j = 0; j < np; j++)
+			if (strstr(r->unident, r->key[j]) != NULL)
+				r->se[j] = NAN;
+		snprintf(r->why, sizeof r->why, "not identifiable from these data: %s "
+		    "(condition number of the scaled Jacobian %.3g)", r->unident, r->cond);
+	} else if (r->reason != FIT_FAILED) {
+		snprintf(r->why, sizeof r->why, "%s", fit_reason_str(r->reason));
+	}
+	r->runs = c->runs;
+	return HB_OK;
+}
+
+int
+fit_run(const struct scene *sc, const struct fit_data *d, const struct fit_options *o,
+        struct fit_result *r, char *msg, size_t n)
+{
+	struct fit *f;
+	int st;
+
+	memset(r, 0, sizeof *r);
+	if ((f = fit_new(sc, d, o, msg, n)) == NULL)
+		return msg != NULL && strstr(msg, "out of memory") != NULL ? HB_ENOMEM : HB_EINVAL;
+	while (!fit_iterate(f))
+		;
+	st = fit_result_get(f, r, msg, n);
+	fit_free(f);
+	return st;
+}
+
+int
+fit_simulate(const struct scene *sc, const struct fit_data *d, int jobs, double *out,
+             char *msg, size_t n)
+{
+	int fail = 0;
+	long runs = 0;
+	int st = fit_eval(sc, 1, d, jobs, NAN, out, &fail, &runs, msg, n);
+
+	if (st != HB_OK)
+		return st;
+	if (fail)
+		return HB_ENUMERIC;
+	return HB_OK;
+}

@@ -1,0 +1,39 @@
+/*
+ * fit_impl.h - declarations shared by fit.c, fit_eval.c and fit_param.c
+ * (not part of the API).
+ */
+#ifndef HYBOUNCE_FIT_IMPL_H
+#define HYBOUNCE_FIT_IMPL_H
+
+#include <stddef.h>
+#include "hybounce/fit.h"
+
+/* A free parameter: the key, its range and its transform theta(u). */
+struct fit_param {
+	char key[48];
+	double lo, hi;  /* admissible range (open); infinite for none */
+	int beta;       /* gamma: index of beta in the law's table (theta = beta tanh u), else -1 */
+	double u0;      /* u of the start */
+};
+
+int
+fit_param_init(const struct scene *sc, const char *key, struct fit_param *fp,
+               char *msg, size_t n);
+
+int
+fit_param_apply(struct scene *sc, const struct fit_param *fp, int np, const double *u,
+                double *th, double *T, char *msg, size_t n);
+
+/*
+ * Simulates the data's observables for nsc scenes at once (the runs on
+ * `jobs` threads): out[s * fit_npoints(d) + k] for scene s.  A run that
+ * fails, or a sequence with fewer collisions than the data, sets
+ * fail[s] = 1 (may be NULL) and, for the first such scene, the message; its
+ * missing values are filled with `penalty` (NAN for none).  Adds the runs
+ * made to *runs.  Returns 0, or HB_ENOMEM.
+ */
+int
+fit_eval(const struct scene *sc, int nsc, const struct fit_data *d, int jobs,
+         double penalty, double *out, int *fail, long *runs, char *msg, size_t n);
+
+#endif
