@@ -55,37 +55,40 @@ exe_dirs(char out[2][1024])
 }
 
 /*
- * Any number of folders: the entries of $HYBOUNCE_PRESETS split into one
- * block per thread (a thread-specific value, freed when the thread ends),
- * built again only when HYBOUNCE_PRESETS changes, so that a list returned
- * earlier stays valid while the environment does not change.
+ * Any number of folders: the entries of $HYBOUNCE_PRESETS are split into a
+ * buffer that grows.  The buffer is per thread, so that threads may look
+ * presets up at once, and is freed when its thread ends (a pthread key's
+ * destructor); it is built again only when HYBOUNCE_PRESETS changes, so a
+ * list returned earlier stays valid while the environment does not change.
  */
 struct dirs_cache {
-	char *seen;        /* HYBOUNCE_PRESETS when built; NULL if unset */
-	int built;
-	const char **dirs; /* points into the same block as the strings */
+	char *store;       /* the entries, split in place */
+	char *seen;        /* the HYBOUNCE_PRESETS they came from; NULL: unset */
+	const char **dirs; /* NULL-terminated */
 };
 
-/* Written once, under pthread_once: the only static of the core that is not const. */
-static pthread_key_t preset_dirs_key;
-static pthread_once_t preset_dirs_once = PTHREAD_ONCE_INIT;
+/* Set once (pthread_once), then only read: the key of every thread's cache. */
+static struct {
+	pthread_key_t key;
+	int ok;
+} dirs_tls;
+static pthread_once_t dirs_once = PTHREAD_ONCE_INIT;
 
 static void
 dirs_cache_free(void *p)
 {
 	struct dirs_cache *c = p;
 
-	if (c != NULL) {
-		free(c->seen);
-		free(c->dirs);
-		free(c);
-	}
+	free(c->store);
+	free(c->seen);
+	free(c->dirs);
+	free(c);
 }
 
 static void
-preset_dirs_key_make(void)
+dirs_key_make(void)
 {
-	(void)pthread_key_create(&preset_dirs_key, dirs_cache_free);
+	dirs_tls.ok = pthread_key_create(&dirs_tls.key, dirs_cache_free) == 0;
 }
 
 const char *const *
@@ -95,49 +98,46 @@ preset_dirs(void)
 	static _Thread_local const char *fallback[3];
 	static const char here[] = "presets";
 	const char *env = getenv("HYBOUNCE_PRESETS");
-	struct dirs_cache *c;
-	size_t k = 0, count = 5, len = env != NULL ? strlen(env) + 1 : 0;
+	struct dirs_cache *c = NULL;
+	size_t k = 0, count = 5; /* ./presets, the install folder, two beside the program */
 	int nnear;
-	char *store;
 
 	snprintf(datadir, sizeof datadir, "%s/presets", HYBOUNCE_DATADIR);
 	fallback[0] = here;
 	fallback[1] = datadir;
 	fallback[2] = NULL;
-	if (pthread_once(&preset_dirs_once, preset_dirs_key_make) != 0)
+	pthread_once(&dirs_once, dirs_key_make);
+	if (!dirs_tls.ok)
 		return fallback;
-	c = pthread_getspecific(preset_dirs_key);
+	c = pthread_getspecific(dirs_tls.key);
 	if (c == NULL) {
 		c = calloc(1, sizeof *c);
-		if (c == NULL)
-			return fallback;
-		if (pthread_setspecific(preset_dirs_key, c) != 0) {
+		if (c == NULL || pthread_setspecific(dirs_tls.key, c) != 0) {
 			free(c);
-			return fallback;
+			return fallback; /* out of memory: the built-in folders only */
 		}
 	}
-	if (c->built && c->dirs != NULL &&
+	if (c->dirs != NULL &&
 	    (env == NULL ? c->seen == NULL : c->seen != NULL && strcmp(env, c->seen) == 0))
 		return c->dirs;
+	free(c->store);
 	free(c->seen);
 	free(c->dirs);
-	c->seen = NULL;
+	c->store = c->seen = NULL;
 	c->dirs = NULL;
-	c->built = 1;
-	if (env != NULL)
+	if (env != NULL) {
 		for (const char *p = env; *p != '\0'; p++)
 			count += *p == ':';
-	/* the pointers, then a copy of the entries they point into */
-	c->dirs = malloc((count + 1) * sizeof *c->dirs + len);
-	if (c->dirs == NULL || (env != NULL && (c->seen = strdup(env)) == NULL)) {
+		c->store = strdup(env);
+		c->seen = strdup(env);
+	}
+	c->dirs = malloc((count + 1) * sizeof *c->dirs);
+	if (c->dirs == NULL || (env != NULL && (c->store == NULL || c->seen == NULL))) {
 		free(c->dirs);
 		c->dirs = NULL;
 		return fallback; /* out of memory: the built-in folders only */
 	}
-	store = (char *)(c->dirs + count + 1);
-	if (env != NULL)
-		memcpy(store, env, len);
-	for (char *p = env != NULL ? store : NULL; p != NULL && *p != '\0';) {
+	for (char *p = c->store; p != NULL && *p != '\0';) {
 		char *q = strchr(p, ':');
 
 		if (q != NULL)

@@ -190,6 +190,8 @@ struct dop853 {
 	double *y0;         /* the last step's start */
 	double *y1;         /* its end */
 	double *ytmp;
+	double *acc, *e5, *e3; /* scratch */
+	double *zero;       /* dim zeros */
 	double *r[8];       /* the dense output's coefficients */
 	double t0, h;       /* the last step */
 	int have_step;      /* a step was made since the last reset */
@@ -199,19 +201,38 @@ struct dop853 {
 	const gsl_odeiv2_system *sys;
 };
 
+/*
+ * out = sum_m a_m k_{j_m}: rows have at most 9 terms; shorter ones are
+ * padded with zero weights on a zero vector, so the sum is straight-line
+ * code per component.
+ */
+static void
+lincomb(const struct dop853 *st, const struct row *r, double *out)
+{
+	const double *p[9];
+	double a[9];
+	size_t i;
+	int m;
+
+	for (m = 0; m < 9; m++) {
+		p[m] = m < r->n ? st->k[r->j[m]] : st->zero;
+		a[m] = m < r->n ? r->a[m] : 0.0;
+	}
+	for (i = 0; i < st->dim; i++)
+		out[i] = a[0] * p[0][i] + a[1] * p[1][i] + a[2] * p[2][i] + a[3] * p[3][i] +
+		         a[4] * p[4][i] + a[5] * p[5][i] + a[6] * p[6][i] + a[7] * p[7][i] +
+		         a[8] * p[8][i];
+}
+
+/* out = y + h sum_m a_m k_{j_m}. */
 static void
 combine(const struct dop853 *st, const double *y, double h, const struct row *r, double *out)
 {
 	size_t i;
-	int m;
 
-	for (i = 0; i < st->dim; i++) {
-		double acc = 0.0;
-
-		for (m = 0; m < r->n; m++)
-			acc += r->a[m] * st->k[r->j[m]][i];
-		out[i] = y[i] + h * acc;
-	}
+	lincomb(st, r, st->acc);
+	for (i = 0; i < st->dim; i++)
+		out[i] = y[i] + h * st->acc[i];
 }
 
 static int
@@ -229,7 +250,7 @@ dop853_alloc(size_t dim)
 
 	if (st == NULL)
 		return NULL;
-	mem = calloc((NSTAGE + 3 + 8) * dim, sizeof *mem);
+	mem = calloc((NSTAGE + 3 + 8 + 4) * dim, sizeof *mem);
 	if (mem == NULL) {
 		free(st);
 		return NULL;
@@ -242,6 +263,10 @@ dop853_alloc(size_t dim)
 	st->ytmp = st->y1 + dim;
 	for (i = 0; i < 8; i++)
 		st->r[i] = st->ytmp + (size_t)(i + 1) * dim;
+	st->acc = st->r[7] + dim;
+	st->e5 = st->acc + dim;
+	st->e3 = st->e5 + dim;
+	st->zero = st->e3 + dim;
 	return st;
 }
 
@@ -271,18 +296,15 @@ dop853_apply(void *state, size_t dim, double t, double h, double y[], double yer
 		if ((rc = eval(sys, s == 11 ? t + h : t + C[s] * h, st->ytmp, st->k[s])) != GSL_SUCCESS)
 			return rc;
 	}
-	combine(st, st->y0, h, &B8, st->y1);
+	/* the 8th-order increment, the solution, and the estimate from e5 and e3 = b8 - b3 */
+	lincomb(st, &B8, st->acc);
+	for (i = 0; i < dim; i++)
+		st->y1[i] = st->y0[i] + h * st->acc[i];
+	lincomb(st, &E5, st->e5);
+	lincomb(st, &B3, st->e3);
 	for (i = 0; i < dim; i++) {
-		double e5 = 0.0, e3 = 0.0, d;
-		int m;
+		double e5 = st->e5[i], e3 = st->acc[i] - st->e3[i], d = e5 * e5 + 0.01 * e3 * e3;
 
-		for (m = 0; m < E5.n; m++)
-			e5 += E5.a[m] * st->k[E5.j[m]][i];
-		for (m = 0; m < B8.n; m++)
-			e3 += B8.a[m] * st->k[B8.j[m]][i];
-		for (m = 0; m < B3.n; m++)
-			e3 -= B3.a[m] * st->k[B3.j[m]][i];
-		d = e5 * e5 + 0.01 * e3 * e3;
 		yerr[i] = d > 0.0 ? h * e5 * e5 / sqrt(d) : 0.0;
 	}
 	/* stage 13: f at the end, the next step's first stage */

@@ -538,6 +538,9 @@ static const struct {
 	{ STEPPER_RK8PD, 1e-10, 1e-14 }, { STEPPER_RK8PD, 1e-11, 1e-16 },
 	{ STEPPER_RK8PD, 1e-12, 1e-14 }, { STEPPER_RK8PD, 1e-12, 1e-16 },
 	{ STEPPER_RK8PD, 1e-13, 1e-14 }, { STEPPER_RK8PD, 1e-13, 1e-16 },
+	/* DOP853 with dense output and kinks as modes (issue 8); 3e-14/1e-14 the presets' default */
+	{ STEPPER_DOP853, 1e-12, 1e-14 }, { STEPPER_DOP853, 1e-13, 1e-14 },
+	{ STEPPER_DOP853, 3e-14, 1e-14 }, { STEPPER_DOP853, 1e-14, 1e-14 },
 };
 enum { NEXTRA = sizeof extra / sizeof extra[0] };
 static struct cell xgrid[NSTUDY][NEXTRA];
@@ -798,7 +801,7 @@ main(int argc, char **argv)
 	fprintf(md, "\nThe Hertz contact duration by 96- and 64-node Gauss-Legendre differs by %.1e "
 	            "(relative).\n", hertz_quad);
 
-	/* Extra rk8pd settings with atol below rtol, for the choice of the default. */
+	/* Extra settings with atol below rtol (rk8pd, dop853), for the choice of the default. */
 	for (s = 0; s < NSTUDY; s++) {
 		if (load(pdir, studies[s].preset, &sc))
 			return 1;
@@ -857,7 +860,8 @@ main(int argc, char **argv)
 
 			if (c->o.status)
 				continue;
-			fprintf(md, "| rk8pd | %g/%g | %.2f | %ld | %ld | %zu | %ld | %s | %s | %s | %s | %s |\n",
+			fprintf(md, "| %s (%ld rejected) | %g/%g | %.2f | %ld | %ld | %zu | %ld | %s | %s | %s | %s | %s |\n",
+			        scene_stepper_name(extra[i].st), c->o.rejected,
 			        extra[i].rtol, extra[i].atol, c->o.sec * 1e3, c->o.steps, c->o.rhs, c->o.n,
 			        c->e.dn, fmt_e(b1, c->e.t), fmt_e(b2, c->e.e), fmt_e(b3, c->e.xc),
 			        fmt_e(b4, c->e.F), fmt_e(b5, c->e.T));

@@ -35,9 +35,18 @@ P=$HYBOUNCE_PRESETS
 pre() { printf '%b' "$1" >in.preset; }
 # sedp EXPR: in.preset from the steel-on-bitumen preset through sed
 sedp() { sed "$1" s.preset >in.preset; }
-# asuser CMD...: CMD as an unprivileged user (permissions mean nothing to root)
+# asuser CMD...: CMD as an unprivileged user (permissions mean nothing to
+# root).  That user may not reach the binary where it was built (a clone in
+# a private temporary folder): it runs a copy in $ROOT.
+if [ "$(id -u)" = 0 ]; then
+	cp "$B" "$ROOT/hybounce-asuser" && chmod 755 "$ROOT/hybounce-asuser"
+fi
 asuser() {
 	if [ "$(id -u)" = 0 ]; then
+		if [ "$1" = "$B" ]; then
+			shift
+			set -- "$ROOT/hybounce-asuser" "$@"
+		fi
 		setpriv --reuid=65534 --regid=65534 --clear-groups -- "$@"
 	else
 		"$@"

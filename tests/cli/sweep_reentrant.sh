@@ -5,7 +5,8 @@
 #     tables live in .rodata / .data.rel.ro, per-thread buffers in .tbss)
 #     are only hb_step_bsimp_shifted, a pointer to a const step type set at
 #     load time and never written (declared like GSL's own
-#     gsl_odeiv2_step_*).  The lock around sim_new() (GSL's process-wide
+#     gsl_odeiv2_step_*), and preset_dirs()'s thread key, created once
+#     under pthread_once (dirs_tls, dirs_once in preset_find.c).  The lock around sim_new() (GSL's process-wide
 #     error handler) belongs to each sweep, not to static storage.
 #  2. One point, 12 times, on 4 threads: every row and collision equal.
 # make check-tsan runs this script with a ThreadSanitizer build
@@ -33,9 +34,10 @@ if [ -f "$LIB" ] && command -v objdump >/dev/null 2>&1; then
 	        name = $NF; sub(/\.[0-9]+$/, "", name)
 	        if (name !~ /^(__asan|__odr_asan|__ubsan|\.L|___asan)/) print name " (" obj ")" }' |
 	    sort -u >"$T/statics"
-	grep -v -x -e 'hb_step_bsimp_shifted (step_bsimp.o)' -e 'preset_dirs_key (preset_find.o)' -e 'preset_dirs_once (preset_find.o)' "$T/statics" >"$T/unknown"
+	grep -v -x -e 'hb_step_bsimp_shifted (step_bsimp.o)' -e 'dirs_tls (preset_find.o)' \
+	    -e 'dirs_once (preset_find.o)' "$T/statics" >"$T/unknown"
 	if grep -q -x 'hb_step_bsimp_shifted (step_bsimp.o)' "$T/statics" && [ ! -s "$T/unknown" ]; then
-		ok "libhybounce.a has no mutable static state but a const step pointer and preset_dirs's once-made key (objdump of .data and .bss)"
+		ok "libhybounce.a has no mutable static state but a const step pointer and a pthread_once thread key (objdump of .data and .bss)"
 	else notok "libhybounce.a: unexpected mutable statics" "$T/unknown"; fi
 else
 	notok "objdump and $LIB are there to list the engine's writable statics"

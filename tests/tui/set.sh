@@ -39,10 +39,10 @@ else
 fi
 if select_param b run.J; then
 	keys b +
-	if wait_for b 'run\.J = 110000[;:]' 30; then ok "+ on run.J steps the whole number 100000 to 110000"
+	if wait_for b 'run\.J = 110000[:;]' 30; then ok "+ on run.J steps the whole number 100000 to 110000"
 	else notok "+ on run.J steps the whole number 100000 to 110000" b; fi
 	keys b -
-	if wait_for b 'run\.J = 100000[;:]' 30; then ok "- on run.J steps it back to 100000"
+	if wait_for b 'run\.J = 100000[:;]' 30; then ok "- on run.J steps it back to 100000"
 	else notok "- on run.J steps it back to 100000" b; fi
 else
 	notok "parameter row run.J found" b

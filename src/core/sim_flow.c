@@ -1,0 +1,406 @@
+/*
+ * sim_flow.c - the flow map: the right-hand side and its Jacobian in scaled variables, the
+ * layouts and GSL workspaces of the phases, the scales of the components, and
+ * the packing of the canonical state (see sim.c for the method).
+ */
+#include "sim_impl.h"
+
+int
+hbs_explicit_stepper(int stepper)
+{
+	return stepper == STEPPER_RK8PD || stepper == STEPPER_RKF45 || stepper == STEPPER_RKCK ||
+	       stepper == STEPPER_DOP853;
+}
+
+static const gsl_odeiv2_step_type *
+stepper_type(int stepper)
+{
+	switch (stepper) {
+	case STEPPER_RKF45: return gsl_odeiv2_step_rkf45;
+	case STEPPER_RKCK: return gsl_odeiv2_step_rkck;
+	case STEPPER_MSBDF: return gsl_odeiv2_step_msbdf;
+	case STEPPER_RK4IMP: return gsl_odeiv2_step_rk4imp;
+	case STEPPER_BSIMP: return hb_step_bsimp_shifted;
+	case STEPPER_DOP853: return hb_step_dop853;
+	default: return gsl_odeiv2_step_rk8pd;
+	}
+}
+
+void
+hbs_unscale(const struct phase *p, const double *u, double *y)
+{
+	int i;
+
+	for (i = 0; i < p->L.dim; i++)
+		y[i] = u[i] * p->s->scale[i];
+}
+
+/*
+ * f of eqs. Hr_f / H_f restricted to the components of the layout:
+ *     x' = v, v' = (-q Phi + F_er)/m, x_c' = v, z' = Psi,
+ *     W' = Phi v (= -F_c v), J_Fc' = -Phi (= F_c), J_Fe' = F_er,
+ *     x_m' = v_m, v_m' = (F_e1 + F_e2)/(m1 + m2).
+ * Returns GSL_FAILURE (a plain error: the evolver halves the step) when a
+ * trial stage is not finite.
+ */
+static int
+rhs(double t, const double u[], double du[], void *params)
+{
+	struct phase *p = params;
+	struct sim *s = p->s;
+	const struct layout *L = &p->L;
+	const struct scene *sc = &s->sc;
+	double y[MAXDIM], dy[MAXDIM];
+	double Fer = scene_Fer(sc, t), phi = 0.0, v;
+	int i;
+
+	s->st.rhs++;
+	hbs_unscale(p, u, y);
+	v = y[L->iv];
+	if (p->q) {
+		const double *z = sc->law->n_z ? &y[L->iz] : NULL;
+
+		phi = sc->law->phi(sc->par, sc->ext, y[L->ixc], z, v);
+		dy[L->ixc] = v;
+		if (s->msign)
+			sc->law->psi_mode(sc->par, sc->ext, y[L->ixc], z, v, s->msign, &dy[L->iz]);
+		else if (sc->law->n_z)
+			sc->law->psi(sc->par, sc->ext, y[L->ixc], z, v, &dy[L->iz]);
+		dy[L->iW] = phi * v;
+		dy[L->iJc] = -phi;
+		dy[L->iJe] = Fer;
+	}
+	if (L->ix >= 0)
+		dy[L->ix] = v;
+	dy[L->iv] = (-phi + Fer) / sc->d.m;
+	dy[L->iEe] = Fer * v;
+	if (L->ixm >= 0) {
+		double F1, F2;
+
+		scene_loads_at(sc, t, &F1, &F2);
+		dy[L->ixm] = y[L->ivm];
+		dy[L->ivm] = sc->d.system == SCENE_FULL ? (F1 + F2) / (sc->d.m1 + sc->d.m2) : 0.0;
+	}
+	{
+		double nan_if_bad = 0.0;
+
+		for (i = 0; i < L->dim; i++) {
+			du[i] = dy[i] * s->iscale[i];
+			nan_if_bad += 0.0 * du[i]; /* NaN as soon as one du is NaN or infinite */
+		}
+		if (nan_if_bad != 0.0 || isnan(nan_if_bad))
+			return GSL_FAILURE;
+	}
+	return GSL_SUCCESS;
+}
+
+static double
+Fer_rate(const struct scene *sc, double t)
+{
+	double h = 1e-7 * (fabs(t) + 1e-3);
+
+	return (scene_Fer(sc, t + h) - scene_Fer(sc, t - h)) / (2 * h);
+}
+
+/* The Jacobian of rhs, for the implicit steppers; the law's partials. */
+int
+hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *params)
+{
+	struct phase *p = params;
+	struct sim *s = p->s;
+	const struct layout *L = &p->L;
+	const struct scene *sc = &s->sc;
+	int n = L->dim, nz = sc->law->n_z, i, k;
+	double y[MAXDIM], J[MAXDIM * MAXDIM], dt[MAXDIM];
+	double m = sc->d.m, Ferdot = Fer_rate(sc, t);
+
+	s->st.jac++;
+	hbs_unscale(p, u, y);
+	memset(J, 0, sizeof J);
+	memset(dt, 0, sizeof dt);
+	if (L->ix >= 0)
+		J[L->ix * n + L->iv] = 1.0;
+	dt[L->iv] = Ferdot / m;
+	if (p->q) {
+		double dphi[LAW_MAX_Z + 2], dpsi[LAW_MAX_Z * (LAW_MAX_Z + 2)];
+		const double *z = nz ? &y[L->iz] : NULL;
+		double v = y[L->iv];
+		double phi = sc->law->phi(sc->par, sc->ext, y[L->ixc], z, v);
+		int col[LAW_MAX_Z + 2];
+
+		sc->law->jac(sc->par, sc->ext, y[L->ixc], z, v, dphi, nz ? dpsi : NULL);
+		col[0] = L->ixc;
+		for (i = 0; i < nz; i++)
+			col[1 + i] = L->iz + i;
+		col[nz + 1] = L->iv;
+		J[L->ixc * n + L->iv] = 1.0;
+		for (k = 0; k < nz + 2; k++) {
+			J[L->iv * n + col[k]] = -dphi[k] / m;
+			J[L->iW * n + col[k]] = dphi[k] * v;
+			J[L->iJc * n + col[k]] = -dphi[k];
+			for (i = 0; i < nz; i++)
+				J[(L->iz + i) * n + col[k]] = dpsi[i * (nz + 2) + k];
+		}
+		J[L->iW * n + L->iv] += phi;
+		dt[L->iJe] = Ferdot;
+	}
+	J[L->iEe * n + L->iv] = scene_Fer(sc, t);
+	dt[L->iEe] = Ferdot * y[L->iv];
+	if (L->ixm >= 0)
+		J[L->ixm * n + L->ivm] = 1.0;
+	for (i = 0; i < n; i++) {
+		for (k = 0; k < n; k++)
+			dfdu[i * n + k] = J[i * n + k] * s->scale[k] * s->iscale[i];
+		dfdt[i] = dt[i] * s->iscale[i];
+	}
+	return GSL_SUCCESS;
+}
+
+static void
+make_layout(const struct scene *sc, int q, struct layout *L)
+{
+	int n = 0;
+	int com = sc->d.system == SCENE_FULL ? !(sc->run.reduce & REDUCE_COM)
+	                                     : !(sc->run.reduce & REDUCE_COM);
+
+	*L = (struct layout){ 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
+	if (q) {
+		if (!(sc->run.reduce & REDUCE_CONTACT))
+			L->ix = n++;
+		L->ixc = n++;
+		L->iv = n++;
+		if (sc->law->n_z) {
+			L->iz = n;
+			n += sc->law->n_z;
+		}
+		L->iW = n++;
+		L->iJc = n++;
+		L->iJe = n++;
+	} else {
+		L->ix = n++;
+		L->iv = n++;
+	}
+	L->iEe = n++;
+	if (com) {
+		L->ixm = n++;
+		L->ivm = n++;
+	}
+	L->dim = n;
+}
+
+void
+hbs_phase_free(struct phase *p)
+{
+	if (p->d)
+		gsl_odeiv2_driver_free(p->d);
+	if (p->loc)
+		gsl_odeiv2_driver_free(p->loc);
+	p->d = p->loc = NULL;
+}
+
+int
+hbs_phase_alloc(struct sim *s, struct phase *p, int q)
+{
+	const struct scene *sc = &s->sc;
+	const gsl_odeiv2_step_type *T = stepper_type(s->stepper[q]);
+	/* msbdf is multistep: locate with the single-step implicit bsimp */
+	const gsl_odeiv2_step_type *TL = T == gsl_odeiv2_step_msbdf ? hb_step_bsimp_shifted : T;
+
+	hbs_phase_free(p);
+	p->s = s;
+	p->q = q;
+	make_layout(sc, q, &p->L);
+	p->sys = (gsl_odeiv2_system){ rhs, hbs_jacobian, (size_t)p->L.dim, p };
+	p->d = gsl_odeiv2_driver_alloc_standard_new(&p->sys, T, 1e-6, sc->run.atol,
+	                                            sc->run.rtol, 1.0, 0.0);
+	p->loc = gsl_odeiv2_driver_alloc_standard_new(&p->sys, TL, 1e-6, sc->run.atol,
+	                                              sc->run.rtol, 1.0, 0.0);
+	s->built[q] = s->stepper[q];
+	if (p->d == NULL || p->loc == NULL || hb_control_cautious(p->d, sc->run.atol, sc->run.rtol)) {
+		hbs_phase_free(p);
+		return HB_ENOMEM;
+	}
+	return 0;
+}
+
+void
+hbs_set_com(struct sim *s)
+{
+	if (s->sc.d.system == SCENE_FULL)
+		scene_com(&s->sc, s->t, &s->xm, &s->vm);
+	else
+		s->xm = s->vm = 0.0;
+}
+
+/* The stiffness k and exponent p of the law (k of the first stiffness param). */
+static void
+law_kp(const struct scene *sc, double *k, double *p)
+{
+	int i;
+
+	*k = NAN;
+	for (i = 0; i < sc->law->n_params; i++)
+		if (sc->law->params[i].flags & LAW_PARAM_STIFFNESS || !strcmp(sc->law->params[i].name, "k")) {
+			*k = sc->par[i];
+			break;
+		}
+	*p = law_exponent_p(sc->law, sc->par);
+}
+
+/*
+ * Scales of the components for this interval, from the scene's own sizes
+ * (DESIGN.md section 4a).  In contact with approach speed v and load F:
+ * indentation X = max(((p+1) m v^2 / (2k))^(1/(p+1)), (|F|/k)^(1/p)),
+ * speed V = max(|v|, X sqrt(k X^(p-1)/m)), z ~ X, W ~ m V^2 / 2, impulses
+ * ~ m V.  In flight: X = max(|x|, v^2/(2|a|)), V = max(|v|, sqrt(2|a|X)).
+ */
+void
+hbs_scales(struct sim *s, const struct layout *L, int q)
+{
+	const struct scene *sc = &s->sc;
+	double m = sc->d.m, F = fabs(scene_Fer(sc, s->t)), X, V, k, p;
+	int i;
+
+	if (q) {
+		law_kp(sc, &k, &p);
+		if (!(k > 0))
+			k = 1.0;
+		X = pow((p + 1) * m * s->v * s->v / (2 * k), 1 / (p + 1));
+		X = fmax(X, pow(F / k, 1 / p));
+		if (!(X > 1e-15))
+			X = 1e-15;
+		V = fmax(fabs(s->v), X * sqrt(k * pow(X, p - 1) / m));
+	} else {
+		double acc = F / m;
+
+		X = fmax(fabs(s->x), acc > 0 ? s->v * s->v / (2 * acc) : 0.0);
+		if (!(X > 1e-12))
+			X = 1e-12;
+		V = fmax(fabs(s->v), sqrt(2 * acc * X));
+		if (!(V > 1e-12))
+			V = 1e-12;
+	}
+	for (i = 0; i < L->dim; i++)
+		s->scale[i] = 1.0;
+	if (L->ix >= 0)
+		s->scale[L->ix] = q ? X + fabs(s->xe) : X;
+	s->scale[L->iv] = V;
+	if (L->ixc >= 0)
+		s->scale[L->ixc] = X;
+	for (i = 0; L->iz >= 0 && i < sc->law->n_z; i++)
+		s->scale[L->iz + i] = X;
+	s->scale[L->iEe] = 0.5 * m * V * V;
+	if (L->iW >= 0) {
+		s->scale[L->iW] = 0.5 * m * V * V;
+		s->scale[L->iJc] = m * V;
+		s->scale[L->iJe] = m * V;
+	}
+	if (L->ixm >= 0) {
+		s->scale[L->ixm] = fmax(fabs(s->xm) + fabs(s->vm) * sc->run.T, 1e-3);
+		s->scale[L->ivm] = fmax(fabs(s->vm), 1e-3);
+	}
+	/*
+	 * Each scale rounded to the nearest power of 2 (a factor of at most
+	 * sqrt 2 in the tolerance): scaling and unscaling are then exact, and
+	 * rhs multiplies by the exact inverse instead of dividing.
+	 */
+	for (i = 0; i < L->dim; i++) {
+		int e;
+		double f = frexp(s->scale[i], &e); /* scale = f 2^e, f in [0.5, 1) */
+
+		if (isfinite(s->scale[i]) && s->scale[i] > 0)
+			s->scale[i] = ldexp(1.0, f < M_SQRT1_2 ? e - 1 : e);
+		s->iscale[i] = 1.0 / s->scale[i];
+	}
+	if (q) {
+		s->st.ncomp = L->dim < 8 ? L->dim : 8;
+		for (i = 0; i < s->st.ncomp; i++)
+			s->st.scale[i] = s->scale[i];
+	}
+}
+
+/* Packs the canonical state into u (scaled). */
+void
+hbs_pack(struct sim *s, const struct layout *L, double *u)
+{
+	double y[MAXDIM];
+	int i;
+
+	if (L->ix >= 0)
+		y[L->ix] = s->x;
+	y[L->iv] = s->v;
+	if (L->ixc >= 0) {
+		y[L->ixc] = s->xc;
+		for (i = 0; i < s->sc.law->n_z; i++)
+			y[L->iz + i] = s->z[i];
+		y[L->iW] = s->W;
+		y[L->iJc] = s->JFc;
+		y[L->iJe] = s->JFe;
+	}
+	y[L->iEe] = s->Ee;
+	if (L->ixm >= 0) {
+		y[L->ixm] = s->xm;
+		y[L->ivm] = s->vm;
+	}
+	for (i = 0; i < L->dim; i++)
+		u[i] = y[i] * s->iscale[i];
+}
+
+/* Unpacks u at time t into the canonical state. */
+void
+hbs_unpack(struct sim *s, const struct phase *p, double t, const double *u)
+{
+	const struct layout *L = &p->L;
+	double y[MAXDIM];
+	int i;
+
+	hbs_unscale(p, u, y);
+	s->t = t;
+	s->v = y[L->iv];
+	if (p->q) {
+		s->xc = y[L->ixc];
+		s->x = L->ix >= 0 ? y[L->ix] : s->xe + s->xc;
+		for (i = 0; i < s->sc.law->n_z; i++)
+			s->z[i] = y[L->iz + i];
+		s->W = y[L->iW];
+		s->JFc = y[L->iJc];
+		s->JFe = y[L->iJe];
+		s->Wc = s->Wc0 - s->W;
+	} else {
+		s->x = y[L->ix];
+	}
+	s->Ee = y[L->iEe];
+	if (L->ixm >= 0) {
+		s->xm = y[L->ixm];
+		s->vm = y[L->ivm];
+	} else {
+		hbs_set_com(s);
+	}
+}
+
+/* The scaled state of an arc sample, in the layout L (as pack() for the canonical state). */
+void
+hbs_pack_sample(const struct sim *s, const struct layout *L, const struct arc_sample *a, double *u)
+{
+	double y[MAXDIM];
+	int i;
+
+	if (L->ix >= 0)
+		y[L->ix] = a->x;
+	y[L->iv] = a->v;
+	if (L->ixc >= 0) {
+		y[L->ixc] = a->xc;
+		for (i = 0; i < s->sc.law->n_z; i++)
+			y[L->iz + i] = a->z[i];
+		y[L->iW] = a->W;
+		y[L->iJc] = a->JFc;
+		y[L->iJe] = a->JFe;
+	}
+	y[L->iEe] = a->Ee;
+	if (L->ixm >= 0) {
+		y[L->ixm] = a->xm;
+		y[L->ivm] = a->vm;
+	}
+	for (i = 0; i < L->dim; i++)
+		u[i] = y[i] * s->iscale[i];
+}

@@ -1,0 +1,196 @@
+/*
+ * sim_impl.h - what the files of the simulator share (private to the engine):
+ * the state of a run (struct sim), the layouts and phases of the flow
+ * intervals, and the functions one file calls in another.  sim.c holds the
+ * driver and the public API (its header comment describes the method).
+ */
+#ifndef HYBOUNCE_SIM_IMPL_H
+#define HYBOUNCE_SIM_IMPL_H
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <gsl/gsl_complex_math.h>
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+#include <gsl/gsl_poly.h>
+#include <gsl/gsl_roots.h>
+
+#include "hybounce/sim.h"
+#include "hybounce/status.h"
+#include "arc_impl.h"
+#include "control.h"
+#include "step_bsimp.h"
+#include "step_dop853.h"
+
+enum {
+	MAXDIM = 11,           /* x, v, x_c, z1, z2, W, JFc, JFe, E_e, x_m, v_m */
+	MAXFUN = LAW_MAX_KINKS + 3,
+	CACHE = 96,
+	FLIGHT_SAMPLES = 48,   /* samples drawn along a closed-form flight, for plots */
+	MAX_BRENT = 100,
+	MAX_RETRY = 60,        /* retries of a step that produced a non-finite state */
+	MAX_TINY = 200,        /* consecutive steps at the resolution of t before failing */
+};
+
+/* Which components the ODE of a flow interval carries; -1 when absent. */
+struct layout {
+	int dim;
+	int ix, iv, ixc, iz, iW, iJc, iJe, ixm, ivm, iEe;
+};
+
+struct phase {
+	struct sim *s;
+	struct layout L;
+	int q;
+	gsl_odeiv2_system sys;
+	gsl_odeiv2_driver *d;    /* stepper, control and evolver */
+	gsl_odeiv2_driver *loc;  /* single steps for event location */
+};
+
+/* Kinds of the functions watched along a step. */
+enum fun_kind { FUN_EVENT, FUN_KINK, FUN_XCMAX, FUN_FCMAX };
+
+struct cached {
+	double h;
+	double u[MAXDIM];
+};
+
+struct sim {
+	struct scene sc;
+	struct arc *arc;
+	struct collision *col;
+	size_t ncol, colcap;
+	long ncol_total;        /* collisions completed, kept or thinned out (col[].i) */
+	enum sim_end end;
+	char err[640];
+	char endmsg[700];
+	struct sim_stats st;
+
+	/* canonical state at (t, j) */
+	double t;
+	long j;
+	int q;
+	double x, v, xc, z[LAW_MAX_Z], xm, vm;
+	double W, JFc, JFe, xcmax, Fcmax;
+	double Ee, Wc;      /* works of F_er and F_c since t = 0 */
+	double Wc0;         /* Wc at the commencement of the contact in progress */
+	double xe;          /* x at the commencement of the contact in progress */
+	double te, vi;      /* commencement time and approach velocity */
+	double t_instant;   /* time of the last jump, and jumps at it */
+	int n_instant;
+
+	/* the current flow interval */
+	int setup;          /* 1: the next work begins a new interval */
+	int closed;         /* 1: closed-form flight */
+	struct phase ph[2]; /* numeric flight, contact */
+	struct phase *cur;
+	double scale[MAXDIM];
+	double iscale[MAXDIM]; /* 1 / scale, exact: every scale is a power of 2 */
+	double u[MAXDIM];   /* scaled ODE state */
+	double h;           /* step size suggestion */
+	double Tc;          /* time scale of the interval */
+	int ntiny;
+	double gmax[MAXFUN]; /* largest |value| of each watched function in the interval */
+	double vmax;        /* largest |v| in the contact */
+
+	/* location workspace */
+	double t0, H, u0[MAXDIM], u1[MAXDIM];
+	struct cached cache[CACHE];
+	int ncache, cache_next;
+	int fun_target, fun_sign0;
+	int use_dense;      /* 1: restep() reads the last step's continuous extension */
+	int hug;            /* 1: the step began on Phi = 0 to the noise, receding (see snap_separation) */
+	int msign;          /* the frozen sign of the law's mode kink in this step (0: none) */
+	int resume;         /* 1: the next interval continues one cut by sim_seek (see resume_interval) */
+	size_t resume_first, resume_last; /* its samples kept in the arc */
+	double resume_h;    /* the step the run had taken from the seek point, or 0 */
+	int mforce;         /* the sign the mode takes at t = mforce_t (a located crossing) */
+	double mforce_t;
+	int loc_iter;
+	gsl_root_fsolver *root;
+	long work;          /* units of work, for the step budget */
+
+	/* steppers: the one each phase uses now, and the one its workspace was built for */
+	int stepper[2], built[2];
+	int stiff_row;      /* consecutive stiffness hits in this contact */
+	gsl_eigen_nonsymm_workspace *eig;
+	gsl_matrix *Jdyn;
+	gsl_vector_complex *lambda;
+};
+
+static inline double
+phi_at(const struct sim *s, double xc, const double *z, double v)
+{
+	return s->sc.law->phi(s->sc.par, s->sc.ext, xc, z, v);
+}
+
+/* sim_flow.c */
+int
+hbs_explicit_stepper(int stepper);
+
+void
+hbs_unscale(const struct phase *p, const double *u, double *y);
+
+int
+hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *params);
+
+void
+hbs_phase_free(struct phase *p);
+
+int
+hbs_phase_alloc(struct sim *s, struct phase *p, int q);
+
+void
+hbs_set_com(struct sim *s);
+
+void
+hbs_scales(struct sim *s, const struct layout *L, int q);
+
+void
+hbs_pack(struct sim *s, const struct layout *L, double *u);
+
+void
+hbs_unpack(struct sim *s, const struct phase *p, double t, const double *u);
+
+void
+hbs_pack_sample(const struct sim *s, const struct layout *L, const struct arc_sample *a, double *u);
+
+/* sim_record.c */
+int
+hbs_fail(struct sim *s, int status, const char *why);
+
+int
+hbs_push_sample(struct sim *s, int kind);
+
+int
+hbs_jump(struct sim *s, int how, int iterations, double width, double ilo, double ihi);
+
+void
+hbs_finish_T(struct sim *s);
+
+/* sim_flight.c */
+int
+hbs_flight_closed(struct sim *s);
+
+/* sim_locate.c */
+int
+hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
+      int *kind);
+
+int
+hbs_hugging(struct sim *s, const double *u);
+
+int
+hbs_after_step(struct sim *s, int load_kink);
+
+/* sim_stiff.c */
+int
+hbs_stiffness(struct sim *s);
+
+#endif
