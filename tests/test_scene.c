@@ -749,3 +749,38 @@ Test(scene, table_defaults_are_the_default_scene)
 	cr_assert_eq(sc.ext, 1);
 	cr_assert_eq(sc.run.stepper, STEPPER_DOP853);
 }
+
+/*
+ * The range the panel advertises and what a key takes agree at infinity:
+ * every key shown with "inf]" takes inf, every key shown with "inf)"
+ * refuses it, for each law's keys too.
+ */
+Test(scene, advertised_infinity_is_what_is_taken)
+{
+	static const char *laws[] = { "hertz", "bwmcl", "bwshccl", "shccl", "linear" };
+	int checked = 0;
+
+	for (size_t l = 0; l < sizeof laws / sizeof laws[0]; l++) {
+		struct scene sc;
+		char msg[256];
+		scene_defaults(&sc);
+		cr_assert_eq(scene_set(&sc, "scene.law", laws[l], msg, sizeof msg), HB_OK, "%s", msg);
+		for (int i = 0; i < scene_nkeys(&sc); i++) {
+			struct scene_keyinfo ki;
+			struct scene trial = sc;
+			int took;
+			cr_assert_eq(scene_key(&sc, i, &ki), HB_OK);
+			if (ki.kind != SCENE_KEY_NUMBER || ki.readonly || !isinf(ki.limits.hi))
+				continue;
+			took = scene_set(&trial, ki.key, "inf", msg, sizeof msg) == HB_OK;
+			cr_assert_eq(took, !ki.limits.hi_open,
+			    "%s (law %s) advertises %s but %s inf: %s", ki.key, laws[l], ki.range,
+			    took ? "takes" : "refuses", msg);
+			if (strstr(ki.range, "inf") != NULL) /* "any finite value" names no bound */
+				cr_assert_eq(strstr(ki.range, "inf]") != NULL, !ki.limits.hi_open,
+				    "%s: range text %s", ki.key, ki.range);
+			checked++;
+		}
+	}
+	cr_assert_gt(checked, 20, "only %d keys with an infinite bound checked", checked);
+}
