@@ -230,6 +230,8 @@ Test(units, format)
 	format_is(-0.5, UNIT_VELOCITY, 4, "-500 mm/s");
 	format_is(2.5, UNIT_VELOCITY, 4, "2.5 m/s");
 	format_is(0, UNIT_LENGTH, 4, "0 m");
+	format_is(-0.0, UNIT_FORCE, 4, "0 N");           /* no "-0 N" */
+	format_is(-0.0, UNIT_NONE, 4, "0");
 	format_is(INFINITY, UNIT_LENGTH, 4, "inf m");
 	format_is(INFINITY, UNIT_MASS, 4, "inf kg");
 	format_is(0.35, UNIT_NONE, 4, "0.35");

@@ -514,6 +514,8 @@ units_format(double value, struct unit_dim d, int sig, char *buf, size_t n)
 		sig = 1;
 	if (sig > 17)
 		sig = 17;
+	if (value == 0)
+		value = 0; /* -0 is shown as 0: its sign carries nothing */
 	d = units_resolve(d, 0, 0);
 	if (dim_eq(d, UNIT_NONE)) {
 		snprintf(buf, n, "%.*g", sig, value);
