@@ -212,7 +212,7 @@ Test(scene, set_messages)
 	set_fails(&sc, "law.alpha", "abc", "'abc' is not a number");
 	set_fails(&sc, "law.n", "0.5", "accepted: [1, 1e+12]");
 	set_fails(&sc, "law.p", "0.9", "accepted: [1, 1e+12]");
-	set_fails(&sc, "law.k", "1e8", "derived from the materials by eq. k_hertz");
+	set_fails(&sc, "law.k", "1e8", "derived from the materials by Hertz contact theory");
 	set_fails(&sc, "law.k", "1e8", "give masses instead of materials");
 	set_fails(&sc, "law.foo", "1", "unknown key");
 	set_fails(&sc, "body1.E", "20 mm", "a pressure");
