@@ -784,3 +784,24 @@ Test(scene, advertised_infinity_is_what_is_taken)
 	}
 	cr_assert_gt(checked, 20, "only %d keys with an infinite bound checked", checked);
 }
+
+/* A mass whose weight overflows is refused before the run, naming the mass. */
+Test(scene, weight_must_be_finite)
+{
+	struct scene sc;
+	char msg[256];
+
+	scene_defaults(&sc);
+	cr_assert_eq(scene_set(&sc, "body1.mass", "1e308 kg", msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strncmp(msg, "body1.mass: its weight m g (1e+308 kg", 37) == 0, "%s", msg);
+	cr_assert(strstr(msg, "accepted: 1.833e+307 kg or less at g = 9.81 m/s^2") != NULL, "%s", msg);
+	cr_assert(strstr(msg, "inf") == NULL, "%s", msg);
+	/* Without gravity the same mass is fine. */
+	cr_assert_eq(scene_set(&sc, "loads.g", "0", msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	/* A fixed obstacle (body 2 of infinite mass) carries no weight. */
+	scene_defaults(&sc);
+	cr_assert_eq(scene_set(&sc, "body2.mass", "inf", msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+}
