@@ -29,6 +29,18 @@ trap 'chmod -R u+rwx "$ROOT" 2>/dev/null; rm -rf "$ROOT"' EXIT
 
 # --- helpers for SETUP and COMMAND ---
 # $B: the binary, under a time limit (a hang is a failure, exit 124)
+# As root, the unprivileged rows' user may not reach the binary and the
+# presets where they are (CI clones into a private temporary folder): every
+# row runs copies in $ROOT, which that user can reach.
+if [ "$(id -u)" = 0 ]; then
+	if cp "$BIN" "$ROOT/hybounce" && chmod 755 "$ROOT/hybounce"; then
+		BIN=$ROOT/hybounce
+	fi
+	if [ -d "$HYBOUNCE_PRESETS" ] && cp -R "$HYBOUNCE_PRESETS" "$ROOT/presets" &&
+	    chmod -R a+rX "$ROOT/presets"; then
+		HYBOUNCE_PRESETS=$ROOT/presets
+	fi
+fi
 B="timeout ${BADINPUT_TIMEOUT:-60} $BIN"
 P=$HYBOUNCE_PRESETS
 # pre TEXT: in.preset from TEXT (printf %b: \n, \t, \000 ...)
@@ -36,17 +48,9 @@ pre() { printf '%b' "$1" >in.preset; }
 # sedp EXPR: in.preset from the steel-on-bitumen preset through sed
 sedp() { sed "$1" s.preset >in.preset; }
 # asuser CMD...: CMD as an unprivileged user (permissions mean nothing to
-# root).  That user may not reach the binary where it was built (a clone in
-# a private temporary folder): it runs a copy in $ROOT.
-if [ "$(id -u)" = 0 ]; then
-	cp "$B" "$ROOT/hybounce-asuser" && chmod 755 "$ROOT/hybounce-asuser"
-fi
+# root).
 asuser() {
 	if [ "$(id -u)" = 0 ]; then
-		if [ "$1" = "$B" ]; then
-			shift
-			set -- "$ROOT/hybounce-asuser" "$@"
-		fi
 		setpriv --reuid=65534 --regid=65534 --clear-groups -- "$@"
 	else
 		"$@"
