@@ -82,6 +82,8 @@ num_is(const char *field, double want, const char *what, size_t row)
 	}
 	v = strtod(field, &end);
 	cr_assert(*end == '\0' && end != field, "%s row %zu: '%s' is not a number", what, row, field);
+	if (want == 0)
+		want = 0; /* -0 is written 0 */
 	cr_assert(memcmp(&v, &want, sizeof v) == 0, "%s row %zu: read %.17g, written %.17g", what,
 	    row, v, want);
 }
@@ -233,6 +235,51 @@ Test(csv, two_internal_states)
 	cr_assert_eq(csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
 	check_arc_file(path, s, "t,j,q_c,x,v,x_c,z_c1,z_c2,F_c,F_er");
 	unlink(path);
+	rmdir(dir);
+	sim_free(s);
+}
+
+/* 1 if a field of the CSV text is a negative zero ("-0", "-0.0", "-0e+00"). */
+static int
+has_negative_zero(const char *text)
+{
+	for (const char *p = text; (p = strstr(p, "-0")) != NULL; p++) {
+		char *end;
+		if (p != text && p[-1] != ',' && p[-1] != '\n')
+			continue;
+		if (strtod(p, &end) == 0 && end != p && (*end == ',' || *end == '\n' || *end == 0))
+			return 1;
+	}
+	return 0;
+}
+
+/* Zero forces of the flights (-0 in the engine) are written 0. */
+Test(csv, no_negative_zero)
+{
+	static const char *const set[] = { "run.T", "20 ms", NULL };
+	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], msg[512] = "", *text;
+	struct sim *s = run("steel-on-bitumen", set);
+	const struct arc *a = sim_arc(s);
+	int engine_has = 0;
+
+	cr_assert(has_negative_zero("1,-0,2\n") && has_negative_zero("-0.0\n") &&
+	    !has_negative_zero("1,-0.5,2\n") && !has_negative_zero("1e-05,0\n"));
+	for (size_t i = 0; i < arc_len(a); i++)
+		engine_has |= arc_at(a, i)->Fc == 0 && signbit(arc_at(a, i)->Fc);
+	cr_assert(engine_has, "no -0 in the engine's arc: the test checks nothing");
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(path, sizeof path, "%s/arc.csv", dir);
+	snprintf(cpath, sizeof cpath, "%s/coll.csv", dir);
+	cr_assert_eq(csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(csv_write_collisions(cpath, s, msg, sizeof msg), HB_OK, "%s", msg);
+	text = slurp(path);
+	cr_assert(!has_negative_zero(text), "the trace holds a -0");
+	free(text);
+	text = slurp(cpath);
+	cr_assert(!has_negative_zero(text), "the collisions hold a -0");
+	free(text);
+	unlink(path);
+	unlink(cpath);
 	rmdir(dir);
 	sim_free(s);
 }
@@ -560,6 +607,55 @@ Test(csv, export_never_overwrites_the_preset_being_run)
 	unlink(pre);
 	rmdir(dir);
 	sim_free(s);
+}
+
+/* The explorer names the scene BASE.preset; the rules of an export still hold for it. */
+Test(csv, export_scene_named_by_the_caller)
+{
+	char dir[] = "/tmp/hb-csv-XXXXXX", pre[256], tpath[256], cpath[256], scene[256];
+	char msg[512] = "", *text;
+	struct sim *s = run("nonunique-separation", NULL);
+	struct csv_export_report r;
+
+	cr_assert(mkdtemp(dir) != NULL);
+	snprintf(tpath, sizeof tpath, "%s/x-trace.csv", dir);
+	snprintf(cpath, sizeof cpath, "%s/x-collisions.csv", dir);
+	snprintf(scene, sizeof scene, "%s/x.preset", dir);
+	cr_assert_eq(csv_export_files_scene(s, tpath, cpath, scene, NULL, &r, msg, sizeof msg),
+	    HB_OK, "%s", msg);
+	cr_assert_str_eq(r.scene, scene);
+	cr_assert_eq(r.scene_of, 0);
+	text = slurp(scene);
+	cr_assert(strstr(text, "x-trace.csv") != NULL && strstr(text, "[scene]") != NULL, "%s", text);
+	free(text);
+	cr_assert_eq(count_entries(dir), 3);
+	/* BASE.preset that is the preset being run: refused, nothing written. */
+	snprintf(pre, sizeof pre, "%s/my.preset", dir);
+	put(pre, "; my comments\n");
+	snprintf(tpath, sizeof tpath, "%s/my-trace.csv", dir);
+	snprintf(cpath, sizeof cpath, "%s/my-collisions.csv", dir);
+	cr_assert_eq(csv_export_files_scene(s, tpath, cpath, pre, pre, &r, msg, sizeof msg),
+	    HB_EINVAL);
+	cr_assert(strstr(msg, "is the preset being run") != NULL, "%s", msg);
+	cr_assert_eq(count_entries(dir), 4, "a file was written");
+	text = slurp(pre);
+	cr_assert_str_eq(text, "; my comments\n");
+	free(text);
+	/* NULL: the scene is derived from the first CSV, as before. */
+	cr_assert_eq(csv_export_files_scene(s, tpath, NULL, NULL, NULL, &r, msg, sizeof msg),
+	    HB_OK, "%s", msg);
+	snprintf(scene, sizeof scene, "%s/my-trace.preset", dir);
+	cr_assert_str_eq(r.scene, scene);
+	sim_free(s);
+	{
+		static const char *const made[] = { "x-trace.csv", "x-collisions.csv", "x.preset",
+		                                    "my.preset", "my-trace.csv", "my-trace.preset" };
+		for (size_t i = 0; i < sizeof made / sizeof made[0]; i++) {
+			snprintf(pre, sizeof pre, "%s/%s", dir, made[i]);
+			cr_assert_eq(unlink(pre), 0, "%s", pre);
+		}
+	}
+	cr_assert_eq(rmdir(dir), 0);
 }
 
 Test(csv, export_never_overwrites_a_shipped_preset)

@@ -335,7 +335,7 @@ Test(preset, wrong_unit)
 Test(preset, typed_but_derived_k)
 {
 	error_at(14, "k = 2e8 N m^-3/2",
-	    "[law] k: law.k is derived from the materials by eq. k_hertz; give masses instead of "
+	    "[law] k: law.k is derived from the materials by Hertz contact theory; give masses instead of "
 	    "materials to type it");
 }
 

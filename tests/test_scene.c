@@ -212,7 +212,7 @@ Test(scene, set_messages)
 	set_fails(&sc, "law.alpha", "abc", "'abc' is not a number");
 	set_fails(&sc, "law.n", "0.5", "accepted: [1, 1e+12]");
 	set_fails(&sc, "law.p", "0.9", "accepted: [1, 1e+12]");
-	set_fails(&sc, "law.k", "1e8", "derived from the materials by eq. k_hertz");
+	set_fails(&sc, "law.k", "1e8", "derived from the materials by Hertz contact theory");
 	set_fails(&sc, "law.k", "1e8", "give masses instead of materials");
 	set_fails(&sc, "law.foo", "1", "unknown key");
 	set_fails(&sc, "body1.E", "20 mm", "a pressure");
@@ -748,4 +748,60 @@ Test(scene, table_defaults_are_the_default_scene)
 	cr_assert_eq(sc.run.kinks, 1);
 	cr_assert_eq(sc.ext, 1);
 	cr_assert_eq(sc.run.stepper, STEPPER_DOP853);
+}
+
+/*
+ * The range the panel advertises and what a key takes agree at infinity:
+ * every key shown with "inf]" takes inf, every key shown with "inf)"
+ * refuses it, for each law's keys too.
+ */
+Test(scene, advertised_infinity_is_what_is_taken)
+{
+	static const char *laws[] = { "hertz", "bwmcl", "bwshccl", "shccl", "linear" };
+	int checked = 0;
+
+	for (size_t l = 0; l < sizeof laws / sizeof laws[0]; l++) {
+		struct scene sc;
+		char msg[256];
+		scene_defaults(&sc);
+		cr_assert_eq(scene_set(&sc, "scene.law", laws[l], msg, sizeof msg), HB_OK, "%s", msg);
+		for (int i = 0; i < scene_nkeys(&sc); i++) {
+			struct scene_keyinfo ki;
+			struct scene trial = sc;
+			int took;
+			cr_assert_eq(scene_key(&sc, i, &ki), HB_OK);
+			if (ki.kind != SCENE_KEY_NUMBER || ki.readonly || !isinf(ki.limits.hi))
+				continue;
+			took = scene_set(&trial, ki.key, "inf", msg, sizeof msg) == HB_OK;
+			cr_assert_eq(took, !ki.limits.hi_open,
+			    "%s (law %s) advertises %s but %s inf: %s", ki.key, laws[l], ki.range,
+			    took ? "takes" : "refuses", msg);
+			if (strstr(ki.range, "inf") != NULL) /* "any finite value" names no bound */
+				cr_assert_eq(strstr(ki.range, "inf]") != NULL, !ki.limits.hi_open,
+				    "%s: range text %s", ki.key, ki.range);
+			checked++;
+		}
+	}
+	cr_assert_gt(checked, 20, "only %d keys with an infinite bound checked", checked);
+}
+
+/* A mass whose weight overflows is refused before the run, naming the mass. */
+Test(scene, weight_must_be_finite)
+{
+	struct scene sc;
+	char msg[256];
+
+	scene_defaults(&sc);
+	cr_assert_eq(scene_set(&sc, "body1.mass", "1e308 kg", msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strncmp(msg, "body1.mass: its weight m g (1e+308 kg", 37) == 0, "%s", msg);
+	cr_assert(strstr(msg, "accepted: 1.833e+307 kg or less at g = 9.81 m/s^2") != NULL, "%s", msg);
+	cr_assert(strstr(msg, "inf") == NULL, "%s", msg);
+	/* Without gravity the same mass is fine. */
+	cr_assert_eq(scene_set(&sc, "loads.g", "0", msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	/* A fixed obstacle (body 2 of infinite mass) carries no weight. */
+	scene_defaults(&sc);
+	cr_assert_eq(scene_set(&sc, "body2.mass", "inf", msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
 }

@@ -5,6 +5,7 @@
  * a dimension (and that they parse back); formatting with prefixes; axis
  * scales.
  */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -229,12 +230,37 @@ Test(units, format)
 	format_is(-0.5, UNIT_VELOCITY, 4, "-500 mm/s");
 	format_is(2.5, UNIT_VELOCITY, 4, "2.5 m/s");
 	format_is(0, UNIT_LENGTH, 4, "0 m");
+	format_is(-0.0, UNIT_FORCE, 4, "0 N");           /* no "-0 N" */
+	format_is(-0.0, UNIT_NONE, 4, "0");
 	format_is(INFINITY, UNIT_LENGTH, 4, "inf m");
 	format_is(INFINITY, UNIT_MASS, 4, "inf kg");
 	format_is(0.35, UNIT_NONE, 4, "0.35");
 	format_is(2.138e8, K_HERTZ, 4, "2.138e+08 N m^-3/2");
 	format_is(4400, C_MAXWELL, 4, "4400 N s/m");
 	format_is(9.81, UNIT_ACCEL, 4, "9.81 m/s^2");
+}
+
+/* Values past the largest prefix: the SI unit with an exponent, never inf. */
+Test(units, format_extreme)
+{
+	char buf[64];
+	double v;
+
+	format_is(1e308, UNIT_MASS, 4, "1e+308 kg");
+	format_is(-1e308, UNIT_MASS, 4, "-1e+308 kg");
+	format_is(DBL_MAX, UNIT_MASS, 4, "1.798e+308 kg");
+	format_is(1e308, UNIT_LENGTH, 4, "1e+308 m");
+	format_is(1e308, UNIT_PRESSURE, 4, "1e+308 Pa");
+	format_is(1e308, UNIT_VELOCITY, 4, "1e+308 m/s");
+	format_is(2.5e3, UNIT_MASS, 4, "2.5 Mg");       /* within the prefixes: unchanged */
+	format_is(2.5e6, UNIT_MASS, 4, "2.5e+06 kg");
+	format_is(4e-300, UNIT_MASS, 4, "4e-282 fg");
+	cr_assert_str_eq(units_format_exact(1e308, UNIT_MASS, buf, sizeof buf), "1e+308 kg");
+	cr_assert_eq(units_parse(buf, UNIT_MASS, &v, NULL, 0), HB_OK);
+	cr_assert_eq(v, 1e308);
+	units_format_exact(DBL_MAX, UNIT_MASS, buf, sizeof buf);
+	cr_assert_eq(units_parse(buf, UNIT_MASS, &v, NULL, 0), HB_OK, "%s", buf);
+	cr_assert_eq(v, DBL_MAX, "%s", buf);
 }
 
 Test(units, axis)

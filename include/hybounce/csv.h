@@ -80,6 +80,16 @@ int
 csv_export_files(const struct sim *s, const char *trace, const char *coll,
                  const char *run_preset, struct csv_export_report *r, char *msg, size_t n);
 
+/*
+ * csv_export_files with the scene's file named by the caller (the
+ * explorer's BASE.preset beside BASE-trace.csv) instead of derived from
+ * the first CSV; scene NULL: derived.  Same rules and checks otherwise.
+ */
+int
+csv_export_files_scene(const struct sim *s, const char *trace, const char *coll,
+                       const char *scene, const char *run_preset,
+                       struct csv_export_report *r, char *msg, size_t n);
+
 /* Every check of csv_export_files that can be made before the run. */
 int
 csv_export_check(const char *trace, const char *coll, const char *run_preset,

@@ -270,7 +270,7 @@ print_header(FILE *out, const char *preset, const char *path,
 			        fmt(sc->par[i], units_resolve(pp->dim,
 			            law_exponent_p(sc->law, sc->par),
 			            law_exponent_n(sc->law, sc->par)), a, sizeof a),
-			        d->k_derived ? " (eq. k_hertz)" : " (typed)");
+			        d->k_derived ? " (from the materials, Hertz)" : " (typed)");
 	}
 	fprintf(out, "\n");
 	fprintf(out, "run         T = %s, J = %ld, stepper %s, rtol = %.3g, atol = %.3g",

@@ -52,13 +52,20 @@ put_field(FILE *f, const char *s, int first)
 	fputc('"', f);
 }
 
-/* Writes a number as %.17g; NaN (unknown) as an empty field. */
+/* A number as %.17g, a negative zero as 0 (a sign that carries nothing). */
+static void
+print_num(FILE *f, double v)
+{
+	fprintf(f, "%.17g", v == 0 ? 0.0 : v);
+}
+
+/* Writes a number as print_num does; NaN (unknown) as an empty field. */
 static void
 put_num(FILE *f, double v)
 {
 	fputc(',', f);
 	if (!isnan(v))
-		fprintf(f, "%.17g", v);
+		print_num(f, v);
 }
 
 /* 0 while f is good, else the error of its failed write (EIO if unknown). */
@@ -106,7 +113,8 @@ write_arc(FILE *f, const struct sim *s)
 		return e;
 	for (size_t i = 0; i < len; i++) {
 		const struct arc_sample *p = arc_at(a, i);
-		fprintf(f, "%.17g,%ld,%d", p->t, p->j, p->q);
+		print_num(f, p->t);
+		fprintf(f, ",%ld,%d", p->j, p->q);
 		put_num(f, p->x);
 		put_num(f, p->v);
 		put_num(f, p->xc);
@@ -284,8 +292,8 @@ protect(const char *path, const char *what, const char *run_preset, char *msg, s
  * scene (NULL when none).  Every check that can be made before writing.
  */
 static int
-plan(const char *trace, const char *coll, const char *run_preset, struct csv_export_report *r,
-     char *msg, size_t n)
+plan(const char *trace, const char *coll, const char *scene, const char *run_preset,
+     struct csv_export_report *r, char *msg, size_t n)
 {
 	const char *csv[2] = { trace, coll };
 	char what[4200];
@@ -308,7 +316,12 @@ plan(const char *trace, const char *coll, const char *run_preset, struct csv_exp
 			return st;
 		/* The scene goes beside the first CSV that is a file. */
 		if (r->scene_of < 0 && r->target[k].how != ATOMIC_IN_PLACE) {
-			if (scene_path(csv[k], r->scene, sizeof r->scene) != 0)
+			if (scene != NULL) {
+				if (strlen(scene) >= sizeof r->scene)
+					return status_set(msg, n, HB_EIO, "%s: %s", scene,
+					                  strerror(ENAMETOOLONG));
+				snprintf(r->scene, sizeof r->scene, "%s", scene);
+			} else if (scene_path(csv[k], r->scene, sizeof r->scene) != 0)
 				return status_set(msg, n, HB_EIO, "%s: %s", csv[k],
 				                  strerror(ENAMETOOLONG));
 			r->scene_of = k;
@@ -333,7 +346,7 @@ csv_export_check(const char *trace, const char *coll, const char *run_preset,
 {
 	struct csv_export_report r;
 
-	return plan(trace, coll, run_preset, &r, msg, n);
+	return plan(trace, coll, NULL, run_preset, &r, msg, n);
 }
 
 /* ", the trace PATH (cksum CRC LENGTH)": one CSV of the export, file k of set. */
@@ -378,11 +391,19 @@ int
 csv_export_files(const struct sim *s, const char *trace, const char *coll,
                  const char *run_preset, struct csv_export_report *r, char *msg, size_t n)
 {
+	return csv_export_files_scene(s, trace, coll, NULL, run_preset, r, msg, n);
+}
+
+int
+csv_export_files_scene(const struct sim *s, const char *trace, const char *coll,
+                       const char *scene, const char *run_preset,
+                       struct csv_export_report *r, char *msg, size_t n)
+{
 	struct atomic_set set;
 	const char *paths[3];
 	int st, index[2] = { -1, -1 };   /* trace, collisions: their file in set */
 
-	if ((st = plan(trace, coll, run_preset, r, msg, n)) != HB_OK)
+	if ((st = plan(trace, coll, scene, run_preset, r, msg, n)) != HB_OK)
 		return st;
 	paths[0] = trace;
 	paths[1] = coll;

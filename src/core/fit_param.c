@@ -50,8 +50,8 @@ find(const struct scene *sc, const char *key, struct scene_keyinfo *ki, char *ms
 		return HB_OK;
 	accepted(sc, acc, sizeof acc);
 	if (strcmp(key, "law.k") == 0 || strncmp(key, "derived.", 8) == 0)
-		return status_set(msg, n, HB_EINVAL, "%s is derived from the materials (eq. "
-		    "k_hertz); free body1.E or body2.E instead, or give masses instead of "
+		return status_set(msg, n, HB_EINVAL, "%s is derived from the materials (Hertz "
+		    "contact theory); free body1.E or body2.E instead, or give masses instead of "
 		    "materials to make k a parameter; accepted: %s", key, acc);
 	return status_set(msg, n, HB_EINVAL, "%s: not a numeric key that can be fitted; "
 	    "accepted: %s", key, acc);

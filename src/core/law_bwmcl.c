@@ -24,11 +24,11 @@
 #include "law_common.h"
 
 static const struct law_param bwmcl_params[LAW_BW_NPAR] = {
-	LAW_BW_PARAMS(2.138e8, 5e7, 5e7, "bwm_phi", "bwm_psi1",
-	    "Bouc-Wen gain A: dz1/dt = A dz2/dt while z1 is small (eq. bwm_psi1)",
+	LAW_BW_PARAMS(2.138e8, 5e7, 5e7, "Phi of the BWMCL", "Psi_1 of the BWMCL",
+	    "Bouc-Wen gain A: dz1/dt = A dz2/dt while z1 is small (Psi_1 of the BWMCL)",
 	    "exponent of both spring branches; 3/2 is Hertz's"),
 	[LAW_BW_C] = { "c", { .kg = 1, .s = -1 }, LAW_RANGE_POSITIVE, 4.4e3, 0,
-	        "Maxwell dashpot in series, N s/m; sets the sinking rate m g / c (table tab:one)" },
+	        "Maxwell dashpot in series, N s/m; sets the sinking rate m g / c (Table 1 of the paper)" },
 };
 
 /* Eq. bwm_phi: the elastic branch deflects by z2, the hysteretic one by z1. */

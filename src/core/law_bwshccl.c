@@ -23,10 +23,10 @@
 #include "law_common.h"
 
 static const struct law_param bwshccl_params[LAW_BW_NPAR] = {
-	LAW_BW_PARAMS(7.095e7, 2.409e8, 2.409e8, "bwshc_phi", "bwshc_psi",
-	    "Bouc-Wen gain A: dz/dt = A v while z is small (eq. bwshc_psi)",
+	LAW_BW_PARAMS(7.095e7, 2.409e8, 2.409e8, "Phi of the BWSHCCL", "Psi of the BWSHCCL",
+	    "Bouc-Wen gain A: dz/dt = A v while z is small (Psi of the BWSHCCL)",
 	    "exponent of both branches and of the damping; 3/2 is Hertz's"),
-	[LAW_BW_C] = LAW_PARAM_C_HC(2.5e7, "tab:two"),
+	[LAW_BW_C] = LAW_PARAM_C_HC(2.5e7, "2"),
 };
 
 /* Eq. bwshc_phi: the branches at (x_c, z), then the damping. */

@@ -47,10 +47,10 @@
 #define LAW_PARAM_P(help) \
 	{ "p", LAW_DIM_NONE, LAW_RANGE_EXPONENT, 1.5, LAW_PARAM_EXPONENT_P, help }
 
-/* The Hunt-Crossley damping c >= 0 of a term c|x|^p v; table: a label. */
+/* The Hunt-Crossley damping c >= 0 of a term c|x|^p v; table: its number in the paper. */
 #define LAW_PARAM_C_HC(def, table) \
 	{ "c", LAW_DIM_C_HC, LAW_RANGE_NONNEG, (def), 0, \
-	  "Hunt-Crossley damping c|x|^p v, N s m^(-p-1) (table " table ")" }
+	  "Hunt-Crossley damping c|x|^p v, N s m^(-p-1) (Table " table " of the paper)" }
 
 /*
  * The Bouc-Wen laws (BWSHCCL, BWMCL) share their parameter layout: the
@@ -72,22 +72,22 @@ enum {
 
 /*
  * The rows LAW_BW_K .. LAW_BW_P of a Bouc-Wen table (the law adds
- * LAW_BW_C).  phi_eq and psi_eq are the labels of the law's Phi and of its
- * Bouc-Wen equation; a_help and p_help the help of A and p.
+ * LAW_BW_C).  phi_eq and psi_eq name the law's Phi and its Bouc-Wen
+ * equation for the reader ("Psi of the BWSHCCL"); a_help and p_help the help of A and p.
  */
 #define LAW_BW_PARAMS(k_def, beta_def, gamma_def, phi_eq, psi_eq, a_help, p_help) \
 	[LAW_BW_K] = LAW_PARAM_K(k_def, "stiffness of both branches, N m^-p; " \
-	                         "derived by eq. k_hertz from the materials"), \
+	                         "derived from the materials by Hertz contact theory"), \
 	[LAW_BW_A] = { "A", LAW_DIM_NONE, LAW_RANGE_POSITIVE, 1.0, 0, a_help }, \
 	[LAW_BW_ALPHA] = { "alpha", LAW_DIM_NONE, LAW_RANGE_FRACTION, 0.35, 0, \
-	        "share of the elastic branch; 1 - alpha is hysteretic (eq. " phi_eq ")" }, \
+	        "share of the elastic branch; 1 - alpha is hysteretic (" phi_eq ")" }, \
 	[LAW_BW_BETA] = { "beta", LAW_DIM_PER_M_N, LAW_RANGE_NONNEG, (beta_def), 0, \
-	        "Bouc-Wen beta, m^-n: shapes the hysteresis loop (eq. " psi_eq ")" }, \
+	        "Bouc-Wen beta, m^-n: shapes the hysteresis loop (" psi_eq ")" }, \
 	[LAW_BW_GAMMA] = { "gamma", LAW_DIM_PER_M_N, LAW_RANGE_ANY, (gamma_def), \
 	        LAW_PARAM_CHECKED, \
-	        "Bouc-Wen gamma, m^-n, in [-beta, beta] (eq. " psi_eq ")" }, \
+	        "Bouc-Wen gamma, m^-n, in [-beta, beta] (" psi_eq ")" }, \
 	[LAW_BW_N] = { "n", LAW_DIM_NONE, LAW_RANGE_EXPONENT, 2.0, LAW_PARAM_EXPONENT_N, \
-	        "Bouc-Wen exponent n: sharpness of the yield (eq. " psi_eq ")" }, \
+	        "Bouc-Wen exponent n: sharpness of the yield (" psi_eq ")" }, \
 	[LAW_BW_P] = LAW_PARAM_P(p_help)
 
 /*

@@ -23,7 +23,7 @@ enum { K, P, NPAR };
 
 static const struct law_param hertz_params[NPAR] = {
 	[K] = LAW_PARAM_K(2.138e8, "stiffness of the spring, N m^-p; "
-	                  "k = k_H (eq. k_hertz) from the materials"),
+	                  "k = k_H, the Hertz coefficient of the materials"),
 	[P] = LAW_PARAM_P("exponent of the spring; 3/2 is Hertz's for spheres"),
 };
 

@@ -23,7 +23,7 @@ enum { K, NPAR };
 
 static const struct law_param linear_params[NPAR] = {
 	[K] = { "k", { .kg = 1, .s = -2 }, LAW_RANGE_POSITIVE, 1e5, 0,
-	        "spring constant, N/m (eq. nonuniq_law); never derived from materials" },
+	        "spring constant, N/m (the paper's example of non-uniqueness at a separation); never derived from materials" },
 };
 
 static double
@@ -49,7 +49,7 @@ linear_jac(const double *par, int ext, double xc, const double *z, double v,
 const struct law_type law_linear = {
 	.name = "linear",
 	.title = "Clamped linear (non-uniqueness example)",
-	.description = "Linear spring k min(x_c, 0) of eq. nonuniq_law; continued "
+	.description = "Linear spring k min(x_c, 0) of the paper's example of non-uniqueness at a separation; continued "
 	               "to x_c > 0 as k x_c (adhesive, rule R1), or clamped as "
 	               "written when ext = 0",
 	.n_z = 0,

@@ -23,9 +23,9 @@ enum { K, P, C, NPAR };
 
 static const struct law_param shccl_params[NPAR] = {
 	[K] = LAW_PARAM_K(4.254e8, "stiffness of the Hertz term, N m^-p; "
-	                  "k = k_H (eq. k_hertz) from the materials"),
+	                  "k = k_H, the Hertz coefficient of the materials"),
 	[P] = LAW_PARAM_P("exponent of the spring and of the damping; 3/2 is Hertz's"),
-	[C] = LAW_PARAM_C_HC(4.3e9, "tab:slow"),
+	[C] = LAW_PARAM_C_HC(4.3e9, "3"),
 };
 
 static double

@@ -43,7 +43,7 @@ mdoc_laws(struct textbuf *o)
 			textbuf_printf(o, ".It Cm %s\n%s%s\n", law->params[i].name, ki.help,
 			    ki.help[0] && ki.help[strlen(ki.help) - 1] == '.' ? "" : ".");
 			if ((law->params[i].flags & LAW_PARAM_STIFFNESS) && law->k_hertz != NULL)
-				textbuf_printf(o, "Derived from the materials by eq. k_hertz when both bodies "
+				textbuf_printf(o, "Derived from the materials by Hertz contact theory when both bodies "
 				    "have them; typed otherwise.\n");
 			textbuf_printf(o, "Accepted: %s%s%s.\n", ki.range, ki.unit[0] ? ", in " : "",
 			    ki.unit[0] ? ki.unit : "");

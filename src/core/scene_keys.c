@@ -73,7 +73,7 @@ const struct scene_keydef scene_keydefs[] = {
 	NUM("loads.F2", "loads", "F2", UNIT_FORCE, R_ANY, 0, loads.F2, SP_FULL,
 	    "constant force on body 2 along n1 (full system)"),
 	TXT("loads.ramp", "loads", "ramp", ST_BOOL, "no", loads.ramp, 0,
-	    "the S-ramp loads of the second study (eqs. u_1, u_2): yes or no"),
+	    "the S-ramp loads F_e1(t), F_e2(t) of the second study: yes or no"),
 	NUM("loads.F_e0", "loads", "F_e0", UNIT_FORCE, R_NONNEG, 0, loads.Fe0, SP_RAMP,
 	    "ramp: force drawing the bodies together, from F_e0 to 2 F_e0"),
 	NUM("loads.T_e", "loads", "T_e", UNIT_TIME, R_POS, 0.2, loads.Te, SP_RAMP,

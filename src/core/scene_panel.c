@@ -104,8 +104,8 @@ derived_row(const struct scene *sc, int id, struct scene_keyinfo *o)
 		[D_M] = { "derived.m", "m", "effective mass m1 m2/(m1 + m2)", &UNIT_MASS },
 		[D_ETA] = { "derived.eta", "eta", "m1/(m1 + m2)", &UNIT_NONE },
 		[D_KH] = { "derived.kH", "k_H", "Hertz coefficient 4/3 E* sqrt(R_e)", NULL },
-		[D_K] = { "derived.k", "k", "stiffness by eq. k_hertz", NULL },
-		[D_XCS] = { "derived.xcs", "x_c^s", "static Hertz indentation (m g / k_H)^(1/p) (eq. x_static)", &UNIT_LENGTH },
+		[D_K] = { "derived.k", "k", "stiffness, from the materials by Hertz contact theory", NULL },
+		[D_XCS] = { "derived.xcs", "x_c^s", "static Hertz indentation (m g / k_H)^(1/p)", &UNIT_LENGTH },
 	};
 	double v = 0;
 	struct unit_dim dim = UNIT_NONE;

@@ -129,7 +129,7 @@ key_lookup(const struct scene *tmp, const char *key, const struct scene_keydef *
 		*li = law_param_index(tmp->law, key + 4);
 		if (ki.readonly)
 			return scene_error_set(err, key, "no value",
-			    "%s is derived from the materials by eq. k_hertz; give masses instead of "
+			    "%s is derived from the materials by Hertz contact theory; give masses instead of "
 			    "materials to type it", key);
 		return HB_OK;
 	}

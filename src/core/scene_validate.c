@@ -4,6 +4,7 @@
  * values (see scene.h).  The error is data: the key at fault, its value and
  * the accepted range.
  */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -114,6 +115,31 @@ check_law(const struct scene *sc, struct scene_error *err)
 	return HB_OK;
 }
 
+/*
+ * The weight m g of each moving body is a finite force: 1e308 kg under
+ * gravity is refused here, naming the mass, rather than failing the run on
+ * an overflowing flight.
+ */
+static int
+check_weight(const struct scene *sc, struct scene_error *err)
+{
+	for (int b = 0; b < 2; b++) {
+		double m = b == 0 ? sc->d.m1 : sc->d.m2;
+		char ms[64], lim[96], gs[64];
+		if (b == 1 && (sc->d.system != SCENE_FULL || isinf(m)))
+			continue; /* body 2 fixed, or its load not applied */
+		if (isfinite(m * sc->loads.g))
+			continue;
+		units_format(m, UNIT_MASS, 4, ms, sizeof ms);
+		units_format(sc->loads.g, UNIT_ACCEL, 4, gs, sizeof gs);
+		units_format(DBL_MAX / fabs(sc->loads.g), UNIT_MASS, 4, lim, sizeof lim);
+		snprintf(lim + strlen(lim), sizeof lim - strlen(lim), " or less at g = %s", gs);
+		return scene_error_set(err, b == 0 ? "body1.mass" : "body2.mass", lim,
+		    "its weight m g (%s times %s) overflows a double", ms, gs);
+	}
+	return HB_OK;
+}
+
 int
 scene_check(struct scene *sc, struct scene_error *err)
 {
@@ -144,6 +170,8 @@ scene_check(struct scene *sc, struct scene_error *err)
 	if ((st = check_value("body1.mass", sc->d.m1, &m1, UNIT_MASS, &UNIT_MASS, "value", err)))
 		return st;
 	if ((st = check_value("body2.mass", sc->d.m2, &m2, UNIT_MASS, &UNIT_MASS, "value", err)))
+		return st;
+	if ((st = check_weight(sc, err)) != HB_OK)
 		return st;
 	return check_law(sc, err);
 }

@@ -454,24 +454,37 @@ mantissa(double v, int sig, char *buf, size_t n)
 	return fabs(strtod(buf, NULL));
 }
 
-/* Formats with a prefix on `base` (e.g. "m", "g"), then `tail` ("/s"). */
+/*
+ * Formats with a prefix on `base` (e.g. "m", "g"), then `tail` ("/s").
+ * The scale is one product (base times prefix), so no intermediate
+ * quotient overflows (1e308 kg is not 1e311 g).  A value past the largest
+ * prefix is written in the SI unit (m, kg, Pa) with an exponent: 1e+308 kg,
+ * not 1e+302 Mg.
+ */
 static char *
 format_prefixed(double value, double base_factor, const char *base, const char *tail,
                 int lo, int hi, int sig, char *buf, size_t n)
 {
 	char mbuf[64];
-	double v = value / base_factor, a = fabs(v);
+	double a = fabs(value);
 	int k = 5; /* index of "" in out_prefixes */
 
 	if (a != 0 && isfinite(a)) {
 		for (k = lo; k < hi; k++)
-			if (a < out_prefixes[k + 1].factor)
+			if (a < out_prefixes[k + 1].factor * base_factor)
 				break;
-		if (mantissa(v / out_prefixes[k].factor, sig, mbuf, sizeof mbuf) >= 1000 &&
-		    k < hi)
-			k++;
+		if (mantissa(value / (out_prefixes[k].factor * base_factor), sig, mbuf,
+		        sizeof mbuf) >= 1000) {
+			if (k < hi)
+				k++;
+			if (mantissa(value / (out_prefixes[k].factor * base_factor), sig, mbuf,
+			        sizeof mbuf) >= 1000) /* past the largest prefix: the SI unit */
+				for (k = 0; k < (int)NOUT - 1; k++)
+					if (fabs(out_prefixes[k].factor * base_factor - 1) < 1e-9)
+						break;
+		}
 	}
-	mantissa(v / out_prefixes[k].factor, sig, mbuf, sizeof mbuf);
+	mantissa(value / (out_prefixes[k].factor * base_factor), sig, mbuf, sizeof mbuf);
 	snprintf(buf, n, "%s %s%s%s", mbuf, out_prefixes[k].name, base, tail);
 	return buf;
 }
@@ -501,6 +514,8 @@ units_format(double value, struct unit_dim d, int sig, char *buf, size_t n)
 		sig = 1;
 	if (sig > 17)
 		sig = 17;
+	if (value == 0)
+		value = 0; /* -0 is shown as 0: its sign carries nothing */
 	d = units_resolve(d, 0, 0);
 	if (dim_eq(d, UNIT_NONE)) {
 		snprintf(buf, n, "%.*g", sig, value);

@@ -60,7 +60,7 @@ static const struct key_binding table[] = {
 	{ 'c', 0, CTX_ANY, ACT_COMPARE, "c", "table: differences against pinned run 1, 2, 3, off", NULL },
 	{ '3', 0, CTX_ANY, ACT_STUDY3, "3",
 	  "the paper's third study: permanent-contact-shccl, -bwshccl, -bwmcl pinned together", NULL },
-	{ 'e', 0, CTX_ANY, ACT_EXPORT, "e", "export BASE-trace.csv, BASE-collisions.csv and the scene", "export" },
+	{ 'e', 0, CTX_ANY, ACT_EXPORT, "e", "export BASE-trace.csv, BASE-collisions.csv and the scene BASE.preset", "export" },
 	{ 'm', 0, CTX_ANY, ACT_LOG, "m", "the message log: every message, whole", "log" },
 	{ 'T', 0, CTX_ANY, ACT_PRESENT, "T",
 	  "presentation: no table, large plots, each contact followed in slow motion, looping", NULL },

@@ -292,7 +292,7 @@ act_export(struct app *a)
 	strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
 	if (getcwd(cwd, sizeof cwd) == NULL)
 		snprintf(cwd, sizeof cwd, ".");
-	prompt_open(a, PROMPT_EXPORT, "", "export to %.60s/BASE-trace.csv, -collisions.csv, scene; BASE",
+	prompt_open(a, PROMPT_EXPORT, "", "export to %.60s/BASE-trace.csv, -collisions.csv, .preset; BASE",
 	            cwd);
 	snprintf(a->prompt_buf, sizeof a->prompt_buf, "%.40s-%s", a->preset, stamp);
 }
@@ -309,14 +309,14 @@ how_written(const struct atomic_target *t)
 }
 
 /*
- * Writes BASE-trace.csv, BASE-collisions.csv and the scene beside them
+ * Writes BASE-trace.csv, BASE-collisions.csv and the scene as BASE.preset
  * through csv_export_files(): all or nothing, never over the preset being
  * run or a shipped preset, every overwrite named in the message.
  */
 void
 export_do(struct app *a, const char *base)
 {
-	char trace[600], coll[600], emsg[512], note[256] = "";
+	char trace[600], coll[600], scene[600], emsg[512], note[256] = "";
 	struct csv_export_report *rep;
 
 	if (base[0] == 0) {
@@ -325,10 +325,12 @@ export_do(struct app *a, const char *base)
 	}
 	snprintf(trace, sizeof trace, "%s-trace.csv", base);
 	snprintf(coll, sizeof coll, "%s-collisions.csv", base);
+	snprintf(scene, sizeof scene, "%s.preset", base);
 	rep = calloc(1, sizeof *rep);
 	if (rep == NULL)
 		term_oom();
-	if (csv_export_files(a->sim, trace, coll, a->preset_path, rep, emsg, sizeof emsg) != HB_OK) {
+	if (csv_export_files_scene(a->sim, trace, coll, scene, a->preset_path, rep, emsg,
+	        sizeof emsg) != HB_OK) {
 		app_msg(a, 1, "export failed, nothing written: %s", emsg);
 		free(rep);
 		return;

@@ -135,20 +135,20 @@ wait_for a 'pinned runs cleared' 30 || notok "P clears pins" a
 # ---- 7. export -------------------------------------------------------------
 keys a e
 if wait_for a 'BASE: ' 30 && keys a C-u \
-   && wait_for a '^export to /.*/BASE-trace\.csv, -collisions\.csv, scene; BASE: _' 30; then
+   && wait_for a '^export to /.*/BASE-trace\.csv, -collisions\.csv, \.preset; BASE: _' 30; then
 	keys a -l "$TMP/out/run1"
 	mkdir -p "$TMP/out"
 	keys a Enter
 	if wait_for a "wrote $TMP/out/run1-trace.csv" 50 \
 	   && [ -s "$TMP/out/run1-trace.csv" ] && [ -s "$TMP/out/run1-collisions.csv" ] \
-	   && ls "$TMP/out/"*.preset >/dev/null 2>&1 \
+	   && [ -s "$TMP/out/run1.preset" ] && [ ! -e "$TMP/out/run1-trace.preset" ] \
 	   && head -n 1 "$TMP/out/run1-trace.csv" | grep -q '^t,j,q_c,x,v,x_c' \
 	   && awk -F, 'NR == 1 { n = NF } NF != n { bad = 1 } END { exit bad || NR < 3 }' "$TMP/out/run1-trace.csv" \
 	   && awk -F, 'NR == 1 { n = NF } NF != n { bad = 1 } END { exit bad || NR < 2 }' "$TMP/out/run1-collisions.csv" \
-	   && "$BIN" --batch "$(ls "$TMP/out/"*.preset | head -n 1)" -q >/dev/null 2>&1; then
-		ok "export: trace and collisions CSV and the scene preset written and parse"
+	   && "$BIN" --batch "$TMP/out/run1.preset" -q >/dev/null 2>&1; then
+		ok "export: trace and collisions CSV and the scene run1.preset written and parse"
 	else
-		notok "export: trace and collisions CSV and the scene preset written and parse" a
+		notok "export: trace and collisions CSV and the scene run1.preset written and parse" a
 		ls -l "$TMP/out" | sed 's/^/#   /'
 	fi
 else

@@ -11,7 +11,7 @@ wait_for a ' finished$' 150
 mkdir -p "$TMP/out"
 keys a e
 if wait_for a "^\\.\\.\\..*BASE: steel-on-bitumen-[0-9]{8}-[0-9]{6}_\$" 30 && keys a C-u \
-   && wait_for a "^export to $TMP/BASE-trace\\.csv, -collisions\\.csv, scene; BASE: _" 30; then
+   && wait_for a "^export to $TMP/BASE-trace\\.csv, -collisions\\.csv, \\.preset; BASE: _" 30; then
 	ok "the export prompt names the folder ($TMP) and proposes a name from the preset"
 else
 	notok "the export prompt names the folder" a
@@ -20,8 +20,8 @@ keys a C-u
 keys a -l "out/x"
 keys a Enter
 if wait_for a '^wrote out/x-trace\.csv' 50 && keys a m && wait_for a 'messages, oldest first' 30 \
-   && logtext a | grep -q 'wrote out/x-trace\.csv, out/x-collisions\.csv and out/x-trace\.preset ([0-9][0-9]* samples, 12 collisions)' \
-   && [ -s "$TMP/out/x-trace.csv" ] && [ -s "$TMP/out/x-collisions.csv" ] && [ -s "$TMP/out/x-trace.preset" ]; then
+   && logtext a | grep -q 'wrote out/x-trace\.csv, out/x-collisions\.csv and out/x\.preset ([0-9][0-9]* samples, 12 collisions)' \
+   && [ -s "$TMP/out/x-trace.csv" ] && [ -s "$TMP/out/x-collisions.csv" ] && [ -s "$TMP/out/x.preset" ]; then
 	ok "export: the message names the three files written"
 else
 	notok "export: the message names the three files written" a
@@ -36,7 +36,7 @@ keys a Enter
 wait_for a '^wrote out/x-trace' 50
 keys a m
 if wait_for a 'messages, oldest first' 30 \
-   && logtext a | grep -q 'wrote out/x-trace\.csv (replaced the existing file), out/x-collisions\.csv (replaced the existing file) and out/x-trace\.preset (replaced the existing file)'; then
+   && logtext a | grep -q 'wrote out/x-trace\.csv (replaced the existing file), out/x-collisions\.csv (replaced the existing file) and out/x\.preset (replaced the existing file)'; then
 	ok "a second export to the same name says it replaced the files"
 else
 	notok "a second export says it replaced the files" a
