@@ -207,6 +207,8 @@ FUZZ_FLAGS := -g -O1 -std=c17 -Wall -Wextra -MMD -MP $(FUZZ_SAN)
 FUZZ_SRC   := $(sort $(wildcard tests/fuzz/fuzz_*.c))
 FUZZ_BINS  := $(FUZZ_SRC:tests/fuzz/%.c=$(FUZZ_DIR)/%)
 FUZZ_OBJ   := $(CORE_SRC:%.c=$(FUZZ_DIR)/obj/%.o)
+# kept: not intermediate files that make would delete after linking
+.SECONDARY: $(FUZZ_OBJ)
 
 $(FUZZ_DIR)/obj/%.o: %.c
 	@mkdir -p $(@D)
