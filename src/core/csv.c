@@ -32,13 +32,12 @@
 #include "hybounce/csv.h"
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
+#include "csv_impl.h"
 
 /* Writes one field, quoted as RFC 4180 asks when it needs to be. */
-static void
-put_field(FILE *f, const char *s, int first)
+void
+csv_put_field(FILE *f, const char *s)
 {
-	if (!first)
-		fputc(',', f);
 	if (strpbrk(s, ",\"\r\n") == NULL) {
 		fputs(s, f);
 		return;
@@ -50,6 +49,14 @@ put_field(FILE *f, const char *s, int first)
 		fputc(*s, f);
 	}
 	fputc('"', f);
+}
+
+static void
+put_field(FILE *f, const char *s, int first)
+{
+	if (!first)
+		fputc(',', f);
+	csv_put_field(f, s);
 }
 
 /* Writes a number as %.17g; NaN (unknown) as an empty field. */
