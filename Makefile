@@ -181,9 +181,8 @@ unit: $(UNIT)
 # Every test: the Criterion unit tests, then the command-line and explorer
 # tests (tmux); ends with "N passed, N failed".
 check: deps
-	@$(MAKE) --no-print-directory all unit
-	@sh tests/run.sh $(BIN) $(UNIT)
-	@$(MAKE) --no-print-directory fuzz-smoke
+	@$(MAKE) --no-print-directory all unit fuzzers
+	@HYBOUNCE_FUZZ_SMOKE="$(FUZZ_RUNS) $(FUZZ_BINS)" sh tests/run.sh $(BIN) $(UNIT)
 
 check-asan: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan SAN=address,undefined OPT=-O1 all unit
@@ -196,7 +195,7 @@ check-asan: deps
 # in build/fuzz.  `make fuzz` is the long campaign: FUZZ_TIME seconds per
 # harness (default 60), corpus grown in build/fuzz/corpus/NAME from the seeds
 # in tests/fuzz/corpus and presets/, findings (crash-*, leak-*, timeout-*) left in
-# build/fuzz/findings/.  `make fuzz-smoke` (the last step of make check)
+# build/fuzz/findings/.  `make fuzz-smoke` (also the last step of make check's tests/run.sh, counted in its summary)
 # runs each harness FUZZ_RUNS times (default 100000), from its seeds.
 FUZZ_CC    ?= clang
 FUZZ_TIME  ?= 60

@@ -5,7 +5,8 @@
 #
 #   sh tests/run.sh BIN UNIT
 #
-# BIN is the hybounce binary, UNIT the Criterion test binary.
+# BIN is the hybounce binary, UNIT the Criterion test binary.  With
+# HYBOUNCE_FUZZ_SMOKE="RUNS HARNESS..." (make check) the fuzz smoke runs last.
 set -u
 BIN=${1:-build/hybounce}
 UNIT=${2:-build/unit-tests}
@@ -36,10 +37,12 @@ fi
 }
 rm -f "$out"
 
-for t in tests/cli/*.sh tests/tui/*.sh; do
-	[ -f "$t" ] || continue
+# count NAME COMMAND...: runs a TAP-style test command and counts its lines.
+count() {
+	name=$1
+	shift
 	out=$(mktemp)
-	sh "$t" >"$out" 2>&1
+	"$@" >"$out" 2>&1
 	status=$?
 	cat "$out"
 	p=$(grep -c '^ok ' "$out")
@@ -47,15 +50,27 @@ for t in tests/cli/*.sh tests/tui/*.sh; do
 	passed=$((passed + p))
 	failed=$((failed + f))
 	if [ "$status" -ne 0 ] && [ "$f" = 0 ]; then
-		echo "not ok - $t exited $status"
+		echo "not ok - $name exited $status"
 		failed=$((failed + 1))
 	fi
 	if [ "$p" = 0 ] && [ "$f" = 0 ] && [ "$status" = 0 ]; then
-		echo "not ok - $t ran no test"
+		echo "not ok - $name ran no test"
 		failed=$((failed + 1))
 	fi
 	rm -f "$out"
+}
+
+for t in tests/cli/*.sh tests/tui/*.sh; do
+	[ -f "$t" ] || continue
+	count "$t" sh "$t"
 done
+
+# The fuzz smoke (make check sets HYBOUNCE_FUZZ_SMOKE="RUNS HARNESS..."):
+# each libFuzzer harness for RUNS executions, counted like the scripts.
+if [ -n "${HYBOUNCE_FUZZ_SMOKE:-}" ]; then
+	# shellcheck disable=SC2086 # RUNS and the harnesses are words
+	count "fuzz smoke" sh tests/fuzz/run.sh smoke $HYBOUNCE_FUZZ_SMOKE
+fi
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -38,6 +38,7 @@ enum {
 	OPT_SCRIPT,
 	OPT_LIST_PRESETS,
 	OPT_LIST_LAWS,
+	OPT_DATA,
 };
 
 static const struct option long_options[] = {
@@ -50,6 +51,7 @@ static const struct option long_options[] = {
 	{ "quiet",        no_argument,       NULL, 'q' },
 	{ "ascii",        no_argument,       NULL, OPT_ASCII },
 	{ "script",       required_argument, NULL, OPT_SCRIPT },
+	{ "data",         required_argument, NULL, OPT_DATA },
 	{ "list-presets", no_argument,       NULL, OPT_LIST_PRESETS },
 	{ "list-laws",    no_argument,       NULL, OPT_LIST_LAWS },
 	{ "help",         no_argument,       NULL, 'h' },
@@ -89,6 +91,8 @@ DEFAULT_PRESET ")\n"
 "  -q, --quiet             (batch) print only the summary, no table\n"
 "      --ascii             (explorer) plain ASCII plots, even in a UTF-8 locale\n"
 "      --script FILE       (explorer) play keystrokes from FILE\n"
+"      --data FILE         (explorer) measured data over the scene, as for\n"
+"                          hybounce fit (keys D, M and F)\n"
 "      --list-presets      list the presets: name, title, description\n"
 "      --list-laws         list the contact laws and their parameters\n"
 "  -h, --help              show this help\n"
@@ -154,7 +158,7 @@ hybounce_main(int argc, char **argv)
 	struct batch_options bo;
 	struct app_options ao;
 	const char **sets;
-	const char *batch = NULL, *script = NULL;
+	const char *batch = NULL, *script = NULL, *data = NULL;
 	int nsets = 0, ascii = 0, list_presets = 0, list_laws = 0, c, status;
 	char msg[1024];
 
@@ -200,6 +204,7 @@ hybounce_main(int argc, char **argv)
 		case 'q': bo.quiet = 1; break;
 		case OPT_ASCII: ascii = 1; break;
 		case OPT_SCRIPT: script = optarg; break;
+		case OPT_DATA: data = optarg; break;
 		case OPT_LIST_PRESETS: list_presets = 1; break;
 		case OPT_LIST_LAWS: list_laws = 1; break;
 		case 'h':
@@ -241,10 +246,10 @@ hybounce_main(int argc, char **argv)
 			return bad_usage("unexpected argument '%s' (the preset of batch "
 			                 "mode is the argument of --batch)", argv[optind]);
 		}
-		if (ascii || script != NULL) {
+		if (ascii || script != NULL || data != NULL) {
 			free(sets);
 			return bad_usage("%s is an option of the explorer, not of --batch",
-			                 ascii ? "--ascii" : "--script");
+			                 ascii ? "--ascii" : script ? "--script" : "--data");
 		}
 		bo.preset = batch;
 		bo.sets = sets;
@@ -273,6 +278,7 @@ hybounce_main(int argc, char **argv)
 	ao.nsets = nsets;
 	ao.ascii = ascii;
 	ao.script = script;
+	ao.data = data;
 	msg[0] = '\0';
 	status = app_run(&ao, msg, sizeof msg);
 	if (msg[0] != '\0')

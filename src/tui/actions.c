@@ -38,6 +38,7 @@ static action_fn *const actions[ACT_COUNT] = {
 	[ACT_TOP] = act_top, [ACT_BOTTOM] = act_bottom,
 	[ACT_PREV_SECTION] = act_prev_section, [ACT_NEXT_SECTION] = act_next_section,
 	[ACT_LOG] = act_log, [ACT_PRESENT] = act_present, [ACT_COMPARE] = act_compare,
+	[ACT_DATA] = act_data, [ACT_DATA_TABLE] = act_data_table, [ACT_FIT] = act_fit,
 };
 
 action_fn *
@@ -74,6 +75,9 @@ app_key(struct app *a, int ch)
 	case OV_HELP:
 	case OV_LOG:
 		overlay_key(a, ch);
+		return;
+	case OV_FIT:
+		fitov_key(a, ch);
 		return;
 	default:
 		break;

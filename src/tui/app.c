@@ -99,6 +99,8 @@ app_tick(struct app *a)
 			sim_advance(a->pin[i].sim, 0, a->budget / 4);
 			busy = 1;
 		}
+	if (fitov_tick(a))
+		busy = 1;
 	cursor_clamp(a);
 	cursor_follow_want(a);
 	if (playback_tick(a, dt))
@@ -125,6 +127,8 @@ app_draw(struct app *a)
 			pane_log_draw(a);
 		else if (a->overlay == OV_LAW || a->overlay == OV_PRESET)
 			pickers_draw(a);
+		else if (a->overlay == OV_FIT)
+			fitov_draw(a);
 	}
 	a->frames++;
 	refresh();
@@ -185,7 +189,9 @@ app_run(const struct app_options *o, char *msg, size_t n)
 	a->slowmo = 1;
 	a->focus = FOCUS_TABLE;
 
-	if (o->script != NULL) {
+	if (o->data != NULL && fitov_load(a, o->data, msg, n) != 0) {
+		status = 2; /* bad input, before the terminal is taken */
+	} else if (o->script != NULL) {
 		status = script_run(a, o->script, msg, n);
 	} else {
 		if (term_begin(msg, n) != 0) {
@@ -205,6 +211,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 			status = 128 + term_signalled();
 		}
 	}
+	fitov_free(a);
 	pins_clear(a);
 	sim_free(a->sim);
 	log_free(a);

@@ -387,6 +387,7 @@ pane_plot_draw(const struct app *a)
 			}
 		}
 		pin_marks(a, c, s, ink, n, q, t0, t1);
+		fitov_plot_marks(a, c, q == Q_X, t0, t1);
 		if (arc_len(arc) > 0)
 			curcol = canvas_col(c, absc(a, arc_at(arc, a->cursor)));
 		blit(a, c, y, r->x + LM, curcol);

@@ -138,6 +138,7 @@ pane_table_draw(const struct app *a)
 		snprintf(cell, sizeof cell, "%*s", width[k], h);
 		strncat(line, cell, sizeof line - strlen(line) - 1);
 	}
+	fitov_table_note(a, -1, line, sizeof line);
 	if (ps)
 		snprintf(cell, sizeof cell, "  vs %d", a->compare);
 	else
@@ -178,6 +179,8 @@ pane_table_draw(const struct app *a)
 		}
 		if (!c->complete)
 			strncat(line, "  live (in contact)", sizeof line - strlen(line) - 1);
+		else
+			fitov_table_note(a, i, line, sizeof line);
 		if (i == sel)
 			attr = focused ? A_REVERSE : A_BOLD;
 		if (!c->complete && a->colour)

@@ -55,6 +55,8 @@ prompt_key(struct app *a, int ch)
 			edit_value(a, a->prompt_key, buf);
 		else if (a->prompt_kind == PROMPT_SEARCH)
 			search_do(a, buf, 1);
+		else if (a->prompt_kind == PROMPT_DATA || a->prompt_kind == PROMPT_FIT)
+			fitov_prompt_done(a, buf);
 		else
 			export_do(a, buf);
 	} else if (ch == KEY_BACKSPACE || ch == 127 || ch == 8) {

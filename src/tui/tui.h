@@ -25,7 +25,9 @@ enum { APP_MAX_PINS = 3, APP_LOG_MAX = 64 };
 enum view { VIEW_WHOLE = 0, VIEW_FOLLOW, VIEW_ZOOM, VIEW_LOOP, VIEW_J, VIEW_COUNT };
 enum focus { FOCUS_TABLE = 0, FOCUS_PARAMS };
 enum overlay { OV_NONE = 0, OV_HELP, OV_LAW, OV_PRESET, OV_PROMPT, OV_LOG };
+enum { OV_FIT = 16 };           /* overlay_fit.c: measured against simulated */
 enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH };
+enum { PROMPT_DATA = 16, PROMPT_FIT };  /* overlay_fit.c */
 
 struct pin {
 	struct sim *sim;
@@ -85,6 +87,7 @@ struct app {
 	int exit_status;
 	double budget;              /* compute seconds per frame */
 	unsigned long frames;
+	struct fitov *fitov;        /* measured data and the fit (overlay_fit.c), or NULL */
 };
 
 /* An action of the key table (actions.c). */
@@ -211,6 +214,19 @@ script_run(struct app *a, const char *path, char *msg, size_t n);
 /* Writes the current screen as text (UTF-8) to path.  Returns 0 or -1. */
 int
 script_dump(const char *path);
+
+/* overlay_fit.c: measured data over the scene, and the fit (D, M, F; --data). */
+struct canvas;
+action_fn act_data, act_data_table, act_fit;
+int fitov_load(struct app *a, const char *path, char *msg, size_t n); /* 0 or -1 */
+int fitov_loaded(const struct app *a);
+void fitov_free(struct app *a);
+void fitov_prompt_done(struct app *a, const char *text);  /* PROMPT_DATA, PROMPT_FIT */
+int fitov_tick(struct app *a);                            /* 1 while fitting */
+void fitov_key(struct app *a, int ch);                    /* keys of OV_FIT */
+void fitov_draw(const struct app *a);
+void fitov_plot_marks(const struct app *a, struct canvas *c, int q_is_x, double t0, double t1);
+void fitov_table_note(const struct app *a, long i, char *line, size_t n); /* i -1: header */
 
 /* Sets the message line (printf-like). */
 void
