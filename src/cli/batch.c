@@ -52,6 +52,7 @@
 #include "hybounce/units.h"
 
 #include "batch.h"
+#include "clock.h"
 
 #define PROG "hybounce"
 
@@ -611,15 +612,6 @@ watch_signal(int sig, struct sigaction *old)
 	sigaction(sig, &sa, NULL);
 }
 
-static double
-wall_seconds(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /*
  * Runs s in slices of 0.1 s to its end or to a caught signal (*sig).
  * Past one second, standard error a terminal, a progress line there,
@@ -630,7 +622,7 @@ run_watched(struct sim *s, int *sig)
 {
 	const double T = sim_scene(s)->run.T;
 	const int tty = isatty(STDERR_FILENO);
-	double start = wall_seconds(), shown = 0;
+	double start = clock_seconds(CLOCK_MONOTONIC), shown = 0;
 	int rc = HB_OK;
 
 	got_signal = 0;
@@ -640,7 +632,7 @@ run_watched(struct sim *s, int *sig)
 		rc = sim_advance(s, 0, 0.1);
 		if (rc != HB_OK || sim_end(s) != SIM_RUNNING)
 			break;
-		now = wall_seconds();
+		now = clock_seconds(CLOCK_MONOTONIC);
 		if (tty && now - start > 1.0 && now - shown >= 0.25) {
 			const struct arc_sample *p = arc_last(sim_arc(s));
 			char tb[32], Tb[32];

@@ -30,6 +30,7 @@
 #include "hybounce/sweep.h"
 
 #include "sweep_cli.h"
+#include "clock.h"
 
 #define PROG "hybounce sweep"
 
@@ -150,15 +151,6 @@ struct progress {
 	double last_draw;  /* s, for the terminal bar */
 };
 
-static double
-mono(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 static void
 fmt_eta(double s, char *buf, size_t n)
 {
@@ -192,7 +184,7 @@ on_progress(void *ctx, const struct sweep_progress *p)
 	}
 	fmt_eta(eta, e, sizeof e);
 	if (g->tty) {
-		double now = mono();
+		double now = clock_seconds(CLOCK_MONOTONIC);
 		int w = 30, fill = (int)(frac * w);
 
 		if (p->done < p->total && now - g->last_draw < 0.1)

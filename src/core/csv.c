@@ -32,13 +32,12 @@
 #include "hybounce/csv.h"
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
+#include "csv_impl.h"
 
 /* Writes one field, quoted as RFC 4180 asks when it needs to be. */
-static void
-put_field(FILE *f, const char *s, int first)
+void
+csv_put_field(FILE *f, const char *s)
 {
-	if (!first)
-		fputc(',', f);
 	if (strpbrk(s, ",\"\r\n") == NULL) {
 		fputs(s, f);
 		return;
@@ -52,6 +51,14 @@ put_field(FILE *f, const char *s, int first)
 	fputc('"', f);
 }
 
+static void
+put_field(FILE *f, const char *s, int first)
+{
+	if (!first)
+		fputc(',', f);
+	csv_put_field(f, s);
+}
+
 /* A number as %.17g, a negative zero as 0 (a sign that carries nothing). */
 static void
 print_num(FILE *f, double v)
@@ -59,9 +66,8 @@ print_num(FILE *f, double v)
 	fprintf(f, "%.17g", v == 0 ? 0.0 : v);
 }
 
-/* Writes a number as print_num does; NaN (unknown) as an empty field. */
-static void
-put_num(FILE *f, double v)
+void
+csv_put_num(FILE *f, double v)
 {
 	fputc(',', f);
 	if (!isnan(v))
@@ -115,18 +121,18 @@ write_arc(FILE *f, const struct sim *s)
 		const struct arc_sample *p = arc_at(a, i);
 		print_num(f, p->t);
 		fprintf(f, ",%ld,%d", p->j, p->q);
-		put_num(f, p->x);
-		put_num(f, p->v);
-		put_num(f, p->xc);
+		csv_put_num(f, p->x);
+		csv_put_num(f, p->v);
+		csv_put_num(f, p->xc);
 		for (int k = 0; k < nz; k++)
-			put_num(f, p->z[k]);
-		put_num(f, p->Fc);
-		put_num(f, p->Fer);
+			csv_put_num(f, p->z[k]);
+		csv_put_num(f, p->Fc);
+		csv_put_num(f, p->Fer);
 		if (full) {
-			put_num(f, p->xm);
-			put_num(f, p->vm);
-			put_num(f, p->vm + sc->d.etac * p->v);  /* eq. v_m_1 */
-			put_num(f, p->vm - sc->d.eta * p->v);   /* eq. v_m_2 */
+			csv_put_num(f, p->xm);
+			csv_put_num(f, p->vm);
+			csv_put_num(f, p->vm + sc->d.etac * p->v);  /* eq. v_m_1 */
+			csv_put_num(f, p->vm - sc->d.eta * p->v);   /* eq. v_m_2 */
 		}
 		fputc('\n', f);
 		if ((e = stream_err(f)) != 0)
@@ -155,7 +161,7 @@ write_collisions(FILE *f, const struct sim *s)
 			if (collision_columns[k].index)
 				fprintf(f, "%s%ld", k ? "," : "", c->i);
 			else
-				put_num(f, collision_value(c, &collision_columns[k]));
+				csv_put_num(f, collision_value(c, &collision_columns[k]));
 		}
 		fputc('\n', f);
 		if ((e = stream_err(f)) != 0)

@@ -44,17 +44,7 @@
  * pre-jump ones bit for bit; a failed step leaves the arc as it was.
  */
 #include "sim_impl.h"
-
-/* Seconds on a clock: CLOCK_MONOTONIC (wall) or CLOCK_PROCESS_CPUTIME_ID (CPU). */
-static double
-now_seconds(clockid_t clock)
-{
-	struct timespec ts;
-
-	if (clock_gettime(clock, &ts) != 0)
-		return 0.0;
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+#include "clock.h"
 
 /*
  * A flow interval continued after sim_seek (or sim_set_scene) from inside
@@ -383,7 +373,7 @@ sim_free(struct sim *s)
 int
 sim_advance(struct sim *s, long max_steps, double max_seconds)
 {
-	double start = now_seconds(CLOCK_MONOTONIC), cpu0 = now_seconds(CLOCK_PROCESS_CPUTIME_ID);
+	double start = clock_seconds(CLOCK_MONOTONIC), cpu0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
 	long work0 = s->work;
 	int rc = 0;
 
@@ -393,7 +383,7 @@ sim_advance(struct sim *s, long max_steps, double max_seconds)
 		if (max_steps > 0 && s->work - work0 >= max_steps)
 			break;
 		if (max_seconds > 0 && ((s->work - work0) & 7) == 0 &&
-		    now_seconds(CLOCK_MONOTONIC) - start >= max_seconds)
+		    clock_seconds(CLOCK_MONOTONIC) - start >= max_seconds)
 			break;
 		if (s->setup) {
 			if ((rc = setup_interval(s)))
@@ -407,8 +397,8 @@ sim_advance(struct sim *s, long max_steps, double max_seconds)
 		if (rc)
 			break;
 	}
-	s->st.seconds += now_seconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0;
-	s->st.wall += now_seconds(CLOCK_MONOTONIC) - start;
+	s->st.seconds += clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0;
+	s->st.wall += clock_seconds(CLOCK_MONOTONIC) - start;
 	return rc;
 }
 

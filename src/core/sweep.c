@@ -23,6 +23,8 @@
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
 #include "hybounce/sweep.h"
+#include "clock.h"
+#include "csv_impl.h"
 #include "sweep_impl.h"
 
 #define SWEEP_MAX_POINTS 1000000000L
@@ -502,40 +504,6 @@ sweep_runs_header(const struct sweep *sw, char *buf, size_t n)
 	return len;
 }
 
-/* A CSV field: quoted when it holds a comma, a quote or a line break. */
-static void
-put_field(FILE *f, const char *s)
-{
-	if (strpbrk(s, ",\"\r\n") == NULL) {
-		fputs(s, f);
-		return;
-	}
-	fputc('"', f);
-	for (; *s; s++) {
-		if (*s == '"')
-			fputc('"', f);
-		fputc(*s, f);
-	}
-	fputc('"', f);
-}
-
-static void
-put_num(FILE *f, double v)
-{
-	fputc(',', f);
-	if (!isnan(v))
-		fprintf(f, "%.17g", v);
-}
-
-static double
-thread_cpu(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* The runs row of a finished sim (no newline). */
 static void
 runs_row(FILE *f, const struct sweep *sw, long id, const struct sim *s, double cpu)
@@ -556,24 +524,24 @@ runs_row(FILE *f, const struct sweep *sw, long id, const struct sim *s, double c
 	fprintf(f, "r,%ld", id);
 	for (int k = 0; k < sw->naxes; k++) {
 		fputc(',', f);
-		put_field(f, sw->ax[k].val[axis_index(sw, id, k)]);
+		csv_put_field(f, sw->ax[k].val[axis_index(sw, id, k)]);
 	}
 	fprintf(f, ",%s,", failed ? "failed" : "ok");
-	put_field(f, failed && sim_errmsg(s)[0] ? sim_errmsg(s) : sim_end_str(s));
+	csv_put_field(f, failed && sim_errmsg(s)[0] ? sim_errmsg(s) : sim_end_str(s));
 	fprintf(f, ",%zu", nc);
-	put_num(f, tpc);
-	put_num(f, c0 ? c0->e : NAN);
-	put_num(f, c0 ? c0->vi : NAN);
-	put_num(f, cl ? cl->e : NAN);
-	put_num(f, cl ? cl->vi : NAN);
-	put_num(f, xcr);
-	put_num(f, last ? last->t : NAN);
+	csv_put_num(f, tpc);
+	csv_put_num(f, c0 ? c0->e : NAN);
+	csv_put_num(f, c0 ? c0->vi : NAN);
+	csv_put_num(f, cl ? cl->e : NAN);
+	csv_put_num(f, cl ? cl->vi : NAN);
+	csv_put_num(f, xcr);
+	csv_put_num(f, last ? last->t : NAN);
 	fprintf(f, ",%ld,%d", last ? last->j : 0L, last ? last->q : 0);
-	put_num(f, last ? last->x : NAN);
-	put_num(f, last ? last->v : NAN);
-	put_num(f, last ? last->xc : NAN);
+	csv_put_num(f, last ? last->x : NAN);
+	csv_put_num(f, last ? last->v : NAN);
+	csv_put_num(f, last ? last->xc : NAN);
 	fprintf(f, ",%ld,%ld,%ld,%ld", st->steps, st->rejected, st->rhs, st->jac);
-	put_num(f, cpu);
+	csv_put_num(f, cpu);
 	fputc('\n', f);
 }
 
@@ -581,7 +549,7 @@ int
 sweep_point_block(const struct sweep *sw, long id, char **out, int *failed,
                   char *msg, size_t n)
 {
-	double c0 = thread_cpu();
+	double c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
 	struct scene sc;
 	struct sim *s;
 	char *coll = NULL, *blk = NULL, m[512];
@@ -631,7 +599,7 @@ sweep_point_block(const struct sweep *sw, long id, char **out, int *failed,
 		}
 	}
 	free(coll);
-	runs_row(f, sw, id, s, thread_cpu() - c0);
+	runs_row(f, sw, id, s, clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0);
 	sim_free(s);
 	if (fclose(f) != 0 || blk == NULL) {
 		free(blk);

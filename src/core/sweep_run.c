@@ -42,26 +42,9 @@
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
 #include "hybounce/sweep.h"
+#include "clock.h"
 
 #define SPEC_NAME "sweep.preset"
-
-static double
-mono_now(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static double
-thread_cpu(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* The whole of a file into a malloc'd string (*len bytes).  NULL and errno on failure. */
 static char *
@@ -343,12 +326,12 @@ worker(void *arg)
 		pthread_mutex_unlock(&p->mu);
 
 		r = calloc(1, sizeof *r);
-		c0 = thread_cpu();
+		c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
 		if (r != NULL) {
 			r->id = id;
 			r->rc = sweep_point_block(p->sw, id, &r->blk, &r->failed, r->msg,
 			                          sizeof r->msg);
-			r->cpu = thread_cpu() - c0;
+			r->cpu = clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
 		}
 		pthread_mutex_lock(&p->mu);
 		if (r == NULL) {
@@ -376,7 +359,7 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 	long *todo = NULL, got = 0, nth = 0;
 	char jpath[4200];
 	int fd = -1, rc, cancelled = 0;
-	double t0 = mono_now();
+	double t0 = clock_seconds(CLOCK_MONOTONIC);
 
 	memset(&pr, 0, sizeof pr);
 	memset(&p, 0, sizeof p);
@@ -490,7 +473,7 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 				pr.done++;
 				pr.failed += r->failed;
 				pr.point_cpu += r->cpu;
-				pr.elapsed = mono_now() - t0;
+				pr.elapsed = clock_seconds(CLOCK_MONOTONIC) - t0;
 				if (o->progress)
 					o->progress(o->ctx, &pr);
 			}

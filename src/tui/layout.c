@@ -84,3 +84,15 @@ layout_stack(int h, int n, int extra, int *hs)
 	}
 	return used;
 }
+
+int
+layout_scroll(int top, int sel, int h, int n)
+{
+	if (sel < top)
+		top = sel;
+	if (sel >= top + h)
+		top = sel - h + 1;
+	if (top > n - h)
+		top = n - h;
+	return top < 0 ? 0 : top;
+}

@@ -62,4 +62,11 @@ layout_present(struct layout *L);
 int
 layout_stack(int h, int n, int extra, int *hs);
 
+/*
+ * The first of n rows to show in a window of h rows, moved as little as
+ * possible from top so that row sel is in view (0 when all n fit).
+ */
+int
+layout_scroll(int top, int sel, int h, int n);
+
 #endif

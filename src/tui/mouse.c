@@ -64,16 +64,8 @@ mouse_event(struct app *a)
 			/* rows are drawn from param_top, scrolled to keep param_sel in view */
 			struct param_row rows[256];
 			int n = params_rows(sim_scene(a->sim), rows, 256);
-			int h = a->L.params.h - 1, top = a->param_top, sel = a->param_sel, row;
-			if (sel < top)
-				top = sel;
-			if (sel >= top + h)
-				top = sel - h + 1;
-			if (top > n - h)
-				top = n - h;
-			if (top < 0)
-				top = 0;
-			row = top + ev.y - a->L.params.y - 1;
+			int top = layout_scroll(a->param_top, a->param_sel, a->L.params.h - 1, n);
+			int row = top + ev.y - a->L.params.y - 1;
 			if (row >= 0 && row < n && rows[row].key >= 0)
 				a->param_sel = row;
 		}

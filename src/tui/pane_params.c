@@ -61,15 +61,7 @@ pane_params_draw(const struct app *a)
 			snprintf(head, sizeof head, "parameters (%s)", sc->law->name);
 	}
 	tui_puts(r->y, r->x, r->w, head, A_BOLD | (focused ? A_UNDERLINE : 0));
-	top = a->param_top;
-	if (sel < top)
-		top = sel;
-	if (sel >= top + h)
-		top = sel - h + 1;
-	if (top > n - h)
-		top = n - h;
-	if (top < 0)
-		top = 0;
+	top = layout_scroll(a->param_top, sel, h, n);
 	for (i = top; i < n && i < top + h; i++) {
 		int y = r->y + 1 + i - top, attr = 0;
 		if (rows[i].key < 0) {

@@ -148,17 +148,9 @@ pane_table_draw(const struct app *a)
 	tui_puts(r->y, r->x, r->w, line, A_BOLD | (focused ? A_UNDERLINE : 0));
 
 	/* scroll so the selection is visible */
-	top = a->table_top;
 	if (sel >= n)
 		sel = n - 1;
-	if (sel < top)
-		top = sel;
-	if (sel >= top + rows)
-		top = sel - rows + 1;
-	if (top > n - rows)
-		top = n - rows;
-	if (top < 0)
-		top = 0;
+	top = layout_scroll(a->table_top, sel, rows, n);
 	for (i = top; i < n && i < top + rows; i++) {
 		const struct collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
 		int attr = 0;

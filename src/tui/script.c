@@ -41,18 +41,10 @@
 #include <unistd.h>
 #include <wchar.h>
 
+#include "clock.h"
 #include "keys.h"
 #include "term.h"
 #include "tui.h"
-
-static double
-wall(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static void
 nap(void)
@@ -123,9 +115,9 @@ frame(struct app *a)
 static void
 wait_ms(struct app *a, double ms)
 {
-	double t0 = wall();
+	double t0 = clock_seconds(CLOCK_MONOTONIC);
 
-	while (!term_signalled() && !a->quit && (wall() - t0) * 1e3 < ms) {
+	while (!term_signalled() && !a->quit && (clock_seconds(CLOCK_MONOTONIC) - t0) * 1e3 < ms) {
 		int computing = sim_end(a->sim) == SIM_RUNNING;
 		if (!app_tick(a) && !live)
 			break;
@@ -194,9 +186,9 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 			app_msg(a, 0, "%s", line[7] ? line + 8 : "");
 			frame(a);
 		} else if (strncmp(line, "wait-finished", 13) == 0 && line[13] == 0) {
-			double t0 = wall();
+			double t0 = clock_seconds(CLOCK_MONOTONIC);
 			while (!all_ended(a) && !term_signalled()) {
-				if (wall() - t0 > 120) {
+				if (clock_seconds(CLOCK_MONOTONIC) - t0 > 120) {
 					snprintf(msg, n, "%s:%d: wait-finished: still computing after 120 s",
 					         path, lineno);
 					status = 1;

@@ -3,10 +3,7 @@
 # include/ (tsort finds loops); units.h includes no other header of ours;
 # law_common.h declares no function that law.c defines; the engine
 # (src/core) includes no header of the front ends and no curses.
-set -u
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
+. "$(dirname "$0")/common.inc"
 
 edges=$(for f in src/*/*.c src/*/*.h include/hybounce/*.h tools/*.c; do
 	[ -f "$f" ] || continue

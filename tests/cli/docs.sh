@@ -3,12 +3,8 @@
 # and of the README (collisions table) agree with the engine's tables:
 # hybounce-gendoc --check fails when one is stale (fix: make docs).  And
 # every key of the table is in the man page, every column in the README.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
+. "$(dirname "$0")/common.inc"
 GENDOC=$(dirname "$BIN")/hybounce-gendoc
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
 
 if [ ! -x "$GENDOC" ]; then
 	notok "$GENDOC is built (make all builds it)"
@@ -24,8 +20,6 @@ for f in man/hybounce.1 README.md; do
 done
 
 # --check must fail on a stale block (the test can fail).
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
 sed 's/^Default: 9.81 m\/s^2\.$/Default: 9.80 m\/s^2./' man/hybounce.1 > "$T/stale.1"
 if ! cmp -s man/hybounce.1 "$T/stale.1" && ! "$GENDOC" --check "$T/stale.1" 2>/dev/null; then
 	ok "a stale man page is detected"

@@ -7,16 +7,7 @@
 # export leaves behind is removed by the next export.  strace (Debian's strace package) kills
 # the export at its Nth rename, write, link, unlink and fsync, for every N
 # until the export runs through; and a failed rename is undone.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-case $BIN in /*) ;; *) BIN=$(pwd)/$BIN ;; esac
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
+. "$(dirname "$0")/common.inc"
 
 # LeakSanitizer cannot run under ptrace (the sanitizer build): no leak check here.
 ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"

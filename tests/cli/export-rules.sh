@@ -3,17 +3,7 @@
 # preset (exit 2 before the run, nothing written); a device or FIFO in
 # place, with no .preset beside it; through a symbolic link, which stays;
 # any other overwrite said in the "wrote" line.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-case $BIN in /*) ;; *) BIN=$(pwd)/$BIN ;; esac
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
-show() { sed 's/^/# /' "$1" | head -n 5; }
+. "$(dirname "$0")/common.inc"
 RUN="--set run.T=100ms -q"
 W=$T/w
 mkdir "$W"

@@ -3,14 +3,7 @@
 # (hard-bouc-wen-beta with bsimp at rtol 1e-3: W < 0, e up to 1.317) is
 # warned about, exit 0; with --check it is a failure, exit 1; a good run
 # says "physics: ok" under --check; a contact from rest is explained.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
+. "$(dirname "$0")/common.inc"
 notok() { echo "not ok - $1"; fails=$((fails + 1)); sed 's/^/# /' "$T/err" "$T/out" | tail -n 8; }
 LOOSE="--set run.stepper=bsimp --set run.rtol=1e-3 --set run.atol=1e-3"
 

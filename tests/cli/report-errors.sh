@@ -4,17 +4,7 @@
 # standard output exit 2 with "write error on standard output: REASON";
 # the export is still written; a reader that goes away (| head, SIGPIPE
 # ignored) is no error.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-case $BIN in /*) ;; *) BIN=$(pwd)/$BIN ;; esac
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
-show() { sed 's/^/# /' "$1" | head -n 5; }
+. "$(dirname "$0")/common.inc"
 
 check() { # NAME EXPECTED-REASON ARGS... (stdout already redirected by the caller)
 	name=$1 reason=$2 rc=$3

@@ -3,13 +3,7 @@
 # run and the explorer accept the same overrides (blanks around the key and
 # the value are ignored) and refuse the same ones with the same message and
 # exit status 2.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
+. "$(dirname "$0")/common.inc"
 
 # blanks: the same run as without them
 a=$("$BIN" --batch hertz-elastic --set ' run.T = 1 ms' --quiet 2>&1 | grep 'ended')

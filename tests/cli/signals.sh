@@ -4,17 +4,7 @@
 # 128 + the signal.  A run that lasts more than a second shows its progress
 # on standard error when that is a terminal (a pty, from script(1)), and
 # not otherwise.
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-case $BIN in /*) ;; *) BIN=$(pwd)/$BIN ;; esac
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() { echo "not ok - $1"; fails=$((fails + 1)); }
-show() { sed 's/^/# /' "$1" | head -n 8; }
+. "$(dirname "$0")/common.inc"
 # A run of hours: the elastic ball bouncing for 10^5 s.
 LONG="-b hertz-elastic --set run.T=1e5 --set run.J=1e12"
 

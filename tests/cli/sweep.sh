@@ -4,26 +4,7 @@
 # of another sweep refused, bad input (exit 2, nothing written), failed
 # points as rows, progress lines, shards and --merge.
 # Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0
-ok() { echo "ok - $1"; }
-notok() {
-	echo "not ok - $1"
-	fails=$((fails + 1))
-	[ $# -gt 1 ] && [ -f "$2" ] && sed 's/^/# /' "$2" | head -n 20
-	return 0
-}
-# runs.csv without its last column (cpu_s, a measurement).
-nocpu() { sed 's/,[^,]*$//' "$1"; }
-same_sweep() { # DIR1 DIR2
-	nocpu "$1/runs.csv" >"$T/a" && nocpu "$2/runs.csv" >"$T/b" && cmp -s "$T/a" "$T/b" &&
-	    cmp -s "$1/collisions.csv" "$2/collisions.csv" && cmp -s "$1/sweep.preset" "$2/sweep.preset"
-}
+. "$(dirname "$0")/common.inc"
 
 P=permanent-contact-shccl
 V1="initial.x0=10um:40um:3"

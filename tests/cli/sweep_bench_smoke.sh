@@ -2,10 +2,7 @@
 # A bounded smoke of make bench-sweep: the sweep benchmark runs (40 and 200
 # points) and reports the rate, the overhead and the memory.
 # Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/common.inc"
 if sh tests/bench/sweep.sh --smoke "$BIN" "$T" >"$T/out" 2>&1 &&
     grep -q '^   speed-up [0-9.]* x' "$T/sweep.txt" && grep -q '^   overhead -*[0-9.]* %' "$T/sweep.txt" &&
     grep -q '^       200 points: peak RSS  *[0-9.]* MB' "$T/sweep.txt"; then

@@ -3,23 +3,7 @@
 # cores (and through --sshlogin ':', parallel's name for this machine): the
 # merged files equal the one-machine sweep's.
 # Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-ok() { echo "ok - $1"; }
-notok() {
-	echo "not ok - $1"
-	[ $# -gt 1 ] && [ -f "$2" ] && sed 's/^/# /' "$2" | head -n 20
-	return 0
-}
-nocpu() { sed 's/,[^,]*$//' "$1"; }
-same_sweep() {
-	nocpu "$1/runs.csv" >"$T/a" && nocpu "$2/runs.csv" >"$T/b" && cmp -s "$T/a" "$T/b" &&
-	    cmp -s "$1/collisions.csv" "$2/collisions.csv" && cmp -s "$1/sweep.preset" "$2/sweep.preset"
-}
+. "$(dirname "$0")/common.inc"
 if ! command -v parallel >/dev/null 2>&1; then
 	notok "GNU parallel is installed (make deps installs it)"
 	exit 0

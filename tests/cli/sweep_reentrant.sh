@@ -12,18 +12,7 @@
 # make check-tsan runs this script with a ThreadSanitizer build
 # (build-tsan/hybounce, TSAN_OPTIONS=halt_on_error=1): any data race fails it.
 # Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
-set -u
-BIN=${HYBOUNCE_BIN:-build/hybounce}
-: "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
-export HYBOUNCE_PRESETS
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-ok() { echo "ok - $1"; }
-notok() {
-	echo "not ok - $1"
-	[ $# -gt 1 ] && [ -f "$2" ] && sed 's/^/# /' "$2" | head -n 30
-	return 0
-}
+. "$(dirname "$0")/common.inc"
 
 LIB=$(dirname "$BIN")/libhybounce.a
 if [ -f "$LIB" ] && command -v objdump >/dev/null 2>&1; then

@@ -6,19 +6,6 @@
 # capture-pane.  Needs HYBOUNCE_BIN and HYBOUNCE_PRESETS (tests/run.sh).
 . "$(dirname "$0")/common.inc"
 
-edit() {
-	keys "$1" /
-	wait_for "$1" '^search parameters' 30 || return 1
-	keys "$1" -l "$2"
-	keys "$1" Enter
-	wait_for "$1" "nudge\) $2:" 30 || return 1
-	keys "$1" Enter
-	wait_for "$1" "^$2 .*: " 30 || return 1
-	keys "$1" C-u
-	keys "$1" -l "$3"
-	keys "$1" Enter
-}
-
 # ---- pin, edit, legend -----------------------------------------------------------
 start a 80 23
 wait_for a ' finished$' 150

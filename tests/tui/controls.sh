@@ -4,10 +4,6 @@
 # Needs HYBOUNCE_BIN and HYBOUNCE_PRESETS, as set by tests/run.sh.
 # One "ok - NAME" / "not ok - NAME" line per test.
 . "$(dirname "$0")/common.inc"
-# status_field SESSION FIELD: the value of "FIELD=..." on the status line.
-status_field() {
-	screen "$1" | head -n 1 | tr ' ' '\n' | sed -n "s/^$2=//p" | head -n 1
-}
 
 # ---- slow motion through contacts ------------------------------------------
 start a 80 24

@@ -12,20 +12,6 @@ ncoll() { screen "$1" | head -n 1 | sed -n 's/.* coll \([0-9]*\) .*/\1/p'; }
 # rows FILE: data rows of a CSV file
 rows() { echo $(($(wc -l <"$1") - 1)); }
 
-# edit SESSION KEY VALUE: / finds KEY, Enter opens the prompt, VALUE replaces the text
-edit() {
-	keys "$1" /
-	wait_for "$1" '^search parameters' 30 || return 1
-	keys "$1" -l "$2"
-	keys "$1" Enter
-	wait_for "$1" "nudge\) $2:" 30 || return 1
-	keys "$1" Enter
-	wait_for "$1" "^$2 .*: " 30 || return 1
-	keys "$1" C-u
-	keys "$1" -l "$3"
-	keys "$1" Enter
-}
-
 mkdir -p "$TMP/out"
 
 # ---- the case: } five times, law.c = 44000, export, re-run in batch ----------
