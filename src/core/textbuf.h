@@ -2,7 +2,8 @@
  * textbuf.h - appending formatted text to a caller's buffer, snprintf
  * style: the text is cut to the buffer (always terminated when n > 0) and
  * len counts the whole length, so a first pass with buf = NULL measures
- * (private to the engine: preset writer, reference texts).
+ * (not a public header: the preset writer, the reference texts and the
+ * explorer's generated key lists use it).
  */
 #ifndef HYBOUNCE_TEXTBUF_H
 #define HYBOUNCE_TEXTBUF_H

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "keys.h"
+#include "textbuf.h" /* the engine's text appender (src/core) */
 
 #define CTRL(c) ((c) & 0x1f)
 
@@ -124,81 +125,70 @@ keys_footer(char *buf, size_t n, int width)
 	return buf;
 }
 
-/* Appends to buf at *len (snprintf-like accounting). */
-static void
-put(char *buf, size_t n, size_t *len, const char *s)
-{
-	size_t l = strlen(s);
-
-	if (*len + l < n)
-		memcpy(buf + *len, s, l + 1);
-	else if (*len < n)
-		buf[*len] = 0;
-	*len += l;
-}
-
 size_t
 keys_man(char *buf, size_t n)
 {
-	size_t i, len = 0;
+	struct textbuf t = { buf, n, 0 };
+	size_t i;
 
 	if (n > 0)
 		buf[0] = 0;
-	put(buf, n, &len, ".Bl -tag -width \"Right, l\" -compact\n");
+	textbuf_printf(&t, "%s", ".Bl -tag -width \"Right, l\" -compact\n");
 	for (i = 0; i < sizeof table / sizeof table[0]; i++) {
 		const struct key_binding *b = &table[i];
 		char lab[64], *p, *tok;
-		put(buf, n, &len, ".It");
+		textbuf_printf(&t, "%s", ".It");
 		snprintf(lab, sizeof lab, "%s", b->label);
 		/* each key as Cm; Ns-free so "Left h" reads ".It Ic Left , Ic h" */
 		for (tok = strtok_r(lab, " ", &p); tok; tok = strtok_r(NULL, " ", &p)) {
 			if (tok != lab)
-				put(buf, n, &len, " ,");
-			put(buf, n, &len, " Ic ");
+				textbuf_printf(&t, "%s", " ,");
+			textbuf_printf(&t, "%s", " Ic ");
 			/* mdoc: a leading '.' or a bare ',' would be read as macro or punctuation */
 			if (tok[0] == '.' || tok[0] == ',' || tok[0] == '[' || tok[0] == ']'
 			    || tok[0] == '{' || tok[0] == '}' || tok[0] == '?')
-				put(buf, n, &len, "\\&");
-			put(buf, n, &len, tok);
+				textbuf_printf(&t, "%s", "\\&");
+			textbuf_printf(&t, "%s", tok);
 		}
-		put(buf, n, &len, "\n");
+		textbuf_printf(&t, "%s", "\n");
 		{
 			char h[160];
 			snprintf(h, sizeof h, "%s", b->help);
 			if (h[0] >= 'a' && h[0] <= 'z')
 				h[0] = (char)(h[0] - 'a' + 'A');
-			put(buf, n, &len, h);
-			put(buf, n, &len, ".\n");
+			textbuf_printf(&t, "%s", h);
+			textbuf_printf(&t, "%s", ".\n");
 		}
 	}
-	put(buf, n, &len, ".El\n");
-	return len;
+	textbuf_printf(&t, "%s", ".El\n");
+	return t.len;
 }
 
 size_t
 keys_markdown(char *buf, size_t n)
 {
-	size_t i, len = 0;
+	struct textbuf t = { buf, n, 0 };
+	size_t i;
 
 	if (n > 0)
 		buf[0] = 0;
-	put(buf, n, &len, "| Key | Action |\n|-----|--------|\n");
+	textbuf_printf(&t, "%s", "| Key | Action |\n|-----|--------|\n");
 	for (i = 0; i < sizeof table / sizeof table[0]; i++) {
 		const struct key_binding *b = &table[i];
 		char lab[64], *p, *tok;
-		put(buf, n, &len, "|");
+		textbuf_printf(&t, "%s", "|");
 		snprintf(lab, sizeof lab, "%s", b->label);
 		for (tok = strtok_r(lab, " ", &p); tok; tok = strtok_r(NULL, " ", &p)) {
-			put(buf, n, &len, tok == lab ? " `" : ", `");
+			textbuf_printf(&t, "%s", tok == lab ? " `" : ", `");
 			/* a | inside a table cell ends the cell */
-			put(buf, n, &len, strcmp(tok, "|") == 0 ? "\\|" : tok);
-			put(buf, n, &len, "`");
+			textbuf_printf(&t, "%s", strcmp(tok, "|") == 0 ? "\\|" : tok);
+			textbuf_printf(&t, "%s", "`");
 		}
-		put(buf, n, &len, " | ");
-		put(buf, n, &len, b->help);
-		put(buf, n, &len, " |\n");
+		textbuf_printf(&t, "%s", " | ");
+		textbuf_printf(&t, "%s", b->help);
+		textbuf_printf(&t, "%s", " |\n");
 	}
-	return len;
+	return t.len;
 }
 
 static const struct {
