@@ -35,7 +35,7 @@
 /* Admissible ranges: lo, hi, lo_open, hi_open of struct law_param. */
 #define LAW_RANGE_POSITIVE 0, HUGE_VAL, 1, 0         /* (0, inf) */
 #define LAW_RANGE_NONNEG   0, HUGE_VAL, 0, 0         /* [0, inf) */
-#define LAW_RANGE_EXPONENT 1, 1e12, 0, 0             /* [1, 1e12]: units derived from it parse back (units.c refuses exponents past 1e15) */
+#define LAW_RANGE_EXPONENT 1, 1e12, 0, 0             /* [1, 1e12]: far past any contact law (every power of such an exponent over- or underflows) */
 #define LAW_RANGE_FRACTION 0, 1, 1, 1                /* (0, 1) */
 #define LAW_RANGE_ANY      -HUGE_VAL, HUGE_VAL, 0, 0 /* no bound */
 
