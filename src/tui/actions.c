@@ -38,6 +38,7 @@ static action_fn *const actions[ACT_COUNT] = {
 	[ACT_TOP] = act_top, [ACT_BOTTOM] = act_bottom,
 	[ACT_PREV_SECTION] = act_prev_section, [ACT_NEXT_SECTION] = act_next_section,
 	[ACT_LOG] = act_log, [ACT_PRESENT] = act_present, [ACT_COMPARE] = act_compare,
+	[ACT_SWEEP] = act_sweep,
 };
 
 action_fn *
@@ -77,6 +78,10 @@ app_key(struct app *a, int ch)
 		return;
 	default:
 		break;
+	}
+	if (sweep_view_open(a)) {
+		sweep_view_key(a, ch);
+		return;
 	}
 	if (ch == KEY_MOUSE) {
 		mouse_event(a);

@@ -103,6 +103,8 @@ app_tick(struct app *a)
 	cursor_follow_want(a);
 	if (playback_tick(a, dt))
 		busy = 1;
+	if (sweep_view_tick(a))
+		busy = 1;
 	return busy;
 }
 
@@ -119,6 +121,8 @@ app_draw(struct app *a)
 		if (a->L.params_visible)
 			pane_params_draw(a);
 		pane_status_draw(a);
+		if (sweep_view_open(a))
+			pane_sweep_draw(a);
 		if (a->overlay == OV_HELP)
 			pane_help_draw(a);
 		else if (a->overlay == OV_LOG)
@@ -205,6 +209,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 			status = 128 + term_signalled();
 		}
 	}
+	sweep_view_free(a);
 	pins_clear(a);
 	sim_free(a->sim);
 	log_free(a);

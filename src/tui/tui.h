@@ -25,7 +25,7 @@ enum { APP_MAX_PINS = 3, APP_LOG_MAX = 64 };
 enum view { VIEW_WHOLE = 0, VIEW_FOLLOW, VIEW_ZOOM, VIEW_LOOP, VIEW_J, VIEW_COUNT };
 enum focus { FOCUS_TABLE = 0, FOCUS_PARAMS };
 enum overlay { OV_NONE = 0, OV_HELP, OV_LAW, OV_PRESET, OV_PROMPT, OV_LOG };
-enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH };
+enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH, PROMPT_SWEEP };
 
 struct pin {
 	struct sim *sim;
@@ -85,6 +85,7 @@ struct app {
 	int exit_status;
 	double budget;              /* compute seconds per frame */
 	unsigned long frames;
+	struct sweep_view *sv;      /* the sweep view (sweep_view.c), NULL until S */
 };
 
 /* An action of the key table (actions.c). */
@@ -215,5 +216,14 @@ script_dump(const char *path);
 /* Sets the message line (printf-like). */
 void
 app_msg(struct app *a, int error, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+
+/* The sweep view (sweep_view.c, pane_sweep.c): S opens it; while open it takes the keys. */
+action_fn act_sweep;
+int sweep_view_open(const struct app *a);
+void sweep_view_key(struct app *a, int ch);
+int sweep_view_tick(struct app *a);              /* polls the curves; 1 while computing */
+void sweep_view_free(struct app *a);
+void sweep_prompt_done(struct app *a, const char *text, int cancelled);
+void pane_sweep_draw(const struct app *a);
 
 #endif
