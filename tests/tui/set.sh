@@ -16,7 +16,6 @@ if wait_for a 't -> .* 1\.0 ms' 50; then
 else
 	notok "explorer: the time axis ends at T = 1 ms" a
 fi
-$TM send-keys -t a q
 
 # Typed values in the panel: + on a whole number steps it as a whole number
 # (run.J 100000 -> 110000), and Enter starts the prompt from text that reads
@@ -49,4 +48,5 @@ else
 	notok "parameter row run.J found" b
 fi
 $TM send-keys -t b q
+$TM send-keys -t a q
 exit $((failed > 0))
