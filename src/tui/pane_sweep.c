@@ -144,7 +144,7 @@ pane_sweep_draw(const struct app *a)
 	int top = a->L.status.y + 1, bottom = a->L.msg.y;      /* rows top .. bottom-1 */
 	int cw = COLS - SLM - 1, ch = bottom - top - 3;        /* title, legend, x axis */
 	double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY, xs = NAN, ys;
-	struct scene_keyinfo ki;
+	struct scene_keyinfo ki = { 0 };
 	struct axis ax, ay;
 	struct canvas *c;
 	char line[512], vx[48], vy[48];
@@ -166,15 +166,14 @@ pane_sweep_draw(const struct app *a)
 	else
 		snprintf(vy, sizeof vy, "%s", on);
 	if (cur->c != NULL)
-		snprintf(line, sizeof line, "sweep: %s against %s = %s   %ld/%ld done%s%s", vy, v->key,
-		         v->spec, cur->done, cur->n, cur->failed ? ", failed " : "",
-		         cur->failed ? "" : (cur->done < cur->n ? ", computing" : ""));
+		snprintf(line, sizeof line, "sweep: %s against %s = %s   %ld/%ld done%s", vy, v->key,
+		         v->spec, cur->done, cur->n, cur->done < cur->n ? ", computing" : "");
 	else
 		snprintf(line, sizeof line, "sweep: %s against %s = %s   (pinned; L or r for a new curve)",
 		         vy, v->key, v->spec);
 	if (cur->failed) {
 		size_t l = strlen(line);
-		snprintf(line + l, sizeof line - l, "%ld", cur->failed);
+		snprintf(line + l, sizeof line - l, ", %ld failed", cur->failed);
 	}
 	tui_puts(top, 0, COLS, line, A_BOLD);
 
