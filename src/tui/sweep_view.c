@@ -43,27 +43,11 @@ sv_obs_unit(int obs)
 double
 sv_current_y(const struct app *a, int obs, long coll)
 {
-	const struct sim *s = a->sim;
-	size_t nc = sim_ncollisions(s);
-	const struct collision *c = coll >= 0 && (size_t)coll < nc ? sim_collision(s, (size_t)coll) : NULL;
-	struct collision live;
-	double sum = 0;
-
-	switch (obs) {
-	case CURVE_E: return c ? c->e : NAN;
-	case CURVE_VI: return c ? c->vi : NAN;
-	case CURVE_XCR: return c ? c->xcr : NAN;
-	default: break;
-	}
-	if (sim_end(s) == SIM_RUNNING || sim_end(s) == SIM_END_FAIL)
+	/* a value of collision i is final once it completed; the others once the run ended */
+	if (obs != CURVE_E && obs != CURVE_VI && obs != CURVE_XCR
+	    && (sim_end(a->sim) == SIM_RUNNING || sim_end(a->sim) == SIM_END_FAIL))
 		return NAN;
-	if (obs == CURVE_COLLISIONS)
-		return (double)nc;
-	if (obs == CURVE_TPC)
-		return sim_contact_live(s, &live) ? live.te : NAN;
-	for (size_t k = 0; k < nc; k++)
-		sum += sim_collision(s, k)->xcr;
-	return sum;
+	return sweep_observe(a->sim, obs, coll);
 }
 
 static void
