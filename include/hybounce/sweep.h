@@ -197,6 +197,14 @@ enum { CURVE_PENDING = 0, CURVE_DONE, CURVE_FAILED };
 const char *
 sweep_observable_name(int obs);
 
+/*
+ * The observable obs of a run (of collision i where it applies), as the
+ * curve takes it once the run has ended: NAN when it does not exist.
+ */
+struct sim;
+double
+sweep_observe(const struct sim *s, int obs, long i);
+
 struct sweep_curve;
 
 /*

@@ -47,8 +47,8 @@ sweep_observable_name(int obs)
 	return obs >= 0 && obs < CURVE_COUNT ? obs_names[obs] : NULL;
 }
 
-static double
-observe(const struct sim *s, int obs, long i)
+double
+sweep_observe(const struct sim *s, int obs, long i)
 {
 	size_t nc = sim_ncollisions(s);
 	const struct collision *c = i >= 0 && (size_t)i < nc ? sim_collision(s, (size_t)i) : NULL;
@@ -102,7 +102,7 @@ curve_worker(void *arg)
 				break;
 		}
 		if (s != NULL && !stop && sim_end(s) != SIM_RUNNING) {
-			y = observe(s, c->obs, c->coll_i);
+			y = sweep_observe(s, c->obs, c->coll_i);
 			st = sim_end(s) == SIM_END_FAIL ? CURVE_FAILED : CURVE_DONE;
 		}
 		sim_free(s);

@@ -39,6 +39,7 @@ static action_fn *const actions[ACT_COUNT] = {
 	[ACT_PREV_SECTION] = act_prev_section, [ACT_NEXT_SECTION] = act_next_section,
 	[ACT_LOG] = act_log, [ACT_PRESENT] = act_present, [ACT_COMPARE] = act_compare,
 	[ACT_DATA] = act_data, [ACT_DATA_TABLE] = act_data_table, [ACT_FIT] = act_fit,
+	[ACT_SWEEP] = act_sweep,
 };
 
 action_fn *
@@ -81,6 +82,10 @@ app_key(struct app *a, int ch)
 		return;
 	default:
 		break;
+	}
+	if (sweep_view_open(a)) {
+		sweep_view_key(a, ch);
+		return;
 	}
 	if (ch == KEY_MOUSE) {
 		mouse_event(a);

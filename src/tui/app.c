@@ -105,6 +105,8 @@ app_tick(struct app *a)
 	cursor_follow_want(a);
 	if (playback_tick(a, dt))
 		busy = 1;
+	if (sweep_view_tick(a))
+		busy = 1;
 	return busy;
 }
 
@@ -121,6 +123,8 @@ app_draw(struct app *a)
 		if (a->L.params_visible)
 			pane_params_draw(a);
 		pane_status_draw(a);
+		if (sweep_view_open(a))
+			pane_sweep_draw(a);
 		if (a->overlay == OV_HELP)
 			pane_help_draw(a);
 		else if (a->overlay == OV_LOG)
@@ -212,6 +216,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 		}
 	}
 	fitov_free(a);
+	sweep_view_free(a);
 	pins_clear(a);
 	sim_free(a->sim);
 	log_free(a);

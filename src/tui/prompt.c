@@ -47,6 +47,8 @@ prompt_key(struct app *a, int ch)
 		if (a->prompt_kind == PROMPT_EDIT)
 			a->branch_armed = 0;
 		app_msg(a, 0, "cancelled");
+		if (a->prompt_kind == PROMPT_SWEEP)
+			sweep_prompt_done(a, "", 1);
 	} else if (ch == '\n' || ch == '\r' || ch == KEY_ENTER) {
 		char buf[256];
 		snprintf(buf, sizeof buf, "%s", a->prompt_buf);
@@ -57,6 +59,8 @@ prompt_key(struct app *a, int ch)
 			search_do(a, buf, 1);
 		else if (a->prompt_kind == PROMPT_DATA || a->prompt_kind == PROMPT_FIT)
 			fitov_prompt_done(a, buf);
+		else if (a->prompt_kind == PROMPT_SWEEP)
+			sweep_prompt_done(a, buf, 0);
 		else
 			export_do(a, buf);
 	} else if (ch == KEY_BACKSPACE || ch == 127 || ch == 8) {

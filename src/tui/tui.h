@@ -26,7 +26,7 @@ enum view { VIEW_WHOLE = 0, VIEW_FOLLOW, VIEW_ZOOM, VIEW_LOOP, VIEW_J, VIEW_COUN
 enum focus { FOCUS_TABLE = 0, FOCUS_PARAMS };
 enum overlay { OV_NONE = 0, OV_HELP, OV_LAW, OV_PRESET, OV_PROMPT, OV_LOG };
 enum { OV_FIT = 16 };           /* overlay_fit.c: measured against simulated */
-enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH };
+enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH, PROMPT_SWEEP };
 enum { PROMPT_DATA = 16, PROMPT_FIT };  /* overlay_fit.c */
 
 struct pin {
@@ -88,6 +88,7 @@ struct app {
 	double budget;              /* compute seconds per frame */
 	unsigned long frames;
 	struct fitov *fitov;        /* measured data and the fit (overlay_fit.c), or NULL */
+	struct sweep_view *sv;      /* the sweep view (sweep_view.c), NULL until S */
 };
 
 /* An action of the key table (actions.c). */
@@ -231,5 +232,14 @@ void fitov_table_note(const struct app *a, long i, char *line, size_t n); /* i -
 /* Sets the message line (printf-like). */
 void
 app_msg(struct app *a, int error, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+
+/* The sweep view (sweep_view.c, pane_sweep.c): S opens it; while open it takes the keys. */
+action_fn act_sweep;
+int sweep_view_open(const struct app *a);
+void sweep_view_key(struct app *a, int ch);
+int sweep_view_tick(struct app *a);              /* polls the curves; 1 while computing */
+void sweep_view_free(struct app *a);
+void sweep_prompt_done(struct app *a, const char *text, int cancelled);
+void pane_sweep_draw(const struct app *a);
 
 #endif

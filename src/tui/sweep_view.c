@@ -1,0 +1,391 @@
+/*
+ * sweep_view.c - the sweep view's state and keys: one parameter (the
+ * parameter panel's selected key), a range typed as for --vary
+ * (FROM:TO:N[:log], units accepted) and an observable, computed by the
+ * engine's background curve (sweep_curve_*: polling never waits, freeing
+ * cancels), so the screen keeps drawing while the points come in.
+ *
+ * Pinning a curve keeps it (still filling in) as a ghost; changing the
+ * law (L) or the range then starts a new curve to compare with.
+ * Changing the parameter, observable or collision clears the pins (they
+ * would not share the axes).  Export writes the current curve's finished
+ * points as CSV (sweep_curve_write_csv: a temporary file renamed over the
+ * name, so a failed export damages nothing).
+ */
+#include <curses.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "keys.h"
+#include "law.h"
+#include "status.h"
+#include "sweep_view.h"
+#include "term.h"
+#include "tui.h"
+
+#define SV_DEFAULT_N 40
+
+const char *
+sv_obs_unit(int obs)
+{
+	switch (obs) {
+	case CURVE_VI: return "m/s";
+	case CURVE_XCR:
+	case CURVE_XCR_TOTAL: return "m";
+	case CURVE_TPC: return "s";
+	default: return NULL;
+	}
+}
+
+double
+sv_current_y(const struct app *a, int obs, long coll)
+{
+	/* a value of collision i is final once it completed; the others once the run ended */
+	if (obs != CURVE_E && obs != CURVE_VI && obs != CURVE_XCR
+	    && (sim_end(a->sim) == SIM_RUNNING || sim_end(a->sim) == SIM_END_FAIL))
+		return NAN;
+	return sweep_observe(a->sim, obs, coll);
+}
+
+static void
+curve_drop(struct sv_curve *k)
+{
+	sweep_curve_free(k->c);
+	free(k->x);
+	free(k->y);
+	free(k->st);
+	memset(k, 0, sizeof *k);
+}
+
+static void
+pins_drop(struct sweep_view *v)
+{
+	for (int i = 0; i < v->npins; i++)
+		curve_drop(&v->pin[i]);
+	v->npins = 0;
+}
+
+/* Copies the points computed so far; 1 while the curve is still computing. */
+static int
+curve_poll(struct sv_curve *k)
+{
+	if (k->c == NULL)
+		return 0;
+	k->done = sweep_curve_poll(k->c, k->x, k->y, k->st, k->n);
+	k->failed = 0;
+	for (long i = 0; i < k->n; i++)
+		k->failed += k->st[i] == CURVE_FAILED;
+	return k->done < k->n;
+}
+
+static int
+jobs(void)
+{
+	long n = sysconf(_SC_NPROCESSORS_ONLN);
+
+	return n > 0 ? (int)n : 1;
+}
+
+/* Starts the current curve from v->base over v->key=v->spec; errors go to the message line. */
+static int
+curve_start(struct app *a)
+{
+	struct sweep_view *v = a->sv;
+	struct sv_curve k = { 0 };
+	char msg[512];
+
+	k.c = sweep_curve_start(&v->base, v->key, v->spec, v->obs, v->coll, jobs(), msg, sizeof msg);
+	if (k.c == NULL) {
+		app_msg(a, 1, "sweep not started: %s", msg);
+		return -1;
+	}
+	k.n = sweep_curve_npoints(k.c);
+	k.x = calloc((size_t)k.n, sizeof *k.x);
+	k.y = calloc((size_t)k.n, sizeof *k.y);
+	k.st = calloc((size_t)k.n, sizeof *k.st);
+	if (k.x == NULL || k.y == NULL || k.st == NULL)
+		term_oom();
+	snprintf(k.label, sizeof k.label, "%s", v->base.law ? v->base.law->name : "?");
+	curve_drop(&v->cur);
+	v->cur = k;
+	{
+		const char *sp = strrchr(v->spec, ':');
+		v->log = sp != NULL && strcmp(sp + 1, "log") == 0;
+	}
+	curve_poll(&v->cur);
+	app_msg(a, 0, "sweep: %s over %s = %s, %ld points on %d threads", sweep_observable_name(v->obs),
+	        v->key, v->spec, k.n, jobs());
+	return 0;
+}
+
+/* A default range around the value: a decade either way (log) when it is not 0. */
+static void
+default_spec(const struct scene_keyinfo *ki, char *buf, size_t n)
+{
+	char lo[48], hi[48];
+	double x = ki->number;
+
+	if (ki->kind == SCENE_KEY_NUMBER && isfinite(x) && x != 0) {
+		units_format(x / 10, ki->dim, 3, lo, sizeof lo);
+		units_format(x * 10, ki->dim, 3, hi, sizeof hi);
+		snprintf(buf, n, "%s:%s:%d:log", lo, hi, SV_DEFAULT_N);
+	} else if (ki->kind == SCENE_KEY_WHOLE && isfinite(x)) {
+		snprintf(buf, n, "%.0f:%.0f:%d", x > 1 ? floor(x / 2) : 1, x > 1 ? 2 * x : 10,
+		         x > 1 ? (int)fmin(x * 1.5 + 1, SV_DEFAULT_N) : 10);
+	} else if (ki->kind == SCENE_KEY_NUMBER) {
+		units_format(-1, ki->dim, 3, lo, sizeof lo);
+		units_format(1, ki->dim, 3, hi, sizeof hi);
+		snprintf(buf, n, "%s:%s:%d", lo, hi, SV_DEFAULT_N + 1);
+	} else {
+		snprintf(buf, n, "%s", ki->edit);
+	}
+}
+
+static void
+open_range_prompt(struct app *a)
+{
+	a->sv->prompt = SV_PROMPT_RANGE;
+	prompt_open(a, PROMPT_SWEEP, a->sv->spec, "sweep %s over FROM:TO:N[:log] or V1,V2,...",
+	            a->sv->key);
+}
+
+/* S: the sweep view of the selected parameter (the last curve if it is the same key). */
+void
+act_sweep(struct app *a)
+{
+	const struct scene *sc = sim_scene(a->sim);
+	struct scene_keyinfo ki;
+	int k = param_key_index(a);
+
+	if (k < 0 || scene_key(sc, k, &ki) != 0) {
+		app_msg(a, 1, "sweep: select a parameter first (Tab, then Up/Down)");
+		return;
+	}
+	if (ki.readonly || (ki.kind != SCENE_KEY_NUMBER && ki.kind != SCENE_KEY_WHOLE)) {
+		app_msg(a, 1, "sweep: %s is %s; a sweep varies a number that is typed (law, bodies, "
+		        "loads, initial, run sections)", ki.key, ki.readonly ? "derived" : "not a number");
+		return;
+	}
+	if (a->sv == NULL && (a->sv = calloc(1, sizeof *a->sv)) == NULL)
+		term_oom();
+	if (strcmp(a->sv->key, ki.key) == 0 && (a->sv->cur.c != NULL || a->sv->npins > 0)) {
+		a->sv->open = 1;
+		return;
+	}
+	pins_drop(a->sv);
+	curve_drop(&a->sv->cur);
+	snprintf(a->sv->key, sizeof a->sv->key, "%s", ki.key);
+	default_spec(&ki, a->sv->spec, sizeof a->sv->spec);
+	a->sv->base = *sc;
+	a->sv->open = 1;
+	open_range_prompt(a);
+}
+
+void
+sweep_prompt_done(struct app *a, const char *text, int cancelled)
+{
+	struct sweep_view *v = a->sv;
+	char path[600], msg[512];
+
+	if (v == NULL)
+		return;
+	if (cancelled) {
+		if (v->cur.c == NULL && v->npins == 0)
+			v->open = 0;
+		return;
+	}
+	if (v->prompt == SV_PROMPT_RANGE) {
+		char old[sizeof v->spec];
+		snprintf(old, sizeof old, "%s", v->spec);
+		snprintf(v->spec, sizeof v->spec, "%s", text);
+		if (curve_start(a) != 0) {
+			snprintf(v->spec, sizeof v->spec, "%s", old);
+			if (v->cur.c == NULL && v->npins == 0)
+				v->open = 0;
+		}
+		return;
+	}
+	if (text[0] == 0) {
+		app_msg(a, 1, "export cancelled: empty name");
+		return;
+	}
+	snprintf(path, sizeof path, "%s", text);
+	if (v->cur.c == NULL) {
+		app_msg(a, 1, "export: no curve (p pinned it; L or r computes a new one)");
+		return;
+	}
+	if (sweep_curve_write_csv(v->cur.c, path, msg, sizeof msg) != HB_OK) {
+		app_msg(a, 1, "export failed, nothing written: %s", msg);
+		return;
+	}
+	app_msg(a, 0, "wrote %s (%ld of %ld points%s)", path, v->cur.done, v->cur.n,
+	        v->cur.done < v->cur.n ? ", still computing" : "");
+}
+
+/* Changes the observable, collision or law and recomputes. */
+static void
+restart(struct app *a, int clear_pins)
+{
+	if (clear_pins && a->sv->npins > 0) {
+		pins_drop(a->sv);
+		app_msg(a, 0, "pins cleared (another observable)");
+	}
+	curve_start(a);
+}
+
+static void
+next_law(struct app *a, int dir)
+{
+	struct sweep_view *v = a->sv;
+	const struct law_type *const *list = law_list();
+	int n = 0, i = 0;
+	char msg[512];
+	struct scene sc = v->base;
+
+	while (list[n])
+		n++;
+	while (i < n && list[i] != v->base.law)
+		i++;
+	i = ((i + dir) % n + n) % n;
+	if (scene_set(&sc, "scene.law", list[i]->name, msg, sizeof msg) != HB_OK) {
+		app_msg(a, 1, "sweep: law %s refused: %s", list[i]->name, msg);
+		return;
+	}
+	v->base = sc;
+	curve_start(a);
+}
+
+static void
+pin(struct app *a)
+{
+	struct sweep_view *v = a->sv;
+
+	if (v->cur.c == NULL) {
+		app_msg(a, 1, "pin: nothing new to pin (L: another law, r: another range)");
+		return;
+	}
+	if (v->npins == SV_MAX_PINS) {
+		curve_drop(&v->pin[0]);
+		memmove(&v->pin[0], &v->pin[1], (SV_MAX_PINS - 1) * sizeof v->pin[0]);
+		v->npins--;
+	}
+	v->pin[v->npins++] = v->cur;
+	memset(&v->cur, 0, sizeof v->cur);
+	app_msg(a, 0, "pinned %s as %d: L (or l) for another law, r for another range",
+	        v->pin[v->npins - 1].label, v->npins);
+}
+
+void
+sweep_view_key(struct app *a, int ch)
+{
+	struct sweep_view *v = a->sv;
+	char def[160];
+
+	switch (ch) {
+	case 27:
+	case 'q':
+	case 'S':
+		v->open = 0;
+		app_msg(a, 0, "sweep view closed (S reopens it; the curve keeps computing)");
+		break;
+	case KEY_F(10):
+		a->quit = 1;
+		break;
+	case KEY_MOUSE:
+		break;
+	case 'o':
+	case 'O':
+		v->obs = (v->obs + (ch == 'o' ? 1 : CURVE_COUNT - 1)) % CURVE_COUNT;
+		restart(a, 1);
+		break;
+	case '>':
+	case '.':
+	case '<':
+	case ',':
+		if (v->obs != CURVE_E && v->obs != CURVE_VI && v->obs != CURVE_XCR) {
+			app_msg(a, 1, "< >: %s does not depend on a collision number (o: the observable)",
+			        sweep_observable_name(v->obs));
+			break;
+		}
+		if (ch == '<' || ch == ',') {
+			if (v->coll == 0)
+				break;
+			v->coll--;
+		} else {
+			v->coll++;
+		}
+		restart(a, 1);
+		break;
+	case 'r':
+		open_range_prompt(a);
+		break;
+	case 'R':
+		v->base = *sim_scene(a->sim);
+		curve_start(a);
+		break;
+	case 'L':
+	case 'l':
+		next_law(a, ch == 'L' ? 1 : -1);
+		break;
+	case 'p':
+		pin(a);
+		break;
+	case 'P':
+		pins_drop(v);
+		app_msg(a, 0, "pins cleared");
+		break;
+	case 'e':
+		snprintf(def, sizeof def, "%s-%s-%s.csv", a->preset, v->key,
+		         sweep_observable_name(v->obs));
+		v->prompt = SV_PROMPT_EXPORT;
+		prompt_open(a, PROMPT_SWEEP, def, "export the curve as CSV to");
+		break;
+	case '?':
+	case KEY_F(1):
+		app_msg(a, 0, "sweep keys: o/O observable, < > collision, r range, R from the current "
+		        "scene, L/l law, p pin, P unpin, e export CSV, q/Esc/S close");
+		break;
+	case 'L' & 0x1f: /* C-l */
+		clear();
+		app_relayout(a);
+		break;
+	default: {
+		char name[32];
+		app_msg(a, 1, "sweep view: unknown key %s (? for its keys)", keys_name(ch, name, sizeof name));
+	}
+	}
+}
+
+int
+sweep_view_open(const struct app *a)
+{
+	return a->sv != NULL && a->sv->open;
+}
+
+int
+sweep_view_tick(struct app *a)
+{
+	struct sweep_view *v = a->sv;
+	int busy = 0;
+
+	if (v == NULL)
+		return 0;
+	busy |= curve_poll(&v->cur);
+	for (int i = 0; i < v->npins; i++)
+		busy |= curve_poll(&v->pin[i]);
+	return busy && v->open;
+}
+
+void
+sweep_view_free(struct app *a)
+{
+	if (a->sv == NULL)
+		return;
+	pins_drop(a->sv);
+	curve_drop(&a->sv->cur);
+	free(a->sv);
+	a->sv = NULL;
+}

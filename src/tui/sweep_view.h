@@ -1,0 +1,51 @@
+/*
+ * sweep_view.h - the explorer's sweep view (private to src/tui/): one
+ * observable over one parameter, computed by background threads
+ * (sweep_curve_start), with pinned curves to compare laws.
+ *
+ * sweep_view.c owns the state and its keys; pane_sweep.c draws it.
+ */
+#ifndef HYBOUNCE_SWEEP_VIEW_H
+#define HYBOUNCE_SWEEP_VIEW_H
+
+#include "scene.h"
+#include "sweep.h"
+
+struct app;
+
+enum { SV_MAX_PINS = 3 };
+
+/* One curve: the engine's computation and the last copy of its points. */
+struct sv_curve {
+	struct sweep_curve *c;
+	char label[64];          /* "shccl" (the law), shown in the legend */
+	long n, done, failed;
+	double *x, *y;
+	int *st;
+};
+
+struct sweep_view {
+	int open;                /* the view covers the plots */
+	char key[48];            /* the parameter swept */
+	char spec[160];          /* FROM:TO:N[:log] as typed */
+	int log;                 /* the range is logarithmic */
+	int obs;                 /* enum sweep_observable */
+	long coll;               /* collision index (0-based) for e, v_i, x_c^r */
+	struct scene base;       /* the scene the curve starts from (its law may differ) */
+	struct sv_curve cur;     /* cur.c NULL: nothing computing (just pinned) */
+	struct sv_curve pin[SV_MAX_PINS];
+	int npins;
+	int prompt;              /* what the open prompt is for: SV_PROMPT_* */
+};
+
+enum { SV_PROMPT_RANGE = 1, SV_PROMPT_EXPORT };
+
+/* SI base unit of an observable for axis labels ("m", "m/s", "s"), NULL for a plain number. */
+const char *
+sv_obs_unit(int obs);
+
+/* The current scene's value of the observable (NAN when not computed yet). */
+double
+sv_current_y(const struct app *a, int obs, long coll);
+
+#endif

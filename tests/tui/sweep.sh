@@ -1,0 +1,97 @@
+#!/bin/sh
+# The explorer's sweep view in tmux at 80x24: S on the selected parameter
+# proposes a range, the curve fills in from background threads with the
+# current scene marked on it, the observable and the law change, a curve
+# is pinned, the curve is exported as CSV, a bad range is refused keeping
+# the curve, a parameter that is not a number is refused, and quitting
+# during a long sweep cancels it at once.
+. "$(dirname "$0")/common.inc"
+
+start a 80 24 --ascii
+wait_for a ' finished$' 150
+keys a / ; keys a -l v0 ; keys a Enter
+if wait_for a 'nudge\) initial\.v0:' 30 && keys a S \
+   && wait_for a '^sweep initial\.v0 over FROM:TO:N\[:log\] or V1,V2,\.\.\.: .*m/s:.*:41_$' 30; then
+	ok "S proposes a range for the selected parameter"
+else
+	notok "S proposes a range for the selected parameter" a
+fi
+keys a C-u ; keys a -l -- "-0.2 m/s:-1 m/s:9" ; keys a Enter
+if wait_for a '^sweep: e of collision 1 against initial\.v0 = -0\.2 m/s:-1 m/s:9 +9/9 done$' 300 \
+   && screen a | grep -q '^\* now bwmcl  @ scene: v0 = 0 m/s, e = 0\.59' \
+   && screen a | grep -q '^v0 -> ' && [ "$(screen a | grep -c '\*')" -ge 5 ]; then
+	ok "the curve of e against v0 fills in, the legend gives the current scene's value"
+else
+	notok "the curve of e against v0 fills in" a
+fi
+# the current scene on the curve: v0 = -0.5 m/s lies inside the range
+keys a q
+wait_gone a '^sweep: e of' 30
+keys a Enter ; keys a C-u ; keys a -l -- "-0.5 m/s" ; keys a Enter
+wait_for a ' finished$' 150
+keys a S
+if wait_for a '@ scene: v0 = -500 mm/s, e = 0\.5' 50 && screen a | grep -q '^ .*@' \
+   && screen a | grep -q '9/9 done'; then
+	ok "S reopens the curve; the current scene is marked @ on it"
+else
+	notok "the current scene is marked @ on the curve" a
+fi
+keys a o
+if wait_for a '^sweep: v_i of collision 1 against initial\.v0 .* 9/9 done$' 300 \
+   && screen a | grep -q '^v_i\[m*m/s\]'; then
+	ok "o: the next observable (v_i of collision 1)"
+else
+	notok "o: the next observable" a
+fi
+keys a O
+wait_for a '^sweep: e of collision 1 .* 9/9 done$' 300
+keys a p
+if wait_for a '^pinned bwmcl as 1' 30 && keys a L \
+   && wait_for a '^sweep: e of collision 1 .* 9/9 done$' 300 \
+   && screen a | grep -q '^\.1 bwmcl (9/9)  \* now hertz'; then
+	ok "p pins the curve, L computes another law next to it"
+else
+	notok "p pins the curve, L computes another law next to it" a
+fi
+keys a r ; keys a C-u ; keys a -l "fast" ; keys a Enter
+if wait_for a '^sweep not started: .*initial\.v0' 30 && screen a | grep -q '9/9 done'; then
+	ok "a bad range is refused with a message; the curve is kept"
+else
+	notok "a bad range is refused; the curve is kept" a
+fi
+keys a e
+wait_for a '^export the curve as CSV to: steel-on-bitumen-initial\.v0-e\.csv_$' 30
+keys a Enter
+if wait_for a '^wrote steel-on-bitumen-initial\.v0-e\.csv \(9 of 9 points\)' 30 \
+   && [ "$(head -1 "$TMP/steel-on-bitumen-initial.v0-e.csv")" = "initial.v0,e" ] \
+   && [ "$(wc -l < "$TMP/steel-on-bitumen-initial.v0-e.csv")" -eq 10 ] \
+   && sed -n 2p "$TMP/steel-on-bitumen-initial.v0-e.csv" | grep -q '^-0\.2,1$\|^-0\.20*[0-9]*,0\.99'; then
+	ok "e exports the curve as CSV (header, one row per point)"
+else
+	notok "e exports the curve as CSV" a
+	head -3 "$TMP/steel-on-bitumen-initial.v0-e.csv" | sed 's/^/# /'
+fi
+keys a q
+wait_gone a '^sweep: e of' 30
+keys a / ; keys a -l scene.law ; keys a Enter
+wait_for a 'nudge\) scene\.law:' 30
+keys a S
+if wait_for a '^sweep: scene\.law is not a number' 30; then
+	ok "a parameter that is not a number is refused"
+else
+	notok "a parameter that is not a number is refused" a
+fi
+# a long sweep: quitting cancels the workers at once
+keys a / ; keys a -l v0 ; keys a Enter
+wait_for a 'nudge\) initial\.v0:' 30
+keys a S
+wait_for a '^sweep: e of' 30
+keys a r ; keys a C-u ; keys a -l -- "-1 mm/s:-10 m/s:400:log" ; keys a Enter
+wait_for a '^sweep: e of collision 1 .*/400 done, computing$' 100
+keys a F10
+if wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ]; then
+	ok "quitting during a long sweep cancels it and exits 0"
+else
+	notok "quitting during a long sweep cancels it" a
+fi
+exit $((failed > 0))
