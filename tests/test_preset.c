@@ -319,7 +319,7 @@ Test(preset, out_of_range)
 	error_at(14, "n = 0.5", "[law] n: value 0.5 is out of range; accepted: [1, 1e+12]");
 	error_at(14, "p = 0.99", "[law] p: value 0.99 is out of range; accepted: [1, 1e+12]");
 	error_at(7, "mass = -2 kg", "[body1] mass: value -2 kg is out of range; accepted: (0, inf) kg");
-	error_at(18, "x0 = -1 mm", "[initial] x0: value -1 mm is out of range; accepted: [0, inf) m");
+	error_at(18, "x0 = -1 mm", "[initial] x0: value -1 mm is out of range; accepted: [0, 1e+06] m");
 	error_at(11, "nu = 0.5", "[body2] nu: value 0.5 is out of range; accepted: (-1, 0.5)");
 }
 
@@ -678,7 +678,9 @@ Test(preset, round_trip_many_values_and_names)
 	cr_log_info("round trip: %d values tried, %d accepted, %d scenes saved and loaded back",
 	    tried, accepted, saved);
 	cr_assert(accepted > 1000, "only %d values accepted", accepted);
-	cr_assert(saved > 200, "only %d valid scenes", saved);
+	/* random F1, F2 of any size are mostly refused by scene_check (beyond
+	 * 1e7 m/s^2 times the mass), which leaves about 170 of 400 valid */
+	cr_assert(saved > 120, "only %d valid scenes", saved);
 }
 
 /* The failures the fuzzing found: law exponents of many digits or large, names with ';' '#'. */

@@ -220,7 +220,7 @@ Test(scene, set_messages)
 	set_fails(&sc, "body1.nu", "0.5", "accepted: (-1, 0.5)");
 	set_fails(&sc, "body1.mass", "-1 kg", "out of range");
 	set_fails(&sc, "body1.R", "20 furlong", "unknown unit 'furlong'");
-	set_fails(&sc, "initial.x0", "-1 mm", "initial.x0: value -1 mm is out of range; accepted: [0, inf) m");
+	set_fails(&sc, "initial.x0", "-1 mm", "initial.x0: value -1 mm is out of range; accepted: [0, 1e+06] m");
 	set_fails(&sc, "run.T", "0", "accepted: (0, inf) s");
 	set_fails(&sc, "run.J", "0", "accepted");
 	set_fails(&sc, "run.J", "2.5", "whole number");
@@ -326,7 +326,7 @@ Test(scene, validate_ranges)
 
 	study1(&sc);
 	sc.init.x0 = -1e-3;
-	validate_fails(&sc, "initial.x0: value -1 mm is out of range; accepted: [0, inf) m");
+	validate_fails(&sc, "initial.x0: value -1 mm is out of range; accepted: [0, 1e+06] m");
 
 	study1(&sc);
 	sc.body[0].nu = 0.5;
@@ -701,6 +701,29 @@ Test(scene, errors_are_data)
 	cr_assert_eq(scene_set_text(&sc, "run.stepper", "euler", &err), HB_EINVAL);
 	cr_assert_eq(err.has_range, 0);
 	cr_assert(strstr(err.accepted, "bsimp") != NULL);
+	/* An empty value still says what is accepted: the choices, or the unit. */
+	cr_assert_eq(scene_set_text(&sc, "run.stepper", " ", &err), HB_EINVAL);
+	cr_assert(strstr(err.accepted, "dop853") != NULL, "%s", err.accepted);
+	cr_assert_eq(scene_set_text(&sc, "initial.x0", "", &err), HB_EINVAL);
+	cr_assert(strstr(err.accepted, "m") != NULL && strstr(err.what, "empty") != NULL);
+	cr_assert_eq(scene_set_text(&sc, "derived.m", "1", &err), HB_EINVAL);
+	cr_assert(err.accepted[0] != '\0');
+
+	/* The initial state and the loads are bounded, so that no flight overflows. */
+	cr_assert_eq(scene_set_number(&sc, "initial.v0", -1e300, &err), HB_EINVAL);
+	cr_assert(err.has_range && err.range.lo == -1e5 && err.range.hi == 1e5);
+	cr_assert_eq(scene_set_number(&sc, "initial.v0", -1e5, &err), HB_OK);
+	cr_assert_eq(scene_set_number(&sc, "initial.x0", 1e300, &err), HB_EINVAL);
+	cr_assert_eq(scene_set_number(&sc, "loads.g", 1e300, &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "loads.g");
+	study1(&sc);
+	sc.loads.F1 = 1e300;
+	cr_assert_eq(scene_check(&sc, &err), HB_EINVAL);
+	cr_assert_str_eq(err.key, "loads.F1");
+	cr_assert(err.has_range && err.range.hi == 1e7 * sc.d.m1, "%g", err.range.hi);
+	sc.loads.F1 = 0.5e7 * sc.d.m1;
+	cr_assert_eq(scene_check(&sc, &err), HB_OK);
+	study1(&sc);
 
 	/* Validation names the key at fault, as data. */
 	sc.par[law_param_index(sc.law, "gamma")] = 2 * sc.par[law_param_index(sc.law, "beta")];

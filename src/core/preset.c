@@ -492,9 +492,12 @@ apply_set(struct scene *sc, const char *arg, char *msg, size_t n)
 		    "such as law.c, body1.R, initial.x0, run.rtol, scene.law", arg);
 	memcpy(key, k0, (size_t)(k1 - k0));
 	key[k1 - k0] = '\0';
-	if (scene_set_text(sc, key, eq + 1, &err) != HB_OK)
-		return status_set(msg, n, HB_EINVAL, "--set %s: %s", arg,
-		    scene_error_str(&err, m, sizeof m));
+	if (scene_set_text(sc, key, eq + 1, &err) != HB_OK) {
+		/* a long argument is shown by its start, so that the reason stays in sight */
+		int shown = strlen(arg) > 72 ? 60 : 72;
+		return status_set(msg, n, HB_EINVAL, "--set %.*s%s: %s", shown, arg,
+		    strlen(arg) > 72 ? "..." : "", scene_error_str(&err, m, sizeof m));
+	}
 	return HB_OK;
 }
 

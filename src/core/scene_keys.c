@@ -30,6 +30,17 @@
 #define R_NONE     { 0, 0, 0, 0, 0 }
 #define R_NU       { -1, 0.5, 1, 1, 0 }  /* (-1, 0.5) */
 #define R_TOL      { 0, 1, 1, 1, 0 }     /* (0, 1) */
+/*
+ * Bounds on the initial state and on gravity: wide beyond any impact this
+ * model describes (100 km/s is above meteorite speeds, 10^7 m/s^2 about an
+ * ultracentrifuge's; the forces F1, F2 are held to the same acceleration by
+ * scene_check), and narrow enough that a flight's x, v and v^2 stay
+ * far from overflowing a double (1e300 m/s is refused, not run into NaN).
+ */
+#define R_GAP      { 0, 1e6, 0, 0, 0 }   /* [0, 1000 km] */
+#define R_POSITION { -1e6, 1e6, 0, 0, 0 } /* [-1000 km, 1000 km] */
+#define R_SPEED    { -1e5, 1e5, 0, 0, 0 } /* [-100 km/s, 100 km/s] */
+#define R_GRAVITY  { -SCENE_ACCEL_MAX, SCENE_ACCEL_MAX, 0, 0, 0 } /* [-1e7, 1e7] m/s^2 */
 #define NUM(key, panel, label, dim, range, def, field, sp, help) \
 	{ key, panel, label, ST_DOUBLE, &dim, range, def, NULL, OFF(field), 0, sp, help }
 #define TXT(key, panel, label, store, def, field, size, help) \
@@ -66,12 +77,12 @@ const struct scene_keydef scene_keydefs[] = {
 	BODY(2, "steel flat", NAN, INF, POS_INF,
 	     "mass of body 2: given (inf: a fixed obstacle), or derived from rho and R"),
 
-	NUM("loads.g", "loads", "g", UNIT_ACCEL, R_ANY, 9.81, loads.g, SP_NONE,
+	NUM("loads.g", "loads", "g", UNIT_ACCEL, R_GRAVITY, 9.81, loads.g, SP_NONE,
 	    "gravity along -n1 on both bodies: F_ei += -m_i g"),
 	NUM("loads.F1", "loads", "F1", UNIT_FORCE, R_ANY, 0, loads.F1, SP_NONE,
-	    "constant force on body 1 along n1"),
+	    "constant force on body 1 along n1, |F1| <= 1e7 m/s^2 times m1"),
 	NUM("loads.F2", "loads", "F2", UNIT_FORCE, R_ANY, 0, loads.F2, SP_FULL,
-	    "constant force on body 2 along n1 (full system)"),
+	    "constant force on body 2 along n1 (full system), |F2| <= 1e7 m/s^2 times m2"),
 	TXT("loads.ramp", "loads", "ramp", ST_BOOL, "no", loads.ramp, 0,
 	    "the S-ramp loads F_e1(t), F_e2(t) of the second study: yes or no"),
 	NUM("loads.F_e0", "loads", "F_e0", UNIT_FORCE, R_NONNEG, 0, loads.Fe0, SP_RAMP,
@@ -81,13 +92,13 @@ const struct scene_keydef scene_keydefs[] = {
 	NUM("loads.T_s", "loads", "T_s", UNIT_TIME, R_POS, 0.1, loads.Ts, SP_RAMP,
 	    "ramp: time in which the centre of mass is brought to rest"),
 
-	NUM("initial.x0", "initial", "x0", UNIT_LENGTH, R_NONNEG, 0.010, init.x0, SP_NONE,
+	NUM("initial.x0", "initial", "x0", UNIT_LENGTH, R_GAP, 0.010, init.x0, SP_NONE,
 	    "initial gap (relative displacement), >= 0"),
-	NUM("initial.v0", "initial", "v0", UNIT_VELOCITY, R_ANY, 0, init.v0, SP_NONE,
+	NUM("initial.v0", "initial", "v0", UNIT_VELOCITY, R_SPEED, 0, init.v0, SP_NONE,
 	    "initial relative velocity (negative: approaching)"),
-	NUM("initial.x_m0", "initial", "x_m0", UNIT_LENGTH, R_ANY, 0, init.xm0, SP_FULL,
+	NUM("initial.x_m0", "initial", "x_m0", UNIT_LENGTH, R_POSITION, 0, init.xm0, SP_FULL,
 	    "initial position of the centre of mass (full system)"),
-	NUM("initial.v_m0", "initial", "v_m0", UNIT_VELOCITY, R_ANY, 0, init.vm0, SP_FULL,
+	NUM("initial.v_m0", "initial", "v_m0", UNIT_VELOCITY, R_SPEED, 0, init.vm0, SP_FULL,
 	    "initial velocity of the centre of mass (full system)"),
 
 	NUM("run.T", "run", "T", UNIT_TIME, R_POS, 0.2, run.T, SP_NONE, "end of ordinary time"),

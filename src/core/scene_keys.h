@@ -16,6 +16,12 @@
 #include "hybounce/scene.h"
 #include "hybounce/units.h"
 
+/*
+ * The greatest acceleration a load may give, m/s^2: the bound of loads.g,
+ * and of F1/m1 and F2/m2 (about an ultracentrifuge's; see scene_keys.c).
+ */
+#define SCENE_ACCEL_MAX 1e7
+
 /* How a value is stored in struct scene, and so read and printed. */
 enum scene_store {
 	ST_DOUBLE,  /* double, "VALUE [UNIT]" */

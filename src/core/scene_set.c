@@ -51,6 +51,45 @@ unit_accepted(struct unit_dim dim, char *buf, size_t n)
 }
 
 /* The body flags that typing a value of kd sets. */
+/*
+ * What a table key accepts, as text: numbers with their unit, whole
+ * numbers, or the list of choices.
+ */
+static void
+keydef_accepted(const struct scene_keydef *kd, char *acc, size_t n)
+{
+	const char *ch[16];
+	int nc;
+	size_t l = 0;
+
+	switch (kd->store) {
+	case ST_STRING:
+		snprintf(acc, n, "printable text");
+		return;
+	case ST_DOUBLE:
+		unit_accepted(*kd->dim, acc, n);
+		return;
+	case ST_LONG:
+	case ST_INT:
+		snprintf(acc, n, "a whole number");
+		return;
+	default:
+		break;
+	}
+	acc[0] = '\0';
+	nc = scene_keydef_choices(kd, ch, 16);
+	for (int i = 0; i < nc && i < 16 && l < n; i++) {
+		if (kd->store == ST_REDUCE && i >= 2)
+			break;
+		snprintf(acc + l, n - l, "%s%s", i ? ", " : "", ch[i]);
+		l = strlen(acc);
+	}
+	if (kd->store == ST_REDUCE && l < n)
+		snprintf(acc + l, n - l, ", or a comma list of flight, contact, com");
+	if (kd->store == ST_BOOL && l < n)
+		snprintf(acc + l, n - l, ", 1, 0");
+}
+
 static void
 body_typed(struct scene *sc, const struct scene_keydef *kd)
 {
@@ -121,7 +160,9 @@ key_lookup(const struct scene *tmp, const char *key, const struct scene_keydef *
 	if (key == NULL)
 		return scene_error_set(err, "", NULL, "no key");
 	if (strncmp(key, "derived.", 8) == 0)
-		return scene_error_set(err, key, NULL, "derived values are computed, never typed");
+		return scene_error_set(err, key, "the keys of the sections scene, body1, body2, law, loads, "
+		    "initial and run (PRESETS in hybounce(1); hybounce --list-laws)",
+		    "derived values are computed, never typed");
 	st = scene_get(tmp, key, &ki, err);
 	if (st != HB_OK)
 		return st;
@@ -165,8 +206,10 @@ scene_set_text(struct scene *sc, const char *key, const char *text, struct scene
 		*sc = tmp;
 		return HB_OK;
 	}
-	if (t[0] == '\0' && kd->store != ST_STRING)
-		return scene_error_set(err, key, NULL, "empty value");
+	if (t[0] == '\0' && kd->store != ST_STRING) {
+		keydef_accepted(kd, acc, sizeof acc);
+		return scene_error_set(err, key, acc, "empty value");
+	}
 
 	char *base = (char *)&tmp;
 	switch (kd->store) {
@@ -205,21 +248,9 @@ scene_set_text(struct scene *sc, const char *key, const char *text, struct scene
 			return st;
 		break;
 	default: {
-		const char *ch[16];
-		int nc = scene_keydef_choices(kd, ch, 16), c;
-		size_t l = 0;
+		int c;
 		if (scene_keydef_read_choice(kd, t, &c) != 0) {
-			acc[0] = '\0';
-			for (int i = 0; i < nc && i < 16; i++) {
-				if (kd->store == ST_REDUCE && i >= 2)
-					break;
-				snprintf(acc + l, sizeof acc - l, "%s%s", i ? ", " : "", ch[i]);
-				l = strlen(acc);
-			}
-			if (kd->store == ST_REDUCE)
-				snprintf(acc + l, sizeof acc - l, ", or a comma list of flight, contact, com");
-			if (kd->store == ST_BOOL)
-				snprintf(acc + l, sizeof acc - l, ", 1, 0");
+			keydef_accepted(kd, acc, sizeof acc);
 			return scene_error_set(err, key, acc, "'%s' is not accepted", t);
 		}
 		if (kd->store == ST_LAW) {

@@ -140,6 +140,29 @@ check_weight(const struct scene *sc, struct scene_error *err)
 	return HB_OK;
 }
 
+/*
+ * The constant forces may not accelerate a body beyond SCENE_ACCEL_MAX,
+ * the bound of g: a force of 1e300 N is refused, naming the range of
+ * forces that mass accepts, rather than run into a meaningless flight.
+ */
+static int
+check_forces(const struct scene *sc, struct scene_error *err)
+{
+	for (int b = 0; b < 2; b++) {
+		double m = b == 0 ? sc->d.m1 : sc->d.m2, F = b == 0 ? sc->loads.F1 : sc->loads.F2;
+		char ms[64];
+		if (b == 1 && (sc->d.system != SCENE_FULL || isinf(m)))
+			continue; /* body 2 fixed, or its load not applied */
+		if (fabs(F) <= SCENE_ACCEL_MAX * m)
+			continue;
+		struct unit_range r = { -SCENE_ACCEL_MAX * m, SCENE_ACCEL_MAX * m, 0, 0, 0 };
+		units_format(m, UNIT_MASS, 4, ms, sizeof ms);
+		return scene_error_range(err, b == 0 ? "loads.F1" : "loads.F2", &r, &UNIT_FORCE,
+		    "it would accelerate body %d (%s) beyond %g m/s^2", b + 1, ms, SCENE_ACCEL_MAX);
+	}
+	return HB_OK;
+}
+
 int
 scene_check(struct scene *sc, struct scene_error *err)
 {
@@ -172,6 +195,8 @@ scene_check(struct scene *sc, struct scene_error *err)
 	if ((st = check_value("body2.mass", sc->d.m2, &m2, UNIT_MASS, &UNIT_MASS, "value", err)))
 		return st;
 	if ((st = check_weight(sc, err)) != HB_OK)
+		return st;
+	if ((st = check_forces(sc, err)) != HB_OK)
 		return st;
 	return check_law(sc, err);
 }

@@ -174,8 +174,9 @@ app_run(const struct app_options *o, char *msg, size_t n)
 	if (s == NULL)
 		return 2;
 	if (o->script == NULL && (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO))) {
-		snprintf(msg, n, "the explorer needs a terminal: standard %s is not one "
-		         "(use --batch PRESET for a report, or --script FILE to play keys without a terminal)",
+		snprintf(msg, n, "the explorer needs a terminal: standard %s is not one; expected a "
+		         "terminal there, or --batch PRESET for a report, or --script FILE to play keys "
+		         "without a terminal",
 		         !isatty(STDIN_FILENO) ? "input" : "output");
 		sim_free(s);
 		return 2;
@@ -198,10 +199,10 @@ app_run(const struct app_options *o, char *msg, size_t n)
 	} else if (o->script != NULL) {
 		status = script_run(a, o->script, msg, n);
 	} else {
-		if (term_begin(msg, n) != 0) {
+		if (term_begin(msg, n) != 0) { /* an unknown TERM is bad input */
 			sim_free(a->sim);
 			free(a);
-			return 1;
+			return 2;
 		}
 		a->braille = term_utf8() && !o->ascii;
 		a->colour = term_colour();

@@ -99,7 +99,8 @@ term_begin(char *msg, size_t n)
 	locale_setup();
 	stop_signal = 0;
 	if (newterm(NULL, stdout, stdin) == NULL) {
-		snprintf(msg, n, "cannot open the terminal (TERM=%s)",
+		snprintf(msg, n, "cannot open the terminal (TERM=%s): expected a terminal type known to "
+		         "the terminfo database (see toe -a), such as xterm-256color or vt100",
 		         getenv("TERM") ? getenv("TERM") : "unset");
 		return -1;
 	}
