@@ -52,9 +52,14 @@ TUI_CFLAGS  := $(filter-out -D_XOPEN_SOURCE=%,$(shell $(PKG_CONFIG) --cflags $(C
 TUI_LIBS    := $(shell $(PKG_CONFIG) --libs $(CURSES_PC) 2>/dev/null)
 TEST_CFLAGS := $(shell $(PKG_CONFIG) --cflags criterion 2>/dev/null)
 TEST_LIBS   := $(shell $(PKG_CONFIG) --libs criterion 2>/dev/null)
-# aubio (onset detection for `hybounce fit` on recordings): onset.o only.
+# aubio (onset detection for `hybounce fit` on recordings): its header for
+# onset.o and onset_aubio.o; the library itself is opened with dlopen when
+# a recording is first read (src/core/onset_aubio.h says why), under the
+# soname of the libaubio pkg-config finds.
 AUBIO_CFLAGS := $(shell $(PKG_CONFIG) --cflags aubio 2>/dev/null)
-AUBIO_LIBS   := $(shell $(PKG_CONFIG) --libs aubio 2>/dev/null)
+AUBIO_SONAME := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir aubio 2>/dev/null)/libaubio.so" \
+                  2>/dev/null | sed -n 's/^ *SONAME *//p')
+AUBIO_LIBS   := -ldl
 
 CPPFLAGS  += -Iinclude -Iinclude/hybounce -Isrc/core -DHYBOUNCE_VERSION='"$(VERSION)"' \
              -DHYBOUNCE_DATADIR='"$(DATADIR)"' -D_POSIX_C_SOURCE=200809L -D_XOPEN_SOURCE=700
@@ -113,6 +118,8 @@ $(BUILD)/tests/%.o: tests/%.c
 	$(CC) $(CPPFLAGS) -Isrc/tui $(CORE_CFLAGS) $(TEST_CFLAGS) $(CFLAGS) -c $< -o $@
 
 $(BUILD)/src/core/onset.o: CORE_CFLAGS += $(AUBIO_CFLAGS)
+$(BUILD)/src/core/onset_aubio.o: CORE_CFLAGS += $(AUBIO_CFLAGS) \
+    $(if $(AUBIO_SONAME),-DAUBIO_SONAME='"$(AUBIO_SONAME)"')
 
 $(CORE_LIB): $(CORE_OBJ)
 	@mkdir -p $(@D)

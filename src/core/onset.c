@@ -10,17 +10,17 @@
  * The crossing is looked for at most RISE before the peak, since the
  * previous click may still ring at the start of the search window.
  * aubio's own log output is captured into the message instead of going to
- * stderr (the engine never prints).
+ * stderr (the engine never prints).  libaubio is loaded on first use
+ * (onset_aubio.c), so that runs which read no recording do not pay for it.
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include <aubio/aubio.h>
-
 #include "hybounce/onset.h"
 #include "hybounce/status.h"
+#include "onset_aubio.h"
 
 enum { HOP = 64, WIN = 512 };
 #define RISE 0.002 /* longest rise of a click from its start to its peak, s */
@@ -51,9 +51,10 @@ log_to_buf(sint_t level, const char_t *message, void *data)
 
 /* Reads every sample (downmixed to mono by aubio) into *x. */
 static int
-read_all(const char *path, float **x, size_t *nx, double *sr, char *alog, char *msg, size_t n)
+read_all(const struct aubio_api *A, const char *path, float **x, size_t *nx, double *sr,
+         char *alog, char *msg, size_t n)
 {
-	aubio_source_t *src = new_aubio_source(path, 0, HOP);
+	aubio_source_t *src = A->new_aubio_source(path, 0, HOP);
 	fvec_t *buf;
 	size_t cap = 0;
 	uint_t got = 0;
@@ -64,30 +65,30 @@ read_all(const char *path, float **x, size_t *nx, double *sr, char *alog, char *
 		return status_set(msg, n, HB_EIO, "%s: cannot be read as a recording%s%s; "
 		    "accepted: a WAV file (or another format libaubio reads)", path,
 		    alog[0] ? ": " : "", alog);
-	*sr = aubio_source_get_samplerate(src);
-	if ((buf = new_fvec(HOP)) == NULL) {
-		del_aubio_source(src);
+	*sr = A->aubio_source_get_samplerate(src);
+	if ((buf = A->new_fvec(HOP)) == NULL) {
+		A->del_aubio_source(src);
 		return status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
 	do {
-		aubio_source_do(src, buf, &got);
+		A->aubio_source_do(src, buf, &got);
 		if (*nx + got > cap) {
 			size_t nc = cap ? 2 * cap : 1 << 16;
 			float *t = realloc(*x, nc * sizeof *t);
 
 			if (t == NULL) {
-				del_fvec(buf);
-				del_aubio_source(src);
+				A->del_fvec(buf);
+				A->del_aubio_source(src);
 				return status_set(msg, n, HB_ENOMEM, "out of memory");
 			}
 			*x = t;
 			cap = nc;
 		}
 		for (uint_t i = 0; i < got; i++)
-			(*x)[(*nx)++] = (float)fvec_get_sample(buf, i);
+			(*x)[(*nx)++] = (float)A->fvec_get_sample(buf, i);
 	} while (got == HOP);
-	del_fvec(buf);
-	del_aubio_source(src);
+	A->del_fvec(buf);
+	A->del_aubio_source(src);
 	return HB_OK;
 }
 
@@ -124,6 +125,7 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 	char alog[256] = "";
 	float *x = NULL;
 	size_t nx = 0, cap = 0;
+	const struct aubio_api *A;
 	aubio_onset_t *od = NULL;
 	fvec_t *in = NULL, *out = NULL;
 	long prev = -1;
@@ -133,23 +135,25 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 	if (!(level < 1))
 		return status_set(msg, n, HB_EINVAL, "onset level %g; accepted: a fraction of "
 		    "the peak in (0, 1)", level);
-	aubio_log_set_level_function(AUBIO_LOG_ERR, log_to_buf, alog);
-	aubio_log_set_level_function(AUBIO_LOG_WRN, log_to_buf, alog);
-	if ((st = read_all(path, &x, &nx, &r->samplerate, alog, msg, n)) != HB_OK)
+	if ((A = aubio_api(msg, n)) == NULL)
+		return HB_EIO;
+	A->aubio_log_set_level_function(AUBIO_LOG_ERR, log_to_buf, alog);
+	A->aubio_log_set_level_function(AUBIO_LOG_WRN, log_to_buf, alog);
+	if ((st = read_all(A, path, &x, &nx, &r->samplerate, alog, msg, n)) != HB_OK)
 		goto out;
 	r->duration = (double)nx / r->samplerate;
 	r->noise = noise_floor(x, nx, r->samplerate);
-	od = new_aubio_onset(method, WIN, HOP, (uint_t)r->samplerate);
+	od = A->new_aubio_onset(method, WIN, HOP, (uint_t)r->samplerate);
 	if (od == NULL) {
 		st = status_set(msg, n, HB_EINVAL, "onset method '%s'%s%s; accepted: default, "
 		    "energy, hfc, complex, phase, wphase, specdiff, kl, mkl, specflux", method,
 		    alog[0] ? ": " : "", alog);
 		goto out;
 	}
-	aubio_onset_set_threshold(od, (smpl_t)thr);
-	aubio_onset_set_minioi_s(od, (smpl_t)mioi);
-	in = new_fvec(HOP);
-	out = new_fvec(1);
+	A->aubio_onset_set_threshold(od, (smpl_t)thr);
+	A->aubio_onset_set_minioi_s(od, (smpl_t)mioi);
+	in = A->new_fvec(HOP);
+	out = A->new_fvec(1);
 	if (in == NULL || out == NULL) {
 		st = status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
@@ -159,11 +163,11 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 		float P = 0;
 
 		for (uint_t i = 0; i < HOP; i++)
-			fvec_set_sample(in, s + i < nx ? x[s + i] : 0, i);
-		aubio_onset_do(od, in, out);
-		if (fvec_get_sample(out, 0) == 0)
+			A->fvec_set_sample(in, s + i < nx ? x[s + i] : 0, i);
+		A->aubio_onset_do(od, in, out);
+		if (A->fvec_get_sample(out, 0) == 0)
 			continue; /* no onset in this hop */
-		rough = (long)aubio_onset_get_last(od);
+		rough = (long)A->aubio_onset_get_last(od);
 		/* the click: its peak near aubio's time, its start before the peak */
 		lo = rough - w > 0 ? rough - w : 0;
 		if (prev >= 0 && lo < prev + (long)(mioi * r->samplerate))
@@ -215,12 +219,12 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 		    "recording", path, r->duration, r->noise);
 out:
 	if (od != NULL)
-		del_aubio_onset(od);
+		A->del_aubio_onset(od);
 	if (in != NULL)
-		del_fvec(in);
+		A->del_fvec(in);
 	if (out != NULL)
-		del_fvec(out);
+		A->del_fvec(out);
 	free(x);
-	aubio_log_reset();
+	A->aubio_log_reset();
 	return st;
 }
