@@ -115,6 +115,15 @@ atomic_cksum(struct atomic_set *set, int k, unsigned long *crc, unsigned long lo
 int
 atomic_write_file(const char *path, const void *buf, size_t len, char *msg, size_t n);
 
+/*
+ * Writes path alone, atomically as above, with what fill(f, ctx) writes to
+ * its stream; fill's result is not looked at: a failed write shows in the
+ * stream's error flag, which the commit reports.
+ */
+int
+atomic_write_with(const char *path, void (*fill)(FILE *f, const void *ctx), const void *ctx,
+                  char *msg, size_t n);
+
 HB_END_DECLS
 
 #endif

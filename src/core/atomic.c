@@ -423,7 +423,8 @@ atomic_cksum(struct atomic_set *set, int k, unsigned long *crc, unsigned long lo
 }
 
 int
-atomic_write_file(const char *path, const void *buf, size_t len, char *msg, size_t n)
+atomic_write_with(const char *path, void (*fill)(FILE *f, const void *ctx), const void *ctx,
+                  char *msg, size_t n)
 {
 	struct atomic_set set;
 	FILE *f;
@@ -432,7 +433,29 @@ atomic_write_file(const char *path, const void *buf, size_t len, char *msg, size
 	f = atomic_add(&set, path, msg, n);
 	if (f == NULL)
 		return HB_EIO;
-	if (len > 0)
-		(void)fwrite(buf, 1, len, f);   /* a failure shows in ferror() at commit */
+	errno = 0;
+	fill(f, ctx);   /* a failure shows in ferror() at commit */
 	return atomic_commit(&set, msg, n);
+}
+
+struct bytes {
+	const void *buf;
+	size_t len;
+};
+
+static void
+fill_bytes(FILE *f, const void *ctx)
+{
+	const struct bytes *b = ctx;
+
+	if (b->len > 0)
+		(void)fwrite(b->buf, 1, b->len, f);
+}
+
+int
+atomic_write_file(const char *path, const void *buf, size_t len, char *msg, size_t n)
+{
+	const struct bytes b = { buf, len };
+
+	return atomic_write_with(path, fill_bytes, &b, msg, n);
 }

@@ -172,31 +172,28 @@ write_collisions(FILE *f, const struct sim *s)
 
 typedef int (*rows_fn)(FILE *, const struct sim *);
 
-static int
-write_one(const char *path, const struct sim *s, rows_fn fn, char *msg, size_t n)
+static void
+fill_arc(FILE *f, const void *s)
 {
-	struct atomic_set set;
-	FILE *f;
+	(void)write_arc(f, s);
+}
 
-	atomic_begin(&set);
-	f = atomic_add(&set, path, msg, n);
-	if (f == NULL)
-		return HB_EIO;
-	errno = 0;
-	(void)fn(f, s);     /* a failed write shows at commit */
-	return atomic_commit(&set, msg, n);
+static void
+fill_collisions(FILE *f, const void *s)
+{
+	(void)write_collisions(f, s);
 }
 
 int
 csv_write_arc(const char *path, const struct sim *s, char *msg, size_t n)
 {
-	return write_one(path, s, write_arc, msg, n);
+	return atomic_write_with(path, fill_arc, s, msg, n);
 }
 
 int
 csv_write_collisions(const char *path, const struct sim *s, char *msg, size_t n)
 {
-	return write_one(path, s, write_collisions, msg, n);
+	return atomic_write_with(path, fill_collisions, s, msg, n);
 }
 
 /* Writes fn's CSV to the stream f and flushes it (see csv.h). */
