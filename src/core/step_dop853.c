@@ -190,7 +190,6 @@ struct dop853 {
 	double *y0;         /* the last step's start */
 	double *y1;         /* its end */
 	double *ytmp;
-	double *acc, *e5, *e3; /* scratch */
 	double *r[8];       /* the dense output's coefficients */
 	double t0, h;       /* the last step */
 	int have_step;      /* a step was made since the last reset */
@@ -201,26 +200,51 @@ struct dop853 {
 };
 
 /*
- * out = sum_m a_m k_{j_m}, over the row's own terms only (1 to 9), added
- * left to right as a straight sum would: the same rounding, about half
- * the work of a sum padded to 9 terms (the rows average 5).
+ * out = sum_m a_m k_{j_m} (y == NULL), or out = y + h sum_m a_m k_{j_m}:
+ * one pass over the components with the row's own terms (1 to 9) summed
+ * left to right in registers, as GSL's rk8pd writes its stages out.
  */
+#define TERMS1 a[0] * p[0][i]
+#define TERMS2 TERMS1 + a[1] * p[1][i]
+#define TERMS3 TERMS2 + a[2] * p[2][i]
+#define TERMS4 TERMS3 + a[3] * p[3][i]
+#define TERMS5 TERMS4 + a[4] * p[4][i]
+#define TERMS6 TERMS5 + a[5] * p[5][i]
+#define TERMS7 TERMS6 + a[6] * p[6][i]
+#define TERMS8 TERMS7 + a[7] * p[7][i]
+#define TERMS9 TERMS8 + a[8] * p[8][i]
+#define PASS(terms)                                          \
+	do {                                                 \
+		if (y != NULL)                               \
+			for (i = 0; i < dim; i++)            \
+				out[i] = y[i] + h * (terms); \
+		else                                         \
+			for (i = 0; i < dim; i++)            \
+				out[i] = terms;              \
+	} while (0)
+
 static void
-lincomb(const struct dop853 *st, const struct row *r, double *out)
+lincomb(const struct dop853 *st, const struct row *r, const double *y, double h, double *out)
 {
 	const size_t dim = st->dim;
-	const double *p = st->k[r->j[0]];
-	const double a0 = r->a[0];
+	const double *p[9];
+	double a[9];
 	size_t i;
 
-	for (i = 0; i < dim; i++)
-		out[i] = a0 * p[i];
-	for (int m = 1; m < r->n; m++) {
-		const double am = r->a[m];
-
-		p = st->k[r->j[m]];
-		for (i = 0; i < dim; i++)
-			out[i] += am * p[i];
+	for (int m = 0; m < r->n; m++) {
+		p[m] = st->k[r->j[m]];
+		a[m] = r->a[m];
+	}
+	switch (r->n) {
+	case 1: PASS(TERMS1); break;
+	case 2: PASS(TERMS2); break;
+	case 3: PASS(TERMS3); break;
+	case 4: PASS(TERMS4); break;
+	case 5: PASS(TERMS5); break;
+	case 6: PASS(TERMS6); break;
+	case 7: PASS(TERMS7); break;
+	case 8: PASS(TERMS8); break;
+	default: PASS(TERMS9); break;
 	}
 }
 
@@ -228,11 +252,7 @@ lincomb(const struct dop853 *st, const struct row *r, double *out)
 static void
 combine(const struct dop853 *st, const double *y, double h, const struct row *r, double *out)
 {
-	size_t i;
-
-	lincomb(st, r, st->acc);
-	for (i = 0; i < st->dim; i++)
-		out[i] = y[i] + h * st->acc[i];
+	lincomb(st, r, y, h, out);
 }
 
 static int
@@ -250,7 +270,7 @@ dop853_alloc(size_t dim)
 
 	if (st == NULL)
 		return NULL;
-	mem = calloc((NSTAGE + 3 + 8 + 3) * dim, sizeof *mem);
+	mem = calloc((NSTAGE + 3 + 8) * dim, sizeof *mem);
 	if (mem == NULL) {
 		free(st);
 		return NULL;
@@ -263,9 +283,6 @@ dop853_alloc(size_t dim)
 	st->ytmp = st->y1 + dim;
 	for (i = 0; i < 8; i++)
 		st->r[i] = st->ytmp + (size_t)(i + 1) * dim;
-	st->acc = st->r[7] + dim;
-	st->e5 = st->acc + dim;
-	st->e3 = st->e5 + dim;
 	return st;
 }
 
@@ -295,16 +312,27 @@ dop853_apply(void *state, size_t dim, double t, double h, double y[], double yer
 		if ((rc = eval(sys, s == 11 ? t + h : t + C[s] * h, st->ytmp, st->k[s])) != GSL_SUCCESS)
 			return rc;
 	}
-	/* the 8th-order increment, the solution, and the estimate from e5 and e3 = b8 - b3 */
-	lincomb(st, &B8, st->acc);
-	for (i = 0; i < dim; i++)
-		st->y1[i] = st->y0[i] + h * st->acc[i];
-	lincomb(st, &E5, st->e5);
-	lincomb(st, &B3, st->e3);
-	for (i = 0; i < dim; i++) {
-		double e5 = st->e5[i], e3 = st->acc[i] - st->e3[i], d = e5 * e5 + 0.01 * e3 * e3;
+	/*
+	 * In one pass: the 8th-order increment b8, the solution, and the
+	 * estimate from e5 and e3 = b8 - b3 (B8 and E5 weigh stages 1, 6..12,
+	 * B3 stages 1, 9, 12; each sum left to right, as lincomb would).
+	 */
+	{
+		double *const *k = st->k;
 
-		yerr[i] = d > 0.0 ? h * e5 * e5 / sqrt(d) : 0.0;
+		for (i = 0; i < dim; i++) {
+			double b8 = B8.a[0] * k[0][i] + B8.a[1] * k[5][i] + B8.a[2] * k[6][i] +
+			            B8.a[3] * k[7][i] + B8.a[4] * k[8][i] + B8.a[5] * k[9][i] +
+			            B8.a[6] * k[10][i] + B8.a[7] * k[11][i];
+			double e5 = E5.a[0] * k[0][i] + E5.a[1] * k[5][i] + E5.a[2] * k[6][i] +
+			            E5.a[3] * k[7][i] + E5.a[4] * k[8][i] + E5.a[5] * k[9][i] +
+			            E5.a[6] * k[10][i] + E5.a[7] * k[11][i];
+			double b3 = B3.a[0] * k[0][i] + B3.a[1] * k[8][i] + B3.a[2] * k[11][i];
+			double e3 = b8 - b3, d = e5 * e5 + 0.01 * e3 * e3;
+
+			st->y1[i] = st->y0[i] + h * b8;
+			yerr[i] = d > 0.0 ? h * e5 * e5 / sqrt(d) : 0.0;
+		}
 	}
 	/* stage 13: f at the end, the next step's first stage */
 	if ((rc = eval(sys, t + h, st->y1, st->k[12])) != GSL_SUCCESS)
