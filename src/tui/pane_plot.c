@@ -321,6 +321,26 @@ draw_loop(const struct app *a)
 	canvas_free(c);
 }
 
+/* Widens [*lo, *hi] to the finite values of quantity q of the n runs in [t0, t1]. */
+static void
+value_range(const struct app *a, const struct sim *const *s, int n, int q, double t0, double t1,
+            double *lo, double *hi)
+{
+	for (int k = 0; k < n; k++) {
+		const struct arc *ak = sim_arc(s[k]);
+		size_t i, end;
+
+		for (sample_span(a, ak, t0, t1, &i, &end); i < end; i++) {
+			double xv = absc(a, arc_at(ak, i)), v = qval(arc_at(ak, i), q);
+
+			if (xv >= t0 && xv <= t1 && isfinite(v)) {
+				*lo = fmin(*lo, v);
+				*hi = fmax(*hi, v);
+			}
+		}
+	}
+}
+
 void
 pane_plot_draw(const struct app *a)
 {
@@ -354,19 +374,7 @@ pane_plot_draw(const struct app *a)
 		struct axis ay;
 		struct canvas *c;
 
-		for (int k = 0; k < n; k++) {
-			const struct arc *ak = sim_arc(s[k]);
-			size_t i0, i1;
-			sample_span(a, ak, t0, t1, &i0, &i1);
-			for (size_t i = i0; i < i1; i++) {
-				const struct arc_sample *p = arc_at(ak, i);
-				double xv = absc(a, p), v = qval(p, q);
-				if (xv < t0 || xv > t1 || !isfinite(v))
-					continue;
-				lo = fmin(lo, v);
-				hi = fmax(hi, v);
-			}
-		}
+		value_range(a, s, n, q, t0, t1, &lo, &hi);
 		canvas_axis(lo, hi, hs[q] / 2 + 2, qbase[q], &ay);
 		c = canvas_or_die(cw, hs[q], a->braille);
 		canvas_range(c, t0, t1, ay.lo, ay.hi);
