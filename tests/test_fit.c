@@ -248,6 +248,39 @@ Test(fit, bwmcl_sequence_noisy)
 	gsl_rng_free(rng);
 }
 
+/*
+ * A key whose range is far wider than its value (loads.g in [-1e7, 1e7]
+ * m/s^2): the logistic's rate is scaled to the start, so that the
+ * difference steps move g on its own scale.  Unscaled, a step of 1e-6 in u
+ * was 5 m/s^2 of g: the same fit took 16 iterations and 59 runs.
+ */
+Test(fit, wide_range_key_on_its_own_scale)
+{
+	static const char *const keys[] = { "law.c", "loads.g" };
+	struct fit_options o = { .keys = keys, .nkeys = 2 };
+	struct scene truth, start;
+	struct fit_data d;
+	struct fit_result r;
+	double t[9], sd[9];
+	char msg[512];
+
+	scene_preset("steel-on-bitumen", &truth);
+	impact_times(&truth, 9, t);
+	for (int i = 0; i < 9; i++)
+		sd[i] = 20e-6;
+	cr_assert_eq(fit_data_from_times(t, sd, 9, "synthetic sequence", &d, msg, sizeof msg), 0,
+	    "%s", msg);
+	start = truth;
+	set(&start, "law.c", "4000");
+	set(&start, "loads.g", "9.5");
+	cr_assert_eq(fit_run(&start, &d, &o, &r, msg, sizeof msg), 0, "%s", msg);
+	cr_assert(r.reason <= FIT_CONVERGED_COST, "%s after %d iterations", r.why, r.iter);
+	cr_assert(fabs(r.value[1] - 9.81) < 1e-6 * 9.81, "g = %.9g", r.value[1]);
+	cr_assert_leq(r.iter, 10, "%d iterations", r.iter);
+	fit_result_free(&r);
+	fit_data_free(&d);
+}
+
 /* The result does not depend on the number of threads, to the bit. */
 Test(fit, threads_do_not_change_the_result)
 {

@@ -33,7 +33,11 @@
  * body1.mass, loads.g, initial.x0 ...) can be free.  The solver works on
  * unconstrained u, and the value is theta(u), so that every trial stays in
  * the key's admissible range:
- *     (lo, hi)    theta = lo + (hi - lo) / (1 + exp(-u))
+ *     (lo, hi)    theta = lo + (hi - lo) / (1 + exp(-k u)), k <= 1 such that
+ *                 d theta / d u at the start is at most |theta| (1 for a
+ *                 start at 0): a range far wider than the value, such as
+ *                 initial.v0 in [-100 km/s, 100 km/s], then moves theta on
+ *                 the scale of the value, not of the range
  *     (lo, inf)   theta = lo + exp(u)
  *     (-inf, hi)  theta = hi - exp(-u)
  *     (-inf, inf) theta = u

@@ -14,6 +14,7 @@ struct fit_param {
 	double lo, hi;  /* admissible range (open); infinite for none */
 	int beta;       /* gamma: index of beta in the law's table (theta = beta tanh u), else -1 */
 	double u0;      /* u of the start */
+	double k;       /* (lo, hi): the logistic's rate, 1 or less (see fit.h) */
 };
 
 int

@@ -124,8 +124,20 @@ fit_param_init(const struct scene *sc, const char *key, struct fit_param *fp,
 		return status_set(msg, n, HB_EINVAL, "%s = %g: the start must lie inside the "
 		    "range (%g, %g), not on a bound; set another with --set", key, v, fp->lo,
 		    fp->hi);
-	if (isfinite(fp->lo) && isfinite(fp->hi))
-		fp->u0 = -log((fp->hi - fp->lo) / (v - fp->lo) - 1);
+	fp->k = 1;
+	if (isfinite(fp->lo) && isfinite(fp->hi)) {
+		/*
+		 * The rate k: the logistic's slope at the start is at most the
+		 * start's magnitude, else a range of 2e5 m/s would turn a
+		 * difference step of 1e-6 in u into 0.05 m/s of v0.
+		 */
+		double s0 = (v - fp->lo) / (fp->hi - fp->lo), slope = (fp->hi - fp->lo) * s0 * (1 - s0);
+		double mag = v != 0 ? fabs(v) : 1;
+
+		if (slope > mag)
+			fp->k = mag / slope;
+		fp->u0 = -log((fp->hi - fp->lo) / (v - fp->lo) - 1) / fp->k;
+	}
 	else if (isfinite(fp->lo))
 		fp->u0 = log(v - fp->lo);
 	else if (isfinite(fp->hi))
@@ -142,10 +154,10 @@ theta_of(const struct fit_param *fp, double u, double *dth)
 	double t;
 
 	if (isfinite(fp->lo) && isfinite(fp->hi)) {
-		double s = 1 / (1 + exp(-u));
+		double s = 1 / (1 + exp(-fp->k * u));
 
 		t = fp->lo + (fp->hi - fp->lo) * s;
-		*dth = (fp->hi - fp->lo) * s * (1 - s);
+		*dth = fp->k * (fp->hi - fp->lo) * s * (1 - s);
 		/* the logistic rounds to a bound far out; stay strictly inside */
 		if (!(t > fp->lo))
 			t = nextafter(fp->lo, fp->hi);
