@@ -208,6 +208,23 @@ Test(fit, bwshccl_drops_noisy)
 	gsl_rng_free(rng);
 }
 
+/* The first 9 impact times of truth, sd 20 us (a recording at 44.1 kHz), plus noise if rng. */
+static void
+sequence_of(const struct scene *truth, gsl_rng *rng, struct fit_data *d)
+{
+	double t[9], sd[9];
+	char msg[512];
+
+	impact_times(truth, 9, t);
+	for (int i = 0; i < 9; i++) {
+		sd[i] = 20e-6;
+		if (rng != NULL)
+			t[i] += gsl_ran_gaussian(rng, sd[i]);
+	}
+	cr_assert_eq(fit_data_from_times(t, sd, 9, "synthetic sequence", d, msg, sizeof msg), 0,
+	    "%s", msg);
+}
+
 /* BWMCL: c and alpha from the impact times of one bouncing sequence. */
 static void
 bwmcl_case(gsl_rng *rng, double tol)
@@ -215,18 +232,9 @@ bwmcl_case(gsl_rng *rng, double tol)
 	static const char *const keys[] = { "law.c", "law.alpha" };
 	struct scene truth, start;
 	struct fit_data d;
-	double t[9], sd[9];
-	char msg[512];
 
 	scene_preset("steel-on-bitumen", &truth);
-	impact_times(&truth, 9, t);
-	for (int i = 0; i < 9; i++) {
-		sd[i] = 20e-6; /* 20 us: a recording at 44.1 kHz */
-		if (rng != NULL)
-			t[i] += gsl_ran_gaussian(rng, sd[i]);
-	}
-	cr_assert_eq(fit_data_from_times(t, sd, 9, "synthetic sequence", &d, msg, sizeof msg), 0,
-	    "%s", msg);
+	sequence_of(&truth, rng, &d);
 	start = truth;
 	set(&start, "law.c", "3000");
 	set(&start, "law.alpha", "0.5");
@@ -261,15 +269,10 @@ Test(fit, wide_range_key_on_its_own_scale)
 	struct scene truth, start;
 	struct fit_data d;
 	struct fit_result r;
-	double t[9], sd[9];
 	char msg[512];
 
 	scene_preset("steel-on-bitumen", &truth);
-	impact_times(&truth, 9, t);
-	for (int i = 0; i < 9; i++)
-		sd[i] = 20e-6;
-	cr_assert_eq(fit_data_from_times(t, sd, 9, "synthetic sequence", &d, msg, sizeof msg), 0,
-	    "%s", msg);
+	sequence_of(&truth, NULL, &d);
 	start = truth;
 	set(&start, "law.c", "4000");
 	set(&start, "loads.g", "9.5");
