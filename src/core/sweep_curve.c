@@ -7,17 +7,17 @@
  * sees a cancellation within one slice.  Results go into arrays under a
  * mutex; sweep_curve_poll copies them and never waits for a point.
  */
-#include <errno.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
+#include "hybounce/atomic.h"
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
 #include "hybounce/sweep.h"
+#include "csv_impl.h"
 #include "sweep_impl.h"
 
 #define SLICE_STEPS 2000
@@ -221,14 +221,37 @@ sweep_curve_poll(struct sweep_curve *c, double *x, double *y, int *state, long n
 	return done;
 }
 
+/* What sweep_curve_write_csv writes: the header, then the computed points. */
+struct curve_rows {
+	const struct sweep_curve *c;
+	const double *y;
+	const int *st;
+};
+
+static void
+fill_curve(FILE *f, const void *ctx)
+{
+	const struct curve_rows *r = ctx;
+
+	fprintf(f, "%s,%s\n", r->c->key, obs_names[r->c->obs]);
+	for (long i = 0; i < r->c->np; i++) {
+		char v[64];
+
+		if (r->st[i] == CURVE_PENDING)
+			continue;
+		sweep_point_value(r->c->sw, i, 0, v, sizeof v);
+		fputs(v, f);
+		csv_put_num(f, r->y[i]);
+		fputc('\n', f);
+	}
+}
+
 int
 sweep_curve_write_csv(struct sweep_curve *c, const char *path, char *msg, size_t n)
 {
-	char tmp[4200];
 	double *y = malloc((size_t)c->np * sizeof *y);
 	int *st = malloc((size_t)c->np * sizeof *st);
-	FILE *f = NULL;
-	int fd, e = 0;
+	int rc;
 
 	if (y == NULL || st == NULL) {
 		free(y);
@@ -236,41 +259,8 @@ sweep_curve_write_csv(struct sweep_curve *c, const char *path, char *msg, size_t
 		return status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
 	sweep_curve_poll(c, NULL, y, st, c->np);
-	snprintf(tmp, sizeof tmp, "%s.tmpXXXXXX", path);
-	fd = mkstemp(tmp);
-	if (fd < 0 || (f = fdopen(fd, "w")) == NULL) {
-		e = errno;
-		if (fd >= 0) {
-			close(fd);
-			unlink(tmp);
-		}
-		free(y);
-		free(st);
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
-	}
-	fprintf(f, "%s,%s\n", c->key, obs_names[c->obs]);
-	for (long i = 0; i < c->np; i++) {
-		char v[64];
-
-		if (st[i] == CURVE_PENDING)
-			continue;
-		sweep_point_value(c->sw, i, 0, v, sizeof v);
-		fprintf(f, "%s,", v);
-		if (!isnan(y[i]))
-			fprintf(f, "%.17g", y[i]);
-		fputc('\n', f);
-	}
+	rc = atomic_write_with(path, fill_curve, &(struct curve_rows){ c, y, st }, msg, n);
 	free(y);
 	free(st);
-	if (ferror(f) || fflush(f) != 0 || fsync(fileno(f)) != 0)
-		e = errno ? errno : EIO;
-	if (fclose(f) != 0 && e == 0)
-		e = errno;
-	if (e == 0 && rename(tmp, path) != 0)
-		e = errno;
-	if (e != 0) {
-		unlink(tmp);
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
-	}
-	return HB_OK;
+	return rc;
 }

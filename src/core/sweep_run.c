@@ -301,8 +301,8 @@ struct pool {
 	const struct sweep *sw;
 	pthread_mutex_t mu;
 	pthread_cond_t cv;
-	const long *todo;
-	long ntodo, next;
+	const long *pending;
+	long npending, next;
 	int stop;
 	struct result *head, *tail;
 };
@@ -318,11 +318,11 @@ worker(void *arg)
 		double c0;
 
 		pthread_mutex_lock(&p->mu);
-		if (p->stop || p->next >= p->ntodo) {
+		if (p->stop || p->next >= p->npending) {
 			pthread_mutex_unlock(&p->mu);
 			return NULL;
 		}
-		id = p->todo[p->next++];
+		id = p->pending[p->next++];
 		pthread_mutex_unlock(&p->mu);
 
 		r = calloc(1, sizeof *r);
@@ -356,7 +356,7 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 	struct doneset ds = { 0 };
 	struct pool p;
 	pthread_t *th = NULL;
-	long *todo = NULL, got = 0, nth = 0;
+	long *pending = NULL, got = 0, nth = 0;
 	char jpath[4200];
 	int fd = -1, rc, cancelled = 0;
 	double t0 = clock_seconds(CLOCK_MONOTONIC);
@@ -393,31 +393,31 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 	/* The shard's points that the journal does not hold. */
 	for (long id = k; id < np; id += ns)
 		pr.total++;
-	todo = malloc((size_t)(pr.total - ds.count + 1) * sizeof *todo);
-	if (todo == NULL) {
+	pending = malloc((size_t)(pr.total - ds.count + 1) * sizeof *pending);
+	if (pending == NULL) {
 		rc = status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
 	}
 	for (long id = k; id < np; id += ns)
 		if (!(ds.bits[id / 8] & (1u << (id % 8))))
-			todo[p.ntodo++] = id;
-	pr.resumed = pr.done = pr.total - p.ntodo;
+			pending[p.npending++] = id;
+	pr.resumed = pr.done = pr.total - p.npending;
 	if (o->progress)
 		o->progress(o->ctx, &pr);
 
-	if (p.ntodo > 0) {
+	if (p.npending > 0) {
 		fd = open(jpath, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
 		if (fd < 0) {
 			rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 			goto out;
 		}
 		p.sw = sw;
-		p.todo = todo;
+		p.pending = pending;
 		pthread_mutex_init(&p.mu, NULL);
 		pthread_cond_init(&p.cv, NULL);
 		nth = o->jobs < 1 ? 1 : o->jobs;
-		if (nth > p.ntodo)
-			nth = p.ntodo;
+		if (nth > p.npending)
+			nth = p.npending;
 		th = calloc((size_t)nth, sizeof *th);
 		if (th == NULL) {
 			rc = status_set(msg, n, HB_ENOMEM, "out of memory");
@@ -433,7 +433,7 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 				break;
 			}
 		pthread_mutex_lock(&p.mu);
-		while (got < p.ntodo && rc == HB_OK) {
+		while (got < p.npending && rc == HB_OK) {
 			struct result *r;
 
 			while (p.head == NULL && p.stop == 0 && !cancelled) {
@@ -519,7 +519,7 @@ threads_done:
 			rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 	}
 out:
-	free(todo);
+	free(pending);
 	free(ds.bits);
 	return rc;
 }
