@@ -15,6 +15,7 @@
 #include <strings.h>
 #include <unistd.h>
 
+#include "hybounce/atomic.h"
 #include "hybounce/fit.h"
 #include "hybounce/onset.h"
 #include "hybounce/preset.h"
@@ -223,17 +224,12 @@ print_onsets(const char *path, const struct onset_result *on)
 	       "contact's duration)\n");
 }
 
-/* Writes the points as CSV to a temporary name and renames it. */
-static int
-write_residuals(const char *path, const struct fit_result *r)
+/* The residuals CSV: a row per data point. */
+static void
+fill_residuals(FILE *f, const void *ctx)
 {
-	char tmp[4096];
-	FILE *f;
-	int ok;
+	const struct fit_result *r = ctx;
 
-	snprintf(tmp, sizeof tmp, "%s.tmp%ld", path, (long)getpid());
-	if ((f = fopen(tmp, "w")) == NULL)
-		return bad("--residuals %s: %s", path, strerror(errno));
 	fprintf(f, "point,row,observable,measured,simulated,sd,resid,start\n");
 	for (size_t k = 0; k < r->npoints; k++) {
 		const struct fit_point *p = &r->point[k];
@@ -241,14 +237,16 @@ write_residuals(const char *path, const struct fit_result *r)
 		fprintf(f, "%zu,%zu,%s,%.17g,%.17g,%.17g,%.17g,%.17g\n", k, p->row,
 		    fit_obs_name(p->obs), p->measured, p->simulated, p->sd, p->resid, p->start);
 	}
-	ok = !ferror(f);
-	ok = fclose(f) == 0 && ok;
-	if (!ok || rename(tmp, path) != 0) {
-		int e = errno;
+}
 
-		unlink(tmp);
-		return bad("--residuals %s: %s", path, strerror(e));
-	}
+/* Writes the points as CSV, atomically (hybounce/atomic.h). */
+static int
+write_residuals(const char *path, const struct fit_result *r)
+{
+	char m[512];
+
+	if (atomic_write_with(path, fill_residuals, r, m, sizeof m) != HB_OK)
+		return bad("--residuals %s", m);
 	fprintf(stderr, "wrote %s\n", path);
 	return 0;
 }
