@@ -819,7 +819,8 @@ main(int argc, char **argv)
 			        c->o.reps,
 			        c->o.steps, c->o.rejected, c->o.rhs, c->o.jac, c->o.n, c->e.dn, c->e.t,
 			        c->e.tabs, c->e.e, c->e.xc, c->e.F, c->e.coll, c->e.T,
-			        studies[s].kind != REF_RUN ? "closed form" : "rkck 1e-14/1e-18",
+			        studies[s].kind != REF_RUN       ? "closed form"
+			        : extra[i].st == STEPPER_RK8PD ? "rkck 1e-14/1e-18" : "rk8pd 1e-14/1e-18",
 			        c->o.status ? "failed" : "");
 		}
 	}
