@@ -379,7 +379,7 @@ preset_load_string(const char *text, const char *name, struct scene *sc, char *m
 
 	if (name == NULL)
 		name = "(string)";
-	c.e = calloc(PRESET_MAX_ENTRIES, sizeof *c.e);
+	c.e = malloc(PRESET_MAX_ENTRIES * sizeof *c.e); /* entries 0..c.n-1 are written whole */
 	if (c.e == NULL)
 		return status_set(msg, n, HB_ENOMEM, "%s: out of memory", name);
 	preset_ini_options();

@@ -478,7 +478,7 @@ info_lawpar(const struct scene *sc, int i, struct scene_keyinfo *o)
 	units_format(o->number, o->dim, 4, o->value, sizeof o->value);
 	units_format_exact(o->number, o->dim, o->edit, sizeof o->edit);
 	units_range_str(&o->limits, NULL, o->range, sizeof o->range);
-	o->readonly = (pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived;
+	o->readonly = (pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived; /* as scene_key_resolve */
 }
 
 int
@@ -515,12 +515,12 @@ scene_key_info(const struct scene *sc, const struct scene_keydef *kd, struct sce
 }
 
 int
-scene_get(const struct scene *sc, const char *key, struct scene_keyinfo *out,
-          struct scene_error *err)
+scene_key_resolve(const struct scene *sc, const char *key, const struct scene_keydef **kd,
+                  int *li, int *readonly, struct scene_error *err)
 {
-	const struct scene_keydef *kd;
-
-	memset(out, 0, sizeof *out);
+	*kd = NULL;
+	*li = -1;
+	*readonly = 0;
 	if (key == NULL)
 		return scene_error_set(err, "", NULL, "no key");
 	if (strncmp(key, "law.", 4) == 0) {
@@ -535,12 +535,29 @@ scene_get(const struct scene *sc, const char *key, struct scene_keyinfo *out,
 			return scene_error_set(err, key, names, "unknown key for law %s",
 			    sc->law != NULL ? sc->law->name : "(none)");
 		}
-		info_lawpar(sc, i, out);
+		*li = i;
+		*readonly = (sc->law->params[i].flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived;
 		return HB_OK;
 	}
-	kd = scene_keydef_find(key);
-	if (kd == NULL)
+	*kd = scene_keydef_find(key);
+	if (*kd == NULL)
 		return scene_error_set(err, key, NULL, "unknown key");
-	info_keydef(sc, kd, out);
+	return HB_OK;
+}
+
+int
+scene_get(const struct scene *sc, const char *key, struct scene_keyinfo *out,
+          struct scene_error *err)
+{
+	const struct scene_keydef *kd;
+	int li, ro, st;
+
+	memset(out, 0, sizeof *out);
+	if ((st = scene_key_resolve(sc, key, &kd, &li, &ro, err)) != HB_OK)
+		return st;
+	if (kd == NULL)
+		info_lawpar(sc, li, out);
+	else
+		info_keydef(sc, kd, out);
 	return HB_OK;
 }

@@ -64,6 +64,16 @@ struct scene_keydef {
 extern const struct scene_keydef scene_keydefs[];
 extern const int scene_nkeydefs;
 
+/*
+ * What scene_get finds of a key, without formatting its value: its row in
+ * the table (*kd), or for a law parameter *kd NULL and its index *li, with
+ * *readonly set where the scene derives it.  HB_OK, or an error naming the
+ * keys accepted.
+ */
+int
+scene_key_resolve(const struct scene *sc, const char *key, const struct scene_keydef **kd,
+                  int *li, int *readonly, struct scene_error *err);
+
 /* The row of a key, or NULL. */
 const struct scene_keydef *
 scene_keydef_find(const char *key);

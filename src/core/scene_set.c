@@ -152,8 +152,7 @@ static int
 key_lookup(const struct scene *tmp, const char *key, const struct scene_keydef **kd, int *li,
            struct scene_error *err)
 {
-	struct scene_keyinfo ki;
-	int st;
+	int st, ro;
 
 	*kd = NULL;
 	*li = -1;
@@ -163,18 +162,12 @@ key_lookup(const struct scene *tmp, const char *key, const struct scene_keydef *
 		return scene_error_set(err, key, "the keys of the sections scene, body1, body2, law, loads, "
 		    "initial and run (PRESETS in hybounce(1); hybounce --list-laws)",
 		    "derived values are computed, never typed");
-	st = scene_get(tmp, key, &ki, err);
-	if (st != HB_OK)
+	if ((st = scene_key_resolve(tmp, key, kd, li, &ro, err)) != HB_OK)
 		return st;
-	if (strncmp(key, "law.", 4) == 0) {
-		*li = law_param_index(tmp->law, key + 4);
-		if (ki.readonly)
-			return scene_error_set(err, key, "no value",
-			    "%s is derived from the materials by Hertz contact theory; give masses instead of "
-			    "materials to type it", key);
-		return HB_OK;
-	}
-	*kd = scene_keydef_find(key);
+	if (ro)
+		return scene_error_set(err, key, "no value",
+		    "%s is derived from the materials by Hertz contact theory; give masses instead of "
+		    "materials to type it", key);
 	return HB_OK;
 }
 

@@ -495,9 +495,17 @@ sim_seek(struct sim *s, size_t i)
 
 	if (i >= arc_len(s->arc))
 		return HB_EINVAL;
+	/*
+	 * The step to continue with: the one the controller proposes where the
+	 * simulator stands at that sample (an edit at the run's end, a seek
+	 * to it), else the one the run took from that sample.
+	 */
 	s->resume_h = 0.0;
 	if (i + 1 < arc_len(s->arc) && arc_at(s->arc, i + 1)->j == arc_at(s->arc, i)->j)
 		s->resume_h = arc_at(s->arc, i + 1)->t - arc_at(s->arc, i)->t;
+	else if (i + 1 == arc_len(s->arc) && s->end == SIM_RUNNING && !s->setup
+	         && s->t == arc_at(s->arc, i)->t && s->j == arc_at(s->arc, i)->j && s->h > 0)
+		s->resume_h = s->h;
 	arc_truncate(s->arc, i + 1);
 	a = arc_at(s->arc, i);
 	iv = arc_interval_at(s->arc, arc_interval_of(s->arc, i));

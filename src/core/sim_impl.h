@@ -109,7 +109,7 @@ struct sim {
 	int msign;          /* the frozen sign of the law's mode kink in this step (0: none) */
 	int resume;         /* 1: the next interval continues one cut by sim_seek (see resume_interval) */
 	size_t resume_first, resume_last; /* its samples kept in the arc */
-	double resume_h;    /* the step the run had taken from the seek point, or 0 */
+	double resume_h;    /* the step to continue with from the seek point, or 0 */
 	int mforce;         /* the sign the mode takes at t = mforce_t (a located crossing) */
 	double mforce_t;
 	int loc_iter;

@@ -527,6 +527,13 @@ hbs_after_step(struct sim *s, int load_kink)
 	for (i = 0; i < n; i++)
 		s->gmax[i] = fmax(s->gmax[i], fmax(fabs(f0[i]), fabs(f1[i])));
 	if (ncand == 0) {
+		/*
+		 * GSL's evolve hands the derivative at the step's end to the next
+		 * step as its first stage (rk8pd, rkck, rkf45): a state moved by
+		 * the snaps above needs it evaluated again.
+		 */
+		if (memcmp(s->u, s->u1, sizeof s->u1) != 0)
+			gsl_odeiv2_evolve_reset(p->d->e);
 		memcpy(s->u, s->u1, sizeof s->u1);
 		hbs_unpack(s, p, s->t0 + s->H, s->u1);
 		if (load_kink) {
