@@ -259,6 +259,8 @@ hbs_scales(struct sim *s, const struct layout *L, int q)
 {
 	const struct scene *sc = &s->sc;
 	double m = sc->d.m, F = fabs(scene_Fer(sc, s->t)), X, V, k, p;
+
+	s->w.valid = 0; /* the watched values were of the old scales */
 	int i;
 
 	if (q) {

@@ -101,10 +101,17 @@ struct sim {
 
 	/* location workspace */
 	double t0, H, u0[MAXDIM], u1[MAXDIM];
+	struct {            /* the watched values at the last state hbs_watch_at was asked */
+		int valid, n, kind[MAXFUN];
+		const struct phase *p;
+		double t, xe, u[MAXDIM], f[MAXFUN];
+	} w;
 	struct cached cache[CACHE];
 	int ncache, cache_next;
 	int fun_target, fun_sign0;
 	int use_dense;      /* 1: restep() reads the last step's continuous extension */
+	int use_herm;       /* 1: restep() reads the cubic Hermite interpolant of the step */
+	double f0[MAXDIM], f1[MAXDIM]; /* its derivatives at the step's ends (scaled) */
 	int hug;            /* 1: the step began on Phi = 0 to the noise, receding (see snap_separation) */
 	int msign;          /* the frozen sign of the law's mode kink in this step (0: none) */
 	int resume;         /* 1: the next interval continues one cut by sim_seek (see resume_interval) */
@@ -178,14 +185,39 @@ hbs_finish_T(struct sim *s);
 int
 hbs_flight_closed(struct sim *s);
 
-/* sim_locate.c */
+/* sim_watch.c: the values of the watched functions at a scaled state, their kinds */
 int
 hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
-      int *kind);
+          int *kind);
 
+/*
+ * The same, remembered for the last state asked (where one step ends, the
+ * next begins); hbs_scales forgets it.
+ */
+int
+hbs_watch_at(struct sim *s, const struct phase *p, double t, const double *u, double *f,
+             int *kind);
+
+/* sim_snap.c: a state on the boundary of C to the precision of the computation */
 int
 hbs_hugging(struct sim *s, const double *u);
+void
+hbs_snap_stick(struct sim *s, double *u);
+int
+hbs_snap_separation(struct sim *s, double *u);
 
+/* sim_watch.c: did function i (of this kind) cross between values a and b? */
+int
+hbs_crossed(int kind, double a, double b);
+/* ... and is it a candidate, with the noise filter of round-off-level crossings? */
+int
+hbs_candidate(const struct sim *s, int kind, int i, double f0, double fx);
+/* dI/dt of the indicator of C at a scaled state (f, n: its watched values) */
+double
+hbs_indicator_rate(const struct sim *s, const struct phase *p, double t, const double *u,
+                   const double *f, int n);
+
+/* sim_locate.c: acts on the accepted step (t0, u0) -> (t0 + H, u1) */
 int
 hbs_after_step(struct sim *s, int load_kink);
 

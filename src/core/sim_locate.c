@@ -1,85 +1,40 @@
 /*
- * sim_locate.c - location on a step: the watched functions (the indicator of C, the law's
- * switching functions, the extremum functions), re-steps and the continuous
- * extension, the bracketing root finder, the dip test, the noise filters and
- * the separation that rounding cannot fake (see sim.c for the method).
+ * sim_locate.c - location on a step: where a watched function (sim_watch.c)
+ * crosses, on re-steps, on the step's continuous extension (dop853) or
+ * guided by its Hermite interpolant (the other steppers), with a bracketing
+ * root finder; the dip test for events stepped over (see sim.c for the
+ * method).
  */
 #include "sim_impl.h"
 
-/* The flow-set indicator of an unscaled state: >= 0 in C. */
-static double
-indicator(const struct sim *s, int q, double xc, const double *z, double v, double x)
-{
-	if (q)
-		return -fmin(phi_at(s, xc, z, v), v);
-	return fmax(x, v);
-}
-
 /*
- * Values of the watched functions at a scaled state: [0] the indicator,
- * then the law's switching functions, then v (x_c extremum) and dPhi/dt
- * (F_c extremum).  Returns their number; kinds in kind[].
+ * The cubic Hermite interpolant of the step (t0, u0) -> (t0 + H, u1) from
+ * the derivatives at its ends, at t0 + h.  Fourth-order: it only guides the
+ * location of a crossing for a stepper without a continuous extension
+ * (see locate_on_steps); no located point is taken from it.
  */
-int
-hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
-      int *kind)
+static void
+hermite(const struct sim *s, double h, double *u)
 {
-	const struct scene *sc = &s->sc;
-	const struct layout *L = &p->L;
-	double y[MAXDIM], v, x, xc = 0, z[LAW_MAX_Z] = { 0 };
-	int n = 0, i, nz = sc->law->n_z;
+	double th = h / s->H, th2 = th * th, th3 = th2 * th;
+	double a0 = 2 * th3 - 3 * th2 + 1, b0 = (th3 - 2 * th2 + th) * s->H;
+	double a1 = 3 * th2 - 2 * th3, b1 = (th3 - th2) * s->H;
 
-	hbs_unscale(p, u, y);
-	v = y[L->iv];
-	if (p->q) {
-		xc = y[L->ixc];
-		for (i = 0; i < nz; i++)
-			z[i] = y[L->iz + i];
-		x = L->ix >= 0 ? y[L->ix] : s->xe + xc;
-	} else {
-		x = y[L->ix];
-	}
-	kind[n] = FUN_EVENT;
-	f[n++] = indicator(s, p->q, xc, z, v, x);
-	if (!p->q)
-		return n;
-	if (sc->law->n_kinks && sc->run.kinks) {
-		sc->law->kinks(sc->par, sc->ext, xc, z, v, &f[n]);
-		for (i = 0; i < sc->law->n_kinks; i++)
-			kind[n++] = FUN_KINK;
-	}
-	kind[n] = FUN_XCMAX;
-	f[n++] = v;
-	{
-		double dphi[LAW_MAX_Z + 2], dpsi[LAW_MAX_Z * (LAW_MAX_Z + 2)], dz[LAW_MAX_Z];
-		double phi = phi_at(s, xc, z, v), vdot, d;
-
-		sc->law->jac(sc->par, sc->ext, xc, z, v, dphi, nz ? dpsi : NULL);
-		if (nz)
-			sc->law->psi(sc->par, sc->ext, xc, z, v, dz);
-		vdot = (-phi + scene_Fer(sc, t)) / sc->d.m;
-		d = dphi[0] * v + dphi[nz + 1] * vdot;
-		for (i = 0; i < nz; i++)
-			d += dphi[1 + i] * dz[i];
-		kind[n] = FUN_FCMAX;
-		f[n++] = d;
-	}
-	return n;
+	for (int i = 0; i < s->cur->L.dim; i++)
+		u[i] = a0 * s->u0[i] + b0 * s->f0[i] + a1 * s->u1[i] + b1 * s->f1[i];
 }
 
-/* Did function i cross between values a (step start) and b? */
+/* Sets the Hermite interpolant of the step up (two evaluations of f): 0, or the rhs' error. */
 static int
-crossed(int kind, double a, double b)
+hermite_setup(struct sim *s)
 {
-	switch (kind) {
-	case FUN_EVENT: return a >= 0.0 && b < 0.0;
-	case FUN_KINK: return (a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0);
-	default: return a < 0.0 && b > 0.0; /* minima of x_c and of Phi */
-	}
-}
+	struct phase *p = s->cur;
+	int rc;
 
-static void snap_stick(struct sim *s, double *u);
-static int snap_separation(struct sim *s, double *u);
+	if ((rc = p->sys.function(s->t0, s->u0, s->f0, p->sys.params)) != GSL_SUCCESS)
+		return rc;
+	return p->sys.function(s->t0 + s->H, s->u1, s->f1, p->sys.params);
+}
 
 /* The state one step of length h from (t0, u0), cached. */
 static int
@@ -97,17 +52,19 @@ restep(struct sim *s, double h, double *u)
 		memcpy(u, s->u1, sizeof s->u1);
 		return 0;
 	}
-	if (s->use_dense) {
-		/* on the step's continuous extension: no evaluation of f */
-		if ((rc = hb_dop853_dense(p->d->s, s->t0 + h, u)) != GSL_SUCCESS)
+	if (s->use_dense || s->use_herm) {
+		/* on the step's continuous extension, or its Hermite interpolant: no evaluation of f */
+		if (s->use_herm)
+			hermite(s, h, u);
+		else if ((rc = hb_dop853_dense(p->d->s, s->t0 + h, u)) != GSL_SUCCESS)
 			return rc;
 		for (i = 0; i < p->L.dim; i++)
 			if (!isfinite(u[i]))
 				return GSL_FAILURE;
 		if (p->q) {
-			snap_stick(s, u);
+			hbs_snap_stick(s, u);
 			if (s->hug)
-				snap_separation(s, u);
+				hbs_snap_separation(s, u);
 		}
 		return 0;
 	}
@@ -126,9 +83,9 @@ restep(struct sim *s, double h, double *u)
 		if (!isfinite(u[i]) || !isfinite(yerr[i]))
 			return GSL_FAILURE;
 	if (p->q) {
-		snap_stick(s, u);
+		hbs_snap_stick(s, u);
 		if (s->hug)
-			snap_separation(s, u);
+			hbs_snap_separation(s, u);
 	}
 	i = s->cache_next;
 	s->cache_next = (s->cache_next + 1) % CACHE;
@@ -173,14 +130,24 @@ oriented(double h, void *params)
 
 /*
  * Brackets the crossing of function k in [lo, hi] (not crossed at lo,
- * crossed at hi) down to a few ulps of t.  Returns 0, with the bracket in
- * *a, *b.
+ * crossed at hi) down to a few ulps of t, or to htol if that is wider.
+ * Brent's method proposes the points.  For a switching or extremum
+ * function, where it stalls (its estimate of the root is good, but its
+ * steps from it are of one ulp, so that the far end only moves by
+ * bisection, every other iteration: Psi_2 = v - Phi/c while a Maxwell
+ * element creeps, two equal terms, is zero to rounding over a band far
+ * wider than ulps), the bracket is closed by evaluating at tol/2 on either
+ * side of the estimate, or just beyond the root the secant of those two
+ * gives, or else at least halved.  The indicator keeps Brent's own steps, whose
+ * crossing the separation that rounding cannot fake relies on (see
+ * snap_separation).  Returns 0, with the bracket in *a, *b.
  */
 static int
-bracket(struct sim *s, int k, int sign0, double lo, double hi, double *a, double *b)
+bracket(struct sim *s, int k, int sign0, double lo, double hi, double htol, double *a, double *b)
 {
 	gsl_function F = { oriented, s };
-	double tol = 4.0 * DBL_EPSILON * fmax(fabs(s->t0 + hi), 1e-300);
+	double tol = fmax(4.0 * DBL_EPSILON * fmax(fabs(s->t0 + hi), 1e-300), htol);
+	double xl = lo, xu = hi, prev = hi - lo, w;
 	int it = 0, rc;
 
 	s->fun_target = k;
@@ -189,36 +156,71 @@ bracket(struct sim *s, int k, int sign0, double lo, double hi, double *a, double
 		return GSL_FAILURE;
 	if ((rc = gsl_root_fsolver_set(s->root, &F, lo, hi)) != GSL_SUCCESS)
 		return rc;
-	*a = lo;
-	*b = hi;
-	while (it++ < MAX_BRENT) {
-		double xl, xu;
-
+	while (xu - xl > tol && it++ < MAX_BRENT) {
 		if ((rc = gsl_root_fsolver_iterate(s->root)) != GSL_SUCCESS)
 			return rc;
 		xl = gsl_root_fsolver_x_lower(s->root);
 		xu = gsl_root_fsolver_x_upper(s->root);
-		if (xu - xl <= tol)
-			break;
-	}
-	{
-		double xl = gsl_root_fsolver_x_lower(s->root);
-		double xu = gsl_root_fsolver_x_upper(s->root);
-		double fl = oriented(xl, s), fu = oriented(xu, s);
+		if (k != 0 && xu - xl > tol && xu - xl > 0.5 * prev) {
+			double r = gsl_root_fsolver_root(s->root);
+			double p1 = fmax(xl, r - 0.5 * tol), p2 = fmin(xu, r + 0.5 * tol);
+			double g1 = oriented(p1, s), g2 = oriented(p2, s);
 
-		/* GSL keeps opposite signs at the ends; order them as (not crossed, crossed) */
-		if (fl > 0 && fu < 0) {
-			*a = xl;
-			*b = xu;
-		} else if (fu > 0 && fl < 0) {
-			*a = xu;
-			*b = xl;
-		} else {
-			return GSL_FAILURE;
+			if (!isfinite(g1) || !isfinite(g2))
+				return GSL_FAILURE;
+			if (g1 > 0 && g2 < 0) {
+				xl = p1;
+				xu = p2;
+				break;
+			}
+			if (g1 < 0)
+				xu = p1;
+			else
+				xl = p2;
+			w = xu - xl;
+			if (w > tol && g1 != g2) {
+				/* the root the two probes' secant gives, and a point just beyond it */
+				double r2 = p1 - g1 * (p2 - p1) / (g2 - g1);
+				double q = g1 > 0 ? r2 + 0.5 * tol : r2 - 0.5 * tol, gq;
+
+				if (q > xl && q < xu) {
+					if (!isfinite(gq = oriented(q, s)))
+						return GSL_FAILURE;
+					if (gq > 0)
+						xl = q;
+					else
+						xu = q;
+				}
+			}
+			if (xu - xl > tol && xu - xl > 0.5 * w) { /* else a bisection: the bracket at least halves */
+				double m = 0.5 * (xl + xu), gm = oriented(m, s);
+
+				if (!isfinite(gm))
+					return GSL_FAILURE;
+				if (gm > 0)
+					xl = m;
+				else
+					xu = m;
+			}
+			if (xu - xl <= tol)
+				break;
+			if ((rc = gsl_root_fsolver_set(s->root, &F, xl, xu)) != GSL_SUCCESS)
+				return rc;
 		}
-		if (*b < *a) /* a crossing cannot come back: take the earlier crossed point */
-			return GSL_FAILURE;
+		prev = xu - xl;
+		if (k != 0 && xu - xl <= 1e-6 * s->H) {
+			/* both ends zero to rounding: located as closely as the function can be computed */
+			double noise = 100.0 * DBL_EPSILON * s->gmax[k];
+
+			if (fabs(oriented(xl, s)) <= noise && fabs(oriented(xu, s)) <= noise)
+				break;
+		}
 	}
+	/* the ends as (not crossed, crossed) */
+	if (!(oriented(xl, s) > 0 && oriented(xu, s) < 0))
+		return GSL_FAILURE;
+	*a = xl;
+	*b = xu;
 	return 0;
 }
 
@@ -234,156 +236,7 @@ accept_at(struct sim *s, double h)
 	gsl_odeiv2_driver_reset(s->cur->d);
 }
 
-/*
- * Round-off at a sticking contact.  When the force and the velocity both
- * decay towards zero without changing sign (a Maxwell element with c below
- * sqrt(k m)/2), the computed values eventually wander about zero at the
- * level of round-off and may both turn positive, which would be read as a
- * separation.  A state whose v and Phi are both positive but below
- * eta = 100 max(rtol, atol) of the contact's largest |v| and F_c (the noise
- * of the integration, whose components are controlled to atol of their
- * scales) is on
- * the boundary of C to the precision of the computation: its v is set to 0,
- * which keeps it in C (rule R2) and changes it by less than the tolerance.
- */
-static void
-snap_stick(struct sim *s, double *u)
-{
-	struct phase *p = s->cur;
-	const struct layout *L = &p->L;
-	double y[MAXDIM], eta = fmax(64 * DBL_EPSILON, 100 * fmax(s->sc.run.rtol, s->sc.run.atol)), phi, v;
-	double z[LAW_MAX_Z] = { 0 };
-	int i;
 
-	hbs_unscale(p, u, y);
-	v = y[L->iv];
-	for (i = 0; i < s->sc.law->n_z; i++)
-		z[i] = y[L->iz + i];
-	phi = phi_at(s, y[L->ixc], z, v);
-	if (v > 0 && phi > 0 && v <= eta * s->vmax && phi <= eta * s->Fcmax)
-		u[L->iv] = 0.0;
-}
-
-/*
- * The noise of v at a scaled state: NOISE times the tolerance the control
- * allows it (atol + rtol |u_v| of its scale).
- */
-enum { NOISE = 100 };
-
-static double
-v_noise(const struct sim *s, const double *u)
-{
-	int iv = s->cur->L.iv;
-
-	return NOISE * s->scale[iv] * (s->sc.run.atol + s->sc.run.rtol * fabs(u[iv]));
-}
-
-/*
- * A separation that rounding cannot fake.  Under heavy damping (SHCCL
- * with c v0 / k beyond about 35) the receding velocity creeps up to the
- * value at which Phi = 0 (k / c for SHCCL) while x_c returns to 0: Phi is
- * then zero to within the integration's noise for the whole restitution,
- * and its computed sign says nothing.  A receding state (v > 0) whose Phi
- * is positive but vanishes within the noise of v (Newton's step on Phi in
- * v, Phi / (dPhi/dv), below v_noise) is on the boundary of C to the
- * precision of the computation: its v is moved by that step (and ulps)
- * until Phi <= 0, so that it stays in C (rule R2).  The contact then ends where Phi turns positive beyond
- * the noise, which is where the exact law ends it (x_c = 0 for SHCCL).
- * Laws whose Phi does not grow with v are left alone.  Returns 1 if the
- * state was moved.
- */
-static int
-snap_separation(struct sim *s, double *u)
-{
-	const struct phase *p = s->cur;
-	const struct layout *L = &p->L;
-	const struct scene *sc = &s->sc;
-	double y[MAXDIM], z[LAW_MAX_Z] = { 0 }, dphi[LAW_MAX_Z + 2], phi, v, vn, dv;
-	int nz = sc->law->n_z, i;
-
-	if (!p->q)
-		return 0;
-	hbs_unscale(p, u, y);
-	v = y[L->iv];
-	if (!(v > 0))
-		return 0;
-	for (i = 0; i < nz; i++)
-		z[i] = y[L->iz + i];
-	phi = phi_at(s, y[L->ixc], z, v);
-	if (!(phi > 0))
-		return 0;
-	sc->law->jac(sc->par, sc->ext, y[L->ixc], z, v, dphi, NULL);
-	dv = dphi[nz + 1];
-	if (!(dv > 0) || phi > dv * v_noise(s, u))
-		return 0;
-	vn = v - phi / dv;
-	for (i = 0; i < 8 && phi_at(s, y[L->ixc], z, vn) > 0; i++)
-		vn -= ldexp(fabs(vn) * DBL_EPSILON, i);
-	if (phi_at(s, y[L->ixc], z, vn) > 0)
-		return 0;
-	u[L->iv] = vn * s->iscale[L->iv];
-	return 1;
-}
-
-/* Does the step from the scaled state u begin on Phi = 0 to the noise, receding? */
-int
-hbs_hugging(struct sim *s, const double *u)
-{
-	const struct phase *p = s->cur;
-	const struct layout *L = &p->L;
-	const struct scene *sc = &s->sc;
-	double y[MAXDIM], z[LAW_MAX_Z] = { 0 }, dphi[LAW_MAX_Z + 2], phi;
-	int nz = sc->law->n_z, i;
-
-	if (!p->q)
-		return 0;
-	hbs_unscale(p, u, y);
-	if (!(y[L->iv] > 0))
-		return 0;
-	for (i = 0; i < nz; i++)
-		z[i] = y[L->iz + i];
-	phi = phi_at(s, y[L->ixc], z, y[L->iv]);
-	sc->law->jac(sc->par, sc->ext, y[L->ixc], z, y[L->iv], dphi, NULL);
-	return dphi[nz + 1] > 0 && fabs(phi) <= dphi[nz + 1] * v_noise(s, u);
-}
-
-/* Is function i a candidate crossing from f0 to fx (with the noise filter of after_step)? */
-static int
-candidate(const struct sim *s, int kind, int i, double f0, double fx)
-{
-	/*
-	 * A switching or extremum function that only wanders about zero at the
-	 * level of the tolerance (|Psi_2| while a Maxwell element creeps,
-	 * dPhi/dt at rest) marks no real kink or extremum.
-	 */
-	if (kind != FUN_EVENT && fmax(fabs(f0), fabs(fx)) <= s->sc.run.rtol * s->gmax[i])
-		return 0;
-	return crossed(kind, f0, fx);
-}
-
-/* dI/dt of the indicator of C at a scaled state (one-sided where I has a corner). */
-static double
-indicator_rate(const struct sim *s, const struct phase *p, double t, const double *u,
-               const double *f, int n)
-{
-	const struct layout *L = &p->L;
-	double y[MAXDIM], v, vdot;
-
-	hbs_unscale(p, u, y);
-	v = y[L->iv];
-	if (p->q) {
-		double z[LAW_MAX_Z] = { 0 }, phi;
-		int i;
-
-		for (i = 0; i < s->sc.law->n_z; i++)
-			z[i] = y[L->iz + i];
-		phi = phi_at(s, y[L->ixc], z, v);
-		vdot = (-phi + scene_Fer(&s->sc, t)) / s->sc.d.m;
-		return phi < v ? -f[n - 1] : -vdot; /* f[n - 1] = dPhi/dt */
-	}
-	vdot = scene_Fer(&s->sc, t) / s->sc.d.m;
-	return y[L->ix] > v ? v : vdot;
-}
 
 /*
  * An event inside a step whose ends are both in C (the indicator dips
@@ -403,8 +256,8 @@ dip(struct sim *s, const double *f0, const double *f1, int n, double *fx)
 
 	if (!(f0[0] >= 0.0 && f1[0] >= 0.0))
 		return 0.0;
-	d0 = H * indicator_rate(s, p, s->t0, s->u0, f0, n);
-	d1 = H * indicator_rate(s, p, s->t0 + H, s->u1, f1, n);
+	d0 = H * hbs_indicator_rate(s, p, s->t0, s->u0, f0, n);
+	d1 = H * hbs_indicator_rate(s, p, s->t0 + H, s->u1, f1, n);
 	if (d0 >= 0.0 && d1 <= 0.0)
 		return 0.0; /* rising then falling: no interior minimum */
 	/* P(th) = f0 + d0 th + c2 th^2 + c3 th^3; its critical points solve P'(th) = 0 */
@@ -464,7 +317,7 @@ real_point(struct sim *s, int event, double hi, double *a, double *b)
 			up = hi;
 		if (tries == 4)
 			lo = 0.0;
-		if (bracket(s, 0, 1, lo, up, &ra, &rb) == 0) {
+		if (bracket(s, 0, 1, lo, up, 0.0, &ra, &rb) == 0) {
 			*a = ra;
 			*b = rb;
 			return;
@@ -472,6 +325,90 @@ real_point(struct sim *s, int event, double hi, double *a, double *b)
 	}
 keep:
 	s->use_dense = 1;
+}
+
+/*
+ * How closely a crossing of a function of this kind is bracketed (see
+ * bracket): events and kinks to ulps of t; the extrema of x_c and F_c,
+ * whose values do not change to first order with the point, to 1e-9 of
+ * the step (their functions v and dPhi/dt only cross within a band of
+ * rounding far wider than ulps when the motion is slow); on the Hermite
+ * interpolant, to well within its own error, 1e-10 of the step.
+ */
+static double
+htol_of(const struct sim *s, int kind, int tight)
+{
+	double h = 0.0;
+
+	if (!tight && (kind == FUN_XCMAX || kind == FUN_FCMAX))
+		h = 1e-9 * s->H;
+	if (s->use_herm)
+		h = fmax(h, 1e-10 * s->H);
+	return h;
+}
+
+/*
+ * From a crossing of function k (side sign0 at the step's start) found on
+ * the Hermite interpolant at about b to the same crossing bracketed on the
+ * method's own steps, in [0, hi]: the value of k on a step to b and the
+ * interpolant's slope there give a Newton estimate of the root; b is one
+ * end of the bracket, the other lies just beyond the estimate, and moves
+ * away until the bracket holds the crossing (at last the whole [0, hi]),
+ * then narrowed to htol (see bracket).  Returns 0 with the bracket in *a, *b.
+ */
+static int
+locate_on_steps(struct sim *s, int k, int sign0, double hi, double htol, double *a, double *b)
+{
+	double x0 = *b, g0, gl, gu, d = 1e-3 * s->H, xl, xu, slope, x1, w;
+	int tries;
+
+	s->fun_target = k;
+	s->fun_sign0 = sign0;
+	s->use_herm = 1;
+	xl = fmax(0.0, x0 - d);
+	xu = fmin(hi, x0 + d);
+	gl = oriented(xl, s);
+	gu = oriented(xu, s);
+	s->use_herm = 0;
+	g0 = oriented(x0, s);
+	if (!isfinite(g0))
+		return GSL_FAILURE;
+	slope = xu > xl ? (gu - gl) / (xu - xl) : NAN;
+	x1 = isfinite(slope) && slope < 0 ? x0 - g0 / slope : x0;
+	w = fmax(0.05 * fabs(x1 - x0), 16.0 * DBL_EPSILON * fmax(fabs(s->t0 + x0), 1e-300));
+	for (tries = 0; tries < 6; tries++, w *= 16.0) {
+		double lo_, up;
+
+		if (tries == 5) { /* the whole step */
+			lo_ = 0.0;
+			up = hi;
+		} else if (g0 > 0) { /* not crossed at x0: the root lies after it */
+			lo_ = x0;
+			up = fmin(hi, fmax(x0, x1) + w);
+		} else {
+			lo_ = fmax(0.0, fmin(x0, x1) - w);
+			up = x0;
+		}
+		if (bracket(s, k, sign0, lo_, up, htol, a, b) == 0)
+			return 0;
+	}
+	return GSL_FAILURE;
+}
+
+/* Has any function but k crossed at a (on the method's steps)? */
+static int
+crossed_before(struct sim *s, int k, const double *f0, int n, const int *kind, double a)
+{
+	double ua[MAXDIM], fa[MAXFUN];
+	int kk[MAXFUN], i;
+
+	if (restep(s, a, ua))
+		return 1;
+	hbs_watch(s, s->cur, s->t0 + a, ua, fa, kk);
+	for (i = 0; i < n; i++)
+		if (i != k && hbs_candidate(s, kind[i], i, f0[i], fa[i]))
+			return 1;
+	return 0;
 }
 
 /*
@@ -484,19 +421,19 @@ hbs_after_step(struct sim *s, int load_kink)
 	struct phase *p = s->cur;
 	double f0[MAXFUN], f1[MAXFUN];
 	int kind[MAXFUN], n, i, rc, any = 0;
-	int cand[MAXFUN], ncand = 0;
-	double lo = 0.0, hi = s->H, a = 0, b = 0;
-	int first = -1;
+	int cand[MAXFUN], ncand = 0, cand0[MAXFUN], ncand0;
+	double lo = 0.0, hi = s->H, a = 0, b = 0, hi0;
+	int first = -1, first_sign = 1, herm, tight = 0;
 
 	s->ncache = 0;
 	s->cache_next = 0;
 	if (p->q) {
-		snap_stick(s, s->u1);
-		snap_separation(s, s->u1);
+		hbs_snap_stick(s, s->u1);
+		hbs_snap_separation(s, s->u1);
 		s->vmax = fmax(s->vmax, fabs(s->u1[p->L.iv] * s->scale[p->L.iv]));
 	}
-	n = hbs_watch(s, p, s->t0, s->u0, f0, kind);
-	hbs_watch(s, p, s->t0 + s->H, s->u1, f1, kind);
+	n = hbs_watch_at(s, p, s->t0, s->u0, f0, kind);
+	hbs_watch_at(s, p, s->t0 + s->H, s->u1, f1, kind);
 	if (s->msign) {
 		/*
 		 * The mode's side is its frozen sign, even where the switching
@@ -510,7 +447,7 @@ hbs_after_step(struct sim *s, int load_kink)
 			f0[k] = s->msign * DBL_MIN;
 	}
 	for (i = 0; i < n; i++)
-		if (candidate(s, kind[i], i, f0[i], f1[i]))
+		if (hbs_candidate(s, kind[i], i, f0[i], f1[i]))
 			cand[ncand++] = i;
 	if (ncand == 0 || cand[0] != 0) {
 		/* the event stepped over: locate everything that crossed before the dip */
@@ -520,7 +457,7 @@ hbs_after_step(struct sim *s, int load_kink)
 			s->st.dips++;
 			hi = th * s->H;
 			for (ncand = 0, i = 0; i < n; i++)
-				if (candidate(s, kind[i], i, f0[i], fx[i]))
+				if (hbs_candidate(s, kind[i], i, f0[i], fx[i]))
 					cand[ncand++] = i;
 		}
 	}
@@ -545,18 +482,41 @@ hbs_after_step(struct sim *s, int load_kink)
 	/* the earliest crossing: bracket one, then look for earlier ones before it */
 	s->loc_iter = 0;
 	s->st.located++;
+	/*
+	 * A stepper without a continuous extension: the crossings are first
+	 * found on the step's Hermite interpolant, then on the method's own
+	 * steps about that point (locate_on_steps); where that fails, or some
+	 * other function has crossed before the point found, the whole
+	 * location is done again on steps alone.
+	 */
+	herm = !s->use_dense && !s->hug && hermite_setup(s) == GSL_SUCCESS;
+	memcpy(cand0, cand, sizeof cand);
+	ncand0 = ncand;
+	hi0 = hi;
+again:
+	s->use_herm = herm;
+	memcpy(cand, cand0, sizeof cand);
+	ncand = ncand0;
+	lo = 0.0;
+	hi = hi0;
+	first = -1;
 	while (ncand > 0) {
 		int k = cand[0], nb = 0;
 		double fa[MAXFUN];
 		int kk[MAXFUN], sign0 = f0[k] > 0 ? 1 : -1;
 		double ua[MAXDIM];
 
-		if ((rc = bracket(s, k, sign0, lo, hi, &a, &b)) != 0) {
+		if ((rc = bracket(s, k, sign0, lo, hi, htol_of(s, kind[k], tight), &a, &b)) != 0) {
 			if (rc == GSL_FAILURE && first >= 0)
 				break;
+			if (herm) {
+				herm = 0;
+				goto again;
+			}
 			return hbs_fail(s, HB_ENUMERIC, "event location failed (no bracket)");
 		}
 		first = k;
+		first_sign = sign0;
 		hi = b;
 		/*
 		 * Which functions have already crossed at a?  Any of them, not only
@@ -566,12 +526,20 @@ hbs_after_step(struct sim *s, int load_kink)
 		restep(s, a, ua);
 		hbs_watch(s, p, s->t0 + a, ua, fa, kk);
 		for (i = 0; i < n; i++)
-			if (i != k && candidate(s, kind[i], i, f0[i], fa[i]))
+			if (i != k && hbs_candidate(s, kind[i], i, f0[i], fa[i]))
 				cand[nb++] = i;
 		if (nb == 0)
 			break;
 		ncand = nb;
 		hi = a;
+	}
+	if (herm) {
+		s->use_herm = 0;
+		if (locate_on_steps(s, first, first_sign, hi0, htol_of(s, kind[first], tight), &a, &b) != 0
+		    || crossed_before(s, first, f0, n, kind, a)) {
+			herm = 0;
+			goto again;
+		}
 	}
 	/* everything that has crossed at b happens here; the event wins */
 	{
@@ -580,8 +548,15 @@ hbs_after_step(struct sim *s, int load_kink)
 
 		restep(s, b, ub);
 		hbs_watch(s, p, s->t0 + b, ub, fb, kb);
+		if (!tight && (kind[first] == FUN_XCMAX || kind[first] == FUN_FCMAX))
+			for (i = 0; i < n; i++)
+				if ((kind[i] == FUN_EVENT || kind[i] == FUN_KINK) && hbs_crossed(kind[i], f0[i], fb[i])) {
+					/* an event or a kink inside the extremum's bracket: to ulps again */
+					tight = 1;
+					goto again;
+				}
 		for (i = 0; i < n; i++)
-			if (crossed(kind[i], f0[i], fb[i])) {
+			if (hbs_crossed(kind[i], f0[i], fb[i])) {
 				any = 1;
 				if (kind[i] == FUN_EVENT)
 					event = 1;
@@ -597,7 +572,7 @@ hbs_after_step(struct sim *s, int load_kink)
 		accept_at(s, b);
 		if (event)
 			return hbs_jump(s, LOCATE_BRENT, s->loc_iter, b - a, fa[0], fb[0]);
-		if (s->msign && crossed(FUN_KINK, f0[1 + s->sc.law->mode_kink],
+		if (s->msign && hbs_crossed(FUN_KINK, f0[1 + s->sc.law->mode_kink],
 		                        fb[1 + s->sc.law->mode_kink])) {
 			/* the mode's switching function crossed: the next step is on the other side */
 			s->mforce = -s->msign;

@@ -1,0 +1,137 @@
+/*
+ * sim_watch.c - the functions watched along a step: the indicator of the
+ * flow set C, the law's switching functions, the extremum functions of x_c
+ * and F_c; when one has crossed, and the rate of the indicator (see
+ * sim_locate.c for how crossings are located).
+ */
+#include "sim_impl.h"
+
+/* The flow-set indicator of an unscaled state: >= 0 in C. */
+static double
+indicator(const struct sim *s, int q, double xc, const double *z, double v, double x)
+{
+	if (q)
+		return -fmin(phi_at(s, xc, z, v), v);
+	return fmax(x, v);
+}
+
+/*
+ * Values of the watched functions at a scaled state: [0] the indicator,
+ * then the law's switching functions, then v (x_c extremum) and dPhi/dt
+ * (F_c extremum).  Returns their number; kinds in kind[].
+ */
+int
+hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
+      int *kind)
+{
+	const struct scene *sc = &s->sc;
+	const struct layout *L = &p->L;
+	double y[MAXDIM], v, x, xc = 0, z[LAW_MAX_Z] = { 0 };
+	int n = 0, i, nz = sc->law->n_z;
+
+	hbs_unscale(p, u, y);
+	v = y[L->iv];
+	if (p->q) {
+		xc = y[L->ixc];
+		for (i = 0; i < nz; i++)
+			z[i] = y[L->iz + i];
+		x = L->ix >= 0 ? y[L->ix] : s->xe + xc;
+	} else {
+		x = y[L->ix];
+	}
+	kind[n] = FUN_EVENT;
+	f[n++] = indicator(s, p->q, xc, z, v, x);
+	if (!p->q)
+		return n;
+	if (sc->law->n_kinks && sc->run.kinks) {
+		sc->law->kinks(sc->par, sc->ext, xc, z, v, &f[n]);
+		for (i = 0; i < sc->law->n_kinks; i++)
+			kind[n++] = FUN_KINK;
+	}
+	kind[n] = FUN_XCMAX;
+	f[n++] = v;
+	{
+		double dphi[LAW_MAX_Z + 2], dpsi[LAW_MAX_Z * (LAW_MAX_Z + 2)], dz[LAW_MAX_Z];
+		double phi = phi_at(s, xc, z, v), vdot, d;
+
+		sc->law->jac(sc->par, sc->ext, xc, z, v, dphi, nz ? dpsi : NULL);
+		if (nz)
+			sc->law->psi(sc->par, sc->ext, xc, z, v, dz);
+		vdot = (-phi + scene_Fer(sc, t)) / sc->d.m;
+		d = dphi[0] * v + dphi[nz + 1] * vdot;
+		for (i = 0; i < nz; i++)
+			d += dphi[1 + i] * dz[i];
+		kind[n] = FUN_FCMAX;
+		f[n++] = d;
+	}
+	return n;
+}
+
+int
+hbs_watch_at(struct sim *s, const struct phase *p, double t, const double *u, double *f,
+             int *kind)
+{
+	size_t nu = (size_t)p->L.dim * sizeof *u;
+
+	if (!(s->w.valid && s->w.p == p && s->w.t == t && s->w.xe == s->xe
+	      && memcmp(s->w.u, u, nu) == 0)) {
+		s->w.n = hbs_watch(s, p, t, u, s->w.f, s->w.kind);
+		s->w.p = p;
+		s->w.t = t;
+		s->w.xe = s->xe;
+		memcpy(s->w.u, u, nu);
+		s->w.valid = 1;
+	}
+	memcpy(f, s->w.f, (size_t)s->w.n * sizeof *f);
+	memcpy(kind, s->w.kind, (size_t)s->w.n * sizeof *kind);
+	return s->w.n;
+}
+
+/* Did function i cross between values a (step start) and b? */
+int
+hbs_crossed(int kind, double a, double b)
+{
+	switch (kind) {
+	case FUN_EVENT: return a >= 0.0 && b < 0.0;
+	case FUN_KINK: return (a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0);
+	default: return a < 0.0 && b > 0.0; /* minima of x_c and of Phi */
+	}
+}
+
+/* Is function i a candidate crossing from f0 to fx (with the noise filter of after_step)? */
+int
+hbs_candidate(const struct sim *s, int kind, int i, double f0, double fx)
+{
+	/*
+	 * A switching or extremum function that only wanders about zero at the
+	 * level of the tolerance (|Psi_2| while a Maxwell element creeps,
+	 * dPhi/dt at rest) marks no real kink or extremum.
+	 */
+	if (kind != FUN_EVENT && fmax(fabs(f0), fabs(fx)) <= s->sc.run.rtol * s->gmax[i])
+		return 0;
+	return hbs_crossed(kind, f0, fx);
+}
+
+/* dI/dt of the indicator of C at a scaled state (one-sided where I has a corner). */
+double
+hbs_indicator_rate(const struct sim *s, const struct phase *p, double t, const double *u,
+               const double *f, int n)
+{
+	const struct layout *L = &p->L;
+	double y[MAXDIM], v, vdot;
+
+	hbs_unscale(p, u, y);
+	v = y[L->iv];
+	if (p->q) {
+		double z[LAW_MAX_Z] = { 0 }, phi;
+		int i;
+
+		for (i = 0; i < s->sc.law->n_z; i++)
+			z[i] = y[L->iz + i];
+		phi = phi_at(s, y[L->ixc], z, v);
+		vdot = (-phi + scene_Fer(&s->sc, t)) / s->sc.d.m;
+		return phi < v ? -f[n - 1] : -vdot; /* f[n - 1] = dPhi/dt */
+	}
+	vdot = scene_Fer(&s->sc, t) / s->sc.d.m;
+	return y[L->ix] > v ? v : vdot;
+}
