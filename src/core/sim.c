@@ -24,12 +24,15 @@
  * After every accepted step the indicator, the law's switching functions
  * and the extremum functions (v for x_c^max, dPhi/dt for F_c^max) are
  * compared with their values at the step's start.  A change of sign is
- * located by re-stepping from the step's start (one step of the same
- * method of length h, h in the bracket) with GSL's Brent solver down to a
- * few ulps of t, the earliest of several crossings first.  An event ends
- * the interval at the bracket's end in D; a switching or extremum crossing
+ * located with GSL's Brent solver, the earliest of several crossings
+ * first: on the step's continuous extension (dop853) or its cubic Hermite
+ * interpolant (the other steppers), then on re-steps from the step's start
+ * (one step of the same method of length h, h in the bracket) about the
+ * point found, down to a few ulps of t (sim_locate.c).  An event ends the
+ * interval at the bracket's end in D; a switching or extremum crossing
  * ends the step at the bracket's far end and restarts the stepper
- * (DESIGN.md section 4a).  Load kinks (T_e, T_s) are step targets.  An
+ * (DESIGN.md section 4a); the law's mode term keeps its sign through a
+ * step (kinks as modes).  Load kinks (T_e, T_s) are step targets.  An
  * event inside a step whose two ends are in C is looked for by a cubic
  * Hermite test of the indicator (dip()).
  *
