@@ -21,12 +21,14 @@
 # runs: checks that the bench runs (tests/cli/bench_scipy.sh).
 # Writes OUTDIR/scipy.md (the table) and prints it.  The Python is
 # $SCIPY_PYTHON, by default /usr/bin/python3: Debian's, with python3-scipy.
+# SCIPY_MAX_STEP (s, default 1e-3) is SciPy's step bound (see scipy_ref.py).
 set -u
 smoke=0
 [ "${1:-}" = --smoke ] && { smoke=1; shift; }
 BIN=${1:-build/hybounce}
 OUT=${2:-build/bench}
 PY=${SCIPY_PYTHON:-/usr/bin/python3}
+HMAX=${SCIPY_MAX_STEP:-1e-3}
 HERE=$(dirname "$0")
 
 if ! "$PY" -c 'import scipy.integrate, numpy' >/dev/null 2>&1; then
@@ -69,11 +71,11 @@ for s in $STUDIES; do
 		i=$((i + 1))
 	done >"$T/$s.cpu"
 	# (a) SciPy, the paper's setting: timing and comparison
-	"$PY" "$HERE/scipy_ref.py" --runs $RUNS --against "$T/$s.csv" --trace "$T/$s.trace" \
+	"$PY" "$HERE/scipy_ref.py" --max-step "$HMAX" --runs $RUNS --against "$T/$s.csv" --trace "$T/$s.trace" \
 	    --json "$T/$s.scipy.json" "$P" >"$T/$s.scipy.out" 2>&1 ||
 	    { echo "bench-scipy: scipy_ref.py $s failed:" >&2; cat "$T/$s.scipy.out" >&2; exit 1; }
 	# the same model: at rtol 1e-13, atol 1e-16 the two agree to 1e-6
-	"$PY" "$HERE/scipy_ref.py" --rtol 1e-13 --atol 1e-16 --against "$T/$s.csv" \
+	"$PY" "$HERE/scipy_ref.py" --max-step "$HMAX" --rtol 1e-13 --atol 1e-16 --against "$T/$s.csv" \
 	    --trace "$T/$s.trace" --json "$T/$s.tight.json" "$P" >"$T/$s.tight.out" 2>&1 ||
 	    { echo "bench-scipy: scipy_ref.py --rtol 1e-13 $s failed:" >&2; cat "$T/$s.tight.out" >&2; exit 1; }
 done
@@ -120,13 +122,14 @@ L.append("%s UTC; %s, %d online processors; load average %s before, %s after; "
              __import__("scipy").__version__, __import__("numpy").__version__))
 L.append("")
 L.append("SciPy: tests/bench/scipy_ref.py, solve_ivp DOP853 rtol 1e-11 atol 1e-14 "
-         "max_step 1 ms, wall time of the simulation alone, median of %s runs. "
+         "max_step %g s, wall time of the simulation alone, median of %s runs. "
          "hybounce: the presets (rk8pd rtol 1e-12 atol 1e-14); engine = median wall "
          "time of `hybounce --batch PRESET` less that of the same run with "
          "`--set run.T=1ns` (hyperfine -N, %s runs each); CPU = the batch summary's "
          "in-process CPU time (median of %s). Differences: the largest relative "
          "difference over the collisions between the two programs, at the paper's "
-         "setting and (in brackets) with SciPy at rtol 1e-13 atol 1e-16." % (runs, hfruns, cpuruns))
+         "setting and (in brackets) with SciPy at rtol 1e-13 atol 1e-16."
+         % (rows[0][1]["h_max"], runs, hfruns, cpuruns))
 L.append("")
 L.append("| study | SciPy ms | hybounce engine ms | ratio | hybounce CPU ms | "
          "batch / T = 1 ns ms | collisions SciPy / hybounce | e | t_e | "
