@@ -4,7 +4,7 @@
 #  (a) SciPy's simulation time: tests/bench/scipy_ref.py, the paper's method
 #      (solve_ivp, DOP853, rtol 1e-11, atol 1e-14), timed around the
 #      simulation only (no import, no preset parsing), median of
-#      SCIPY_BENCH_RUNS (5) runs, wall clock (perf_counter);
+#      SCIPY_BENCH_RUNS (7) runs, wall clock (perf_counter);
 #  (b) hybounce's engine time: the median wall time of `hybounce --batch
 #      PRESET` less that of the same run with run.T = 1 ns, both by
 #      hyperfine (HYPERFINE_RUNS = 30 runs after 5 warm-up runs), and the
@@ -44,7 +44,7 @@ if [ $smoke = 1 ]; then
 	RUNS=1 HFRUNS=3 HFWARM=1 CPURUNS=3
 else
 	STUDIES="steel-on-bitumen ptfe-pom permanent-contact-shccl permanent-contact-bwshccl permanent-contact-bwmcl"
-	RUNS=${SCIPY_BENCH_RUNS:-5} HFRUNS=${HYPERFINE_RUNS:-30} HFWARM=5 CPURUNS=11
+	RUNS=${SCIPY_BENCH_RUNS:-7} HFRUNS=${HYPERFINE_RUNS:-30} HFWARM=5 CPURUNS=11
 fi
 : "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
 export HYBOUNCE_PRESETS
