@@ -121,7 +121,15 @@ setup_interval(struct sim *s)
 		double Tc = s->q ? s->scale[s->cur->L.ixc] / s->scale[s->cur->L.iv]
 		                 : s->scale[s->cur->L.ix] / s->scale[s->cur->L.iv];
 		s->Tc = Tc;
-		s->h = fmin(1e-2 * Tc, sc->run.T - s->t);
+		/*
+		 * The first step: the one the last interval of this kind began with
+		 * (in units of its Tc), else 1e-2 Tc.  A contact's first steps are
+		 * short (Phi grows as x_c^p from x_c = 0, not smoothly), and the
+		 * guess 1e-2 Tc was rejected about seven times at each contact.
+		 */
+		s->h = s->h1[s->q] > 0 ? s->h1[s->q] * Tc : 1e-2 * Tc;
+		s->h = fmin(s->h, sc->run.T - s->t);
+		s->first = 1;
 		if (s->resume && s->resume_h > 0)
 			s->h = fmin(s->resume_h, sc->run.T - s->t);
 		if (!(s->h > 0))
@@ -226,6 +234,9 @@ retry:
 	}
 	s->st.steps++;
 	s->H = t - s->t0;
+	if (s->first && t < t1) /* the step this interval's start took, in units of Tc */
+		s->h1[p->q] = s->H / s->Tc;
+	s->first = 0;
 	{
 		double dt0, dh;
 
@@ -274,6 +285,7 @@ reset_state(struct sim *s)
 	s->n_instant = 0;
 	s->setup = 1;
 	s->resume = 0;
+	s->h1[0] = s->h1[1] = 0.0;
 	s->ncol = 0;
 	s->ncol_total = 0;
 	s->stepper[1] = sc->run.stepper == STEPPER_AUTO ? STEPPER_DOP853 : sc->run.stepper;

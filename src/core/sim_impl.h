@@ -117,6 +117,8 @@ struct sim {
 	int resume;         /* 1: the next interval continues one cut by sim_seek (see resume_interval) */
 	size_t resume_first, resume_last; /* its samples kept in the arc */
 	double resume_h;    /* the step to continue with from the seek point, or 0 */
+	double h1[2];       /* the first step of the last numeric interval of each q, / its Tc */
+	int first;          /* 1: the next step is its interval's first */
 	int mforce;         /* the sign the mode takes at t = mforce_t (a located crossing) */
 	double mforce_t;
 	int loc_iter;
