@@ -311,6 +311,18 @@ bench-sweep: deps
 	@$(MAKE) --no-print-directory all
 	@sh tests/bench/sweep.sh $(BIN) $(BUILD)/bench
 
+# The engine side by side with the paper's own method (SciPy DOP853, rtol
+# 1e-11, atol 1e-14: tests/bench/scipy_ref.py) on the five paper studies,
+# report in build/bench/scipy.md (a few minutes).  Not part of make check:
+# it needs Debian's python3-scipy (make deps-scipy installs it).
+.PHONY: bench-scipy deps-scipy
+bench-scipy: deps
+	@$(MAKE) --no-print-directory all
+	@sh tests/bench/scipy.sh $(BIN) $(BUILD)/bench
+
+deps-scipy:
+	@$(MAKE) --no-print-directory deps APT_PACKAGES='python3-scipy python3-numpy'
+
 # The explorer's key list in the man page and the README, generated from the
 # key table (src/tui/keys.c) between the KEYS-BEGIN and KEYS-END markers;
 # tests/test_tui_keys.c fails when they differ.
