@@ -153,17 +153,28 @@ section_index(const char *s)
 	return -1;
 }
 
+/* "section.name" of an entry, into key (at least 97 bytes: the parts are bounded). */
+static void
+entry_key(const struct entry *e, char *key)
+{
+	size_t ls = strlen(e->section), ln = strlen(e->name);
+
+	memcpy(key, e->section, ls);
+	key[ls] = '.';
+	memcpy(key + ls + 1, e->name, ln + 1);
+}
+
 /* 1 if key "SECTION.NAME" is in the table (or the current law's parameters). */
 static int
-key_known(const struct scene *sc, const char *section, const char *name)
+key_known(const struct scene *sc, const struct entry *e)
 {
 	char key[128];
 
-	if (strcmp(section, "law") == 0) {
-		int i = law_param_index(sc->law, name);
-		return i >= 0 && strcmp(sc->law->params[i].name, name) == 0;
+	if (strcmp(e->section, "law") == 0) {
+		int i = law_param_index(sc->law, e->name);
+		return i >= 0 && strcmp(sc->law->params[i].name, e->name) == 0;
 	}
-	snprintf(key, sizeof key, "%s.%s", section, name);
+	entry_key(e, key);
 	return scene_keydef_find(key) != NULL;
 }
 
@@ -206,13 +217,13 @@ apply(struct scene *sc, const struct entry *e, const char *file, char *msg, size
 	struct scene_error err;
 	char key[128];
 
-	if (!key_known(sc, e->section, e->name)) {
+	if (!key_known(sc, e)) {
 		char list[256];
 		known_list(sc, e->section, list, sizeof list);
 		return status_set(msg, n, HB_EINVAL, "%s:%d: [%s] %s: unknown key; known keys: %s",
 		    file, e->line, e->section, e->name, list);
 	}
-	snprintf(key, sizeof key, "%s.%s", e->section, e->name);
+	entry_key(e, key);
 	if (scene_set_text(sc, key, e->value, &err) == HB_OK)
 		return HB_OK;
 	return entry_error(e, file, &err, msg, n);
@@ -234,7 +245,7 @@ is_string_key(const struct entry *e)
 	char key[128];
 	const struct scene_keydef *kd;
 
-	snprintf(key, sizeof key, "%s.%s", e->section, e->name);
+	entry_key(e, key);
 	kd = scene_keydef_find(key);
 	return kd != NULL && kd->store == ST_STRING;
 }

@@ -127,8 +127,8 @@ const int scene_nkeydefs = (int)(sizeof scene_keydefs / sizeof scene_keydefs[0])
 const struct scene_keydef *
 scene_keydef_find(const char *key)
 {
-	for (int i = 0; i < scene_nkeydefs; i++)
-		if (strcmp(scene_keydefs[i].key, key) == 0)
+	for (int i = 0; i < scene_nkeydefs; i++) /* the first letter before the whole key */
+		if (scene_keydefs[i].key[0] == key[0] && strcmp(scene_keydefs[i].key, key) == 0)
 			return &scene_keydefs[i];
 	return NULL;
 }
