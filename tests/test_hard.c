@@ -336,7 +336,7 @@ Test(hard, long_run_memory_bounded)
  * (h max(-Re lambda) beyond 1 at almost every check) and the engine says
  * so; run.stepper = auto goes over to bsimp, keeps the error within the
  * tolerance and takes far fewer steps.  On the paper's studies nothing is
- * stiff: auto is dop853, bit for bit.
+ * stiff: auto is rk8pd, bit for bit.
  */
 Test(hard, stiff_contacts_go_implicit)
 {
@@ -361,7 +361,7 @@ Test(hard, stiff_contacts_go_implicit)
 	}
 	assert_within_tolerance_with("hard-stiff-maxwell", STEPPER_AUTO);
 	for (i = 0; i < sizeof calm / sizeof calm[0]; i++) {
-		struct sim *e = run_at(calm[i], STEPPER_DOP853, 1e-12, 1e-14);
+		struct sim *e = run_at(calm[i], STEPPER_RK8PD, 1e-12, 1e-14);
 		struct sim *a = run_at(calm[i], STEPPER_AUTO, 1e-12, 1e-14);
 		const struct arc_sample *le = arc_last(sim_arc(e)), *la = arc_last(sim_arc(a));
 
@@ -369,7 +369,7 @@ Test(hard, stiff_contacts_go_implicit)
 		             sim_stats(e)->stiff_hrho);
 		cr_expect_eq(sim_stats(a)->switched, 0, "%s: auto switched", calm[i]);
 		cr_expect(le->x == la->x && le->v == la->v && sim_ncollisions(e) == sim_ncollisions(a),
-		          "%s: auto differs from dop853", calm[i]);
+		          "%s: auto differs from rk8pd", calm[i]);
 		sim_free(e);
 		sim_free(a);
 	}

@@ -110,7 +110,7 @@ Test(scene, defaults_are_valid)
 	cr_assert_eq(sc.init.x0, 0.010);
 	cr_assert_eq(sc.run.T, 0.2);
 	cr_assert_eq(sc.run.J, 100000);
-	cr_assert_eq(sc.run.stepper, STEPPER_DOP853);
+	cr_assert_eq(sc.run.stepper, STEPPER_RK8PD);
 	cr_assert_eq(sc.run.rtol, 1e-10);
 	cr_assert_eq(sc.run.atol, 1e-10);
 	cr_assert_eq(sc.run.max_samples, 262144);
@@ -662,7 +662,7 @@ Test(scene, get_is_typed)
 	cr_assert_eq(scene_get(&sc, "run.stepper", &ki, &err), HB_OK);
 	cr_assert_eq(ki.kind, SCENE_KEY_CHOICE);
 	cr_assert_eq(ki.nchoices, STEPPER_COUNT);
-	cr_assert_str_eq(ki.choices[ki.choice], "dop853");
+	cr_assert_str_eq(ki.choices[ki.choice], "rk8pd");
 	cr_assert_str_eq(ki.choices[STEPPER_AUTO], "auto");
 
 	cr_assert_eq(scene_get(&sc, "scene.law", &ki, &err), HB_OK);
@@ -770,7 +770,7 @@ Test(scene, table_defaults_are_the_default_scene)
 	cr_assert_eq(sc.run.reduce, REDUCE_ALL);
 	cr_assert_eq(sc.run.kinks, 1);
 	cr_assert_eq(sc.ext, 1);
-	cr_assert_eq(sc.run.stepper, STEPPER_DOP853);
+	cr_assert_eq(sc.run.stepper, STEPPER_RK8PD);
 }
 
 /*

@@ -104,9 +104,9 @@ const struct scene_keydef scene_keydefs[] = {
 	NUM("run.T", "run", "T", UNIT_TIME, R_POS, 0.2, run.T, SP_NONE, "end of ordinary time"),
 	{ "run.J", "run", "J", ST_LONG, NULL, { 1, 1e18, 0, 0, 1 }, 100000, NULL, OFF(run.J), 0,
 	  SP_NONE, "jump cap" },
-	TXT("run.stepper", "run", "stepper", ST_STEPPER, "dop853", run.stepper, 0,
-	    "stepper: dop853 (with dense output), rk8pd, rkf45, rkck, msbdf, rk4imp, bsimp, "
-	    "or auto (dop853, then bsimp for the contacts once one is found stiff)"),
+	TXT("run.stepper", "run", "stepper", ST_STEPPER, "rk8pd", run.stepper, 0,
+	    "stepper: rk8pd, dop853 (with dense output), rkf45, rkck, msbdf, rk4imp, bsimp, "
+	    "or auto (rk8pd, then bsimp for the contacts once one is found stiff)"),
 	NUM("run.rtol", "run", "rtol", UNIT_NONE, R_TOL, 1e-10,
 	    run.rtol, SP_NONE, "relative tolerance of the integrator"),
 	NUM("run.atol", "run", "atol", UNIT_NONE, R_TOL, 1e-10,

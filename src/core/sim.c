@@ -288,7 +288,7 @@ reset_state(struct sim *s)
 	s->h1[0] = s->h1[1] = 0.0;
 	s->ncol = 0;
 	s->ncol_total = 0;
-	s->stepper[1] = sc->run.stepper == STEPPER_AUTO ? STEPPER_DOP853 : sc->run.stepper;
+	s->stepper[1] = sc->run.stepper == STEPPER_AUTO ? STEPPER_RK8PD : sc->run.stepper;
 	arc_truncate(s->arc, 0);
 	{
 		struct sim_stats keep = s->st;
@@ -306,7 +306,7 @@ build(struct sim *s, char *msg, size_t n)
 	int q;
 
 	for (q = 0; q < 2; q++)
-		s->stepper[q] = s->sc.run.stepper == STEPPER_AUTO ? STEPPER_DOP853 : s->sc.run.stepper;
+		s->stepper[q] = s->sc.run.stepper == STEPPER_AUTO ? STEPPER_RK8PD : s->sc.run.stepper;
 	for (q = 0; q < 2; q++)
 		if (hbs_phase_alloc(s, &s->ph[q], q))
 			return status_set(msg, n, HB_ENOMEM, "out of memory for the integrator");
