@@ -255,6 +255,8 @@ bench: deps
 	@$(MAKE) --no-print-directory $(BENCHBIN)
 	@mkdir -p $(BUILD)/bench
 	./$(BENCHBIN) --out $(BUILD)/bench
+	@sh tests/bench/study-table.sh $(BUILD)/bench/work-precision.csv >$(BUILD)/bench/study-table.md
+	@echo "per-study table (README Speed and accuracy): $(BUILD)/bench/study-table.md"
 
 # Rewrites the golden collision tables (tests/golden/*.csv) from this engine:
 # only after a change meant to move the numbers; review the diff (tests/test_golden.c).
