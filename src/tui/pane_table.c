@@ -169,9 +169,12 @@ pane_table_draw(const struct app *a)
 			else if (!isfinite(v))
 				snprintf(cell, sizeof cell, "-");
 			else {
+				/* a cell leaves a space before it: fewer digits where they would fill it */
 				snprintf(cell, sizeof cell, "%.4g", v / scale[k]);
 				if ((int)strlen(cell) >= width[k])
 					snprintf(cell, sizeof cell, "%.1e", v / scale[k]);
+				if ((int)strlen(cell) >= width[k])
+					snprintf(cell, sizeof cell, "%.0e", v / scale[k]);
 			}
 			char w[64];
 			snprintf(w, sizeof w, "%*s", width[k], cell);

@@ -42,6 +42,25 @@ if wait_for a 'differences of each collision against pinned run 1' 30 \
 else
 	notok "c: the table shows the differences against pinned run 1" a
 fi
+# alpha moves e by a few per cent: de fills its column, and must not run into e
+keys a P
+wait_for a 'pinned runs cleared' 30
+keys a p
+wait_for a 'pinned run 1' 30
+edit a law.alpha 0.5
+wait_for a ' finished$' 100
+for i in 1 2 3 4; do
+	screen a | grep -q ' dt_e\[.*vs 1$' && break
+	keys a c
+	wait_for a 'table: ' 30
+done
+hdr=$(screen a | grep ' dt_e\[.*vs 1$' | awk '{print NF}')
+bad=$(screen a | grep -E '^ +>?[0-9]+ +[0-9]' | awk -v h="$hdr" 'NF != h - 2 {print}')
+if [ -n "$hdr" ] && [ -z "$bad" ]; then
+	ok "c: every row of the differences has its $((hdr - 2)) cells apart (de filling its column)"
+else
+	notok "c: a row's cells run together ($bad)" a
+fi
 keys a c c c
 if wait_for a 'table: the current run only' 30 && wait_for a 'Lambda' 10; then
 	ok "c cycles through the pinned runs and back to the plain table"
