@@ -395,20 +395,28 @@ locate_on_steps(struct sim *s, int k, int sign0, double hi, double htol, double 
 	return GSL_FAILURE;
 }
 
-/* Has any function but k crossed at a (on the method's steps)? */
+/*
+ * Which functions but k have crossed at a?  Any of them, not only the
+ * candidates: one that crossed and came back within the step (the
+ * indicator, most of all) is found here.  Their indices into cand (if not
+ * NULL); returns how many, or -1 if the state at a cannot be computed.
+ */
 static int
-crossed_before(struct sim *s, int k, const double *f0, int n, const int *kind, double a)
+crossed_at(struct sim *s, int k, const double *f0, int n, const int *kind, double a, int *cand)
 {
 	double ua[MAXDIM], fa[MAXFUN];
-	int kk[MAXFUN], i;
+	int kk[MAXFUN], i, nb = 0;
 
 	if (restep(s, a, ua))
-		return 1;
+		return -1;
 	hbs_watch(s, s->cur, s->t0 + a, ua, fa, kk);
 	for (i = 0; i < n; i++)
-		if (i != k && hbs_candidate(s, kind[i], i, f0[i], fa[i]))
-			return 1;
-	return 0;
+		if (i != k && hbs_candidate(s, kind[i], i, f0[i], fa[i])) {
+			if (cand != NULL)
+				cand[nb] = i;
+			nb++;
+		}
+	return nb;
 }
 
 /*
@@ -501,10 +509,7 @@ again:
 	hi = hi0;
 	first = -1;
 	while (ncand > 0) {
-		int k = cand[0], nb = 0;
-		double fa[MAXFUN];
-		int kk[MAXFUN], sign0 = f0[k] > 0 ? 1 : -1;
-		double ua[MAXDIM];
+		int k = cand[0], nb, sign0 = f0[k] > 0 ? 1 : -1;
 
 		if ((rc = bracket(s, k, sign0, lo, hi, htol_of(s, kind[k], tight), &a, &b)) != 0) {
 			if (rc == GSL_FAILURE && first >= 0)
@@ -518,17 +523,7 @@ again:
 		first = k;
 		first_sign = sign0;
 		hi = b;
-		/*
-		 * Which functions have already crossed at a?  Any of them, not only
-		 * the candidates: one that crossed and came back within the step
-		 * (the indicator, most of all) is found here.
-		 */
-		restep(s, a, ua);
-		hbs_watch(s, p, s->t0 + a, ua, fa, kk);
-		for (i = 0; i < n; i++)
-			if (i != k && hbs_candidate(s, kind[i], i, f0[i], fa[i]))
-				cand[nb++] = i;
-		if (nb == 0)
+		if ((nb = crossed_at(s, k, f0, n, kind, a, cand)) <= 0)
 			break;
 		ncand = nb;
 		hi = a;
@@ -536,7 +531,7 @@ again:
 	if (herm) {
 		s->use_herm = 0;
 		if (locate_on_steps(s, first, first_sign, hi0, htol_of(s, kind[first], tight), &a, &b) != 0
-		    || crossed_before(s, first, f0, n, kind, a)) {
+		    || crossed_at(s, first, f0, n, kind, a, NULL) != 0) {
 			herm = 0;
 			goto again;
 		}
