@@ -329,19 +329,23 @@ keep:
 
 /*
  * How closely a crossing of a function of this kind is bracketed (see
- * bracket): events and kinks to ulps of t; the extrema of x_c and F_c,
- * whose values do not change to first order with the point, to 1e-9 of
- * the step (their functions v and dPhi/dt only cross within a band of
- * rounding far wider than ulps when the motion is slow); on the Hermite
- * interpolant, to well within its own error, 1e-10 of the step.
+ * bracket): events to ulps of t, since the pre-jump state must be in D and
+ * the jump's time is an observable.  A kink or an extremum ends the step
+ * at the crossed end b of its bracket, and to 0.1 sqrt(rtol) of the step:
+ * the flow is continuous across a kink (law.h) and an extremum's value is
+ * stationary, so a point off by delta changes the state, or the extremum,
+ * by O(delta^2) only (about rtol (H/tau)^2 / 200 of its scale, tau the
+ * time scale of the motion, at least H).  Where something else crosses
+ * inside such a bracket, the location is done again to ulps (tight).  On
+ * the Hermite interpolant, to well within its own error, 1e-10 of the step.
  */
 static double
 htol_of(const struct sim *s, int kind, int tight)
 {
 	double h = 0.0;
 
-	if (!tight && (kind == FUN_XCMAX || kind == FUN_FCMAX))
-		h = 1e-9 * s->H;
+	if (!tight && kind != FUN_EVENT)
+		h = 0.1 * sqrt(s->sc.run.rtol) * s->H;
 	if (s->use_herm)
 		h = fmax(h, 1e-10 * s->H);
 	return h;
@@ -543,13 +547,27 @@ again:
 
 		restep(s, b, ub);
 		hbs_watch(s, p, s->t0 + b, ub, fb, kb);
-		if (!tight && (kind[first] == FUN_XCMAX || kind[first] == FUN_FCMAX))
+		if (!tight && kind[first] != FUN_EVENT) {
+			int ev = 0, kk = kind[first] == FUN_KINK, fc = kind[first] == FUN_FCMAX ? first : -1;
+
 			for (i = 0; i < n; i++)
-				if ((kind[i] == FUN_EVENT || kind[i] == FUN_KINK) && hbs_crossed(kind[i], f0[i], fb[i])) {
-					/* an event or a kink inside the extremum's bracket: to ulps again */
-					tight = 1;
-					goto again;
+				if (i != first && hbs_candidate(s, kind[i], i, f0[i], fb[i])) {
+					ev |= kind[i] == FUN_EVENT;
+					kk |= kind[i] == FUN_KINK;
+					if (kind[i] == FUN_FCMAX)
+						fc = i;
 				}
+			if (ev || (kk && fc >= 0 && fabs(fb[fc]) > sqrt(s->sc.run.rtol) * s->gmax[fc])) {
+				/*
+				 * an event inside the bracket of a kink or an extremum, or
+				 * the extremum of F_c at a kink where dF_c/dt jumps (it
+				 * has not come near zero at b), so that F_c at b is off
+				 * by O(delta): to ulps again
+				 */
+				tight = 1;
+				goto again;
+			}
+		}
 		for (i = 0; i < n; i++)
 			if (hbs_crossed(kind[i], f0[i], fb[i])) {
 				any = 1;
