@@ -190,7 +190,7 @@ numeric_step(struct sim *s)
 		double f[MAXFUN];
 		int kind[MAXFUN];
 
-		hbs_watch_at(s, p, s->t, s->u, f, kind);
+		hbs_watch_at(s, p, s->t, s->u, f, kind, NULL);
 		if (f[0] < 0.0)
 			return hbs_jump(s, LOCATE_START, 0, 0.0, f[0], f[0]);
 	}

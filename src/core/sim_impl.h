@@ -104,7 +104,7 @@ struct sim {
 	struct {            /* the watched values at the last state hbs_watch_at was asked */
 		int valid, n, kind[MAXFUN];
 		const struct phase *p;
-		double t, xe, u[MAXDIM], f[MAXFUN];
+		double t, xe, u[MAXDIM], f[MAXFUN], rate;
 	} w;
 	struct cached cache[CACHE];
 	int ncache, cache_next;
@@ -198,7 +198,7 @@ hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u,
  */
 int
 hbs_watch_at(struct sim *s, const struct phase *p, double t, const double *u, double *f,
-             int *kind);
+             int *kind, double *rate);
 
 /* sim_snap.c: a state on the boundary of C to the precision of the computation */
 int
@@ -214,11 +214,6 @@ hbs_crossed(int kind, double a, double b);
 /* ... and is it a candidate, with the noise filter of round-off-level crossings? */
 int
 hbs_candidate(const struct sim *s, int kind, int i, double f0, double fx);
-/* dI/dt of the indicator of C at a scaled state (f, n: its watched values) */
-double
-hbs_indicator_rate(const struct sim *s, const struct phase *p, double t, const double *u,
-                   const double *f, int n);
-
 /* sim_locate.c: acts on the accepted step (t0, u0) -> (t0 + H, u1) */
 int
 hbs_after_step(struct sim *s, int load_kink);

@@ -248,7 +248,7 @@ accept_at(struct sim *s, double h)
  * fx), or 0.
  */
 static double
-dip(struct sim *s, const double *f0, const double *f1, int n, double *fx)
+dip(struct sim *s, const double *f0, const double *f1, double r0, double r1, double *fx)
 {
 	struct phase *p = s->cur;
 	double H = s->H, d0, d1, c2, c3, th[2], u[MAXDIM];
@@ -256,8 +256,8 @@ dip(struct sim *s, const double *f0, const double *f1, int n, double *fx)
 
 	if (!(f0[0] >= 0.0 && f1[0] >= 0.0))
 		return 0.0;
-	d0 = H * hbs_indicator_rate(s, p, s->t0, s->u0, f0, n);
-	d1 = H * hbs_indicator_rate(s, p, s->t0 + H, s->u1, f1, n);
+	d0 = H * r0;
+	d1 = H * r1;
 	if (d0 >= 0.0 && d1 <= 0.0)
 		return 0.0; /* rising then falling: no interior minimum */
 	/* P(th) = f0 + d0 th + c2 th^2 + c3 th^3; its critical points solve P'(th) = 0 */
@@ -434,7 +434,7 @@ hbs_after_step(struct sim *s, int load_kink)
 	double f0[MAXFUN], f1[MAXFUN];
 	int kind[MAXFUN], n, i, rc, any = 0;
 	int cand[MAXFUN], ncand = 0, cand0[MAXFUN], ncand0;
-	double lo = 0.0, hi = s->H, a = 0, b = 0, hi0;
+	double lo = 0.0, hi = s->H, a = 0, b = 0, hi0, r0, r1;
 	int first = -1, first_sign = 1, herm, tight = 0;
 
 	s->ncache = 0;
@@ -444,8 +444,8 @@ hbs_after_step(struct sim *s, int load_kink)
 		hbs_snap_separation(s, s->u1);
 		s->vmax = fmax(s->vmax, fabs(s->u1[p->L.iv] * s->scale[p->L.iv]));
 	}
-	n = hbs_watch_at(s, p, s->t0, s->u0, f0, kind);
-	hbs_watch_at(s, p, s->t0 + s->H, s->u1, f1, kind);
+	n = hbs_watch_at(s, p, s->t0, s->u0, f0, kind, &r0);
+	hbs_watch_at(s, p, s->t0 + s->H, s->u1, f1, kind, &r1);
 	if (s->msign) {
 		/*
 		 * The mode's side is its frozen sign, even where the switching
@@ -463,7 +463,7 @@ hbs_after_step(struct sim *s, int load_kink)
 			cand[ncand++] = i;
 	if (ncand == 0 || cand[0] != 0) {
 		/* the event stepped over: locate everything that crossed before the dip */
-		double fx[MAXFUN], th = dip(s, f0, f1, n, fx);
+		double fx[MAXFUN], th = dip(s, f0, f1, r0, r1, fx);
 
 		if (th > 0.0) {
 			s->st.dips++;

@@ -1,48 +1,43 @@
 /*
  * sim_watch.c - the functions watched along a step: the indicator of the
  * flow set C, the law's switching functions, the extremum functions of x_c
- * and F_c; when one has crossed, and the rate of the indicator (see
+ * and F_c, and the rate of the indicator; when one has crossed (see
  * sim_locate.c for how crossings are located).
  */
 #include "sim_impl.h"
 
-/* The flow-set indicator of an unscaled state: >= 0 in C. */
-static double
-indicator(const struct sim *s, int q, double xc, const double *z, double v, double x)
-{
-	if (q)
-		return -fmin(phi_at(s, xc, z, v), v);
-	return fmax(x, v);
-}
-
 /*
- * Values of the watched functions at a scaled state: [0] the indicator,
- * then the law's switching functions, then v (x_c extremum) and dPhi/dt
- * (F_c extremum).  Returns their number; kinds in kind[].
+ * Values of the watched functions at a scaled state: [0] the indicator of
+ * the flow set C (>= 0 in C), then the law's switching functions, then v
+ * (x_c extremum) and dPhi/dt (F_c extremum).  Returns their number; kinds
+ * in kind[].  With rate not NULL, *rate = dI/dt, the rate of the indicator
+ * (one-sided where I has a corner).
  */
-int
-hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
-      int *kind)
+static int
+watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
+      int *kind, double *rate)
 {
 	const struct scene *sc = &s->sc;
 	const struct layout *L = &p->L;
-	double y[MAXDIM], v, x, xc = 0, z[LAW_MAX_Z] = { 0 };
+	double y[MAXDIM], v, xc, z[LAW_MAX_Z] = { 0 };
+	double dphi[LAW_MAX_Z + 2], dpsi[LAW_MAX_Z * (LAW_MAX_Z + 2)], dz[LAW_MAX_Z];
+	double phi, vdot, d;
 	int n = 0, i, nz = sc->law->n_z;
 
 	hbs_unscale(p, u, y);
 	v = y[L->iv];
-	if (p->q) {
-		xc = y[L->ixc];
-		for (i = 0; i < nz; i++)
-			z[i] = y[L->iz + i];
-		x = L->ix >= 0 ? y[L->ix] : s->xe + xc;
-	} else {
-		x = y[L->ix];
-	}
 	kind[n] = FUN_EVENT;
-	f[n++] = indicator(s, p->q, xc, z, v, x);
-	if (!p->q)
+	if (!p->q) {
+		f[n++] = fmax(y[L->ix], v);
+		if (rate != NULL)
+			*rate = y[L->ix] > v ? v : scene_Fer(sc, t) / sc->d.m;
 		return n;
+	}
+	xc = y[L->ixc];
+	for (i = 0; i < nz; i++)
+		z[i] = y[L->iz + i];
+	phi = phi_at(s, xc, z, v);
+	f[n++] = -fmin(phi, v);
 	if (sc->law->n_kinks && sc->run.kinks) {
 		sc->law->kinks(sc->par, sc->ext, xc, z, v, &f[n]);
 		for (i = 0; i < sc->law->n_kinks; i++)
@@ -50,32 +45,36 @@ hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u,
 	}
 	kind[n] = FUN_XCMAX;
 	f[n++] = v;
-	{
-		double dphi[LAW_MAX_Z + 2], dpsi[LAW_MAX_Z * (LAW_MAX_Z + 2)], dz[LAW_MAX_Z];
-		double phi = phi_at(s, xc, z, v), vdot, d;
-
-		sc->law->jac(sc->par, sc->ext, xc, z, v, dphi, nz ? dpsi : NULL);
-		if (nz)
-			sc->law->psi(sc->par, sc->ext, xc, z, v, dz);
-		vdot = (-phi + scene_Fer(sc, t)) / sc->d.m;
-		d = dphi[0] * v + dphi[nz + 1] * vdot;
-		for (i = 0; i < nz; i++)
-			d += dphi[1 + i] * dz[i];
-		kind[n] = FUN_FCMAX;
-		f[n++] = d;
-	}
+	sc->law->jac(sc->par, sc->ext, xc, z, v, dphi, nz ? dpsi : NULL);
+	if (nz)
+		sc->law->psi(sc->par, sc->ext, xc, z, v, dz);
+	vdot = (-phi + scene_Fer(sc, t)) / sc->d.m;
+	d = dphi[0] * v + dphi[nz + 1] * vdot;
+	for (i = 0; i < nz; i++)
+		d += dphi[1 + i] * dz[i];
+	kind[n] = FUN_FCMAX;
+	f[n++] = d;
+	if (rate != NULL)
+		*rate = phi < v ? -d : -vdot;
 	return n;
 }
 
 int
+hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
+          int *kind)
+{
+	return watch(s, p, t, u, f, kind, NULL);
+}
+
+int
 hbs_watch_at(struct sim *s, const struct phase *p, double t, const double *u, double *f,
-             int *kind)
+             int *kind, double *rate)
 {
 	size_t nu = (size_t)p->L.dim * sizeof *u;
 
 	if (!(s->w.valid && s->w.p == p && s->w.t == t && s->w.xe == s->xe
 	      && memcmp(s->w.u, u, nu) == 0)) {
-		s->w.n = hbs_watch(s, p, t, u, s->w.f, s->w.kind);
+		s->w.n = watch(s, p, t, u, s->w.f, s->w.kind, &s->w.rate);
 		s->w.p = p;
 		s->w.t = t;
 		s->w.xe = s->xe;
@@ -84,6 +83,8 @@ hbs_watch_at(struct sim *s, const struct phase *p, double t, const double *u, do
 	}
 	memcpy(f, s->w.f, (size_t)s->w.n * sizeof *f);
 	memcpy(kind, s->w.kind, (size_t)s->w.n * sizeof *kind);
+	if (rate != NULL)
+		*rate = s->w.rate;
 	return s->w.n;
 }
 
@@ -110,28 +111,4 @@ hbs_candidate(const struct sim *s, int kind, int i, double f0, double fx)
 	if (kind != FUN_EVENT && fmax(fabs(f0), fabs(fx)) <= s->sc.run.rtol * s->gmax[i])
 		return 0;
 	return hbs_crossed(kind, f0, fx);
-}
-
-/* dI/dt of the indicator of C at a scaled state (one-sided where I has a corner). */
-double
-hbs_indicator_rate(const struct sim *s, const struct phase *p, double t, const double *u,
-               const double *f, int n)
-{
-	const struct layout *L = &p->L;
-	double y[MAXDIM], v, vdot;
-
-	hbs_unscale(p, u, y);
-	v = y[L->iv];
-	if (p->q) {
-		double z[LAW_MAX_Z] = { 0 }, phi;
-		int i;
-
-		for (i = 0; i < s->sc.law->n_z; i++)
-			z[i] = y[L->iz + i];
-		phi = phi_at(s, y[L->ixc], z, v);
-		vdot = (-phi + scene_Fer(&s->sc, t)) / s->sc.d.m;
-		return phi < v ? -f[n - 1] : -vdot; /* f[n - 1] = dPhi/dt */
-	}
-	vdot = scene_Fer(&s->sc, t) / s->sc.d.m;
-	return y[L->ix] > v ? v : vdot;
 }
