@@ -55,7 +55,8 @@ rhs(double t, const double u[], double du[], void *params)
 	int i;
 
 	s->st.rhs++;
-	hbs_unscale(p, u, y);
+	for (i = 0; i < L->nread; i++) /* the components f depends on; the rest are integrals */
+		y[i] = u[i] * s->scale[i];
 	v = y[L->iv];
 	if (p->q) {
 		const double *z = sc->law->n_z ? &y[L->iz] : NULL;
@@ -78,7 +79,7 @@ rhs(double t, const double u[], double du[], void *params)
 		double F1, F2;
 
 		scene_loads_at(sc, t, &F1, &F2);
-		dy[L->ixm] = y[L->ivm];
+		dy[L->ixm] = u[L->ivm] * s->scale[L->ivm];
 		dy[L->ivm] = sc->d.system == SCENE_FULL ? (F1 + F2) / (sc->d.m1 + sc->d.m2) : 0.0;
 	}
 	{
@@ -163,7 +164,7 @@ make_layout(const struct scene *sc, int q, struct layout *L)
 	int com = sc->d.system == SCENE_FULL ? !(sc->run.reduce & REDUCE_COM)
 	                                     : !(sc->run.reduce & REDUCE_COM);
 
-	*L = (struct layout){ 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
+	*L = (struct layout){ 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0 };
 	if (q) {
 		if (!(sc->run.reduce & REDUCE_CONTACT))
 			L->ix = n++;
@@ -173,12 +174,14 @@ make_layout(const struct scene *sc, int q, struct layout *L)
 			L->iz = n;
 			n += sc->law->n_z;
 		}
+		L->nread = n;
 		L->iW = n++;
 		L->iJc = n++;
 		L->iJe = n++;
 	} else {
 		L->ix = n++;
 		L->iv = n++;
+		L->nread = n;
 	}
 	L->iEe = n++;
 	if (com) {

@@ -42,6 +42,7 @@ enum {
 struct layout {
 	int dim;
 	int ix, iv, ixc, iz, iW, iJc, iJe, ixm, ivm, iEe;
+	int nread;              /* f reads components [0, nread) (and v_m): x, x_c, v, z */
 };
 
 struct phase {
@@ -208,12 +209,32 @@ hbs_snap_stick(struct sim *s, double *u);
 int
 hbs_snap_separation(struct sim *s, double *u);
 
-/* sim_watch.c: did function i (of this kind) cross between values a and b? */
-int
-hbs_crossed(int kind, double a, double b);
-/* ... and is it a candidate, with the noise filter of round-off-level crossings? */
-int
-hbs_candidate(const struct sim *s, int kind, int i, double f0, double fx);
+/* sim_watch.c: did function i (of this kind) cross between values a (step start) and b? */
+static inline int
+hbs_crossed(int kind, double a, double b)
+{
+	switch (kind) {
+	case FUN_EVENT: return a >= 0.0 && b < 0.0;
+	case FUN_KINK: return (a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0);
+	default: return a < 0.0 && b > 0.0; /* minima of x_c and of Phi */
+	}
+}
+
+/*
+ * ... and is it a candidate?  A switching or extremum function that only
+ * wanders about zero at the level of the tolerance (|Psi_2| while a
+ * Maxwell element creeps, dPhi/dt at rest) marks no real kink or extremum.
+ * (Called for every function at every step: inline, and without fmax.)
+ */
+static inline int
+hbs_candidate(const struct sim *s, int kind, int i, double f0, double fx)
+{
+	double a0 = fabs(f0), ax = fabs(fx);
+
+	if (kind != FUN_EVENT && (a0 > ax ? a0 : ax) <= s->sc.run.rtol * s->gmax[i])
+		return 0;
+	return hbs_crossed(kind, f0, fx);
+}
 /* sim_locate.c: acts on the accepted step (t0, u0) -> (t0 + H, u1) */
 int
 hbs_after_step(struct sim *s, int load_kink);

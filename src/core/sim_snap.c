@@ -26,12 +26,14 @@ hbs_snap_stick(struct sim *s, double *u)
 	double z[LAW_MAX_Z] = { 0 };
 	int i;
 
+	v = u[L->iv] * s->scale[L->iv];
+	if (!(v > 0 && v <= eta * s->vmax))
+		return;
 	hbs_unscale(p, u, y);
-	v = y[L->iv];
 	for (i = 0; i < s->sc.law->n_z; i++)
 		z[i] = y[L->iz + i];
 	phi = phi_at(s, y[L->ixc], z, v);
-	if (v > 0 && phi > 0 && v <= eta * s->vmax && phi <= eta * s->Fcmax)
+	if (phi > 0 && phi <= eta * s->Fcmax)
 		u[L->iv] = 0.0;
 }
 

@@ -87,28 +87,3 @@ hbs_watch_at(struct sim *s, const struct phase *p, double t, const double *u, do
 		*rate = s->w.rate;
 	return s->w.n;
 }
-
-/* Did function i cross between values a (step start) and b? */
-int
-hbs_crossed(int kind, double a, double b)
-{
-	switch (kind) {
-	case FUN_EVENT: return a >= 0.0 && b < 0.0;
-	case FUN_KINK: return (a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0);
-	default: return a < 0.0 && b > 0.0; /* minima of x_c and of Phi */
-	}
-}
-
-/* Is function i a candidate crossing from f0 to fx (with the noise filter of after_step)? */
-int
-hbs_candidate(const struct sim *s, int kind, int i, double f0, double fx)
-{
-	/*
-	 * A switching or extremum function that only wanders about zero at the
-	 * level of the tolerance (|Psi_2| while a Maxwell element creeps,
-	 * dPhi/dt at rest) marks no real kink or extremum.
-	 */
-	if (kind != FUN_EVENT && fmax(fabs(f0), fabs(fx)) <= s->sc.run.rtol * s->gmax[i])
-		return 0;
-	return hbs_crossed(kind, f0, fx);
-}
