@@ -380,6 +380,30 @@ locate_on_steps(struct sim *s, int k, int sign0, double hi, double htol, double 
 	slope = xu > xl ? (gu - gl) / (xu - xl) : NAN;
 	x1 = isfinite(slope) && slope < 0 ? x0 - g0 / slope : x0;
 	w = fmax(0.05 * fabs(x1 - x0), 16.0 * DBL_EPSILON * fmax(fabs(s->t0 + x0), 1e-300));
+	if (htol > 0.0 && x1 != x0 && fabs(x1 - x0) + 0.5 * htol <= 10.0 * htol) {
+		/*
+		 * A kink or an extremum: the Newton estimate from a real value
+		 * is far closer to the root than htol (its error is the
+		 * Hermite's times the slope's), so one more step, htol/2 beyond
+		 * it, closes a bracket of at most 10 htol whose crossed end is
+		 * about htol/2 past the root.
+		 */
+		double xe = g0 > 0 ? fmin(hi, x1 + 0.5 * htol) : fmax(0.0, x1 - 0.5 * htol), ge;
+
+		if (g0 > 0 ? xe > x0 : xe < x0) {
+			ge = oriented(xe, s);
+			if (g0 > 0 && ge < 0) {
+				*a = x0;
+				*b = xe;
+				return 0;
+			}
+			if (g0 < 0 && ge > 0) {
+				*a = xe;
+				*b = x0;
+				return 0;
+			}
+		}
+	}
 	for (tries = 0; tries < 6; tries++, w *= 16.0) {
 		double lo_, up;
 
