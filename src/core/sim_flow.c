@@ -50,48 +50,48 @@ rhs(double t, const double u[], double du[], void *params)
 	struct sim *s = p->s;
 	const struct layout *L = &p->L;
 	const struct scene *sc = &s->sc;
-	double y[MAXDIM], dy[MAXDIM];
-	double Fer = scene_Fer(sc, t), phi = 0.0, v;
+	const double *is = s->iscale;
+	double y[MAXDIM];
+	double Fer = scene_Fer(sc, t), phi = 0.0, v, bad = 0.0;
 	int i;
 
 	s->st.rhs++;
 	for (i = 0; i < L->nread; i++) /* the components f depends on; the rest are integrals */
 		y[i] = u[i] * s->scale[i];
 	v = y[L->iv];
+	/* each du is scaled as it is written; bad turns NaN as soon as one du is NaN or infinite */
+#define PUT(k, val) (du[k] = (val) * is[k], bad += 0.0 * du[k])
 	if (p->q) {
-		const double *z = sc->law->n_z ? &y[L->iz] : NULL;
+		const int nz = sc->law->n_z;
+		const double *z = nz ? &y[L->iz] : NULL;
+		double dz[LAW_MAX_Z];
 
 		phi = sc->law->phi(sc->par, sc->ext, y[L->ixc], z, v);
-		dy[L->ixc] = v;
 		if (s->msign)
-			sc->law->psi_mode(sc->par, sc->ext, y[L->ixc], z, v, s->msign, &dy[L->iz]);
-		else if (sc->law->n_z)
-			sc->law->psi(sc->par, sc->ext, y[L->ixc], z, v, &dy[L->iz]);
-		dy[L->iW] = phi * v;
-		dy[L->iJc] = -phi;
-		dy[L->iJe] = Fer;
+			sc->law->psi_mode(sc->par, sc->ext, y[L->ixc], z, v, s->msign, dz);
+		else if (nz)
+			sc->law->psi(sc->par, sc->ext, y[L->ixc], z, v, dz);
+		PUT(L->ixc, v);
+		for (i = 0; i < nz; i++)
+			PUT(L->iz + i, dz[i]);
+		PUT(L->iW, phi * v);
+		PUT(L->iJc, -phi);
+		PUT(L->iJe, Fer);
 	}
 	if (L->ix >= 0)
-		dy[L->ix] = v;
-	dy[L->iv] = (-phi + Fer) / sc->d.m;
-	dy[L->iEe] = Fer * v;
+		PUT(L->ix, v);
+	PUT(L->iv, (-phi + Fer) / sc->d.m);
+	PUT(L->iEe, Fer * v);
 	if (L->ixm >= 0) {
 		double F1, F2;
 
 		scene_loads_at(sc, t, &F1, &F2);
-		dy[L->ixm] = u[L->ivm] * s->scale[L->ivm];
-		dy[L->ivm] = sc->d.system == SCENE_FULL ? (F1 + F2) / (sc->d.m1 + sc->d.m2) : 0.0;
+		PUT(L->ixm, u[L->ivm] * s->scale[L->ivm]);
+		PUT(L->ivm, sc->d.system == SCENE_FULL ? (F1 + F2) / (sc->d.m1 + sc->d.m2) : 0.0);
 	}
-	{
-		double nan_if_bad = 0.0;
-
-		for (i = 0; i < L->dim; i++) {
-			du[i] = dy[i] * s->iscale[i];
-			nan_if_bad += 0.0 * du[i]; /* NaN as soon as one du is NaN or infinite */
-		}
-		if (nan_if_bad != 0.0 || isnan(nan_if_bad))
-			return GSL_FAILURE;
-	}
+#undef PUT
+	if (bad != 0.0 || isnan(bad))
+		return GSL_FAILURE;
 	return GSL_SUCCESS;
 }
 
