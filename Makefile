@@ -45,6 +45,8 @@ endif
 
 CURSES_PC := $(shell $(PKG_CONFIG) --exists ncursesw 2>/dev/null && echo ncursesw || echo ncurses)
 CORE_CFLAGS := $(shell $(PKG_CONFIG) --cflags gsl inih 2>/dev/null)
+# the engine never reads errno after a math function: sqrt and the like inline
+CORE_CFLAGS += -fno-math-errno
 CORE_LIBS   := $(shell $(PKG_CONFIG) --libs gsl inih 2>/dev/null) -lm
 CORE_LIBS   += -pthread
 # ncursesw's pkg-config adds -D_XOPEN_SOURCE=600, which would redefine ours (700).
