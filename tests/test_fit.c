@@ -21,6 +21,7 @@
 #include <gsl/gsl_rng.h>
 
 #include "hybounce/fit.h"
+#include "fit_impl.h"
 #include "hybounce/onset.h"
 #include "hybounce/status.h"
 #include "testutil.h"
@@ -626,4 +627,34 @@ Test(fit, in_steps_as_fit_run)
 	fit_result_free(&r);
 	fit_result_free(&whole);
 	fit_data_free(&d);
+}
+
+/*
+ * The decrease a Gauss-Newton step would make, which tells a fit stopped at
+ * its minimum (to the noise of the runs) from a stuck one: for f = J a + w
+ * with w orthogonal to J's columns, the step removes exactly |J a|^2.
+ */
+Test(fit, gauss_newton_decrease_is_the_projection_of_the_residual)
+{
+	gsl_matrix *J = gsl_matrix_alloc(4, 2);
+	gsl_vector *f = gsl_vector_alloc(4);
+	static const double Jv[8] = { 1, 0, 1, 1, 0, 1, 0, 0 };
+	/* columns (1,1,0,0) and (0,1,1,0); w = (1,-1,1,3) is orthogonal to both */
+	double a[2] = { 0.5, -2 }, w[4] = { 1, -1, 1, 3 }, ja2 = 0;
+
+	for (int i = 0; i < 8; i++)
+		gsl_matrix_set(J, (size_t)i / 2, (size_t)i % 2, Jv[i]);
+	for (size_t i = 0; i < 4; i++) {
+		double ja = gsl_matrix_get(J, i, 0) * a[0] + gsl_matrix_get(J, i, 1) * a[1];
+
+		gsl_vector_set(f, i, ja + w[i]);
+		ja2 += ja * ja;
+	}
+	assert_rel(fit_gn_decrease(J, f), ja2, 1e-14);
+	/* at a minimum (f = w) nothing is left */
+	for (size_t i = 0; i < 4; i++)
+		gsl_vector_set(f, i, w[i]);
+	cr_assert_lt(fabs(fit_gn_decrease(J, f)), 1e-28);
+	gsl_matrix_free(J);
+	gsl_vector_free(f);
 }

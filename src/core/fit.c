@@ -7,10 +7,8 @@
  * y_k the simulated observables (fit_eval.c) and theta(u) the transform
  * that keeps each free parameter in its range (fit_param.c).  The Jacobian
  * is taken by forward differences in u, all P perturbed runs at once on
- * the worker threads.  Identifiability is read from the singular values of
- * the column-scaled Jacobian: a direction whose singular value is below
- * FIT_SINGULAR_RATIO of the largest cannot be told apart by the data within
- * the accuracy of the differences, and its parameters are named.
+ * the worker threads.  Identifiability and the decrease left are read from
+ * the Jacobian at the estimates (fit_lin.c).
  *
  * Errors: the covariance of u is (J^T J)^-1 (times cost / (N - P) when the
  * data carry no standard deviations), that of theta is T C T^T with
@@ -30,7 +28,6 @@
 #include "hybounce/status.h"
 #include "fit_impl.h"
 
-#define FIT_SINGULAR_RATIO 1e-4 /* s_min / s_max below this: not identifiable */
 #define FIT_FAIL_RESID 1e6      /* residual of a point whose run failed */
 
 struct ctx {
@@ -206,66 +203,6 @@ df_cb(const gsl_vector *x, void *params, gsl_matrix *J)
 	}
 	free(r0);
 	return GSL_SUCCESS;
-}
-
-/*
- * Singular values of J with its columns scaled to unit norm: the condition
- * number, and the parameters of the weakest direction when it is below
- * FIT_SINGULAR_RATIO (or a column is zero: a parameter with no effect).
- * Returns 1 when not identifiable.
- */
-static int
-identifiability(const gsl_matrix *J, const struct fit_param *fp, int np, double *cond,
-                char *names, size_t nn)
-{
-	size_t n = J->size1, p = J->size2;
-	gsl_matrix *A, *V;
-	gsl_vector *S, *work;
-	int bad = 0;
-
-	names[0] = '\0';
-	*cond = NAN;
-	for (size_t j = 0; j < p; j++) {
-		gsl_vector_const_view col = gsl_matrix_const_column(J, j);
-
-		if (!(gsl_blas_dnrm2(&col.vector) > 0)) {
-			snprintf(names, nn, "%s (no effect on these data)", fp[j].key);
-			*cond = INFINITY;
-			return 1;
-		}
-	}
-	if (n < p)
-		return 0;
-	A = gsl_matrix_alloc(n, p);
-	V = gsl_matrix_alloc(p, p);
-	S = gsl_vector_alloc(p);
-	work = gsl_vector_alloc(p);
-	if (A == NULL || V == NULL || S == NULL || work == NULL)
-		goto out;
-	gsl_matrix_memcpy(A, J);
-	for (size_t j = 0; j < p; j++) {
-		gsl_vector_view col = gsl_matrix_column(A, j);
-
-		gsl_vector_scale(&col.vector, 1 / gsl_blas_dnrm2(&col.vector));
-	}
-	if (gsl_linalg_SV_decomp(A, V, S, work) != GSL_SUCCESS)
-		goto out;
-	*cond = gsl_vector_get(S, 0) / gsl_vector_get(S, p - 1);
-	if (gsl_vector_get(S, p - 1) < FIT_SINGULAR_RATIO * gsl_vector_get(S, 0)) {
-		bad = 1;
-		for (size_t j = 0; j < (size_t)np; j++) {
-			size_t len = strlen(names);
-
-			if (fabs(gsl_matrix_get(V, j, p - 1)) > 0.1)
-				snprintf(names + len, nn - len, "%s%s", len ? ", " : "", fp[j].key);
-		}
-	}
-out:
-	gsl_matrix_free(A);
-	gsl_matrix_free(V);
-	gsl_vector_free(S);
-	gsl_vector_free(work);
-	return bad;
 }
 
 /* Standard errors and correlations of theta at u from J (see the top). */
@@ -472,7 +409,7 @@ fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_optio
 	xv = gsl_vector_view_array(u, (size_t)np);
 	gsl_multifit_nlinear_init(&xv.vector, &f->fdf, f->w);
 	/* A Jacobian singular at the start: no iteration can tell the keys apart. */
-	if (identifiability(gsl_multifit_nlinear_jac(f->w), f->fp, np, &r->cond, r->unident,
+	if (fit_identifiability(gsl_multifit_nlinear_jac(f->w), f->fp, np, &r->cond, r->unident,
 	                    sizeof r->unident)) {
 		r->reason = FIT_SINGULAR;
 		f->done = 1;
@@ -502,7 +439,16 @@ fit_iterate(struct fit *f)
 	if (f->progress != NULL)
 		f->progress(f->pctx, r->iter, cost, f->c.runs);
 	if (s == GSL_ENOPROG) {
-		r->reason = FIT_NOPROGRESS;
+		/*
+		 * No trial step lowered the cost.  Where the Gauss-Newton step
+		 * would lower it by less than ftol of itself, this is the
+		 * minimum to the noise of the runs (a simulated value moves by
+		 * the integrator's error as the step sequence changes): the cost
+		 * stopped decreasing.  Otherwise the solver is stuck.
+		 */
+		double left = fit_gn_decrease(gsl_multifit_nlinear_jac(f->w), fv);
+
+		r->reason = left <= f->ftol * cost ? FIT_CONVERGED_COST : FIT_NOPROGRESS;
 		f->done = 1;
 	} else if (s != GSL_SUCCESS) {
 		r->reason = FIT_FAILED;
@@ -518,7 +464,7 @@ fit_iterate(struct fit *f)
 		f->done = 1;
 	}
 	if (f->done && r->reason != FIT_FAILED
-	    && identifiability(gsl_multifit_nlinear_jac(f->w), f->fp, f->c.np, &r->cond,
+	    && fit_identifiability(gsl_multifit_nlinear_jac(f->w), f->fp, f->c.np, &r->cond,
 	                       r->unident, sizeof r->unident))
 		r->reason = FIT_SINGULAR;
 	return f->done;

@@ -1,11 +1,15 @@
 /*
- * fit_impl.h - declarations shared by fit.c, fit_eval.c and fit_param.c
+ * fit_impl.h - declarations shared by fit.c, fit_eval.c, fit_lin.c and fit_param.c
  * (not part of the API).
  */
 #ifndef HYBOUNCE_FIT_IMPL_H
 #define HYBOUNCE_FIT_IMPL_H
 
 #include <stddef.h>
+
+#include <gsl/gsl_matrix.h>
+#include <gsl/gsl_vector.h>
+
 #include "hybounce/fit.h"
 
 /* A free parameter: the key, its range and its transform theta(u). */
@@ -36,5 +40,20 @@ fit_param_apply(struct scene *sc, const struct fit_param *fp, int np, const doub
 int
 fit_eval(const struct scene *sc, int nsc, const struct fit_data *d, int jobs,
          double penalty, double *out, int *fail, long *runs, char *msg, size_t n);
+
+/*
+ * fit_lin.c: from the Jacobian J (n residuals x P free parameters) at the
+ * estimates.  fit_identifiability: the condition number of J with unit
+ * columns into *cond, and the parameters of its weakest direction into
+ * names when that is below 1e-4 of the strongest (or a column is zero: a
+ * parameter with no effect); returns 1 when not identifiable.
+ * fit_gn_decrease: what a Gauss-Newton step from there would remove from
+ * the cost |f|^2, f^T J (J^T J)^-1 J^T f (NAN if it cannot be computed).
+ */
+int
+fit_identifiability(const gsl_matrix *J, const struct fit_param *fp, int np, double *cond,
+                    char *names, size_t nn);
+double
+fit_gn_decrease(const gsl_matrix *J, const gsl_vector *f);
 
 #endif
