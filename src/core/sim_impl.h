@@ -192,6 +192,10 @@ hbs_flight_closed(struct sim *s);
 int
 hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
           int *kind);
+/* ... the value of function k alone (the same double), its kind in *kind */
+double
+hbs_watch_one(const struct sim *s, const struct phase *p, double t, const double *u, int k,
+              int *kind);
 
 /*
  * The same, remembered for the last state asked (where one step ends, the

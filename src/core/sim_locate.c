@@ -112,17 +112,16 @@ static double
 oriented(double h, void *params)
 {
 	struct sim *s = params;
-	double u[MAXDIM], f[MAXFUN], val;
-	int kind[MAXFUN];
+	double u[MAXDIM], val;
+	int kind;
 
 	s->loc_iter++;
 	if (kind_of_target(s) != FUN_EVENT && s->t0 + h == s->t0)
 		return DBL_MIN; /* the step's start has not crossed (a mode's side is its sign there) */
 	if (restep(s, h, u))
 		return NAN;
-	hbs_watch(s, s->cur, s->t0 + h, u, f, kind);
-	val = f[s->fun_target];
-	if (kind[s->fun_target] == FUN_EVENT)
+	val = hbs_watch_one(s, s->cur, s->t0 + h, u, s->fun_target, &kind);
+	if (kind == FUN_EVENT)
 		return val >= 0.0 ? fmax(val, DBL_MIN) : val;
 	val *= s->fun_sign0;
 	return val > 0.0 ? val : (val == 0.0 ? DBL_MIN : val);

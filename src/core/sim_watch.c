@@ -11,59 +11,78 @@
  * the flow set C (>= 0 in C), then the law's switching functions, then v
  * (x_c extremum) and dPhi/dt (F_c extremum).  Returns their number; kinds
  * in kind[].  With rate not NULL, *rate = dI/dt, the rate of the indicator
- * (one-sided where I has a corner).
+ * (one-sided where I has a corner).  With only >= 0, only f[only] is
+ * computed (the same double), and the law's partials only where it needs
+ * them: a bracketing evaluates one function many times.
  */
 static int
 watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
-      int *kind, double *rate)
+      int *kind, double *rate, int only)
 {
 	const struct scene *sc = &s->sc;
 	const struct layout *L = &p->L;
 	double y[MAXDIM], v, xc, z[LAW_MAX_Z] = { 0 };
 	double dphi[LAW_MAX_Z + 2], dpsi[LAW_MAX_Z * (LAW_MAX_Z + 2)], dz[LAW_MAX_Z];
-	double phi, vdot, d;
-	int n = 0, i, nz = sc->law->n_z;
+	double phi = 0.0, vdot, d;
+	int i, nz = sc->law->n_z;
+	int nk = sc->law->n_kinks && sc->run.kinks ? sc->law->n_kinks : 0;
+	int all = only < 0;
 
 	hbs_unscale(p, u, y);
 	v = y[L->iv];
-	kind[n] = FUN_EVENT;
+	kind[0] = FUN_EVENT;
 	if (!p->q) {
-		f[n++] = fmax(y[L->ix], v);
+		f[0] = fmax(y[L->ix], v);
 		if (rate != NULL)
 			*rate = y[L->ix] > v ? v : scene_Fer(sc, t) / sc->d.m;
-		return n;
+		return 1;
 	}
 	xc = y[L->ixc];
 	for (i = 0; i < nz; i++)
 		z[i] = y[L->iz + i];
-	phi = phi_at(s, xc, z, v);
-	f[n++] = -fmin(phi, v);
-	if (sc->law->n_kinks && sc->run.kinks) {
-		sc->law->kinks(sc->par, sc->ext, xc, z, v, &f[n]);
-		for (i = 0; i < sc->law->n_kinks; i++)
-			kind[n++] = FUN_KINK;
+	for (i = 1; i <= nk; i++)
+		kind[i] = FUN_KINK;
+	kind[nk + 1] = FUN_XCMAX;
+	kind[nk + 2] = FUN_FCMAX;
+	if (all || only == 0 || only == nk + 2)
+		phi = phi_at(s, xc, z, v);
+	if (all || only == 0)
+		f[0] = -fmin(phi, v);
+	if (nk && (all || (only >= 1 && only <= nk)))
+		sc->law->kinks(sc->par, sc->ext, xc, z, v, &f[1]);
+	f[nk + 1] = v;
+	if (all || only == nk + 2) {
+		sc->law->jac(sc->par, sc->ext, xc, z, v, dphi, nz ? dpsi : NULL);
+		if (nz)
+			sc->law->psi(sc->par, sc->ext, xc, z, v, dz);
+		vdot = (-phi + scene_Fer(sc, t)) / sc->d.m;
+		d = dphi[0] * v + dphi[nz + 1] * vdot;
+		for (i = 0; i < nz; i++)
+			d += dphi[1 + i] * dz[i];
+		f[nk + 2] = d;
+		if (rate != NULL)
+			*rate = phi < v ? -d : -vdot;
 	}
-	kind[n] = FUN_XCMAX;
-	f[n++] = v;
-	sc->law->jac(sc->par, sc->ext, xc, z, v, dphi, nz ? dpsi : NULL);
-	if (nz)
-		sc->law->psi(sc->par, sc->ext, xc, z, v, dz);
-	vdot = (-phi + scene_Fer(sc, t)) / sc->d.m;
-	d = dphi[0] * v + dphi[nz + 1] * vdot;
-	for (i = 0; i < nz; i++)
-		d += dphi[1 + i] * dz[i];
-	kind[n] = FUN_FCMAX;
-	f[n++] = d;
-	if (rate != NULL)
-		*rate = phi < v ? -d : -vdot;
-	return n;
+	return nk + 3;
 }
 
 int
 hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
           int *kind)
 {
-	return watch(s, p, t, u, f, kind, NULL);
+	return watch(s, p, t, u, f, kind, NULL, -1);
+}
+
+double
+hbs_watch_one(const struct sim *s, const struct phase *p, double t, const double *u, int k,
+              int *kind)
+{
+	double f[MAXFUN];
+	int kinds[MAXFUN];
+
+	watch(s, p, t, u, f, kinds, NULL, k);
+	*kind = kinds[k];
+	return f[k];
 }
 
 int
@@ -74,7 +93,7 @@ hbs_watch_at(struct sim *s, const struct phase *p, double t, const double *u, do
 
 	if (!(s->w.valid && s->w.p == p && s->w.t == t && s->w.xe == s->xe
 	      && memcmp(s->w.u, u, nu) == 0)) {
-		s->w.n = watch(s, p, t, u, s->w.f, s->w.kind, &s->w.rate);
+		s->w.n = watch(s, p, t, u, s->w.f, s->w.kind, &s->w.rate, -1);
 		s->w.p = p;
 		s->w.t = t;
 		s->w.xe = s->xe;
