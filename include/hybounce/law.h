@@ -86,9 +86,10 @@ struct law_type {
 	/*
 	 * Switching functions: values g[0 .. n_kinks-1] whose zero crossings
 	 * are the points where Phi or Psi is not smooth (|v|, z|z|^(n-1),
-	 * x_c|x_c|^(p-1), |Psi_2| ...).  The engine ends a step exactly on
-	 * each crossing inside a flow interval (DESIGN.md section 4a).  NULL
-	 * when n_kinks = 0.
+	 * x_c|x_c|^(p-1), |Psi_2| ...) but still continuous: the engine ends a
+	 * step on each crossing inside a flow interval (DESIGN.md section 4a),
+	 * within 0.1 sqrt(rtol) of the step past it, which continuity makes an
+	 * error of second order only.  NULL when n_kinks = 0.
 	 */
 	void (*kinks)(const double *par, int ext, double xc, const double *z, double v,
 	              double *g);
