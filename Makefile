@@ -110,7 +110,7 @@ PUBLIC_H   := $(sort $(wildcard include/hybounce/*.h))
 pc_rel      = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
 .PHONY: fuzz fuzzers fuzz-smoke
 
-.PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man lib FORCE golden
+.PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man lib FORCE golden bench-docs
 
 all: $(BIN) lib
 
@@ -259,6 +259,10 @@ bench: deps
 	./$(BENCHBIN) --out $(BUILD)/bench
 	@sh tests/bench/study-table.sh $(BUILD)/bench/work-precision.csv >$(BUILD)/bench/study-table.md
 	@echo "per-study table (README Speed and accuracy): $(BUILD)/bench/study-table.md"
+
+# After make bench: the per-study table into README.md, and tests/bench/REPORT.md.
+bench-docs:
+	@sh tests/bench/report.sh $(BUILD)/bench
 
 # Rewrites the golden collision tables (tests/golden/*.csv) from this engine:
 # only after a change meant to move the numbers; review the diff (tests/test_golden.c).
