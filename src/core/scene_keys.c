@@ -460,6 +460,13 @@ info_keydef(const struct scene *sc, const struct scene_keydef *kd, struct scene_
 	}
 }
 
+/* Law parameter i is derived by the scene (k from the materials), not typed. */
+static int
+lawpar_readonly(const struct scene *sc, int i)
+{
+	return (sc->law->params[i].flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived;
+}
+
 /* Fills the row of law parameter i. */
 static void
 info_lawpar(const struct scene *sc, int i, struct scene_keyinfo *o)
@@ -478,7 +485,7 @@ info_lawpar(const struct scene *sc, int i, struct scene_keyinfo *o)
 	units_format(o->number, o->dim, 4, o->value, sizeof o->value);
 	units_format_exact(o->number, o->dim, o->edit, sizeof o->edit);
 	units_range_str(&o->limits, NULL, o->range, sizeof o->range);
-	o->readonly = (pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived; /* as scene_key_resolve */
+	o->readonly = lawpar_readonly(sc, i);
 }
 
 int
@@ -536,7 +543,7 @@ scene_key_resolve(const struct scene *sc, const char *key, const struct scene_ke
 			    sc->law != NULL ? sc->law->name : "(none)");
 		}
 		*li = i;
-		*readonly = (sc->law->params[i].flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived;
+		*readonly = lawpar_readonly(sc, i);
 		return HB_OK;
 	}
 	*kd = scene_keydef_find(key);

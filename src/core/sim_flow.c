@@ -161,8 +161,7 @@ static void
 make_layout(const struct scene *sc, int q, struct layout *L)
 {
 	int n = 0;
-	int com = sc->d.system == SCENE_FULL ? !(sc->run.reduce & REDUCE_COM)
-	                                     : !(sc->run.reduce & REDUCE_COM);
+	int com = !(sc->run.reduce & REDUCE_COM);
 
 	*L = (struct layout){ 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0 };
 	if (q) {
@@ -262,9 +261,9 @@ hbs_scales(struct sim *s, const struct layout *L, int q)
 {
 	const struct scene *sc = &s->sc;
 	double m = sc->d.m, F = fabs(scene_Fer(sc, s->t)), X, V, k, p;
+	int i;
 
 	s->w.valid = 0; /* the watched values were of the old scales */
-	int i;
 
 	if (q) {
 		law_kp(sc, &k, &p);

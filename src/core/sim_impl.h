@@ -213,7 +213,7 @@ hbs_snap_stick(struct sim *s, double *u);
 int
 hbs_snap_separation(struct sim *s, double *u);
 
-/* sim_watch.c: did function i (of this kind) cross between values a (step start) and b? */
+/* Did function i (of this kind) cross between values a (step start) and b? */
 static inline int
 hbs_crossed(int kind, double a, double b)
 {
@@ -239,6 +239,7 @@ hbs_candidate(const struct sim *s, int kind, int i, double f0, double fx)
 		return 0;
 	return hbs_crossed(kind, f0, fx);
 }
+
 /* sim_locate.c: acts on the accepted step (t0, u0) -> (t0 + H, u1) */
 int
 hbs_after_step(struct sim *s, int load_kink);

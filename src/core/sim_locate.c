@@ -96,13 +96,6 @@ restep(struct sim *s, double h, double *u)
 	return 0;
 }
 
-/* The kind of the function being located (fun_target): 0 is the indicator, the event. */
-static int
-kind_of_target(const struct sim *s)
-{
-	return s->fun_target == 0 ? FUN_EVENT : FUN_KINK;
-}
-
 /*
  * The oriented value of the target function at h for Brent: > 0 where it
  * has not crossed yet (an exact zero counts as not crossed), < 0 where it
@@ -116,7 +109,7 @@ oriented(double h, void *params)
 	int kind;
 
 	s->loc_iter++;
-	if (kind_of_target(s) != FUN_EVENT && s->t0 + h == s->t0)
+	if (s->fun_target != 0 && s->t0 + h == s->t0) /* 0 is the indicator, the event */
 		return DBL_MIN; /* the step's start has not crossed (a mode's side is its sign there) */
 	if (restep(s, h, u))
 		return NAN;
@@ -299,13 +292,10 @@ real_point(struct sim *s, int event, double hi, double *a, double *b)
 
 	s->use_dense = 0;
 	if (!event) {
-		double u[MAXDIM], f[MAXFUN];
-		int kind[MAXFUN];
+		double u[MAXDIM];
+		int kind;
 
-		if (restep(s, *b, u) != 0)
-			goto keep;
-		hbs_watch(s, s->cur, s->t0 + *b, u, f, kind);
-		if (!(f[0] >= 0.0))
+		if (restep(s, *b, u) != 0 || !(hbs_watch_one(s, s->cur, s->t0 + *b, u, 0, &kind) >= 0.0))
 			goto keep;
 		return;
 	}
@@ -334,8 +324,9 @@ keep:
  * the flow is continuous across a kink (law.h) and an extremum's value is
  * stationary, so a point off by delta changes the state, or the extremum,
  * by O(delta^2) only (about rtol (H/tau)^2 / 200 of its scale, tau the
- * time scale of the motion, at least H).  Where something else crosses
- * inside such a bracket, the location is done again to ulps (tight).  On
+ * time scale of the motion, at least H).  Where an event crosses inside
+ * such a bracket, or F_c's extremum sits at a kink where dF_c/dt jumps,
+ * the location is done again to ulps (tight, see hbs_after_step).  On
  * the Hermite interpolant, to well within its own error, 1e-10 of the step.
  */
 static double
@@ -387,18 +378,14 @@ locate_on_steps(struct sim *s, int k, int sign0, double hi, double htol, double 
 		 * it, closes a bracket of at most 10 htol whose crossed end is
 		 * about htol/2 past the root.
 		 */
-		double xe = g0 > 0 ? fmin(hi, x1 + 0.5 * htol) : fmax(0.0, x1 - 0.5 * htol), ge;
+		double xe = g0 > 0 ? fmin(hi, x1 + 0.5 * htol) : fmax(0.0, x1 - 0.5 * htol);
 
 		if (g0 > 0 ? xe > x0 : xe < x0) {
-			ge = oriented(xe, s);
-			if (g0 > 0 && ge < 0) {
-				*a = x0;
-				*b = xe;
-				return 0;
-			}
-			if (g0 < 0 && ge > 0) {
-				*a = xe;
-				*b = x0;
+			double ge = oriented(xe, s);
+
+			if (g0 > 0 ? ge < 0 : ge > 0) { /* crossed between x0 and xe */
+				*a = fmin(x0, xe);
+				*b = fmax(x0, xe);
 				return 0;
 			}
 		}
@@ -565,7 +552,7 @@ again:
 	}
 	/* everything that has crossed at b happens here; the event wins */
 	{
-		double ub[MAXDIM], fb[MAXFUN], ua[MAXDIM], fa[MAXFUN];
+		double ub[MAXDIM], fb[MAXFUN];
 		int kb[MAXFUN], event = 0, kink = 0;
 
 		restep(s, b, ub);
@@ -603,11 +590,16 @@ again:
 			return hbs_fail(s, HB_ENUMERIC, "event location lost its bracket");
 		if (s->use_dense)
 			real_point(s, event, hi, &a, &b);
-		restep(s, a, ua);
-		hbs_watch(s, p, s->t0 + a, ua, fa, kb);
+		if (event) {
+			double ua[MAXDIM], fa0;
+			int ka;
+
+			restep(s, a, ua);
+			fa0 = hbs_watch_one(s, p, s->t0 + a, ua, 0, &ka);
+			accept_at(s, b);
+			return hbs_jump(s, LOCATE_BRENT, s->loc_iter, b - a, fa0, fb[0]);
+		}
 		accept_at(s, b);
-		if (event)
-			return hbs_jump(s, LOCATE_BRENT, s->loc_iter, b - a, fa[0], fb[0]);
 		if (s->msign && hbs_crossed(FUN_KINK, f0[1 + s->sc.law->mode_kink],
 		                        fb[1 + s->sc.law->mode_kink])) {
 			/* the mode's switching function crossed: the next step is on the other side */
