@@ -24,8 +24,8 @@ int
 main(int argc, char **argv)
 {
 	char path[512], msg[1024];
-	struct scene sc;          /* plain data, owned by the caller */
-	struct sim *s;            /* opaque, owned by the caller: sim_free */
+	struct hb_scene sc;          /* plain data, owned by the caller */
+	struct hb_sim *s;            /* opaque, owned by the caller: hb_sim_free */
 	size_t i, n;
 	int status;
 
@@ -34,29 +34,29 @@ main(int argc, char **argv)
 		return 2;
 	}
 	/* Every function returns 0 or an hb_status, with the reason in msg. */
-	if (preset_resolve(argv[1], path, sizeof path, msg, sizeof msg) != 0 ||
-	    preset_load(path, &sc, msg, sizeof msg) != 0) {
+	if (hb_preset_resolve(argv[1], path, sizeof path, msg, sizeof msg) != 0 ||
+	    hb_preset_load(path, &sc, msg, sizeof msg) != 0) {
 		fprintf(stderr, "%s: %s\n", argv[0], msg);
 		return 2;
 	}
-	s = sim_new(&sc, msg, sizeof msg);   /* copies sc: it may go now */
+	s = hb_sim_new(&sc, msg, sizeof msg);   /* copies sc: it may go now */
 	if (s == NULL) {
 		fprintf(stderr, "%s: %s\n", argv[0], msg);
 		return 2;
 	}
-	status = sim_run(s);
+	status = hb_sim_run(s);
 
 	printf("# %s: %s\n", path, sc.name);
 	printf("# i t_e[s] t_s[s] v_i[m/s] e\n");
-	n = sim_ncollisions(s);
+	n = hb_sim_ncollisions(s);
 	for (i = 0; i < n; i++) {
 		/* borrowed from s: valid until the sim changes or is freed */
-		const struct collision *c = sim_collision(s, i);
+		const struct hb_collision *c = hb_sim_collision(s, i);
 		printf("%ld %.17g %.17g %.17g %.17g\n", c->i, c->te, c->ts, c->vi, c->e);
 	}
-	printf("# %zu collisions, %s\n", n, sim_end_str(s));
+	printf("# %zu collisions, %s\n", n, hb_sim_end_str(s));
 	if (status != 0)
-		fprintf(stderr, "%s: %s: %s\n", argv[0], status_str(status), sim_errmsg(s));
-	sim_free(s);
+		fprintf(stderr, "%s: %s: %s\n", argv[0], hb_status_str(status), hb_sim_errmsg(s));
+	hb_sim_free(s);
 	return status != 0 ? 1 : 0;
 }

@@ -20,19 +20,19 @@
 namespace {
 
 struct sim_deleter {
-	void operator()(sim *s) const { sim_free(s); }
+	void operator()(hb_sim *s) const { hb_sim_free(s); }
 };
-using sim_ptr = std::unique_ptr<sim, sim_deleter>;
+using sim_ptr = std::unique_ptr<hb_sim, sim_deleter>;
 
 /* Loads a preset by name or path; throws with the library's message. */
-scene
+hb_scene
 load(const std::string &name, std::string &path)
 {
 	char buf[512], msg[1024];
-	scene sc;
+	hb_scene sc;
 
-	if (preset_resolve(name.c_str(), buf, sizeof buf, msg, sizeof msg) != HB_OK ||
-	    preset_load(buf, &sc, msg, sizeof msg) != HB_OK)
+	if (hb_preset_resolve(name.c_str(), buf, sizeof buf, msg, sizeof msg) != HB_OK ||
+	    hb_preset_load(buf, &sc, msg, sizeof msg) != HB_OK)
 		throw std::runtime_error(msg);
 	path = buf;
 	return sc;
@@ -48,7 +48,7 @@ main(int argc, char **argv)
 		return 2;
 	}
 	std::string path;
-	scene sc;
+	hb_scene sc;
 	try {
 		sc = load(argv[1], path);
 	} catch (const std::exception &e) {
@@ -56,22 +56,22 @@ main(int argc, char **argv)
 		return 2;
 	}
 	char msg[1024];
-	sim_ptr s(sim_new(&sc, msg, sizeof msg));
+	sim_ptr s(hb_sim_new(&sc, msg, sizeof msg));
 	if (!s) {
 		std::fprintf(stderr, "%s: %s\n", argv[0], msg);
 		return 2;
 	}
-	int status = sim_run(s.get());
+	int status = hb_sim_run(s.get());
 
 	std::printf("# %s: %s\n", path.c_str(), sc.name);
 	std::printf("# i t_e[s] t_s[s] v_i[m/s] e\n");
-	size_t n = sim_ncollisions(s.get());
+	size_t n = hb_sim_ncollisions(s.get());
 	for (size_t i = 0; i < n; i++) {
-		const collision *c = sim_collision(s.get(), i);
+		const hb_collision *c = hb_sim_collision(s.get(), i);
 		std::printf("%ld %.17g %.17g %.17g %.17g\n", c->i, c->te, c->ts, c->vi, c->e);
 	}
-	std::printf("# %zu collisions, %s\n", n, sim_end_str(s.get()));
+	std::printf("# %zu collisions, %s\n", n, hb_sim_end_str(s.get()));
 	if (status != 0)
-		std::fprintf(stderr, "%s: %s: %s\n", argv[0], status_str(status), sim_errmsg(s.get()));
+		std::fprintf(stderr, "%s: %s: %s\n", argv[0], hb_status_str(status), hb_sim_errmsg(s.get()));
 	return status != 0 ? 1 : 0;
 }

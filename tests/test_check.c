@@ -1,6 +1,6 @@
 /*
  * test_check.c - the checker checked: real arcs corrupted on purpose must be
- * rejected (check_solution_pair), and the physics checks (check_physics)
+ * rejected (hb_check_solution_pair), and the physics checks (hb_check_physics)
  * must catch a run that creates energy while passing the paper's presets.
  */
 #include <float.h>
@@ -16,10 +16,10 @@
 #include "testutil.h"
 
 /* A real run: steel on bitumen (flights, contacts, a contact at the end). */
-static struct sim *
+static struct hb_sim *
 real_run(const char *preset)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	scene_preset(preset, &sc);
 	return run_scene(&sc);
@@ -27,26 +27,26 @@ real_run(const char *preset)
 
 /* The samples of an arc, copied so that a test can corrupt them. */
 struct copy {
-	struct arc_sample *s;
+	struct hb_arc_sample *s;
 	size_t n;
 };
 
 static struct copy
-copy_of(const struct arc *a)
+copy_of(const struct hb_arc *a)
 {
-	struct copy c = { calloc(arc_len(a), sizeof *c.s), arc_len(a) };
+	struct copy c = { calloc(hb_arc_len(a), sizeof *c.s), hb_arc_len(a) };
 
 	cr_assert_not_null(c.s);
 	for (size_t i = 0; i < c.n; i++)
-		c.s[i] = *arc_at(a, i);
+		c.s[i] = *hb_arc_at(a, i);
 	return c;
 }
 
 /* An arc made of the (corrupted) samples. */
-static struct arc *
+static struct hb_arc *
 arc_of(const struct copy *c)
 {
-	struct arc *a = arc_new(c->n + 16);
+	struct hb_arc *a = arc_new(c->n + 16);
 
 	cr_assert_not_null(a);
 	for (size_t i = 0; i < c->n; i++)
@@ -67,12 +67,12 @@ find_kind(const struct copy *c, int kind, int q, int k)
 
 /* Checks the corrupted copy: must be rejected with a message containing WHAT. */
 static void
-rejected(const struct scene *sc, const struct copy *c, const char *what)
+rejected(const struct hb_scene *sc, const struct copy *c, const char *what)
 {
 	char msg[512] = "";
-	struct arc *a = arc_of(c);
+	struct hb_arc *a = arc_of(c);
 
-	cr_assert_eq(check_solution_pair(sc, a, msg, sizeof msg), HB_EINVAL,
+	cr_assert_eq(hb_check_solution_pair(sc, a, msg, sizeof msg), HB_EINVAL,
 	             "corrupted arc accepted (expected: %s)", what);
 	cr_assert(strstr(msg, what) != NULL, "message '%s' does not say '%s'", msg, what);
 	arc_free(a);
@@ -81,180 +81,180 @@ rejected(const struct scene *sc, const struct copy *c, const char *what)
 
 Test(check, the_uncorrupted_copy_is_accepted)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	struct arc *a = arc_of(&c);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	struct hb_arc *a = arc_of(&c);
 	char msg[512] = "";
 
-	cr_assert_gt(arc_njumps(sim_arc(s)), 20);
-	cr_assert_eq(check_solution_pair(sim_scene(s), a, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_gt(hb_arc_njumps(hb_sim_arc(s)), 20);
+	cr_assert_eq(hb_check_solution_pair(hb_sim_scene(s), a, msg, sizeof msg), 0, "%s", msg);
 	arc_free(a);
 	free(c.s);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 Test(check, a_flight_sample_outside_C)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_STEP, 0, 3);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_STEP, 0, 3);
 
 	/* in flight C is x >= 0 or v >= 0: below the obstacle and approaching is not */
 	c.s[i].x = -1e-9;
 	c.s[i].v = -fabs(c.s[i].v) - 1e-3;
-	rejected(sim_scene(s), &c, "is not in C");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "is not in C");
+	hb_sim_free(s);
 }
 
 Test(check, a_contact_sample_outside_C)
 {
-	struct sim *s = real_run("permanent-contact-shccl");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_STEP, 1, 5);
+	struct hb_sim *s = real_run("permanent-contact-shccl");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_STEP, 1, 5);
 
 	/* in contact C is Phi <= 0 or v <= 0: a receding contact that still pushes is not */
 	c.s[i].v = 0.1;
 	c.s[i].xc = 1e-6; /* beyond x_c = 0 the adhesive continuation pulls: Phi > 0 */
-	cr_assert_gt(sim_scene(s)->law->phi(sim_scene(s)->par, 1, 1e-6, c.s[i].z, 0.1), 0.0);
-	rejected(sim_scene(s), &c, "is not in C");
-	sim_free(s);
+	cr_assert_gt(hb_sim_scene(s)->law->phi(hb_sim_scene(s)->par, 1, 1e-6, c.s[i].z, 0.1), 0.0);
+	rejected(hb_sim_scene(s), &c, "is not in C");
+	hb_sim_free(s);
 }
 
 Test(check, a_pre_jump_state_outside_D)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_PRE_JUMP, 0, 1);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_PRE_JUMP, 0, 1);
 
 	/* flight's D is x <= 0 and v <= 0; one ulp above the obstacle is outside */
-	cr_assert_eq(c.s[i + 1].kind, ARC_POST_JUMP);
+	cr_assert_eq(c.s[i + 1].kind, HB_ARC_POST_JUMP);
 	c.s[i].x = c.s[i + 1].x = DBL_TRUE_MIN;
-	rejected(sim_scene(s), &c, "the pre-jump state is not in D");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "the pre-jump state is not in D");
+	hb_sim_free(s);
 }
 
 Test(check, a_contact_pre_jump_state_outside_D)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_PRE_JUMP, 1, 0);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_PRE_JUMP, 1, 0);
 
 	/* contact's D is Phi >= 0 and v >= 0: still approaching is outside */
 	c.s[i].v = c.s[i + 1].v = -1e-3;
-	rejected(sim_scene(s), &c, "the pre-jump state is not in D");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "the pre-jump state is not in D");
+	hb_sim_free(s);
 }
 
 Test(check, the_jump_map_off_by_one_ulp_in_v)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_POST_JUMP, -1, 2);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_POST_JUMP, -1, 2);
 
 	c.s[i].v = nextafter(c.s[i].v, INFINITY);
-	rejected(sim_scene(s), &c, "the post-jump state is not g of the pre-jump state");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "the post-jump state is not g of the pre-jump state");
+	hb_sim_free(s);
 }
 
 Test(check, the_jump_map_off_by_one_ulp_in_x)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_POST_JUMP, 1, 4);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_POST_JUMP, 1, 4);
 
 	c.s[i].x = nextafter(c.s[i].x, -INFINITY);
-	rejected(sim_scene(s), &c, "the post-jump state is not g of the pre-jump state");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "the post-jump state is not g of the pre-jump state");
+	hb_sim_free(s);
 }
 
 Test(check, the_jump_map_off_by_one_ulp_in_x_c)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_POST_JUMP, 1, 0);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_POST_JUMP, 1, 0);
 
 	c.s[i].xc = -DBL_TRUE_MIN;
-	rejected(sim_scene(s), &c, "the post-jump state is not g of the pre-jump state");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "the post-jump state is not g of the pre-jump state");
+	hb_sim_free(s);
 }
 
 Test(check, the_jump_map_leaves_z_by_one_ulp)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_POST_JUMP, 1, 1);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_POST_JUMP, 1, 1);
 
-	cr_assert_gt(sim_scene(s)->law->n_z, 0);
+	cr_assert_gt(hb_sim_scene(s)->law->n_z, 0);
 	c.s[i].z[0] = DBL_TRUE_MIN;
-	rejected(sim_scene(s), &c, "z_c is not reset by the jump");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "z_c is not reset by the jump");
+	hb_sim_free(s);
 }
 
 Test(check, t_decreasing_within_an_interval)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_STEP, 1, 7);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_STEP, 1, 7);
 
 	cr_assert_eq(c.s[i - 1].j, c.s[i].j);
 	c.s[i].t = nextafter(c.s[i - 1].t, -INFINITY);
-	rejected(sim_scene(s), &c, "t decreases within j");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "t decreases within j");
+	hb_sim_free(s);
 }
 
 Test(check, t_changing_across_a_jump)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_POST_JUMP, -1, 5);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_POST_JUMP, -1, 5);
 
 	c.s[i].t = nextafter(c.s[i].t, INFINITY);
-	rejected(sim_scene(s), &c, "a jump changes t");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "a jump changes t");
+	hb_sim_free(s);
 }
 
 Test(check, j_skipping)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_POST_JUMP, -1, 3);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_POST_JUMP, -1, 3);
 
 	for (size_t k = i; k < c.n; k++)
 		c.s[k].j++;
-	rejected(sim_scene(s), &c, "j goes from");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "j goes from");
+	hb_sim_free(s);
 }
 
 Test(check, q_changing_without_a_jump)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	size_t i = find_kind(&c, ARC_STEP, 0, 2);
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	size_t i = find_kind(&c, HB_ARC_STEP, 0, 2);
 
 	c.s[i].q = 1;
-	rejected(sim_scene(s), &c, "q_c changes without a jump");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "q_c changes without a jump");
+	hb_sim_free(s);
 }
 
 Test(check, a_start_that_is_not_0_0)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
 
 	c.s[0].t = DBL_TRUE_MIN;
-	rejected(sim_scene(s), &c, "does not start at (0, 0)");
-	sim_free(s);
+	rejected(hb_sim_scene(s), &c, "does not start at (0, 0)");
+	hb_sim_free(s);
 }
 
 /* ------------------------------------------------------------------ */
 /* Physics                                                             */
 
 static int
-physics_of(const char *preset, int stepper, double tol, struct check_physics *r, char *msg,
+physics_of(const char *preset, int stepper, double tol, struct hb_check_physics *r, char *msg,
            size_t n)
 {
-	struct scene sc;
-	struct sim *s;
+	struct hb_scene sc;
+	struct hb_sim *s;
 	int rc;
 
 	scene_preset(preset, &sc);
@@ -262,11 +262,11 @@ physics_of(const char *preset, int stepper, double tol, struct check_physics *r,
 		sc.run.stepper = stepper;
 	if (tol > 0)
 		sc.run.rtol = sc.run.atol = tol;
-	s = sim_new(&sc, msg, n);
+	s = hb_sim_new(&sc, msg, n);
 	cr_assert_not_null(s, "%s", msg);
-	sim_run(s);
-	rc = check_physics(sim_scene(s), sim_arc(s), r, msg, n);
-	sim_free(s);
+	hb_sim_run(s);
+	rc = hb_check_physics(hb_sim_scene(s), hb_sim_arc(s), r, msg, n);
+	hb_sim_free(s);
 	return rc;
 }
 
@@ -280,7 +280,7 @@ Test(check, every_preset_obeys_its_physics_at_its_own_tolerance)
 		"hard-stiff-maxwell", "hard-drop-1um", "hard-linear-maxwell",
 	};
 	char msg[2048];
-	struct check_physics r;
+	struct hb_check_physics r;
 
 	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
 		cr_assert_eq(physics_of(names[i], -1, 0, &r, msg, sizeof msg), 0, "%s: %s",
@@ -306,18 +306,18 @@ Test(check, a_negligible_horizon_breaks_no_identity)
 	char msg[2048];
 
 	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
-		struct scene sc;
-		struct sim *s;
-		struct check_physics r;
+		struct hb_scene sc;
+		struct hb_sim *s;
+		struct hb_check_physics r;
 
 		scene_preset(names[i], &sc);
 		sc.run.T = 1e-9;
-		s = sim_new(&sc, msg, sizeof msg);
+		s = hb_sim_new(&sc, msg, sizeof msg);
 		cr_assert_not_null(s, "%s", msg);
-		cr_assert_eq(sim_run(s), HB_OK);
-		cr_expect_eq(check_physics(sim_scene(s), sim_arc(s), &r, msg, sizeof msg), 0,
+		cr_assert_eq(hb_sim_run(s), HB_OK);
+		cr_expect_eq(hb_check_physics(hb_sim_scene(s), hb_sim_arc(s), &r, msg, sizeof msg), 0,
 		             "%s at T = 1 ns: %s", names[i], msg);
-		sim_free(s);
+		hb_sim_free(s);
 	}
 }
 
@@ -325,9 +325,9 @@ Test(check, a_negligible_horizon_breaks_no_identity)
 Test(check, a_run_that_creates_energy_is_caught)
 {
 	char msg[2048];
-	struct check_physics r;
+	struct hb_check_physics r;
 
-	cr_assert_eq(physics_of("hard-bouc-wen-beta", STEPPER_BSIMP, 1e-3, &r, msg, sizeof msg),
+	cr_assert_eq(physics_of("hard-bouc-wen-beta", HB_STEPPER_BSIMP, 1e-3, &r, msg, sizeof msg),
 	             HB_EINVAL);
 	cr_assert_eq(r.failed, 3, "%s", msg);
 	cr_assert(strstr(msg, "passivity: collision") != NULL, "%s", msg);
@@ -341,67 +341,67 @@ Test(check, a_run_that_creates_energy_is_caught)
 Test(check, an_elastic_contact_off_by_more_than_the_tolerance_is_caught)
 {
 	char msg[2048];
-	struct check_physics r;
+	struct hb_check_physics r;
 
-	cr_assert_eq(physics_of("hard-slow-impact-hertz", STEPPER_BSIMP, 1e-8, &r, msg,
+	cr_assert_eq(physics_of("hard-slow-impact-hertz", HB_STEPPER_BSIMP, 1e-8, &r, msg,
 	                        sizeof msg), HB_EINVAL);
 	cr_assert(r.elastic);
 	cr_assert(strstr(msg, "elastic") != NULL, "%s", msg);
-	cr_assert_gt(r.emax / r.tol, CHECK_PHYS_FACTOR);
+	cr_assert_gt(r.emax / r.tol, HB_CHECK_PHYS_FACTOR);
 }
 
 /* A contact's W made negative, and E_e shifted at one sample: each caught. */
 Test(check, corrupted_works_are_caught)
 {
-	struct sim *s = real_run("steel-on-bitumen");
-	struct copy c = copy_of(sim_arc(s));
-	struct check_physics r;
+	struct hb_sim *s = real_run("steel-on-bitumen");
+	struct copy c = copy_of(hb_sim_arc(s));
+	struct hb_check_physics r;
 	char msg[2048] = "";
-	size_t i = find_kind(&c, ARC_PRE_JUMP, 1, 2);
-	struct arc *a;
+	size_t i = find_kind(&c, HB_ARC_PRE_JUMP, 1, 2);
+	struct hb_arc *a;
 
 	a = arc_of(&c);
-	cr_assert_eq(check_physics(sim_scene(s), a, &r, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_check_physics(hb_sim_scene(s), a, &r, msg, sizeof msg), 0, "%s", msg);
 	cr_assert_eq(r.ncontacts, 12);
 	arc_free(a);
 
 	c.s[i].W = -1e-9 * fabs(c.s[i].W) - 1e-12;
 	a = arc_of(&c);
-	cr_assert_eq(check_physics(sim_scene(s), a, &r, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_check_physics(hb_sim_scene(s), a, &r, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "passivity: collision 2 returns energy") != NULL, "%s", msg);
 	arc_free(a);
 
-	c.s[i].W = arc_at(sim_arc(s), i)->W;
+	c.s[i].W = hb_arc_at(hb_sim_arc(s), i)->W;
 	c.s[i / 2].Ee *= 1 + 1e-6;
 	a = arc_of(&c);
-	cr_assert_eq(check_physics(sim_scene(s), a, &r, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_check_physics(hb_sim_scene(s), a, &r, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "work-energy identity") != NULL, "%s", msg);
 	cr_assert_eq(r.resid_at, i / 2);
 	arc_free(a);
 	free(c.s);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /* v_i = -1e-300 m/s: e is ~1e281, meaningless; said, not checked. */
 Test(check, a_contact_from_rest_is_named_not_checked)
 {
-	struct scene sc;
-	struct sim *s;
-	struct check_physics r;
+	struct hb_scene sc;
+	struct hb_sim *s;
+	struct hb_check_physics r;
 	char msg[1024];
 
 	scene_preset("nonunique-separation", &sc);
-	cr_assert_eq(scene_set(&sc, "initial.x0", "0", msg, sizeof msg), 0, "%s", msg);
-	cr_assert_eq(scene_set(&sc, "initial.v0", "-1e-300", msg, sizeof msg), 0, "%s", msg);
-	cr_assert_eq(scene_set(&sc, "loads.F1", "1", msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_scene_set(&sc, "initial.x0", "0", msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_scene_set(&sc, "initial.v0", "-1e-300", msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_scene_set(&sc, "loads.F1", "1", msg, sizeof msg), 0, "%s", msg);
 	s = run_scene(&sc);
-	cr_assert_eq(sim_ncollisions(s), 1);
-	cr_assert_gt(sim_collision(s, 0)->e, 1e200);
-	cr_assert_eq(check_physics(sim_scene(s), sim_arc(s), &r, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_sim_ncollisions(s), 1);
+	cr_assert_gt(hb_sim_collision(s, 0)->e, 1e200);
+	cr_assert_eq(hb_check_physics(hb_sim_scene(s), hb_sim_arc(s), &r, msg, sizeof msg), 0, "%s", msg);
 	cr_assert_eq(r.nzero, 1);
 	cr_assert_eq(r.zero_at, 0);
 	cr_assert_eq(r.vi_zero, -1e-300);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /*
@@ -420,35 +420,35 @@ Test(check, every_hard_preset_stepper_and_tolerance_passes_or_warns, .timeout = 
 	int runs = 0, warned = 0;
 
 	for (size_t p = 0; p < sizeof hard / sizeof hard[0]; p++) {
-		struct scene sc;
+		struct hb_scene sc;
 
 		scene_preset(hard[p], &sc);
-		for (int st = 0; st < STEPPER_COUNT; st++)
+		for (int st = 0; st < HB_STEPPER_COUNT; st++)
 			for (size_t t = 0; t < sizeof tols / sizeof tols[0]; t++) {
-				struct scene s2 = sc;
-				struct check_physics r;
+				struct hb_scene s2 = sc;
+				struct hb_check_physics r;
 				char msg[2048] = "";
-				struct sim *s;
+				struct hb_sim *s;
 				int rc;
 
 				s2.run.stepper = st;
 				s2.run.rtol = s2.run.atol = tols[t];
-				s = sim_new(&s2, msg, sizeof msg);
+				s = hb_sim_new(&s2, msg, sizeof msg);
 				cr_assert_not_null(s, "%s", msg);
-				sim_advance(s, 0, 2.0);
-				rc = check_physics(sim_scene(s), sim_arc(s), &r, msg, sizeof msg);
+				hb_sim_advance(s, 0, 2.0);
+				rc = hb_check_physics(hb_sim_scene(s), hb_sim_arc(s), &r, msg, sizeof msg);
 				runs++;
 				cr_assert(rc == 0 || rc == HB_EINVAL);
 				cr_assert_eq(rc != 0, r.failed > 0);
 				cr_assert(rc == 0 || strlen(msg) > 40, "%s %s %g: '%s'", hard[p],
-				          scene_stepper_name(st), tols[t], msg);
-				cr_assert(rc != 0 || r.resid <= CHECK_PHYS_FACTOR * r.tol);
+				          hb_scene_stepper_name(st), tols[t], msg);
+				cr_assert(rc != 0 || r.resid <= HB_CHECK_PHYS_FACTOR * r.tol);
 				warned += rc != 0;
-				sim_free(s);
+				hb_sim_free(s);
 			}
 	}
 	cr_log_info("physics: %d runs, %d warned, %d passed", runs, warned, runs - warned);
-	cr_assert_eq(runs, 8 * STEPPER_COUNT * 6);
+	cr_assert_eq(runs, 8 * HB_STEPPER_COUNT * 6);
 	cr_assert_gt(warned, 0);
 	cr_assert_lt(warned, runs / 4);
 }

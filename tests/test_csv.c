@@ -28,20 +28,20 @@
 #include "testutil.h"
 
 /* Loads a preset, applies KEY=VALUE overrides, runs it to the end. */
-static struct sim *
+static struct hb_sim *
 run(const char *name, const char *const *set)
 {
 	char path[1024], msg[512] = "";
-	struct scene sc;
-	struct sim *s;
+	struct hb_scene sc;
+	struct hb_sim *s;
 
 	snprintf(path, sizeof path, "%s/%s.preset", preset_dir(), name);
-	cr_assert_eq(preset_load(path, &sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_preset_load(path, &sc, msg, sizeof msg), HB_OK, "%s", msg);
 	for (int i = 0; set != NULL && set[i] != NULL; i += 2)
-		cr_assert_eq(scene_set(&sc, set[i], set[i + 1], msg, sizeof msg), HB_OK, "%s", msg);
-	s = sim_new(&sc, msg, sizeof msg);
+		cr_assert_eq(hb_scene_set(&sc, set[i], set[i + 1], msg, sizeof msg), HB_OK, "%s", msg);
+	s = hb_sim_new(&sc, msg, sizeof msg);
 	cr_assert(s != NULL, "%s", msg);
-	cr_assert_eq(sim_run(s), HB_OK, "%s", sim_errmsg(s));
+	cr_assert_eq(hb_sim_run(s), HB_OK, "%s", hb_sim_errmsg(s));
 	return s;
 }
 
@@ -89,12 +89,12 @@ num_is(const char *field, double want, const char *what, size_t row)
 }
 
 static void
-check_arc_file(const char *path, const struct sim *s, const char *header)
+check_arc_file(const char *path, const struct hb_sim *s, const char *header)
 {
 	char *text = slurp(path), *p = text, *f[32];
-	const struct arc *a = sim_arc(s);
-	const struct scene *sc = sim_scene(s);
-	int nz = sc->law->n_z, full = sc->d.system == SCENE_FULL;
+	const struct hb_arc *a = hb_sim_arc(s);
+	const struct hb_scene *sc = hb_sim_scene(s);
+	int nz = sc->law->n_z, full = sc->d.system == HB_SCENE_FULL;
 	int nf = 8 + nz + (full ? 4 : 0);
 	size_t rows = 0;
 	char head[256];
@@ -105,13 +105,13 @@ check_arc_file(const char *path, const struct sim *s, const char *header)
 	snprintf(head, sizeof head, "%s", header);
 	for (;;) {
 		int n = fields(&p, f, 32);
-		const struct arc_sample *x;
+		const struct hb_arc_sample *x;
 		int k = 0;
 		if (n < 0)
 			break;
 		cr_assert_eq(n, nf, "row %zu has %d fields", rows, n);
-		cr_assert(rows < arc_len(a), "more rows than samples");
-		x = arc_at(a, rows);
+		cr_assert(rows < hb_arc_len(a), "more rows than samples");
+		x = hb_arc_at(a, rows);
 		num_is(f[k++], x->t, "t", rows);
 		cr_assert_eq(strtol(f[k++], NULL, 10), x->j);
 		cr_assert_eq(strtol(f[k++], NULL, 10), x->q);
@@ -130,7 +130,7 @@ check_arc_file(const char *path, const struct sim *s, const char *header)
 		}
 		rows++;
 	}
-	cr_assert_eq(rows, arc_len(a), "%zu rows for %zu samples", rows, arc_len(a));
+	cr_assert_eq(rows, hb_arc_len(a), "%zu rows for %zu samples", rows, hb_arc_len(a));
 	free(text);
 }
 
@@ -138,15 +138,15 @@ static const char *const coll_header =
     "i,t_e,t_s,t_d,t_f,v_i,e,x_c_max,F_c_max,x_c_r,W,J_Fc,J_Fe,Lambda";
 
 static size_t
-check_coll_file(const char *path, const struct sim *s)
+check_coll_file(const char *path, const struct hb_sim *s)
 {
 	char *text = slurp(path), *p = text, *f[32];
-	size_t rows = 0, nc = sim_ncollisions(s), k = 0;
+	size_t rows = 0, nc = hb_sim_ncollisions(s), k = 0;
 
 	cr_assert(strncmp(text, coll_header, strlen(coll_header)) == 0);
 	cr_assert_eq(fields(&p, f, 32), 14);
 	for (size_t i = 0; i < nc; i++) {
-		const struct collision *c = sim_collision(s, i);
+		const struct hb_collision *c = hb_sim_collision(s, i);
 		if (!c->complete)
 			continue;
 		cr_assert_eq(fields(&p, f, 32), 14, "collision %zu", i);
@@ -190,22 +190,22 @@ count_entries(const char *dir)
 Test(csv, reduced_linear_law)
 {
 	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], msg[512] = "";
-	struct sim *s = run("nonunique-separation", NULL);
+	struct hb_sim *s = run("nonunique-separation", NULL);
 
 	cr_assert(mkdtemp(dir) != NULL);
 	snprintf(path, sizeof path, "%s/arc.csv", dir);
 	snprintf(cpath, sizeof cpath, "%s/coll.csv", dir);
-	cr_assert_eq(csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
 	check_arc_file(path, s, "t,j,q_c,x,v,x_c,F_c,F_er");
-	cr_assert_eq(csv_write_collisions(cpath, s, msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert(sim_ncollisions(s) >= 1, "the example separates once");
+	cr_assert_eq(hb_csv_write_collisions(cpath, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert(hb_sim_ncollisions(s) >= 1, "the example separates once");
 	cr_assert(check_coll_file(cpath, s) >= 1);
 	/* Only the CSV files: no temporary left. */
 	cr_assert_eq(count_entries(dir), 2);
 	unlink(path);
 	unlink(cpath);
 	rmdir(dir);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 Test(csv, full_system_columns)
@@ -213,30 +213,30 @@ Test(csv, full_system_columns)
 	static const char *const set[] = { "run.T", "0.05 s", "run.rtol", "1e-9", "run.atol",
 		"1e-9", NULL };
 	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], msg[512] = "";
-	struct sim *s = run("ptfe-pom", set);
+	struct hb_sim *s = run("ptfe-pom", set);
 
 	cr_assert(mkdtemp(dir) != NULL);
 	snprintf(path, sizeof path, "%s/arc.csv", dir);
-	cr_assert_eq(csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
 	check_arc_file(path, s, "t,j,q_c,x,v,x_c,z_c1,F_c,F_er,x_m,v_m,v_m1,v_m2");
 	unlink(path);
 	rmdir(dir);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 Test(csv, two_internal_states)
 {
 	static const char *const set[] = { "run.T", "1 ms", NULL };
 	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], msg[512] = "";
-	struct sim *s = run("steel-on-bitumen", set);
+	struct hb_sim *s = run("steel-on-bitumen", set);
 
 	cr_assert(mkdtemp(dir) != NULL);
 	snprintf(path, sizeof path, "%s/arc.csv", dir);
-	cr_assert_eq(csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
 	check_arc_file(path, s, "t,j,q_c,x,v,x_c,z_c1,z_c2,F_c,F_er");
 	unlink(path);
 	rmdir(dir);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /* 1 if a field of the CSV text is a negative zero ("-0", "-0.0", "-0e+00"). */
@@ -258,20 +258,20 @@ Test(csv, no_negative_zero)
 {
 	static const char *const set[] = { "run.T", "20 ms", NULL };
 	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], msg[512] = "", *text;
-	struct sim *s = run("steel-on-bitumen", set);
-	const struct arc *a = sim_arc(s);
+	struct hb_sim *s = run("steel-on-bitumen", set);
+	const struct hb_arc *a = hb_sim_arc(s);
 	int engine_has = 0;
 
 	cr_assert(has_negative_zero("1,-0,2\n") && has_negative_zero("-0.0\n") &&
 	    !has_negative_zero("1,-0.5,2\n") && !has_negative_zero("1e-05,0\n"));
-	for (size_t i = 0; i < arc_len(a); i++)
-		engine_has |= arc_at(a, i)->Fc == 0 && signbit(arc_at(a, i)->Fc);
+	for (size_t i = 0; i < hb_arc_len(a); i++)
+		engine_has |= hb_arc_at(a, i)->Fc == 0 && signbit(hb_arc_at(a, i)->Fc);
 	cr_assert(engine_has, "no -0 in the engine's arc: the test checks nothing");
 	cr_assert(mkdtemp(dir) != NULL);
 	snprintf(path, sizeof path, "%s/arc.csv", dir);
 	snprintf(cpath, sizeof cpath, "%s/coll.csv", dir);
-	cr_assert_eq(csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert_eq(csv_write_collisions(cpath, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_write_collisions(cpath, s, msg, sizeof msg), HB_OK, "%s", msg);
 	text = slurp(path);
 	cr_assert(!has_negative_zero(text), "the trace holds a -0");
 	free(text);
@@ -281,27 +281,27 @@ Test(csv, no_negative_zero)
 	unlink(path);
 	unlink(cpath);
 	rmdir(dir);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 Test(csv, export_writes_scene_beside)
 {
 	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], sout[256] = "", want[256];
 	char msg[512] = "";
-	struct sim *s = run("hertz-elastic", NULL);
-	struct scene back;
+	struct hb_sim *s = run("hertz-elastic", NULL);
+	struct hb_scene back;
 
 	cr_assert(mkdtemp(dir) != NULL);
 	snprintf(path, sizeof path, "%s/run.csv", dir);
 	snprintf(cpath, sizeof cpath, "%s/run-collisions.csv", dir);
 	snprintf(want, sizeof want, "%s/run.preset", dir);
-	cr_assert_eq(csv_export(s, path, cpath, sout, sizeof sout, msg, sizeof msg), HB_OK, "%s",
+	cr_assert_eq(hb_csv_export(s, path, cpath, sout, sizeof sout, msg, sizeof msg), HB_OK, "%s",
 	    msg);
 	cr_assert_str_eq(sout, want);
 	check_arc_file(path, s, "t,j,q_c,x,v,x_c,F_c,F_er");
 	cr_assert(check_coll_file(cpath, s) >= 2, "the elastic ball bounces more than once");
-	cr_assert_eq(preset_load(want, &back, msg, sizeof msg), HB_OK, "%s", msg);
-	const struct scene *sc = sim_scene(s);
+	cr_assert_eq(hb_preset_load(want, &back, msg, sizeof msg), HB_OK, "%s", msg);
+	const struct hb_scene *sc = hb_sim_scene(s);
 	cr_assert_eq(back.law, sc->law);
 	cr_assert(memcmp(back.par, sc->par, sizeof back.par) == 0);
 	cr_assert(memcmp(&back.init, &sc->init, sizeof back.init) == 0);
@@ -310,27 +310,27 @@ Test(csv, export_writes_scene_beside)
 	cr_assert_eq(count_entries(dir), 3);
 	/* Only the collisions: the scene goes beside them. */
 	unlink(want);
-	cr_assert_eq(csv_export(s, NULL, cpath, sout, sizeof sout, msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_csv_export(s, NULL, cpath, sout, sizeof sout, msg, sizeof msg), HB_OK);
 	snprintf(want, sizeof want, "%s/run-collisions.preset", dir);
 	cr_assert_str_eq(sout, want);
 	unlink(want);
 	unlink(path);
 	unlink(cpath);
 	rmdir(dir);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 Test(csv, failure_leaves_nothing)
 {
 	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], spath[256], msg[512] = "";
-	struct sim *s = run("nonunique-separation", NULL);
+	struct hb_sim *s = run("nonunique-separation", NULL);
 	FILE *f;
 	char *old;
 
-	cr_assert_eq(csv_write_arc("/nonexistent/dir/x.csv", s, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(hb_csv_write_arc("/nonexistent/dir/x.csv", s, msg, sizeof msg), HB_EIO);
 	cr_assert(strncmp(msg, "/nonexistent/dir/x.csv: ", 24) == 0, "%s", msg);
 	cr_assert(access("/nonexistent/dir/x.csv", F_OK) != 0);
-	cr_assert_eq(csv_write_collisions("/nonexistent/dir/c.csv", s, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(hb_csv_write_collisions("/nonexistent/dir/c.csv", s, msg, sizeof msg), HB_EIO);
 
 	/* An export whose second file cannot be written: the first is not
 	 * left behind, the existing good file is untouched, no scene file. */
@@ -341,7 +341,7 @@ Test(csv, failure_leaves_nothing)
 	fputs("t,x\n1,2\n", f);
 	fclose(f);
 	snprintf(cpath, sizeof cpath, "/nonexistent/dir/c.csv");
-	cr_assert_eq(csv_export(s, path, cpath, NULL, 0, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(hb_csv_export(s, path, cpath, NULL, 0, msg, sizeof msg), HB_EIO);
 	cr_assert(strncmp(msg, cpath, strlen(cpath)) == 0, "%s", msg);
 	old = slurp(path);
 	cr_assert_str_eq(old, "t,x\n1,2\n");
@@ -356,7 +356,7 @@ Test(csv, failure_leaves_nothing)
 	snprintf(spath, sizeof spath, "%.200s/k", cpath);
 	f = fopen(spath, "w");
 	fclose(f);
-	cr_assert_eq(csv_export(s, path, cpath, NULL, 0, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_csv_export(s, path, cpath, NULL, 0, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "is a folder") != NULL, "%s", msg);
 	old = slurp(path);
 	cr_assert_str_eq(old, "t,x\n1,2\n", "the good file was replaced by a failed export");
@@ -367,10 +367,10 @@ Test(csv, failure_leaves_nothing)
 
 	/* Refuses to write the scene over the export itself. */
 	snprintf(cpath, sizeof cpath, "%s/x.preset", dir);
-	cr_assert_eq(csv_export(s, cpath, NULL, NULL, 0, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_csv_export(s, cpath, NULL, NULL, 0, msg, sizeof msg), HB_EINVAL);
 	unlink(path);
 	rmdir(dir);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /* ------------------------------------------------------------------ */
@@ -398,7 +398,7 @@ Test(csv, stream_is_byte_for_byte_the_file)
 {
 	static const char *const set[] = { "run.T", "0.05 s", NULL };
 	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], msg[512] = "";
-	struct sim *s = run("ptfe-pom", set);
+	struct hb_sim *s = run("ptfe-pom", set);
 	FILE *fa = tmpfile(), *fc = tmpfile();
 	char *file, *stream;
 
@@ -406,10 +406,10 @@ Test(csv, stream_is_byte_for_byte_the_file)
 	cr_assert(mkdtemp(dir) != NULL);
 	snprintf(path, sizeof path, "%s/arc.csv", dir);
 	snprintf(cpath, sizeof cpath, "%s/coll.csv", dir);
-	cr_assert_eq(csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert_eq(csv_write_collisions(cpath, s, msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert_eq(csv_stream_arc(fa, s, msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert_eq(csv_stream_collisions(fc, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_write_arc(path, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_write_collisions(cpath, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_stream_arc(fa, s, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_stream_collisions(fc, s, msg, sizeof msg), HB_OK, "%s", msg);
 
 	file = slurp(path);
 	stream = slurp_stream(fa);
@@ -430,7 +430,7 @@ Test(csv, stream_is_byte_for_byte_the_file)
 	unlink(path);
 	unlink(cpath);
 	rmdir(dir);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /* A stream that takes room bytes, then fails every write with err. */
@@ -458,27 +458,27 @@ Test(csv, stream_write_error_stops_and_keeps_errno)
 {
 	static const cookie_io_functions_t io = { NULL, sink_write, NULL, NULL };
 	struct sink k = { 2000, 0, ENOSPC, 0 };
-	struct sim *s = run("steel-on-bitumen", NULL);
+	struct hb_sim *s = run("steel-on-bitumen", NULL);
 	char msg[512] = "";
 	FILE *f = fopencookie(&k, "w", io);
 
 	cr_assert(f != NULL);
 	cr_assert(setvbuf(f, NULL, _IOFBF, 256) == 0);
-	cr_assert(arc_len(sim_arc(s)) > 1000, "an arc far longer than the room");
+	cr_assert(hb_arc_len(hb_sim_arc(s)) > 1000, "an arc far longer than the room");
 	errno = 0;
-	cr_assert_eq(csv_stream_arc(f, s, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(hb_csv_stream_arc(f, s, msg, sizeof msg), HB_EIO);
 	cr_assert_eq(errno, ENOSPC, "errno is %d, expected ENOSPC", errno);
 	cr_assert_str_eq(msg, "write error: No space left on device");
 	/* Stopped at the first failed row, not one failed write per buffer. */
 	cr_assert(k.fails >= 1 && k.fails <= 3, "%d failed writes", k.fails);
 	cr_assert(k.got <= k.room);
 	fclose(f);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 Test(csv, stream_to_a_closed_pipe_is_epipe)
 {
-	struct sim *s = run("nonunique-separation", NULL);
+	struct hb_sim *s = run("nonunique-separation", NULL);
 	char msg[512] = "";
 	int fd[2];
 	FILE *f;
@@ -490,13 +490,13 @@ Test(csv, stream_to_a_closed_pipe_is_epipe)
 	cr_assert(f != NULL);
 	errno = 0;
 	/* A short table: the failure shows at the final flush. */
-	cr_assert_eq(csv_stream_collisions(f, s, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(hb_csv_stream_collisions(f, s, msg, sizeof msg), HB_EIO);
 	cr_assert_eq(errno, EPIPE, "errno is %d, expected EPIPE", errno);
 	cr_assert(strncmp(msg, "write error: ", 13) == 0, "%s", msg);
 	/* A stream already in error fails too. */
-	cr_assert_eq(csv_stream_arc(f, s, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(hb_csv_stream_arc(f, s, msg, sizeof msg), HB_EIO);
 	fclose(f);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /* ------------------------------------------------------------------ */
@@ -515,8 +515,8 @@ put(const char *path, const char *text)
 Test(csv, export_keeps_a_link_and_writes_through_it)
 {
 	char dir[] = "/tmp/hb-csv-XXXXXX", real[256], link[256], cpath[256], msg[512] = "";
-	struct sim *s = run("nonunique-separation", NULL);
-	struct csv_export_report r;
+	struct hb_sim *s = run("nonunique-separation", NULL);
+	struct hb_csv_export_report r;
 	struct stat st;
 	char *text;
 
@@ -526,21 +526,21 @@ Test(csv, export_keeps_a_link_and_writes_through_it)
 	snprintf(cpath, sizeof cpath, "%s/coll.csv", dir);
 	put(real, "old\n");
 	cr_assert_eq(symlink("real.csv", link), 0);
-	cr_assert_eq(csv_export_files(s, link, cpath, NULL, &r, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_export_files(s, link, cpath, NULL, &r, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(lstat(link, &st), 0);
 	cr_assert(S_ISLNK(st.st_mode), "the link was replaced by a file");
-	cr_assert(r.target[0].via_link && r.target[0].how == ATOMIC_REPLACE);
+	cr_assert(r.target[0].via_link && r.target[0].how == HB_ATOMIC_REPLACE);
 	text = slurp(real);
 	cr_assert(strncmp(text, "t,j,q_c", 7) == 0, "the linked file was not written");
 	free(text);
-	cr_assert_eq(r.target[1].how, ATOMIC_NEW);
+	cr_assert_eq(r.target[1].how, HB_ATOMIC_NEW);
 	/* A dangling link: the file it names is created. */
 	unlink(real);
-	cr_assert_eq(csv_export_files(s, link, NULL, NULL, &r, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_export_files(s, link, NULL, NULL, &r, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(lstat(link, &st), 0);
 	cr_assert(S_ISLNK(st.st_mode));
 	cr_assert_eq(access(real, F_OK), 0);
-	cr_assert_eq(r.target[0].how, ATOMIC_NEW);
+	cr_assert_eq(r.target[0].how, HB_ATOMIC_NEW);
 	unlink(real);
 	unlink(link);
 	unlink(cpath);
@@ -548,65 +548,65 @@ Test(csv, export_keeps_a_link_and_writes_through_it)
 	unlink(real);
 	cr_assert_eq(count_entries(dir), 0);
 	rmdir(dir);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 Test(csv, export_writes_a_device_in_place_and_no_scene_beside_it)
 {
 	char dir[] = "/tmp/hb-csv-XXXXXX", cpath[256], want[256], msg[512] = "";
-	struct sim *s = run("nonunique-separation", NULL);
-	struct csv_export_report r;
+	struct hb_sim *s = run("nonunique-separation", NULL);
+	struct hb_csv_export_report r;
 	struct stat st;
 
 	cr_assert(mkdtemp(dir) != NULL);
 	snprintf(cpath, sizeof cpath, "%s/coll.csv", dir);
 	snprintf(want, sizeof want, "%s/coll.preset", dir);
-	cr_assert_eq(csv_export_files(s, "/dev/null", cpath, NULL, &r, msg, sizeof msg), HB_OK,
+	cr_assert_eq(hb_csv_export_files(s, "/dev/null", cpath, NULL, &r, msg, sizeof msg), HB_OK,
 	    "%s", msg);
-	cr_assert_eq(r.target[0].how, ATOMIC_IN_PLACE);
+	cr_assert_eq(r.target[0].how, HB_ATOMIC_IN_PLACE);
 	cr_assert_str_eq(r.scene, want, "the scene goes beside the file, not the device");
 	cr_assert_eq(stat("/dev/null", &st), 0);
 	cr_assert(S_ISCHR(st.st_mode));
 	cr_assert_eq(access("/dev/null.preset", F_OK), -1);
 	/* A device alone: no scene at all. */
-	cr_assert_eq(csv_export_files(s, NULL, "/dev/null", NULL, &r, msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_csv_export_files(s, NULL, "/dev/null", NULL, &r, msg, sizeof msg), HB_OK);
 	cr_assert_str_eq(r.scene, "");
 	/* A device that refuses the bytes fails the export. */
 	if (access("/dev/full", W_OK) == 0)
-		cr_assert_eq(csv_export_files(s, "/dev/full", NULL, NULL, &r, msg, sizeof msg),
+		cr_assert_eq(hb_csv_export_files(s, "/dev/full", NULL, NULL, &r, msg, sizeof msg),
 		    HB_EIO);
 	unlink(cpath);
 	unlink(want);
 	rmdir(dir);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 Test(csv, export_never_overwrites_the_preset_being_run)
 {
 	char dir[] = "/tmp/hb-csv-XXXXXX", pre[256], cpath[256], msg[512] = "";
-	struct sim *s = run("nonunique-separation", NULL);
-	struct csv_export_report r;
+	struct hb_sim *s = run("nonunique-separation", NULL);
+	struct hb_csv_export_report r;
 	char *text;
 
 	cr_assert(mkdtemp(dir) != NULL);
 	snprintf(pre, sizeof pre, "%s/my.preset", dir);
 	snprintf(cpath, sizeof cpath, "%s/my.csv", dir);
 	put(pre, "; my comments\n");
-	cr_assert_eq(csv_export_check(NULL, cpath, pre, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_csv_export_check(NULL, cpath, pre, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "is the preset being run") != NULL, "%s", msg);
-	cr_assert_eq(csv_export_files(s, NULL, cpath, pre, &r, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_csv_export_files(s, NULL, cpath, pre, &r, msg, sizeof msg), HB_EINVAL);
 	text = slurp(pre);
 	cr_assert_str_eq(text, "; my comments\n");
 	free(text);
 	cr_assert_eq(count_entries(dir), 1, "a file was written");
 	/* Another name is fine. */
 	snprintf(cpath, sizeof cpath, "%s/my-run.csv", dir);
-	cr_assert_eq(csv_export_files(s, NULL, cpath, pre, &r, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_export_files(s, NULL, cpath, pre, &r, msg, sizeof msg), HB_OK, "%s", msg);
 	unlink(cpath);
 	unlink(r.scene);
 	unlink(pre);
 	rmdir(dir);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /* The explorer names the scene BASE.preset; the rules of an export still hold for it. */
@@ -614,14 +614,14 @@ Test(csv, export_scene_named_by_the_caller)
 {
 	char dir[] = "/tmp/hb-csv-XXXXXX", pre[256], tpath[256], cpath[256], scene[256];
 	char msg[512] = "", *text;
-	struct sim *s = run("nonunique-separation", NULL);
-	struct csv_export_report r;
+	struct hb_sim *s = run("nonunique-separation", NULL);
+	struct hb_csv_export_report r;
 
 	cr_assert(mkdtemp(dir) != NULL);
 	snprintf(tpath, sizeof tpath, "%s/x-trace.csv", dir);
 	snprintf(cpath, sizeof cpath, "%s/x-collisions.csv", dir);
 	snprintf(scene, sizeof scene, "%s/x.preset", dir);
-	cr_assert_eq(csv_export_files_scene(s, tpath, cpath, scene, NULL, &r, msg, sizeof msg),
+	cr_assert_eq(hb_csv_export_files_scene(s, tpath, cpath, scene, NULL, &r, msg, sizeof msg),
 	    HB_OK, "%s", msg);
 	cr_assert_str_eq(r.scene, scene);
 	cr_assert_eq(r.scene_of, 0);
@@ -634,7 +634,7 @@ Test(csv, export_scene_named_by_the_caller)
 	put(pre, "; my comments\n");
 	snprintf(tpath, sizeof tpath, "%s/my-trace.csv", dir);
 	snprintf(cpath, sizeof cpath, "%s/my-collisions.csv", dir);
-	cr_assert_eq(csv_export_files_scene(s, tpath, cpath, pre, pre, &r, msg, sizeof msg),
+	cr_assert_eq(hb_csv_export_files_scene(s, tpath, cpath, pre, pre, &r, msg, sizeof msg),
 	    HB_EINVAL);
 	cr_assert(strstr(msg, "is the preset being run") != NULL, "%s", msg);
 	cr_assert_eq(count_entries(dir), 4, "a file was written");
@@ -642,11 +642,11 @@ Test(csv, export_scene_named_by_the_caller)
 	cr_assert_str_eq(text, "; my comments\n");
 	free(text);
 	/* NULL: the scene is derived from the first CSV, as before. */
-	cr_assert_eq(csv_export_files_scene(s, tpath, NULL, NULL, NULL, &r, msg, sizeof msg),
+	cr_assert_eq(hb_csv_export_files_scene(s, tpath, NULL, NULL, NULL, &r, msg, sizeof msg),
 	    HB_OK, "%s", msg);
 	snprintf(scene, sizeof scene, "%s/my-trace.preset", dir);
 	cr_assert_str_eq(r.scene, scene);
-	sim_free(s);
+	hb_sim_free(s);
 	{
 		static const char *const made[] = { "x-trace.csv", "x-collisions.csv", "x.preset",
 		                                    "my.preset", "my-trace.csv", "my-trace.preset" };
@@ -661,27 +661,27 @@ Test(csv, export_scene_named_by_the_caller)
 Test(csv, export_never_overwrites_a_shipped_preset)
 {
 	char msg[512] = "", path[1024];
-	struct sim *s = run("nonunique-separation", NULL);
-	struct csv_export_report r;
+	struct hb_sim *s = run("nonunique-separation", NULL);
+	struct hb_csv_export_report r;
 	const char *const *d;
 
-	cr_assert_eq(preset_resolve("steel-on-bitumen", path, sizeof path, msg, sizeof msg), HB_OK,
+	cr_assert_eq(hb_preset_resolve("steel-on-bitumen", path, sizeof path, msg, sizeof msg), HB_OK,
 	    "%s", msg);
-	d = preset_dirs();   /* after preset_resolve, which renews the per-thread list */
+	d = hb_preset_dirs();   /* after hb_preset_resolve, which renews the per-thread list */
 	cr_assert(d != NULL && d[0] != NULL);
 	strcpy(strrchr(path, '.'), ".csv");
-	cr_assert_eq(csv_export_files(s, path, NULL, NULL, &r, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_csv_export_files(s, path, NULL, NULL, &r, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "is a shipped preset") != NULL, "%s", msg);
 	cr_assert_eq(access(path, F_OK), -1, "the CSV was written");
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 Test(csv, export_stamps_every_file_alike_and_cleans_stale_temporaries)
 {
 	char dir[] = "/tmp/hb-csv-XXXXXX", path[256], cpath[256], stale[300], live[300];
 	char msg[512] = "", *text;
-	struct sim *s = run("nonunique-separation", NULL);
-	struct csv_export_report r;
+	struct hb_sim *s = run("nonunique-separation", NULL);
+	struct hb_csv_export_report r;
 	struct stat a, b, c;
 	pid_t dead;
 
@@ -701,11 +701,11 @@ Test(csv, export_stamps_every_file_alike_and_cleans_stale_temporaries)
 	put(live, "half");
 	put(cpath, "old\n");
 	chmod(cpath, 0640);
-	cr_assert_eq(csv_export_files(s, path, cpath, NULL, &r, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_csv_export_files(s, path, cpath, NULL, &r, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(access(stale, F_OK), -1, "the stale temporary file is still there");
 	cr_assert_eq(access(live, F_OK), 0, "a live process's temporary file was removed");
 	unlink(live);
-	cr_assert_eq(r.target[1].how, ATOMIC_REPLACE);
+	cr_assert_eq(r.target[1].how, HB_ATOMIC_REPLACE);
 	cr_assert_eq(stat(path, &a), 0);
 	cr_assert_eq(stat(cpath, &b), 0);
 	cr_assert_eq(stat(r.scene, &c), 0);
@@ -721,5 +721,5 @@ Test(csv, export_stamps_every_file_alike_and_cleans_stale_temporaries)
 	unlink(r.scene);
 	cr_assert_eq(count_entries(dir), 0);
 	rmdir(dir);
-	sim_free(s);
+	hb_sim_free(s);
 }

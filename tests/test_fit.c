@@ -28,16 +28,16 @@
 
 /* Drops at the velocities vi[0..n-1] with observable e and the ones in mask (1 << obs). */
 static void
-drops_of(struct fit_data *d, const double *vi, size_t n, int mask)
+drops_of(struct hb_fit_data *d, const double *vi, size_t n, int mask)
 {
 	memset(d, 0, sizeof *d);
-	d->kind = FIT_DROPS;
+	d->kind = HB_FIT_DROPS;
 	d->n = n;
 	snprintf(d->source, sizeof d->source, "synthetic drops");
 	d->vi = malloc(n * sizeof(double));
-	d->col[FIT_OBS_E] = malloc(n * sizeof(double));
-	d->sd[FIT_OBS_E] = malloc(n * sizeof(double));
-	for (int ob = FIT_OBS_XCR; ob < FIT_OBS_COUNT; ob++)
+	d->col[HB_FIT_OBS_E] = malloc(n * sizeof(double));
+	d->sd[HB_FIT_OBS_E] = malloc(n * sizeof(double));
+	for (int ob = HB_FIT_OBS_XCR; ob < HB_FIT_OBS_COUNT; ob++)
 		if (mask & (1 << ob)) {
 			d->col[ob] = malloc(n * sizeof(double));
 			d->sd[ob] = malloc(n * sizeof(double));
@@ -52,14 +52,14 @@ drops_of(struct fit_data *d, const double *vi, size_t n, int mask)
  * column (a measurement error of fixed size); the sd columns say so.
  */
 static void
-synthesize(struct fit_data *d, const struct scene *truth, double rel_sd, gsl_rng *rng)
+synthesize(struct hb_fit_data *d, const struct hb_scene *truth, double rel_sd, gsl_rng *rng)
 {
-	size_t np = fit_npoints(d), k = 0;
+	size_t np = hb_fit_npoints(d), k = 0;
 	double *y = malloc(np * sizeof *y);
 	char msg[512];
 
-	cr_assert_eq(fit_simulate(truth, d, 0, y, msg, sizeof msg), 0, "%s", msg);
-	for (int ob = FIT_OBS_E; ob < FIT_OBS_COUNT; ob++) {
+	cr_assert_eq(hb_fit_simulate(truth, d, 0, y, msg, sizeof msg), 0, "%s", msg);
+	for (int ob = HB_FIT_OBS_E; ob < HB_FIT_OBS_COUNT; ob++) {
 		if (d->col[ob] == NULL)
 			continue;
 		double m = 0;
@@ -78,40 +78,40 @@ synthesize(struct fit_data *d, const struct scene *truth, double rel_sd, gsl_rng
 
 /* Impact times of the first n collisions of scene sc. */
 static void
-impact_times(const struct scene *sc, size_t n, double *t)
+impact_times(const struct hb_scene *sc, size_t n, double *t)
 {
-	struct scene s2 = *sc;
-	struct sim *s;
+	struct hb_scene s2 = *sc;
+	struct hb_sim *s;
 	char msg[512];
 
 	s2.run.J = 2 * (long)n;
-	s = sim_new(&s2, msg, sizeof msg);
+	s = hb_sim_new(&s2, msg, sizeof msg);
 	cr_assert_not_null(s, "%s", msg);
-	sim_run(s);
-	cr_assert_geq(sim_ncollisions(s), n, "only %zu collisions", sim_ncollisions(s));
+	hb_sim_run(s);
+	cr_assert_geq(hb_sim_ncollisions(s), n, "only %zu collisions", hb_sim_ncollisions(s));
 	for (size_t i = 0; i < n; i++)
-		t[i] = sim_collision(s, i)->te;
-	sim_free(s);
+		t[i] = hb_sim_collision(s, i)->te;
+	hb_sim_free(s);
 }
 
 /* Fits and checks the estimates against truth: within 2 se, and to tol. */
 static void
-fit_check(const struct scene *start, const struct scene *truth, const struct fit_data *d,
+fit_check(const struct hb_scene *start, const struct hb_scene *truth, const struct hb_fit_data *d,
           const char *const *keys, int nk, double tol)
 {
-	struct fit_options o = { .keys = keys, .nkeys = nk };
-	struct fit_result r;
+	struct hb_fit_options o = { .keys = keys, .nkeys = nk };
+	struct hb_fit_result r;
 	char msg[512];
 
-	cr_assert_eq(fit_run(start, d, &o, &r, msg, sizeof msg), 0, "%s", msg);
-	cr_assert(r.reason <= FIT_CONVERGED_COST, "%s after %d iterations", r.why, r.iter);
+	cr_assert_eq(hb_fit_run(start, d, &o, &r, msg, sizeof msg), 0, "%s", msg);
+	cr_assert(r.reason <= HB_FIT_CONVERGED_COST, "%s after %d iterations", r.why, r.iter);
 	cr_assert_lt(r.cost, r.cost0);
 	cr_assert_eq(r.sd_scaled, 0);
 	cr_assert_gt(r.runs, nk);
 	for (int i = 0; i < nk; i++) {
 		double tv;
 
-		cr_assert_eq(fit_key_get(truth, keys[i], &tv, msg, sizeof msg), 0, "%s", msg);
+		cr_assert_eq(hb_fit_key_get(truth, keys[i], &tv, msg, sizeof msg), 0, "%s", msg);
 		cr_assert(isfinite(r.se[i]) && r.se[i] > 0, "%s: se %g", keys[i], r.se[i]);
 		cr_assert(fabs(r.value[i] - tv) <= 2 * r.se[i], "%s = %.9g +- %.3g, truth %.9g "
 		    "(%.2f se away)", keys[i], r.value[i], r.se[i], tv,
@@ -120,20 +120,20 @@ fit_check(const struct scene *start, const struct scene *truth, const struct fit
 			assert_rel(r.value[i], tv, tol);
 		/* the fitted scene holds the estimates */
 		double fv;
-		fit_key_get(&r.fitted, keys[i], &fv, msg, sizeof msg);
+		hb_fit_key_get(&r.fitted, keys[i], &fv, msg, sizeof msg);
 		cr_assert_eq(fv, r.value[i]);
 	}
 	for (int i = 0; i < nk; i++)
-		assert_abs(r.corr[i * FIT_MAX_FREE + i], 1, 1e-12);
-	fit_result_free(&r);
+		assert_abs(r.corr[i * HB_FIT_MAX_FREE + i], 1, 1e-12);
+	hb_fit_result_free(&r);
 }
 
 static void
-set(struct scene *sc, const char *key, const char *v)
+set(struct hb_scene *sc, const char *key, const char *v)
 {
 	char msg[512];
 
-	cr_assert_eq(scene_set(sc, key, v, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_scene_set(sc, key, v, msg, sizeof msg), 0, "%s", msg);
 }
 
 /*
@@ -145,21 +145,21 @@ shccl_case(gsl_rng *rng, double tol)
 {
 	static const double vi[] = { -0.0123, -0.0347, -0.0785, -0.156, -0.284, -0.512 };
 	static const char *const keys[] = { "law.c", "body2.E" };
-	struct scene truth, start;
-	struct fit_data d;
+	struct hb_scene truth, start;
+	struct hb_fit_data d;
 	char v[64];
 	double E2;
 
 	scene_preset("permanent-contact-shccl", &truth);
-	drops_of(&d, vi, 6, 1 << FIT_OBS_TD);
+	drops_of(&d, vi, 6, 1 << HB_FIT_OBS_TD);
 	synthesize(&d, &truth, 0.003, rng);
 	start = truth;
 	set(&start, "law.c", "1.5e9");
-	fit_key_get(&truth, "body2.E", &E2, v, sizeof v);
+	hb_fit_key_get(&truth, "body2.E", &E2, v, sizeof v);
 	snprintf(v, sizeof v, "%.17g", E2 * 2.5);
 	set(&start, "body2.E", v);
 	fit_check(&start, &truth, &d, keys, 2, tol);
-	fit_data_free(&d);
+	hb_fit_data_free(&d);
 }
 
 Test(fit, shccl_drops_noise_free)
@@ -182,17 +182,17 @@ bwshccl_case(gsl_rng *rng, double tol)
 {
 	static const double vi[] = { -0.0213, -0.0512, -0.0987, -0.173, -0.312, -0.587, -0.91 };
 	static const char *const keys[] = { "law.alpha", "law.c" };
-	struct scene truth, start;
-	struct fit_data d;
+	struct hb_scene truth, start;
+	struct hb_fit_data d;
 
 	scene_preset("permanent-contact-bwshccl", &truth);
-	drops_of(&d, vi, 7, 1 << FIT_OBS_XCR | 1 << FIT_OBS_TD);
+	drops_of(&d, vi, 7, 1 << HB_FIT_OBS_XCR | 1 << HB_FIT_OBS_TD);
 	synthesize(&d, &truth, 0.003, rng);
 	start = truth;
 	set(&start, "law.alpha", "0.62");
 	set(&start, "law.c", "1.1e7");
 	fit_check(&start, &truth, &d, keys, 2, tol);
-	fit_data_free(&d);
+	hb_fit_data_free(&d);
 }
 
 Test(fit, bwshccl_drops_noise_free)
@@ -211,7 +211,7 @@ Test(fit, bwshccl_drops_noisy)
 
 /* The first 9 impact times of truth, sd 20 us (a recording at 44.1 kHz), plus noise if rng. */
 static void
-sequence_of(const struct scene *truth, gsl_rng *rng, struct fit_data *d)
+sequence_of(const struct hb_scene *truth, gsl_rng *rng, struct hb_fit_data *d)
 {
 	double t[9], sd[9];
 	char msg[512];
@@ -222,7 +222,7 @@ sequence_of(const struct scene *truth, gsl_rng *rng, struct fit_data *d)
 		if (rng != NULL)
 			t[i] += gsl_ran_gaussian(rng, sd[i]);
 	}
-	cr_assert_eq(fit_data_from_times(t, sd, 9, "synthetic sequence", d, msg, sizeof msg), 0,
+	cr_assert_eq(hb_fit_data_from_times(t, sd, 9, "synthetic sequence", d, msg, sizeof msg), 0,
 	    "%s", msg);
 }
 
@@ -231,8 +231,8 @@ static void
 bwmcl_case(gsl_rng *rng, double tol)
 {
 	static const char *const keys[] = { "law.c", "law.alpha" };
-	struct scene truth, start;
-	struct fit_data d;
+	struct hb_scene truth, start;
+	struct hb_fit_data d;
 
 	scene_preset("steel-on-bitumen", &truth);
 	sequence_of(&truth, rng, &d);
@@ -240,7 +240,7 @@ bwmcl_case(gsl_rng *rng, double tol)
 	set(&start, "law.c", "3000");
 	set(&start, "law.alpha", "0.5");
 	fit_check(&start, &truth, &d, keys, 2, tol);
-	fit_data_free(&d);
+	hb_fit_data_free(&d);
 }
 
 Test(fit, bwmcl_sequence_noise_free)
@@ -266,10 +266,10 @@ Test(fit, bwmcl_sequence_noisy)
 Test(fit, wide_range_key_on_its_own_scale)
 {
 	static const char *const keys[] = { "law.c", "loads.g" };
-	struct fit_options o = { .keys = keys, .nkeys = 2 };
-	struct scene truth, start;
-	struct fit_data d;
-	struct fit_result r;
+	struct hb_fit_options o = { .keys = keys, .nkeys = 2 };
+	struct hb_scene truth, start;
+	struct hb_fit_data d;
+	struct hb_fit_result r;
 	char msg[512];
 
 	scene_preset("steel-on-bitumen", &truth);
@@ -277,12 +277,12 @@ Test(fit, wide_range_key_on_its_own_scale)
 	start = truth;
 	set(&start, "law.c", "4000");
 	set(&start, "loads.g", "9.5");
-	cr_assert_eq(fit_run(&start, &d, &o, &r, msg, sizeof msg), 0, "%s", msg);
-	cr_assert(r.reason <= FIT_CONVERGED_COST, "%s after %d iterations", r.why, r.iter);
+	cr_assert_eq(hb_fit_run(&start, &d, &o, &r, msg, sizeof msg), 0, "%s", msg);
+	cr_assert(r.reason <= HB_FIT_CONVERGED_COST, "%s after %d iterations", r.why, r.iter);
 	cr_assert(fabs(r.value[1] - 9.81) < 1e-6 * 9.81, "g = %.9g", r.value[1]);
 	cr_assert_leq(r.iter, 10, "%d iterations", r.iter);
-	fit_result_free(&r);
-	fit_data_free(&d);
+	hb_fit_result_free(&r);
+	hb_fit_data_free(&d);
 }
 
 /* The result does not depend on the number of threads, to the bit. */
@@ -290,10 +290,10 @@ Test(fit, threads_do_not_change_the_result)
 {
 	static const double vi[] = { -0.0123, -0.0785, -0.284 };
 	static const char *const keys[] = { "law.c" };
-	struct scene truth, start;
-	struct fit_data d;
-	struct fit_result r1, r3;
-	struct fit_options o = { .keys = keys, .nkeys = 1, .jobs = 1 };
+	struct hb_scene truth, start;
+	struct hb_fit_data d;
+	struct hb_fit_result r1, r3;
+	struct hb_fit_options o = { .keys = keys, .nkeys = 1, .jobs = 1 };
 	char msg[512];
 
 	scene_preset("permanent-contact-shccl", &truth);
@@ -301,15 +301,15 @@ Test(fit, threads_do_not_change_the_result)
 	synthesize(&d, &truth, 0.01, NULL);
 	start = truth;
 	set(&start, "law.c", "2e9");
-	cr_assert_eq(fit_run(&start, &d, &o, &r1, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_fit_run(&start, &d, &o, &r1, msg, sizeof msg), 0, "%s", msg);
 	o.jobs = 3;
-	cr_assert_eq(fit_run(&start, &d, &o, &r3, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_fit_run(&start, &d, &o, &r3, msg, sizeof msg), 0, "%s", msg);
 	cr_assert_eq(r1.value[0], r3.value[0]);
 	cr_assert_eq(r1.cost, r3.cost);
 	cr_assert_eq(r1.runs, r3.runs);
-	fit_result_free(&r1);
-	fit_result_free(&r3);
-	fit_data_free(&d);
+	hb_fit_result_free(&r1);
+	hb_fit_result_free(&r3);
+	hb_fit_data_free(&d);
 }
 
 /* E1 and E2 enter only through E*: the fit says they cannot be told apart. */
@@ -317,23 +317,23 @@ Test(fit, unidentifiable_pair_is_named)
 {
 	static const double vi[] = { -0.2, -0.4, -0.6 };
 	static const char *const keys[] = { "body1.E", "body2.E" };
-	struct scene truth;
-	struct fit_data d;
-	struct fit_result r;
-	struct fit_options o = { .keys = keys, .nkeys = 2 };
+	struct hb_scene truth;
+	struct hb_fit_data d;
+	struct hb_fit_result r;
+	struct hb_fit_options o = { .keys = keys, .nkeys = 2 };
 	char msg[512];
 
 	scene_preset("steel-on-bitumen", &truth);
-	drops_of(&d, vi, 3, 1 << FIT_OBS_XCR);
+	drops_of(&d, vi, 3, 1 << HB_FIT_OBS_XCR);
 	synthesize(&d, &truth, 0.01, NULL);
-	cr_assert_eq(fit_run(&truth, &d, &o, &r, msg, sizeof msg), 0, "%s", msg);
-	cr_assert_eq(r.reason, FIT_SINGULAR, "%s", r.why);
+	cr_assert_eq(hb_fit_run(&truth, &d, &o, &r, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(r.reason, HB_FIT_SINGULAR, "%s", r.why);
 	cr_assert_not_null(strstr(r.unident, "body1.E"), "%s", r.unident);
 	cr_assert_not_null(strstr(r.unident, "body2.E"), "%s", r.unident);
 	cr_assert(isnan(r.se[0]) && isnan(r.se[1]));
 	cr_assert_not_null(strstr(r.why, "not identifiable"), "%s", r.why);
-	fit_result_free(&r);
-	fit_data_free(&d);
+	hb_fit_result_free(&r);
+	hb_fit_data_free(&d);
 }
 
 /* Bad input: keys, starts, and a start at which nothing collides. */
@@ -341,55 +341,55 @@ Test(fit, bad_input_is_a_message)
 {
 	static const double vi[] = { -0.2, -0.4 };
 	const char *keys[2] = { "law.c", "law.c" };
-	struct scene sc;
-	struct fit_data d;
-	struct fit_result r;
-	struct fit_options o = { .keys = keys, .nkeys = 2 };
+	struct hb_scene sc;
+	struct hb_fit_data d;
+	struct hb_fit_result r;
+	struct hb_fit_options o = { .keys = keys, .nkeys = 2 };
 	double t[3] = { 0.1, 0.2, 0.25 };
 	char msg[512];
 
 	scene_preset("steel-on-bitumen", &sc);
 	drops_of(&d, vi, 2, 0);
 	synthesize(&d, &sc, 0.01, NULL);
-	cr_assert_eq(fit_run(&sc, &d, &o, &r, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_fit_run(&sc, &d, &o, &r, msg, sizeof msg), HB_EINVAL);
 	cr_assert_not_null(strstr(msg, "given twice"), "%s", msg);
-	fit_result_free(&r);
+	hb_fit_result_free(&r);
 
 	keys[1] = "law.k";
-	cr_assert_eq(fit_run(&sc, &d, &o, &r, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_fit_run(&sc, &d, &o, &r, msg, sizeof msg), HB_EINVAL);
 	cr_assert_not_null(strstr(msg, "derived"), "%s", msg);
-	fit_result_free(&r);
+	hb_fit_result_free(&r);
 
 	keys[1] = "law.nope";
-	cr_assert_eq(fit_run(&sc, &d, &o, &r, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_fit_run(&sc, &d, &o, &r, msg, sizeof msg), HB_EINVAL);
 	cr_assert_not_null(strstr(msg, "law.nope"), "%s", msg);
 	cr_assert_not_null(strstr(msg, "accepted"), "%s", msg);
-	fit_result_free(&r);
+	hb_fit_result_free(&r);
 
 	keys[1] = "law.alpha";
 	o.nkeys = 1;
 	keys[0] = "law.beta";
 	set(&sc, "law.gamma", "0");
 	set(&sc, "law.beta", "0");
-	cr_assert_eq(fit_run(&sc, &d, &o, &r, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_fit_run(&sc, &d, &o, &r, msg, sizeof msg), HB_EINVAL);
 	cr_assert_not_null(strstr(msg, "range"), "%s", msg);
-	fit_result_free(&r);
-	fit_data_free(&d);
+	hb_fit_result_free(&r);
+	hb_fit_data_free(&d);
 
 	/* no gravity and no velocity: the ball never lands */
 	scene_preset("steel-on-bitumen", &sc);
 	set(&sc, "loads.g", "0");
 	keys[0] = "law.c";
-	cr_assert_eq(fit_data_from_times(t, NULL, 3, "seq", &d, msg, sizeof msg), 0, "%s", msg);
-	cr_assert_eq(fit_run(&sc, &d, &o, &r, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_fit_data_from_times(t, NULL, 3, "seq", &d, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_fit_run(&sc, &d, &o, &r, msg, sizeof msg), HB_EINVAL);
 	cr_assert_not_null(strstr(msg, "at the start"), "%s", msg);
 	cr_assert_not_null(strstr(msg, "no collision"), "%s", msg);
-	fit_result_free(&r);
-	fit_data_free(&d);
+	hb_fit_result_free(&r);
+	hb_fit_data_free(&d);
 
 	/* times out of order */
 	t[2] = 0.15;
-	cr_assert_eq(fit_data_from_times(t, NULL, 3, "seq", &d, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_fit_data_from_times(t, NULL, 3, "seq", &d, msg, sizeof msg), HB_EINVAL);
 	cr_assert_not_null(strstr(msg, "increasing"), "%s", msg);
 }
 
@@ -412,51 +412,51 @@ tmpfile_with(const char *text)
 
 Test(fit_data, files_are_recognised_by_their_columns)
 {
-	struct fit_data d;
+	struct hb_fit_data d;
 	char msg[512];
 	const char *p;
 
 	p = tmpfile_with("# a drop test\nv_i,e,sd_e,x_c_r\n0.5,0.61,0.01,1e-5\n\n-0.25,0.7,0.02,5e-6\n");
-	cr_assert_eq(fit_data_load(p, &d, msg, sizeof msg), 0, "%s", msg);
-	cr_assert_eq(d.kind, FIT_DROPS);
+	cr_assert_eq(hb_fit_data_load(p, &d, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(d.kind, HB_FIT_DROPS);
 	cr_assert_eq(d.n, 2);
 	cr_assert_eq(d.vi[0], -0.5); /* the sign of v_i is ignored */
-	cr_assert_eq(d.col[FIT_OBS_E][1], 0.7);
-	cr_assert_eq(d.sd[FIT_OBS_E][1], 0.02);
-	cr_assert_null(d.sd[FIT_OBS_XCR]);
-	cr_assert_null(d.col[FIT_OBS_TD]);
-	cr_assert_eq(fit_npoints(&d), 4);
-	fit_data_free(&d);
+	cr_assert_eq(d.col[HB_FIT_OBS_E][1], 0.7);
+	cr_assert_eq(d.sd[HB_FIT_OBS_E][1], 0.02);
+	cr_assert_null(d.sd[HB_FIT_OBS_XCR]);
+	cr_assert_null(d.col[HB_FIT_OBS_TD]);
+	cr_assert_eq(hb_fit_npoints(&d), 4);
+	hb_fit_data_free(&d);
 	unlink(p);
 
 	p = tmpfile_with("i,t_e,v_i,e\n0,0.1,-1,0.5\n1,0.3,-0.5,0.5\n2,0.4,-0.25,0.5\n");
-	cr_assert_eq(fit_data_load(p, &d, msg, sizeof msg), 0, "%s", msg);
-	cr_assert_eq(d.kind, FIT_SEQUENCE); /* a collisions export is a sequence */
-	cr_assert_eq(fit_npoints(&d), 2);
-	fit_data_free(&d);
+	cr_assert_eq(hb_fit_data_load(p, &d, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(d.kind, HB_FIT_SEQUENCE); /* a collisions export is a sequence */
+	cr_assert_eq(hb_fit_npoints(&d), 2);
+	hb_fit_data_free(&d);
 	unlink(p);
 
 	p = tmpfile_with("a,b\n1,2\n");
-	cr_assert_eq(fit_data_load(p, &d, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_fit_data_load(p, &d, msg, sizeof msg), HB_EINVAL);
 	cr_assert_not_null(strstr(msg, ":1: no data columns"), "%s", msg);
 	unlink(p);
 
 	p = tmpfile_with("t_e\n0.1\nzero\n");
-	cr_assert_eq(fit_data_load(p, &d, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_fit_data_load(p, &d, msg, sizeof msg), HB_EINVAL);
 	cr_assert_not_null(strstr(msg, ":3: column t_e: 'zero'"), "%s", msg);
 	unlink(p);
 
 	p = tmpfile_with("t_e,sd_t_e\n0.1,0\n0.2,1e-5\n");
-	cr_assert_eq(fit_data_load(p, &d, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_fit_data_load(p, &d, msg, sizeof msg), HB_EINVAL);
 	cr_assert_not_null(strstr(msg, "sd_t_e"), "%s", msg);
 	unlink(p);
 
 	p = tmpfile_with("v_i,e\n0.1,0.5,7\n");
-	cr_assert_eq(fit_data_load(p, &d, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_fit_data_load(p, &d, msg, sizeof msg), HB_EINVAL);
 	cr_assert_not_null(strstr(msg, ":2: 3 fields"), "%s", msg);
 	unlink(p);
 
-	cr_assert_eq(fit_data_load("/nonexistent/x.csv", &d, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(hb_fit_data_load("/nonexistent/x.csv", &d, msg, sizeof msg), HB_EIO);
 	cr_assert_not_null(strstr(msg, "/nonexistent/x.csv"), "%s", msg);
 }
 
@@ -517,7 +517,7 @@ Test(onset, recording_gives_the_impact_times)
 {
 	double t[10], amp[10], e[10], flight = 0.30, v = 1;
 	char path[64], msg[512];
-	struct onset_result r;
+	struct hb_onset_result r;
 
 	snprintf(path, sizeof path, "/tmp/hybounce-onset-%ld.wav", (long)getpid());
 
@@ -534,7 +534,7 @@ Test(onset, recording_gives_the_impact_times)
 			t[i + 1] = t[i] + flight;
 	}
 	write_wav(path, t, amp, 10, t[9] + 0.2, 0.005, 11);
-	cr_assert_eq(onset_detect(path, NULL, &r, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_onset_detect(path, NULL, &r, msg, sizeof msg), 0, "%s", msg);
 	cr_assert_eq(r.n, 10, "%zu onsets", r.n);
 	cr_assert_eq(r.samplerate, 44100);
 	for (int i = 0; i < 10; i++)
@@ -542,79 +542,79 @@ Test(onset, recording_gives_the_impact_times)
 	/* e of collision i from the intervals on either side of it */
 	for (int i = 1; i + 1 < 10; i++)
 		assert_rel((r.t[i + 1] - r.t[i]) / (r.t[i] - r.t[i - 1]), e[i], 0.01);
-	onset_result_free(&r);
+	hb_onset_result_free(&r);
 
 	/* the times make a sequence the fit accepts */
-	struct fit_data d;
-	cr_assert_eq(onset_detect(path, NULL, &r, msg, sizeof msg), 0, "%s", msg);
-	cr_assert_eq(fit_data_from_times(r.t, NULL, r.n, path, &d, msg, sizeof msg), 0, "%s", msg);
-	cr_assert_eq(fit_npoints(&d), 9);
-	fit_data_free(&d);
-	onset_result_free(&r);
+	struct hb_fit_data d;
+	cr_assert_eq(hb_onset_detect(path, NULL, &r, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_fit_data_from_times(r.t, NULL, r.n, path, &d, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_fit_npoints(&d), 9);
+	hb_fit_data_free(&d);
+	hb_onset_result_free(&r);
 	unlink(path);
 }
 
 Test(onset, errors_name_the_file)
 {
-	struct onset_result r;
-	struct onset_options o = { .method = "nonsense" };
+	struct hb_onset_result r;
+	struct hb_onset_options o = { .method = "nonsense" };
 	double t[1] = { 0.1 }, amp[1] = { 0.5 };
 	const char *p = tmpfile_with("not a recording\n");
 	char msg[512], w[64];
 
 	snprintf(w, sizeof w, "/tmp/hybounce-onset2-%ld.wav", (long)getpid());
 
-	cr_assert_neq(onset_detect(p, NULL, &r, msg, sizeof msg), 0);
+	cr_assert_neq(hb_onset_detect(p, NULL, &r, msg, sizeof msg), 0);
 	cr_assert_not_null(strstr(msg, p), "%s", msg);
-	onset_result_free(&r);
+	hb_onset_result_free(&r);
 	unlink(p);
 
 	write_wav(w, t, amp, 1, 0.3, 0.001, 3);
-	cr_assert_eq(onset_detect(w, &o, &r, msg, sizeof msg),
+	cr_assert_eq(hb_onset_detect(w, &o, &r, msg, sizeof msg),
 	    HB_EINVAL);
 	cr_assert_not_null(strstr(msg, "nonsense"), "%s", msg);
-	onset_result_free(&r);
+	hb_onset_result_free(&r);
 
 	write_wav(w, t, amp, 0, 0.3, 0.001, 3);
-	cr_assert_eq(onset_detect(w, NULL, &r, msg, sizeof msg),
+	cr_assert_eq(hb_onset_detect(w, NULL, &r, msg, sizeof msg),
 	    HB_EINVAL);
 	cr_assert_not_null(strstr(msg, "no onsets"), "%s", msg);
-	onset_result_free(&r);
+	hb_onset_result_free(&r);
 	unlink(w);
 }
 
-/* fit_new / fit_iterate / fit_result_get: the best point so far while it runs,
- * and at the end exactly what fit_run gives. */
+/* hb_fit_new / hb_fit_iterate / hb_fit_result_get: the best point so far while it runs,
+ * and at the end exactly what hb_fit_run gives. */
 Test(fit, in_steps_as_fit_run)
 {
 	static const char *const keys[] = { "law.c", "law.alpha" };
-	struct fit_options o = { .keys = keys, .nkeys = 2 };
-	struct scene sc;
-	struct fit_data d;
-	struct fit_result r, mid, whole;
-	struct fit *f;
+	struct hb_fit_options o = { .keys = keys, .nkeys = 2 };
+	struct hb_scene sc;
+	struct hb_fit_data d;
+	struct hb_fit_result r, mid, whole;
+	struct hb_fit *f;
 	double t[8];
 	char msg[512];
 	int steps = 0;
 
 	scene_preset("steel-on-bitumen", &sc);
 	impact_times(&sc, 8, t);
-	cr_assert_eq(fit_data_from_times(t, NULL, 8, "seq", &d, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_fit_data_from_times(t, NULL, 8, "seq", &d, msg, sizeof msg), 0, "%s", msg);
 	set(&sc, "law.c", "3000");
 	set(&sc, "law.alpha", "0.5");
-	f = fit_new(&sc, &d, &o, msg, sizeof msg);
+	f = hb_fit_new(&sc, &d, &o, msg, sizeof msg);
 	cr_assert_not_null(f, "%s", msg);
-	cr_assert_eq(fit_iterate(f), 0);
-	cr_assert_eq(fit_result_get(f, &mid, msg, sizeof msg), 0, "%s", msg);
-	cr_assert_eq(mid.reason, FIT_RUNNING);
+	cr_assert_eq(hb_fit_iterate(f), 0);
+	cr_assert_eq(hb_fit_result_get(f, &mid, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(mid.reason, HB_FIT_RUNNING);
 	cr_assert_lt(mid.cost, mid.cost0);
 	cr_assert_eq(mid.iter, 1);
-	while (!fit_iterate(f))
+	while (!hb_fit_iterate(f))
 		steps++;
-	cr_assert_eq(fit_iterate(f), 1); /* stopped: nothing more happens */
-	cr_assert_eq(fit_result_get(f, &r, msg, sizeof msg), 0, "%s", msg);
-	fit_free(f);
-	cr_assert_eq(fit_run(&sc, &d, &o, &whole, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_fit_iterate(f), 1); /* stopped: nothing more happens */
+	cr_assert_eq(hb_fit_result_get(f, &r, msg, sizeof msg), 0, "%s", msg);
+	hb_fit_free(f);
+	cr_assert_eq(hb_fit_run(&sc, &d, &o, &whole, msg, sizeof msg), 0, "%s", msg);
 	cr_assert_eq(r.iter, whole.iter);
 	cr_assert_eq(r.value[0], whole.value[0]);
 	cr_assert_eq(r.value[1], whole.value[1]);
@@ -622,11 +622,11 @@ Test(fit, in_steps_as_fit_run)
 	cr_assert_eq(r.reason, whole.reason);
 	cr_assert_lt(r.cost, mid.cost);
 	cr_assert_gt(steps, 0);
-	fit_free(NULL);
-	fit_result_free(&mid);
-	fit_result_free(&r);
-	fit_result_free(&whole);
-	fit_data_free(&d);
+	hb_fit_free(NULL);
+	hb_fit_result_free(&mid);
+	hb_fit_result_free(&r);
+	hb_fit_result_free(&whole);
+	hb_fit_data_free(&d);
 }
 
 /*

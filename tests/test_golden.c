@@ -3,7 +3,7 @@
  * stored in tests/golden/NAME.csv, so that a change in any number is seen.
  *
  * Each preset runs to its end as batch mode runs it; its collisions are
- * written as the CSV the batch mode writes (csv_stream_collisions) and
+ * written as the CSV the batch mode writes (hb_csv_stream_collisions) and
  * compared with the stored table: the same header, the same rows, the same
  * empty fields, the index i exactly, and every other number x within
  *
@@ -138,8 +138,8 @@ colmax(const struct table *t, const char *name)
 static char *
 computed_csv(const char *name)
 {
-	struct scene sc;
-	struct sim *s;
+	struct hb_scene sc;
+	struct hb_sim *s;
 	char *buf = NULL, msg[512];
 	size_t len = 0;
 	FILE *f;
@@ -148,9 +148,9 @@ computed_csv(const char *name)
 	s = run_scene(&sc);
 	f = open_memstream(&buf, &len);
 	cr_assert_not_null(f);
-	cr_assert_eq(csv_stream_collisions(f, s, msg, sizeof msg), HB_OK, "%s: %s", name, msg);
+	cr_assert_eq(hb_csv_stream_collisions(f, s, msg, sizeof msg), HB_OK, "%s: %s", name, msg);
 	fclose(f);
-	sim_free(s);
+	hb_sim_free(s);
 	return buf;
 }
 
@@ -246,25 +246,25 @@ Test(golden, paper_presets_reproduce_their_collision_tables, .timeout = 300)
 /* The comparison sees a change: a run with c 1e-4 higher does not match its golden table. */
 Test(golden, a_changed_parameter_is_seen)
 {
-	struct scene sc;
-	struct sim *s;
+	struct hb_scene sc;
+	struct hb_sim *s;
 	char msg[512];
 	double e_golden, e_now;
 	struct table want;
 	int c;
 
 	scene_preset("steel-on-bitumen", &sc);
-	sc.par[law_param_index(sc.law, "c")] *= 1 + 1e-4;
-	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	sc.par[hb_law_param_index(sc.law, "c")] *= 1 + 1e-4;
+	cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
 	s = run_scene(&sc);
 	parse(slurp(GOLDEN_DIR "/steel-on-bitumen.csv"), &want, "steel-on-bitumen golden");
 	c = column(&want, "e");
-	cr_assert(c >= 0 && want.nrow > 0 && sim_ncollisions(s) > 0);
+	cr_assert(c >= 0 && want.nrow > 0 && hb_sim_ncollisions(s) > 0);
 	e_golden = strtod(cell(&want, 0, c), NULL);
-	e_now = sim_collision(s, 0)->e;
+	e_now = hb_sim_collision(s, 0)->e;
 	cr_assert(fabs(e_now - e_golden) > GOLDEN_TOL * (fabs(e_golden) + 1),
 	          "e of the first collision moved only %.3g with c 1e-4 higher: the tolerance "
 	          "%.3g would not see it", fabs(e_now - e_golden), GOLDEN_TOL);
 	table_free(&want);
-	sim_free(s);
+	hb_sim_free(s);
 }

@@ -2,7 +2,7 @@
  * test_hard.c - the hard cases of issue 4, one preset each
  * (presets/hard-*.preset).
  *
- * Each case asserts that the run reaches its horizon (SIM_END_T), that the
+ * Each case asserts that the run reaches its horizon (HB_SIM_END_T), that the
  * computed arc passes the paper's solution-pair check, and that its error
  * stays within the tolerance asked.  "Within the tolerance": run at
  * rtol = atol = TOL, measured against a reference run of the same scene at
@@ -37,37 +37,37 @@ struct herr {
 };
 
 static void
-set(struct scene *sc, const char *key, const char *val)
+set(struct hb_scene *sc, const char *key, const char *val)
 {
 	char msg[512];
 
-	cr_assert_eq(scene_set(sc, key, val, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_scene_set(sc, key, val, msg, sizeof msg), 0, "%s", msg);
 }
 
 /*
  * Runs the scene; asserts the run reaches T and passes the solution-pair
  * check.  The caller frees.
  */
-static struct sim *
-run_checked(const struct scene *sc, const char *what)
+static struct hb_sim *
+run_checked(const struct hb_scene *sc, const char *what)
 {
 	char msg[1024];
-	struct sim *s = sim_new(sc, msg, sizeof msg);
+	struct hb_sim *s = hb_sim_new(sc, msg, sizeof msg);
 
 	cr_assert_not_null(s, "%s: sim_new: %s", what, msg);
-	sim_run(s);
-	cr_assert_eq(sim_end(s), SIM_END_T, "%s (%s %g/%g): %s", what,
-	             scene_stepper_name(sc->run.stepper), sc->run.rtol, sc->run.atol,
-	             sim_end_str(s));
-	cr_assert_eq(check_solution_pair(sim_scene(s), sim_arc(s), msg, sizeof msg), 0,
+	hb_sim_run(s);
+	cr_assert_eq(hb_sim_end(s), HB_SIM_END_T, "%s (%s %g/%g): %s", what,
+	             hb_scene_stepper_name(sc->run.stepper), sc->run.rtol, sc->run.atol,
+	             hb_sim_end_str(s));
+	cr_assert_eq(hb_check_solution_pair(hb_sim_scene(s), hb_sim_arc(s), msg, sizeof msg), 0,
 	             "%s: solution pair: %s", what, msg);
 	return s;
 }
 
-static struct sim *
+static struct hb_sim *
 run_at(const char *name, int stepper, double rtol, double atol)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	scene_preset(name, &sc);
 	sc.run.stepper = stepper;
@@ -83,37 +83,37 @@ relerr(double a, double b)
 }
 
 static void
-errors(const struct sim *a, const struct sim *r, struct herr *e)
+errors(const struct hb_sim *a, const struct hb_sim *r, struct herr *e)
 {
-	size_t i, n = sim_ncollisions(a) < sim_ncollisions(r) ? sim_ncollisions(a)
-	                                                      : sim_ncollisions(r);
-	const struct arc *ra = sim_arc(r);
-	const struct arc_sample *la = arc_last(sim_arc(a)), *lr = arc_last(ra);
+	size_t i, n = hb_sim_ncollisions(a) < hb_sim_ncollisions(r) ? hb_sim_ncollisions(a)
+	                                                      : hb_sim_ncollisions(r);
+	const struct hb_arc *ra = hb_sim_arc(r);
+	const struct hb_arc_sample *la = hb_arc_last(hb_sim_arc(a)), *lr = hb_arc_last(ra);
 	double X = 0, V = 0;
 
 	memset(e, 0, sizeof *e);
 	for (i = 0; i < n; i++) {
-		const struct collision *p = sim_collision(a, i), *q = sim_collision(r, i);
+		const struct hb_collision *p = hb_sim_collision(a, i), *q = hb_sim_collision(r, i);
 
 		e->t = fmax(e->t, fmax(fabs(p->te - q->te), fabs(p->ts - q->ts)) / q->td);
 		e->e = fmax(e->e, relerr(p->e, q->e));
 		e->xc = fmax(e->xc, relerr(p->xcmax, q->xcmax));
 		e->F = fmax(e->F, relerr(p->Fcmax, q->Fcmax));
 	}
-	e->dn = (long)sim_ncollisions(a) - (long)sim_ncollisions(r);
+	e->dn = (long)hb_sim_ncollisions(a) - (long)hb_sim_ncollisions(r);
 	{
 		/* The contact in progress at T, when both runs end in one. */
-		struct collision p, q;
+		struct hb_collision p, q;
 
-		if (sim_contact_live(a, &p) && sim_contact_live(r, &q)) {
+		if (hb_sim_contact_live(a, &p) && hb_sim_contact_live(r, &q)) {
 			e->t = fmax(e->t, fabs(p.te - q.te) / fmax(q.td, 1e-300));
 			e->xc = fmax(e->xc, relerr(p.xcmax, q.xcmax));
 			e->F = fmax(e->F, relerr(p.Fcmax, q.Fcmax));
 		}
 	}
-	for (i = 0; i < arc_len(ra); i++) {
-		X = fmax(X, fabs(arc_at(ra, i)->x));
-		V = fmax(V, fabs(arc_at(ra, i)->v));
+	for (i = 0; i < hb_arc_len(ra); i++) {
+		X = fmax(X, fabs(hb_arc_at(ra, i)->x));
+		V = fmax(V, fabs(hb_arc_at(ra, i)->v));
 	}
 	e->T = fmax(fabs(la->x - lr->x) / X, fabs(la->v - lr->v) / V);
 }
@@ -122,30 +122,30 @@ errors(const struct sim *a, const struct sim *r, struct herr *e)
 static void
 assert_within_tolerance_with(const char *name, int stepper)
 {
-	struct sim *a = run_at(name, stepper, TOL, TOL);
-	struct sim *r = run_at(name, STEPPER_RK8PD, 1e-13, 1e-16);
+	struct hb_sim *a = run_at(name, stepper, TOL, TOL);
+	struct hb_sim *r = run_at(name, HB_STEPPER_RK8PD, 1e-13, 1e-16);
 	struct herr e;
 	double lim = GROWTH * TOL;
 
 	errors(a, r, &e);
 	if (getenv("HARD_VERBOSE"))
 		fprintf(stderr, "%-24s t %.1e e %.1e xc %.1e F %.1e T %.1e dn %ld n %zu\n", name, e.t,
-		        e.e, e.xc, e.F, e.T, e.dn, sim_ncollisions(r));
-	cr_expect_eq(e.dn, 0, "%s: %zu collisions, reference %zu", name, sim_ncollisions(a),
-	             sim_ncollisions(r));
+		        e.e, e.xc, e.F, e.T, e.dn, hb_sim_ncollisions(r));
+	cr_expect_eq(e.dn, 0, "%s: %zu collisions, reference %zu", name, hb_sim_ncollisions(a),
+	             hb_sim_ncollisions(r));
 	cr_expect_leq(e.t, lim, "%s: event times off by %.3g t_d (> %.3g)", name, e.t, lim);
 	cr_expect_leq(e.e, lim, "%s: restitution off by %.3g (> %.3g)", name, e.e, lim);
 	cr_expect_leq(e.xc, lim, "%s: x_c^max off by %.3g (> %.3g)", name, e.xc, lim);
 	cr_expect_leq(e.F, lim, "%s: F_c^max off by %.3g (> %.3g)", name, e.F, lim);
 	cr_expect_leq(e.T, lim, "%s: state at T off by %.3g (> %.3g)", name, e.T, lim);
-	sim_free(a);
-	sim_free(r);
+	hb_sim_free(a);
+	hb_sim_free(r);
 }
 
 static void
 assert_within_tolerance(const char *name)
 {
-	assert_within_tolerance_with(name, STEPPER_RK8PD);
+	assert_within_tolerance_with(name, HB_STEPPER_RK8PD);
 }
 
 /* BWMCL with c a thousand times smaller than the first study's. */
@@ -169,22 +169,22 @@ Test(hard, bouc_wen_n1)
 /* Drop from 1 um (third study's geometry): approach at sqrt(2 g x0). */
 Test(hard, drop_from_1um)
 {
-	struct scene sc;
-	struct sim *s;
-	struct collision c;
+	struct hb_scene sc;
+	struct hb_sim *s;
+	struct hb_collision c;
 	double vi;
 
 	assert_within_tolerance("hard-drop-1um");
 	scene_preset("hard-drop-1um", &sc);
 	vi = -sqrt(2 * sc.loads.g * sc.init.x0);
 	s = run_checked(&sc, "hard-drop-1um");
-	if (sim_ncollisions(s) > 0)
-		c = *sim_collision(s, 0);
+	if (hb_sim_ncollisions(s) > 0)
+		c = *hb_sim_collision(s, 0);
 	else
-		cr_assert(sim_contact_live(s, &c), "no contact by T");
+		cr_assert(hb_sim_contact_live(s, &c), "no contact by T");
 	cr_expect_leq(relerr(c.vi, vi), 1e-12, "first approach %.17g m/s, free fall gives %.17g",
 	              c.vi, vi);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /*
@@ -195,14 +195,14 @@ Test(hard, drop_from_1um)
  */
 Test(hard, bounce_sequence_end)
 {
-	struct sim *s;
+	struct hb_sim *s;
 
 	assert_within_tolerance("hard-bounce-end");
-	s = run_at("hard-bounce-end", STEPPER_RK8PD, 1e-12, 1e-12);
-	cr_expect_eq(arc_last(sim_arc(s))->q, 1, "the sequence should end in permanent contact");
-	cr_expect_leq(sim_stats(s)->jumps, 2 * (long)sim_ncollisions(s) + 1,
-	              "%ld jumps for %zu collisions", sim_stats(s)->jumps, sim_ncollisions(s));
-	sim_free(s);
+	s = run_at("hard-bounce-end", HB_STEPPER_RK8PD, 1e-12, 1e-12);
+	cr_expect_eq(hb_arc_last(hb_sim_arc(s))->q, 1, "the sequence should end in permanent contact");
+	cr_expect_leq(hb_sim_stats(s)->jumps, 2 * (long)hb_sim_ncollisions(s) + 1,
+	              "%ld jumps for %zu collisions", hb_sim_stats(s)->jumps, hb_sim_ncollisions(s));
+	hb_sim_free(s);
 }
 
 /*
@@ -213,36 +213,36 @@ Test(hard, bounce_sequence_end)
  */
 Test(hard, slow_impact_hertz)
 {
-	static const int steppers[] = { STEPPER_RK8PD, STEPPER_RKF45, STEPPER_RKCK,
-		                        STEPPER_MSBDF, STEPPER_RK4IMP, STEPPER_BSIMP,
-		                        STEPPER_DOP853 };
-	struct scene sc;
+	static const int steppers[] = { HB_STEPPER_RK8PD, HB_STEPPER_RKF45, HB_STEPPER_RKCK,
+		                        HB_STEPPER_MSBDF, HB_STEPPER_RK4IMP, HB_STEPPER_BSIMP,
+		                        HB_STEPPER_DOP853 };
+	struct hb_scene sc;
 	double m, k, v, d;
 	size_t i;
 
 	scene_preset("hard-slow-impact-hertz", &sc);
 	m = sc.d.m;
-	k = sc.par[law_param_index(sc.law, "k")];
+	k = sc.par[hb_law_param_index(sc.law, "k")];
 	v = fabs(sc.init.v0);
 	d = pow(5 * m * v * v / (4 * k), 0.4);
 	cr_assert(d < 1e-9 && d > 1e-11, "indentation %g should be near 1e-10 m", d);
 	for (i = 0; i < sizeof steppers / sizeof steppers[0]; i++) {
 		double tol = 1e-8;
-		struct sim *s = run_at("hard-slow-impact-hertz", steppers[i], tol, tol);
-		const struct collision *c;
-		const char *nm = scene_stepper_name(steppers[i]);
+		struct hb_sim *s = run_at("hard-slow-impact-hertz", steppers[i], tol, tol);
+		const struct hb_collision *c;
+		const char *nm = hb_scene_stepper_name(steppers[i]);
 
-		cr_assert_eq(sim_ncollisions(s), 1, "%s: %zu collisions", nm, sim_ncollisions(s));
-		c = sim_collision(s, 0);
+		cr_assert_eq(hb_sim_ncollisions(s), 1, "%s: %zu collisions", nm, hb_sim_ncollisions(s));
+		c = hb_sim_collision(s, 0);
 		cr_expect_leq(c->e, 1 + GROWTH * tol, "%s: e = %.17g > 1: energy created", nm, c->e);
 		cr_expect_leq(fabs(c->e - 1), GROWTH * tol, "%s: e = %.17g, elastic gives 1", nm, c->e);
 		cr_expect_leq(relerr(c->xcmax, d), GROWTH * tol, "%s: x_c^max = %.17g, closed form %.17g",
 		              nm, c->xcmax, d);
 		cr_expect_leq(relerr(c->Fcmax, k * pow(d, 1.5)), GROWTH * tol,
 		              "%s: F_c^max = %.17g, closed form %.17g", nm, c->Fcmax, k * pow(d, 1.5));
-		cr_expect_leq(relerr(arc_last(sim_arc(s))->v, v), GROWTH * tol,
-		              "%s: exit speed %.17g, approach %.17g", nm, arc_last(sim_arc(s))->v, v);
-		sim_free(s);
+		cr_expect_leq(relerr(hb_arc_last(hb_sim_arc(s))->v, v), GROWTH * tol,
+		              "%s: exit speed %.17g, approach %.17g", nm, hb_arc_last(hb_sim_arc(s))->v, v);
+		hb_sim_free(s);
 	}
 }
 
@@ -253,20 +253,20 @@ Test(hard, slow_impact_hertz)
  */
 Test(hard, slow_impact_dissipative)
 {
-	static const int steppers[] = { STEPPER_RK8PD, STEPPER_RKF45, STEPPER_RKCK, STEPPER_DOP853 };
+	static const int steppers[] = { HB_STEPPER_RK8PD, HB_STEPPER_RKF45, HB_STEPPER_RKCK, HB_STEPPER_DOP853 };
 	size_t i;
 
 	assert_within_tolerance("hard-slow-impact-shccl");
 	for (i = 0; i < sizeof steppers / sizeof steppers[0]; i++) {
-		struct sim *s = run_at("hard-slow-impact-shccl", steppers[i], 1e-8, 1e-8);
-		const char *nm = scene_stepper_name(steppers[i]);
-		const struct collision *c;
+		struct hb_sim *s = run_at("hard-slow-impact-shccl", steppers[i], 1e-8, 1e-8);
+		const char *nm = hb_scene_stepper_name(steppers[i]);
+		const struct hb_collision *c;
 
-		cr_assert_eq(sim_ncollisions(s), 1, "%s: %zu collisions", nm, sim_ncollisions(s));
-		c = sim_collision(s, 0);
+		cr_assert_eq(hb_sim_ncollisions(s), 1, "%s: %zu collisions", nm, hb_sim_ncollisions(s));
+		c = hb_sim_collision(s, 0);
 		cr_expect_lt(c->e, 1.0, "%s: e = %.17g >= 1 under a dissipative law", nm, c->e);
 		cr_expect_gt(c->W, 0.0, "%s: W = %g: energy created", nm, c->W);
-		sim_free(s);
+		hb_sim_free(s);
 	}
 }
 
@@ -279,27 +279,27 @@ Test(hard, slow_impact_dissipative)
  */
 Test(hard, linear_maxwell_never_separates)
 {
-	struct scene sc;
-	struct sim *s;
-	const struct arc_sample *l;
+	struct hb_scene sc;
+	struct hb_sim *s;
+	const struct hb_arc_sample *l;
 	double k, c, m, xinf;
 
 	scene_preset("hard-linear-maxwell", &sc);
-	k = sc.par[law_param_index(sc.law, "k")];
-	c = sc.par[law_param_index(sc.law, "c")];
+	k = sc.par[hb_law_param_index(sc.law, "k")];
+	c = sc.par[hb_law_param_index(sc.law, "c")];
 	m = sc.d.m;
 	cr_assert(c < sqrt(k * m) / 2, "the preset must be overdamped");
 	xinf = m * sc.init.v0 / c;
 	s = run_checked(&sc, "hard-linear-maxwell");
-	l = arc_last(sim_arc(s));
-	cr_expect_eq(sim_ncollisions(s), 0,
+	l = hb_arc_last(hb_sim_arc(s));
+	cr_expect_eq(hb_sim_ncollisions(s), 0,
 	             "spurious separation at t = %.6g s (v = %g m/s, F_c = %g N): the force "
-	             "never changes sign", sim_ncollisions(s) ? sim_collision(s, 0)->ts : 0.0,
+	             "never changes sign", hb_sim_ncollisions(s) ? hb_sim_collision(s, 0)->ts : 0.0,
 	             l->v, l->Fc);
 	cr_expect_eq(l->q, 1, "the bodies must still be in contact at T");
 	cr_expect_leq(fabs(l->x - xinf), GROWTH * TOL * fabs(xinf),
 	              "x(T) = %.17g, limit m v0 / c = %.17g", l->x, xinf);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /*
@@ -309,26 +309,26 @@ Test(hard, linear_maxwell_never_separates)
  */
 Test(hard, long_run_memory_bounded)
 {
-	struct scene sc;
-	struct sim *s, *r;
+	struct hb_scene sc;
+	struct hb_sim *s, *r;
 	size_t i;
 
 	scene_preset("steel-on-bitumen", &sc);
 	set(&sc, "run.T", "3 s");
 	set(&sc, "run.max_samples", "2048");
 	s = run_checked(&sc, "steel-on-bitumen, T = 3 s");
-	cr_expect_gt(arc_thinned(sim_arc(s)), 0, "no thinning with %zu samples",
-	             arc_len(sim_arc(s)));
-	cr_expect_leq(arc_len(sim_arc(s)), 2 * 2048, "%zu samples kept", arc_len(sim_arc(s)));
-	cr_expect_lt(arc_bytes(sim_arc(s)), 64u << 20, "arc holds %zu bytes", arc_bytes(sim_arc(s)));
-	cr_expect_eq(arc_at(sim_arc(s), 0)->t, 0.0, "the first sample must stay");
+	cr_expect_gt(hb_arc_thinned(hb_sim_arc(s)), 0, "no thinning with %zu samples",
+	             hb_arc_len(hb_sim_arc(s)));
+	cr_expect_leq(hb_arc_len(hb_sim_arc(s)), 2 * 2048, "%zu samples kept", hb_arc_len(hb_sim_arc(s)));
+	cr_expect_lt(hb_arc_bytes(hb_sim_arc(s)), 64u << 20, "arc holds %zu bytes", hb_arc_bytes(hb_sim_arc(s)));
+	cr_expect_eq(hb_arc_at(hb_sim_arc(s), 0)->t, 0.0, "the first sample must stay");
 	scene_preset("steel-on-bitumen", &sc);
 	r = run_checked(&sc, "steel-on-bitumen");
-	cr_expect_eq(sim_ncollisions(s), sim_ncollisions(r));
-	for (i = 0; i < sim_ncollisions(r) && i < sim_ncollisions(s); i++)
-		cr_expect_eq(sim_collision(s, i)->e, sim_collision(r, i)->e, "collision %zu", i);
-	sim_free(s);
-	sim_free(r);
+	cr_expect_eq(hb_sim_ncollisions(s), hb_sim_ncollisions(r));
+	for (i = 0; i < hb_sim_ncollisions(r) && i < hb_sim_ncollisions(s); i++)
+		cr_expect_eq(hb_sim_collision(s, i)->e, hb_sim_collision(r, i)->e, "collision %zu", i);
+	hb_sim_free(s);
+	hb_sim_free(r);
 }
 
 /*
@@ -346,9 +346,9 @@ Test(hard, stiff_contacts_go_implicit)
 	size_t i;
 
 	for (i = 0; i < 2; i++) {
-		struct sim *e = run_at(stiff[i], STEPPER_RK8PD, TOL, TOL);
-		struct sim *a = run_at(stiff[i], STEPPER_AUTO, TOL, TOL);
-		const struct sim_stats *se = sim_stats(e), *sa = sim_stats(a);
+		struct hb_sim *e = run_at(stiff[i], HB_STEPPER_RK8PD, TOL, TOL);
+		struct hb_sim *a = run_at(stiff[i], HB_STEPPER_AUTO, TOL, TOL);
+		const struct hb_sim_stats *se = hb_sim_stats(e), *sa = hb_sim_stats(a);
 
 		cr_expect_eq(se->stiff, 1, "%s: rk8pd not found stiff (h rho up to %g)", stiff[i],
 		             se->stiff_hrho);
@@ -356,22 +356,22 @@ Test(hard, stiff_contacts_go_implicit)
 		cr_expect_eq(sa->switched, 1, "%s: auto did not go over to bsimp", stiff[i]);
 		cr_expect_lt(sa->steps * 3, se->steps, "%s: auto %ld steps, rk8pd %ld", stiff[i],
 		             sa->steps, se->steps);
-		sim_free(e);
-		sim_free(a);
+		hb_sim_free(e);
+		hb_sim_free(a);
 	}
-	assert_within_tolerance_with("hard-stiff-maxwell", STEPPER_AUTO);
+	assert_within_tolerance_with("hard-stiff-maxwell", HB_STEPPER_AUTO);
 	for (i = 0; i < sizeof calm / sizeof calm[0]; i++) {
-		struct sim *e = run_at(calm[i], STEPPER_RK8PD, 1e-12, 1e-14);
-		struct sim *a = run_at(calm[i], STEPPER_AUTO, 1e-12, 1e-14);
-		const struct arc_sample *le = arc_last(sim_arc(e)), *la = arc_last(sim_arc(a));
+		struct hb_sim *e = run_at(calm[i], HB_STEPPER_RK8PD, 1e-12, 1e-14);
+		struct hb_sim *a = run_at(calm[i], HB_STEPPER_AUTO, 1e-12, 1e-14);
+		const struct hb_arc_sample *le = hb_arc_last(hb_sim_arc(e)), *la = hb_arc_last(hb_sim_arc(a));
 
-		cr_expect_eq(sim_stats(e)->stiff, 0, "%s found stiff (h rho %g)", calm[i],
-		             sim_stats(e)->stiff_hrho);
-		cr_expect_eq(sim_stats(a)->switched, 0, "%s: auto switched", calm[i]);
-		cr_expect(le->x == la->x && le->v == la->v && sim_ncollisions(e) == sim_ncollisions(a),
+		cr_expect_eq(hb_sim_stats(e)->stiff, 0, "%s found stiff (h rho %g)", calm[i],
+		             hb_sim_stats(e)->stiff_hrho);
+		cr_expect_eq(hb_sim_stats(a)->switched, 0, "%s: auto switched", calm[i]);
+		cr_expect(le->x == la->x && le->v == la->v && hb_sim_ncollisions(e) == hb_sim_ncollisions(a),
 		          "%s: auto differs from rk8pd", calm[i]);
-		sim_free(e);
-		sim_free(a);
+		hb_sim_free(e);
+		hb_sim_free(a);
 	}
 }
 
@@ -388,7 +388,7 @@ Test(hard, dop853_within_tolerance)
 	size_t i;
 
 	for (i = 0; i < sizeof names / sizeof names[0]; i++)
-		assert_within_tolerance_with(names[i], STEPPER_DOP853);
+		assert_within_tolerance_with(names[i], HB_STEPPER_DOP853);
 }
 
 /*
@@ -402,29 +402,29 @@ Test(hard, dop853_within_tolerance)
  */
 Test(hard, oscillatory_stiffness_sinking_phase, .timeout = 120)
 {
-	struct scene sc;
-	struct sim *e, *a;
-	const struct arc_sample *le, *la;
+	struct hb_scene sc;
+	struct hb_sim *e, *a;
+	const struct hb_arc_sample *le, *la;
 
 	scene_preset("steel-on-bitumen", &sc);
 	sc.run.T = 500.0;
-	sc.run.stepper = STEPPER_DOP853;
+	sc.run.stepper = HB_STEPPER_DOP853;
 	e = run_checked(&sc, "steel-on-bitumen T = 500 s");
-	sc.run.stepper = STEPPER_AUTO;
+	sc.run.stepper = HB_STEPPER_AUTO;
 	a = run_checked(&sc, "steel-on-bitumen T = 500 s");
-	cr_expect_eq(sim_stats(e)->stiff, 1, "the sinking phase not found stiff (h |lambda| up to %g)",
-	             sim_stats(e)->stiff_hrho);
-	cr_expect_eq(sim_stats(a)->switched, 1, "auto did not go over to bsimp");
-	cr_expect_lt(10 * sim_stats(a)->rhs, 3159570, "auto: %ld rhs evaluations", sim_stats(a)->rhs);
-	cr_expect_lt(10 * sim_stats(a)->rhs, sim_stats(e)->rhs, "auto %ld rhs, dop853 %ld",
-	             sim_stats(a)->rhs, sim_stats(e)->rhs);
-	le = arc_last(sim_arc(e));
-	la = arc_last(sim_arc(a));
+	cr_expect_eq(hb_sim_stats(e)->stiff, 1, "the sinking phase not found stiff (h |lambda| up to %g)",
+	             hb_sim_stats(e)->stiff_hrho);
+	cr_expect_eq(hb_sim_stats(a)->switched, 1, "auto did not go over to bsimp");
+	cr_expect_lt(10 * hb_sim_stats(a)->rhs, 3159570, "auto: %ld rhs evaluations", hb_sim_stats(a)->rhs);
+	cr_expect_lt(10 * hb_sim_stats(a)->rhs, hb_sim_stats(e)->rhs, "auto %ld rhs, dop853 %ld",
+	             hb_sim_stats(a)->rhs, hb_sim_stats(e)->rhs);
+	le = hb_arc_last(hb_sim_arc(e));
+	la = hb_arc_last(hb_sim_arc(a));
 	cr_expect_leq(fabs(la->x - le->x), 1e-9 * fabs(le->x), "x at T: auto %.15g, dop853 %.15g",
 	              la->x, le->x);
 	cr_expect_leq(fabs(la->v - le->v), 1e-6 * fabs(le->v), "v at T: auto %.15g, dop853 %.15g",
 	              la->v, le->v);
-	cr_expect_eq(sim_ncollisions(a), sim_ncollisions(e));
-	sim_free(e);
-	sim_free(a);
+	cr_expect_eq(hb_sim_ncollisions(a), hb_sim_ncollisions(e));
+	hb_sim_free(e);
+	hb_sim_free(a);
 }

@@ -20,18 +20,18 @@ static const double vs[] = { -2.385, -0.01, 0.0, 0.37, 5.1 };
 
 /* Parameter sets: the defaults, then each law with other exponents. */
 static void
-set_par(const struct law_type *law, double *par, const char *name, double v)
+set_par(const struct hb_law_type *law, double *par, const char *name, double v)
 {
-	int i = law_param_index(law, name);
+	int i = hb_law_param_index(law, name);
 
 	cr_assert(i >= 0, "%s has no parameter %s", law->name, name);
 	par[i] = v;
 }
 
 static int
-has_param(const struct law_type *law, const char *name)
+has_param(const struct hb_law_type *law, const char *name)
 {
-	return law_param_index(law, name) >= 0;
+	return hb_law_param_index(law, name) >= 0;
 }
 
 /*
@@ -42,12 +42,12 @@ has_param(const struct law_type *law, const char *name)
 enum { NVARIANT = 5 };
 
 static void
-variant(const struct law_type *law, int v, double *par)
+variant(const struct hb_law_type *law, int v, double *par)
 {
 	static const double ps[NVARIANT] = { 1.5, 1.0, 2.0, 2.7, 1.3 };
 	static const double ns[NVARIANT] = { 2.0, 1.0, 3.1, 2.0, 1.7 };
 
-	law_defaults(law, par);
+	hb_law_defaults(law, par);
 	if (v == 0)
 		return;
 	if (has_param(law, "p"))
@@ -55,7 +55,7 @@ variant(const struct law_type *law, int v, double *par)
 	if (has_param(law, "n"))
 		set_par(law, par, "n", ns[v]);
 	if (has_param(law, "gamma")) {
-		int ib = law_param_index(law, "beta");
+		int ib = hb_law_param_index(law, "beta");
 		set_par(law, par, "gamma", v % 2 ? -0.4 * par[ib] : 0.7 * par[ib]);
 		set_par(law, par, "A", v % 2 ? 1.3 : 0.8);
 	}
@@ -63,8 +63,8 @@ variant(const struct law_type *law, int v, double *par)
 
 Test(law, vanishing)
 {
-	const struct law_type *const *ls = law_list();
-	double par[LAW_MAX_PARAMS], z[LAW_MAX_Z] = { 0, 0 };
+	const struct hb_law_type *const *ls = hb_law_list();
+	double par[HB_LAW_MAX_PARAMS], z[HB_LAW_MAX_Z] = { 0, 0 };
 
 	for (int i = 0; ls[i] != NULL; i++)
 		for (int var = 0; var < NVARIANT; var++) {
@@ -91,20 +91,20 @@ static const double states[][4] = {
 
 /* Column scales for (x_c, z..., v). */
 static double
-col_scale(const struct law_type *law, int j)
+col_scale(const struct hb_law_type *law, int j)
 {
 	return j == law->n_z + 1 ? 1.0 : 1e-4;
 }
 
 /* w = (x_c, z..., v) packed. */
 static double
-eval_phi(const struct law_type *law, const double *par, int ext, const double *w)
+eval_phi(const struct hb_law_type *law, const double *par, int ext, const double *w)
 {
 	return law->phi(par, ext, w[0], w + 1, w[law->n_z + 1]);
 }
 
 static void
-eval_psi(const struct law_type *law, const double *par, int ext, const double *w,
+eval_psi(const struct hb_law_type *law, const double *par, int ext, const double *w,
          double *dz)
 {
 	law->psi(par, ext, w[0], w + 1, w[law->n_z + 1], dz);
@@ -116,9 +116,9 @@ eval_psi(const struct law_type *law, const double *par, int ext, const double *w
  * on one side of every kink.
  */
 static int
-near_kink(const struct law_type *law, const double *par, int ext, const double *w)
+near_kink(const struct hb_law_type *law, const double *par, int ext, const double *w)
 {
-	double g[LAW_MAX_KINKS];
+	double g[HB_LAW_MAX_KINKS];
 
 	law->kinks(par, ext, w[0], w + 1, w[law->n_z + 1], g);
 	for (int i = 0; i < law->n_kinks; i++)
@@ -132,7 +132,7 @@ near_kink(const struct law_type *law, const double *par, int ext, const double *
  * scales s_j, |fd_j - an_j| s_j <= tol (sum |an_j| s_j + tiny).
  */
 static void
-compare_row(const struct law_type *law, const char *what, int var, int ext,
+compare_row(const struct hb_law_type *law, const char *what, int var, int ext,
             int st, const double *an, const double *fd, double tiny)
 {
 	int m = law->n_z + 2;
@@ -151,22 +151,22 @@ compare_row(const struct law_type *law, const char *what, int var, int ext,
 
 Test(law, jacobian_finite_differences)
 {
-	const struct law_type *const *ls = law_list();
-	double par[LAW_MAX_PARAMS];
+	const struct hb_law_type *const *ls = hb_law_list();
+	double par[HB_LAW_MAX_PARAMS];
 	int checked = 0;
 
 	for (int i = 0; ls[i] != NULL; i++) {
-		const struct law_type *law = ls[i];
+		const struct hb_law_type *law = ls[i];
 		int m = law->n_z + 2, nz = law->n_z;
 
 		for (int var = 0; var < NVARIANT; var++) {
 			variant(law, var, par);
 			for (int ext = 0; ext <= 1; ext++)
 				for (size_t st = 0; st < NSTATE; st++) {
-					double w[LAW_MAX_Z + 2], dphi[LAW_MAX_Z + 2];
-					double dpsi[LAW_MAX_Z * (LAW_MAX_Z + 2)];
-					double fphi[LAW_MAX_Z + 2];
-					double fpsi[LAW_MAX_Z][LAW_MAX_Z + 2];
+					double w[HB_LAW_MAX_Z + 2], dphi[HB_LAW_MAX_Z + 2];
+					double dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)];
+					double fphi[HB_LAW_MAX_Z + 2];
+					double fpsi[HB_LAW_MAX_Z][HB_LAW_MAX_Z + 2];
 					double h0 = 1e-6;
 
 					w[0] = states[st][0];
@@ -178,9 +178,9 @@ Test(law, jacobian_finite_differences)
 					law->jac(par, ext, w[0], w + 1, w[m - 1], dphi,
 					    nz > 0 ? dpsi : NULL);
 					for (int j = 0; j < m; j++) {
-						double wp[LAW_MAX_Z + 2], wm[LAW_MAX_Z + 2];
+						double wp[HB_LAW_MAX_Z + 2], wm[HB_LAW_MAX_Z + 2];
 						double h = h0 * col_scale(law, j);
-						double dzp[LAW_MAX_Z], dzm[LAW_MAX_Z];
+						double dzp[HB_LAW_MAX_Z], dzm[HB_LAW_MAX_Z];
 
 						memcpy(wp, w, sizeof w);
 						memcpy(wm, w, sizeof w);
@@ -211,12 +211,12 @@ Test(law, jacobian_finite_differences)
 /* Partials are finite at x = 0, z = 0 for every exponent >= 1. */
 Test(law, jacobian_finite_at_origin)
 {
-	const struct law_type *const *ls = law_list();
-	double par[LAW_MAX_PARAMS], z[LAW_MAX_Z] = { 0, 0 };
-	double dphi[LAW_MAX_Z + 2], dpsi[LAW_MAX_Z * (LAW_MAX_Z + 2)], dz[LAW_MAX_Z];
+	const struct hb_law_type *const *ls = hb_law_list();
+	double par[HB_LAW_MAX_PARAMS], z[HB_LAW_MAX_Z] = { 0, 0 };
+	double dphi[HB_LAW_MAX_Z + 2], dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)], dz[HB_LAW_MAX_Z];
 
 	for (int i = 0; ls[i] != NULL; i++) {
-		const struct law_type *law = ls[i];
+		const struct hb_law_type *law = ls[i];
 		int m = law->n_z + 2;
 
 		for (int var = 0; var < NVARIANT; var++) {
@@ -241,23 +241,23 @@ Test(law, jacobian_finite_at_origin)
 /* The p = 1 derivative of x|x|^0 at 0 is k, not 0 (pow(0, 0) = 1). */
 Test(law, hertz_p1_slope_at_origin)
 {
-	double par[LAW_MAX_PARAMS], dphi[2];
+	double par[HB_LAW_MAX_PARAMS], dphi[2];
 
-	law_defaults(&law_hertz, par);
-	par[law_param_index(&law_hertz, "p")] = 1.0;
-	law_hertz.jac(par, 1, 0.0, NULL, 0.3, dphi, NULL);
+	hb_law_defaults(&hb_law_hertz, par);
+	par[hb_law_param_index(&hb_law_hertz, "p")] = 1.0;
+	hb_law_hertz.jac(par, 1, 0.0, NULL, 0.3, dphi, NULL);
 	cr_assert_float_eq(dphi[0], par[0], 1e-9 * par[0]);
 }
 
 Test(law, rule_r1_adhesive_continuation)
 {
-	const struct law_type *const *ls = law_list();
-	double par[LAW_MAX_PARAMS], z[LAW_MAX_Z] = { 0, 0 };
+	const struct hb_law_type *const *ls = hb_law_list();
+	double par[HB_LAW_MAX_PARAMS], z[HB_LAW_MAX_Z] = { 0, 0 };
 	static const double xs[] = { 1e-9, 3.7e-7, 2.1e-5 };
 	static const double vp[] = { 0.0, 0.37, 5.1 };
 
 	for (int i = 0; ls[i] != NULL; i++) {
-		if (ls[i] == &law_bwmcl)
+		if (ls[i] == &hb_law_bwmcl)
 			continue;
 		for (int var = 0; var < NVARIANT; var++) {
 			variant(ls[i], var, par);
@@ -273,8 +273,8 @@ Test(law, rule_r1_adhesive_continuation)
 
 Test(law, rule_r1_clamped)
 {
-	const struct law_type *const *ls = law_list();
-	double par[LAW_MAX_PARAMS];
+	const struct hb_law_type *const *ls = hb_law_list();
+	double par[HB_LAW_MAX_PARAMS];
 
 	for (int i = 0; ls[i] != NULL; i++)
 		for (int var = 0; var < NVARIANT; var++) {
@@ -300,11 +300,11 @@ Test(law, rule_r1_clamped)
  */
 Test(law, rule_r1_clamped_jacobian)
 {
-	const struct law_type *const *ls = law_list();
-	double par[LAW_MAX_PARAMS];
+	const struct hb_law_type *const *ls = hb_law_list();
+	double par[HB_LAW_MAX_PARAMS];
 
 	for (int i = 0; ls[i] != NULL; i++) {
-		const struct law_type *law = ls[i];
+		const struct hb_law_type *law = ls[i];
 		int m = law->n_z + 2;
 
 		for (int var = 0; var < NVARIANT; var++) {
@@ -312,9 +312,9 @@ Test(law, rule_r1_clamped_jacobian)
 			for (size_t st = 0; st < NSTATE; st++) {
 				const double *s = states[st];
 				double x = fabs(s[0]) + 1e-7;
-				double d[LAW_MAX_Z + 2], d0[LAW_MAX_Z + 2];
-				double p[LAW_MAX_Z * (LAW_MAX_Z + 2)];
-				double p0[LAW_MAX_Z * (LAW_MAX_Z + 2)];
+				double d[HB_LAW_MAX_Z + 2], d0[HB_LAW_MAX_Z + 2];
+				double p[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)];
+				double p0[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)];
 
 				law->jac(par, 0, x, s + 1, s[3], d, p);
 				law->jac(par, 0, 0.0, s + 1, s[3], d0, p0);
@@ -342,7 +342,7 @@ Test(law, bouc_wen_layout)
 {
 	static const char *const names[] = { "k", "A", "alpha", "beta", "gamma",
 	                                     "n", "p", "c" };
-	const struct law_type *bw[] = { &law_bwshccl, &law_bwmcl };
+	const struct hb_law_type *bw[] = { &hb_law_bwshccl, &hb_law_bwmcl };
 
 	for (int l = 0; l < 2; l++) {
 		cr_assert_eq(bw[l]->n_params, 8, "%s", bw[l]->name);
@@ -351,8 +351,8 @@ Test(law, bouc_wen_layout)
 			    bw[l]->name, j);
 	}
 	for (int j = 0; j < 7; j++) {
-		const struct law_param *a = &law_bwshccl.params[j];
-		const struct law_param *b = &law_bwmcl.params[j];
+		const struct hb_law_param *a = &hb_law_bwshccl.params[j];
+		const struct hb_law_param *b = &hb_law_bwmcl.params[j];
 
 		cr_assert(a->dim.kg == b->dim.kg && a->dim.m == b->dim.m
 		    && a->dim.s == b->dim.s && a->dim.mp == b->dim.mp
@@ -363,8 +363,8 @@ Test(law, bouc_wen_layout)
 	}
 	/* the shared rows k and p mean the same in SHCCL and Hertz too */
 	for (int j = 0; j < 2; j++) {
-		const struct law_param *a = &law_shccl.params[j];
-		const struct law_param *b = &law_hertz.params[j];
+		const struct hb_law_param *a = &hb_law_shccl.params[j];
+		const struct hb_law_param *b = &hb_law_hertz.params[j];
 
 		cr_assert_str_eq(a->name, b->name);
 		cr_assert(a->dim.m == b->dim.m && a->dim.mp == b->dim.mp
@@ -376,24 +376,24 @@ Test(law, bouc_wen_layout)
 /* BWMCL ignores x_c and ext altogether. */
 Test(law, bwmcl_independent_of_x_and_ext)
 {
-	double par[LAW_MAX_PARAMS], dz0[2], dz1[2];
+	double par[HB_LAW_MAX_PARAMS], dz0[2], dz1[2];
 
-	law_defaults(&law_bwmcl, par);
+	hb_law_defaults(&hb_law_bwmcl, par);
 	for (size_t st = 0; st < NSTATE; st++) {
 		const double *s = states[st];
-		double f = law_bwmcl.phi(par, 1, s[0], s + 1, s[3]);
+		double f = hb_law_bwmcl.phi(par, 1, s[0], s + 1, s[3]);
 
-		cr_assert(f == law_bwmcl.phi(par, 0, s[0], s + 1, s[3]));
-		cr_assert(f == law_bwmcl.phi(par, 1, -3 * s[0] + 1e-4, s + 1, s[3]));
-		law_bwmcl.psi(par, 0, s[0], s + 1, s[3], dz0);
-		law_bwmcl.psi(par, 1, 2.5e-3, s + 1, s[3], dz1);
+		cr_assert(f == hb_law_bwmcl.phi(par, 0, s[0], s + 1, s[3]));
+		cr_assert(f == hb_law_bwmcl.phi(par, 1, -3 * s[0] + 1e-4, s + 1, s[3]));
+		hb_law_bwmcl.psi(par, 0, s[0], s + 1, s[3], dz0);
+		hb_law_bwmcl.psi(par, 1, 2.5e-3, s + 1, s[3], dz1);
 		cr_assert(dz0[0] == dz1[0] && dz0[1] == dz1[1]);
 	}
 }
 
 Test(law, registry)
 {
-	const struct law_type *const *ls = law_list();
+	const struct hb_law_type *const *ls = hb_law_list();
 	static const char *names[NLAWS] = { "shccl", "bwshccl", "bwmcl", "hertz", "linear" };
 	static const int nz[NLAWS] = { 0, 1, 2, 0, 0 }; /* internal states in the paper */
 	int n = 0;
@@ -402,14 +402,14 @@ Test(law, registry)
 		n++;
 	cr_assert_eq(n, NLAWS);
 	for (int i = 0; i < NLAWS; i++) {
-		const struct law_type *law = law_find(names[i]);
+		const struct hb_law_type *law = hb_law_find(names[i]);
 		cr_assert_not_null(law, "%s", names[i]);
 		cr_assert_str_eq(law->name, names[i]);
 		cr_assert_eq(law->n_z, nz[i], "%s has %d internal states, the paper's law %d",
 		             names[i], law->n_z, nz[i]);
-		cr_assert(law->n_z <= LAW_MAX_Z);
-		cr_assert(law->n_params <= LAW_MAX_PARAMS);
-		cr_assert(law->n_kinks <= LAW_MAX_KINKS);
+		cr_assert(law->n_z <= HB_LAW_MAX_Z);
+		cr_assert(law->n_params <= HB_LAW_MAX_PARAMS);
+		cr_assert(law->n_kinks <= HB_LAW_MAX_KINKS);
 		cr_assert((law->n_z == 0) == (law->psi == NULL));
 		cr_assert((law->n_kinks == 0) == (law->kinks == NULL));
 		cr_assert(law->jac != NULL && law->phi != NULL);
@@ -418,54 +418,54 @@ Test(law, registry)
 		for (int j = 0; j < law->n_params; j++)
 			cr_assert(law->params[j].help != NULL && law->params[j].help[0] != '\0');
 	}
-	cr_assert_eq(law_find("BWMCL"), &law_bwmcl);
-	cr_assert_eq(law_find("BwShCcL"), &law_bwshccl);
-	cr_assert_eq(law_find("Hertz"), &law_hertz);
-	cr_assert_null(law_find("bwm"));
-	cr_assert_null(law_find("bwmcl "));
-	cr_assert_null(law_find(""));
-	cr_assert_null(law_find(NULL));
-	cr_assert_eq(law_hertz.k_hertz != NULL, 1);
-	cr_assert_null(law_linear.k_hertz);
-	cr_assert_eq(law_linear.params[0].flags & LAW_PARAM_STIFFNESS, 0);
-	cr_assert_eq(law_bwmcl.n_kinks, 3);
-	cr_assert_eq(law_bwshccl.n_kinks, 3);
-	cr_assert_eq(law_shccl.n_kinks, 1);
+	cr_assert_eq(hb_law_find("BWMCL"), &hb_law_bwmcl);
+	cr_assert_eq(hb_law_find("BwShCcL"), &hb_law_bwshccl);
+	cr_assert_eq(hb_law_find("Hertz"), &hb_law_hertz);
+	cr_assert_null(hb_law_find("bwm"));
+	cr_assert_null(hb_law_find("bwmcl "));
+	cr_assert_null(hb_law_find(""));
+	cr_assert_null(hb_law_find(NULL));
+	cr_assert_eq(hb_law_hertz.k_hertz != NULL, 1);
+	cr_assert_null(hb_law_linear.k_hertz);
+	cr_assert_eq(hb_law_linear.params[0].flags & HB_LAW_PARAM_STIFFNESS, 0);
+	cr_assert_eq(hb_law_bwmcl.n_kinks, 3);
+	cr_assert_eq(hb_law_bwshccl.n_kinks, 3);
+	cr_assert_eq(hb_law_shccl.n_kinks, 1);
 }
 
 Test(law, param_index_and_exponents)
 {
-	double par[LAW_MAX_PARAMS];
+	double par[HB_LAW_MAX_PARAMS];
 
-	cr_assert_eq(law_param_index(&law_bwmcl, "k"), 0);
-	cr_assert_eq(law_param_index(&law_bwmcl, "alpha"), 2);
-	cr_assert_eq(law_param_index(&law_bwmcl, "A"), 1);
-	cr_assert_eq(law_param_index(&law_bwmcl, "c"), 7);
-	cr_assert_eq(law_param_index(&law_bwmcl, "delta"), -1);
-	cr_assert_eq(law_param_index(&law_linear, "p"), -1);
-	law_defaults(&law_bwshccl, par);
-	par[law_param_index(&law_bwshccl, "p")] = 2.25;
-	par[law_param_index(&law_bwshccl, "n")] = 1.75;
-	cr_assert_eq(law_exponent_p(&law_bwshccl, par), 2.25);
-	cr_assert_eq(law_exponent_n(&law_bwshccl, par), 1.75);
-	law_defaults(&law_linear, par);
-	cr_assert_eq(law_exponent_p(&law_linear, par), 1.0);
-	cr_assert_eq(law_exponent_n(&law_linear, par), 1.0);
-	law_defaults(&law_shccl, par);
-	cr_assert_eq(law_exponent_p(&law_shccl, par), 1.5);
-	cr_assert_eq(law_exponent_n(&law_shccl, par), 1.0);
+	cr_assert_eq(hb_law_param_index(&hb_law_bwmcl, "k"), 0);
+	cr_assert_eq(hb_law_param_index(&hb_law_bwmcl, "alpha"), 2);
+	cr_assert_eq(hb_law_param_index(&hb_law_bwmcl, "A"), 1);
+	cr_assert_eq(hb_law_param_index(&hb_law_bwmcl, "c"), 7);
+	cr_assert_eq(hb_law_param_index(&hb_law_bwmcl, "delta"), -1);
+	cr_assert_eq(hb_law_param_index(&hb_law_linear, "p"), -1);
+	hb_law_defaults(&hb_law_bwshccl, par);
+	par[hb_law_param_index(&hb_law_bwshccl, "p")] = 2.25;
+	par[hb_law_param_index(&hb_law_bwshccl, "n")] = 1.75;
+	cr_assert_eq(hb_law_exponent_p(&hb_law_bwshccl, par), 2.25);
+	cr_assert_eq(hb_law_exponent_n(&hb_law_bwshccl, par), 1.75);
+	hb_law_defaults(&hb_law_linear, par);
+	cr_assert_eq(hb_law_exponent_p(&hb_law_linear, par), 1.0);
+	cr_assert_eq(hb_law_exponent_n(&hb_law_linear, par), 1.0);
+	hb_law_defaults(&hb_law_shccl, par);
+	cr_assert_eq(hb_law_exponent_p(&hb_law_shccl, par), 1.5);
+	cr_assert_eq(hb_law_exponent_n(&hb_law_shccl, par), 1.0);
 }
 
 Test(law, defaults_valid)
 {
-	const struct law_type *const *ls = law_list();
-	double par[LAW_MAX_PARAMS];
+	const struct hb_law_type *const *ls = hb_law_list();
+	double par[HB_LAW_MAX_PARAMS];
 	char msg[128];
 
 	for (int i = 0; ls[i] != NULL; i++) {
-		law_defaults(ls[i], par);
+		hb_law_defaults(ls[i], par);
 		for (int j = 0; j < ls[i]->n_params; j++)
-			cr_assert_eq(law_param_check(&ls[i]->params[j], par[j], msg, sizeof msg),
+			cr_assert_eq(hb_law_param_check(&ls[i]->params[j], par[j], msg, sizeof msg),
 			    HB_OK, "%s.%s: %s", ls[i]->name, ls[i]->params[j].name, msg);
 		if (ls[i]->check != NULL)
 			cr_assert_eq(ls[i]->check(par, msg, sizeof msg), HB_OK, "%s", msg);
@@ -474,10 +474,10 @@ Test(law, defaults_valid)
 
 Test(law, units)
 {
-	const struct law_param *k = &law_bwshccl.params[0];
-	const struct law_param *c = &law_bwshccl.params[7];
-	const struct law_param *cm = &law_bwmcl.params[7];
-	const struct law_param *b = &law_bwmcl.params[3];
+	const struct hb_law_param *k = &hb_law_bwshccl.params[0];
+	const struct hb_law_param *c = &hb_law_bwshccl.params[7];
+	const struct hb_law_param *cm = &hb_law_bwmcl.params[7];
+	const struct hb_law_param *b = &hb_law_bwmcl.params[3];
 
 	/* k: N m^-p = kg m^(1-p) s^-2 */
 	cr_assert(k->dim.kg == 1 && k->dim.m == 1 && k->dim.s == -2 && k->dim.mp == -1
@@ -487,18 +487,18 @@ Test(law, units)
 	/* c of BWMCL: N s/m = kg s^-1 */
 	cr_assert(cm->dim.kg == 1 && cm->dim.m == 0 && cm->dim.s == -1 && cm->dim.mp == 0);
 	cr_assert(b->dim.kg == 0 && b->dim.mn == -1 && b->dim.m == 0);
-	cr_assert(law_linear.params[0].dim.kg == 1 && law_linear.params[0].dim.s == -2
-	    && law_linear.params[0].dim.m == 0 && law_linear.params[0].dim.mp == 0);
+	cr_assert(hb_law_linear.params[0].dim.kg == 1 && hb_law_linear.params[0].dim.s == -2
+	    && hb_law_linear.params[0].dim.m == 0 && hb_law_linear.params[0].dim.mp == 0);
 }
 
 static void
-check_gamma(const struct law_type *law)
+check_gamma(const struct hb_law_type *law)
 {
-	double par[LAW_MAX_PARAMS];
+	double par[HB_LAW_MAX_PARAMS];
 	char msg[160];
-	int ib = law_param_index(law, "beta"), ig = law_param_index(law, "gamma");
+	int ib = hb_law_param_index(law, "beta"), ig = hb_law_param_index(law, "gamma");
 
-	law_defaults(law, par);
+	hb_law_defaults(law, par);
 	par[ib] = 2e8;
 	par[ig] = -2e8;
 	cr_assert_eq(law->check(par, msg, sizeof msg), HB_OK);
@@ -520,88 +520,88 @@ check_gamma(const struct law_type *law)
 
 Test(law, check_gamma)
 {
-	check_gamma(&law_bwshccl);
-	check_gamma(&law_bwmcl);
+	check_gamma(&hb_law_bwshccl);
+	check_gamma(&hb_law_bwmcl);
 }
 
 static void
-expect_reject(const struct law_type *law, const char *name, double value,
+expect_reject(const struct hb_law_type *law, const char *name, double value,
               const char *range)
 {
 	char msg[160] = "";
-	int i = law_param_index(law, name);
+	int i = hb_law_param_index(law, name);
 
 	cr_assert(i >= 0);
-	cr_assert_eq(law_param_check(&law->params[i], value, msg, sizeof msg), HB_EINVAL,
+	cr_assert_eq(hb_law_param_check(&law->params[i], value, msg, sizeof msg), HB_EINVAL,
 	    "%s.%s = %g accepted", law->name, name, value);
 	cr_assert(strstr(msg, name) == msg, "message: %s", msg);
 	cr_assert(strstr(msg, range) != NULL, "message '%s' lacks '%s'", msg, range);
 }
 
 static void
-expect_accept(const struct law_type *law, const char *name, double value)
+expect_accept(const struct hb_law_type *law, const char *name, double value)
 {
 	char msg[160] = "";
-	int i = law_param_index(law, name);
+	int i = hb_law_param_index(law, name);
 
-	cr_assert_eq(law_param_check(&law->params[i], value, msg, sizeof msg), HB_OK,
+	cr_assert_eq(hb_law_param_check(&law->params[i], value, msg, sizeof msg), HB_OK,
 	    "%s", msg);
 }
 
 Test(law, param_ranges)
 {
 	char msg[160];
-	int ia = law_param_index(&law_bwshccl, "alpha");
+	int ia = hb_law_param_index(&hb_law_bwshccl, "alpha");
 
-	cr_assert_eq(law_param_check(&law_bwshccl.params[ia], 1.2, msg, sizeof msg),
+	cr_assert_eq(hb_law_param_check(&hb_law_bwshccl.params[ia], 1.2, msg, sizeof msg),
 	    HB_EINVAL);
 	cr_assert_str_eq(msg, "alpha = 1.2 is out of range; accepted: (0, 1)");
-	expect_reject(&law_bwshccl, "alpha", 0.0, "(0, 1)");
-	expect_reject(&law_bwmcl, "alpha", 1.0, "(0, 1)");
-	expect_reject(&law_bwmcl, "n", 0.5, "[1, 1e+12]");
-	expect_reject(&law_shccl, "p", 0.9, "[1, 1e+12]");
-	expect_reject(&law_hertz, "k", 0.0, "(0, inf)");
-	expect_reject(&law_linear, "k", -3.0, "(0, inf)");
-	expect_reject(&law_bwmcl, "c", 0.0, "(0, inf)");
-	expect_reject(&law_shccl, "c", -1.0, "[0, inf)");
-	expect_reject(&law_bwshccl, "beta", -1.0, "[0, inf)");
-	expect_reject(&law_bwshccl, "A", 0.0, "(0, inf)");
-	expect_reject(&law_bwshccl, "k", NAN, "(0, inf)");
-	expect_reject(&law_bwshccl, "k", HUGE_VAL, "(0, inf)");
-	expect_accept(&law_bwshccl, "alpha", 0.999);
-	expect_accept(&law_bwshccl, "n", 1.0);
-	expect_accept(&law_shccl, "p", 1.0);
-	expect_accept(&law_shccl, "c", 0.0);
-	expect_accept(&law_bwshccl, "gamma", -3e9);
+	expect_reject(&hb_law_bwshccl, "alpha", 0.0, "(0, 1)");
+	expect_reject(&hb_law_bwmcl, "alpha", 1.0, "(0, 1)");
+	expect_reject(&hb_law_bwmcl, "n", 0.5, "[1, 1e+12]");
+	expect_reject(&hb_law_shccl, "p", 0.9, "[1, 1e+12]");
+	expect_reject(&hb_law_hertz, "k", 0.0, "(0, inf)");
+	expect_reject(&hb_law_linear, "k", -3.0, "(0, inf)");
+	expect_reject(&hb_law_bwmcl, "c", 0.0, "(0, inf)");
+	expect_reject(&hb_law_shccl, "c", -1.0, "[0, inf)");
+	expect_reject(&hb_law_bwshccl, "beta", -1.0, "[0, inf)");
+	expect_reject(&hb_law_bwshccl, "A", 0.0, "(0, inf)");
+	expect_reject(&hb_law_bwshccl, "k", NAN, "(0, inf)");
+	expect_reject(&hb_law_bwshccl, "k", HUGE_VAL, "(0, inf)");
+	expect_accept(&hb_law_bwshccl, "alpha", 0.999);
+	expect_accept(&hb_law_bwshccl, "n", 1.0);
+	expect_accept(&hb_law_shccl, "p", 1.0);
+	expect_accept(&hb_law_shccl, "c", 0.0);
+	expect_accept(&hb_law_bwshccl, "gamma", -3e9);
 }
 
 /* BWSHCCL with beta = gamma = 0, A = 1 and z = x is SHCCL. */
 Test(law, bwshccl_reduces_to_shccl)
 {
-	double pb[LAW_MAX_PARAMS], ps[LAW_MAX_PARAMS];
+	double pb[HB_LAW_MAX_PARAMS], ps[HB_LAW_MAX_PARAMS];
 	static const double ps_p[] = { 1.5, 1.0, 2.3 };
 
 	for (size_t q = 0; q < 3; q++) {
-		law_defaults(&law_bwshccl, pb);
-		law_defaults(&law_shccl, ps);
-		pb[law_param_index(&law_bwshccl, "beta")] = 0;
-		pb[law_param_index(&law_bwshccl, "gamma")] = 0;
-		pb[law_param_index(&law_bwshccl, "A")] = 1;
-		pb[law_param_index(&law_bwshccl, "k")] = 1.234e8;
-		pb[law_param_index(&law_bwshccl, "p")] = ps_p[q];
-		pb[law_param_index(&law_bwshccl, "c")] = 3.21e7;
-		ps[law_param_index(&law_shccl, "k")] = 1.234e8;
-		ps[law_param_index(&law_shccl, "p")] = ps_p[q];
-		ps[law_param_index(&law_shccl, "c")] = 3.21e7;
+		hb_law_defaults(&hb_law_bwshccl, pb);
+		hb_law_defaults(&hb_law_shccl, ps);
+		pb[hb_law_param_index(&hb_law_bwshccl, "beta")] = 0;
+		pb[hb_law_param_index(&hb_law_bwshccl, "gamma")] = 0;
+		pb[hb_law_param_index(&hb_law_bwshccl, "A")] = 1;
+		pb[hb_law_param_index(&hb_law_bwshccl, "k")] = 1.234e8;
+		pb[hb_law_param_index(&hb_law_bwshccl, "p")] = ps_p[q];
+		pb[hb_law_param_index(&hb_law_bwshccl, "c")] = 3.21e7;
+		ps[hb_law_param_index(&hb_law_shccl, "k")] = 1.234e8;
+		ps[hb_law_param_index(&hb_law_shccl, "p")] = ps_p[q];
+		ps[hb_law_param_index(&hb_law_shccl, "c")] = 3.21e7;
 		for (size_t st = 0; st < NSTATE; st++) {
 			double x = -fabs(states[st][0]), v = states[st][3], dz;
-			double fb = law_bwshccl.phi(pb, 1, x, &x, v);
-			double fs = law_shccl.phi(ps, 1, x, NULL, v);
+			double fb = hb_law_bwshccl.phi(pb, 1, x, &x, v);
+			double fs = hb_law_shccl.phi(ps, 1, x, NULL, v);
 
 			cr_assert(fabs(fb - fs) <= 1e-12 * fabs(fs), "p %g state %zu: %.15g vs %.15g",
 			    ps_p[q], st, fb, fs);
 			/* and z follows x: dz/dt = v */
-			law_bwshccl.psi(pb, 1, x, &x, v, &dz);
+			hb_law_bwshccl.psi(pb, 1, x, &x, v, &dz);
 			cr_assert_eq(dz, v);
 		}
 	}
@@ -609,83 +609,83 @@ Test(law, bwshccl_reduces_to_shccl)
 
 Test(law, known_values)
 {
-	double par[LAW_MAX_PARAMS], z[2] = { 0, 0 }, dz[2], g[3];
+	double par[HB_LAW_MAX_PARAMS], z[2] = { 0, 0 }, dz[2], g[3];
 	double kH = 7.095e7;
 
 	/* eq. k_hertz with A = 1: k = k_H. */
-	law_defaults(&law_bwshccl, par);
-	cr_assert_float_eq(law_bwshccl.k_hertz(par, kH), kH, 1e-6);
-	law_defaults(&law_bwmcl, par);
-	cr_assert_float_eq(law_bwmcl.k_hertz(par, kH), kH, 1e-6);
+	hb_law_defaults(&hb_law_bwshccl, par);
+	cr_assert_float_eq(hb_law_bwshccl.k_hertz(par, kH), kH, 1e-6);
+	hb_law_defaults(&hb_law_bwmcl, par);
+	cr_assert_float_eq(hb_law_bwmcl.k_hertz(par, kH), kH, 1e-6);
 	/* with A = 2, alpha = 0.35, p = 3/2: k_H / (0.35 + 0.65 * 2^1.5). */
-	par[law_param_index(&law_bwmcl, "A")] = 2.0;
-	assert_rel(law_bwmcl.k_hertz(par, kH), kH / (0.35 + 0.65 * pow(2, 1.5)), 1e-12);
-	cr_assert_eq(law_shccl.k_hertz(par, kH), kH);
-	law_defaults(&law_bwshccl, par);
-	par[law_param_index(&law_bwshccl, "A")] = 0.6;
-	par[law_param_index(&law_bwshccl, "alpha")] = 0.2;
-	par[law_param_index(&law_bwshccl, "p")] = 2.2;
-	assert_rel(law_bwshccl.k_hertz(par, kH), kH / (0.2 + 0.8 * pow(0.6, 2.2)), 1e-12);
+	par[hb_law_param_index(&hb_law_bwmcl, "A")] = 2.0;
+	assert_rel(hb_law_bwmcl.k_hertz(par, kH), kH / (0.35 + 0.65 * pow(2, 1.5)), 1e-12);
+	cr_assert_eq(hb_law_shccl.k_hertz(par, kH), kH);
+	hb_law_defaults(&hb_law_bwshccl, par);
+	par[hb_law_param_index(&hb_law_bwshccl, "A")] = 0.6;
+	par[hb_law_param_index(&hb_law_bwshccl, "alpha")] = 0.2;
+	par[hb_law_param_index(&hb_law_bwshccl, "p")] = 2.2;
+	assert_rel(hb_law_bwshccl.k_hertz(par, kH), kH / (0.2 + 0.8 * pow(0.6, 2.2)), 1e-12);
 
 	/* BWMCL Psi2 at z = (0, 0) equals v; Psi1 = A v there. */
-	law_defaults(&law_bwmcl, par);
-	par[law_param_index(&law_bwmcl, "A")] = 1.37;
+	hb_law_defaults(&hb_law_bwmcl, par);
+	par[hb_law_param_index(&hb_law_bwmcl, "A")] = 1.37;
 	for (size_t j = 0; j < NV; j++) {
-		law_bwmcl.psi(par, 1, -1e-4, z, vs[j], dz);
+		hb_law_bwmcl.psi(par, 1, -1e-4, z, vs[j], dz);
 		cr_assert_eq(dz[1], vs[j]);
 		cr_assert(fabs(dz[0] - 1.37 * vs[j]) <= 1e-15);
 	}
 
 	/* Hertz: Phi = k x sqrt|x| at p = 3/2. */
-	law_defaults(&law_hertz, par);
-	cr_assert(fabs(law_hertz.phi(par, 1, -1e-4, NULL, 0.3) - (-2.138e8 * 1e-6))
+	hb_law_defaults(&hb_law_hertz, par);
+	cr_assert(fabs(hb_law_hertz.phi(par, 1, -1e-4, NULL, 0.3) - (-2.138e8 * 1e-6))
 	    <= 1e-9);
 	/* Linear: k min(x, 0), and k x for x > 0 with ext = 1. */
-	law_defaults(&law_linear, par);
-	cr_assert_eq(law_linear.phi(par, 0, -2e-3, NULL, 1.0), -200.0);
-	cr_assert_eq(law_linear.phi(par, 0, 2e-3, NULL, 1.0), 0.0);
-	cr_assert_eq(law_linear.phi(par, 1, 2e-3, NULL, 1.0), 200.0);
+	hb_law_defaults(&hb_law_linear, par);
+	cr_assert_eq(hb_law_linear.phi(par, 0, -2e-3, NULL, 1.0), -200.0);
+	cr_assert_eq(hb_law_linear.phi(par, 0, 2e-3, NULL, 1.0), 0.0);
+	cr_assert_eq(hb_law_linear.phi(par, 1, 2e-3, NULL, 1.0), 200.0);
 
 	/* BWMCL Phi by hand: z1 = -1e-4, z2 = -4e-4, p = 3/2. */
-	law_defaults(&law_bwmcl, par);
+	hb_law_defaults(&hb_law_bwmcl, par);
 	z[0] = -1e-4;
 	z[1] = -4e-4;
 	{
 		double want = -(0.35 * 2.138e8 * 8e-6 + 0.65 * 2.138e8 * 1e-6);
-		double f = law_bwmcl.phi(par, 1, 0.0, z, 0.0);
+		double f = hb_law_bwmcl.phi(par, 1, 0.0, z, 0.0);
 		cr_assert(fabs(f - want) <= 1e-9 * fabs(want), "%g vs %g", f, want);
 		/* its kinks: z1, z2, Psi2 = v - Phi/c */
-		law_bwmcl.kinks(par, 1, -3e-4, z, 0.25, g);
+		hb_law_bwmcl.kinks(par, 1, -3e-4, z, 0.25, g);
 		cr_assert_eq(g[0], z[0]);
 		cr_assert_eq(g[1], z[1]);
 		cr_assert(fabs(g[2] - (0.25 - want / 4.4e3)) <= 1e-12);
-		law_bwmcl.psi(par, 1, -3e-4, z, 0.25, dz);
+		hb_law_bwmcl.psi(par, 1, -3e-4, z, 0.25, dz);
 		cr_assert_eq(g[2], dz[1]);
 	}
 
 	/* BWSHCCL Psi by hand, n = 2: A v - beta z|z| |v| - gamma z^2 v. */
-	law_defaults(&law_bwshccl, par);
+	hb_law_defaults(&hb_law_bwshccl, par);
 	z[0] = -2e-5;
-	law_bwshccl.psi(par, 1, -3e-5, z, -0.5, dz);
+	hb_law_bwshccl.psi(par, 1, -3e-5, z, -0.5, dz);
 	cr_assert(fabs(dz[0] - (-0.5 - 2.409e8 * (-4e-10) * 0.5 - 2.409e8 * 4e-10 * -0.5))
 	    <= 1e-14);
 }
 
 Test(law, kinks)
 {
-	double par[LAW_MAX_PARAMS], g[LAW_MAX_KINKS];
+	double par[HB_LAW_MAX_PARAMS], g[HB_LAW_MAX_KINKS];
 	double z[2] = { -3.3e-5, 1.7e-5 };
 
-	law_defaults(&law_bwshccl, par);
-	law_bwshccl.kinks(par, 1, -2.9e-5, z, 0.267, g);
+	hb_law_defaults(&hb_law_bwshccl, par);
+	hb_law_bwshccl.kinks(par, 1, -2.9e-5, z, 0.267, g);
 	cr_assert(g[0] == -2.9e-5 && g[1] == z[0] && g[2] == 0.267);
-	law_defaults(&law_shccl, par);
-	law_shccl.kinks(par, 0, 1.5e-6, NULL, 0.3, g);
+	hb_law_defaults(&hb_law_shccl, par);
+	hb_law_shccl.kinks(par, 0, 1.5e-6, NULL, 0.3, g);
 	cr_assert_eq(g[0], 1.5e-6);
-	law_defaults(&law_hertz, par);
-	law_hertz.kinks(par, 1, -7e-6, NULL, 0.3, g);
+	hb_law_defaults(&hb_law_hertz, par);
+	hb_law_hertz.kinks(par, 1, -7e-6, NULL, 0.3, g);
 	cr_assert_eq(g[0], -7e-6);
-	law_defaults(&law_linear, par);
-	law_linear.kinks(par, 1, 2e-6, NULL, 0.3, g);
+	hb_law_defaults(&hb_law_linear, par);
+	hb_law_linear.kinks(par, 1, 2e-6, NULL, 0.3, g);
 	cr_assert_eq(g[0], 2e-6);
 }

@@ -24,10 +24,10 @@ Test(paper, every_preset_is_a_solution_pair_and_keeps_energy, .timeout = 300)
 	while ((e = readdir(d)) != NULL) {
 		char name[256], msg[1024];
 		size_t len = strlen(e->d_name), i;
-		struct scene sc;
-		struct sim *s;
-		const struct arc *arc;
-		const struct arc_sample *l;
+		struct hb_scene sc;
+		struct hb_sim *s;
+		const struct hb_arc *arc;
+		const struct hb_arc_sample *l;
 		double kemax = 0.0, dke, work;
 
 		if (len < 8 || strcmp(e->d_name + len - 7, ".preset") != 0)
@@ -35,18 +35,18 @@ Test(paper, every_preset_is_a_solution_pair_and_keeps_energy, .timeout = 300)
 		snprintf(name, sizeof name, "%.*s", (int)(len - 7), e->d_name);
 		scene_preset(name, &sc);
 		s = run_scene(&sc);
-		arc = sim_arc(s);
-		cr_assert_eq(check_solution_pair(&sc, arc, msg, sizeof msg), 0, "%s: %s", name, msg);
-		for (i = 0; i < arc_len(arc); i++)
-			kemax = fmax(kemax, 0.5 * sc.d.m * arc_at(arc, i)->v * arc_at(arc, i)->v);
-		l = arc_last(arc);
+		arc = hb_sim_arc(s);
+		cr_assert_eq(hb_check_solution_pair(&sc, arc, msg, sizeof msg), 0, "%s: %s", name, msg);
+		for (i = 0; i < hb_arc_len(arc); i++)
+			kemax = fmax(kemax, 0.5 * sc.d.m * hb_arc_at(arc, i)->v * hb_arc_at(arc, i)->v);
+		l = hb_arc_last(arc);
 		dke = 0.5 * sc.d.m * (l->v * l->v - sc.init.v0 * sc.init.v0);
 		work = l->Wc + l->Ee;
 		if (kemax > 0)
 			cr_assert(fabs(dke - work) <= 1e-8 * kemax,
 			          "%s: work-energy identity: dKE = %.17g, int (F_c + F_er) v dt = %.17g (%.3g of KE max)",
 			          name, dke, work, fabs(dke - work) / kemax);
-		sim_free(s);
+		hb_sim_free(s);
 		count++;
 	}
 	closedir(d);
@@ -59,26 +59,26 @@ Test(paper, forward_euler_order_on_every_paper_preset, .timeout = 600)
 	const char *const *p;
 
 	for (p = paper_presets; *p; p++) {
-		struct scene sc;
-		struct sim *s;
+		struct hb_scene sc;
+		struct hb_sim *s;
 		size_t k, checked = 0;
 
 		scene_preset(*p, &sc);
 		s = run_scene(&sc);
-		for (k = 0; k < arc_nintervals(sim_arc(s)); k++) {
-			const struct arc_interval *iv = arc_interval_at(sim_arc(s), k);
+		for (k = 0; k < hb_arc_nintervals(hb_sim_arc(s)); k++) {
+			const struct hb_arc_interval *iv = hb_arc_interval_at(hb_sim_arc(s), k);
 			double order;
 			char msg[512];
 
 			if (!(iv->t1 > iv->t0))
 				continue;
-			cr_assert_eq(check_euler(&sc, sim_arc(s), k, &order, msg, sizeof msg), 0, "%s: %s", *p, msg);
+			cr_assert_eq(hb_check_euler(&sc, hb_sim_arc(s), k, &order, msg, sizeof msg), 0, "%s: %s", *p, msg);
 			cr_assert(order >= 0.9, "%s: interval %zu (j = %ld, q_c = %d, [%.9g, %.9g]): order %.3f",
 			          *p, k, iv->j, iv->q, iv->t0, iv->t1, order);
 			checked++;
 		}
 		cr_assert(checked >= 1, "%s", *p);
-		sim_free(s);
+		hb_sim_free(s);
 	}
 }
 
@@ -95,44 +95,44 @@ Test(paper, every_stepper_on_every_paper_preset, .timeout = 600)
 	const char *const *p;
 
 	for (p = paper_presets; *p; p++) {
-		struct scene sc;
-		struct sim *ref;
+		struct hb_scene sc;
+		struct hb_sim *ref;
 		int st;
 
 		scene_preset(*p, &sc);
 		ref = run_scene(&sc);
-		for (st = 0; st < STEPPER_COUNT; st++) {
-			struct scene sc2 = sc;
-			struct sim *s;
+		for (st = 0; st < HB_STEPPER_COUNT; st++) {
+			struct hb_scene sc2 = sc;
+			struct hb_sim *s;
 			char msg[1024];
 			size_t i, n;
 
 			sc2.run.stepper = st;
 			sc2.run.rtol = sc2.run.atol = 1e-10;
-			s = sim_new(&sc2, msg, sizeof msg);
+			s = hb_sim_new(&sc2, msg, sizeof msg);
 			cr_assert_not_null(s, "%s: %s", *p, msg);
-			cr_assert_eq(sim_run(s), 0, "%s with %s: %s", *p, scene_stepper_name(st), sim_errmsg(s));
-			cr_assert_eq(sim_end(s), SIM_END_T, "%s with %s: %s", *p, scene_stepper_name(st),
-			             sim_end_str(s));
-			cr_assert_eq(check_solution_pair(&sc2, sim_arc(s), msg, sizeof msg), 0, "%s with %s: %s",
-			             *p, scene_stepper_name(st), msg);
-			n = sim_ncollisions(s);
-			cr_assert_eq(n, sim_ncollisions(ref), "%s with %s: %zu collisions, default %zu", *p,
-			             scene_stepper_name(st), n, sim_ncollisions(ref));
+			cr_assert_eq(hb_sim_run(s), 0, "%s with %s: %s", *p, hb_scene_stepper_name(st), hb_sim_errmsg(s));
+			cr_assert_eq(hb_sim_end(s), HB_SIM_END_T, "%s with %s: %s", *p, hb_scene_stepper_name(st),
+			             hb_sim_end_str(s));
+			cr_assert_eq(hb_check_solution_pair(&sc2, hb_sim_arc(s), msg, sizeof msg), 0, "%s with %s: %s",
+			             *p, hb_scene_stepper_name(st), msg);
+			n = hb_sim_ncollisions(s);
+			cr_assert_eq(n, hb_sim_ncollisions(ref), "%s with %s: %zu collisions, default %zu", *p,
+			             hb_scene_stepper_name(st), n, hb_sim_ncollisions(ref));
 			for (i = 0; i < n; i++) {
-				const struct collision *a = sim_collision(s, i), *b = sim_collision(ref, i);
+				const struct hb_collision *a = hb_sim_collision(s, i), *b = hb_sim_collision(ref, i);
 
 				cr_assert(fabs(a->te - b->te) <= 1e-5 * b->td,
 				          "%s with %s: collision %zu: t_e %.12g, default %.12g", *p,
-				          scene_stepper_name(st), i + 1, a->te, b->te);
+				          hb_scene_stepper_name(st), i + 1, a->te, b->te);
 				if (isfinite(b->e))
 					cr_assert(fabs(a->e - b->e) <= 1e-4 * fmax(fabs(b->e), 1e-3),
 					          "%s with %s: collision %zu: e %.12g, default %.12g", *p,
-					          scene_stepper_name(st), i + 1, a->e, b->e);
+					          hb_scene_stepper_name(st), i + 1, a->e, b->e);
 			}
-			sim_free(s);
+			hb_sim_free(s);
 		}
-		sim_free(ref);
+		hb_sim_free(ref);
 	}
 }
 
@@ -143,47 +143,47 @@ Test(paper, every_stepper_on_every_paper_preset, .timeout = 600)
  */
 Test(paper, kinks_off_runs_over_the_kinks)
 {
-	struct scene sc;
-	struct sim *a, *b;
+	struct hb_scene sc;
+	struct hb_sim *a, *b;
 	char msg[1024];
 	size_t i;
 
 	scene_preset("steel-on-bitumen", &sc);
 	a = run_scene(&sc);
-	cr_assert_eq(scene_set(&sc, "run.kinks", "no", msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_scene_set(&sc, "run.kinks", "no", msg, sizeof msg), 0, "%s", msg);
 	b = run_scene(&sc);
-	cr_assert_gt(sim_stats(a)->kinks, 50);
-	cr_assert_eq(sim_stats(b)->kinks, 0);
-	cr_assert_eq(check_solution_pair(&sc, sim_arc(b), msg, sizeof msg), 0, "%s", msg);
-	cr_assert_eq(sim_ncollisions(a), sim_ncollisions(b));
-	for (i = 0; i < sim_ncollisions(a); i++)
-		assert_rel(sim_collision(b, i)->e, sim_collision(a, i)->e, 1e-8);
-	sim_free(a);
-	sim_free(b);
+	cr_assert_gt(hb_sim_stats(a)->kinks, 50);
+	cr_assert_eq(hb_sim_stats(b)->kinks, 0);
+	cr_assert_eq(hb_check_solution_pair(&sc, hb_sim_arc(b), msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_sim_ncollisions(a), hb_sim_ncollisions(b));
+	for (i = 0; i < hb_sim_ncollisions(a); i++)
+		assert_rel(hb_sim_collision(b, i)->e, hb_sim_collision(a, i)->e, 1e-8);
+	hb_sim_free(a);
+	hb_sim_free(b);
 }
 
 /* Contacts lengthen and flights shorten over the sequence; the collisions are finite. */
 static void
 assert_sequence(const char *name, size_t min_collisions)
 {
-	struct scene sc;
-	struct sim *s;
+	struct hb_scene sc;
+	struct hb_sim *s;
 	size_t n, i;
 
 	scene_preset(name, &sc);
 	s = run_scene(&sc);
-	n = sim_ncollisions(s);
+	n = hb_sim_ncollisions(s);
 	cr_assert(n >= min_collisions, "%s: %zu collisions", name, n);
 	for (i = 1; i < n; i++) {
-		cr_assert(sim_collision(s, i)->td > sim_collision(s, i - 1)->td,
+		cr_assert(hb_sim_collision(s, i)->td > hb_sim_collision(s, i - 1)->td,
 		          "%s: contact %zu is not longer than contact %zu", name, i, i - 1);
 		if (i + 1 < n)
-			cr_assert(sim_collision(s, i)->tf < sim_collision(s, i - 1)->tf,
+			cr_assert(hb_sim_collision(s, i)->tf < hb_sim_collision(s, i - 1)->tf,
 			          "%s: flight %zu is not shorter", name, i);
 	}
 	/* finite: the run ends in a permanent contact, no separation after the last collision */
-	cr_assert_eq(arc_last(sim_arc(s))->q, 1, "%s ends in contact", name);
-	sim_free(s);
+	cr_assert_eq(hb_arc_last(hb_sim_arc(s))->q, 1, "%s ends in contact", name);
+	hb_sim_free(s);
 }
 
 Test(paper, contacts_lengthen_flights_shorten_finitely)
@@ -198,63 +198,63 @@ Test(paper, contacts_lengthen_flights_shorten_finitely)
 /* Study 1: Lambda, e and the sinking at m g / c; the last contact begins while overlapping. */
 Test(paper, study1_bouncing_ball)
 {
-	struct scene sc;
-	struct sim *s;
+	struct hb_scene sc;
+	struct hb_sim *s;
 	size_t n;
-	const struct arc *arc;
-	const struct arc_interval *last;
+	const struct hb_arc *arc;
+	const struct hb_arc_interval *last;
 	double c;
 
 	scene_preset("steel-on-bitumen", &sc);
 	s = run_scene(&sc);
-	n = sim_ncollisions(s);
+	n = hb_sim_ncollisions(s);
 	cr_assert(n >= 8);
-	cr_assert(fabs(sim_collision(s, 0)->Lambda) < 0.05, "Lambda_0 = %g", sim_collision(s, 0)->Lambda);
-	cr_assert(sim_collision(s, n - 1)->Lambda < -0.5, "Lambda_last = %g", sim_collision(s, n - 1)->Lambda);
-	cr_assert(sim_collision(s, 1)->e > sim_collision(s, 0)->e && sim_collision(s, 2)->e > sim_collision(s, 1)->e,
+	cr_assert(fabs(hb_sim_collision(s, 0)->Lambda) < 0.05, "Lambda_0 = %g", hb_sim_collision(s, 0)->Lambda);
+	cr_assert(hb_sim_collision(s, n - 1)->Lambda < -0.5, "Lambda_last = %g", hb_sim_collision(s, n - 1)->Lambda);
+	cr_assert(hb_sim_collision(s, 1)->e > hb_sim_collision(s, 0)->e && hb_sim_collision(s, 2)->e > hb_sim_collision(s, 1)->e,
 	          "e rises over the first collisions");
-	cr_assert(sim_collision(s, n - 1)->e < sim_collision(s, n - 2)->e &&
-	              sim_collision(s, n - 2)->e < sim_collision(s, n - 3)->e,
+	cr_assert(hb_sim_collision(s, n - 1)->e < hb_sim_collision(s, n - 2)->e &&
+	              hb_sim_collision(s, n - 2)->e < hb_sim_collision(s, n - 3)->e,
 	          "e falls over the last collisions");
 	/* the residual indentation is an appreciable fraction of the greatest, diminishing */
-	cr_assert(sim_collision(s, 0)->xcr > 0.3 * sim_collision(s, 0)->xcmax);
-	cr_assert(sim_collision(s, n - 1)->xcr / sim_collision(s, n - 1)->xcmax <
-	          sim_collision(s, 0)->xcr / sim_collision(s, 0)->xcmax);
-	c = sc.par[law_param_index(sc.law, "c")];
-	assert_rel(arc_last(sim_arc(s))->v, -sc.d.m * sc.loads.g / c, 1e-3);
+	cr_assert(hb_sim_collision(s, 0)->xcr > 0.3 * hb_sim_collision(s, 0)->xcmax);
+	cr_assert(hb_sim_collision(s, n - 1)->xcr / hb_sim_collision(s, n - 1)->xcmax <
+	          hb_sim_collision(s, 0)->xcr / hb_sim_collision(s, 0)->xcmax);
+	c = sc.par[hb_law_param_index(sc.law, "c")];
+	assert_rel(hb_arc_last(hb_sim_arc(s))->v, -sc.d.m * sc.loads.g / c, 1e-3);
 	/* re-engagement: the last contact commences while overlapping, where v reaches 0 */
-	arc = sim_arc(s);
-	last = arc_interval_at(arc, arc_nintervals(arc) - 1);
+	arc = hb_sim_arc(s);
+	last = hb_arc_interval_at(arc, hb_arc_nintervals(arc) - 1);
 	cr_assert_eq(last->q, 1);
-	cr_assert(arc_at(arc, last->first)->x < 0.0, "the last contact begins at x = %g",
-	          arc_at(arc, last->first)->x);
-	cr_assert(fabs(arc_at(arc, last->first)->v) < 1e-9, "v = %g", arc_at(arc, last->first)->v);
-	sim_free(s);
+	cr_assert(hb_arc_at(arc, last->first)->x < 0.0, "the last contact begins at x = %g",
+	          hb_arc_at(arc, last->first)->x);
+	cr_assert(fabs(hb_arc_at(arc, last->first)->v) < 1e-9, "v = %g", hb_arc_at(arc, last->first)->v);
+	hb_sim_free(s);
 }
 
 /* Study 2: the centre of mass comes to rest; the residual share falls to negligible; e rises then falls. */
 Test(paper, study2_binary_collisions)
 {
-	struct scene sc;
-	struct sim *s;
+	struct hb_scene sc;
+	struct hb_sim *s;
 	size_t n, i, imax = 0;
-	const struct arc_sample *l;
+	const struct hb_arc_sample *l;
 
 	scene_preset("ptfe-pom", &sc);
-	cr_assert_eq(sc.d.system, SCENE_FULL);
+	cr_assert_eq(sc.d.system, HB_SCENE_FULL);
 	s = run_scene(&sc);
-	n = sim_ncollisions(s);
-	l = arc_last(sim_arc(s));
+	n = hb_sim_ncollisions(s);
+	l = hb_arc_last(hb_sim_arc(s));
 	assert_abs(l->vm, 0.0, 1e-12);
-	cr_assert(sim_collision(s, 0)->xcr > 0.2 * sim_collision(s, 0)->xcmax);
-	cr_assert(sim_collision(s, n - 1)->xcr < 0.02 * sim_collision(s, n - 1)->xcmax);
+	cr_assert(hb_sim_collision(s, 0)->xcr > 0.2 * hb_sim_collision(s, 0)->xcmax);
+	cr_assert(hb_sim_collision(s, n - 1)->xcr < 0.02 * hb_sim_collision(s, n - 1)->xcmax);
 	for (i = 1; i < n; i++)
-		if (sim_collision(s, i)->e > sim_collision(s, imax)->e)
+		if (hb_sim_collision(s, i)->e > hb_sim_collision(s, imax)->e)
 			imax = i;
 	cr_assert(imax > 2 && imax < n - 3, "e peaks at collision %zu of %zu", imax, n);
 	/* settling to the indentation where the branches bear the reduced force */
 	cr_assert(fabs(l->Fc + l->Fer) < 0.05 * fabs(l->Fer), "F_c = %g, F_er = %g", l->Fc, l->Fer);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /* Study 3: 28.0 mm/s, and the three ends compared with x_c^s. */
@@ -265,34 +265,34 @@ Test(paper, study3_approach_to_permanent_contact)
 	int i;
 
 	for (i = 0; i < 3; i++) {
-		struct scene sc;
-		struct sim *s;
-		const struct arc_sample *l;
+		struct hb_scene sc;
+		struct hb_sim *s;
+		const struct hb_arc_sample *l;
 		double xs;
 		size_t n;
 
 		scene_preset(names[i], &sc);
 		xs = pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / 1.5);
 		s = run_scene(&sc);
-		n = sim_ncollisions(s);
-		l = arc_last(sim_arc(s));
-		cr_assert(fabs(sim_collision(s, 0)->vi * 1e3 + 28.0) < 0.05, "%s: v_0 = %.4g mm/s", names[i],
-		          sim_collision(s, 0)->vi * 1e3);
+		n = hb_sim_ncollisions(s);
+		l = hb_arc_last(hb_sim_arc(s));
+		cr_assert(fabs(hb_sim_collision(s, 0)->vi * 1e3 + 28.0) < 0.05, "%s: v_0 = %.4g mm/s", names[i],
+		          hb_sim_collision(s, 0)->vi * 1e3);
 		if (i == 0) {
 			/* SHCCL: nothing retained at separations; settles to -x_c^s by a decaying oscillation */
-			const struct arc *arc = sim_arc(s);
-			const struct arc_interval *last = arc_interval_at(arc, arc_nintervals(arc) - 1);
+			const struct hb_arc *arc = hb_sim_arc(s);
+			const struct hb_arc_interval *last = hb_arc_interval_at(arc, hb_arc_nintervals(arc) - 1);
 			double prev = HUGE_VAL;
 			size_t k, swings = 0;
 
 			assert_rel(xs, 3.312e-6, 2e-4);
-			cr_assert(sim_collision(s, n - 1)->xcr < 1e-12);
+			cr_assert(hb_sim_collision(s, n - 1)->xcr < 1e-12);
 			cr_assert(fabs(l->x + xs) < 0.1 * xs, "x(T) = %g, -x_c^s = %g", l->x, -xs);
 			for (k = last->first + 1; k <= last->last; k++)
-				if (arc_at(arc, k)->kind == ARC_EXTREMUM && arc_at(arc, k)->v == arc_at(arc, k)->v) {
-					double dev = fabs(arc_at(arc, k)->x + xs);
+				if (hb_arc_at(arc, k)->kind == HB_ARC_EXTREMUM && hb_arc_at(arc, k)->v == hb_arc_at(arc, k)->v) {
+					double dev = fabs(hb_arc_at(arc, k)->x + xs);
 
-					if (fabs(arc_at(arc, k)->v) < 1e-9) {
+					if (fabs(hb_arc_at(arc, k)->v) < 1e-9) {
 						cr_assert(dev <= prev * 1.0001, "the oscillation does not decay");
 						prev = dev;
 						swings++;
@@ -305,13 +305,13 @@ Test(paper, study3_approach_to_permanent_contact)
 			cr_assert(fabs(l->v) < 2e-4);
 		} else {
 			/* BWMCL: passes -x_c^s and sinks at m g / c */
-			double c = sc.par[law_param_index(sc.law, "c")];
+			double c = sc.par[hb_law_param_index(sc.law, "c")];
 
 			assert_rel(xs, 5.240e-6, 2e-4);
 			cr_assert(l->x < -xs);
 			assert_rel(l->v, -sc.d.m * sc.loads.g / c, 1e-2);
 		}
-		sim_free(s);
+		hb_sim_free(s);
 	}
 }
 
@@ -332,18 +332,18 @@ Test(paper, modes_and_dense_output_halve_the_work)
 	size_t i;
 
 	for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-		struct scene sc;
-		struct sim *s;
-		const struct sim_stats *st;
+		struct hb_scene sc;
+		struct hb_sim *s;
+		const struct hb_sim_stats *st;
 
 		scene_preset(cases[i].name, &sc);
-		sc.run.stepper = STEPPER_DOP853;
+		sc.run.stepper = HB_STEPPER_DOP853;
 		s = run_scene(&sc);
-		st = sim_stats(s);
+		st = hb_sim_stats(s);
 		cr_expect_leq(2 * st->rhs, cases[i].rhs_before, "%s: %ld rhs evaluations (before %ld)",
 		              cases[i].name, st->rhs, cases[i].rhs_before);
 		cr_expect_lt(4 * st->rejected, st->steps + st->rejected, "%s: %ld of %ld steps rejected",
 		             cases[i].name, st->rejected, st->steps + st->rejected);
-		sim_free(s);
+		hb_sim_free(s);
 	}
 }

@@ -5,7 +5,7 @@
  * accepted range; save and load reproduce every field of the scene bit for
  * bit, also for 400 scenes of random values and names (law exponents of
  * many digits, names beginning with ';' or '#'); an unwritable path leaves
- * nothing behind; finding presets by name; preset_open and --set.
+ * nothing behind; finding presets by name; hb_preset_open and --set.
  *
  * The presets are read from $HYBOUNCE_PRESETS or ./presets (the tests run
  * from the repository root).
@@ -37,7 +37,7 @@ same(double a, double b)
 #define EQ(f) cr_assert_eq(a->f, b->f, "%s: " #f " differs", what)
 
 static void
-scene_same(const struct scene *a, const struct scene *b, const char *what)
+scene_same(const struct hb_scene *a, const struct hb_scene *b, const char *what)
 {
 	cr_assert_str_eq(a->name, b->name, "%s: name", what);
 	cr_assert_str_eq(a->description, b->description, "%s: description", what);
@@ -52,7 +52,7 @@ scene_same(const struct scene *a, const struct scene *b, const char *what)
 		EQ(body[i].mass_given);
 	}
 	EQ(law);
-	for (int i = 0; i < LAW_MAX_PARAMS; i++)
+	for (int i = 0; i < HB_LAW_MAX_PARAMS; i++)
 		SAME(par[i]);
 	EQ(ext);
 	SAME(loads.g);
@@ -91,10 +91,10 @@ scene_same(const struct scene *a, const struct scene *b, const char *what)
 Test(preset, every_preset_loads)
 {
 	for (size_t i = 0; i < NPAPER_PRESETS; i++) {
-		struct scene sc;
+		struct hb_scene sc;
 		char msg[512] = "";
 		scene_preset(paper_presets[i], &sc);
-		cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s: %s", paper_presets[i], msg);
+		cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_OK, "%s: %s", paper_presets[i], msg);
 		cr_assert(sc.name[0] != '\0', "%s has no [scene] name", paper_presets[i]);
 		cr_assert(strlen(sc.description) > 20, "%s has no description", paper_presets[i]);
 	}
@@ -110,11 +110,11 @@ Test(preset, every_file_in_the_folder_loads)
 	while ((de = readdir(d)) != NULL) {
 		size_t l = strlen(de->d_name);
 		char path[1024], msg[512] = "";
-		struct scene sc;
+		struct hb_scene sc;
 		if (l < 8 || strcmp(de->d_name + l - 7, ".preset") != 0)
 			continue;
 		snprintf(path, sizeof path, "%s/%s", preset_dir(), de->d_name);
-		cr_assert_eq(preset_load(path, &sc, msg, sizeof msg), HB_OK, "%s", msg);
+		cr_assert_eq(hb_preset_load(path, &sc, msg, sizeof msg), HB_OK, "%s", msg);
 		n++;
 	}
 	closedir(d);
@@ -123,11 +123,11 @@ Test(preset, every_file_in_the_folder_loads)
 
 Test(preset, study1_table_one)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	scene_preset("steel-on-bitumen", &sc);
-	cr_assert_eq(sc.law, &law_bwmcl);
-	cr_assert_eq(sc.d.system, SCENE_REDUCED);
+	cr_assert_eq(sc.law, &hb_law_bwmcl);
+	cr_assert_eq(sc.d.system, HB_SCENE_REDUCED);
 	printed(sc.d.Estar, 1.134e9, 4, "E*");
 	printed(sc.d.Re, 20e-3, 2, "R_e");
 	printed(sc.d.m, 2.614e-1, 4, "m");
@@ -150,10 +150,10 @@ Test(preset, study1_table_one)
 
 Test(preset, study2_table_two)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	scene_preset("ptfe-pom", &sc);
-	cr_assert_eq(sc.law, &law_bwshccl);
+	cr_assert_eq(sc.law, &hb_law_bwshccl);
 	study2_printed(&sc);
 	cr_assert_eq(scene_par(&sc, "beta"), 2.409e8);
 	cr_assert_eq(scene_par(&sc, "gamma"), 2.409e8);
@@ -171,10 +171,10 @@ Test(preset, study2_table_two)
 
 Test(preset, study3_table_slow)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	scene_preset("permanent-contact-shccl", &sc);
-	cr_assert_eq(sc.law, &law_shccl);
+	cr_assert_eq(sc.law, &hb_law_shccl);
 	printed(sc.d.Estar, 2.256e9, 4, "E*");
 	printed(sc.d.m, 2.614e-1, 4, "m");
 	printed(scene_par(&sc, "k"), 4.254e8, 4, "k");
@@ -184,7 +184,7 @@ Test(preset, study3_table_slow)
 	cr_assert_eq(sc.run.T, 0.1);
 
 	scene_preset("permanent-contact-bwshccl", &sc);
-	cr_assert_eq(sc.law, &law_bwshccl);
+	cr_assert_eq(sc.law, &hb_law_bwshccl);
 	printed(sc.d.kH, 4.254e8, 4, "k_H");
 	cr_assert_eq(scene_par(&sc, "alpha"), 0.35);
 	cr_assert_eq(scene_par(&sc, "beta"), 5e9);
@@ -192,7 +192,7 @@ Test(preset, study3_table_slow)
 	cr_assert_eq(scene_par(&sc, "c"), 2.15e9);
 
 	scene_preset("permanent-contact-bwmcl", &sc);
-	cr_assert_eq(sc.law, &law_bwmcl);
+	cr_assert_eq(sc.law, &hb_law_bwmcl);
 	printed(scene_par(&sc, "k"), 2.138e8, 4, "k");
 	cr_assert_eq(scene_par(&sc, "c"), 4.4e3);
 	printed(pow(sc.d.m * sc.loads.g / sc.d.kH, 1 / scene_par(&sc, "p")), 5.240e-6, 4, "x_c^s");
@@ -200,7 +200,7 @@ Test(preset, study3_table_slow)
 
 Test(preset, nonuniqueness_examples)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	scene_preset("nonunique-rest", &sc);
 	cr_assert_eq(sc.init.x0, 0);
@@ -209,8 +209,8 @@ Test(preset, nonuniqueness_examples)
 	cr_assert_eq(sc.run.T, 1);
 
 	scene_preset("nonunique-separation", &sc);
-	cr_assert_eq(sc.law, &law_linear);
-	cr_assert_eq(sc.d.system, SCENE_REDUCED);
+	cr_assert_eq(sc.law, &hb_law_linear);
+	cr_assert_eq(sc.d.system, HB_SCENE_REDUCED);
 	cr_assert_eq(sc.d.m, 1);
 	cr_assert_eq(sc.d.k_derived, 0);
 	cr_assert_eq(scene_par(&sc, "k"), 1e4);
@@ -219,7 +219,7 @@ Test(preset, nonuniqueness_examples)
 	cr_assert_eq(sc.init.v0, -0.5);
 
 	scene_preset("hertz-elastic", &sc);
-	cr_assert_eq(sc.law, &law_hertz);
+	cr_assert_eq(sc.law, &hb_law_hertz);
 	cr_assert(fabs(sc.body[0].R - 0.010) < 1e-18);
 	cr_assert(fabs(sc.init.x0 - 0.005) < 1e-18);
 	cr_assert_eq(sc.run.T, 0.3);
@@ -250,7 +250,7 @@ static const char *const good =
 
 /* Loads `good` with line `line` (1-based) replaced by `repl` (NULL: unchanged). */
 static int
-load_with(int line, const char *repl, char *msg, size_t n, struct scene *sc)
+load_with(int line, const char *repl, char *msg, size_t n, struct hb_scene *sc)
 {
 	char text[4096] = "";
 	const char *p = good;
@@ -265,14 +265,14 @@ load_with(int line, const char *repl, char *msg, size_t n, struct scene *sc)
 			strncat(text, p, len);
 		p += len;
 	}
-	return preset_load_string(text, "t.preset", sc, msg, n);
+	return hb_preset_load_string(text, "t.preset", sc, msg, n);
 }
 
 static void
 error_at(int line, const char *repl, const char *part)
 {
 	char msg[512] = "", want[64];
-	struct scene sc;
+	struct hb_scene sc;
 
 	cr_assert_eq(load_with(line, repl, msg, sizeof msg, &sc), HB_EINVAL, "'%s' accepted", repl);
 	snprintf(want, sizeof want, "t.preset:%d: ", line);
@@ -286,10 +286,10 @@ error_at(int line, const char *repl, const char *part)
 Test(preset, good_text_loads)
 {
 	char msg[512] = "";
-	struct scene sc;
+	struct hb_scene sc;
 
 	cr_assert_eq(load_with(0, NULL, msg, sizeof msg, &sc), HB_OK, "%s", msg);
-	cr_assert_eq(sc.law, &law_bwmcl);
+	cr_assert_eq(sc.law, &hb_law_bwmcl);
 	cr_assert_eq(scene_par(&sc, "alpha"), 0.35);
 }
 
@@ -304,7 +304,7 @@ Test(preset, unknown_key_and_section)
 	error_at(14, "foo = 1", "[law] foo: unknown key; known keys: k, A, alpha, beta, gamma, n, p, c");
 	error_at(18, "x1 = 3 mm", "[initial] x1: unknown key; known keys: x0, v0, x_m0, v_m0");
 	char msg[512] = "";
-	struct scene sc;
+	struct hb_scene sc;
 
 	cr_assert_eq(load_with(17, "[inital]", msg, sizeof msg, &sc), HB_EINVAL);
 	cr_assert(strstr(msg, "t.preset:18: [inital] x0: unknown section; known sections: scene, "
@@ -348,7 +348,7 @@ Test(preset, duplicate_and_empty)
 Test(preset, body_rules)
 {
 	char msg[512] = "";
-	struct scene sc;
+	struct hb_scene sc;
 
 	/* E without nu */
 	cr_assert_eq(load_with(6, "; no nu", msg, sizeof msg, &sc), HB_EINVAL);
@@ -374,10 +374,10 @@ Test(preset, order_independent_and_comments)
 	    "law = bwmcl\n"
 	    "  name = indented key\n";
 	char msg[512] = "";
-	struct scene sc;
+	struct hb_scene sc;
 
-	cr_assert_eq(preset_load_string(text, "o.preset", &sc, msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert_eq(sc.law, &law_bwmcl);
+	cr_assert_eq(hb_preset_load_string(text, "o.preset", &sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(sc.law, &hb_law_bwmcl);
 	cr_assert_eq(scene_par(&sc, "beta"), 2.385e4);
 	cr_assert_eq(scene_par(&sc, "gamma"), 1e4);
 	cr_assert_eq(scene_par(&sc, "n"), 3);
@@ -388,24 +388,24 @@ Test(preset, order_independent_and_comments)
 Test(preset, long_description)
 {
 	char text[1200], msg[512] = "", d[256];
-	struct scene sc;
+	struct hb_scene sc;
 
 	memset(d, 'd', 255);
 	d[255] = '\0';
 	snprintf(text, sizeof text, "[scene]\ndescription = %s\n", d);
-	cr_assert_eq(preset_load_string(text, "d.preset", &sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_preset_load_string(text, "d.preset", &sc, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_str_eq(sc.description, d);
 	snprintf(text, sizeof text, "[scene]\ndescription = %sx\n", d);
-	cr_assert_eq(preset_load_string(text, "d.preset", &sc, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_preset_load_string(text, "d.preset", &sc, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "d.preset:2: [scene] description: too long") != NULL, "%s", msg);
 }
 
 Test(preset, missing_file)
 {
 	char msg[512] = "";
-	struct scene sc;
+	struct hb_scene sc;
 
-	cr_assert_eq(preset_load("/nonexistent/x.preset", &sc, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(hb_preset_load("/nonexistent/x.preset", &sc, msg, sizeof msg), HB_EIO);
 	cr_assert_str_eq(msg, "/nonexistent/x.preset: No such file or directory");
 }
 
@@ -418,12 +418,12 @@ Test(preset, round_trip_every_preset)
 
 	cr_assert(mkdtemp(dir) != NULL);
 	for (size_t i = 0; i < NPAPER_PRESETS; i++) {
-		struct scene a, b;
+		struct hb_scene a, b;
 		char path[256], msg[512] = "";
 		scene_preset(paper_presets[i], &a);
 		snprintf(path, sizeof path, "%s/%s.preset", dir, paper_presets[i]);
-		cr_assert_eq(preset_save(path, &a, msg, sizeof msg), HB_OK, "%s", msg);
-		cr_assert_eq(preset_load(path, &b, msg, sizeof msg), HB_OK, "%s", msg);
+		cr_assert_eq(hb_preset_save(path, &a, msg, sizeof msg), HB_OK, "%s", msg);
+		cr_assert_eq(hb_preset_load(path, &b, msg, sizeof msg), HB_OK, "%s", msg);
 		scene_same(&a, &b, paper_presets[i]);
 		unlink(path);
 	}
@@ -432,44 +432,44 @@ Test(preset, round_trip_every_preset)
 
 Test(preset, round_trip_edited_scene)
 {
-	struct scene a, b;
+	struct hb_scene a, b;
 	char msg[512] = "";
 	static char buf[8192];
 
 	scene_preset("ptfe-pom", &a);
-	cr_assert_eq(scene_set(&a, "law.alpha", "0.123456789012345678", msg, sizeof msg), HB_OK);
-	cr_assert_eq(scene_set(&a, "initial.v0", "-0.1 mm/s", msg, sizeof msg), HB_OK);
-	cr_assert_eq(scene_set(&a, "run.reductions", "flight,com", msg, sizeof msg), HB_OK);
-	cr_assert_eq(scene_set(&a, "run.stepper", "auto", msg, sizeof msg), HB_OK);
-	cr_assert_eq(scene_set(&a, "run.kinks", "no", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&a, "law.alpha", "0.123456789012345678", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&a, "initial.v0", "-0.1 mm/s", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&a, "run.reductions", "flight,com", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&a, "run.stepper", "auto", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&a, "run.kinks", "no", msg, sizeof msg), HB_OK);
 	cr_assert_eq(a.run.kinks, 0);
-	cr_assert_eq(scene_set(&a, "scene.extension", "none", msg, sizeof msg), HB_OK);
-	cr_assert_eq(scene_set(&a, "loads.F1", "1e-300 N", msg, sizeof msg), HB_OK);
-	cr_assert_eq(scene_set(&a, "body2.mass", "0.0472 kg", msg, sizeof msg), HB_OK);
-	size_t len = preset_format(&a, buf, sizeof buf);
+	cr_assert_eq(hb_scene_set(&a, "scene.extension", "none", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&a, "loads.F1", "1e-300 N", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&a, "body2.mass", "0.0472 kg", msg, sizeof msg), HB_OK);
+	size_t len = hb_preset_format(&a, buf, sizeof buf);
 	cr_assert(len < sizeof buf);
 	cr_assert_eq(len, strlen(buf));
-	cr_assert_eq(preset_format(&a, NULL, 0), len);
-	cr_assert_eq(preset_load_string(buf, "rt", &b, msg, sizeof msg), HB_OK, "%s\n%s", msg, buf);
+	cr_assert_eq(hb_preset_format(&a, NULL, 0), len);
+	cr_assert_eq(hb_preset_load_string(buf, "rt", &b, msg, sizeof msg), HB_OK, "%s\n%s", msg, buf);
 	scene_same(&a, &b, "edited");
 	/* The default scene too. */
-	scene_defaults(&a);
-	preset_format(&a, buf, sizeof buf);
-	cr_assert_eq(preset_load_string(buf, "rt", &b, msg, sizeof msg), HB_OK, "%s", msg);
+	hb_scene_defaults(&a);
+	hb_preset_format(&a, buf, sizeof buf);
+	cr_assert_eq(hb_preset_load_string(buf, "rt", &b, msg, sizeof msg), HB_OK, "%s", msg);
 	scene_same(&a, &b, "defaults");
 }
 
 Test(preset, save_failure_leaves_nothing)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[512] = "", dir[] = "/tmp/hb-save-XXXXXX", path[256], tmp[256];
 	FILE *f;
 	DIR *d;
 	struct dirent *de;
 	int n = 0;
 
-	scene_defaults(&sc);
-	cr_assert_eq(preset_save("/nonexistent/dir/x.preset", &sc, msg, sizeof msg), HB_EIO);
+	hb_scene_defaults(&sc);
+	cr_assert_eq(hb_preset_save("/nonexistent/dir/x.preset", &sc, msg, sizeof msg), HB_EIO);
 	cr_assert(strncmp(msg, "/nonexistent/dir/x.preset: ", 27) == 0, "%s", msg);
 	cr_assert(access("/nonexistent/dir/x.preset", F_OK) != 0);
 
@@ -482,7 +482,7 @@ Test(preset, save_failure_leaves_nothing)
 	cr_assert(f != NULL);
 	fputs("keep", f);
 	fclose(f);
-	cr_assert_eq(preset_save(path, &sc, msg, sizeof msg), HB_EIO);
+	cr_assert_eq(hb_preset_save(path, &sc, msg, sizeof msg), HB_EIO);
 	cr_assert(strncmp(msg, path, strlen(path)) == 0, "%s", msg);
 	d = opendir(dir);
 	while ((de = readdir(d)) != NULL)
@@ -496,9 +496,9 @@ Test(preset, save_failure_leaves_nothing)
 	f = fopen(path, "w");
 	fputs("old", f);
 	fclose(f);
-	cr_assert_eq(preset_save(path, &sc, msg, sizeof msg), HB_OK, "%s", msg);
-	struct scene b;
-	cr_assert_eq(preset_load(path, &b, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_preset_save(path, &sc, msg, sizeof msg), HB_OK, "%s", msg);
+	struct hb_scene b;
+	cr_assert_eq(hb_preset_load(path, &b, msg, sizeof msg), HB_OK, "%s", msg);
 	unlink(path);
 	rmdir(dir);
 }
@@ -509,23 +509,23 @@ Test(preset, save_failure_leaves_nothing)
 Test(preset, resolve_and_list)
 {
 	char out[1024], msg[1024] = "";
-	struct preset_info *list;
+	struct hb_preset_info *list;
 	int n, found = 0;
 	char want[1024];
 
 	setenv("HYBOUNCE_PRESETS", preset_dir(), 1);
-	cr_assert_eq(preset_resolve("ptfe-pom", out, sizeof out, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_preset_resolve("ptfe-pom", out, sizeof out, msg, sizeof msg), HB_OK, "%s", msg);
 	snprintf(want, sizeof want, "%s/ptfe-pom.preset", preset_dir());
 	cr_assert_str_eq(out, want);
-	cr_assert_eq(preset_resolve("ptfe-pom.preset", out, sizeof out, msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_preset_resolve("ptfe-pom.preset", out, sizeof out, msg, sizeof msg), HB_OK);
 	cr_assert_str_eq(out, want);
-	cr_assert_eq(preset_resolve(want, out, sizeof out, msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_preset_resolve(want, out, sizeof out, msg, sizeof msg), HB_OK);
 	cr_assert_str_eq(out, want);
-	cr_assert_eq(preset_resolve("no-such-preset", out, sizeof out, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_preset_resolve("no-such-preset", out, sizeof out, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "no-such-preset") != NULL && strstr(msg, preset_dir()) != NULL, "%s",
 	    msg);
 
-	const char *const *dirs = preset_dirs();
+	const char *const *dirs = hb_preset_dirs();
 	cr_assert_str_eq(dirs[0], preset_dir());
 	int nd = 0;
 	while (dirs[nd] != NULL)
@@ -533,7 +533,7 @@ Test(preset, resolve_and_list)
 	cr_assert(nd >= 3);
 	cr_assert(strstr(dirs[nd - 1], "/presets") != NULL);
 
-	n = preset_list(&list);
+	n = hb_preset_list(&list);
 	cr_assert(n >= (int)NPAPER_PRESETS);
 	for (int i = 0; i < n; i++) {
 		if (i > 0)
@@ -565,7 +565,7 @@ rnd(void)
 
 /* A value inside range r, of every kind of magnitude and digit count. */
 static double
-value_in(const struct unit_range *r)
+value_in(const struct hb_unit_range *r)
 {
 	static const double odd[] = { 1.23456789, 3e9, 1 + 1e-12, 0.1, 1e-300, 7.0 / 3.0,
 		2.5, 1e15 + 1, 123456789012345678.0, 0.30000000000000004 };
@@ -582,7 +582,7 @@ value_in(const struct unit_range *r)
 			v = -v;
 		if (r->whole)
 			v = floor(fmin(v, 1e15));
-		if (units_in_range(v, r))
+		if (hb_units_in_range(v, r))
 			return v;
 	}
 	return r->lo_open ? (isfinite(r->hi) ? (r->lo + r->hi) / 2 : r->lo + 1) : r->lo;
@@ -608,68 +608,68 @@ name_random(char *buf, size_t n)
 
 /* save -> load -> save: the same scene and the same text. */
 static void
-round_trip(const struct scene *a, const char *what)
+round_trip(const struct hb_scene *a, const char *what)
 {
 	static char buf[16384], buf2[16384];
-	struct scene b;
+	struct hb_scene b;
 	char msg[1024] = "";
 
-	cr_assert(preset_format(a, buf, sizeof buf) < sizeof buf);
-	cr_assert_eq(preset_load_string(buf, "rt", &b, msg, sizeof msg), HB_OK,
+	cr_assert(hb_preset_format(a, buf, sizeof buf) < sizeof buf);
+	cr_assert_eq(hb_preset_load_string(buf, "rt", &b, msg, sizeof msg), HB_OK,
 	    "%s: saved preset does not load: %s\n%s", what, msg, buf);
 	scene_same(a, &b, what);
-	preset_format(&b, buf2, sizeof buf2);
+	hb_preset_format(&b, buf2, sizeof buf2);
 	cr_assert_str_eq(buf, buf2, "%s: saved twice, different text", what);
 }
 
 Test(preset, round_trip_many_values_and_names)
 {
-	const struct law_type *const *laws = law_list();
+	const struct hb_law_type *const *laws = hb_law_list();
 	int tried = 0, accepted = 0, saved = 0;
 
 	for (int it = 0; it < 400; it++) {
-		struct scene sc;
-		struct scene_error err;
+		struct hb_scene sc;
+		struct hb_scene_error err;
 		char name[128], what[160];
 
-		scene_defaults(&sc);
+		hb_scene_defaults(&sc);
 		if (it % 3 == 1)
 			scene_preset(paper_presets[it % NPAPER_PRESETS], &sc);
 		/* a law, then random values for every key the panel shows, then names */
 		for (int l = 0; laws[l] != NULL; l++)
 			if (rnd() < 0.25)
-				cr_assert_eq(scene_set_text(&sc, "scene.law", laws[l]->name, &err), HB_OK);
+				cr_assert_eq(hb_scene_set_text(&sc, "scene.law", laws[l]->name, &err), HB_OK);
 		for (int round = 0; round < 2; round++)
-			for (int k = 0; k < scene_nkeys(&sc); k++) {
-				struct scene_keyinfo ki;
-				cr_assert_eq(scene_key(&sc, k, &ki), HB_OK);
+			for (int k = 0; k < hb_scene_nkeys(&sc); k++) {
+				struct hb_scene_keyinfo ki;
+				cr_assert_eq(hb_scene_key(&sc, k, &ki), HB_OK);
 				if (ki.readonly || rnd() < 0.3)
 					continue;
 				tried++;
-				if (ki.kind == SCENE_KEY_NUMBER || ki.kind == SCENE_KEY_WHOLE) {
-					if (scene_set_number(&sc, ki.key, value_in(&ki.limits), &err) == HB_OK)
+				if (ki.kind == HB_SCENE_KEY_NUMBER || ki.kind == HB_SCENE_KEY_WHOLE) {
+					if (hb_scene_set_number(&sc, ki.key, value_in(&ki.limits), &err) == HB_OK)
 						accepted++;
-				} else if (ki.kind == SCENE_KEY_CHOICE) {
+				} else if (ki.kind == HB_SCENE_KEY_CHOICE) {
 					cr_assert(ki.nchoices >= 2, "%s: no choices", ki.key);
-					cr_assert_eq(scene_set_text(&sc, ki.key,
+					cr_assert_eq(hb_scene_set_text(&sc, ki.key,
 					    ki.choices[(int)(rnd() * ki.nchoices)], &err), HB_OK, "%s", ki.key);
 					accepted++;
 				} else {
 					name_random(name, sizeof name);
-					if (scene_set_text(&sc, ki.key, name, &err) == HB_OK)
+					if (hb_scene_set_text(&sc, ki.key, name, &err) == HB_OK)
 						accepted++;
 				}
 			}
 		/* A name beginning with ';' or '#' is accepted and kept. */
 		name_random(name, sizeof name);
 		name[0] = it % 2 ? ';' : '#';
-		if (scene_set_text(&sc, "scene.name", name, &err) != HB_OK) {
+		if (hb_scene_set_text(&sc, "scene.name", name, &err) != HB_OK) {
 			snprintf(name, sizeof name, "%s plain", it % 2 ? ";" : "#");
-			cr_assert_eq(scene_set_text(&sc, "scene.name", name, &err), HB_OK, "%s",
+			cr_assert_eq(hb_scene_set_text(&sc, "scene.name", name, &err), HB_OK, "%s",
 			    err.what);
 		}
 		cr_assert_eq(sc.name[0], it % 2 ? ';' : '#');
-		if (scene_validate(&sc, NULL, 0) != HB_OK)
+		if (hb_scene_validate(&sc, NULL, 0) != HB_OK)
 			continue; /* e.g. gamma outside [-beta, beta]: not a scene that is saved */
 		snprintf(what, sizeof what, "scene %d (%s)", it, sc.law->name);
 		round_trip(&sc, what);
@@ -678,7 +678,7 @@ Test(preset, round_trip_many_values_and_names)
 	cr_log_info("round trip: %d values tried, %d accepted, %d scenes saved and loaded back",
 	    tried, accepted, saved);
 	cr_assert(accepted > 1000, "only %d values accepted", accepted);
-	/* random F1, F2 of any size are mostly refused by scene_check (beyond
+	/* random F1, F2 of any size are mostly refused by hb_scene_check (beyond
 	 * 1e7 m/s^2 times the mass), which leaves about 170 of 400 valid */
 	cr_assert(saved > 120, "only %d valid scenes", saved);
 }
@@ -694,14 +694,14 @@ Test(preset, round_trip_found_by_fuzzing)
 	};
 
 	for (size_t i = 0; i < sizeof sets / sizeof sets[0]; i++) {
-		struct scene sc;
-		struct scene_error err;
+		struct hb_scene sc;
+		struct hb_scene_error err;
 		char what[96];
 
 		scene_preset(i % 2 ? "steel-on-bitumen" : "permanent-contact-shccl", &sc);
 		if (strcmp(sets[i][0], "law.n") == 0)
 			scene_preset("steel-on-bitumen", &sc); /* a Bouc-Wen law: beta, gamma in m^-n */
-		cr_assert_eq(scene_set_text(&sc, sets[i][0], sets[i][1], &err), HB_OK, "%s=%s: %s",
+		cr_assert_eq(hb_scene_set_text(&sc, sets[i][0], sets[i][1], &err), HB_OK, "%s=%s: %s",
 		    sets[i][0], sets[i][1], err.what);
 		snprintf(what, sizeof what, "%s=%s", sets[i][0], sets[i][1]);
 		round_trip(&sc, what);
@@ -713,7 +713,7 @@ Test(preset, round_trip_found_by_fuzzing)
 
 Test(preset, open_applies_sets_as_typed)
 {
-	struct scene a, b;
+	struct hb_scene a, b;
 	char path[512], msg[512] = "";
 	const char *spaced[] = { " run.T = 1 ms", "\tlaw.c=4.4e3 N s/m ", "initial.x0 =40 um" };
 	const char *bad_key[] = { "run.T" };
@@ -721,20 +721,20 @@ Test(preset, open_applies_sets_as_typed)
 	const char *bad_scene[] = { "law.gamma=1e9 m^-2" };
 
 	snprintf(path, sizeof path, "%s/steel-on-bitumen.preset", preset_dir());
-	cr_assert_eq(preset_open(path, spaced, 3, &a, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_preset_open(path, spaced, 3, &a, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(a.run.T, 1e-3);
 	scene_preset("steel-on-bitumen", &b);
-	cr_assert_eq(scene_set(&b, "run.T", "1 ms", msg, sizeof msg), HB_OK);
-	cr_assert_eq(scene_set(&b, "law.c", "4.4e3 N s/m", msg, sizeof msg), HB_OK);
-	cr_assert_eq(scene_set(&b, "initial.x0", "40 um", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&b, "run.T", "1 ms", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&b, "law.c", "4.4e3 N s/m", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&b, "initial.x0", "40 um", msg, sizeof msg), HB_OK);
 	scene_same(&a, &b, "--set with blanks");
 
-	cr_assert_eq(preset_open(path, bad_key, 1, &a, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_preset_open(path, bad_key, 1, &a, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "--set 'run.T': expected KEY=VALUE") != NULL, "%s", msg);
-	cr_assert_eq(preset_open(path, bad_val, 1, &a, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_preset_open(path, bad_val, 1, &a, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "--set run.T=-1 s: run.T: value -1 s is out of range; accepted: "
 	    "(0, inf) s") != NULL, "%s", msg);
-	cr_assert_eq(preset_open(path, bad_scene, 1, &a, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_preset_open(path, bad_scene, 1, &a, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "steel-on-bitumen.preset: law.gamma: ") != NULL, "%s", msg);
 }
 
@@ -744,22 +744,22 @@ Test(preset, edit_text_reads_back_exactly)
 	static char before[16384], after[16384];
 
 	for (size_t i = 0; i < NPAPER_PRESETS; i++) {
-		struct scene sc;
+		struct hb_scene sc;
 		scene_preset(paper_presets[i], &sc);
-		preset_format(&sc, before, sizeof before);
-		for (int k = 0; k < scene_nkeys(&sc); k++) {
-			struct scene_keyinfo ki;
-			struct scene_error err;
-			cr_assert_eq(scene_key(&sc, k, &ki), HB_OK);
-			if (ki.kind == SCENE_KEY_TEXT || ki.kind == SCENE_KEY_CHOICE)
+		hb_preset_format(&sc, before, sizeof before);
+		for (int k = 0; k < hb_scene_nkeys(&sc); k++) {
+			struct hb_scene_keyinfo ki;
+			struct hb_scene_error err;
+			cr_assert_eq(hb_scene_key(&sc, k, &ki), HB_OK);
+			if (ki.kind == HB_SCENE_KEY_TEXT || ki.kind == HB_SCENE_KEY_CHOICE)
 				ki.number = 0;
 			if (ki.readonly || isnan(ki.number) ||
 			    (strcmp(ki.key, "body1.mass") == 0 && !sc.body[0].mass_given) ||
 			    (strcmp(ki.key, "body2.mass") == 0 && !sc.body[1].mass_given))
 				continue; /* not given, or derived: typing it would give it */
-			cr_assert_eq(scene_set_text(&sc, ki.key, ki.edit, &err), HB_OK,
+			cr_assert_eq(hb_scene_set_text(&sc, ki.key, ki.edit, &err), HB_OK,
 			    "%s: %s = '%s': %s", paper_presets[i], ki.key, ki.edit, err.what);
-			preset_format(&sc, after, sizeof after);
+			hb_preset_format(&sc, after, sizeof after);
 			cr_assert_str_eq(before, after, "%s: %s = '%s' changed the scene",
 			    paper_presets[i], ki.key, ki.edit);
 		}

@@ -16,7 +16,7 @@
 
 struct job {
 	const char *name;
-	struct collision c[MAXCOLL];
+	struct hb_collision c[MAXCOLL];
 	size_t n;
 	int status;             /* 0, or the first failure's status */
 	char msg[512];
@@ -28,26 +28,26 @@ work(void *arg)
 {
 	struct job *jb = arg;
 	char path[512];
-	struct scene sc;
-	struct sim *s;
+	struct hb_scene sc;
+	struct hb_sim *s;
 
-	jb->status = preset_resolve(jb->name, path, sizeof path, jb->msg, sizeof jb->msg);
+	jb->status = hb_preset_resolve(jb->name, path, sizeof path, jb->msg, sizeof jb->msg);
 	if (jb->status == HB_OK)
-		jb->status = preset_load(path, &sc, jb->msg, sizeof jb->msg);
+		jb->status = hb_preset_load(path, &sc, jb->msg, sizeof jb->msg);
 	if (jb->status != HB_OK)
 		return NULL;
-	s = sim_new(&sc, jb->msg, sizeof jb->msg);
+	s = hb_sim_new(&sc, jb->msg, sizeof jb->msg);
 	if (s == NULL) {
 		jb->status = HB_EINVAL;
 		return NULL;
 	}
-	jb->status = sim_run(s);
+	jb->status = hb_sim_run(s);
 	if (jb->status != HB_OK)
-		snprintf(jb->msg, sizeof jb->msg, "%s", sim_errmsg(s));
-	jb->n = sim_ncollisions(s);
+		snprintf(jb->msg, sizeof jb->msg, "%s", hb_sim_errmsg(s));
+	jb->n = hb_sim_ncollisions(s);
 	for (size_t i = 0; i < jb->n && i < MAXCOLL; i++)
-		jb->c[i] = *sim_collision(s, i);
-	sim_free(s);
+		jb->c[i] = *hb_sim_collision(s, i);
+	hb_sim_free(s);
 	return NULL;
 }
 
@@ -74,24 +74,24 @@ Test(reentrant, concurrent_runs_match_sequential_ones, .timeout = 120)
 		             par[k].name, par[k].n, seq[k].n);
 		for (size_t i = 0; i < seq[k].n; i++)
 			/* every field up to `complete` is a long or a double: no padding */
-			cr_assert(memcmp(&par[k].c[i], &seq[k].c[i], offsetof(struct collision, complete)) == 0
+			cr_assert(memcmp(&par[k].c[i], &seq[k].c[i], offsetof(struct hb_collision, complete)) == 0
 			              && par[k].c[i].complete == seq[k].c[i].complete,
 			          "%s: collision %zu differs between a thread and a run alone",
 			          par[k].name, i);
 	}
 }
 
-/* preset_dirs() gives each thread its own list. */
+/* hb_preset_dirs() gives each thread its own list. */
 static void *
 dirs_of(void *arg)
 {
-	*(const char *const **)arg = preset_dirs();
+	*(const char *const **)arg = hb_preset_dirs();
 	return NULL;
 }
 
 Test(reentrant, preset_dirs_is_per_thread)
 {
-	const char *const *mine = preset_dirs(), *const *theirs = NULL;
+	const char *const *mine = hb_preset_dirs(), *const *theirs = NULL;
 	pthread_t t;
 
 	cr_assert_eq(pthread_create(&t, NULL, dirs_of, &theirs), 0);

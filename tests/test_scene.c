@@ -1,11 +1,11 @@
 /*
  * test_scene.c - scenes (src/core/scene*.c): the defaults, the derived values
  * against the paper's printed 'Inferred' rows (Tables tab:one, tab:two,
- * tab:slow and x_c^s), scene_set and its messages, validation, the panel
+ * tab:slow and x_c^s), hb_scene_set and its messages, validation, the panel
  * rows, and the applied loads of the second study: F_er, the kinks, and the
  * closed-form flight increments and centre of mass against numerical
- * quadrature (GSL QAG); typed access to the keys (scene_get) and errors as
- * data (struct scene_error).
+ * quadrature (GSL QAG); typed access to the keys (hb_scene_get) and errors as
+ * data (struct hb_scene_error).
  */
 #include <math.h>
 #include <stdio.h>
@@ -21,22 +21,22 @@
 #include "testutil.h"
 
 static void
-set(struct scene *sc, const char *key, const char *text)
+set(struct hb_scene *sc, const char *key, const char *text)
 {
 	char msg[256] = "";
 
-	cr_assert_eq(scene_set(sc, key, text, msg, sizeof msg), HB_OK, "%s = %s: %s", key, text,
+	cr_assert_eq(hb_scene_set(sc, key, text, msg, sizeof msg), HB_OK, "%s = %s: %s", key, text,
 	    msg);
 }
 
 static void
-set_fails(struct scene *sc, const char *key, const char *text, const char *part)
+set_fails(struct hb_scene *sc, const char *key, const char *text, const char *part)
 {
 	char msg[512] = "";
-	struct scene before;
+	struct hb_scene before;
 
 	memcpy(&before, sc, sizeof before);
-	cr_assert_eq(scene_set(sc, key, text, msg, sizeof msg), HB_EINVAL, "%s = %s accepted",
+	cr_assert_eq(hb_scene_set(sc, key, text, msg, sizeof msg), HB_EINVAL, "%s = %s accepted",
 	    key, text);
 	cr_assert(strstr(msg, part) != NULL, "%s = %s: message \"%s\" lacks \"%s\"", key, text, msg,
 	    part);
@@ -48,9 +48,9 @@ set_fails(struct scene *sc, const char *key, const char *text, const char *part)
 
 /* Study 1 (Table tab:one): steel on bitumen, BWMCL. */
 static void
-study1(struct scene *sc)
+study1(struct hb_scene *sc)
 {
-	scene_defaults(sc);
+	hb_scene_defaults(sc);
 	set(sc, "scene.law", "bwmcl");
 	set(sc, "body1.E", "200 GPa");
 	set(sc, "body1.nu", "0.30");
@@ -66,9 +66,9 @@ study1(struct scene *sc)
 
 /* Study 2 (Table tab:two): PTFE on POM, full system, the ramp loads. */
 static void
-study2(struct scene *sc)
+study2(struct hb_scene *sc)
 {
-	scene_defaults(sc);
+	hb_scene_defaults(sc);
 	set(sc, "scene.law", "bwshccl");
 	set(sc, "body1.E", "0.50 GPa");
 	set(sc, "body1.nu", "0.46");
@@ -96,13 +96,13 @@ study2(struct scene *sc)
 
 Test(scene, defaults_are_valid)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[256] = "";
 
-	scene_defaults(&sc);
-	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert_eq(sc.law, &law_hertz);
-	cr_assert_eq(sc.d.system, SCENE_REDUCED);
+	hb_scene_defaults(&sc);
+	cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(sc.law, &hb_law_hertz);
+	cr_assert_eq(sc.d.system, HB_SCENE_REDUCED);
 	cr_assert_eq(sc.body[0].R, 0.020);
 	cr_assert_eq(sc.body[0].E, 200e9);
 	cr_assert_eq(sc.body[1].R, INFINITY);
@@ -110,12 +110,12 @@ Test(scene, defaults_are_valid)
 	cr_assert_eq(sc.init.x0, 0.010);
 	cr_assert_eq(sc.run.T, 0.2);
 	cr_assert_eq(sc.run.J, 100000);
-	cr_assert_eq(sc.run.stepper, STEPPER_RK8PD);
+	cr_assert_eq(sc.run.stepper, HB_STEPPER_RK8PD);
 	cr_assert_eq(sc.run.rtol, 1e-10);
 	cr_assert_eq(sc.run.atol, 1e-10);
 	cr_assert_eq(sc.run.max_samples, 262144);
 	cr_assert_eq(sc.run.chatter, 4);
-	cr_assert_eq(sc.run.reduce, REDUCE_ALL);
+	cr_assert_eq(sc.run.reduce, HB_REDUCE_ALL);
 	cr_assert_eq(sc.ext, 1);
 	cr_assert_eq(sc.loads.g, 9.81);
 	cr_assert_eq(sc.d.k_derived, 1);
@@ -124,12 +124,12 @@ Test(scene, defaults_are_valid)
 
 Test(scene, study1_inferred)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[256] = "";
 
 	study1(&sc);
-	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert_eq(sc.d.system, SCENE_REDUCED);
+	cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(sc.d.system, HB_SCENE_REDUCED);
 	printed(sc.d.Estar, 1.134e9, 4, "E*");
 	printed(sc.d.Re, 20e-3, 2, "R_e");
 	printed(sc.d.m, 2.614e-1, 4, "m");
@@ -143,24 +143,24 @@ Test(scene, study1_inferred)
 
 Test(scene, study2_inferred)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[256] = "";
 
 	study2(&sc);
-	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
 	study2_printed(&sc);
 	cr_assert(fabs(sc.d.eta + sc.d.etac - 1) < 1e-15);
 }
 
 Test(scene, study3_inferred)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[256] = "";
 
 	study1(&sc);
 	set(&sc, "body2.E", "2.0 GPa");
 	set(&sc, "scene.law", "shccl");
-	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
 	printed(sc.d.Estar, 2.256e9, 4, "E*");
 	printed(sc.d.m, 2.614e-1, 4, "m");
 	printed(sc.d.kH, 4.254e8, 4, "k_H");
@@ -170,7 +170,7 @@ Test(scene, study3_inferred)
 
 Test(scene, k_hertz_with_A_and_alpha)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	study1(&sc);
 	set(&sc, "law.A", "2.385");
@@ -182,29 +182,29 @@ Test(scene, k_hertz_with_A_and_alpha)
 
 Test(scene, reduced_and_full_by_the_bodies)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[256] = "";
 
-	scene_defaults(&sc);
+	hb_scene_defaults(&sc);
 	set(&sc, "body2.R", "20 mm");
 	set(&sc, "body2.rho", "7800 kg/m^3");
-	cr_assert_eq(sc.d.system, SCENE_FULL);
+	cr_assert_eq(sc.d.system, HB_SCENE_FULL);
 	cr_assert(fabs(sc.d.eta - 0.5) < 1e-15);
 	cr_assert(fabs(sc.d.m - sc.d.m1 / 2) < 1e-15);
 	set(&sc, "body2.mass", "inf");
-	cr_assert_eq(sc.d.system, SCENE_REDUCED);
+	cr_assert_eq(sc.d.system, HB_SCENE_REDUCED);
 	cr_assert(isinf(sc.d.m2));
 	cr_assert_eq(sc.d.m, sc.d.m1);
 	set(&sc, "body2.mass", "0.5 kg");
-	cr_assert_eq(sc.d.system, SCENE_FULL);
+	cr_assert_eq(sc.d.system, HB_SCENE_FULL);
 	cr_assert_eq(sc.d.m2, 0.5);
 	cr_assert_eq(sc.body[1].rho, 0, "typing a mass forgets rho");
-	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
 }
 
 Test(scene, set_messages)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	study1(&sc);
 	set_fails(&sc, "law.alpha", "20 mm/s", "has unit m/s");
@@ -240,17 +240,17 @@ Test(scene, set_messages)
 
 Test(scene, set_values)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
-	scene_defaults(&sc);
+	hb_scene_defaults(&sc);
 	set(&sc, "run.stepper", "msbdf");
-	cr_assert_eq(sc.run.stepper, STEPPER_MSBDF);
+	cr_assert_eq(sc.run.stepper, HB_STEPPER_MSBDF);
 	set(&sc, "run.reductions", "flight, com");
-	cr_assert_eq(sc.run.reduce, REDUCE_FLIGHT | REDUCE_COM);
+	cr_assert_eq(sc.run.reduce, HB_REDUCE_FLIGHT | HB_REDUCE_COM);
 	set(&sc, "run.reductions", "none");
 	cr_assert_eq(sc.run.reduce, 0);
 	set(&sc, "run.reductions", "all");
-	cr_assert_eq(sc.run.reduce, REDUCE_ALL);
+	cr_assert_eq(sc.run.reduce, HB_REDUCE_ALL);
 	set(&sc, "run.J", "1e5");
 	cr_assert_eq(sc.run.J, 100000);
 	set(&sc, "scene.extension", "none");
@@ -265,13 +265,13 @@ Test(scene, set_values)
 
 Test(scene, law_switch_loads_defaults_and_rederives)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	study1(&sc);
 	set(&sc, "law.c", "1234 N s/m");
 	set(&sc, "scene.law", "shccl");
-	cr_assert_eq(sc.law, &law_shccl);
-	cr_assert_eq(scene_par(&sc, "c"), law_shccl.params[law_param_index(&law_shccl, "c")].def);
+	cr_assert_eq(sc.law, &hb_law_shccl);
+	cr_assert_eq(scene_par(&sc, "c"), hb_law_shccl.params[hb_law_param_index(&hb_law_shccl, "c")].def);
 	cr_assert_eq(sc.d.k_derived, 1);
 	cr_assert(fabs(scene_par(&sc, "k") - sc.d.kH) <= 1e-15 * sc.d.kH);
 	/* The linear law has no k_hertz: k is typed (N/m). */
@@ -283,40 +283,40 @@ Test(scene, law_switch_loads_defaults_and_rederives)
 
 Test(scene, k_typed_with_masses)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[256] = "";
 
-	scene_defaults(&sc);
+	hb_scene_defaults(&sc);
 	sc.body[0].has_material = 0;
 	sc.body[0].mass_given = 1;
 	sc.body[0].mass = 1;
-	scene_derive(&sc, NULL, 0);
+	hb_scene_derive(&sc, NULL, 0);
 	cr_assert_eq(sc.d.k_derived, 0);
 	cr_assert(isnan(sc.d.Estar));
 	set(&sc, "law.k", "3e9 N m^-3/2");
 	cr_assert_eq(scene_par(&sc, "k"), 3e9);
-	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
 }
 
 static void
-validate_fails(struct scene *sc, const char *part)
+validate_fails(struct hb_scene *sc, const char *part)
 {
 	char msg[512] = "";
 
-	cr_assert_eq(scene_validate(sc, msg, sizeof msg), HB_EINVAL, "accepted, expected \"%s\"",
+	cr_assert_eq(hb_scene_validate(sc, msg, sizeof msg), HB_EINVAL, "accepted, expected \"%s\"",
 	    part);
 	cr_assert(strstr(msg, part) != NULL, "message \"%s\" lacks \"%s\"", msg, part);
 }
 
 Test(scene, validate_ranges)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	int ig, ia;
 
 	study1(&sc);
-	ig = law_param_index(sc.law, "gamma");
-	ia = law_param_index(sc.law, "alpha");
-	sc.par[ig] = 2 * sc.par[law_param_index(sc.law, "beta")];
+	ig = hb_law_param_index(sc.law, "gamma");
+	ia = hb_law_param_index(sc.law, "alpha");
+	sc.par[ig] = 2 * sc.par[hb_law_param_index(sc.law, "beta")];
 	validate_fails(&sc, "law.gamma: ");
 	validate_fails(&sc, "[-beta, beta]");
 
@@ -369,16 +369,16 @@ Test(scene, validate_ranges)
 
 Test(scene, panel_rows)
 {
-	struct scene sc;
-	struct scene_keyinfo ki;
+	struct hb_scene sc;
+	struct hb_scene_keyinfo ki;
 	int nk, has_derived_k = 0, has_law_k = 0, has_xcs = 0, ro_law = 0;
 
 	study1(&sc);
 	sc.loads.g = 9.81;
-	nk = scene_nkeys(&sc);
+	nk = hb_scene_nkeys(&sc);
 	cr_assert(nk > 30);
 	for (int i = 0; i < nk; i++) {
-		cr_assert_eq(scene_key(&sc, i, &ki), HB_OK);
+		cr_assert_eq(hb_scene_key(&sc, i, &ki), HB_OK);
 		if (strcmp(ki.key, "derived.k") == 0) {
 			has_derived_k = 1;
 			cr_assert_eq(ki.readonly, 1);
@@ -406,16 +406,16 @@ Test(scene, panel_rows)
 		    "section %s", ki.section);
 	}
 	cr_assert(has_derived_k && has_xcs && !has_law_k && !ro_law);
-	cr_assert_eq(scene_key(&sc, nk, &ki), HB_EINVAL);
-	cr_assert_eq(scene_key(&sc, -1, &ki), HB_EINVAL);
+	cr_assert_eq(hb_scene_key(&sc, nk, &ki), HB_EINVAL);
+	cr_assert_eq(hb_scene_key(&sc, -1, &ki), HB_EINVAL);
 
 	/* Every editable row can be set back to the value it shows. */
 	for (int i = 0; i < nk; i++) {
 		char msg[256] = "";
-		scene_key(&sc, i, &ki);
+		hb_scene_key(&sc, i, &ki);
 		if (ki.readonly || strcmp(ki.value, "-") == 0 || strcmp(ki.key, "scene.law") == 0)
 			continue;
-		cr_assert_eq(scene_set(&sc, ki.key, ki.value, msg, sizeof msg), HB_OK,
+		cr_assert_eq(hb_scene_set(&sc, ki.key, ki.value, msg, sizeof msg), HB_OK,
 		    "%s = %s: %s", ki.key, ki.value, msg);
 	}
 }
@@ -431,53 +431,53 @@ S(double w)
 
 Test(scene, study2_loads)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	double ts[] = { 0, 0.013, 0.05, 0.1, 0.137, 0.2, 0.31 };
 
 	study2(&sc);
 	for (size_t i = 0; i < sizeof ts / sizeof ts[0]; i++) {
 		double t = ts[i], f1, f2, xm, vm, want = -0.5759 * (1 + S(t / 0.2));
-		scene_loads_at(&sc, t, &f1, &f2);
+		hb_scene_loads_at(&sc, t, &f1, &f2);
 		/* eq. u: F_er = (m2 F_e1 - m1 F_e2)/(m1 + m2) = -F_e0 (1 + S(t/T_e)) */
-		cr_assert(fabs(scene_Fer(&sc, t) - want) < 1e-14, "F_er(%g)", t);
+		cr_assert(fabs(hb_scene_Fer(&sc, t) - want) < 1e-14, "F_er(%g)", t);
 		cr_assert(fabs((sc.d.m2 * f1 - sc.d.m1 * f2) / (sc.d.m1 + sc.d.m2) - want) < 1e-14);
 		/* v_m(t) = v_m0 (1 - S(t/T_s)) */
-		scene_com(&sc, t, &xm, &vm);
+		hb_scene_com(&sc, t, &xm, &vm);
 		cr_assert(fabs(vm - 0.12 * (1 - S(t / 0.1))) < 1e-15, "v_m(%g) = %g", t, vm);
 	}
 	double k[4];
-	cr_assert_eq(scene_load_kinks(&sc, 0, 0.5, k, 4), 2);
+	cr_assert_eq(hb_scene_load_kinks(&sc, 0, 0.5, k, 4), 2);
 	cr_assert_eq(k[0], 0.1);
 	cr_assert_eq(k[1], 0.2);
-	cr_assert_eq(scene_load_kinks(&sc, 0.1, 0.5, k, 4), 1);
+	cr_assert_eq(hb_scene_load_kinks(&sc, 0.1, 0.5, k, 4), 1);
 	cr_assert_eq(k[0], 0.2);
-	cr_assert_eq(scene_load_kinks(&sc, 0.2, 0.5, k, 4), 0);
-	cr_assert_eq(scene_Fer_constant(&sc, 0.15, 0.3), 0);
-	cr_assert_eq(scene_Fer_constant(&sc, 0.2, 0.3), 1);
-	cr_assert_eq(scene_Fer_constant(&sc, 0.25, 0.3), 1);
+	cr_assert_eq(hb_scene_load_kinks(&sc, 0.2, 0.5, k, 4), 0);
+	cr_assert_eq(hb_scene_Fer_constant(&sc, 0.15, 0.3), 0);
+	cr_assert_eq(hb_scene_Fer_constant(&sc, 0.2, 0.3), 1);
+	cr_assert_eq(hb_scene_Fer_constant(&sc, 0.25, 0.3), 1);
 	set(&sc, "loads.ramp", "no");
-	cr_assert_eq(scene_load_kinks(&sc, 0, 0.5, k, 4), 0);
-	cr_assert_eq(scene_Fer_constant(&sc, 0, 0.3), 1);
+	cr_assert_eq(hb_scene_load_kinks(&sc, 0, 0.5, k, 4), 0);
+	cr_assert_eq(hb_scene_Fer_constant(&sc, 0, 0.3), 1);
 }
 
 Test(scene, reduced_loads)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	double f1, f2;
 
 	study1(&sc);
-	scene_loads_at(&sc, 0.3, &f1, &f2);
+	hb_scene_loads_at(&sc, 0.3, &f1, &f2);
 	cr_assert(fabs(f1 + sc.d.m1 * 9.81) < 1e-15);
-	cr_assert_eq(scene_Fer(&sc, 0.3), f1);
+	cr_assert_eq(hb_scene_Fer(&sc, 0.3), f1);
 	set(&sc, "loads.F1", "2.385 N");
-	cr_assert(fabs(scene_Fer(&sc, 0.3) - (2.385 - sc.d.m1 * 9.81)) < 1e-15);
+	cr_assert(fabs(hb_scene_Fer(&sc, 0.3) - (2.385 - sc.d.m1 * 9.81)) < 1e-15);
 	double xm = 1, vm = 1;
-	scene_com(&sc, 0.3, &xm, &vm);
+	hb_scene_com(&sc, 0.3, &xm, &vm);
 	cr_assert(xm == 0 && vm == 0);
 }
 
 struct qparams {
-	const struct scene *sc;
+	const struct hb_scene *sc;
 	double t1;
 	int weighted;
 	int com;
@@ -491,16 +491,16 @@ integrand(double s, void *p)
 
 	if (q->com) {
 		double f1, f2;
-		scene_loads_at(q->sc, s, &f1, &f2);
+		hb_scene_loads_at(q->sc, s, &f1, &f2);
 		f = (f1 + f2) / (q->sc->d.m1 + q->sc->d.m2);
 	} else
-		f = scene_Fer(q->sc, s) / q->sc->d.m;
+		f = hb_scene_Fer(q->sc, s) / q->sc->d.m;
 	return q->weighted ? (q->t1 - s) * f : f;
 }
 
 /* int_{t0}^{t1} of the integrand, splitting at the load kinks. */
 static double
-quad(const struct scene *sc, double t0, double t1, int weighted, int com)
+quad(const struct hb_scene *sc, double t0, double t1, int weighted, int com)
 {
 	struct qparams q = { sc, t1, weighted, com };
 	gsl_function F = { integrand, &q };
@@ -509,7 +509,7 @@ quad(const struct scene *sc, double t0, double t1, int weighted, int com)
 	int np = 0;
 
 	pts[np++] = t0;
-	np += scene_load_kinks(sc, t0, t1, pts + np, 3);
+	np += hb_scene_load_kinks(sc, t0, t1, pts + np, 3);
 	pts[np++] = t1;
 	for (int i = 0; i + 1 < np; i++) {
 		double r, err;
@@ -522,7 +522,7 @@ quad(const struct scene *sc, double t0, double t1, int weighted, int com)
 }
 
 static void
-check_increments(const struct scene *sc)
+check_increments(const struct hb_scene *sc)
 {
 	static const double iv[][2] = {
 		{ 0, 0.05 }, { 0.03, 0.17 }, { 0.05, 0.1 }, { 0.09, 0.11 }, { 0.15, 0.25 },
@@ -533,7 +533,7 @@ check_increments(const struct scene *sc)
 	gsl_set_error_handler_off();
 	for (size_t i = 0; i < sizeof iv / sizeof iv[0]; i++) {
 		double t0 = iv[i][0], t1 = iv[i][1], dx, dv, qx, qv;
-		scene_flight_increment(sc, t0, t1, &dx, &dv);
+		hb_scene_flight_increment(sc, t0, t1, &dx, &dv);
 		qv = quad(sc, t0, t1, 0, 0);
 		qx = quad(sc, t0, t1, 1, 0);
 		cr_assert(fabs(dv - qv) <= 1e-12 * fmax(fabs(qv), 1e-12),
@@ -545,7 +545,7 @@ check_increments(const struct scene *sc)
 
 Test(scene, flight_increment_full_ramp)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	study2(&sc);
 	set(&sc, "loads.F1", "0.3 N");
@@ -555,7 +555,7 @@ Test(scene, flight_increment_full_ramp)
 
 Test(scene, flight_increment_reduced_ramp)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	/* The ramp in the reduced system: F_e1 keeps its m1 a(t) term. */
 	study1(&sc);
@@ -571,33 +571,33 @@ Test(scene, flight_increment_reduced_ramp)
 
 Test(scene, flight_increment_constant_is_exact)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	double dx, dv, F;
 
 	study1(&sc);
-	F = scene_Fer(&sc, 0);
+	F = hb_scene_Fer(&sc, 0);
 	/* A short interval late in a run: F tau^2 / 2m, no cancellation. */
-	scene_flight_increment(&sc, 1e6, 1e6 + 1e-9, &dx, &dv);
+	hb_scene_flight_increment(&sc, 1e6, 1e6 + 1e-9, &dx, &dv);
 	double tau = (1e6 + 1e-9) - 1e6;
 	cr_assert(fabs(dv - F * tau / sc.d.m) <= 1e-15 * fabs(F * tau / sc.d.m));
 	cr_assert(fabs(dx - F * tau * tau / (2 * sc.d.m)) <= 1e-15 * fabs(F * tau * tau / sc.d.m));
 	/* Late in a ramp run, after T_e, the same. */
 	study2(&sc);
-	F = scene_Fer(&sc, 1e3);
-	scene_flight_increment(&sc, 1e3, 1e3 + 1e-7, &dx, &dv);
+	F = hb_scene_Fer(&sc, 1e3);
+	hb_scene_flight_increment(&sc, 1e3, 1e3 + 1e-7, &dx, &dv);
 	tau = (1e3 + 1e-7) - 1e3;
 	cr_assert(fabs(dx - F * tau * tau / (2 * sc.d.m)) <= 1e-15 * fabs(F * tau * tau / sc.d.m));
 	/* A short interval inside the ramp: against a Taylor expansion. */
-	double t0 = 0.137, h = 1e-6, a0 = scene_Fer(&sc, t0) / sc.d.m;
-	double a1 = (scene_Fer(&sc, t0 + 1e-7) - scene_Fer(&sc, t0 - 1e-7)) / 2e-7 / sc.d.m;
-	scene_flight_increment(&sc, t0, t0 + h, &dx, &dv);
+	double t0 = 0.137, h = 1e-6, a0 = hb_scene_Fer(&sc, t0) / sc.d.m;
+	double a1 = (hb_scene_Fer(&sc, t0 + 1e-7) - hb_scene_Fer(&sc, t0 - 1e-7)) / 2e-7 / sc.d.m;
+	hb_scene_flight_increment(&sc, t0, t0 + h, &dx, &dv);
 	double wx = a0 * h * h / 2 + a1 * h * h * h / 6;
 	cr_assert(fabs(dx - wx) <= 1e-9 * fabs(wx), "dx %.17g vs %.17g", dx, wx);
 }
 
 Test(scene, com_against_quadrature)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	double ts[] = { 0, 0.037, 0.1, 0.15, 0.2, 0.4137 };
 
 	gsl_set_error_handler_off();
@@ -608,7 +608,7 @@ Test(scene, com_against_quadrature)
 	set(&sc, "initial.x_m0", "2.385 mm");
 	for (size_t i = 0; i < sizeof ts / sizeof ts[0]; i++) {
 		double t = ts[i], xm, vm, wv, wx;
-		scene_com(&sc, t, &xm, &vm);
+		hb_scene_com(&sc, t, &xm, &vm);
 		wv = sc.init.vm0 + (t > 0 ? quad(&sc, 0, t, 0, 1) : 0);
 		wx = sc.init.xm0 + sc.init.vm0 * t + (t > 0 ? quad(&sc, 0, t, 1, 1) : 0);
 		cr_assert(fabs(vm - wv) < 1e-13, "v_m(%g) = %.15g, quadrature %.15g", t, vm, wv);
@@ -621,14 +621,14 @@ Test(scene, steppers)
 	static const char *const names[] = { "rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto",
 	                                     "dop853" };
 
-	cr_assert_eq(sizeof names / sizeof names[0], STEPPER_COUNT);
+	cr_assert_eq(sizeof names / sizeof names[0], HB_STEPPER_COUNT);
 
-	for (int i = 0; i < STEPPER_COUNT; i++) {
-		cr_assert_str_eq(scene_stepper_name(i), names[i]);
-		cr_assert_eq(scene_stepper_find(names[i]), i);
+	for (int i = 0; i < HB_STEPPER_COUNT; i++) {
+		cr_assert_str_eq(hb_scene_stepper_name(i), names[i]);
+		cr_assert_eq(hb_scene_stepper_find(names[i]), i);
 	}
-	cr_assert_eq(scene_stepper_find("euler"), -1);
-	cr_assert_eq(scene_stepper_find(NULL), -1);
+	cr_assert_eq(hb_scene_stepper_find("euler"), -1);
+	cr_assert_eq(hb_scene_stepper_find(NULL), -1);
 }
 
 /* ---------------------------------------------------------------- */
@@ -636,141 +636,141 @@ Test(scene, steppers)
 
 Test(scene, get_is_typed)
 {
-	struct scene sc;
-	struct scene_keyinfo ki;
-	struct scene_error err;
+	struct hb_scene sc;
+	struct hb_scene_keyinfo ki;
+	struct hb_scene_error err;
 
 	study1(&sc);
-	cr_assert_eq(scene_get(&sc, "law.alpha", &ki, &err), HB_OK);
-	cr_assert_eq(ki.kind, SCENE_KEY_NUMBER);
-	cr_assert_eq(ki.number, sc.par[law_param_index(sc.law, "alpha")]);
+	cr_assert_eq(hb_scene_get(&sc, "law.alpha", &ki, &err), HB_OK);
+	cr_assert_eq(ki.kind, HB_SCENE_KEY_NUMBER);
+	cr_assert_eq(ki.number, sc.par[hb_law_param_index(sc.law, "alpha")]);
 	cr_assert_str_eq(ki.unit, "");
 	cr_assert(ki.limits.lo == 0 && ki.limits.hi == 1 && ki.limits.lo_open && ki.limits.hi_open);
 
-	cr_assert_eq(scene_get(&sc, "law.beta", &ki, &err), HB_OK);
+	cr_assert_eq(hb_scene_get(&sc, "law.beta", &ki, &err), HB_OK);
 	cr_assert_str_eq(ki.unit, "m^-2"); /* n = 2 applied */
 
-	cr_assert_eq(scene_get(&sc, "body1.R", &ki, &err), HB_OK);
+	cr_assert_eq(hb_scene_get(&sc, "body1.R", &ki, &err), HB_OK);
 	cr_assert_eq(ki.number, 0.020);
 	cr_assert_str_eq(ki.unit, "m");
 	cr_assert(ki.limits.lo == 0 && isinf(ki.limits.hi) && !ki.limits.hi_open);
 
-	cr_assert_eq(scene_get(&sc, "run.J", &ki, &err), HB_OK);
-	cr_assert_eq(ki.kind, SCENE_KEY_WHOLE);
+	cr_assert_eq(hb_scene_get(&sc, "run.J", &ki, &err), HB_OK);
+	cr_assert_eq(ki.kind, HB_SCENE_KEY_WHOLE);
 	cr_assert(ki.limits.whole && ki.limits.lo == 1);
 
-	cr_assert_eq(scene_get(&sc, "run.stepper", &ki, &err), HB_OK);
-	cr_assert_eq(ki.kind, SCENE_KEY_CHOICE);
-	cr_assert_eq(ki.nchoices, STEPPER_COUNT);
+	cr_assert_eq(hb_scene_get(&sc, "run.stepper", &ki, &err), HB_OK);
+	cr_assert_eq(ki.kind, HB_SCENE_KEY_CHOICE);
+	cr_assert_eq(ki.nchoices, HB_STEPPER_COUNT);
 	cr_assert_str_eq(ki.choices[ki.choice], "rk8pd");
-	cr_assert_str_eq(ki.choices[STEPPER_AUTO], "auto");
+	cr_assert_str_eq(ki.choices[HB_STEPPER_AUTO], "auto");
 
-	cr_assert_eq(scene_get(&sc, "scene.law", &ki, &err), HB_OK);
+	cr_assert_eq(hb_scene_get(&sc, "scene.law", &ki, &err), HB_OK);
 	cr_assert_str_eq(ki.choices[ki.choice], "bwmcl");
-	cr_assert_eq(scene_get(&sc, "run.reductions", &ki, &err), HB_OK);
+	cr_assert_eq(hb_scene_get(&sc, "run.reductions", &ki, &err), HB_OK);
 	cr_assert_eq(ki.nchoices, 8);
 
 	/* Hidden by the panel, still readable: F2 in the reduced system. */
-	cr_assert_eq(scene_get(&sc, "loads.F2", &ki, &err), HB_OK);
+	cr_assert_eq(hb_scene_get(&sc, "loads.F2", &ki, &err), HB_OK);
 	cr_assert_str_eq(ki.unit, "N");
 
-	cr_assert_eq(scene_get(&sc, "law.nosuch", &ki, &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_get(&sc, "law.nosuch", &ki, &err), HB_EINVAL);
 	cr_assert_str_eq(err.key, "law.nosuch");
 	cr_assert(strstr(err.accepted, "law.alpha") != NULL, "%s", err.accepted);
 }
 
 Test(scene, errors_are_data)
 {
-	struct scene sc;
-	struct scene_error err;
+	struct hb_scene sc;
+	struct hb_scene_error err;
 	char buf[512];
 
 	study1(&sc);
-	cr_assert_eq(scene_set_text(&sc, "law.alpha", "1.5", &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_set_text(&sc, "law.alpha", "1.5", &err), HB_EINVAL);
 	cr_assert_str_eq(err.key, "law.alpha");
 	cr_assert_eq(err.has_range, 1);
 	cr_assert(err.range.lo == 0 && err.range.hi == 1);
 	cr_assert_str_eq(err.accepted, "(0, 1)");
-	cr_assert_str_eq(scene_error_str(&err, buf, sizeof buf),
+	cr_assert_str_eq(hb_scene_error_str(&err, buf, sizeof buf),
 	    "law.alpha: value 1.5 is out of range; accepted: (0, 1)");
 
-	cr_assert_eq(scene_set_number(&sc, "initial.x0", -1e-3, &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_set_number(&sc, "initial.x0", -1e-3, &err), HB_EINVAL);
 	cr_assert_str_eq(err.key, "initial.x0");
 	cr_assert(err.has_range && err.range.lo == 0 && !err.range.lo_open);
 
-	cr_assert_eq(scene_set_text(&sc, "run.stepper", "euler", &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_set_text(&sc, "run.stepper", "euler", &err), HB_EINVAL);
 	cr_assert_eq(err.has_range, 0);
 	cr_assert(strstr(err.accepted, "bsimp") != NULL);
 	/* An empty value still says what is accepted: the choices, or the unit. */
-	cr_assert_eq(scene_set_text(&sc, "run.stepper", " ", &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_set_text(&sc, "run.stepper", " ", &err), HB_EINVAL);
 	cr_assert(strstr(err.accepted, "dop853") != NULL, "%s", err.accepted);
-	cr_assert_eq(scene_set_text(&sc, "initial.x0", "", &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_set_text(&sc, "initial.x0", "", &err), HB_EINVAL);
 	cr_assert(strstr(err.accepted, "m") != NULL && strstr(err.what, "empty") != NULL);
-	cr_assert_eq(scene_set_text(&sc, "derived.m", "1", &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_set_text(&sc, "derived.m", "1", &err), HB_EINVAL);
 	cr_assert(err.accepted[0] != '\0');
 
 	/* The initial state and the loads are bounded, so that no flight overflows. */
-	cr_assert_eq(scene_set_number(&sc, "initial.v0", -1e300, &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_set_number(&sc, "initial.v0", -1e300, &err), HB_EINVAL);
 	cr_assert(err.has_range && err.range.lo == -1e5 && err.range.hi == 1e5);
-	cr_assert_eq(scene_set_number(&sc, "initial.v0", -1e5, &err), HB_OK);
-	cr_assert_eq(scene_set_number(&sc, "initial.x0", 1e300, &err), HB_EINVAL);
-	cr_assert_eq(scene_set_number(&sc, "loads.g", 1e300, &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_set_number(&sc, "initial.v0", -1e5, &err), HB_OK);
+	cr_assert_eq(hb_scene_set_number(&sc, "initial.x0", 1e300, &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_set_number(&sc, "loads.g", 1e300, &err), HB_EINVAL);
 	cr_assert_str_eq(err.key, "loads.g");
 	study1(&sc);
 	sc.loads.F1 = 1e300;
-	cr_assert_eq(scene_check(&sc, &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_check(&sc, &err), HB_EINVAL);
 	cr_assert_str_eq(err.key, "loads.F1");
 	cr_assert(err.has_range && err.range.hi == 1e7 * sc.d.m1, "%g", err.range.hi);
 	sc.loads.F1 = 0.5e7 * sc.d.m1;
-	cr_assert_eq(scene_check(&sc, &err), HB_OK);
+	cr_assert_eq(hb_scene_check(&sc, &err), HB_OK);
 	study1(&sc);
 
 	/* Validation names the key at fault, as data. */
-	sc.par[law_param_index(sc.law, "gamma")] = 2 * sc.par[law_param_index(sc.law, "beta")];
-	cr_assert_eq(scene_check(&sc, &err), HB_EINVAL);
+	sc.par[hb_law_param_index(sc.law, "gamma")] = 2 * sc.par[hb_law_param_index(sc.law, "beta")];
+	cr_assert_eq(hb_scene_check(&sc, &err), HB_EINVAL);
 	cr_assert_str_eq(err.key, "law.gamma");
 	study1(&sc);
 	sc.run.chatter = 1;
-	cr_assert_eq(scene_check(&sc, &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_check(&sc, &err), HB_EINVAL);
 	cr_assert_str_eq(err.key, "run.chatter");
 	cr_assert(err.has_range && err.range.whole && err.range.lo == 2);
 }
 
 Test(scene, set_number_is_set_text)
 {
-	struct scene a, b;
-	struct scene_error err;
+	struct hb_scene a, b;
+	struct hb_scene_error err;
 
 	study1(&a);
 	b = a;
-	cr_assert_eq(scene_set_number(&a, "body1.R", 0.0125, &err), HB_OK);
-	cr_assert_eq(scene_set_text(&b, "body1.R", "12.5 mm", &err), HB_OK);
+	cr_assert_eq(hb_scene_set_number(&a, "body1.R", 0.0125, &err), HB_OK);
+	cr_assert_eq(hb_scene_set_text(&b, "body1.R", "12.5 mm", &err), HB_OK);
 	cr_assert_eq(a.body[0].R, b.body[0].R);
 	cr_assert_eq(a.d.m1, b.d.m1);
-	cr_assert_eq(scene_set_number(&a, "run.J", 7, &err), HB_OK);
+	cr_assert_eq(hb_scene_set_number(&a, "run.J", 7, &err), HB_OK);
 	cr_assert_eq(a.run.J, 7);
-	cr_assert_eq(scene_set_number(&a, "run.J", 7.5, &err), HB_EINVAL);
-	cr_assert_eq(scene_set_number(&a, "run.stepper", 1, &err), HB_EINVAL);
-	cr_assert_eq(scene_set_number(&a, "body1.mass", 2, &err), HB_OK);
+	cr_assert_eq(hb_scene_set_number(&a, "run.J", 7.5, &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_set_number(&a, "run.stepper", 1, &err), HB_EINVAL);
+	cr_assert_eq(hb_scene_set_number(&a, "body1.mass", 2, &err), HB_OK);
 	cr_assert_eq(a.body[0].mass_given, 1);
 }
 
 /* Every key of the table has a default that is valid, and the defaults are the scene's. */
 Test(scene, table_defaults_are_the_default_scene)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[512];
 
-	scene_defaults(&sc);
-	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert_eq(sc.law, &law_hertz);
+	hb_scene_defaults(&sc);
+	cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(sc.law, &hb_law_hertz);
 	cr_assert_eq(sc.body[0].R, 0.020);
 	cr_assert(isinf(sc.body[1].R));
 	cr_assert_eq(sc.body[1].rho, 0);
-	cr_assert_eq(sc.run.reduce, REDUCE_ALL);
+	cr_assert_eq(sc.run.reduce, HB_REDUCE_ALL);
 	cr_assert_eq(sc.run.kinks, 1);
 	cr_assert_eq(sc.ext, 1);
-	cr_assert_eq(sc.run.stepper, STEPPER_RK8PD);
+	cr_assert_eq(sc.run.stepper, HB_STEPPER_RK8PD);
 }
 
 /*
@@ -784,18 +784,18 @@ Test(scene, advertised_infinity_is_what_is_taken)
 	int checked = 0;
 
 	for (size_t l = 0; l < sizeof laws / sizeof laws[0]; l++) {
-		struct scene sc;
+		struct hb_scene sc;
 		char msg[256];
-		scene_defaults(&sc);
-		cr_assert_eq(scene_set(&sc, "scene.law", laws[l], msg, sizeof msg), HB_OK, "%s", msg);
-		for (int i = 0; i < scene_nkeys(&sc); i++) {
-			struct scene_keyinfo ki;
-			struct scene trial = sc;
+		hb_scene_defaults(&sc);
+		cr_assert_eq(hb_scene_set(&sc, "scene.law", laws[l], msg, sizeof msg), HB_OK, "%s", msg);
+		for (int i = 0; i < hb_scene_nkeys(&sc); i++) {
+			struct hb_scene_keyinfo ki;
+			struct hb_scene trial = sc;
 			int took;
-			cr_assert_eq(scene_key(&sc, i, &ki), HB_OK);
-			if (ki.kind != SCENE_KEY_NUMBER || ki.readonly || !isinf(ki.limits.hi))
+			cr_assert_eq(hb_scene_key(&sc, i, &ki), HB_OK);
+			if (ki.kind != HB_SCENE_KEY_NUMBER || ki.readonly || !isinf(ki.limits.hi))
 				continue;
-			took = scene_set(&trial, ki.key, "inf", msg, sizeof msg) == HB_OK;
+			took = hb_scene_set(&trial, ki.key, "inf", msg, sizeof msg) == HB_OK;
 			cr_assert_eq(took, !ki.limits.hi_open,
 			    "%s (law %s) advertises %s but %s inf: %s", ki.key, laws[l], ki.range,
 			    took ? "takes" : "refuses", msg);
@@ -811,20 +811,20 @@ Test(scene, advertised_infinity_is_what_is_taken)
 /* A mass whose weight overflows is refused before the run, naming the mass. */
 Test(scene, weight_must_be_finite)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[256];
 
-	scene_defaults(&sc);
-	cr_assert_eq(scene_set(&sc, "body1.mass", "1e308 kg", msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_EINVAL);
+	hb_scene_defaults(&sc);
+	cr_assert_eq(hb_scene_set(&sc, "body1.mass", "1e308 kg", msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strncmp(msg, "body1.mass: its weight m g (1e+308 kg", 37) == 0, "%s", msg);
 	cr_assert(strstr(msg, "accepted: 1.833e+307 kg or less at g = 9.81 m/s^2") != NULL, "%s", msg);
 	cr_assert(strstr(msg, "inf") == NULL, "%s", msg);
 	/* Without gravity the same mass is fine. */
-	cr_assert_eq(scene_set(&sc, "loads.g", "0", msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_scene_set(&sc, "loads.g", "0", msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
 	/* A fixed obstacle (body 2 of infinite mass) carries no weight. */
-	scene_defaults(&sc);
-	cr_assert_eq(scene_set(&sc, "body2.mass", "inf", msg, sizeof msg), HB_OK, "%s", msg);
-	cr_assert_eq(scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
+	hb_scene_defaults(&sc);
+	cr_assert_eq(hb_scene_set(&sc, "body2.mass", "inf", msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_scene_validate(&sc, msg, sizeof msg), HB_OK, "%s", msg);
 }

@@ -16,7 +16,7 @@
 
 /* A body of mass M (kg) meets a fixed obstacle through LAW with [law] lines LAWTEXT. */
 static void
-mass_scene(struct scene *sc, const char *law, double M, const char *lawtext, double x0,
+mass_scene(struct hb_scene *sc, const char *law, double M, const char *lawtext, double x0,
            double v0, double g, double T, const char *ext)
 {
 	char ini[2048];
@@ -34,15 +34,15 @@ mass_scene(struct scene *sc, const char *law, double M, const char *lawtext, dou
 /* Paper, Example nonuniq_sep: contact lasts pi/omega, leaves at -v0, x_c^max = |v0|/omega. */
 Test(sim, clamped_linear_law_closed_form)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	double M = 1.7, k = 2.385e4, x0 = 1.2e-3, v0 = -0.43, w = sqrt(k / M);
-	struct sim *s;
-	const struct collision *c;
+	struct hb_sim *s;
+	const struct hb_collision *c;
 
 	mass_scene(&sc, "linear", M, "k = 2.385e4 N/m", x0, v0, 0.0, 0.05, "adhesive");
 	s = run_scene(&sc);
-	cr_assert_eq(sim_ncollisions(s), 1);
-	c = sim_collision(s, 0);
+	cr_assert_eq(hb_sim_ncollisions(s), 1);
+	c = hb_sim_collision(s, 0);
 	assert_rel(c->te, x0 / -v0, 1e-14);
 	assert_rel(c->td, M_PI / w, 1e-9);
 	assert_rel(c->e, 1.0, 1e-9);
@@ -51,43 +51,43 @@ Test(sim, clamped_linear_law_closed_form)
 	assert_abs(c->xcr, 0.0, 1e-12 * -v0 / w);
 	assert_rel(c->JFc, 2 * M * -v0, 1e-9);
 	/* rule R1 picks the separating solution chi^c: receding at -v0 afterwards */
-	assert_rel(arc_last(sim_arc(s))->v, -v0, 1e-9);
-	cr_assert_eq(arc_last(sim_arc(s))->q, 0);
-	sim_free(s);
+	assert_rel(hb_arc_last(hb_sim_arc(s))->v, -v0, 1e-9);
+	cr_assert_eq(hb_arc_last(hb_sim_arc(s))->q, 0);
+	hb_sim_free(s);
 }
 
 /* Without the adhesive extension the clamped law keeps the interface engaged (chi^d). */
 Test(sim, clamped_linear_law_without_extension_stays_engaged)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	double M = 1.7, k = 2.385e4, x0 = 1.2e-3, v0 = -0.43, w = sqrt(k / M);
 	double t2 = x0 / -v0 + M_PI / w, T = 0.05;
-	struct sim *s;
-	const struct arc_sample *l;
+	struct hb_sim *s;
+	const struct hb_arc_sample *l;
 
 	mass_scene(&sc, "linear", M, "k = 2.385e4 N/m", x0, v0, 0.0, T, "none");
 	s = run_scene(&sc);
-	cr_assert_eq(sim_ncollisions(s), 0, "no separation may be registered");
-	l = arc_last(sim_arc(s));
+	cr_assert_eq(hb_sim_ncollisions(s), 0, "no separation may be registered");
+	l = hb_arc_last(hb_sim_arc(s));
 	cr_assert_eq(l->q, 1);
 	cr_assert_eq(l->j, 1);
 	assert_rel(l->xc, -v0 * (T - t2), 1e-8); /* x_c = -v0 (t - t2) */
 	assert_abs(l->Fc, 0.0, 0.0);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /* Hertz elastic impact: x_c^max = (5 m v^2/(4k))^(2/5), e = 1, t_d = 2.9432 x_c^max / v. */
 Test(sim, hertz_elastic_impact)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	double M = 0.0327, k = 1.0234e10, v0 = -0.385, d, td;
-	struct sim *s;
-	const struct collision *c;
+	struct hb_sim *s;
+	const struct hb_collision *c;
 
 	mass_scene(&sc, "hertz", M, "k = 1.0234e10 N m^-3/2\np = 1.5", 1e-4, v0, 0.0, 1e-3, "adhesive");
 	s = run_scene(&sc);
-	cr_assert_eq(sim_ncollisions(s), 1);
-	c = sim_collision(s, 0);
+	cr_assert_eq(hb_sim_ncollisions(s), 1);
+	c = hb_sim_collision(s, 0);
 	d = pow(5 * M * v0 * v0 / (4 * k), 0.4);
 	/* t_d = 2 (d/v) int_0^1 (1 - u^(5/2))^(-1/2) du = 2 (d/v) G(7/5) G(1/2) / G(9/10) */
 	td = 2 * d / -v0 * gsl_sf_gamma(1.4) * gsl_sf_gamma(0.5) / gsl_sf_gamma(0.9);
@@ -95,17 +95,17 @@ Test(sim, hertz_elastic_impact)
 	assert_rel(c->e, 1.0, 1e-8);
 	assert_rel(c->td, td, 1e-8);
 	assert_rel(c->Fcmax, k * pow(d, 1.5), 1e-8);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /* Free flight under a constant force: the first contact at the root of the parabola. */
 Test(sim, free_flight_constant_force)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	double M = 0.2385, x0 = 0.0123, v0 = 0.321, g = 9.81, F1 = 0.1;
 	double a = -g + F1 / M, te;
 	char ini[1024];
-	struct sim *s;
+	struct hb_sim *s;
 
 	snprintf(ini, sizeof ini,
 	         "[scene]\nlaw = hertz\n[body1]\nmass = %g kg\n[body2]\nmass = inf\n"
@@ -114,54 +114,54 @@ Test(sim, free_flight_constant_force)
 	scene_from(ini, &sc);
 	s = run_scene(&sc);
 	te = (-v0 - sqrt(v0 * v0 - 2 * a * x0)) / a;
-	cr_assert(sim_ncollisions(s) >= 1);
-	assert_rel(sim_collision(s, 0)->te, te, 1e-14);
-	assert_rel(sim_collision(s, 0)->vi, v0 + a * te, 1e-13);
-	sim_free(s);
+	cr_assert(hb_sim_ncollisions(s) >= 1);
+	assert_rel(hb_sim_collision(s, 0)->te, te, 1e-14);
+	assert_rel(hb_sim_collision(s, 0)->vi, v0 + a * te, 1e-13);
+	hb_sim_free(s);
 }
 
 /* Rule R2: the rest example stays at rest, flowing, without a single jump. */
 Test(sim, rest_on_the_boundary_never_jumps)
 {
-	struct scene sc;
-	struct sim *s;
-	const struct arc_sample *l;
+	struct hb_scene sc;
+	struct hb_sim *s;
+	const struct hb_arc_sample *l;
 
 	scene_preset("nonunique-rest", &sc);
 	s = run_scene(&sc);
-	l = arc_last(sim_arc(s));
-	cr_assert_eq(sim_stats(s)->jumps, 0);
+	l = hb_arc_last(hb_sim_arc(s));
+	cr_assert_eq(hb_sim_stats(s)->jumps, 0);
 	cr_assert_eq(l->j, 0);
 	cr_assert_eq(l->t, sc.run.T);
 	cr_assert_eq(l->x, 0.0);
 	cr_assert_eq(l->v, 0.0);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /* A start on the surface under gravity cannot flow: it jumps into contact at t = 0. */
 Test(sim, rest_on_the_boundary_under_gravity_commences_at_once)
 {
-	struct scene sc;
-	struct sim *s;
-	const struct arc_jump *jr;
+	struct hb_scene sc;
+	struct hb_sim *s;
+	const struct hb_arc_jump *jr;
 
 	mass_scene(&sc, "hertz", 0.25, "k = 2e8", 0.0, 0.0, 9.81, 0.01, "adhesive");
 	s = run_scene(&sc);
-	jr = arc_jump_at(sim_arc(s), 0);
+	jr = hb_arc_jump_at(hb_sim_arc(s), 0);
 	cr_assert_not_null(jr);
 	cr_assert_eq(jr->t, 0.0);
 	cr_assert_eq(jr->from_q, 0);
-	cr_assert_eq(jr->how, LOCATE_START);
-	cr_assert_eq(sim_ncollisions(s), 0);
-	cr_assert_eq(arc_last(sim_arc(s))->q, 1);
-	sim_free(s);
+	cr_assert_eq(jr->how, HB_LOCATE_START);
+	cr_assert_eq(hb_sim_ncollisions(s), 0);
+	cr_assert_eq(hb_arc_last(hb_sim_arc(s))->q, 1);
+	hb_sim_free(s);
 }
 
 /* BWSHCCL with beta = gamma = 0 and A = 1 is SHCCL (z = x_c). */
 Test(sim, bwshccl_without_hysteresis_is_shccl)
 {
-	struct scene a, b;
-	struct sim *sa, *sb;
+	struct hb_scene a, b;
+	struct hb_sim *sa, *sb;
 	size_t i;
 
 	mass_scene(&a, "shccl", 0.2614, "k = 4.254e8\np = 1.5\nc = 2.15e9", 1e-4, -0.0613, 9.81, 0.06,
@@ -171,10 +171,10 @@ Test(sim, bwshccl_without_hysteresis_is_shccl)
 	           1e-4, -0.0613, 9.81, 0.06, "adhesive");
 	sa = run_scene(&a);
 	sb = run_scene(&b);
-	cr_assert_eq(sim_ncollisions(sa), sim_ncollisions(sb));
-	cr_assert(sim_ncollisions(sa) >= 3);
-	for (i = 0; i < sim_ncollisions(sa); i++) {
-		const struct collision *ca = sim_collision(sa, i), *cb = sim_collision(sb, i);
+	cr_assert_eq(hb_sim_ncollisions(sa), hb_sim_ncollisions(sb));
+	cr_assert(hb_sim_ncollisions(sa) >= 3);
+	for (i = 0; i < hb_sim_ncollisions(sa); i++) {
+		const struct hb_collision *ca = hb_sim_collision(sa, i), *cb = hb_sim_collision(sb, i);
 
 		assert_rel(cb->te, ca->te, 1e-9);
 		assert_rel(cb->td, ca->td, 1e-8);
@@ -182,8 +182,8 @@ Test(sim, bwshccl_without_hysteresis_is_shccl)
 		assert_rel(cb->xcmax, ca->xcmax, 1e-8);
 		assert_rel(cb->Fcmax, ca->Fcmax, 1e-8);
 	}
-	sim_free(sa);
-	sim_free(sb);
+	hb_sim_free(sa);
+	hb_sim_free(sb);
 }
 
 /*
@@ -193,23 +193,23 @@ Test(sim, bwshccl_without_hysteresis_is_shccl)
  */
 Test(sim, bwmcl_linear_maxwell_element)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	double M = 0.385, k = 2.1e5, c = 450.0, v0 = -0.73;
 	double zeta = sqrt(k * M) / (2 * c), e = exp(-M_PI * zeta / sqrt(1 - zeta * zeta));
 	char law[256];
-	struct sim *s;
-	const struct collision *col;
+	struct hb_sim *s;
+	const struct hb_collision *col;
 
 	snprintf(law, sizeof law, "k = %g N/m\np = 1\nA = 1\nalpha = 0.35\nbeta = 0\ngamma = 0\nn = 2\nc = %g N s/m",
 	         k, c);
 	mass_scene(&sc, "bwmcl", M, law, 1e-3, v0, 0.0, 0.05, "adhesive");
 	s = run_scene(&sc);
-	cr_assert_eq(sim_ncollisions(s), 1);
-	col = sim_collision(s, 0);
+	cr_assert_eq(hb_sim_ncollisions(s), 1);
+	col = hb_sim_collision(s, 0);
 	assert_rel(col->e, e, 1e-8);
 	assert_rel(col->xcr, (1 + e) * M * -v0 / c, 1e-8);
 	assert_rel(col->td, M_PI / (sqrt(k / M) * sqrt(1 - zeta * zeta)), 1e-8);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /*
@@ -230,34 +230,34 @@ Test(sim, shccl_restitution_marhefka_orin)
 				double a = a_values[ia], c = a * k / v0;
 				double e = (1 + gsl_sf_lambert_W0(-(1 + a) * exp(-(1 + a)))) / a;
 				char law[256];
-				struct scene sc;
-				struct sim *s;
+				struct hb_scene sc;
+				struct hb_sim *s;
 
 				snprintf(law, sizeof law, "k = %.17g N m^-%g\np = %g\nc = %.17g N s m^-%g",
 				         k, ps[ip], ps[ip], c, ps[ip] + 1);
 				mass_scene(&sc, "shccl", masses[im], law, 1e-4, -v0, 0.0, 0.02, "adhesive");
 				s = run_scene(&sc);
-				cr_assert_eq(sim_ncollisions(s), 1);
-				assert_rel(sim_collision(s, 0)->e, e, 1e-8);
-				sim_free(s);
+				cr_assert_eq(hb_sim_ncollisions(s), 1);
+				assert_rel(hb_sim_collision(s, 0)->e, e, 1e-8);
+				hb_sim_free(s);
 			}
 }
 
 /* Without rule R1, SHCCL's separations (just past x_c = 0) never happen: no collision. */
 Test(sim, shccl_without_extension_registers_no_collision)
 {
-	struct scene sc;
-	struct sim *s;
+	struct hb_scene sc;
+	struct hb_sim *s;
 
 	scene_preset("permanent-contact-shccl", &sc);
-	cr_assert_eq(scene_set(&sc, "scene.extension", "none", NULL, 0), 0);
+	cr_assert_eq(hb_scene_set(&sc, "scene.extension", "none", NULL, 0), 0);
 	s = run_scene(&sc);
-	cr_assert_eq(sim_ncollisions(s), 0);
-	sim_free(s);
+	cr_assert_eq(hb_sim_ncollisions(s), 0);
+	hb_sim_free(s);
 	scene_preset("permanent-contact-shccl", &sc);
 	s = run_scene(&sc);
-	cr_assert(sim_ncollisions(s) >= 5);
-	sim_free(s);
+	cr_assert(hb_sim_ncollisions(s) >= 5);
+	hb_sim_free(s);
 }
 
 /* Two bodies with different masses but the same reduced mass move alike relative to each other. */
@@ -268,8 +268,8 @@ Test(sim, same_reduced_mass_same_relative_motion)
 	    "[law]\nk = 7.095e7\n[loads]\ng = 0\nF1 = -0.5759 N\nF2 = 0.5759 N\n" \
 	    "[initial]\nx0 = 1.5 mm\nv0 = -0.05\nx_m0 = 0\nv_m0 = 0.12\n[run]\nT = 1.5\n"
 	char ini[1024];
-	struct scene a, b;
-	struct sim *sa, *sb;
+	struct hb_scene a, b;
+	struct hb_sim *sa, *sb;
 	size_t i;
 
 	snprintf(ini, sizeof ini, SAME_M_FMT, 2.0, 3.0);
@@ -277,104 +277,104 @@ Test(sim, same_reduced_mass_same_relative_motion)
 	snprintf(ini, sizeof ini, SAME_M_FMT, 1.5, 6.0);
 	scene_from(ini, &b);
 	assert_rel(a.d.m, b.d.m, 1e-15);
-	cr_assert_eq(a.d.system, SCENE_FULL);
+	cr_assert_eq(a.d.system, HB_SCENE_FULL);
 	sa = run_scene(&a);
 	sb = run_scene(&b);
-	cr_assert_eq(sim_ncollisions(sa), sim_ncollisions(sb));
-	cr_assert(sim_ncollisions(sa) >= 3);
-	for (i = 0; i < sim_ncollisions(sa); i++) {
-		assert_rel(sim_collision(sb, i)->te, sim_collision(sa, i)->te, 1e-12);
-		assert_rel(sim_collision(sb, i)->e, sim_collision(sa, i)->e, 1e-10);
+	cr_assert_eq(hb_sim_ncollisions(sa), hb_sim_ncollisions(sb));
+	cr_assert(hb_sim_ncollisions(sa) >= 3);
+	for (i = 0; i < hb_sim_ncollisions(sa); i++) {
+		assert_rel(hb_sim_collision(sb, i)->te, hb_sim_collision(sa, i)->te, 1e-12);
+		assert_rel(hb_sim_collision(sb, i)->e, hb_sim_collision(sa, i)->e, 1e-10);
 	}
-	assert_rel(arc_last(sim_arc(sb))->x, arc_last(sim_arc(sa))->x, 1e-9);
-	sim_free(sa);
-	sim_free(sb);
+	assert_rel(hb_arc_last(hb_sim_arc(sb))->x, hb_arc_last(hb_sim_arc(sa))->x, 1e-9);
+	hb_sim_free(sa);
+	hb_sim_free(sb);
 }
 
-/* Budgeted advances give the same run as one sim_run, bit for bit. */
+/* Budgeted advances give the same run as one hb_sim_run, bit for bit. */
 Test(sim, advance_in_slices_is_the_same_run)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[512];
-	struct sim *a, *b;
+	struct hb_sim *a, *b;
 	size_t i;
 	int calls = 0;
 
 	scene_preset("steel-on-bitumen", &sc);
 	a = run_scene(&sc);
-	b = sim_new(&sc, msg, sizeof msg);
+	b = hb_sim_new(&sc, msg, sizeof msg);
 	cr_assert_not_null(b);
-	while (sim_end(b) == SIM_RUNNING) {
-		cr_assert_eq(sim_advance(b, 7, 0.0), 0);
+	while (hb_sim_end(b) == HB_SIM_RUNNING) {
+		cr_assert_eq(hb_sim_advance(b, 7, 0.0), 0);
 		calls++;
 	}
 	cr_assert(calls > 10);
-	cr_assert_eq(sim_advance(b, 7, 0.0), HB_EDONE);
-	cr_assert_eq(arc_len(sim_arc(a)), arc_len(sim_arc(b)));
-	for (i = 0; i < arc_len(sim_arc(a)); i++)
-		cr_assert_eq(memcmp(arc_at(sim_arc(a), i), arc_at(sim_arc(b), i), sizeof(struct arc_sample)), 0,
+	cr_assert_eq(hb_sim_advance(b, 7, 0.0), HB_EDONE);
+	cr_assert_eq(hb_arc_len(hb_sim_arc(a)), hb_arc_len(hb_sim_arc(b)));
+	for (i = 0; i < hb_arc_len(hb_sim_arc(a)); i++)
+		cr_assert_eq(memcmp(hb_arc_at(hb_sim_arc(a), i), hb_arc_at(hb_sim_arc(b), i), sizeof(struct hb_arc_sample)), 0,
 		             "sample %zu differs", i);
-	sim_free(a);
-	sim_free(b);
+	hb_sim_free(a);
+	hb_sim_free(b);
 }
 
 /* Rewind to a sample inside a contact and continue: the same run to the integrator's accuracy. */
 Test(sim, seek_and_continue)
 {
-	struct scene sc;
-	struct sim *a, *b;
+	struct hb_scene sc;
+	struct hb_sim *a, *b;
 	size_t i, mid = 0, n;
-	const struct arc *arc;
+	const struct hb_arc *arc;
 
 	scene_preset("steel-on-bitumen", &sc);
 	a = run_scene(&sc);
 	b = run_scene(&sc);
-	arc = sim_arc(b);
+	arc = hb_sim_arc(b);
 	/* a sample in the middle of the third contact */
-	for (i = 0; i < arc_len(arc); i++)
-		if (arc_at(arc, i)->j == 5 && arc_at(arc, i)->v > 0) {
+	for (i = 0; i < hb_arc_len(arc); i++)
+		if (hb_arc_at(arc, i)->j == 5 && hb_arc_at(arc, i)->v > 0) {
 			mid = i;
 			break;
 		}
 	cr_assert(mid > 0);
-	cr_assert_eq(sim_seek(b, mid), 0);
-	cr_assert_eq(arc_len(sim_arc(b)), mid + 1);
-	cr_assert_eq(sim_ncollisions(b), 2);
-	cr_assert_eq(sim_end(b), SIM_RUNNING);
-	cr_assert_eq(sim_run(b), 0);
-	n = sim_ncollisions(a);
-	cr_assert_eq(sim_ncollisions(b), n);
+	cr_assert_eq(hb_sim_seek(b, mid), 0);
+	cr_assert_eq(hb_arc_len(hb_sim_arc(b)), mid + 1);
+	cr_assert_eq(hb_sim_ncollisions(b), 2);
+	cr_assert_eq(hb_sim_end(b), HB_SIM_RUNNING);
+	cr_assert_eq(hb_sim_run(b), 0);
+	n = hb_sim_ncollisions(a);
+	cr_assert_eq(hb_sim_ncollisions(b), n);
 	for (i = 0; i < n; i++) {
-		assert_rel(sim_collision(b, i)->ts, sim_collision(a, i)->ts, 1e-10);
-		assert_rel(sim_collision(b, i)->e, sim_collision(a, i)->e, 1e-7);
-		assert_rel(sim_collision(b, i)->W, sim_collision(a, i)->W, 1e-7);
-		assert_rel(sim_collision(b, i)->xcmax, sim_collision(a, i)->xcmax, 1e-8);
+		assert_rel(hb_sim_collision(b, i)->ts, hb_sim_collision(a, i)->ts, 1e-10);
+		assert_rel(hb_sim_collision(b, i)->e, hb_sim_collision(a, i)->e, 1e-7);
+		assert_rel(hb_sim_collision(b, i)->W, hb_sim_collision(a, i)->W, 1e-7);
+		assert_rel(hb_sim_collision(b, i)->xcmax, hb_sim_collision(a, i)->xcmax, 1e-8);
 	}
 	/* rewind into flight, edit c, continue: the earlier collisions are kept */
-	cr_assert_eq(sim_seek(b, mid), 0);
+	cr_assert_eq(hb_sim_seek(b, mid), 0);
 	{
-		struct scene nsc = *sim_scene(b);
+		struct hb_scene nsc = *hb_sim_scene(b);
 		int restarted = -1;
 		char msg[256];
 
-		cr_assert_eq(scene_set(&nsc, "law.c", "8.8e3 N s/m", msg, sizeof msg), 0, "%s", msg);
-		cr_assert_eq(sim_set_scene(b, &nsc, &restarted, msg, sizeof msg), 0, "%s", msg);
+		cr_assert_eq(hb_scene_set(&nsc, "law.c", "8.8e3 N s/m", msg, sizeof msg), 0, "%s", msg);
+		cr_assert_eq(hb_sim_set_scene(b, &nsc, &restarted, msg, sizeof msg), 0, "%s", msg);
 		cr_assert_eq(restarted, 0);
-		cr_assert_eq(sim_ncollisions(b), 2);
-		cr_assert_eq(sim_run(b), 0);
-		cr_assert_eq(sim_collision(b, 1)->ts, sim_collision(a, 1)->ts);
-		cr_assert(fabs(sim_collision(b, 2)->e - sim_collision(a, 2)->e) > 1e-3,
+		cr_assert_eq(hb_sim_ncollisions(b), 2);
+		cr_assert_eq(hb_sim_run(b), 0);
+		cr_assert_eq(hb_sim_collision(b, 1)->ts, hb_sim_collision(a, 1)->ts);
+		cr_assert(fabs(hb_sim_collision(b, 2)->e - hb_sim_collision(a, 2)->e) > 1e-3,
 		          "the edit must change the third collision");
 	}
-	sim_free(a);
-	sim_free(b);
+	hb_sim_free(a);
+	hb_sim_free(b);
 }
 
 /* ---- error paths: a law that misbehaves on purpose ---- */
 
-static const struct law_param bad_params[] = {
-	{ "k", { 1, 1, -2, -1, 0 }, 0, HUGE_VAL, 1, 0, 1e8, LAW_PARAM_STIFFNESS, "stiffness" },
-	{ "p", { 0, 0, 0, 0, 0 }, 1, HUGE_VAL, 0, 0, 1.5, LAW_PARAM_EXPONENT_P, "exponent" },
+static const struct hb_law_param bad_params[] = {
+	{ "k", { 1, 1, -2, -1, 0 }, 0, HUGE_VAL, 1, 0, 1e8, HB_LAW_PARAM_STIFFNESS, "stiffness" },
+	{ "p", { 0, 0, 0, 0, 0 }, 1, HUGE_VAL, 0, 0, 1.5, HB_LAW_PARAM_EXPONENT_P, "exponent" },
 };
 
 static double
@@ -394,78 +394,78 @@ nan_jac(const double *par, int ext, double xc, const double *z, double v, double
 	dphi[1] = 0.0;
 }
 
-static const struct law_type law_nan = {
+static const struct hb_law_type law_nan = {
 	"nan", "NaN below 2 um", "test law", 0, 2, bad_params, 0, nan_phi, NULL, nan_jac, NULL, NULL, NULL, NULL, 0,
 };
 
 Test(sim, nan_from_the_flow_fails_and_keeps_the_arc)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[512];
-	struct sim *s;
+	struct hb_sim *s;
 	size_t n, i, good = 0;
-	const struct arc_sample *l;
-	struct arc_sample *snap = NULL;
+	const struct hb_arc_sample *l;
+	struct hb_arc_sample *snap = NULL;
 	int st;
 
 	mass_scene(&sc, "hertz", 0.25, "k = 1e8", 1e-3, -0.3, 0.0, 0.01, "adhesive");
 	sc.law = &law_nan;
-	s = sim_new(&sc, msg, sizeof msg);
+	s = hb_sim_new(&sc, msg, sizeof msg);
 	cr_assert_not_null(s, "%s", msg);
 	/* one step at a time, keeping a copy of the arc as it was before each advance */
-	while ((st = sim_advance(s, 1, 0)) == HB_OK && sim_end(s) == SIM_RUNNING) {
-		good = arc_len(sim_arc(s));
+	while ((st = hb_sim_advance(s, 1, 0)) == HB_OK && hb_sim_end(s) == HB_SIM_RUNNING) {
+		good = hb_arc_len(hb_sim_arc(s));
 		snap = realloc(snap, good * sizeof *snap);
 		cr_assert_not_null(snap);
 		for (i = 0; i < good; i++)
-			memcpy(&snap[i], arc_at(sim_arc(s), i), sizeof *snap);
+			memcpy(&snap[i], hb_arc_at(hb_sim_arc(s), i), sizeof *snap);
 	}
-	cr_assert_eq(st, HB_ENUMERIC, "%s", sim_errmsg(s));
-	cr_assert_eq(sim_end(s), SIM_END_FAIL);
+	cr_assert_eq(st, HB_ENUMERIC, "%s", hb_sim_errmsg(s));
+	cr_assert_eq(hb_sim_end(s), HB_SIM_END_FAIL);
 	cr_assert(good > 3, "the flow failed only after some good steps (%zu samples)", good);
-	cr_assert(strstr(sim_errmsg(s), "t =") != NULL && strstr(sim_errmsg(s), "j = 1") != NULL,
-	          "message names (t, j): %s", sim_errmsg(s));
-	n = arc_len(sim_arc(s));
+	cr_assert(strstr(hb_sim_errmsg(s), "t =") != NULL && strstr(hb_sim_errmsg(s), "j = 1") != NULL,
+	          "message names (t, j): %s", hb_sim_errmsg(s));
+	n = hb_arc_len(hb_sim_arc(s));
 	cr_assert(n > 3);
-	l = arc_last(sim_arc(s));
+	l = hb_arc_last(hb_sim_arc(s));
 	cr_assert(isfinite(l->x) && isfinite(l->v) && isfinite(l->xc) && isfinite(l->Fc));
 	cr_assert(l->xc >= -2e-6 - 1e-12);
-	cr_assert_eq(check_solution_pair(&sc, sim_arc(s), msg, sizeof msg), 0, "%s", msg);
-	cr_assert_eq(sim_advance(s, 0, 0), HB_EDONE);
+	cr_assert_eq(hb_check_solution_pair(&sc, hb_sim_arc(s), msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_sim_advance(s, 0, 0), HB_EDONE);
 	/* the failed advance kept every sample computed before it, to the bit */
 	cr_assert(n >= good, "the failed advance dropped samples: %zu before, %zu after", good, n);
 	for (i = 0; i < good; i++)
-		cr_assert(memcmp(arc_at(sim_arc(s), i), &snap[i], sizeof *snap) == 0,
+		cr_assert(memcmp(hb_arc_at(hb_sim_arc(s), i), &snap[i], sizeof *snap) == 0,
 		          "sample %zu of %zu changed by the failed advance", i, good);
 	free(snap);
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 Test(sim, bad_scene_is_refused_with_a_message)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[512] = "";
 
 	scene_preset("steel-on-bitumen", &sc);
-	sc.par[law_param_index(sc.law, "alpha")] = 1.5;
-	cr_assert_null(sim_new(&sc, msg, sizeof msg));
+	sc.par[hb_law_param_index(sc.law, "alpha")] = 1.5;
+	cr_assert_null(hb_sim_new(&sc, msg, sizeof msg));
 	cr_assert(strstr(msg, "alpha") != NULL, "%s", msg);
 }
 
 /* An absurd approach speed overflows the flight: a failure with a message, not a silent horizon. */
 Test(sim, overflowing_flight_is_refused_before_the_run)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[512];
-	struct sim *s;
+	struct hb_sim *s;
 
 	/* The typed setter refuses it, naming the key and its range ... */
 	scene_preset("steel-on-bitumen", &sc);
-	cr_assert_eq(scene_set(&sc, "initial.v0", "-1e300", msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_scene_set(&sc, "initial.v0", "-1e300", msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "initial.v0") != NULL && strstr(msg, "100000") != NULL, "%s", msg);
-	/* ... and so does sim_new for a scene written directly, with no run started. */
+	/* ... and so does hb_sim_new for a scene written directly, with no run started. */
 	sc.init.v0 = -1e300;
-	s = sim_new(&sc, msg, sizeof msg);
+	s = hb_sim_new(&sc, msg, sizeof msg);
 	cr_assert_null(s);
 	cr_assert(strstr(msg, "initial.v0") != NULL && strstr(msg, "out of range") != NULL, "%s", msg);
 }
@@ -484,7 +484,7 @@ Test(sim, overflowing_flight_is_refused_before_the_run)
 Test(sim, heavy_damping_separates_at_zero_indentation)
 {
 	static const double as[] = { 50, 300, 2000 };
-	static const int steppers[] = { STEPPER_DOP853, STEPPER_RK8PD, STEPPER_BSIMP, STEPPER_AUTO };
+	static const int steppers[] = { HB_STEPPER_DOP853, HB_STEPPER_RK8PD, HB_STEPPER_BSIMP, HB_STEPPER_AUTO };
 	static const double rtols[] = { 1e-10, 1e-12, 1e-13 };
 	const double M = 0.1, k = 1e9, v0 = -1.0;
 	size_t ia, is, ir;
@@ -494,24 +494,24 @@ Test(sim, heavy_damping_separates_at_zero_indentation)
 		double w = -gsl_sf_lambert_W0(-(1 + a) * exp(-(1 + a)));
 		double e_exact = (1 - w) / a, td_ref = NAN;
 		char lawtext[128];
-		struct scene sc;
+		struct hb_scene sc;
 
 		snprintf(lawtext, sizeof lawtext, "k = %.17g\np = 1.5\nc = %.17g", k, c);
 		mass_scene(&sc, "shccl", M, lawtext, 1e-3, v0, 0.0, 0.03, "adhesive");
 		for (is = 0; is < sizeof steppers / sizeof steppers[0]; is++) {
 			double td[3];
-			const char *nm = scene_stepper_name(steppers[is]);
+			const char *nm = hb_scene_stepper_name(steppers[is]);
 
 			for (ir = 0; ir < 3; ir++) {
-				struct sim *s;
-				const struct collision *col;
+				struct hb_sim *s;
+				const struct hb_collision *col;
 
 				sc.run.stepper = steppers[is];
 				sc.run.rtol = sc.run.atol = rtols[ir];
 				s = run_scene(&sc);
-				cr_assert_eq(sim_ncollisions(s), 1, "a = %g, %s, rtol %g: %zu collisions", a,
-				             nm, rtols[ir], sim_ncollisions(s));
-				col = sim_collision(s, 0);
+				cr_assert_eq(hb_sim_ncollisions(s), 1, "a = %g, %s, rtol %g: %zu collisions", a,
+				             nm, rtols[ir], hb_sim_ncollisions(s));
+				col = hb_sim_collision(s, 0);
 				cr_expect_leq(col->xcr, 1e-6 * col->xcmax,
 				              "a = %g, %s, rtol %g: residual %g of x_c^max %g", a, nm,
 				              rtols[ir], col->xcr, col->xcmax);
@@ -519,7 +519,7 @@ Test(sim, heavy_damping_separates_at_zero_indentation)
 				              "a = %g, %s, rtol %g: e = %.15g, Marhefka-Orin %.15g", a, nm,
 				              rtols[ir], col->e, e_exact);
 				td[ir] = col->td;
-				sim_free(s);
+				hb_sim_free(s);
 			}
 			cr_expect_lt(fabs(td[2] - td[1]), fabs(td[1] - td[0]) + 1e-15 * td[2],
 			             "a = %g, %s: t_d %.15g, %.15g, %.15g does not converge", a, nm, td[0],
@@ -535,7 +535,7 @@ Test(sim, heavy_damping_separates_at_zero_indentation)
 }
 
 /*
- * sim_seek and sim_set_scene inside a contact keep what a continued run
+ * hb_sim_seek and hb_sim_set_scene inside a contact keep what a continued run
  * needs (the scales of the interval, the noise filter of round-off-level
  * kink crossings, the step size the controller proposes): the first study
  * cut at t = 0.4 s, in its sinking phase, and continued does the work of a
@@ -546,9 +546,9 @@ Test(sim, heavy_damping_separates_at_zero_indentation)
 static void
 seek_and_compare(int how, int stepper)
 {
-	struct scene sc;
-	struct sim *a, *b;
-	const struct arc *arc;
+	struct hb_scene sc;
+	struct hb_sim *a, *b;
+	const struct hb_arc *arc;
 	long ra, ka, r0, k0, rb, kb;
 	size_t i, n;
 	char msg[512];
@@ -556,63 +556,63 @@ seek_and_compare(int how, int stepper)
 	scene_preset("steel-on-bitumen", &sc);
 	sc.run.stepper = stepper;
 	a = run_scene(&sc);
-	ra = sim_stats(a)->rhs;
-	ka = sim_stats(a)->kinks;
-	arc = sim_arc(a);
-	n = arc_len(arc);
-	for (i = 0; i < n && !(arc_at(arc, i)->t >= 0.4 && arc_at(arc, i)->kind == ARC_STEP); i++)
+	ra = hb_sim_stats(a)->rhs;
+	ka = hb_sim_stats(a)->kinks;
+	arc = hb_sim_arc(a);
+	n = hb_arc_len(arc);
+	for (i = 0; i < n && !(hb_arc_at(arc, i)->t >= 0.4 && hb_arc_at(arc, i)->kind == HB_ARC_STEP); i++)
 		;
 	cr_assert_lt(i, n);
-	cr_assert_eq(arc_at(arc, i)->q, 1, "t = 0.4 s is in the last contact");
-	b = sim_new(&sc, msg, sizeof msg);
+	cr_assert_eq(hb_arc_at(arc, i)->q, 1, "t = 0.4 s is in the last contact");
+	b = hb_sim_new(&sc, msg, sizeof msg);
 	cr_assert_not_null(b, "%s", msg);
-	while (arc_len(sim_arc(b)) <= i)
-		cr_assert_eq(sim_advance(b, 1, 0.0), HB_OK);
-	cr_assert_eq(arc_len(sim_arc(b)), i + 1, "one sample per step here");
-	r0 = sim_stats(b)->rhs;
-	k0 = sim_stats(b)->kinks;
+	while (hb_arc_len(hb_sim_arc(b)) <= i)
+		cr_assert_eq(hb_sim_advance(b, 1, 0.0), HB_OK);
+	cr_assert_eq(hb_arc_len(hb_sim_arc(b)), i + 1, "one sample per step here");
+	r0 = hb_sim_stats(b)->rhs;
+	k0 = hb_sim_stats(b)->kinks;
 	if (how == 0) {
-		cr_assert_eq(sim_seek(b, i), HB_OK);
+		cr_assert_eq(hb_sim_seek(b, i), HB_OK);
 	} else {
 		int restarted = 1;
 
-		cr_assert_eq(sim_set_scene(b, &sc, &restarted, msg, sizeof msg), HB_OK, "%s", msg);
+		cr_assert_eq(hb_sim_set_scene(b, &sc, &restarted, msg, sizeof msg), HB_OK, "%s", msg);
 		cr_assert_eq(restarted, 0);
 	}
-	cr_assert_eq(sim_run(b), HB_OK, "%s", sim_errmsg(b));
-	rb = sim_stats(b)->rhs;
-	kb = sim_stats(b)->kinks;
+	cr_assert_eq(hb_sim_run(b), HB_OK, "%s", hb_sim_errmsg(b));
+	rb = hb_sim_stats(b)->rhs;
+	kb = hb_sim_stats(b)->kinks;
 	cr_expect_leq(fabs((double)(rb - r0) - (double)(ra - r0)), 0.01 * (double)(ra - r0),
 	              "%s: %ld rhs after the cut, %ld without it", how ? "set_scene" : "seek",
 	              rb - r0, ra - r0);
 	cr_expect_leq(fabs((double)(kb - k0) - (double)(ka - k0)), 0.01 * (double)(ka - k0) + 1,
 	              "%s: %ld kinks after the cut, %ld without it", how ? "set_scene" : "seek",
 	              kb - k0, ka - k0);
-	cr_expect_eq(sim_ncollisions(b), sim_ncollisions(a));
-	cr_expect_leq(fabs(arc_last(sim_arc(b))->x - arc_last(arc)->x),
-	              1e-9 * fabs(arc_last(arc)->x));
-	sim_free(a);
-	sim_free(b);
+	cr_expect_eq(hb_sim_ncollisions(b), hb_sim_ncollisions(a));
+	cr_expect_leq(fabs(hb_arc_last(hb_sim_arc(b))->x - hb_arc_last(arc)->x),
+	              1e-9 * fabs(hb_arc_last(arc)->x));
+	hb_sim_free(a);
+	hb_sim_free(b);
 }
 
 Test(sim, seek_inside_a_contact_keeps_the_kink_filter)
 {
-	seek_and_compare(0, STEPPER_DOP853);
+	seek_and_compare(0, HB_STEPPER_DOP853);
 }
 
 Test(sim, set_scene_inside_a_contact_keeps_the_kink_filter)
 {
-	seek_and_compare(1, STEPPER_DOP853);
+	seek_and_compare(1, HB_STEPPER_DOP853);
 }
 
 Test(sim, seek_inside_a_contact_keeps_the_kink_filter_under_rk8pd)
 {
-	seek_and_compare(0, STEPPER_RK8PD);
+	seek_and_compare(0, HB_STEPPER_RK8PD);
 }
 
 Test(sim, set_scene_inside_a_contact_keeps_the_kink_filter_under_rk8pd)
 {
-	seek_and_compare(1, STEPPER_RK8PD);
+	seek_and_compare(1, HB_STEPPER_RK8PD);
 }
 
 /*
@@ -629,19 +629,19 @@ Test(sim, location_without_dense_output_takes_few_re_steps)
 	                                       "permanent-contact-shccl" };
 
 	for (size_t i = 0; i < sizeof presets / sizeof *presets; i++) {
-		struct scene sc;
-		struct sim *s;
-		const struct sim_stats *st;
+		struct hb_scene sc;
+		struct hb_sim *s;
+		const struct hb_sim_stats *st;
 		double per;
 
 		scene_preset(presets[i], &sc);
-		sc.run.stepper = STEPPER_RK8PD;
+		sc.run.stepper = HB_STEPPER_RK8PD;
 		s = run_scene(&sc);
-		st = sim_stats(s);
+		st = hb_sim_stats(s);
 		cr_assert_gt(st->located, 50, "%s: %ld located", presets[i], st->located);
 		/* evaluations beyond the steps' own, per located point, in re-steps */
 		per = (double)(st->rhs - 13 * (st->steps + st->rejected)) / (13.0 * (double)st->located);
 		cr_expect_leq(per, 10.0, "%s: %.1f re-steps per located point", presets[i], per);
-		sim_free(s);
+		hb_sim_free(s);
 	}
 }

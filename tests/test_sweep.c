@@ -14,97 +14,97 @@
 #include "hybounce/sweep.h"
 #include "testutil.h"
 
-static struct sweep *
+static struct hb_sweep *
 sweep_of(const char *preset)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char msg[512];
-	struct sweep *sw;
+	struct hb_sweep *sw;
 
 	scene_preset(preset, &sc);
-	sw = sweep_new(&sc, msg, sizeof msg);
+	sw = hb_sweep_new(&sc, msg, sizeof msg);
 	cr_assert_not_null(sw, "%s", msg);
 	return sw;
 }
 
 static void
-vary(struct sweep *sw, const char *arg)
+vary(struct hb_sweep *sw, const char *arg)
 {
 	char msg[512];
 
-	cr_assert_eq(sweep_vary(sw, arg, msg, sizeof msg), HB_OK, "%s: %s", arg, msg);
+	cr_assert_eq(hb_sweep_vary(sw, arg, msg, sizeof msg), HB_OK, "%s: %s", arg, msg);
 }
 
 static double
-value(const struct sweep *sw, long id, int k)
+value(const struct hb_sweep *sw, long id, int k)
 {
 	char buf[64];
 
-	cr_assert_eq(sweep_point_value(sw, id, k, buf, sizeof buf), HB_OK);
+	cr_assert_eq(hb_sweep_point_value(sw, id, k, buf, sizeof buf), HB_OK);
 	return strtod(buf, NULL);
 }
 
 Test(sweep, linear_range_hits_both_ends)
 {
-	struct sweep *sw = sweep_of("permanent-contact-shccl");
+	struct hb_sweep *sw = sweep_of("permanent-contact-shccl");
 
 	vary(sw, "law.c=1e9:3e9:5");
-	cr_assert_eq(sweep_npoints(sw), 5);
+	cr_assert_eq(hb_sweep_npoints(sw), 5);
 	cr_assert_eq(value(sw, 0, 0), 1e9);
 	cr_assert_eq(value(sw, 2, 0), 2e9);
 	cr_assert_eq(value(sw, 4, 0), 3e9);
-	sweep_free(sw);
+	hb_sweep_free(sw);
 }
 
 Test(sweep, log_range_and_units)
 {
-	struct sweep *sw = sweep_of("permanent-contact-shccl");
+	struct hb_sweep *sw = sweep_of("permanent-contact-shccl");
 
 	vary(sw, "initial.v0=-1mm/s:-1m/s:4:log");
 	cr_assert_eq(value(sw, 0, 0), -1e-3);
 	assert_rel(value(sw, 1, 0), -1e-2, 1e-14);
 	assert_rel(value(sw, 2, 0), -1e-1, 1e-14);
 	cr_assert_eq(value(sw, 3, 0), -1.0);
-	sweep_free(sw);
+	hb_sweep_free(sw);
 }
 
 Test(sweep, list_values_are_canonical_si)
 {
-	struct sweep *sw = sweep_of("permanent-contact-shccl");
+	struct hb_sweep *sw = sweep_of("permanent-contact-shccl");
 	char buf[64];
 
 	vary(sw, "initial.x0=10 um, 40um ,0.001");
-	cr_assert_eq(sweep_npoints(sw), 3);
+	cr_assert_eq(hb_sweep_npoints(sw), 3);
 	cr_assert_eq(value(sw, 0, 0), 10 * 1e-6);
 	cr_assert_eq(value(sw, 2, 0), 1e-3);
 	vary(sw, "scene.law=shccl,bwshccl");
-	cr_assert_eq(sweep_npoints(sw), 6);
-	cr_assert_eq(sweep_point_value(sw, 1, 1, buf, sizeof buf), HB_OK);
+	cr_assert_eq(hb_sweep_npoints(sw), 6);
+	cr_assert_eq(hb_sweep_point_value(sw, 1, 1, buf, sizeof buf), HB_OK);
 	cr_assert_str_eq(buf, "bwshccl");
-	sweep_free(sw);
+	hb_sweep_free(sw);
 }
 
 Test(sweep, last_axis_varies_fastest_and_same_key_replaces)
 {
-	struct sweep *sw = sweep_of("permanent-contact-shccl");
+	struct hb_sweep *sw = sweep_of("permanent-contact-shccl");
 
 	vary(sw, "law.c=1e9,2e9");
 	vary(sw, "initial.x0=1um,2um,3um");
-	cr_assert_eq(sweep_npoints(sw), 6);
+	cr_assert_eq(hb_sweep_npoints(sw), 6);
 	cr_assert_eq(value(sw, 0, 0), 1e9);
 	cr_assert_eq(value(sw, 2, 0), 1e9);
 	cr_assert_eq(value(sw, 3, 0), 2e9);
 	cr_assert_eq(value(sw, 4, 1), 2e-6);
 	vary(sw, "law.c=5e9,6e9,7e9");   /* replaces axis 0 in place */
-	cr_assert_eq(sweep_naxes(sw), 2);
-	cr_assert_eq(sweep_npoints(sw), 9);
+	cr_assert_eq(hb_sweep_naxes(sw), 2);
+	cr_assert_eq(hb_sweep_npoints(sw), 9);
 	cr_assert_eq(value(sw, 8, 0), 7e9);
-	sweep_free(sw);
+	hb_sweep_free(sw);
 }
 
 Test(sweep, bad_specs_name_the_key)
 {
-	struct sweep *sw = sweep_of("permanent-contact-shccl");
+	struct hb_sweep *sw = sweep_of("permanent-contact-shccl");
 	static const char *bad[] = {
 		"law.c", "=1,2", "law.nope=1,2", "law.c=1:2", "law.c=1:2:0", "law.c=1:2:3:cubic",
 		"law.c=0:1:3:log", "law.c=-1:1:3:log", "law.c=-5,1", "initial.x0=1kg",
@@ -114,72 +114,72 @@ Test(sweep, bad_specs_name_the_key)
 
 	for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
 		msg[0] = '\0';
-		cr_assert_eq(sweep_vary(sw, bad[i], msg, sizeof msg), HB_EINVAL, "%s accepted", bad[i]);
+		cr_assert_eq(hb_sweep_vary(sw, bad[i], msg, sizeof msg), HB_EINVAL, "%s accepted", bad[i]);
 		cr_assert(strstr(msg, "--vary") != NULL, "%s: message '%s'", bad[i], msg);
 	}
-	cr_assert_eq(sweep_npoints(sw), 0);
-	cr_assert_eq(sweep_check(sw, msg, sizeof msg), HB_EINVAL);
-	sweep_free(sw);
+	cr_assert_eq(hb_sweep_npoints(sw), 0);
+	cr_assert_eq(hb_sweep_check(sw, msg, sizeof msg), HB_EINVAL);
+	hb_sweep_free(sw);
 }
 
 Test(sweep, check_finds_a_bad_combination)
 {
-	struct sweep *sw = sweep_of("permanent-contact-bwshccl");
+	struct hb_sweep *sw = sweep_of("permanent-contact-bwshccl");
 	char msg[512];
 
 	vary(sw, "law.beta=1e9,5e9");
 	vary(sw, "law.gamma=2e9,5e9");   /* gamma in [-beta, beta]: point 0 is out */
-	cr_assert_eq(sweep_check(sw, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_sweep_check(sw, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "point 0 (law.beta=1000000000 law.gamma=2000000000)") != NULL, "%s", msg);
-	sweep_free(sw);
+	hb_sweep_free(sw);
 }
 
 Test(sweep, spec_round_trips)
 {
-	struct sweep *sw = sweep_of("permanent-contact-shccl"), *back;
-	struct scene sc;
+	struct hb_sweep *sw = sweep_of("permanent-contact-shccl"), *back;
+	struct hb_scene sc;
 	char a[32768], b[32768], msg[512];
 
 	vary(sw, "law.c=1e9:2e9:3");
 	vary(sw, "initial.x0=10um,20um");
-	cr_assert_lt(sweep_spec_format(sw, a, sizeof a), sizeof a);
+	cr_assert_lt(hb_sweep_spec_format(sw, a, sizeof a), sizeof a);
 	cr_assert(strstr(a, "\n; sweep: --vary law.c=1e9:2e9:3\n; sweep: --vary initial.x0=10um,20um\n"));
-	cr_assert_eq(preset_load_string(a, "spec", &sc, msg, sizeof msg), HB_OK, "%s", msg);
-	back = sweep_new(&sc, msg, sizeof msg);
-	cr_assert_eq(sweep_vary_from_preset(back, a, "spec", msg, sizeof msg), HB_OK, "%s", msg);
-	sweep_spec_format(back, b, sizeof b);
+	cr_assert_eq(hb_preset_load_string(a, "spec", &sc, msg, sizeof msg), HB_OK, "%s", msg);
+	back = hb_sweep_new(&sc, msg, sizeof msg);
+	cr_assert_eq(hb_sweep_vary_from_preset(back, a, "spec", msg, sizeof msg), HB_OK, "%s", msg);
+	hb_sweep_spec_format(back, b, sizeof b);
 	cr_assert_str_eq(a, b);
-	cr_assert_eq(sweep_npoints(back), 6);
-	sweep_free(back);
-	sweep_free(sw);
+	cr_assert_eq(hb_sweep_npoints(back), 6);
+	hb_sweep_free(back);
+	hb_sweep_free(sw);
 }
 
 /* The block of a point is the plain run's collisions and work, to the byte. */
 Test(sweep, point_equals_a_plain_run)
 {
-	struct sweep *sw = sweep_of("permanent-contact-shccl");
-	struct scene sc;
-	struct sim *s;
+	struct hb_sweep *sw = sweep_of("permanent-contact-shccl");
+	struct hb_scene sc;
+	struct hb_sim *s;
 	char *blk, *coll = NULL, msg[512], line[4096];
 	size_t len = 0;
 	int failed;
 	FILE *f;
 
 	vary(sw, "initial.x0=10um,30um");
-	cr_assert_eq(sweep_point_block(sw, 1, &blk, &failed, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_sweep_point_block(sw, 1, &blk, &failed, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(failed, 0);
 	scene_preset("permanent-contact-shccl", &sc);
-	cr_assert_eq(scene_set(&sc, "initial.x0", "30um", msg, sizeof msg), HB_OK);
-	s = sim_new(&sc, msg, sizeof msg);
+	cr_assert_eq(hb_scene_set(&sc, "initial.x0", "30um", msg, sizeof msg), HB_OK);
+	s = hb_sim_new(&sc, msg, sizeof msg);
 	cr_assert_not_null(s);
-	sim_run(s);
+	hb_sim_run(s);
 	f = open_memstream(&coll, &len);
-	cr_assert_eq(csv_stream_collisions(f, s, msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_csv_stream_collisions(f, s, msg, sizeof msg), HB_OK);
 	fclose(f);
 	{
 		const char *p = strchr(coll, '\n') + 1, *q = blk;
 
-		cr_assert(sim_ncollisions(s) > 0);
+		cr_assert(hb_sim_ncollisions(s) > 0);
 		while (*p) {
 			const char *e = strchr(p, '\n');
 
@@ -188,14 +188,14 @@ Test(sweep, point_equals_a_plain_run)
 			q += strlen(line);
 			p = e + 1;
 		}
-		snprintf(line, sizeof line, ",%ld,%ld,%ld,%ld,", sim_stats(s)->steps,
-		         sim_stats(s)->rejected, sim_stats(s)->rhs, sim_stats(s)->jac);
+		snprintf(line, sizeof line, ",%ld,%ld,%ld,%ld,", hb_sim_stats(s)->steps,
+		         hb_sim_stats(s)->rejected, hb_sim_stats(s)->rhs, hb_sim_stats(s)->jac);
 		cr_assert(strncmp(q, "r,1,", 4) == 0 && strstr(q, line) != NULL, "%s", q);
 	}
 	free(coll);
 	free(blk);
-	sim_free(s);
-	sweep_free(sw);
+	hb_sim_free(s);
+	hb_sweep_free(sw);
 }
 
 static char *
@@ -236,7 +236,7 @@ runs_nocpu(const char *dir)
 struct count { long calls, last_done, total, resumed; };
 
 static void
-count_progress(void *ctx, const struct sweep_progress *p)
+count_progress(void *ctx, const struct hb_sweep_progress *p)
 {
 	struct count *c = ctx;
 
@@ -248,8 +248,8 @@ count_progress(void *ctx, const struct sweep_progress *p)
 
 Test(sweep, threads_journal_resume_and_merge)
 {
-	struct sweep *sw = sweep_of("permanent-contact-shccl");
-	struct sweep_options o = { 0 };
+	struct hb_sweep *sw = sweep_of("permanent-contact-shccl");
+	struct hb_sweep_options o = { 0 };
 	struct count c = { 0 };
 	char tmpl[] = "/tmp/hybounce-sweep-XXXXXX", d1[600], d2[600], d3[600], path[700], msg[512];
 	char *a, *b, *ca, *cb;
@@ -267,28 +267,28 @@ Test(sweep, threads_journal_resume_and_merge)
 	/* Three threads. */
 	o.dir = d1;
 	o.jobs = 3;
-	cr_assert_eq(sweep_run(sw, &o, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_sweep_run(sw, &o, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(c.last_done, 7);
 	cr_assert_eq(c.calls, 8);   /* the start, then one per point */
 
 	/* One thread, resuming from a journal of two points and a torn block. */
 	o.dir = d2;
 	o.jobs = 1;
-	cr_assert_eq(sweep_prepare_dir(sw, d2, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_sweep_prepare_dir(sw, d2, msg, sizeof msg), HB_OK, "%s", msg);
 	snprintf(path, sizeof path, "%s/points.journal", d2);
 	f = fopen(path, "w");
 	for (long id = 3; id <= 4; id++) {
 		char *blk;
 		int failed;
 
-		cr_assert_eq(sweep_point_block(sw, id, &blk, &failed, msg, sizeof msg), HB_OK);
+		cr_assert_eq(hb_sweep_point_block(sw, id, &blk, &failed, msg, sizeof msg), HB_OK);
 		fputs(blk, f);
 		free(blk);
 	}
 	fputs("c,5,0,0.001", f);   /* a kill in the middle of a write */
 	fclose(f);
 	memset(&c, 0, sizeof c);
-	cr_assert_eq(sweep_run(sw, &o, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_sweep_run(sw, &o, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(c.resumed, 2);
 	cr_assert_eq(c.calls, 1 + 5);
 	cr_assert_eq(access(path, F_OK), -1, "the journal is removed after the merge");
@@ -308,13 +308,13 @@ Test(sweep, threads_journal_resume_and_merge)
 	o.dir = d3;
 	o.shard_n = 2;
 	for (o.shard_k = 0; o.shard_k < 2; o.shard_k++) {
-		cr_assert_eq(sweep_run(sw, &o, msg, sizeof msg), HB_OK, "%s", msg);
+		cr_assert_eq(hb_sweep_run(sw, &o, msg, sizeof msg), HB_OK, "%s", msg);
 		if (o.shard_k == 0) {
-			cr_assert_eq(sweep_merge(d3, msg, sizeof msg), HB_EINVAL);
+			cr_assert_eq(hb_sweep_merge(d3, msg, sizeof msg), HB_EINVAL);
 			cr_assert(strstr(msg, "3 of 7 points are missing (the first is point 1)"), "%s", msg);
 		}
 	}
-	cr_assert_eq(sweep_merge(d3, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_sweep_merge(d3, msg, sizeof msg), HB_OK, "%s", msg);
 	snprintf(path, sizeof path, "%s/collisions.csv", d3);
 	cb = slurp_file(path);
 	cr_assert_str_eq(ca, cb);
@@ -326,7 +326,7 @@ Test(sweep, threads_journal_resume_and_merge)
 	f = fopen(path, "a");
 	fputs("garbage line\n", f);
 	fclose(f);
-	cr_assert_eq(sweep_merge(d3, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_sweep_merge(d3, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "not a line of this sweep's journal"), "%s", msg);
 
 	/* Another sweep in the same folder is refused. */
@@ -334,9 +334,9 @@ Test(sweep, threads_journal_resume_and_merge)
 	o.dir = d1;
 	o.shard_n = 1;
 	o.shard_k = 0;
-	cr_assert_eq(sweep_run(sw, &o, msg, sizeof msg), HB_EINVAL);
+	cr_assert_eq(hb_sweep_run(sw, &o, msg, sizeof msg), HB_EINVAL);
 	cr_assert(strstr(msg, "holds a different sweep"), "%s", msg);
-	sweep_free(sw);
+	hb_sweep_free(sw);
 	{
 		char cmd[700];
 
@@ -348,9 +348,9 @@ Test(sweep, threads_journal_resume_and_merge)
 /* The explorer's curve: the same runs as the sweep (e to the bit), in the background. */
 Test(sweep, curve_matches_the_sweep_and_exports, .timeout = 60)
 {
-	struct scene sc;
-	struct sweep_curve *c;
-	struct sweep *sw;
+	struct hb_scene sc;
+	struct hb_sweep_curve *c;
+	struct hb_sweep *sw;
 	double x[6], y[6];
 	int st[6];
 	char msg[512], path[] = "/tmp/hybounce-curve-XXXXXX", *csv;
@@ -358,23 +358,23 @@ Test(sweep, curve_matches_the_sweep_and_exports, .timeout = 60)
 	int fd;
 
 	scene_preset("permanent-contact-shccl", &sc);
-	cr_assert_eq(scene_set(&sc, "initial.x0", "0", msg, sizeof msg), HB_OK);
-	cr_assert_eq(scene_set(&sc, "run.J", "2", msg, sizeof msg), HB_OK);
-	c = sweep_curve_start(&sc, "initial.v0", "-5mm/s:-0.5m/s:6:log", CURVE_E, 0, 2, msg,
+	cr_assert_eq(hb_scene_set(&sc, "initial.x0", "0", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&sc, "run.J", "2", msg, sizeof msg), HB_OK);
+	c = hb_sweep_curve_start(&sc, "initial.v0", "-5mm/s:-0.5m/s:6:log", HB_CURVE_E, 0, 2, msg,
 	                      sizeof msg);
 	cr_assert_not_null(c, "%s", msg);
-	cr_assert_eq(sweep_curve_npoints(c), 6);
-	while ((done = sweep_curve_poll(c, x, y, st, 6)) < 6)
+	cr_assert_eq(hb_sweep_curve_npoints(c), 6);
+	while ((done = hb_sweep_curve_poll(c, x, y, st, 6)) < 6)
 		nanosleep(&(struct timespec){ 0, 1000000 }, NULL);
-	sw = sweep_new(&sc, msg, sizeof msg);
+	sw = hb_sweep_new(&sc, msg, sizeof msg);
 	vary(sw, "initial.v0=-5mm/s:-0.5m/s:6:log");
 	for (long i = 0; i < 6; i++) {
 		char *blk, want[64];
 		int failed;
 
-		cr_assert_eq(st[i], CURVE_DONE);
+		cr_assert_eq(st[i], HB_CURVE_DONE);
 		cr_assert_eq(x[i], value(sw, i, 0));
-		cr_assert_eq(sweep_point_block(sw, i, &blk, &failed, msg, sizeof msg), HB_OK);
+		cr_assert_eq(hb_sweep_point_block(sw, i, &blk, &failed, msg, sizeof msg), HB_OK);
 		snprintf(want, sizeof want, ",%.17g,", y[i]);
 		cr_assert(y[i] > 0 && y[i] < 1 && strstr(blk, want) != NULL, "point %ld: e %.17g, %s",
 		          i, y[i], blk);
@@ -382,7 +382,7 @@ Test(sweep, curve_matches_the_sweep_and_exports, .timeout = 60)
 	}
 	fd = mkstemp(path);
 	close(fd);
-	cr_assert_eq(sweep_curve_write_csv(c, path, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_sweep_curve_write_csv(c, path, msg, sizeof msg), HB_OK, "%s", msg);
 	csv = slurp_file(path);
 	{
 		const char *head = "initial.v0,e\n-0.0050000000000000001,";
@@ -391,23 +391,23 @@ Test(sweep, curve_matches_the_sweep_and_exports, .timeout = 60)
 	}
 	unlink(path);
 	free(csv);
-	sweep_curve_free(c);
-	sweep_free(sw);
+	hb_sweep_curve_free(c);
+	hb_sweep_free(sw);
 }
 
 /* Freeing a curve cancels it: the workers stop within a slice of their run. */
 Test(sweep, curve_cancels, .timeout = 30)
 {
-	struct scene sc;
-	struct sweep_curve *c;
+	struct hb_scene sc;
+	struct hb_sweep_curve *c;
 	char msg[512];
 
 	scene_preset("steel-on-bitumen", &sc);
-	c = sweep_curve_start(&sc, "law.c", "440:44000:400:log", CURVE_COLLISIONS, 0, 2, msg,
+	c = hb_sweep_curve_start(&sc, "law.c", "440:44000:400:log", HB_CURVE_COLLISIONS, 0, 2, msg,
 	                      sizeof msg);
 	cr_assert_not_null(c, "%s", msg);
-	cr_assert_lt(sweep_curve_poll(c, NULL, NULL, NULL, 0), 400);
-	sweep_curve_free(c);
-	cr_assert_null(sweep_curve_start(&sc, "law.nope", "1,2", CURVE_E, 0, 1, msg, sizeof msg));
+	cr_assert_lt(hb_sweep_curve_poll(c, NULL, NULL, NULL, 0), 400);
+	hb_sweep_curve_free(c);
+	cr_assert_null(hb_sweep_curve_start(&sc, "law.nope", "1,2", HB_CURVE_E, 0, 1, msg, sizeof msg));
 	cr_assert(strstr(msg, "law.nope") != NULL, "%s", msg);
 }

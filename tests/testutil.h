@@ -89,9 +89,9 @@ printed(double x, double value, int sig, const char *what)
 
 /* The value of the scene's law parameter NAME; fails the test if the law has none. */
 static inline double
-scene_par(const struct scene *sc, const char *name)
+scene_par(const struct hb_scene *sc, const char *name)
 {
-	int i = law_param_index(sc->law, name);
+	int i = hb_law_param_index(sc->law, name);
 
 	cr_assert(i >= 0, "%s has no parameter %s", sc->law->name, name);
 	return sc->par[i];
@@ -102,9 +102,9 @@ scene_par(const struct scene *sc, const char *name)
  * Table tab:two), checked to the digits printed.
  */
 static inline void
-study2_printed(const struct scene *sc)
+study2_printed(const struct hb_scene *sc)
 {
-	cr_assert_eq(sc->d.system, SCENE_FULL);
+	cr_assert_eq(sc->d.system, HB_SCENE_FULL);
 	printed(sc->d.Estar, 5.321e8, 4, "E*");
 	printed(sc->d.Re, 10e-3, 2, "R_e");
 	printed(sc->d.m1, 7.372e-2, 4, "m1");
@@ -116,40 +116,40 @@ study2_printed(const struct scene *sc)
 
 /* Loads a scene from INI text; fails the test on error. */
 static inline void
-scene_from(const char *ini, struct scene *sc)
+scene_from(const char *ini, struct hb_scene *sc)
 {
 	char msg[1024];
 
-	cr_assert_eq(preset_load_string(ini, "test.preset", sc, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_preset_load_string(ini, "test.preset", sc, msg, sizeof msg), 0, "%s", msg);
 }
 
 /* Loads a preset file by name from preset_dir(). */
 static inline void
-scene_preset(const char *name, struct scene *sc)
+scene_preset(const char *name, struct hb_scene *sc)
 {
 	char path[512], msg[1024];
 
 	snprintf(path, sizeof path, "%s/%s.preset", preset_dir(), name);
-	cr_assert_eq(preset_load(path, sc, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_preset_load(path, sc, msg, sizeof msg), 0, "%s", msg);
 }
 
 /* Runs a scene to its end; fails the test if the run fails. */
-static inline struct sim *
-run_scene(const struct scene *sc)
+static inline struct hb_sim *
+run_scene(const struct hb_scene *sc)
 {
 	char msg[1024];
-	struct sim *s = sim_new(sc, msg, sizeof msg);
+	struct hb_sim *s = hb_sim_new(sc, msg, sizeof msg);
 
 	cr_assert_not_null(s, "sim_new: %s", msg);
-	cr_assert_eq(sim_run(s), 0, "run failed: %s", sim_errmsg(s));
-	cr_assert_eq(sim_end(s), SIM_END_T, "run ended: %s", sim_end_str(s));
+	cr_assert_eq(hb_sim_run(s), 0, "run failed: %s", hb_sim_errmsg(s));
+	cr_assert_eq(hb_sim_end(s), HB_SIM_END_T, "run ended: %s", hb_sim_end_str(s));
 	return s;
 }
 
-static inline struct sim *
+static inline struct hb_sim *
 run_ini(const char *ini)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	scene_from(ini, &sc);
 	return run_scene(&sc);

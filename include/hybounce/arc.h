@@ -16,40 +16,40 @@
  * interior samples of old flow intervals by half; when the arc is mostly
  * jumps, whose samples that cannot remove, it removes every other whole
  * old flow interval too, with its two jumps, so that j then steps by more
- * than one between two samples (arc_skipped() counts the intervals
+ * than one between two samples (hb_arc_skipped() counts the intervals
  * removed; the jump records list only the jumps whose two samples remain).
  * The first interval and the one in progress are never removed, so rewind
- * always reaches t = 0.  arc_thinned() counts the passes.
+ * always reaches t = 0.  hb_arc_thinned() counts the passes.
  *
  * The arc is owned by the sim that produced it; pointers returned here stay
- * valid until the next sim_advance / sim_seek / sim_restart / sim_free.
+ * valid until the next hb_sim_advance / hb_sim_seek / hb_sim_restart / hb_sim_free.
  */
-#ifndef HYBOUNCE_ARC_H
-#define HYBOUNCE_ARC_H
+#ifndef HB_ARC_H
+#define HB_ARC_H
 #include "export.h"
 HB_BEGIN_DECLS
 
 #include <stddef.h>
 #include "law.h"
 
-enum arc_kind {
-	ARC_START = 0,    /* the initial state (0, 0) */
-	ARC_STEP,         /* an accepted integrator step (or a closed-form flight point) */
-	ARC_PRE_JUMP,     /* last sample of a flow interval, in D */
-	ARC_POST_JUMP,    /* first sample of the next interval, g of the previous sample */
-	ARC_KINK,         /* a step ended on a switching function of the law or the load */
-	ARC_EXTREMUM,     /* a located extremum of x_c (v = 0) or of F_c inside a contact */
-	ARC_END,          /* the last sample of the run */
+enum hb_arc_kind {
+	HB_ARC_START = 0,    /* the initial state (0, 0) */
+	HB_ARC_STEP,         /* an accepted integrator step (or a closed-form flight point) */
+	HB_ARC_PRE_JUMP,     /* last sample of a flow interval, in D */
+	HB_ARC_POST_JUMP,    /* first sample of the next interval, g of the previous sample */
+	HB_ARC_KINK,         /* a step ended on a switching function of the law or the load */
+	HB_ARC_EXTREMUM,     /* a located extremum of x_c (v = 0) or of F_c inside a contact */
+	HB_ARC_END,          /* the last sample of the run */
 };
 
-struct arc_sample {
+struct hb_arc_sample {
 	double t;
 	long j;
 	int q;                  /* q_c: 1 in contact */
-	int kind;               /* enum arc_kind */
+	int kind;               /* enum hb_arc_kind */
 	double x, v;            /* relative displacement and velocity */
 	double xc;              /* indentation (0 in flight) */
-	double z[LAW_MAX_Z];    /* internal state of the law (0 in flight) */
+	double z[HB_LAW_MAX_Z];    /* internal state of the law (0 in flight) */
 	double Fc;              /* contact force on body 1: -q_c Phi */
 	double Fer;             /* reduced applied force */
 	double xm, vm;          /* centre of mass (full system; 0 otherwise) */
@@ -61,7 +61,7 @@ struct arc_sample {
 	double Wc;              /* int_0^t F_c v dt, the work of the contact force, J */
 };
 
-struct arc_interval {
+struct hb_arc_interval {
 	long j;
 	int q;
 	size_t first, last;     /* sample indices (inclusive) */
@@ -69,56 +69,56 @@ struct arc_interval {
 };
 
 /* How a jump was located, kept for every jump. */
-enum arc_how {
-	LOCATE_START = 0,   /* the state was already in D where the interval began */
-	LOCATE_CLOSED_FORM, /* flight: root of the closed-form parabola */
-	LOCATE_BRENT,       /* re-stepping from the step's start, bracketing root finder */
+enum hb_arc_how {
+	HB_LOCATE_START = 0,   /* the state was already in D where the interval began */
+	HB_LOCATE_CLOSED_FORM, /* flight: root of the closed-form parabola */
+	HB_LOCATE_BRENT,       /* re-stepping from the step's start, bracketing root finder */
 };
 
-struct arc_jump {
+struct hb_arc_jump {
 	double t;
 	long j;                 /* j of the pre-jump sample */
 	int from_q;             /* q_c before the jump */
 	const char *left;       /* which part of C was left: "flight: x < 0 and v < 0",
 	                           "contact: Phi > 0 and v > 0" */
-	int how;                /* enum arc_how */
+	int how;                /* enum hb_arc_how */
 	int iterations;         /* root-finder iterations */
 	double width;           /* final bracket width in t, s */
 	double ind_lo, ind_hi;  /* flow-set indicator at the bracket's C side and D side
 	                           (>= 0 in C; < 0 outside) */
 };
 
-struct arc;
+struct hb_arc;
 
-size_t arc_len(const struct arc *a);
-const struct arc_sample *arc_at(const struct arc *a, size_t i);
-const struct arc_sample *arc_last(const struct arc *a); /* NULL when empty */
+size_t hb_arc_len(const struct hb_arc *a);
+const struct hb_arc_sample *hb_arc_at(const struct hb_arc *a, size_t i);
+const struct hb_arc_sample *hb_arc_last(const struct hb_arc *a); /* NULL when empty */
 
-size_t arc_nintervals(const struct arc *a);
-const struct arc_interval *arc_interval_at(const struct arc *a, size_t k);
+size_t hb_arc_nintervals(const struct hb_arc *a);
+const struct hb_arc_interval *hb_arc_interval_at(const struct hb_arc *a, size_t k);
 /* Index k of the interval containing sample i. */
-size_t arc_interval_of(const struct arc *a, size_t i);
+size_t hb_arc_interval_of(const struct hb_arc *a, size_t i);
 
-size_t arc_njumps(const struct arc *a);
-const struct arc_jump *arc_jump_at(const struct arc *a, size_t k);
+size_t hb_arc_njumps(const struct hb_arc *a);
+const struct hb_arc_jump *hb_arc_jump_at(const struct hb_arc *a, size_t k);
 
 /*
  * The last sample at or before hybrid time (t, j) in hybrid-time order
  * (0 if (t, j) precedes everything).
  */
-size_t arc_find(const struct arc *a, double t, long j);
+size_t hb_arc_find(const struct hb_arc *a, double t, long j);
 
 /* The last sample with sample.t <= t (of the greatest j at that t). */
-size_t arc_find_t(const struct arc *a, double t);
+size_t hb_arc_find_t(const struct hb_arc *a, double t);
 
 /* Number of thinning passes so far (0: every sample is kept). */
-int arc_thinned(const struct arc *a);
+int hb_arc_thinned(const struct hb_arc *a);
 
 /* Number of flow intervals thinned out (0: j steps by one between samples). */
-long arc_skipped(const struct arc *a);
+long hb_arc_skipped(const struct hb_arc *a);
 
 /* Bytes held by the arc. */
-size_t arc_bytes(const struct arc *a);
+size_t hb_arc_bytes(const struct hb_arc *a);
 
 HB_END_DECLS
 

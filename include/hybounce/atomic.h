@@ -4,14 +4,14 @@
  * renamed over its target only when every file of the set is complete.
  *
  * What happens to a target depends on what is there:
- *  - nothing: a new file is created (ATOMIC_NEW);
- *  - a regular file: it is replaced (ATOMIC_REPLACE), and the caller is
+ *  - nothing: a new file is created (HB_ATOMIC_NEW);
+ *  - a regular file: it is replaced (HB_ATOMIC_REPLACE), and the caller is
  *    told so that it can say it;
  *  - a symbolic link: the link is kept and the file it resolves to is
- *    written (ATOMIC_NEW or ATOMIC_REPLACE there; `via_link` set);
+ *    written (HB_ATOMIC_NEW or HB_ATOMIC_REPLACE there; `via_link` set);
  *  - anything else that can be opened for writing (a device such as
  *    /dev/null, a FIFO, a terminal): it is written in place, never
- *    replaced (ATOMIC_IN_PLACE); no promise of atomicity can be kept there;
+ *    replaced (HB_ATOMIC_IN_PLACE); no promise of atomicity can be kept there;
  *    so is any existing path under /dev/ or /proc/ (/dev/stdout leads to
  *    whatever standard output is, a regular file too);
  *  - a folder: refused.
@@ -28,8 +28,8 @@
  * Errors come back as HB_EIO (or HB_EINVAL for a folder) with
  * "PATH: reason" in msg.  Not thread-safe for one set; sets are independent.
  */
-#ifndef HYBOUNCE_ATOMIC_H
-#define HYBOUNCE_ATOMIC_H
+#ifndef HB_ATOMIC_H
+#define HB_ATOMIC_H
 
 #include <stddef.h>
 #include <stdio.h>
@@ -38,32 +38,32 @@
 #include "export.h"
 HB_BEGIN_DECLS
 
-enum atomic_how {
-	ATOMIC_NEW = 0,       /* no file there: created */
-	ATOMIC_REPLACE,       /* a regular file there: replaced by rename */
-	ATOMIC_IN_PLACE,      /* a device, FIFO, ...: written in place */
+enum hb_atomic_how {
+	HB_ATOMIC_NEW = 0,       /* no file there: created */
+	HB_ATOMIC_REPLACE,       /* a regular file there: replaced by rename */
+	HB_ATOMIC_IN_PLACE,      /* a device, FIFO, ...: written in place */
 };
 
-/* Where and how a path would be written (see atomic_probe). */
-struct atomic_target {
+/* Where and how a path would be written (see hb_atomic_probe). */
+struct hb_atomic_target {
 	char real[4096];      /* the file written: the path with its links resolved */
-	int how;              /* enum atomic_how */
+	int how;              /* enum hb_atomic_how */
 	int via_link;         /* the path named a symbolic link */
 };
 
-enum { ATOMIC_MAX = 4 };
+enum { HB_ATOMIC_MAX = 4 };
 
-struct atomic_file {
+struct hb_atomic_file {
 	const char *path;     /* as named by the caller (borrowed) */
-	struct atomic_target target;
+	struct hb_atomic_target target;
 	char tmp[4200];       /* temporary name; "" when written in place */
 	char bak[4210];       /* hard link to the replaced file during commit */
 	FILE *f;
 	int has_bak;
 };
 
-struct atomic_set {
-	struct atomic_file file[ATOMIC_MAX];
+struct hb_atomic_set {
+	struct hb_atomic_file file[HB_ATOMIC_MAX];
 	int n;
 	struct timespec stamp;   /* the modification time of every file */
 	char id[48];             /* stamp as YYYY-MM-DDTHH:MM:SS.NNNNNNNNNZ */
@@ -76,19 +76,19 @@ struct atomic_set {
  * (a folder, a link loop) / HB_EIO with "PATH: reason" in msg.
  */
 int
-atomic_probe(const char *path, struct atomic_target *t, char *msg, size_t n);
+hb_atomic_probe(const char *path, struct hb_atomic_target *t, char *msg, size_t n);
 
 /* Starts an empty set and stamps it with the current time. */
 void
-atomic_begin(struct atomic_set *set);
+hb_atomic_begin(struct hb_atomic_set *set);
 
 /*
  * Adds path to the set and returns a stream to write its new contents to
  * (owned by the set), or NULL with msg set.  Removes stale temporary files
- * beside the target first.  Up to ATOMIC_MAX files per set.
+ * beside the target first.  Up to HB_ATOMIC_MAX files per set.
  */
 FILE *
-atomic_add(struct atomic_set *set, const char *path, char *msg, size_t n);
+hb_atomic_add(struct hb_atomic_set *set, const char *path, char *msg, size_t n);
 
 /*
  * Flushes every file to disk and puts all of them in place.  Should any
@@ -97,11 +97,11 @@ atomic_add(struct atomic_set *set, const char *path, char *msg, size_t n);
  * The set is finished either way (the streams are closed).
  */
 int
-atomic_commit(struct atomic_set *set, char *msg, size_t n);
+hb_atomic_commit(struct hb_atomic_set *set, char *msg, size_t n);
 
 /* Gives up the set: closes the streams, removes the temporary files. */
 void
-atomic_abort(struct atomic_set *set);
+hb_atomic_abort(struct hb_atomic_set *set);
 
 /*
  * The POSIX cksum of what file k of the set (in the order added) holds so
@@ -109,11 +109,11 @@ atomic_abort(struct atomic_set *set);
  * for the file once committed.  HB_EIO for a file written in place.
  */
 int
-atomic_cksum(struct atomic_set *set, int k, unsigned long *crc, unsigned long long *len);
+hb_atomic_cksum(struct hb_atomic_set *set, int k, unsigned long *crc, unsigned long long *len);
 
 /* Writes len bytes to path alone, atomically as above. */
 int
-atomic_write_file(const char *path, const void *buf, size_t len, char *msg, size_t n);
+hb_atomic_write_file(const char *path, const void *buf, size_t len, char *msg, size_t n);
 
 /*
  * Writes path alone, atomically as above, with what fill(f, ctx) writes to
@@ -121,7 +121,7 @@ atomic_write_file(const char *path, const void *buf, size_t len, char *msg, size
  * stream's error flag, which the commit reports.
  */
 int
-atomic_write_with(const char *path, void (*fill)(FILE *f, const void *ctx), const void *ctx,
+hb_atomic_write_with(const char *path, void (*fill)(FILE *f, const void *ctx), const void *ctx,
                   char *msg, size_t n);
 
 HB_END_DECLS

@@ -1,14 +1,14 @@
 /*
  * check.h - the paper's checks of a computed solution (section Simulation).
  *
- *  - check_solution_pair: the hybrid time domain is ordered; every sample
+ *  - hb_check_solution_pair: the hybrid time domain is ordered; every sample
  *    lies in the flow set C except the last before a jump, which lies in the
  *    jump set D; each post-jump state is g of the pre-jump state, exactly.
- *  - check_euler: forward Euler, started from a flow interval's initial
+ *  - hb_check_euler: forward Euler, started from a flow interval's initial
  *    state, converges to its final state; returns the estimated order.
  */
-#ifndef HYBOUNCE_CHECK_H
-#define HYBOUNCE_CHECK_H
+#ifndef HB_CHECK_H
+#define HB_CHECK_H
 #include "export.h"
 HB_BEGIN_DECLS
 
@@ -17,12 +17,12 @@ HB_BEGIN_DECLS
 #include "arc.h"
 
 /* 1 if the state of sample a lies in C (resp. D), by the paper's sets. */
-int check_in_C(const struct scene *sc, const struct arc_sample *a);
-int check_in_D(const struct scene *sc, const struct arc_sample *a);
+int hb_check_in_C(const struct hb_scene *sc, const struct hb_arc_sample *a);
+int hb_check_in_D(const struct hb_scene *sc, const struct hb_arc_sample *a);
 
 /* Returns 0, or HB_EINVAL with the first violation (sample, t, j) in msg. */
 int
-check_solution_pair(const struct scene *sc, const struct arc *a, char *msg, size_t n);
+hb_check_solution_pair(const struct hb_scene *sc, const struct hb_arc *a, char *msg, size_t n);
 
 /*
  * Forward Euler on interval k of the arc with N, 2N, 4N, ... steps; fills
@@ -31,7 +31,7 @@ check_solution_pair(const struct scene *sc, const struct arc *a, char *msg, size
  * is too short to say.
  */
 int
-check_euler(const struct scene *sc, const struct arc *a, size_t k, double *order,
+hb_check_euler(const struct hb_scene *sc, const struct hb_arc *a, size_t k, double *order,
             char *msg, size_t n);
 
 /*
@@ -41,10 +41,10 @@ check_euler(const struct scene *sc, const struct arc *a, size_t k, double *order
  *        m v^2/2 - m v0^2/2 = E_e + W_c
  *    (E_e and W_c are the works of F_er and F_c since t = 0, integrated
  *    with the flow); its residual, relative to the run's energy scale, is
- *    the run's error estimate, and must stay within CHECK_PHYS_FACTOR tol;
+ *    the run's error estimate, and must stay within HB_CHECK_PHYS_FACTOR tol;
  *  - passivity: for a law that cannot give energy back (every law so far:
  *    springs, dampers, Bouc-Wen with |gamma| <= beta), each completed
- *    contact absorbs W >= 0, up to CHECK_PHYS_FACTOR tol of its impact
+ *    contact absorbs W >= 0, up to HB_CHECK_PHYS_FACTOR tol of its impact
  *    energy m v_i^2/2;
  *  - restitution: for such a law e <= sqrt(1 + 2 max(E_e,c, 0) / (m v_i^2)),
  *    E_e,c the work of the applied force over the contact (1 without
@@ -54,9 +54,9 @@ check_euler(const struct scene *sc, const struct arc *a, size_t k, double *order
  * Collision i is read from the arc: the contact's first sample (t_e) and
  * its pre-jump sample (t_s).
  */
-#define CHECK_PHYS_FACTOR 100.0
+#define HB_CHECK_PHYS_FACTOR 100.0
 
-struct check_physics {
+struct hb_check_physics {
 	double tol;          /* max(rtol, atol): what was asked */
 	double escale;       /* energy scale of the run, J */
 	double resid;        /* largest |work-energy residual| / escale */
@@ -83,7 +83,7 @@ struct check_physics {
  * per failure ("; "-separated) in msg.
  */
 int
-check_physics(const struct scene *sc, const struct arc *a, struct check_physics *r,
+hb_check_physics(const struct hb_scene *sc, const struct hb_arc *a, struct hb_check_physics *r,
               char *msg, size_t n);
 
 HB_END_DECLS

@@ -6,12 +6,12 @@
  * x_c^max and F_c^max are located extrema (not sample maxima); W, J_Fc and
  * J_Fe are integrated with the contact's flow, to the integrator's accuracy.
  */
-#ifndef HYBOUNCE_COLLISIONS_H
-#define HYBOUNCE_COLLISIONS_H
+#ifndef HB_COLLISIONS_H
+#define HB_COLLISIONS_H
 #include "export.h"
 HB_BEGIN_DECLS
 
-struct collision {
+struct hb_collision {
 	long i;          /* 0, 1, ... */
 	long j;          /* flow interval of the contact (2i + 1) */
 	double te, ts;   /* commencement and separation, s */

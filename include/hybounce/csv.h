@@ -13,8 +13,8 @@
  * csv_stream_* functions write the same bytes to an open stream (e.g.
  * stdout), where no such promise can be kept.
  */
-#ifndef HYBOUNCE_CSV_H
-#define HYBOUNCE_CSV_H
+#ifndef HB_CSV_H
+#define HB_CSV_H
 #include "export.h"
 HB_BEGIN_DECLS
 
@@ -24,10 +24,10 @@ HB_BEGIN_DECLS
 #include "sim.h"
 
 int
-csv_write_arc(const char *path, const struct sim *s, char *msg, size_t n);
+hb_csv_write_arc(const char *path, const struct hb_sim *s, char *msg, size_t n);
 
 int
-csv_write_collisions(const char *path, const struct sim *s, char *msg, size_t n);
+hb_csv_write_collisions(const char *path, const struct hb_sim *s, char *msg, size_t n);
 
 /*
  * Write the arc, or the completed collisions, as CSV to the open stream f
@@ -40,10 +40,10 @@ csv_write_collisions(const char *path, const struct sim *s, char *msg, size_t n)
  * full disk.  A stream whose error indicator is already set fails too.
  */
 int
-csv_stream_arc(FILE *f, const struct sim *s, char *msg, size_t n);
+hb_csv_stream_arc(FILE *f, const struct hb_sim *s, char *msg, size_t n);
 
 int
-csv_stream_collisions(FILE *f, const struct sim *s, char *msg, size_t n);
+hb_csv_stream_collisions(FILE *f, const struct hb_sim *s, char *msg, size_t n);
 
 /*
  * Writes the arc to trace_path and/or the collisions to coll_path (either
@@ -52,19 +52,19 @@ csv_stream_collisions(FILE *f, const struct sim *s, char *msg, size_t n);
  * scene_out (may be NULL).  All or nothing: on error no new file is left.
  */
 int
-csv_export(const struct sim *s, const char *trace_path, const char *coll_path,
+hb_csv_export(const struct hb_sim *s, const char *trace_path, const char *coll_path,
            char *scene_out, size_t sn, char *msg, size_t n);
 
-/* How an export went: what csv_export_files() wrote, and how. */
-struct csv_export_report {
+/* How an export went: what hb_csv_export_files() wrote, and how. */
+struct hb_csv_export_report {
 	char scene[4096];        /* the .preset written; "" when none */
 	int scene_of;            /* 0 beside the trace, 1 beside the collisions, -1 none */
 	char id[48];             /* the export's identifier (atomic_set.id) */
-	struct atomic_target target[3];  /* trace, collisions, scene: how each went */
+	struct hb_atomic_target target[3];  /* trace, collisions, scene: how each went */
 };
 
 /*
- * csv_export with the rules of a front end: the trace and/or the
+ * hb_csv_export with the rules of a front end: the trace and/or the
  * collisions (either may be NULL), the scene beside the first of them
  * that is a file (not beside a device or FIFO written in place), with a
  * last comment line naming the export's identifier and each CSV file with
@@ -72,27 +72,27 @@ struct csv_export_report {
  * identifier as its modification time, so that a set mixed by a kill
  * between two renames shows.  Refuses (HB_EINVAL, nothing written) to
  * overwrite run_preset (the preset being run; may be NULL) or a shipped
- * preset (a .preset in one of preset_dirs()), to write both CSVs to one
+ * preset (a .preset in one of hb_preset_dirs()), to write both CSVs to one
  * file or the scene over a CSV.  *r says which targets were replaced, are
  * links, or were written in place.
  */
 int
-csv_export_files(const struct sim *s, const char *trace, const char *coll,
-                 const char *run_preset, struct csv_export_report *r, char *msg, size_t n);
+hb_csv_export_files(const struct hb_sim *s, const char *trace, const char *coll,
+                 const char *run_preset, struct hb_csv_export_report *r, char *msg, size_t n);
 
 /*
- * csv_export_files with the scene's file named by the caller (the
+ * hb_csv_export_files with the scene's file named by the caller (the
  * explorer's BASE.preset beside BASE-trace.csv) instead of derived from
  * the first CSV; scene NULL: derived.  Same rules and checks otherwise.
  */
 int
-csv_export_files_scene(const struct sim *s, const char *trace, const char *coll,
+hb_csv_export_files_scene(const struct hb_sim *s, const char *trace, const char *coll,
                        const char *scene, const char *run_preset,
-                       struct csv_export_report *r, char *msg, size_t n);
+                       struct hb_csv_export_report *r, char *msg, size_t n);
 
-/* Every check of csv_export_files that can be made before the run. */
+/* Every check of hb_csv_export_files that can be made before the run. */
 int
-csv_export_check(const char *trace, const char *coll, const char *run_preset,
+hb_csv_export_check(const char *trace, const char *coll, const char *run_preset,
                  char *msg, size_t n);
 
 HB_END_DECLS

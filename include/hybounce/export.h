@@ -14,8 +14,8 @@
  * so no function needs a macro of its own.  Outside GCC and Clang the
  * visibility part is empty.
  */
-#ifndef HYBOUNCE_EXPORT_H
-#define HYBOUNCE_EXPORT_H
+#ifndef HB_EXPORT_H
+#define HB_EXPORT_H
 
 #if defined(__GNUC__) && __GNUC__ >= 4
 #define HB_VISIBILITY_PUSH _Pragma("GCC visibility push(default)")

@@ -2,15 +2,15 @@
  * fit.h - identify a scene's parameters from measured collisions: nonlinear
  * least squares over runs of the simulator.
  *
- *     struct fit_data d;
- *     struct fit_result r;
- *     fit_data_load(path, &d, msg, sizeof msg);           // or fit_data_from_times()
- *     fit_run(&scene, &d, &opts, &r, msg, sizeof msg);
+ *     struct hb_fit_data d;
+ *     struct hb_fit_result r;
+ *     hb_fit_data_load(path, &d, msg, sizeof msg);           // or hb_fit_data_from_times()
+ *     hb_fit_run(&scene, &d, &opts, &r, msg, sizeof msg);
  *     ... r.value[k] +- r.se[k], r.corr, r.point[i] ...
- *     fit_result_free(&r);
- *     fit_data_free(&d);
+ *     hb_fit_result_free(&r);
+ *     hb_fit_data_free(&d);
  *
- * Data (fit_data_load), recognised by their columns (CSV, one header row,
+ * Data (hb_fit_data_load), recognised by their columns (CSV, one header row,
  * SI values; blank lines and lines starting with '#' are skipped):
  *  - a bouncing sequence: a column t_e, the commencement time of every
  *    collision in order.  The first one aligns the clocks: the observables
@@ -51,8 +51,8 @@
  * Everything here is engine code: it never prints and never exits; the
  * progress callback is how a front end shows the iterations.
  */
-#ifndef HYBOUNCE_FIT_H
-#define HYBOUNCE_FIT_H
+#ifndef HB_FIT_H
+#define HB_FIT_H
 
 #include <stddef.h>
 #include <stdio.h>
@@ -61,26 +61,26 @@
 
 HB_BEGIN_DECLS
 
-enum fit_kind { FIT_SEQUENCE = 0, FIT_DROPS = 1 };
+enum hb_fit_kind { HB_FIT_SEQUENCE = 0, HB_FIT_DROPS = 1 };
 
 /* Observables of a data point. */
-enum fit_obs { FIT_OBS_TE = 0, FIT_OBS_E, FIT_OBS_XCR, FIT_OBS_TD, FIT_OBS_COUNT };
+enum hb_fit_obs { HB_FIT_OBS_TE = 0, HB_FIT_OBS_E, HB_FIT_OBS_XCR, HB_FIT_OBS_TD, HB_FIT_OBS_COUNT };
 
-enum { FIT_MAX_FREE = 12 };
+enum { HB_FIT_MAX_FREE = 12 };
 
 /* Measured data; every array has n entries (NULL when the column is absent). */
-struct fit_data {
-	int kind;                 /* enum fit_kind */
+struct hb_fit_data {
+	int kind;                 /* enum hb_fit_kind */
 	size_t n;                 /* rows: collisions of the sequence, or drops */
 	double *vi;               /* drops: approach velocity (negative), m/s */
-	double *col[FIT_OBS_COUNT]; /* t_e (sequence); e, x_c_r, t_d (drops) */
-	double *sd[FIT_OBS_COUNT];  /* their standard deviations, or NULL */
+	double *col[HB_FIT_OBS_COUNT]; /* t_e (sequence); e, x_c_r, t_d (drops) */
+	double *sd[HB_FIT_OBS_COUNT];  /* their standard deviations, or NULL */
 	char source[256];         /* file name, for messages */
 };
 
 /* Column name of an observable ("t_e", "e", "x_c_r", "t_d"). */
 const char *
-fit_obs_name(int obs);
+hb_fit_obs_name(int obs);
 
 /*
  * Reads a data file (see the top of this header).  Returns 0, or HB_EINVAL /
@@ -88,37 +88,37 @@ fit_obs_name(int obs);
  * and what is accepted.  On error *d holds nothing to free.
  */
 int
-fit_data_load(const char *path, struct fit_data *d, char *msg, size_t n);
+hb_fit_data_load(const char *path, struct hb_fit_data *d, char *msg, size_t n);
 
 /* The same from an open stream (borrowed); `name` stands for the file in messages. */
 int
-fit_data_read(FILE *f, const char *name, struct fit_data *d, char *msg, size_t n);
+hb_fit_data_read(FILE *f, const char *name, struct hb_fit_data *d, char *msg, size_t n);
 
 /*
  * A bouncing sequence from impact times t[0 .. n-1] (ascending, s), e.g.
  * from a recording; sd may be NULL.  `source` names it in messages.
  */
 int
-fit_data_from_times(const double *t, const double *sd, size_t n, const char *source,
-                    struct fit_data *d, char *msg, size_t mn);
+hb_fit_data_from_times(const double *t, const double *sd, size_t n, const char *source,
+                    struct hb_fit_data *d, char *msg, size_t mn);
 
-/* Frees the columns; fit_data_free on a zeroed struct does nothing. */
+/* Frees the columns; hb_fit_data_free on a zeroed struct does nothing. */
 void
-fit_data_free(struct fit_data *d);
+hb_fit_data_free(struct hb_fit_data *d);
 
 /* Why the fit stopped. */
-enum fit_reason {
-	FIT_CONVERGED_STEP = 0, /* the step became small (xtol) */
-	FIT_CONVERGED_GRAD,     /* the gradient became small (gtol) */
-	FIT_CONVERGED_COST,     /* the cost stopped decreasing (ftol) */
-	FIT_MAXITER,            /* iteration cap reached */
-	FIT_NOPROGRESS,         /* no step lowered the cost */
-	FIT_SINGULAR,           /* the Jacobian is singular: see fit_result.unident */
-	FIT_FAILED,             /* runs failed (message in fit_result.why) */
-	FIT_RUNNING,            /* not stopped yet (fit_result_get during a fit) */
+enum hb_fit_reason {
+	HB_FIT_CONVERGED_STEP = 0, /* the step became small (xtol) */
+	HB_FIT_CONVERGED_GRAD,     /* the gradient became small (gtol) */
+	HB_FIT_CONVERGED_COST,     /* the cost stopped decreasing (ftol) */
+	HB_FIT_MAXITER,            /* iteration cap reached */
+	HB_FIT_NOPROGRESS,         /* no step lowered the cost */
+	HB_FIT_SINGULAR,           /* the Jacobian is singular: see fit_result.unident */
+	HB_FIT_FAILED,             /* runs failed (message in fit_result.why) */
+	HB_FIT_RUNNING,            /* not stopped yet (hb_fit_result_get during a fit) */
 };
 
-struct fit_options {
+struct hb_fit_options {
 	const char *const *keys; /* the free keys */
 	int nkeys;
 	int max_iter;            /* 0: 100 */
@@ -130,107 +130,107 @@ struct fit_options {
 };
 
 /* One data point and its fit. */
-struct fit_point {
+struct hb_fit_point {
 	size_t row;              /* data row */
-	int obs;                 /* enum fit_obs */
+	int obs;                 /* enum hb_fit_obs */
 	double measured, simulated; /* SI; for t_e: the time since the first collision */
 	double sd;               /* the weight's standard deviation */
 	double resid;            /* (simulated - measured) / sd */
 	double start;            /* simulated at the start */
 };
 
-struct fit_result {
+struct hb_fit_result {
 	int np;
-	char key[FIT_MAX_FREE][48];
-	double start[FIT_MAX_FREE]; /* starting values, SI */
-	double value[FIT_MAX_FREE]; /* estimates, SI */
-	double se[FIT_MAX_FREE];    /* standard errors, SI (NAN when not identifiable) */
-	double corr[FIT_MAX_FREE * FIT_MAX_FREE]; /* correlation matrix, row major */
+	char key[HB_FIT_MAX_FREE][48];
+	double start[HB_FIT_MAX_FREE]; /* starting values, SI */
+	double value[HB_FIT_MAX_FREE]; /* estimates, SI */
+	double se[HB_FIT_MAX_FREE];    /* standard errors, SI (NAN when not identifiable) */
+	double corr[HB_FIT_MAX_FREE * HB_FIT_MAX_FREE]; /* correlation matrix, row major */
 	size_t npoints;
-	struct fit_point *point;    /* npoints entries (malloc'd) */
+	struct hb_fit_point *point;    /* npoints entries (malloc'd) */
 	double cost0, cost;         /* sum resid^2 at the start and at the end */
 	int sd_scaled;              /* 1: standard errors scaled by cost / (N - P) */
 	int iter;
 	long runs;                  /* simulator runs used */
-	int reason;                 /* enum fit_reason */
+	int reason;                 /* enum hb_fit_reason */
 	double cond;                /* condition number of the scaled Jacobian */
 	char unident[256];          /* "law.c, law.alpha" when not identifiable, else "" */
 	char why[512];              /* the reason in words */
-	struct scene fitted;        /* the scene at the estimates */
+	struct hb_scene fitted;        /* the scene at the estimates */
 };
 
 /* A short phrase for a reason ("converged (small step)" ...). */
 const char *
-fit_reason_str(int reason);
+hb_fit_reason_str(int reason);
 
 /*
- * Fits: fit_new, fit_iterate until it returns 1, fit_result_get, fit_free.
+ * Fits: hb_fit_new, hb_fit_iterate until it returns 1, hb_fit_result_get, hb_fit_free.
  * Returns 0 when the fit ran (whatever the reason it stopped: see
  * r->reason; r->fitted holds the best point found); HB_EINVAL with a
  * message for bad input (unknown or derived key, a key given twice, more
  * keys than data points, a start out of range, a start at which a run
- * fails or gives no collision); HB_ENOMEM.  Call fit_result_free(r) in
+ * fails or gives no collision); HB_ENOMEM.  Call hb_fit_result_free(r) in
  * every case.
  */
 int
-fit_run(const struct scene *sc, const struct fit_data *d, const struct fit_options *o,
-        struct fit_result *r, char *msg, size_t n);
+hb_fit_run(const struct hb_scene *sc, const struct hb_fit_data *d, const struct hb_fit_options *o,
+        struct hb_fit_result *r, char *msg, size_t n);
 
 /*
  * The same in steps, for a front end that keeps drawing while it fits
  * (initialize / iterate / test, as GSL's solvers):
  *
- *     struct fit *f = fit_new(&scene, &data, &opts, msg, sizeof msg);
- *     while (f != NULL && !fit_iterate(f))
- *             ... show progress, fit_result_get(f, &r, ...) for the best so far ...
- *     fit_result_get(f, &r, msg, sizeof msg);
- *     fit_free(f);
+ *     struct hb_fit *f = hb_fit_new(&scene, &data, &opts, msg, sizeof msg);
+ *     while (f != NULL && !hb_fit_iterate(f))
+ *             ... show progress, hb_fit_result_get(f, &r, ...) for the best so far ...
+ *     hb_fit_result_get(f, &r, msg, sizeof msg);
+ *     hb_fit_free(f);
  *
- * fit_new checks the input and runs the start (NULL with a message as
- * fit_run's errors); it copies the scene and borrows the data, which must
- * outlive it.  fit_iterate does one trust-region iteration (1 + P or more
+ * hb_fit_new checks the input and runs the start (NULL with a message as
+ * hb_fit_run's errors); it copies the scene and borrows the data, which must
+ * outlive it.  hb_fit_iterate does one trust-region iteration (1 + P or more
  * runs) and returns 1 once the fit has stopped (then it does nothing), 0
- * otherwise.  fit_result_get fills *r at the best point so far (reason
- * FIT_RUNNING before the fit has stopped); fit_result_free(r) after.
- * fit_free(NULL) does nothing.
+ * otherwise.  hb_fit_result_get fills *r at the best point so far (reason
+ * HB_FIT_RUNNING before the fit has stopped); hb_fit_result_free(r) after.
+ * hb_fit_free(NULL) does nothing.
  */
-struct fit;
+struct hb_fit;
 
-struct fit *
-fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_options *o,
+struct hb_fit *
+hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct hb_fit_options *o,
         char *msg, size_t n);
 
 int
-fit_iterate(struct fit *f);
+hb_fit_iterate(struct hb_fit *f);
 
 int
-fit_result_get(struct fit *f, struct fit_result *r, char *msg, size_t n);
+hb_fit_result_get(struct hb_fit *f, struct hb_fit_result *r, char *msg, size_t n);
 
 void
-fit_free(struct fit *f);
+hb_fit_free(struct hb_fit *f);
 
 /*
  * The simulated observables of scene sc for the data's points, into
- * out[0 .. fit_npoints(d)-1], in the order of fit_result.point.  Returns 0
+ * out[0 .. hb_fit_npoints(d)-1], in the order of fit_result.point.  Returns 0
  * or the failure of a run with a message.  jobs as in fit_options.
  */
 int
-fit_simulate(const struct scene *sc, const struct fit_data *d, int jobs, double *out,
+hb_fit_simulate(const struct hb_scene *sc, const struct hb_fit_data *d, int jobs, double *out,
              char *msg, size_t n);
 
 /* Number of data points (residuals) of the data. */
 size_t
-fit_npoints(const struct fit_data *d);
+hb_fit_npoints(const struct hb_fit_data *d);
 
 void
-fit_result_free(struct fit_result *r);
+hb_fit_result_free(struct hb_fit_result *r);
 
 /*
  * Value of a numeric scene key (the free keys of a fit).  Returns 0, or
  * HB_EINVAL naming the key and the keys accepted.
  */
 int
-fit_key_get(const struct scene *sc, const char *key, double *v, char *msg, size_t n);
+hb_fit_key_get(const struct hb_scene *sc, const char *key, double *v, char *msg, size_t n);
 
 HB_END_DECLS
 

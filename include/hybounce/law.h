@@ -6,7 +6,7 @@
  * with F_c = -F_s the force on the bodies, x_c < 0 in compression, and the
  * condition Phi(0, 0, v) = 0 for every v (paper eq. vanishing).
  *
- * Each law is one file under src/core/ ending in one `const struct law_type`;
+ * Each law is one file under src/core/ ending in one `const struct hb_law_type`;
  * the registry in law.c lists them.  Adding a law means adding one file and
  * one registry line.
  *
@@ -21,36 +21,36 @@
  * Parameters are passed as an array of doubles in the order of the law's
  * parameter table.  All values are SI.
  */
-#ifndef HYBOUNCE_LAW_H
-#define HYBOUNCE_LAW_H
+#ifndef HB_LAW_H
+#define HB_LAW_H
 #include "export.h"
 HB_BEGIN_DECLS
 
 #include <stddef.h>
 
-#include "units.h" /* struct unit_dim */
+#include "units.h" /* struct hb_unit_dim */
 
 enum {
-	LAW_MAX_Z = 2,       /* largest n_z of any law */
-	LAW_MAX_PARAMS = 10, /* largest parameter table */
-	LAW_MAX_KINKS = 4,   /* largest number of switching functions */
+	HB_LAW_MAX_Z = 2,       /* largest n_z of any law */
+	HB_LAW_MAX_PARAMS = 10, /* largest parameter table */
+	HB_LAW_MAX_KINKS = 4,   /* largest number of switching functions */
 };
 
 /* Flags of a parameter. */
 enum {
-	LAW_PARAM_STIFFNESS = 1, /* the stiffness k: derived by eq. k_hertz when
+	HB_LAW_PARAM_STIFFNESS = 1, /* the stiffness k: derived by eq. k_hertz when
 	                            both bodies are given by their materials and
 	                            the law has k_hertz; typed otherwise */
-	LAW_PARAM_EXPONENT_P = 2, /* the exponent p (used in unit dimensions) */
-	LAW_PARAM_EXPONENT_N = 4, /* the exponent n (used in unit dimensions) */
-	LAW_PARAM_CHECKED = 8,    /* constrained by the law's check beyond its own
+	HB_LAW_PARAM_EXPONENT_P = 2, /* the exponent p (used in unit dimensions) */
+	HB_LAW_PARAM_EXPONENT_N = 4, /* the exponent n (used in unit dimensions) */
+	HB_LAW_PARAM_CHECKED = 8,    /* constrained by the law's check beyond its own
 	                             range (gamma in [-beta, beta]): the key that
 	                             a failed check names */
 };
 
-struct law_param {
+struct hb_law_param {
 	const char *name;        /* key in presets and the panel: "alpha", "beta", "c" */
-	struct unit_dim dim;     /* expected dimension */
+	struct hb_unit_dim dim;     /* expected dimension */
 	double lo, hi;           /* admissible range; -HUGE_VAL/HUGE_VAL for none */
 	int lo_open, hi_open;    /* 1 if the bound itself is excluded */
 	double def;              /* default value */
@@ -58,13 +58,13 @@ struct law_param {
 	const char *help;        /* one line: meaning and where in the paper */
 };
 
-struct law_type {
+struct hb_law_type {
 	const char *name;        /* short key: "shccl", "bwshccl", "bwmcl", "hertz", "linear" */
 	const char *title;       /* "Simon-Hunt-Crossley (SHCCL)" */
 	const char *description; /* one line, including how x_c > 0 is continued (rule R1) */
 	int n_z;                 /* dimension of the internal state */
 	int n_params;
-	const struct law_param *params;
+	const struct hb_law_param *params;
 	int n_kinks;             /* number of switching functions (see kinks) */
 
 	/* Phi(x_c, z, v).  z has n_z entries (may be NULL when n_z = 0). */
@@ -122,44 +122,44 @@ struct law_type {
 };
 
 /* The registered laws, NULL-terminated, in a fixed order. */
-const struct law_type *const *
-law_list(void);
+const struct hb_law_type *const *
+hb_law_list(void);
 
 /* The law with this name (case-insensitive), or NULL. */
-const struct law_type *
-law_find(const char *name);
+const struct hb_law_type *
+hb_law_find(const char *name);
 
 /* Index of a parameter in the law's table, or -1. */
 int
-law_param_index(const struct law_type *law, const char *name);
+hb_law_param_index(const struct hb_law_type *law, const char *name);
 
 /* Fills par[0 .. n_params-1] with the defaults. */
 void
-law_defaults(const struct law_type *law, double *par);
+hb_law_defaults(const struct hb_law_type *law, double *par);
 
 /* The parameter's admissible range. */
-struct unit_range
-law_param_range(const struct law_param *pp);
+struct hb_unit_range
+hb_law_param_range(const struct hb_law_param *pp);
 
 /*
  * Checks one value against the parameter's range.  Returns 0, or HB_EINVAL
  * with "NAME must be in (lo, hi]" style text in msg.
  */
 int
-law_param_check(const struct law_param *pp, double value, char *msg, size_t n);
+hb_law_param_check(const struct hb_law_param *pp, double value, char *msg, size_t n);
 
 /* The exponent p / n of this parameter set (1 if the law has none). */
 double
-law_exponent_p(const struct law_type *law, const double *par);
+hb_law_exponent_p(const struct hb_law_type *law, const double *par);
 double
-law_exponent_n(const struct law_type *law, const double *par);
+hb_law_exponent_n(const struct hb_law_type *law, const double *par);
 
 /* The laws, for direct use by tests. */
-extern const struct law_type law_shccl;
-extern const struct law_type law_bwshccl;
-extern const struct law_type law_bwmcl;
-extern const struct law_type law_hertz;
-extern const struct law_type law_linear;
+extern const struct hb_law_type hb_law_shccl;
+extern const struct hb_law_type hb_law_bwshccl;
+extern const struct hb_law_type hb_law_bwmcl;
+extern const struct hb_law_type hb_law_hertz;
+extern const struct hb_law_type hb_law_linear;
 
 HB_END_DECLS
 

@@ -12,8 +12,8 @@
  * Values may carry units with SI prefixes ("20 mm", "200 GPa").  Errors
  * come back as "FILE:LINE: [section] key: message; accepted: ...".
  */
-#ifndef HYBOUNCE_PRESET_H
-#define HYBOUNCE_PRESET_H
+#ifndef HB_PRESET_H
+#define HB_PRESET_H
 #include "export.h"
 HB_BEGIN_DECLS
 
@@ -21,16 +21,16 @@ HB_BEGIN_DECLS
 #include "scene.h"
 
 /*
- * Loads a preset into *sc (starting from scene_defaults), validates it and
+ * Loads a preset into *sc (starting from hb_scene_defaults), validates it and
  * derives.  On error *sc is unspecified, HB_EINVAL or HB_EIO is returned
  * and msg holds "FILE:LINE: ...".
  */
 int
-preset_load(const char *path, struct scene *sc, char *msg, size_t n);
+hb_preset_load(const char *path, struct hb_scene *sc, char *msg, size_t n);
 
 /* The same from a string; `name` stands for the file name in messages. */
 int
-preset_load_string(const char *text, const char *name, struct scene *sc,
+hb_preset_load_string(const char *text, const char *name, struct hb_scene *sc,
                    char *msg, size_t n);
 
 /*
@@ -42,7 +42,7 @@ preset_load_string(const char *text, const char *name, struct scene *sc,
  * "PATH: KEY: ...; accepted: ...".
  */
 int
-preset_open(const char *path, const char *const *sets, int nsets, struct scene *sc,
+hb_preset_open(const char *path, const char *const *sets, int nsets, struct hb_scene *sc,
             char *msg, size_t n);
 
 /*
@@ -51,20 +51,20 @@ preset_open(const char *path, const char *const *sets, int nsets, struct scene *
  * with "PATH: strerror" in msg; an existing file is left intact on failure.
  */
 int
-preset_save(const char *path, const struct scene *sc, char *msg, size_t n);
+hb_preset_save(const char *path, const struct hb_scene *sc, char *msg, size_t n);
 
 /* The same into a caller buffer; returns the length needed (like snprintf). */
 size_t
-preset_format(const struct scene *sc, char *buf, size_t n);
+hb_preset_format(const struct hb_scene *sc, char *buf, size_t n);
 
 /*
  * Finds a preset by name or path: an existing path is used as is;
  * otherwise NAME or NAME.preset in the preset folders (see
- * preset_dirs()).  Writes the path into out.  Returns 0 or HB_EINVAL with a
+ * hb_preset_dirs()).  Writes the path into out.  Returns 0 or HB_EINVAL with a
  * message listing where it looked.
  */
 int
-preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn);
+hb_preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn);
 
 /*
  * The folders searched for presets, in order: $HYBOUNCE_PRESETS (colon
@@ -76,9 +76,9 @@ preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn);
  * of that thread sees HYBOUNCE_PRESETS changed.
  */
 const char *const *
-preset_dirs(void);
+hb_preset_dirs(void);
 
-struct preset_info {
+struct hb_preset_info {
 	char path[512];
 	char name[64];          /* file name without .preset */
 	char title[96];         /* [scene] name */
@@ -91,7 +91,7 @@ struct preset_info {
  * no memory.
  */
 int
-preset_list(struct preset_info **out);
+hb_preset_list(struct hb_preset_info **out);
 
 HB_END_DECLS
 

@@ -10,23 +10,23 @@
  * eqs. Hr_f .. Hr_init and H_f .. H_init).
  *
  * Derived values (E*, R_e, m1, m2, m, eta, k_H and k by eq. k_hertz) are
- * computed by scene_derive() and are never typed: k is typed only when a
+ * computed by hb_scene_derive() and are never typed: k is typed only when a
  * body has no material (E, nu) or the law has no k_hertz (clamped linear).
  *
  * Keys.  Every typed value has a key "section.name" (e.g. "law.c",
  * "body1.R", "initial.x0", "run.rtol") used by presets, by --set and by the
- * explorer's parameter panel; scene_set() parses "VALUE [UNIT]" for a key.
+ * explorer's parameter panel; hb_scene_set() parses "VALUE [UNIT]" for a key.
  * One table (src/core/scene_keys.c, with the law's parameter table) holds
  * each key's unit, range, default, meaning and how it is read and printed.
  *
- * Errors as data.  scene_set_text(), scene_set_number() and scene_check()
- * fill a struct scene_error: the key, what is wrong and what is accepted
- * (with the range as numbers when it is one); scene_error_str() writes it
- * as "KEY: WHAT; accepted: ACCEPTED".  scene_set() and scene_validate() are
+ * Errors as data.  hb_scene_set_text(), hb_scene_set_number() and hb_scene_check()
+ * fill a struct hb_scene_error: the key, what is wrong and what is accepted
+ * (with the range as numbers when it is one); hb_scene_error_str() writes it
+ * as "KEY: WHAT; accepted: ACCEPTED".  hb_scene_set() and hb_scene_validate() are
  * the same with the message written out.
  */
-#ifndef HYBOUNCE_SCENE_H
-#define HYBOUNCE_SCENE_H
+#ifndef HB_SCENE_H
+#define HB_SCENE_H
 #include "export.h"
 HB_BEGIN_DECLS
 
@@ -35,29 +35,29 @@ HB_BEGIN_DECLS
 #include "law.h"
 #include "units.h"
 
-enum scene_system { SCENE_REDUCED = 0, SCENE_FULL = 1 };
+enum hb_scene_system { HB_SCENE_REDUCED = 0, HB_SCENE_FULL = 1 };
 
-enum scene_stepper {
-	STEPPER_RK8PD = 0, /* default: explicit Dormand-Prince 8(9) */
-	STEPPER_RKF45,
-	STEPPER_RKCK,
-	STEPPER_MSBDF,     /* implicit, uses the law's Jacobian */
-	STEPPER_RK4IMP,
-	STEPPER_BSIMP,
-	STEPPER_AUTO,      /* dop853, then bsimp for contacts once one is found stiff */
-	STEPPER_DOP853,    /* explicit Dormand-Prince 8(5,3) with dense output (the engine's own) */
-	STEPPER_COUNT
+enum hb_scene_stepper {
+	HB_STEPPER_RK8PD = 0, /* default: explicit Dormand-Prince 8(9) */
+	HB_STEPPER_RKF45,
+	HB_STEPPER_RKCK,
+	HB_STEPPER_MSBDF,     /* implicit, uses the law's Jacobian */
+	HB_STEPPER_RK4IMP,
+	HB_STEPPER_BSIMP,
+	HB_STEPPER_AUTO,      /* dop853, then bsimp for contacts once one is found stiff */
+	HB_STEPPER_DOP853,    /* explicit Dormand-Prince 8(5,3) with dense output (the engine's own) */
+	HB_STEPPER_COUNT
 };
 
 /* Reductions of DESIGN.md section 3 (all on by default; the bench turns them off). */
 enum {
-	REDUCE_FLIGHT = 1,  /* closed-form flight when F_er is constant on the interval */
-	REDUCE_CONTACT = 2, /* integrate (x_c, v, z_c) in contact and recover x = x_e + x_c */
-	REDUCE_COM = 4,     /* centre of mass in closed form, not integrated */
-	REDUCE_ALL = 7,
+	HB_REDUCE_FLIGHT = 1,  /* closed-form flight when F_er is constant on the interval */
+	HB_REDUCE_CONTACT = 2, /* integrate (x_c, v, z_c) in contact and recover x = x_e + x_c */
+	HB_REDUCE_COM = 4,     /* centre of mass in closed form, not integrated */
+	HB_REDUCE_ALL = 7,
 };
 
-struct scene_body {
+struct hb_scene_body {
 	char name[64];
 	int has_material; /* E and nu given */
 	double E, nu;     /* Pa, 1 */
@@ -67,7 +67,7 @@ struct scene_body {
 	int mass_given;   /* 1 if mass was typed rather than derived */
 };
 
-struct scene_loads {
+struct hb_scene_loads {
 	double g;         /* gravity, m/s^2, acting along -n1 on both bodies: F_ei += -m_i g */
 	double F1, F2;    /* constant forces on body 1 and body 2 along n1, N */
 	int ramp;         /* 1: the S-ramp loads of the second study, eqs. u_1 and u_2 */
@@ -75,15 +75,15 @@ struct scene_loads {
 	double Te, Ts;    /* s */
 };
 
-struct scene_initial {
+struct hb_scene_initial {
 	double x0, v0;    /* relative displacement (>= 0) and velocity */
 	double xm0, vm0;  /* centre of mass (full system only) */
 };
 
-struct scene_run {
+struct hb_scene_run {
 	double T;         /* end of ordinary time, s */
 	long J;           /* jump cap */
-	int stepper;      /* enum scene_stepper */
+	int stepper;      /* enum hb_scene_stepper */
 	double rtol;      /* relative tolerance */
 	double atol;      /* absolute tolerance, relative to each component's scale */
 	double h_max;     /* largest step inside a contact, s; 0: none */
@@ -93,8 +93,8 @@ struct scene_run {
 	int kinks;        /* 1: steps end on the law's and the loads' kinks (DESIGN.md 4a) */
 };
 
-struct scene_derived {
-	int system;       /* enum scene_system */
+struct hb_scene_derived {
+	int system;       /* enum hb_scene_system */
 	double Estar;     /* Pa; NAN when a body has no material */
 	double Re;        /* m */
 	double m1, m2;    /* kg (m2 = INFINITY in the reduced system) */
@@ -104,51 +104,51 @@ struct scene_derived {
 	int k_derived;    /* 1 if law k comes from k_H by eq. k_hertz */
 };
 
-struct scene {
+struct hb_scene {
 	char name[96];          /* short title */
 	char description[256];  /* one or two sentences */
-	struct scene_body body[2];
-	const struct law_type *law;
-	double par[LAW_MAX_PARAMS]; /* law parameters, in the law's table order */
+	struct hb_scene_body body[2];
+	const struct hb_law_type *law;
+	double par[HB_LAW_MAX_PARAMS]; /* law parameters, in the law's table order */
 	int ext;                /* rule R1: 1 adhesive continuation (default), 0 clamped */
-	struct scene_loads loads;
-	struct scene_initial init;
-	struct scene_run run;
-	struct scene_derived d; /* filled by scene_derive() */
+	struct hb_scene_loads loads;
+	struct hb_scene_initial init;
+	struct hb_scene_run run;
+	struct hb_scene_derived d; /* filled by hb_scene_derive() */
 };
 
 /* An error of a key, as data. */
-struct scene_error {
+struct hb_scene_error {
 	char key[48];        /* "law.alpha"; "" when no key is concerned */
 	char what[256];      /* "value 1.2 is out of range" */
 	char accepted[192];  /* "(0, 1)", "rk8pd, rkf45, ..."; "" if none */
 	int has_range;       /* 1: range holds the accepted numbers */
-	struct unit_range range;
+	struct hb_unit_range range;
 };
 
 /* "KEY: WHAT; accepted: ACCEPTED" into buf; returns buf. */
 char *
-scene_error_str(const struct scene_error *e, char *buf, size_t n);
+hb_scene_error_str(const struct hb_scene_error *e, char *buf, size_t n);
 
 /* A valid neutral scene: a steel ball dropped on a Hertz elastic flat. */
 void
-scene_defaults(struct scene *sc);
+hb_scene_defaults(struct hb_scene *sc);
 
 /*
  * Computes the derived values (and k when derivable).  Returns 0, or
  * HB_EINVAL with a message when they cannot be computed (e.g. no mass).
  */
 int
-scene_derive(struct scene *sc, char *msg, size_t n);
+hb_scene_derive(struct hb_scene *sc, char *msg, size_t n);
 
 /*
  * Checks every value against the paper's admissible ranges (alpha in (0,1),
  * gamma in [-beta, beta], n, p >= 1, masses and stiffnesses > 0, x0 >= 0,
  * tolerances > 0 ...).  Returns 0, or HB_EINVAL with "KEY: value V is out
- * of range; accepted: RANGE" in msg.  Calls scene_derive() first.
+ * of range; accepted: RANGE" in msg.  Calls hb_scene_derive() first.
  */
 int
-scene_validate(struct scene *sc, char *msg, size_t n);
+hb_scene_validate(struct hb_scene *sc, char *msg, size_t n);
 
 /*
  * Sets key ("law.c", "body1.E", "initial.x0", "run.stepper", "scene.law",
@@ -158,29 +158,29 @@ scene_validate(struct scene *sc, char *msg, size_t n);
  * with a message naming the key and what is accepted.
  */
 int
-scene_set(struct scene *sc, const char *key, const char *text, char *msg, size_t n);
+hb_scene_set(struct hb_scene *sc, const char *key, const char *text, char *msg, size_t n);
 
 /* The same with the error as data (err may be NULL). */
 int
-scene_set_text(struct scene *sc, const char *key, const char *text, struct scene_error *err);
+hb_scene_set_text(struct hb_scene *sc, const char *key, const char *text, struct hb_scene_error *err);
 
 /* Sets a number (SI) or whole-number key from a double; same checks. */
 int
-scene_set_number(struct scene *sc, const char *key, double v, struct scene_error *err);
+hb_scene_set_number(struct hb_scene *sc, const char *key, double v, struct hb_scene_error *err);
 
-/* scene_validate() with the error as data (err may be NULL). */
+/* hb_scene_validate() with the error as data (err may be NULL). */
 int
-scene_check(struct scene *sc, struct scene_error *err);
+hb_scene_check(struct hb_scene *sc, struct hb_scene_error *err);
 
-enum scene_key_kind {
-	SCENE_KEY_NUMBER, /* a real number with a unit */
-	SCENE_KEY_WHOLE,  /* a whole number */
-	SCENE_KEY_TEXT,   /* free text */
-	SCENE_KEY_CHOICE, /* one of choices[] */
+enum hb_scene_key_kind {
+	HB_SCENE_KEY_NUMBER, /* a real number with a unit */
+	HB_SCENE_KEY_WHOLE,  /* a whole number */
+	HB_SCENE_KEY_TEXT,   /* free text */
+	HB_SCENE_KEY_CHOICE, /* one of choices[] */
 };
 
 /* One row of the parameter panel, and the typed value of a key. */
-struct scene_keyinfo {
+struct hb_scene_keyinfo {
 	char key[48];       /* "law.alpha" */
 	char section[16];   /* "bodies", "derived", "law", "loads", "initial", "run" */
 	char label[32];     /* "alpha" / "E (body 1)" */
@@ -190,11 +190,11 @@ struct scene_keyinfo {
 	int readonly;       /* derived values */
 	char edit[64];      /* the value as text that reads back exactly ("20 mm") */
 	/* Typed: */
-	int kind;           /* enum scene_key_kind */
+	int kind;           /* enum hb_scene_key_kind */
 	double number;      /* NUMBER, WHOLE: the SI value; NAN when not given */
-	struct unit_dim dim;/* NUMBER: its dimension (law exponents applied) */
+	struct hb_unit_dim dim;/* NUMBER: its dimension (law exponents applied) */
 	char unit[32];      /* NUMBER: the SI unit ("N s m^-5/2"; "" dimensionless) */
-	struct unit_range limits; /* NUMBER, WHOLE: the admissible range */
+	struct hb_unit_range limits; /* NUMBER, WHOLE: the admissible range */
 	const char *choices[16];  /* CHOICE: the accepted texts */
 	int nchoices;
 	int choice;         /* CHOICE: index of the current value in choices */
@@ -206,8 +206,8 @@ struct scene_keyinfo {
  * err filled for an unknown key.
  */
 int
-scene_get(const struct scene *sc, const char *key, struct scene_keyinfo *out,
-          struct scene_error *err);
+hb_scene_get(const struct hb_scene *sc, const char *key, struct hb_scene_keyinfo *out,
+          struct hb_scene_error *err);
 
 /*
  * The typed row of parameter i of a law at its defaults (number = the
@@ -215,51 +215,51 @@ scene_get(const struct scene *sc, const char *key, struct scene_keyinfo *out,
  * --list-laws.  Returns 0, or HB_EINVAL for a bad i.
  */
 int
-scene_law_param_info(const struct law_type *law, int i, struct scene_keyinfo *out);
+hb_scene_law_param_info(const struct hb_law_type *law, int i, struct hb_scene_keyinfo *out);
 
 /* Number of rows (depends on law and system). */
 int
-scene_nkeys(const struct scene *sc);
+hb_scene_nkeys(const struct hb_scene *sc);
 
-/* Fills row i (0 <= i < scene_nkeys). Returns 0 or HB_EINVAL for a bad i. */
+/* Fills row i (0 <= i < hb_scene_nkeys). Returns 0 or HB_EINVAL for a bad i. */
 int
-scene_key(const struct scene *sc, int i, struct scene_keyinfo *out);
+hb_scene_key(const struct hb_scene *sc, int i, struct hb_scene_keyinfo *out);
 
 /* Applied loads at time t: F_e1, F_e2 (body 2 ignored in the reduced system). */
 void
-scene_loads_at(const struct scene *sc, double t, double *Fe1, double *Fe2);
+hb_scene_loads_at(const struct hb_scene *sc, double t, double *Fe1, double *Fe2);
 
 /* F_er(t) (paper eq. u): F_e1 in the reduced system. */
 double
-scene_Fer(const struct scene *sc, double t);
+hb_scene_Fer(const struct hb_scene *sc, double t);
 
 /*
  * Times in (t0, t1) where the loads have a kink (T_s, T_e of the ramp),
  * ascending, at most max.  Returns the count.
  */
 int
-scene_load_kinks(const struct scene *sc, double t0, double t1, double *out, int max);
+hb_scene_load_kinks(const struct hb_scene *sc, double t0, double t1, double *out, int max);
 
 /* 1 if F_er is constant on [t0, t1]. */
 int
-scene_Fer_constant(const struct scene *sc, double t0, double t1);
+hb_scene_Fer_constant(const struct hb_scene *sc, double t0, double t1);
 
 /*
  * Closed-form flight increments under F_er alone (no contact force):
  *     dx = int_{t0}^{t1} (t1 - s) F_er(s) ds / m,  dv = int_{t0}^{t1} F_er(s) ds / m.
  */
 void
-scene_flight_increment(const struct scene *sc, double t0, double t1, double *dx, double *dv);
+hb_scene_flight_increment(const struct hb_scene *sc, double t0, double t1, double *dx, double *dv);
 
 /* Centre of mass x_m(t), v_m(t) in closed form (eq. com); 0 in the reduced system. */
 void
-scene_com(const struct scene *sc, double t, double *xm, double *vm);
+hb_scene_com(const struct hb_scene *sc, double t, double *xm, double *vm);
 
 /* Name of a stepper ("rk8pd" ...) and lookup by name (-1 if unknown). */
 const char *
-scene_stepper_name(int stepper);
+hb_scene_stepper_name(int stepper);
 int
-scene_stepper_find(const char *name);
+hb_scene_stepper_find(const char *name);
 
 HB_END_DECLS
 

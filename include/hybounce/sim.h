@@ -1,27 +1,27 @@
 /*
  * sim.h - the simulator: flow, event location, jump map, rules R1 and R2.
  *
- *     struct sim *s = sim_new(&scene, msg, sizeof msg);
- *     while (sim_end(s) == SIM_RUNNING)
- *             if (sim_advance(s, 0, 0.010) != HB_OK)   // 10 ms of work
- *                     break;                          // sim_errmsg(s) says why
- *     ... sim_arc(s), sim_collision(s, i) ...
- *     sim_free(s);
+ *     struct hb_sim *s = hb_sim_new(&scene, msg, sizeof msg);
+ *     while (hb_sim_end(s) == HB_SIM_RUNNING)
+ *             if (hb_sim_advance(s, 0, 0.010) != HB_OK)   // 10 ms of work
+ *                     break;                          // hb_sim_errmsg(s) says why
+ *     ... hb_sim_arc(s), hb_sim_collision(s, i) ...
+ *     hb_sim_free(s);
  *
- * The caller drives: sim_advance does a bounded amount of work and returns.
+ * The caller drives: hb_sim_advance does a bounded amount of work and returns.
  * A failed advance changes nothing already computed: the run ends at the
- * last good sample, with the reason in sim_errmsg().
+ * last good sample, with the reason in hb_sim_errmsg().
  *
  * The sim copies the scene; it owns its GSL workspaces and its arc.  All
  * pointers it returns stay valid until the next call that changes it
- * (sim_advance, sim_seek, sim_set_scene, sim_restart, sim_free).
+ * (hb_sim_advance, hb_sim_seek, hb_sim_set_scene, hb_sim_restart, hb_sim_free).
  *
  * Numerical method (see README "How the engine integrates"):
  *  - flight: closed form when F_er is constant on the interval (a parabola;
  *    the event by a quadratic), otherwise GSL on (x, v);
  *  - contact: GSL odeiv2 on (x_c, v, z_c, W, J_Fc, J_Fe), x = x_e + x_c;
  *  - the absolute tolerance of each component is atol times its scale,
- *    taken from the scene's own sizes (sim_stats.scale);
+ *    taken from the scene's own sizes (hb_sim_stats.scale);
  *  - a step that leaves C is bracketed with a root finder on the
  *    flow-set indicator (max(x, v) in flight, -min(Phi, v) in contact;
  *    only a strictly negative value leaves C): on the step's continuous
@@ -39,8 +39,8 @@
  *    the boundary of C (rule R2): the contact ends where the exact law
  *    ends it, not where a force within rounding of zero changes sign.
  */
-#ifndef HYBOUNCE_SIM_H
-#define HYBOUNCE_SIM_H
+#ifndef HB_SIM_H
+#define HB_SIM_H
 #include "export.h"
 HB_BEGIN_DECLS
 
@@ -49,14 +49,14 @@ HB_BEGIN_DECLS
 #include "arc.h"
 #include "collisions.h"
 
-enum sim_end {
-	SIM_RUNNING = 0,
-	SIM_END_T,      /* reached the horizon T */
-	SIM_END_J,      /* reached the jump cap J */
-	SIM_END_FAIL,   /* failed: sim_errmsg() says why, at which (t, j) */
+enum hb_sim_end {
+	HB_SIM_RUNNING = 0,
+	HB_SIM_END_T,      /* reached the horizon T */
+	HB_SIM_END_J,      /* reached the jump cap J */
+	HB_SIM_END_FAIL,   /* failed: hb_sim_errmsg() says why, at which (t, j) */
 };
 
-struct sim_stats {
+struct hb_sim_stats {
 	long steps;        /* accepted integrator steps */
 	long rejected;     /* rejected trial steps */
 	long rhs;          /* right-hand-side evaluations (all, including location) */
@@ -80,89 +80,89 @@ struct sim_stats {
 	int stiff;         /* 1: a contact was found stiff: an implicit stepper is faster */
 	double stiff_t;    /* the time it was found, s */
 	int switched;      /* 1: run.stepper = auto went over to bsimp for the contacts */
-	double seconds;    /* CPU time spent in sim_advance (CLOCK_PROCESS_CPUTIME_ID), s */
-	double wall;       /* wall time spent in sim_advance (CLOCK_MONOTONIC), s */
+	double seconds;    /* CPU time spent in hb_sim_advance (CLOCK_PROCESS_CPUTIME_ID), s */
+	double wall;       /* wall time spent in hb_sim_advance (CLOCK_MONOTONIC), s */
 	int ncomp;         /* components of the contact ODE */
 	double scale[8];   /* per-component scale of the absolute tolerance */
 	const char *comp[8]; /* their names */
 };
 
-struct sim;
+struct hb_sim;
 
 /*
  * Validates and copies the scene and builds the workspaces.  Returns NULL
  * with a message in msg on bad input (HB_EINVAL) or no memory.  Turns
  * GSL's aborting error handler off.
  */
-struct sim *
-sim_new(const struct scene *sc, char *msg, size_t n);
+struct hb_sim *
+hb_sim_new(const struct hb_scene *sc, char *msg, size_t n);
 
-/* Frees everything.  sim_free(NULL) does nothing. */
+/* Frees everything.  hb_sim_free(NULL) does nothing. */
 void
-sim_free(struct sim *s);
+hb_sim_free(struct hb_sim *s);
 
 /*
  * Advances the run by at most max_steps accepted steps (0: no limit) and at
  * most max_seconds of wall time (0: no limit; a frame's budget), or to its end.  Returns HB_OK
- * (check sim_end), HB_EDONE if the run had already ended, or the failure
- * (HB_ENUMERIC, HB_ECHATTER, HB_ENOMEM) with sim_errmsg() set; after a
- * failure sim_end() is SIM_END_FAIL and the arc ends at the last good sample.
+ * (check hb_sim_end), HB_EDONE if the run had already ended, or the failure
+ * (HB_ENUMERIC, HB_ECHATTER, HB_ENOMEM) with hb_sim_errmsg() set; after a
+ * failure hb_sim_end() is HB_SIM_END_FAIL and the arc ends at the last good sample.
  */
 int
-sim_advance(struct sim *s, long max_steps, double max_seconds);
+hb_sim_advance(struct hb_sim *s, long max_steps, double max_seconds);
 
-/* Runs to the end (horizon, jump cap or failure). Returns as sim_advance. */
+/* Runs to the end (horizon, jump cap or failure). Returns as hb_sim_advance. */
 int
-sim_run(struct sim *s);
+hb_sim_run(struct hb_sim *s);
 
-enum sim_end
-sim_end(const struct sim *s);
+enum hb_sim_end
+hb_sim_end(const struct hb_sim *s);
 
 /* Why the run ended, in words ("horizon T = 0.5 s reached", "...failed at (t, j)..."). */
 const char *
-sim_end_str(const struct sim *s);
+hb_sim_end_str(const struct hb_sim *s);
 
 /* The last error message ("" if none).  Owned by s. */
 const char *
-sim_errmsg(const struct sim *s);
+hb_sim_errmsg(const struct hb_sim *s);
 
-const struct scene *
-sim_scene(const struct sim *s);
+const struct hb_scene *
+hb_sim_scene(const struct hb_sim *s);
 
-const struct arc *
-sim_arc(const struct sim *s);
+const struct hb_arc *
+hb_sim_arc(const struct hb_sim *s);
 
-const struct sim_stats *
-sim_stats(const struct sim *s);
+const struct hb_sim_stats *
+hb_sim_stats(const struct hb_sim *s);
 
 /*
  * Completed collisions (those ended by a separation) that are kept.  The
  * list is bounded: past run.max_samples / 8 of them every other one of the
  * older three quarters is thinned out, and each kept one has its index i
- * among all (so i then has gaps); sim_collisions_total() counts them all.
+ * among all (so i then has gaps); hb_sim_collisions_total() counts them all.
  */
 size_t
-sim_ncollisions(const struct sim *s);
+hb_sim_ncollisions(const struct hb_sim *s);
 long
-sim_collisions_total(const struct sim *s);
-const struct collision *
-sim_collision(const struct sim *s, size_t i);
+hb_sim_collisions_total(const struct hb_sim *s);
+const struct hb_collision *
+hb_sim_collision(const struct hb_sim *s, size_t i);
 
 /*
  * The contact in progress, if any: fills *out with the values so far
  * (complete = 0) and returns 1; returns 0 in flight.
  */
 int
-sim_contact_live(const struct sim *s, struct collision *out);
+hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out);
 
 /*
  * Truncates the run after sample i (which becomes the last sample; a
  * pre-jump sample is kept with its jump undone) and continues from its
- * state on the next sim_advance.  Collisions that end after it are dropped.
+ * state on the next hb_sim_advance.  Collisions that end after it are dropped.
  * Returns HB_OK or HB_EINVAL for a bad index.
  */
 int
-sim_seek(struct sim *s, size_t i);
+hb_sim_seek(struct hb_sim *s, size_t i);
 
 /*
  * Adopts new scene values for what is computed from now on (after the
@@ -172,11 +172,11 @@ sim_seek(struct sim *s, size_t i);
  * the run from t = 0, and *restarted says so (may be NULL).
  */
 int
-sim_set_scene(struct sim *s, const struct scene *sc, int *restarted, char *msg, size_t n);
+hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, char *msg, size_t n);
 
 /* Discards the run and starts again from t = 0 with the current scene. */
 int
-sim_restart(struct sim *s);
+hb_sim_restart(struct hb_sim *s);
 
 HB_END_DECLS
 

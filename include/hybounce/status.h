@@ -5,8 +5,8 @@
  * of these codes and leaves a human-readable message in the handle (sim) or
  * in a caller-provided buffer (parsers, validators).
  */
-#ifndef HYBOUNCE_STATUS_H
-#define HYBOUNCE_STATUS_H
+#ifndef HB_STATUS_H
+#define HB_STATUS_H
 #include "export.h"
 HB_BEGIN_DECLS
 
@@ -24,15 +24,15 @@ enum hb_status {
 
 /* A short constant English description of a status code ("ok", "bad input", ...). */
 const char *
-status_str(int status);
+hb_status_str(int status);
 
 /*
  * Formats a message into buf (size n, always NUL-terminated when n > 0) and
  * returns status unchanged, so that code can write
- *     return status_set(buf, n, HB_EINVAL, "%s:%d: ...", file, line);
+ *     return hb_status_set(buf, n, HB_EINVAL, "%s:%d: ...", file, line);
  */
 int
-status_set(char *buf, size_t n, int status, const char *fmt, ...)
+hb_status_set(char *buf, size_t n, int status, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 
 HB_END_DECLS

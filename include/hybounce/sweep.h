@@ -2,25 +2,25 @@
  * sweep.h - parameter sweeps: the Cartesian product of varied scene values,
  * run on every core, resumable, in shards for a cluster.
  *
- *     struct sweep *sw = sweep_new(&scene, msg, sizeof msg);  // preset + --set
- *     sweep_vary(sw, "law.c=1e8:1e10:50:log", msg, sizeof msg);
- *     sweep_check(sw, msg, sizeof msg);           // every point valid?
- *     sweep_run(sw, &opts, msg, sizeof msg);     // DIR/runs.csv, collisions.csv
- *     sweep_free(sw);
+ *     struct hb_sweep *sw = hb_sweep_new(&scene, msg, sizeof msg);  // preset + --set
+ *     hb_sweep_vary(sw, "law.c=1e8:1e10:50:log", msg, sizeof msg);
+ *     hb_sweep_check(sw, msg, sizeof msg);           // every point valid?
+ *     hb_sweep_run(sw, &opts, msg, sizeof msg);     // DIR/runs.csv, collisions.csv
+ *     hb_sweep_free(sw);
  *
  * Points.  Axis k holds n_k values; point ids run over the product in
  * row-major order, the last --vary varying fastest.  The scene of a point
- * is the base scene with each axis's value applied by scene_set() in the
+ * is the base scene with each axis's value applied by hb_scene_set() in the
  * order of the axes, so it equals the scene of
  *     hybounce --batch SPEC.preset --set KEY1=V1 --set KEY2=V2 ...
- * with the values as runs.csv shows them (%.17g SI numbers, which scene_set
+ * with the values as runs.csv shows them (%.17g SI numbers, which hb_scene_set
  * reads back to the same doubles), and the results are bit-identical.
  *
  * Spec values: FROM:TO:N (N values, evenly spaced, both ends included),
  * FROM:TO:N:log (evenly spaced logarithms; FROM and TO of the same sign,
  * not 0), or V1,V2,... (each value as --set takes it; units allowed: "40 um").
  *
- * Files in DIR (see sweep_run):
+ * Files in DIR (see hb_sweep_run):
  *     sweep.preset     the base scene, then one "; sweep: --vary KEY=SPEC"
  *                      line per axis: it reproduces the sweep, and a DIR
  *                      holding another sweep is refused;
@@ -31,12 +31,12 @@
  *
  * Re-entrancy: a point uses only its own scene, sim and buffers; the
  * engine keeps no mutable static state.  GSL's process-wide error handler,
- * which sim_new() switches off, is the one global written: a sweep's
- * threads take a lock of the sweep around sim_new().
+ * which hb_sim_new() switches off, is the one global written: a sweep's
+ * threads take a lock of the sweep around hb_sim_new().
  * Nothing here prints or exits.
  */
-#ifndef HYBOUNCE_SWEEP_H
-#define HYBOUNCE_SWEEP_H
+#ifndef HB_SWEEP_H
+#define HB_SWEEP_H
 
 #include "export.h"
 HB_BEGIN_DECLS
@@ -45,14 +45,14 @@ HB_BEGIN_DECLS
 #include <stddef.h>
 #include "scene.h"
 
-struct sweep;
+struct hb_sweep;
 
 /* A sweep of the base scene (copied), without axes yet.  NULL: no memory. */
-struct sweep *
-sweep_new(const struct scene *base, char *msg, size_t n);
+struct hb_sweep *
+hb_sweep_new(const struct hb_scene *base, char *msg, size_t n);
 
 void
-sweep_free(struct sweep *sw);
+hb_sweep_free(struct hb_sweep *sw);
 
 /*
  * Adds an axis from "KEY=SPEC".  A key already varied is replaced (so a
@@ -61,23 +61,23 @@ sweep_free(struct sweep *sw);
  * the key and what is accepted.
  */
 int
-sweep_vary(struct sweep *sw, const char *arg, char *msg, size_t n);
+hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n);
 
 /*
  * Adds the axes of the "; sweep: --vary KEY=SPEC" lines of a preset's text
- * (`name` stands for the file in messages), as sweep_vary does for each:
+ * (`name` stands for the file in messages), as hb_sweep_vary does for each:
  * call it before the command line's --vary, which then replaces an axis
  * of the same key in place.  Returns HB_OK or HB_EINVAL.
  */
 int
-sweep_vary_from_preset(struct sweep *sw, const char *text, const char *name,
+hb_sweep_vary_from_preset(struct hb_sweep *sw, const char *text, const char *name,
                        char *msg, size_t n);
 
 int
-sweep_naxes(const struct sweep *sw);
+hb_sweep_naxes(const struct hb_sweep *sw);
 /* Points in the product (0 with no axis). */
 long
-sweep_npoints(const struct sweep *sw);
+hb_sweep_npoints(const struct hb_sweep *sw);
 
 /*
  * Checks that every point's scene is valid (combinations included, e.g.
@@ -85,26 +85,26 @@ sweep_npoints(const struct sweep *sw);
  * point, its values and the reason.
  */
 int
-sweep_check(const struct sweep *sw, char *msg, size_t n);
+hb_sweep_check(const struct hb_sweep *sw, char *msg, size_t n);
 
 /* The scene of point id.  HB_EINVAL for a bad id or an invalid scene. */
 int
-sweep_point_scene(const struct sweep *sw, long id, struct scene *out, char *msg, size_t n);
+hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n);
 
 /*
  * The text of sweep.preset (the spec): the base scene as a preset, then the
  * axis lines.  Returns the length needed, like snprintf.
  */
 size_t
-sweep_spec_format(const struct sweep *sw, char *buf, size_t n);
+hb_sweep_spec_format(const struct hb_sweep *sw, char *buf, size_t n);
 
 /* The header of runs.csv, without "\n", into buf (like snprintf). */
 size_t
-sweep_runs_header(const struct sweep *sw, char *buf, size_t n);
+hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n);
 
 /* The value of axis k at point id as runs.csv shows it (and --set takes it). */
 int
-sweep_point_value(const struct sweep *sw, long id, int k, char *buf, size_t n);
+hb_sweep_point_value(const struct hb_sweep *sw, long id, int k, char *buf, size_t n);
 
 /*
  * Runs point id and returns its journal block (malloc'd, *out; the caller
@@ -113,29 +113,29 @@ sweep_point_value(const struct sweep *sw, long id, int k, char *buf, size_t n);
  * failed point is a row with its message).  HB_ENOMEM or HB_EINVAL else.
  */
 int
-sweep_point_block(const struct sweep *sw, long id, char **out, int *failed,
+hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed,
                   char *msg, size_t n);
 
-struct sweep_progress {
+struct hb_sweep_progress {
 	long done;        /* points of this shard done (including resumed ones) */
 	long total;       /* points of this shard */
 	long resumed;     /* points found done in the journal at the start */
 	long failed;      /* points that failed numerically so far */
-	double elapsed;   /* s since sweep_run began */
+	double elapsed;   /* s since hb_sweep_run began */
 	double point_cpu; /* CPU time of the points computed in this run, s */
 };
 
-struct sweep_options {
+struct hb_sweep_options {
 	const char *dir;  /* the output folder (created if missing) */
 	int jobs;         /* worker threads, >= 1 */
 	long shard_k, shard_n; /* this is shard k of n (0 <= k < n); 0/1: all */
 	/* Called on the calling thread after each point (and once at the start). */
-	void (*progress)(void *ctx, const struct sweep_progress *p);
+	void (*progress)(void *ctx, const struct hb_sweep_progress *p);
 	void *ctx;
 	/*
 	 * May be NULL.  When *cancel becomes nonzero (e.g. from a SIGINT
 	 * handler) the workers finish their points, which are journaled, and
-	 * sweep_run returns HB_EDONE ("stopped with N of M points done").
+	 * hb_sweep_run returns HB_EDONE ("stopped with N of M points done").
 	 */
 	volatile sig_atomic_t *cancel;
 };
@@ -143,23 +143,23 @@ struct sweep_options {
 /*
  * Prepares DIR for the sweep: creates it, refuses a folder that holds a
  * different sweep or other files (HB_EINVAL), and writes sweep.preset
- * (atomically, unless it is already there).  sweep_run calls it; --emit
+ * (atomically, unless it is already there).  hb_sweep_run calls it; --emit
  * calls it alone.
  */
 int
-sweep_prepare_dir(const struct sweep *sw, const char *dir, char *msg, size_t n);
+hb_sweep_prepare_dir(const struct hb_sweep *sw, const char *dir, char *msg, size_t n);
 
 /*
  * Computes the points of the shard that its journal
  * (DIR/shard-K-of-N.journal, or DIR/points.journal for 0/1) does not hold
  * yet, on o->jobs threads, appending each to the journal as it completes.
- * A one-shard sweep then writes runs.csv and collisions.csv (sweep_merge)
+ * A one-shard sweep then writes runs.csv and collisions.csv (hb_sweep_merge)
  * and removes its journal.  Returns HB_OK (failed points included),
  * HB_EDONE (cancelled, see sweep_options), HB_EINVAL (bad DIR), HB_EIO or
  * HB_ENOMEM.
  */
 int
-sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size_t n);
+hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *msg, size_t n);
 
 /*
  * Merges the journals in DIR (all shards of one count N, or the one-shard
@@ -167,76 +167,76 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
  * HB_EINVAL with the missing points or shards when incomplete.
  */
 int
-sweep_merge(const char *dir, char *msg, size_t n);
+hb_sweep_merge(const char *dir, char *msg, size_t n);
 
 /*
  * Curves for the explorer: one parameter, one observable, computed by
  * background threads while the caller keeps drawing.
  *
- *     c = sweep_curve_start(&scene, "initial.v0", "-1mm/s:-1m/s:40:log",
- *                           CURVE_E, 0, 2, msg, sizeof msg);
- *     each frame: k = sweep_curve_poll(c, x, y, st, n);  // never blocks long
- *     sweep_curve_free(c);   // cancels: workers stop within one slice
+ *     c = hb_sweep_curve_start(&scene, "initial.v0", "-1mm/s:-1m/s:40:log",
+ *                           HB_CURVE_E, 0, 2, msg, sizeof msg);
+ *     each frame: k = hb_sweep_curve_poll(c, x, y, st, n);  // never blocks long
+ *     hb_sweep_curve_free(c);   // cancels: workers stop within one slice
  *
  * The points are those of the sweep with that one axis (the same scenes,
  * the same runs: bit-identical to --batch), taken in order.
  */
-enum sweep_observable {
-	CURVE_E = 0,      /* e of collision i */
-	CURVE_VI,         /* v_i of collision i, m/s */
-	CURVE_XCR,        /* x_c^r of collision i, m */
-	CURVE_COLLISIONS, /* number of completed collisions */
-	CURVE_TPC,        /* time of permanent contact, s (NAN: the run ends apart) */
-	CURVE_XCR_TOTAL,  /* sum of x_c^r over the collisions, m */
-	CURVE_COUNT
+enum hb_sweep_observable {
+	HB_CURVE_E = 0,      /* e of collision i */
+	HB_CURVE_VI,         /* v_i of collision i, m/s */
+	HB_CURVE_XCR,        /* x_c^r of collision i, m */
+	HB_CURVE_COLLISIONS, /* number of completed collisions */
+	HB_CURVE_TPC,        /* time of permanent contact, s (NAN: the run ends apart) */
+	HB_CURVE_XCR_TOTAL,  /* sum of x_c^r over the collisions, m */
+	HB_CURVE_COUNT
 };
 
-enum { CURVE_PENDING = 0, CURVE_DONE, CURVE_FAILED };
+enum { HB_CURVE_PENDING = 0, HB_CURVE_DONE, HB_CURVE_FAILED };
 
 /* Name of an observable ("e", "collisions", "t_pc" ...), NULL if out of range. */
 const char *
-sweep_observable_name(int obs);
+hb_sweep_observable_name(int obs);
 
 /*
  * The observable obs of a run (of collision i where it applies), as the
  * curve takes it once the run has ended: NAN when it does not exist.
  */
-struct sim;
+struct hb_sim;
 double
-sweep_observe(const struct sim *s, int obs, long i);
+hb_sweep_observe(const struct hb_sim *s, int obs, long i);
 
-struct sweep_curve;
+struct hb_sweep_curve;
 
 /*
  * Starts computing obs (of collision coll_i where it applies) over key=spec
  * on `jobs` threads.  NULL with HB_EINVAL's message in msg on a bad key,
  * spec or point.
  */
-struct sweep_curve *
-sweep_curve_start(const struct scene *base, const char *key, const char *spec, int obs,
+struct hb_sweep_curve *
+hb_sweep_curve_start(const struct hb_scene *base, const char *key, const char *spec, int obs,
                   long coll_i, int jobs, char *msg, size_t n);
 
 long
-sweep_curve_npoints(const struct sweep_curve *c);
+hb_sweep_curve_npoints(const struct hb_sweep_curve *c);
 
 /*
  * Copies up to n points: x (the parameter, SI), y (the observable; NAN when
- * it does not exist, e.g. no collision i) and state (CURVE_PENDING, _DONE,
+ * it does not exist, e.g. no collision i) and state (HB_CURVE_PENDING, _DONE,
  * _FAILED).  Returns the number of points finished so far.
  */
 long
-sweep_curve_poll(struct sweep_curve *c, double *x, double *y, int *state, long n);
+hb_sweep_curve_poll(struct hb_sweep_curve *c, double *x, double *y, int *state, long n);
 
 /*
  * Writes the finished points as CSV ("KEY,OBS" header, %.17g, empty for
  * NAN), to a temporary name renamed over path.  HB_EIO with a message.
  */
 int
-sweep_curve_write_csv(struct sweep_curve *c, const char *path, char *msg, size_t n);
+hb_sweep_curve_write_csv(struct hb_sweep_curve *c, const char *path, char *msg, size_t n);
 
 /* Stops the workers (each after at most one slice of its run) and frees. */
 void
-sweep_curve_free(struct sweep_curve *c);
+hb_sweep_curve_free(struct hb_sweep_curve *c);
 
 HB_END_DECLS
 

@@ -9,11 +9,11 @@
  * (m^-5/2, m^3).  Everything right of the first '/' is in the denominator,
  * as in "N s/m" or "kg/m^3".
  *
- * Output: units_format() picks the SI prefix that puts the mantissa in
+ * Output: hb_units_format() picks the SI prefix that puts the mantissa in
  * [1, 1000) for the expected dimension's base unit.
  */
-#ifndef HYBOUNCE_UNITS_H
-#define HYBOUNCE_UNITS_H
+#ifndef HB_UNITS_H
+#define HB_UNITS_H
 #include "export.h"
 HB_BEGIN_DECLS
 
@@ -25,7 +25,7 @@ HB_BEGIN_DECLS
  *     m exponent = m + mp * p + mn * n
  * (e.g. k of a Hertz-type term, N m^-p: kg = 1, m = 1, mp = -1, s = -2).
  */
-struct unit_dim {
+struct hb_unit_dim {
 	double kg, m, s;
 	double mp, mn;
 };
@@ -34,30 +34,30 @@ struct unit_dim {
  * An admissible range: lo .. hi, each bound excluded when its *_open is 1
  * ([0, inf] admits inf, [0, inf) does not); whole = 1 for whole numbers.
  */
-struct unit_range {
+struct hb_unit_range {
 	double lo, hi;
 	int lo_open, hi_open;
 	int whole;
 };
 
 /* Dimensions used by scenes (p and n terms zero). */
-extern const struct unit_dim UNIT_NONE;     /* dimensionless */
-extern const struct unit_dim UNIT_LENGTH;   /* m */
-extern const struct unit_dim UNIT_TIME;     /* s */
-extern const struct unit_dim UNIT_MASS;     /* kg */
-extern const struct unit_dim UNIT_VELOCITY; /* m/s */
-extern const struct unit_dim UNIT_ACCEL;    /* m/s^2 */
-extern const struct unit_dim UNIT_FORCE;    /* N */
-extern const struct unit_dim UNIT_PRESSURE; /* Pa */
-extern const struct unit_dim UNIT_DENSITY;  /* kg/m^3 */
-extern const struct unit_dim UNIT_ENERGY;   /* J */
-extern const struct unit_dim UNIT_IMPULSE;  /* N s */
+extern const struct hb_unit_dim hb_unit_none;     /* dimensionless */
+extern const struct hb_unit_dim hb_unit_length;   /* m */
+extern const struct hb_unit_dim hb_unit_time;     /* s */
+extern const struct hb_unit_dim hb_unit_mass;     /* kg */
+extern const struct hb_unit_dim hb_unit_velocity; /* m/s */
+extern const struct hb_unit_dim hb_unit_accel;    /* m/s^2 */
+extern const struct hb_unit_dim hb_unit_force;    /* N */
+extern const struct hb_unit_dim hb_unit_pressure; /* Pa */
+extern const struct hb_unit_dim hb_unit_density;  /* kg/m^3 */
+extern const struct hb_unit_dim hb_unit_energy;   /* J */
+extern const struct hb_unit_dim hb_unit_impulse;  /* N s */
 
 /*
  * Resolves a dimension that depends on p and n into plain exponents.
  */
-struct unit_dim
-units_resolve(struct unit_dim d, double p, double n);
+struct hb_unit_dim
+hb_units_resolve(struct hb_unit_dim d, double p, double n);
 
 /*
  * Parses "NUMBER [UNIT]" into an SI value, checking the unit against the
@@ -66,7 +66,7 @@ units_resolve(struct unit_dim d, double p, double n);
  * (e.g. GPa)" or "'abc' is not a number".
  */
 int
-units_parse(const char *text, struct unit_dim expect, double *value,
+hb_units_parse(const char *text, struct hb_unit_dim expect, double *value,
             char *msg, size_t n);
 
 /*
@@ -74,7 +74,7 @@ units_parse(const char *text, struct unit_dim expect, double *value,
  * "m/s", "Pa", "" for dimensionless) into buf.  Returns buf.
  */
 char *
-units_dim_str(struct unit_dim d, char *buf, size_t n);
+hb_units_dim_str(struct hb_unit_dim d, char *buf, size_t n);
 
 /*
  * Formats an SI value with `sig` significant digits and the SI prefix that
@@ -82,15 +82,15 @@ units_dim_str(struct unit_dim d, char *buf, size_t n);
  * (compound units get no prefix and an exponent instead).  Returns buf.
  */
 char *
-units_format(double value, struct unit_dim d, int sig, char *buf, size_t n);
+hb_units_format(double value, struct hb_unit_dim d, int sig, char *buf, size_t n);
 
 /*
- * The shortest units_format() text (6 digits or more) that units_parse() reads back to the
+ * The shortest hb_units_format() text (6 digits or more) that hb_units_parse() reads back to the
  * same double ("20 mm", "0.35"), else "%.17g UNIT": for text a user edits.
  * Output is ASCII: micro is written "u".  Returns buf.
  */
 char *
-units_format_exact(double value, struct unit_dim d, char *buf, size_t n);
+hb_units_format_exact(double value, struct hb_unit_dim d, char *buf, size_t n);
 
 /*
  * Picks, for a quantity of plain base unit `base` ("m", "N", "s", "J"),
@@ -100,11 +100,11 @@ units_format_exact(double value, struct unit_dim d, char *buf, size_t n);
  * prefix on its first factor ("mm/s").
  */
 double
-units_axis(double magnitude, const char *base, char *label, size_t n);
+hb_units_axis(double magnitude, const char *base, char *label, size_t n);
 
 /* 1 if v lies in r (NaN never does; whole numbers must be integers). */
 int
-units_in_range(double v, const struct unit_range *r);
+hb_units_in_range(double v, const struct hb_unit_range *r);
 
 /*
  * The one way a range is written: "(0, 1)", "[0, inf) m", "whole numbers
@@ -112,7 +112,7 @@ units_in_range(double v, const struct unit_range *r);
  * interval when dim is not NULL and not dimensionless.  Returns buf.
  */
 char *
-units_range_str(const struct unit_range *r, const struct unit_dim *dim, char *buf, size_t n);
+hb_units_range_str(const struct hb_unit_range *r, const struct hb_unit_dim *dim, char *buf, size_t n);
 HB_END_DECLS
 
 #endif

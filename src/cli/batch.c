@@ -57,7 +57,7 @@
 #define PROG "hybounce"
 
 /* N m^-3/2: the Hertz coefficient k_H = 4/3 E* sqrt(R_e). */
-static const struct unit_dim dim_kH = { 1, -0.5, -2, 0, 0 };
+static const struct hb_unit_dim dim_kH = { 1, -0.5, -2, 0, 0 };
 
 static void
 err(const char *msg)
@@ -67,14 +67,14 @@ err(const char *msg)
 
 /* A value with its unit, 6 significant digits, into buf. */
 static const char *
-fmt(double v, struct unit_dim d, char *buf, size_t n)
+fmt(double v, struct hb_unit_dim d, char *buf, size_t n)
 {
 	if (isinf(v))
 		snprintf(buf, n, "%s", v > 0 ? "inf" : "-inf");
 	else if (isnan(v))
 		snprintf(buf, n, "-");
 	else
-		units_format(v, d, 6, buf, n);
+		hb_units_format(v, d, 6, buf, n);
 	return buf;
 }
 
@@ -134,7 +134,7 @@ ends_with(const char *path, const char *suffix)
 static int
 check_export_path(const char *opt, const char *path)
 {
-	struct atomic_target t;
+	struct hb_atomic_target t;
 	char msg[1024];
 
 	if (path[0] == '\0') {
@@ -149,7 +149,7 @@ check_export_path(const char *opt, const char *path)
 		return 2;
 	}
 	msg[0] = '\0';
-	if (atomic_probe(path, &t, msg, sizeof msg) != HB_OK) {
+	if (hb_atomic_probe(path, &t, msg, sizeof msg) != HB_OK) {
 		size_t pl = strlen(path);
 		/* "PATH: reason": the path is already named */
 		const char *why = strncmp(msg, path, pl) == 0 && msg[pl] == ':' ? msg + pl + 2 : msg;
@@ -163,15 +163,15 @@ check_export_path(const char *opt, const char *path)
 
 /* "wrote PATH", and how when it was not a plain new file. */
 static void
-print_wrote(const char *path, const struct atomic_target *t)
+print_wrote(const char *path, const struct hb_atomic_target *t)
 {
 	fprintf(stderr, "wrote %s", path);
-	if (t->how == ATOMIC_IN_PLACE)
+	if (t->how == HB_ATOMIC_IN_PLACE)
 		fprintf(stderr, " (written in place)");
 	else if (t->via_link)
 		fprintf(stderr, " (through the link, to %s%s)", t->real,
-		        t->how == ATOMIC_REPLACE ? ", replacing it" : "");
-	else if (t->how == ATOMIC_REPLACE)
+		        t->how == HB_ATOMIC_REPLACE ? ", replacing it" : "");
+	else if (t->how == HB_ATOMIC_REPLACE)
 		fprintf(stderr, " (replaced the existing file)");
 	fprintf(stderr, "\n");
 }
@@ -180,10 +180,10 @@ print_wrote(const char *path, const struct atomic_target *t)
 /* Header block                                                        */
 
 static void
-print_law(FILE *out, const struct scene *sc)
+print_law(FILE *out, const struct hb_scene *sc)
 {
-	const struct law_type *law = sc->law;
-	double p = law_exponent_p(law, sc->par), nn = law_exponent_n(law, sc->par);
+	const struct hb_law_type *law = sc->law;
+	double p = hb_law_exponent_p(law, sc->par), nn = hb_law_exponent_n(law, sc->par);
 	char b[64];
 	int i;
 
@@ -191,36 +191,36 @@ print_law(FILE *out, const struct scene *sc)
 	fprintf(out, "            extension beyond x_c = 0 (rule R1): %s\n",
 	        sc->ext ? "adhesive" : "none (clamped)");
 	for (i = 0; i < law->n_params; i++) {
-		const struct law_param *pp = &law->params[i];
+		const struct hb_law_param *pp = &law->params[i];
 
 		fprintf(out, "            %-8s = %s%s\n", pp->name,
-		        fmt(sc->par[i], units_resolve(pp->dim, p, nn), b, sizeof b),
-		        (pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived
+		        fmt(sc->par[i], hb_units_resolve(pp->dim, p, nn), b, sizeof b),
+		        (pp->flags & HB_LAW_PARAM_STIFFNESS) && sc->d.k_derived
 		            ? "  (derived from k_H)" : "");
 	}
 }
 
 static void
-print_body(FILE *out, int k, const struct scene_body *bd)
+print_body(FILE *out, int k, const struct hb_scene_body *bd)
 {
 	char e[64], r[64], rho[64], m[64];
 
 	fprintf(out, "body %d      %s:", k + 1, bd->name[0] ? bd->name : "(unnamed)");
 	if (bd->has_material)
-		fprintf(out, " E = %s, nu = %g,", fmt(bd->E, UNIT_PRESSURE, e, sizeof e), bd->nu);
+		fprintf(out, " E = %s, nu = %g,", fmt(bd->E, hb_unit_pressure, e, sizeof e), bd->nu);
 	if (bd->rho > 0)
-		fprintf(out, " rho = %s,", fmt(bd->rho, UNIT_DENSITY, rho, sizeof rho));
-	fprintf(out, " R = %s%s, m = %s%s\n", fmt(bd->R, UNIT_LENGTH, r, sizeof r),
+		fprintf(out, " rho = %s,", fmt(bd->rho, hb_unit_density, rho, sizeof rho));
+	fprintf(out, " R = %s%s, m = %s%s\n", fmt(bd->R, hb_unit_length, r, sizeof r),
 	        isinf(bd->R) ? " (flat)" : "",
-	        fmt(bd->mass, UNIT_MASS, m, sizeof m),
+	        fmt(bd->mass, hb_unit_mass, m, sizeof m),
 	        isinf(bd->mass) ? " (fixed obstacle)" : bd->mass_given ? " (given)" : "");
 }
 
 static void
 print_header(FILE *out, const char *preset, const char *path,
-             const struct scene *sc, const struct sim_stats *st)
+             const struct hb_scene *sc, const struct hb_sim_stats *st)
 {
-	const struct scene_derived *d = &sc->d;
+	const struct hb_scene_derived *d = &sc->d;
 	char a[64], b[64], c[64], e[64];
 	int i, k;
 
@@ -230,55 +230,55 @@ print_header(FILE *out, const char *preset, const char *path,
 	if (sc->description[0])
 		print_wrapped(out, "            ", sc->description);
 	print_law(out, sc);
-	if (d->system == SCENE_REDUCED)
+	if (d->system == HB_SCENE_REDUCED)
 		fprintf(out, "system      reduced H_r: body 2 is a fixed obstacle\n");
 	else
 		fprintf(out, "system      full H_f: two finite masses on a common axis\n");
 	for (k = 0; k < 2; k++)
 		print_body(out, k, &sc->body[k]);
 	fprintf(out, "loads       g = %s, F1 = %s, F2 = %s",
-	        fmt(sc->loads.g, UNIT_ACCEL, a, sizeof a),
-	        fmt(sc->loads.F1, UNIT_FORCE, b, sizeof b),
-	        fmt(sc->loads.F2, UNIT_FORCE, c, sizeof c));
+	        fmt(sc->loads.g, hb_unit_accel, a, sizeof a),
+	        fmt(sc->loads.F1, hb_unit_force, b, sizeof b),
+	        fmt(sc->loads.F2, hb_unit_force, c, sizeof c));
 	if (sc->loads.ramp)
 		fprintf(out, ", ramp: F_e0 = %s, T_s = %s, T_e = %s",
-		        fmt(sc->loads.Fe0, UNIT_FORCE, a, sizeof a),
-		        fmt(sc->loads.Ts, UNIT_TIME, b, sizeof b),
-		        fmt(sc->loads.Te, UNIT_TIME, c, sizeof c));
+		        fmt(sc->loads.Fe0, hb_unit_force, a, sizeof a),
+		        fmt(sc->loads.Ts, hb_unit_time, b, sizeof b),
+		        fmt(sc->loads.Te, hb_unit_time, c, sizeof c));
 	fprintf(out, "\n");
 	fprintf(out, "initial     x0 = %s, v0 = %s",
-	        fmt(sc->init.x0, UNIT_LENGTH, a, sizeof a),
-	        fmt(sc->init.v0, UNIT_VELOCITY, b, sizeof b));
-	if (d->system == SCENE_FULL)
+	        fmt(sc->init.x0, hb_unit_length, a, sizeof a),
+	        fmt(sc->init.v0, hb_unit_velocity, b, sizeof b));
+	if (d->system == HB_SCENE_FULL)
 		fprintf(out, ", x_m0 = %s, v_m0 = %s",
-		        fmt(sc->init.xm0, UNIT_LENGTH, a, sizeof a),
-		        fmt(sc->init.vm0, UNIT_VELOCITY, b, sizeof b));
+		        fmt(sc->init.xm0, hb_unit_length, a, sizeof a),
+		        fmt(sc->init.vm0, hb_unit_velocity, b, sizeof b));
 	fprintf(out, "\n");
 	fprintf(out, "derived     E* = %s, R_e = %s, m = %s",
-	        fmt(d->Estar, UNIT_PRESSURE, a, sizeof a),
-	        fmt(d->Re, UNIT_LENGTH, b, sizeof b),
-	        fmt(d->m, UNIT_MASS, c, sizeof c));
-	if (d->system == SCENE_FULL)
+	        fmt(d->Estar, hb_unit_pressure, a, sizeof a),
+	        fmt(d->Re, hb_unit_length, b, sizeof b),
+	        fmt(d->m, hb_unit_mass, c, sizeof c));
+	if (d->system == HB_SCENE_FULL)
 		fprintf(out, "\n            m1 = %s, m2 = %s, eta = %.6g",
-		        fmt(d->m1, UNIT_MASS, a, sizeof a),
-		        fmt(d->m2, UNIT_MASS, b, sizeof b), d->eta);
+		        fmt(d->m1, hb_unit_mass, a, sizeof a),
+		        fmt(d->m2, hb_unit_mass, b, sizeof b), d->eta);
 	fprintf(out, "\n            k_H = %s", fmt(d->kH, dim_kH, e, sizeof e));
 	for (i = 0; i < sc->law->n_params; i++) {
-		const struct law_param *pp = &sc->law->params[i];
+		const struct hb_law_param *pp = &sc->law->params[i];
 
-		if (pp->flags & LAW_PARAM_STIFFNESS)
+		if (pp->flags & HB_LAW_PARAM_STIFFNESS)
 			fprintf(out, ", %s = %s%s", pp->name,
-			        fmt(sc->par[i], units_resolve(pp->dim,
-			            law_exponent_p(sc->law, sc->par),
-			            law_exponent_n(sc->law, sc->par)), a, sizeof a),
+			        fmt(sc->par[i], hb_units_resolve(pp->dim,
+			            hb_law_exponent_p(sc->law, sc->par),
+			            hb_law_exponent_n(sc->law, sc->par)), a, sizeof a),
 			        d->k_derived ? " (from the materials, Hertz)" : " (typed)");
 	}
 	fprintf(out, "\n");
 	fprintf(out, "run         T = %s, J = %ld, stepper %s, rtol = %.3g, atol = %.3g",
-	        fmt(sc->run.T, UNIT_TIME, a, sizeof a), sc->run.J,
-	        scene_stepper_name(sc->run.stepper), sc->run.rtol, sc->run.atol);
+	        fmt(sc->run.T, hb_unit_time, a, sizeof a), sc->run.J,
+	        hb_scene_stepper_name(sc->run.stepper), sc->run.rtol, sc->run.atol);
 	if (sc->run.h_max > 0)
-		fprintf(out, ", h_max = %s", fmt(sc->run.h_max, UNIT_TIME, b, sizeof b));
+		fprintf(out, ", h_max = %s", fmt(sc->run.h_max, hb_unit_time, b, sizeof b));
 	fprintf(out, "\n");
 	if (st != NULL && st->ncomp > 0) {
 		char line[512];
@@ -303,7 +303,7 @@ enum col_kind { COL_INDEX, COL_VALUE, COL_RATIO };
 struct col {
 	const char *name;
 	const char *base;  /* "s", "m", "m/s", "N", "J"; NULL: dimensionless */
-	size_t off;        /* offset of the double in struct collision */
+	size_t off;        /* offset of the double in struct hb_collision */
 	int kind;
 	/* chosen from the data: */
 	double scale;
@@ -319,9 +319,9 @@ cols_from_table(struct col *cols)
 {
 	int nc = 0;
 
-	for (int k = 0; k < collision_ncolumns && nc < NCOLS_MAX; k++) {
-		const struct collision_column *cc = &collision_columns[k];
-		if (!(cc->shown & COLUMN_BATCH))
+	for (int k = 0; k < hb_collision_ncolumns && nc < NCOLS_MAX; k++) {
+		const struct hb_collision_column *cc = &hb_collision_columns[k];
+		if (!(cc->shown & HB_COLUMN_BATCH))
 			continue;
 		memset(&cols[nc], 0, sizeof cols[nc]);
 		cols[nc].name = cc->label;
@@ -335,7 +335,7 @@ cols_from_table(struct col *cols)
 }
 
 static double
-col_get(const struct col *c, const struct collision *k)
+col_get(const struct col *c, const struct hb_collision *k)
 {
 	return *(const double *)((const char *)k + c->off);
 }
@@ -352,7 +352,7 @@ col_choose(struct col *c, double mag)
 	if (c->base != NULL) {
 		char lab[16];
 
-		c->scale = units_axis(mag > 0 ? mag : 1, c->base, lab, sizeof lab);
+		c->scale = hb_units_axis(mag > 0 ? mag : 1, c->base, lab, sizeof lab);
 		snprintf(c->unit, sizeof c->unit, "%s", lab); /* ASCII: "um" */
 		if (!(c->scale > 0) || !isfinite(c->scale)) {
 			c->scale = 1;
@@ -378,7 +378,7 @@ col_choose(struct col *c, double mag)
 }
 
 static void
-col_cell(const struct col *c, const struct collision *k, char *buf, size_t n)
+col_cell(const struct col *c, const struct hb_collision *k, char *buf, size_t n)
 {
 	double v;
 
@@ -388,7 +388,7 @@ col_cell(const struct col *c, const struct collision *k, char *buf, size_t n)
 	}
 	v = col_get(c, k);
 	/* e is defined at the separation: not for the contact in progress. */
-	if (!k->complete && c->off == offsetof(struct collision, e))
+	if (!k->complete && c->off == offsetof(struct hb_collision, e))
 		v = NAN;
 	if (isnan(v))
 		snprintf(buf, n, "-");
@@ -412,10 +412,10 @@ col_head(const struct col *c, char *buf, size_t n)
  * contact in progress (live may be NULL).
  */
 static void
-print_table(FILE *out, const struct sim *s, const struct collision *live)
+print_table(FILE *out, const struct hb_sim *s, const struct hb_collision *live)
 {
 	struct col cols[NCOLS_MAX];
-	size_t nc = sim_ncollisions(s), r;
+	size_t nc = hb_sim_ncollisions(s), r;
 	char buf[64];
 	int c, w;
 	const int ncols = cols_from_table(cols);
@@ -425,7 +425,7 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 
 		/* Units from the completed collisions; the live row only when alone. */
 		for (r = 0; r <= nc; r++) {
-			const struct collision *k = r < nc ? sim_collision(s, r) : live;
+			const struct hb_collision *k = r < nc ? hb_sim_collision(s, r) : live;
 			double v;
 
 			if (k == NULL || cols[c].kind == COL_INDEX || (r == nc && nc > 0))
@@ -439,7 +439,7 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 		col_head(&cols[c], buf, sizeof buf);
 		w = (int)strlen(buf);
 		for (r = 0; r <= nc; r++) {
-			const struct collision *k = r < nc ? sim_collision(s, r) : live;
+			const struct hb_collision *k = r < nc ? hb_sim_collision(s, r) : live;
 
 			if (k == NULL)
 				continue;
@@ -450,9 +450,9 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 		cols[c].width = w;
 	}
 
-	if (sim_collisions_total(s) > (long)nc)
+	if (hb_sim_collisions_total(s) > (long)nc)
 		fprintf(out, "collisions (%ld completed; %zu kept, the older ones thinned)\n",
-		        sim_collisions_total(s), nc);
+		        hb_sim_collisions_total(s), nc);
 	else
 		fprintf(out, "collisions (%zu completed)\n", nc);
 	for (c = 0; c < ncols; c++) {
@@ -461,7 +461,7 @@ print_table(FILE *out, const struct sim *s, const struct collision *live)
 	}
 	fprintf(out, "\n");
 	for (r = 0; r < nc; r++) {
-		const struct collision *k = sim_collision(s, r);
+		const struct hb_collision *k = hb_sim_collision(s, r);
 
 		for (c = 0; c < ncols; c++) {
 			col_cell(&cols[c], k, buf, sizeof buf);
@@ -487,17 +487,17 @@ static const char *
 how_str(int how)
 {
 	switch (how) {
-	case LOCATE_START: return "start";
-	case LOCATE_CLOSED_FORM: return "closed-form";
-	case LOCATE_BRENT: return "brent";
+	case HB_LOCATE_START: return "start";
+	case HB_LOCATE_CLOSED_FORM: return "closed-form";
+	case HB_LOCATE_BRENT: return "brent";
 	default: return "?";
 	}
 }
 
 static void
-print_jumps(FILE *out, const struct arc *a)
+print_jumps(FILE *out, const struct hb_arc *a)
 {
-	size_t k, n = arc_njumps(a);
+	size_t k, n = hb_arc_njumps(a);
 
 	fprintf(out, "jumps (%zu): t [s], j before the jump, the part of C that was left, "
 	        "how it was located,\n"
@@ -507,7 +507,7 @@ print_jumps(FILE *out, const struct arc *a)
 	        "k", "t [s]", "j", "left", "how", "iter", "width [s]",
 	        "ind (C)", "ind (D)");
 	for (k = 0; k < n; k++) {
-		const struct arc_jump *jp = arc_jump_at(a, k);
+		const struct hb_arc_jump *jp = hb_arc_jump_at(a, k);
 
 		fprintf(out, "%6zu  %22.17g  %6ld  %-28s  %-11s  %5d  %10.3e  %11.3e  %11.3e\n",
 		        k, jp->t, jp->j, jp->left ? jp->left : "?", how_str(jp->how),
@@ -517,12 +517,12 @@ print_jumps(FILE *out, const struct arc *a)
 }
 
 static void
-print_summary(FILE *out, const struct sim *s, int sig)
+print_summary(FILE *out, const struct hb_sim *s, int sig)
 {
-	const struct scene *sc = sim_scene(s);
-	const struct arc *a = sim_arc(s);
-	const struct arc_sample *last = arc_last(a);
-	const struct sim_stats *st = sim_stats(s);
+	const struct hb_scene *sc = hb_sim_scene(s);
+	const struct hb_arc *a = hb_sim_arc(s);
+	const struct hb_arc_sample *last = hb_arc_last(a);
+	const struct hb_sim_stats *st = hb_sim_stats(s);
 	char b1[64], b2[64], b3[64], b4[64];
 	int i;
 
@@ -530,28 +530,28 @@ print_summary(FILE *out, const struct sim *s, int sig)
 	if (sig != 0)
 		fprintf(out, "  ended       interrupted by %s at t = %s, j = %ld (run.T = %s)\n",
 		        sig == SIGINT ? "SIGINT" : "SIGTERM",
-		        fmt(last != NULL ? last->t : 0, UNIT_TIME, b1, sizeof b1),
-		        last != NULL ? last->j : 0L, fmt(sc->run.T, UNIT_TIME, b2, sizeof b2));
+		        fmt(last != NULL ? last->t : 0, hb_unit_time, b1, sizeof b1),
+		        last != NULL ? last->j : 0L, fmt(sc->run.T, hb_unit_time, b2, sizeof b2));
 	else
-		fprintf(out, "  ended       %s\n", sim_end_str(s));
+		fprintf(out, "  ended       %s\n", hb_sim_end_str(s));
 	if (last != NULL) {
 		fprintf(out, "  end state   t = %s, j = %ld, q_c = %d, x = %s, v = %s, x_c = %s",
-		        fmt(last->t, UNIT_TIME, b1, sizeof b1), last->j, last->q,
-		        fmt(last->x, UNIT_LENGTH, b2, sizeof b2),
-		        fmt(last->v, UNIT_VELOCITY, b3, sizeof b3),
-		        fmt(last->xc, UNIT_LENGTH, b4, sizeof b4));
-		for (i = 0; i < sc->law->n_z && i < LAW_MAX_Z; i++)
+		        fmt(last->t, hb_unit_time, b1, sizeof b1), last->j, last->q,
+		        fmt(last->x, hb_unit_length, b2, sizeof b2),
+		        fmt(last->v, hb_unit_velocity, b3, sizeof b3),
+		        fmt(last->xc, hb_unit_length, b4, sizeof b4));
+		for (i = 0; i < sc->law->n_z && i < HB_LAW_MAX_Z; i++)
 			fprintf(out, ", z_c%d = %.6g", i + 1, last->z[i]);
 		fprintf(out, "\n");
 	}
-	if (sim_collisions_total(s) > (long)sim_ncollisions(s))
+	if (hb_sim_collisions_total(s) > (long)hb_sim_ncollisions(s))
 		fprintf(out, "  collisions  %ld (%zu kept in the table and CSV: the older ones are "
-		        "thinned, each row keeps its index i)\n", sim_collisions_total(s),
-		        sim_ncollisions(s));
+		        "thinned, each row keeps its index i)\n", hb_sim_collisions_total(s),
+		        hb_sim_ncollisions(s));
 	else
-		fprintf(out, "  collisions  %zu\n", sim_ncollisions(s));
-	fprintf(out, "  run time    %s CPU", fmt(st->seconds, UNIT_TIME, b1, sizeof b1));
-	fprintf(out, ", %s wall\n", fmt(st->wall, UNIT_TIME, b1, sizeof b1));
+		fprintf(out, "  collisions  %zu\n", hb_sim_ncollisions(s));
+	fprintf(out, "  run time    %s CPU", fmt(st->seconds, hb_unit_time, b1, sizeof b1));
+	fprintf(out, ", %s wall\n", fmt(st->wall, hb_unit_time, b1, sizeof b1));
 	fprintf(out, "  steps       %ld accepted, %ld rejected\n", st->steps, st->rejected);
 	fprintf(out, "  evaluations %ld right-hand side, %ld Jacobian\n", st->rhs, st->jac);
 	fprintf(out, "  events      %ld jumps, %ld kinks, %ld located by root finding, "
@@ -560,7 +560,7 @@ print_summary(FILE *out, const struct sim *s, int sig)
 	if (st->stiff) {
 		char tb[32];
 
-		fmt(st->stiff_t, UNIT_TIME, tb, sizeof tb);
+		fmt(st->stiff_t, hb_unit_time, tb, sizeof tb);
 		if (st->switched)
 			fprintf(out, "  stiffness   the contact flow is stiff from t = %s (h |lambda| up to "
 			        "%.3g): run.stepper = auto went over to bsimp\n", tb, st->stiff_hrho);
@@ -568,18 +568,18 @@ print_summary(FILE *out, const struct sim *s, int sig)
 			fprintf(out, "  stiffness   the contact flow is stiff from t = %s: %s is held back by "
 			        "stability (h |lambda| up to %.3g);\n"
 			        "              --set run.stepper=auto (or bsimp) takes far fewer steps\n",
-			        tb, scene_stepper_name(sc->run.stepper), st->stiff_hrho);
+			        tb, hb_scene_stepper_name(sc->run.stepper), st->stiff_hrho);
 	}
 	if (st->dips > 0)
 		fprintf(out, "              %ld events found inside a step whose ends were both in C\n",
 		        st->dips);
 	fprintf(out, "  arc         %zu samples, %zu flow intervals",
-	        arc_len(a), arc_nintervals(a));
-	if (arc_thinned(a) > 0)
+	        hb_arc_len(a), hb_arc_nintervals(a));
+	if (hb_arc_thinned(a) > 0)
 		fprintf(out, ", thinned %d times (past run.max_samples = %ld)",
-		        arc_thinned(a), sc->run.max_samples);
-	if (arc_skipped(a) > 0)
-		fprintf(out, ", %ld flow intervals thinned out with their jumps", arc_skipped(a));
+		        hb_arc_thinned(a), sc->run.max_samples);
+	if (hb_arc_skipped(a) > 0)
+		fprintf(out, ", %ld flow intervals thinned out with their jumps", hb_arc_skipped(a));
 	else
 		fprintf(out, ", not thinned");
 	fprintf(out, "\n");
@@ -618,9 +618,9 @@ watch_signal(int sig, struct sigaction *old)
  * rewritten in place four times a second and erased at the end.
  */
 static int
-run_watched(struct sim *s, int *sig)
+run_watched(struct hb_sim *s, int *sig)
 {
-	const double T = sim_scene(s)->run.T;
+	const double T = hb_sim_scene(s)->run.T;
 	const int tty = isatty(STDERR_FILENO);
 	double start = clock_seconds(CLOCK_MONOTONIC), shown = 0;
 	int rc = HB_OK;
@@ -629,20 +629,20 @@ run_watched(struct sim *s, int *sig)
 	while (got_signal == 0) {
 		double now;
 
-		rc = sim_advance(s, 0, 0.1);
-		if (rc != HB_OK || sim_end(s) != SIM_RUNNING)
+		rc = hb_sim_advance(s, 0, 0.1);
+		if (rc != HB_OK || hb_sim_end(s) != HB_SIM_RUNNING)
 			break;
 		now = clock_seconds(CLOCK_MONOTONIC);
 		if (tty && now - start > 1.0 && now - shown >= 0.25) {
-			const struct arc_sample *p = arc_last(sim_arc(s));
+			const struct hb_arc_sample *p = hb_arc_last(hb_sim_arc(s));
 			char tb[32], Tb[32];
 
-			fmt(p != NULL ? p->t : 0, UNIT_TIME, tb, sizeof tb);
-			fmt(T, UNIT_TIME, Tb, sizeof Tb);
+			fmt(p != NULL ? p->t : 0, hb_unit_time, tb, sizeof tb);
+			fmt(T, hb_unit_time, Tb, sizeof Tb);
 			fprintf(stderr, "\r" PROG ": t = %s of %s (%.0f%%), j = %ld, %zu collisions, "
 			        "%.0f s; Ctrl-C stops and writes\033[K", tb, Tb,
 			        p != NULL && T > 0 ? 100 * p->t / T : 0.0,
-			        p != NULL ? p->j : 0L, sim_ncollisions(s), now - start);
+			        p != NULL ? p->j : 0L, hb_sim_ncollisions(s), now - start);
 			shown = now;
 		}
 	}
@@ -657,10 +657,10 @@ run_watched(struct sim *s, int *sig)
 int
 batch_run(const struct batch_options *o)
 {
-	struct scene sc;
+	struct hb_scene sc;
 	char path[1024], msg[1024];
-	struct collision live;
-	struct sim *s;
+	struct hb_collision live;
+	struct hb_sim *s;
 	struct sigaction old_term, old_int;
 	int status = 0, have_live, rc, sig = 0;
 	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
@@ -671,13 +671,13 @@ batch_run(const struct batch_options *o)
 	FILE *out = trace_out || coll_out ? stderr : stdout;
 
 	msg[0] = '\0';
-	if (preset_resolve(o->preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
+	if (hb_preset_resolve(o->preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": preset '%s': %s\n", o->preset,
 		        msg[0] ? msg : "not found");
 		return 2;
 	}
 	msg[0] = '\0';
-	if (preset_open(path, o->sets, o->nsets, &sc, msg, sizeof msg) != HB_OK) {
+	if (hb_preset_open(path, o->sets, o->nsets, &sc, msg, sizeof msg) != HB_OK) {
 		err(msg[0] ? msg : path);
 		return 2;
 	}
@@ -698,7 +698,7 @@ batch_run(const struct batch_options *o)
 	}
 	msg[0] = '\0';
 	if ((trace_file != NULL || coll_file != NULL) &&
-	    csv_export_check(trace_file, coll_file, path, msg, sizeof msg) != HB_OK) {
+	    hb_csv_export_check(trace_file, coll_file, path, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": export: %s\n", msg);
 		return 2;
 	}
@@ -712,7 +712,7 @@ batch_run(const struct batch_options *o)
 	watch_signal(SIGTERM, &old_term);
 	watch_signal(SIGINT, &old_int);
 	msg[0] = '\0';
-	s = sim_new(&sc, msg, sizeof msg);
+	s = hb_sim_new(&sc, msg, sizeof msg);
 	if (s == NULL) {
 		fprintf(stderr, PROG ": %s: %s\n", path, msg[0] ? msg : "cannot start the run");
 		sigaction(SIGTERM, &old_term, NULL);
@@ -720,26 +720,26 @@ batch_run(const struct batch_options *o)
 		return 2;
 	}
 	rc = run_watched(s, &sig);
-	if (sim_end(s) == SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE))
+	if (hb_sim_end(s) == HB_SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE))
 		status = 1;
 
 	/* The header comes after the run: the tolerance scales are set per contact. */
-	have_live = sim_contact_live(s, &live);
+	have_live = hb_sim_contact_live(s, &live);
 	if (!o->quiet) {
-		print_header(out, o->preset, path, sim_scene(s), sim_stats(s));
+		print_header(out, o->preset, path, hb_sim_scene(s), hb_sim_stats(s));
 		print_table(out, s, have_live ? &live : NULL);
 	}
 	if (o->jumps)
-		print_jumps(out, sim_arc(s));
+		print_jumps(out, hb_sim_arc(s));
 	print_summary(out, s, sig);
 
 	if (o->check) {
 		msg[0] = '\0';
-		if (check_solution_pair(sim_scene(s), sim_arc(s), msg, sizeof msg) == HB_OK) {
+		if (hb_check_solution_pair(hb_sim_scene(s), hb_sim_arc(s), msg, sizeof msg) == HB_OK) {
 			fprintf(out, "  check       solution pair: ok (%zu samples, %zu jumps: "
 			         "ordered domain, flow samples in C, pre-jump samples in D, "
 			         "post-jump = g(pre-jump))\n",
-			         arc_len(sim_arc(s)), arc_njumps(sim_arc(s)));
+			         hb_arc_len(hb_sim_arc(s)), hb_arc_njumps(hb_sim_arc(s)));
 		} else {
 			fprintf(out, "  check       solution pair: FAILED: %s\n", msg);
 			if (out != stderr)
@@ -753,15 +753,15 @@ batch_run(const struct batch_options *o)
 		 * The physics (check.h): a failure is a warning, and exit 1 with
 		 * --check; a pass is said only when --check asks.
 		 */
-		struct check_physics ph;
+		struct hb_check_physics ph;
 
 		msg[0] = '\0';
-		if (check_physics(sim_scene(s), sim_arc(s), &ph, msg, sizeof msg) == HB_OK) {
+		if (hb_check_physics(hb_sim_scene(s), hb_sim_arc(s), &ph, msg, sizeof msg) == HB_OK) {
 			if (o->check)
 				fprintf(out, "  check       physics: ok (work-energy residual %.2g of the "
 				        "energy scale, %.2g x the tolerance %.2g; %zu contacts: W and e "
 				        "within what %s allows)\n", ph.resid, ph.resid / ph.tol, ph.tol,
-				        ph.ncontacts, sim_scene(s)->law->name);
+				        ph.ncontacts, hb_sim_scene(s)->law->name);
 		} else {
 			fprintf(out, "  %-11s physics: %s: %s\n", o->check ? "check" : "warning",
 			        o->check ? "FAILED" : "the run breaks what it must obey", msg);
@@ -792,21 +792,21 @@ batch_run(const struct batch_options *o)
 	if (sig != 0)
 		fprintf(stderr, PROG ": interrupted by %s: what was computed is reported "
 		        "and written\n", sig == SIGINT ? "SIGINT" : "SIGTERM");
-	else if (status == 1 && sim_end(s) == SIM_END_FAIL)
+	else if (status == 1 && hb_sim_end(s) == HB_SIM_END_FAIL)
 		fprintf(stderr, PROG ": the run failed: %s\n",
-		        sim_errmsg(s)[0] ? sim_errmsg(s) : status_str(rc));
+		        hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_status_str(rc));
 	else if (rc != HB_OK && rc != HB_EDONE)
-		fprintf(stderr, PROG ": the run stopped: %s\n", status_str(rc));
+		fprintf(stderr, PROG ": the run stopped: %s\n", hb_status_str(rc));
 
 	/*
 	 * The files first, then stdout: a reader that stops early (| head)
 	 * ends the process by SIGPIPE, and the files are written by then.
 	 */
 	if (trace_file != NULL || coll_file != NULL) {
-		struct csv_export_report rep;
+		struct hb_csv_export_report rep;
 
 		msg[0] = '\0';
-		if (csv_export_files(s, trace_file, coll_file, path, &rep, msg,
+		if (hb_csv_export_files(s, trace_file, coll_file, path, &rep, msg,
 		                     sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": export failed: %s\n", msg);
 			status = 2;
@@ -821,8 +821,8 @@ batch_run(const struct batch_options *o)
 	}
 	if (trace_out || coll_out) {
 		msg[0] = '\0';
-		rc = trace_out ? csv_stream_arc(stdout, s, msg, sizeof msg)
-		               : csv_stream_collisions(stdout, s, msg, sizeof msg);
+		rc = trace_out ? hb_csv_stream_arc(stdout, s, msg, sizeof msg)
+		               : hb_csv_stream_collisions(stdout, s, msg, sizeof msg);
 		/*
 		 * EPIPE (SIGPIPE ignored): the reader has all it wanted; stop
 		 * quietly, like a killed writer, with the run's status.
@@ -833,7 +833,7 @@ batch_run(const struct batch_options *o)
 		}
 		clearerr(stdout);   /* said here (or quiet on EPIPE): not again in main */
 	}
-	sim_free(s);
+	hb_sim_free(s);
 	sigaction(SIGTERM, &old_term, NULL);
 	sigaction(SIGINT, &old_int, NULL);
 	if (sig == 0)
@@ -865,15 +865,15 @@ batch_flush_stdout(void)
 int
 batch_list_presets(void)
 {
-	struct preset_info *pi = NULL;
-	int n = preset_list(&pi), i, w = 0;
+	struct hb_preset_info *pi = NULL;
+	int n = hb_preset_list(&pi), i, w = 0;
 
 	if (n < 0) {
 		err("out of memory listing the presets");
 		return 1;
 	}
 	if (n == 0) {
-		const char *const *d = preset_dirs();
+		const char *const *d = hb_preset_dirs();
 
 		fprintf(stderr, PROG ": no presets found; looked in:");
 		for (; d != NULL && *d != NULL; d++)
@@ -895,10 +895,10 @@ batch_list_presets(void)
 int
 batch_list_laws(void)
 {
-	const struct law_type *const *l;
+	const struct hb_law_type *const *l;
 
-	for (l = law_list(); *l != NULL; l++) {
-		const struct law_type *law = *l;
+	for (l = hb_law_list(); *l != NULL; l++) {
+		const struct hb_law_type *law = *l;
 		int i;
 
 		printf("%s  %s\n", law->name, law->title);
@@ -906,15 +906,15 @@ batch_list_laws(void)
 		printf("    internal states n_z = %d; parameters (units for the default "
 		       "exponents):\n", law->n_z);
 		for (i = 0; i < law->n_params; i++) {
-			const struct law_param *pp = &law->params[i];
-			struct scene_keyinfo ki; /* the typed row: unit, range, default */
+			const struct hb_law_param *pp = &law->params[i];
+			struct hb_scene_keyinfo ki; /* the typed row: unit, range, default */
 			char dv[64];
 
-			scene_law_param_info(law, i, &ki);
+			hb_scene_law_param_info(law, i, &ki);
 			fmt(ki.number, ki.dim, dv, sizeof dv);
 			printf("      %-8s %-14s range %-16s default %s%s\n",
 			       pp->name, ki.unit[0] ? ki.unit : "(1)", ki.range, dv,
-			       (pp->flags & LAW_PARAM_STIFFNESS) && law->k_hertz != NULL
+			       (pp->flags & HB_LAW_PARAM_STIFFNESS) && law->k_hertz != NULL
 			           ? " (derived from k_H when both bodies have materials)" : "");
 			if (ki.help[0])
 				printf("      %-8s %s\n", "", ki.help);

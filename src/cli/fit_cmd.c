@@ -95,7 +95,7 @@ bad(const char *fmt, ...)
 
 /* Applies "KEY=VALUE" to sc; 0 or exit status 2 with the message printed. */
 static int
-apply_set(struct scene *sc, const char *arg)
+apply_set(struct hb_scene *sc, const char *arg)
 {
 	const char *eq = strchr(arg, '=');
 	char key[64], msg[512];
@@ -108,7 +108,7 @@ apply_set(struct scene *sc, const char *arg)
 	while (kl > 0 && (key[kl - 1] == ' ' || key[kl - 1] == '\t'))
 		key[--kl] = '\0';
 	msg[0] = '\0';
-	if (scene_set(sc, key, eq + 1, msg, sizeof msg) != HB_OK)
+	if (hb_scene_set(sc, key, eq + 1, msg, sizeof msg) != HB_OK)
 		return bad("--set %s: %s", arg, msg);
 	return 0;
 }
@@ -203,7 +203,7 @@ progress(void *ctx, int iter, double cost, long runs)
 
 /* Shows the onsets found in a recording and the restitution they imply. */
 static void
-print_onsets(const char *path, const struct onset_result *on)
+print_onsets(const char *path, const struct hb_onset_result *on)
 {
 	printf("onsets      %zu in %s (%.0f Hz, %.3f s, noise rms %.2g of full scale)\n",
 	    on->n, path, on->samplerate, on->duration, on->noise);
@@ -228,31 +228,31 @@ print_onsets(const char *path, const struct onset_result *on)
 static void
 fill_residuals(FILE *f, const void *ctx)
 {
-	const struct fit_result *r = ctx;
+	const struct hb_fit_result *r = ctx;
 
 	fprintf(f, "point,row,observable,measured,simulated,sd,resid,start\n");
 	for (size_t k = 0; k < r->npoints; k++) {
-		const struct fit_point *p = &r->point[k];
+		const struct hb_fit_point *p = &r->point[k];
 
 		fprintf(f, "%zu,%zu,%s,%.17g,%.17g,%.17g,%.17g,%.17g\n", k, p->row,
-		    fit_obs_name(p->obs), p->measured, p->simulated, p->sd, p->resid, p->start);
+		    hb_fit_obs_name(p->obs), p->measured, p->simulated, p->sd, p->resid, p->start);
 	}
 }
 
 /* Writes the points as CSV, atomically (hybounce/atomic.h). */
 static int
-write_residuals(const char *path, const struct fit_result *r)
+write_residuals(const char *path, const struct hb_fit_result *r)
 {
 	char m[512];
 
-	if (atomic_write_with(path, fill_residuals, r, m, sizeof m) != HB_OK)
+	if (hb_atomic_write_with(path, fill_residuals, r, m, sizeof m) != HB_OK)
 		return bad("--residuals %s", m);
 	fprintf(stderr, "wrote %s\n", path);
 	return 0;
 }
 
 static void
-report(const struct fit_result *r, const struct fit_data *d, int quiet)
+report(const struct hb_fit_result *r, const struct hb_fit_data *d, int quiet)
 {
 	int p = r->np;
 
@@ -266,9 +266,9 @@ report(const struct fit_result *r, const struct fit_data *d, int quiet)
 	printf("  %-14s %14s %16s %12s %9s  %s\n", "key", "start", "estimate", "std error",
 	    "relative", "unit");
 	for (int i = 0; i < p; i++) {
-		struct scene_keyinfo ki;
+		struct hb_scene_keyinfo ki;
 
-		if (scene_get(&r->fitted, r->key[i], &ki, NULL) != HB_OK)
+		if (hb_scene_get(&r->fitted, r->key[i], &ki, NULL) != HB_OK)
 			ki.unit[0] = '\0';
 		printf("  %-14s %14.6g %16.9g %12.3g %9.2g  %s\n", r->key[i], r->start[i],
 		    r->value[i], r->se[i], r->se[i] / fabs(r->value[i]), ki.unit);
@@ -281,21 +281,21 @@ report(const struct fit_result *r, const struct fit_data *d, int quiet)
 		for (int i = 0; i < p; i++) {
 			printf("  %-14s", r->key[i]);
 			for (int j = 0; j < p; j++)
-				printf(" %10.4f", r->corr[i * FIT_MAX_FREE + j]);
+				printf(" %10.4f", r->corr[i * HB_FIT_MAX_FREE + j]);
 			printf("\n");
 		}
 	}
 	if (quiet)
 		return;
-	printf("\nresiduals   (%s)\n", d->kind == FIT_SEQUENCE
+	printf("\nresiduals   (%s)\n", d->kind == HB_FIT_SEQUENCE
 	    ? "t_e: time since the first impact" : "one run per drop");
 	printf("  %4s %4s %-6s %16s %16s %12s %10s\n", "pt", "row", "obs", "measured",
 	    "simulated", "sd", "resid/sd");
 	for (size_t k = 0; k < r->npoints; k++) {
-		const struct fit_point *pt = &r->point[k];
+		const struct hb_fit_point *pt = &r->point[k];
 
 		printf("  %4zu %4zu %-6s %16.9g %16.9g %12.3g %10.3g\n", k, pt->row + 1,
-		    fit_obs_name(pt->obs), pt->measured, pt->simulated, pt->sd, pt->resid);
+		    hb_fit_obs_name(pt->obs), pt->measured, pt->simulated, pt->sd, pt->resid);
 	}
 	fit_plot(stdout, r, d);
 }
@@ -304,13 +304,13 @@ int
 fit_main(int argc, char **argv)
 {
 	const char *data = NULL, *out = NULL, *resid_path = NULL, *preset;
-	const char **sets = NULL, *keys[FIT_MAX_FREE];
+	const char **sets = NULL, *keys[HB_FIT_MAX_FREE];
 	char *freebuf = NULL, path[1024], outbuf[1024], msg[1024];
-	struct onset_options oo = { 0 };
-	struct fit_options fo = { 0 };
-	struct fit_data d = { 0 };
-	struct fit_result r = { 0 };
-	struct scene sc;
+	struct hb_onset_options oo = { 0 };
+	struct hb_fit_options fo = { 0 };
+	struct hb_fit_data d = { 0 };
+	struct hb_fit_result r = { 0 };
+	struct hb_scene sc;
 	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2;
 	size_t freelen = 0;
 
@@ -388,8 +388,8 @@ fit_main(int argc, char **argv)
 	}
 	for (char *save = NULL, *k = strtok_r(freebuf, ", ", &save); k != NULL;
 	     k = strtok_r(NULL, ", ", &save)) {
-		if (nkeys == FIT_MAX_FREE) {
-			status = bad("--free: more than %d keys", FIT_MAX_FREE);
+		if (nkeys == HB_FIT_MAX_FREE) {
+			status = bad("--free: more than %d keys", HB_FIT_MAX_FREE);
 			goto out;
 		}
 		keys[nkeys++] = k;
@@ -400,18 +400,18 @@ fit_main(int argc, char **argv)
 	}
 
 	msg[0] = '\0';
-	if (preset_resolve(preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
+	if (hb_preset_resolve(preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
 		status = bad("preset '%s': %s", preset, msg);
 		goto out;
 	}
-	if (preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
+	if (hb_preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
 		status = bad("%s", msg);
 		goto out;
 	}
 	for (int i = 0; i < nsets; i++)
 		if (apply_set(&sc, sets[i]) != 0)
 			goto out;
-	if (scene_validate(&sc, msg, sizeof msg) != HB_OK) {
+	if (hb_scene_validate(&sc, msg, sizeof msg) != HB_OK) {
 		status = bad("%s: %s", path, msg);
 		goto out;
 	}
@@ -426,29 +426,29 @@ fit_main(int argc, char **argv)
 	printf("hybounce %s fit\n", HYBOUNCE_VERSION);
 	printf("preset      %s (%s)\n", preset, path);
 	if (is_recording(data)) {
-		struct onset_result on;
+		struct hb_onset_result on;
 
-		if (onset_detect(data, &oo, &on, msg, sizeof msg) != HB_OK) {
-			onset_result_free(&on);
+		if (hb_onset_detect(data, &oo, &on, msg, sizeof msg) != HB_OK) {
+			hb_onset_result_free(&on);
 			status = bad("--data %s", msg);
 			goto out;
 		}
 		print_onsets(data, &on);
-		if (fit_data_from_times(on.t, NULL, on.n, data, &d, msg, sizeof msg) != HB_OK) {
-			onset_result_free(&on);
+		if (hb_fit_data_from_times(on.t, NULL, on.n, data, &d, msg, sizeof msg) != HB_OK) {
+			hb_onset_result_free(&on);
 			status = bad("--data %s", msg);
 			goto out;
 		}
-		onset_result_free(&on);
-	} else if (fit_data_load(data, &d, msg, sizeof msg) != HB_OK) {
+		hb_onset_result_free(&on);
+	} else if (hb_fit_data_load(data, &d, msg, sizeof msg) != HB_OK) {
 		status = bad("--data %s", msg);
 		goto out;
 	}
 	printf("data        %s: %s, %zu row%s, %zu points, %s\n", data,
-	    d.kind == FIT_SEQUENCE ? "one bouncing sequence (t_e; the first aligns the clocks)"
+	    d.kind == HB_FIT_SEQUENCE ? "one bouncing sequence (t_e; the first aligns the clocks)"
 	                           : "separate drops (one run per row from contact at v_i)",
-	    d.n, d.n == 1 ? "" : "s", fit_npoints(&d),
-	    d.sd[d.kind == FIT_SEQUENCE ? FIT_OBS_TE : FIT_OBS_E] != NULL
+	    d.n, d.n == 1 ? "" : "s", hb_fit_npoints(&d),
+	    d.sd[d.kind == HB_FIT_SEQUENCE ? HB_FIT_OBS_TE : HB_FIT_OBS_E] != NULL
 	    ? "weighted by sd" : "no standard deviations");
 	printf("free        ");
 	for (int i = 0; i < nkeys; i++)
@@ -459,7 +459,7 @@ fit_main(int argc, char **argv)
 	fo.keys = keys;
 	fo.nkeys = nkeys;
 	fo.progress = quiet ? NULL : progress;
-	if (fit_run(&sc, &d, &fo, &r, msg, sizeof msg) != HB_OK) {
+	if (hb_fit_run(&sc, &d, &fo, &r, msg, sizeof msg) != HB_OK) {
 		status = bad("%s", msg);
 		goto out;
 	}
@@ -477,11 +477,11 @@ fit_main(int argc, char **argv)
 			snprintf(desc + len, sizeof desc - len, " %s = %.9g", r.key[i], r.value[i]);
 		}
 		len = strlen(desc);
-		snprintf(desc + len, sizeof desc - len, " (%.60s).", fit_reason_str(r.reason));
+		snprintf(desc + len, sizeof desc - len, " (%.60s).", hb_fit_reason_str(r.reason));
 		memcpy(r.fitted.name, name, sizeof name);
 		memcpy(r.fitted.description, desc, sizeof desc);
 	}
-	if (preset_save(out, &r.fitted, msg, sizeof msg) != HB_OK) {
+	if (hb_preset_save(out, &r.fitted, msg, sizeof msg) != HB_OK) {
 		status = bad("--out %s", msg);
 		goto out;
 	}
@@ -489,10 +489,10 @@ fit_main(int argc, char **argv)
 	fprintf(stderr, "wrote %s\n", out);
 	if (resid_path != NULL && write_residuals(resid_path, &r) != 0)
 		goto out;
-	status = r.reason <= FIT_CONVERGED_COST ? 0 : 1;
+	status = r.reason <= HB_FIT_CONVERGED_COST ? 0 : 1;
 out:
-	fit_result_free(&r);
-	fit_data_free(&d);
+	hb_fit_result_free(&r);
+	hb_fit_data_free(&d);
 	free(freebuf);
 	free(sets);
 	return status;

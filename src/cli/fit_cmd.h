@@ -20,6 +20,6 @@ fit_main(int argc, char **argv);
 
 /* The text plot of measured against simulated values (fit_plot.c). */
 void
-fit_plot(FILE *f, const struct fit_result *r, const struct fit_data *d);
+fit_plot(FILE *f, const struct hb_fit_result *r, const struct hb_fit_data *d);
 
 #endif

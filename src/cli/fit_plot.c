@@ -73,7 +73,7 @@ panel(FILE *f, const char *title, const char *xlabel, const double *x, const dou
 }
 
 void
-fit_plot(FILE *f, const struct fit_result *r, const struct fit_data *d)
+fit_plot(FILE *f, const struct hb_fit_result *r, const struct hb_fit_data *d)
 {
 	size_t n = r->npoints;
 	double *x = malloc(4 * (n ? n : 1) * sizeof *x), *ym, *ys, *y0s;
@@ -83,7 +83,7 @@ fit_plot(FILE *f, const struct fit_result *r, const struct fit_data *d)
 	ym = x + n;
 	ys = ym + n;
 	y0s = ys + n;
-	if (d->kind == FIT_SEQUENCE) {
+	if (d->kind == HB_FIT_SEQUENCE) {
 		for (size_t k = 0; k < n; k++) {
 			x[k] = (double)(k + 1);
 			ym[k] = r->point[k].measured - (k > 0 ? r->point[k - 1].measured : 0);
@@ -94,7 +94,7 @@ fit_plot(FILE *f, const struct fit_result *r, const struct fit_data *d)
 		free(x);
 		return;
 	}
-	for (int ob = FIT_OBS_E; ob < FIT_OBS_COUNT; ob++) {
+	for (int ob = HB_FIT_OBS_E; ob < HB_FIT_OBS_COUNT; ob++) {
 		size_t m = 0;
 		char title[64];
 
@@ -108,8 +108,8 @@ fit_plot(FILE *f, const struct fit_result *r, const struct fit_data *d)
 			}
 		if (m == 0)
 			continue;
-		snprintf(title, sizeof title, "%s%s", fit_obs_name(ob),
-		    ob == FIT_OBS_E ? "" : " [SI]");
+		snprintf(title, sizeof title, "%s%s", hb_fit_obs_name(ob),
+		    ob == HB_FIT_OBS_E ? "" : " [SI]");
 		panel(f, title, "|v_i| [m/s]", x, ym, ys, y0s, m);
 	}
 	free(x);

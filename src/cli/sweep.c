@@ -165,7 +165,7 @@ fmt_eta(double s, char *buf, size_t n)
 }
 
 static void
-on_progress(void *ctx, const struct sweep_progress *p)
+on_progress(void *ctx, const struct hb_sweep_progress *p)
 {
 	struct progress *g = ctx;
 	long computed = p->done - p->resumed;
@@ -235,22 +235,22 @@ read_text(const char *path)
 }
 
 /* The preset, the --set values and the axes; NULL after printing why (exit 2). */
-static struct sweep *
+static struct hb_sweep *
 build(const char *preset, const char *const *sets, int nsets,
       const char *const *varies, int nvaries)
 {
 	char path[4096], msg[1024];
-	struct scene sc;
-	struct sweep *sw;
+	struct hb_scene sc;
+	struct hb_sweep *sw;
 	char *text;
 
 	msg[0] = '\0';
-	if (preset_resolve(preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
+	if (hb_preset_resolve(preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": preset '%s': %s\n", preset, msg[0] ? msg : "not found");
 		return NULL;
 	}
 	msg[0] = '\0';
-	if (preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
+	if (hb_preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": %s\n", msg[0] ? msg : path);
 		return NULL;
 	}
@@ -265,17 +265,17 @@ build(const char *preset, const char *const *sets, int nsets,
 		}
 		snprintf(key, sizeof key, "%.*s", (int)(eq - sets[i]), sets[i]);
 		msg[0] = '\0';
-		if (scene_set(&sc, key, eq + 1, msg, sizeof msg) != HB_OK) {
+		if (hb_scene_set(&sc, key, eq + 1, msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": --set %s: %s\n", sets[i], msg);
 			return NULL;
 		}
 	}
 	msg[0] = '\0';
-	if (scene_validate(&sc, msg, sizeof msg) != HB_OK) {
+	if (hb_scene_validate(&sc, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": %s: %s\n", path, msg);
 		return NULL;
 	}
-	sw = sweep_new(&sc, msg, sizeof msg);
+	sw = hb_sweep_new(&sc, msg, sizeof msg);
 	if (sw == NULL) {
 		fprintf(stderr, PROG ": %s\n", msg);
 		return NULL;
@@ -283,35 +283,35 @@ build(const char *preset, const char *const *sets, int nsets,
 	text = read_text(path);
 	if (text == NULL) {
 		fprintf(stderr, PROG ": %s: %s\n", path, strerror(errno));
-		sweep_free(sw);
+		hb_sweep_free(sw);
 		return NULL;
 	}
 	msg[0] = '\0';
-	if (sweep_vary_from_preset(sw, text, path, msg, sizeof msg) != HB_OK) {
+	if (hb_sweep_vary_from_preset(sw, text, path, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": %s\n", msg);
 		free(text);
-		sweep_free(sw);
+		hb_sweep_free(sw);
 		return NULL;
 	}
 	free(text);
 	for (int i = 0; i < nvaries; i++) {
 		msg[0] = '\0';
-		if (sweep_vary(sw, varies[i], msg, sizeof msg) != HB_OK) {
+		if (hb_sweep_vary(sw, varies[i], msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": %s\n", msg);
-			sweep_free(sw);
+			hb_sweep_free(sw);
 			return NULL;
 		}
 	}
-	if (sweep_npoints(sw) == 0) {
+	if (hb_sweep_npoints(sw) == 0) {
 		bad("nothing to vary: expected --vary KEY=SPEC (e.g. --vary "
 		    "law.c=1e8:1e10:20:log), or a preset with '; sweep: --vary' lines");
-		sweep_free(sw);
+		hb_sweep_free(sw);
 		return NULL;
 	}
 	msg[0] = '\0';
-	if (sweep_check(sw, msg, sizeof msg) != HB_OK) {
+	if (hb_sweep_check(sw, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": %s\n", msg);
-		sweep_free(sw);
+		hb_sweep_free(sw);
 		return NULL;
 	}
 	return sw;
@@ -324,7 +324,7 @@ sweep_main(int argc, char **argv)
 	int nsets = 0, nvaries = 0, quiet = 0, c, status = 2;
 	long jobs = 0, shard_k = 0, shard_n = 1, shards = 0, pct = 10;
 	const char *out = NULL, *emit = NULL, *sshlogin = NULL, *merge = NULL;
-	struct sweep *sw = NULL;
+	struct hb_sweep *sw = NULL;
 	char msg[2048];
 
 	sets = calloc((size_t)argc + 1, sizeof *sets);
@@ -400,7 +400,7 @@ sweep_main(int argc, char **argv)
 			goto done;
 		}
 		msg[0] = '\0';
-		if (sweep_merge(merge, msg, sizeof msg) != HB_OK) {
+		if (hb_sweep_merge(merge, msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": merge: %s\n", msg);
 			status = 1;
 			goto done;
@@ -449,7 +449,7 @@ sweep_main(int argc, char **argv)
 
 	{
 		struct progress g = { 0 };
-		struct sweep_options o = { 0 };
+		struct hb_sweep_options o = { 0 };
 
 		g.tty = isatty(STDERR_FILENO);
 		g.quiet = quiet;
@@ -473,7 +473,7 @@ sweep_main(int argc, char **argv)
 			sigaction(SIGHUP, &sa, NULL);
 		}
 		msg[0] = '\0';
-		status = sweep_run(sw, &o, msg, sizeof msg);
+		status = hb_sweep_run(sw, &o, msg, sizeof msg);
 		if (status == HB_EDONE) {
 			/* Interrupted: what was done is journaled; exit as the signal would. */
 			if (g.tty && !quiet)
@@ -495,7 +495,7 @@ sweep_main(int argc, char **argv)
 		}
 	}
 done:
-	sweep_free(sw);
+	hb_sweep_free(sw);
 	free(sets);
 	free(varies);
 	return status;

@@ -7,7 +7,7 @@
 
 #include <stddef.h>
 
-struct sweep;
+struct hb_sweep;
 
 /* hybounce sweep ARGS (argv[0] is "sweep").  Returns the exit status. */
 int
@@ -19,7 +19,7 @@ sweep_main(int argc, char **argv);
  * shards and merges them.  Returns 0, or 2 / 1 with a message in msg.
  */
 int
-sweep_emit(const struct sweep *sw, const char *dir, const char *kind, long shards,
+sweep_emit(const struct hb_sweep *sw, const char *dir, const char *kind, long shards,
            const char *sshlogin, char *msg, size_t n);
 
 #endif

@@ -35,16 +35,16 @@ put_sq(FILE *f, const char *s)
 }
 
 int
-sweep_emit(const struct sweep *sw, const char *dir, const char *kind, long shards,
+sweep_emit(const struct hb_sweep *sw, const char *dir, const char *kind, long shards,
            const char *sshlogin, char *msg, size_t n)
 {
 	char self[PATH_MAX], adir[PATH_MAX];
 	int rc;
 
-	if ((rc = sweep_prepare_dir(sw, dir, msg, n)) != HB_OK)
+	if ((rc = hb_sweep_prepare_dir(sw, dir, msg, n)) != HB_OK)
 		return rc == HB_EINVAL ? 2 : 1;
 	if (realpath("/proc/self/exe", self) == NULL || realpath(dir, adir) == NULL) {
-		status_set(msg, n, HB_EIO, "%s: %s", dir, strerror(errno));
+		hb_status_set(msg, n, HB_EIO, "%s: %s", dir, strerror(errno));
 		return 1;
 	}
 	if (strcmp(kind, "parallel") == 0) {
@@ -73,7 +73,7 @@ sweep_emit(const struct sweep *sw, const char *dir, const char *kind, long shard
 		       "# hybounce sweep of %ld points: %ld shards as a Slurm job array, then\n"
 		       "# a merge job that runs once every shard has succeeded.\n"
 		       "# Submit with: sh THIS_FILE   (the output goes to DIR/slurm-*.out)\n"
-		       "set -e\n", sweep_npoints(sw), shards);
+		       "set -e\n", hb_sweep_npoints(sw), shards);
 		fputs("HYBOUNCE=", stdout);
 		put_sq(stdout, self);
 		fputs("\nDIR=", stdout);
@@ -97,7 +97,7 @@ sweep_emit(const struct sweep *sw, const char *dir, const char *kind, long shard
 		       shards - 1, shards);
 	}
 	if (fflush(stdout) != 0 || ferror(stdout)) {
-		status_set(msg, n, HB_EIO, "standard output: %s", strerror(errno));
+		hb_status_set(msg, n, HB_EIO, "standard output: %s", strerror(errno));
 		return 1;
 	}
 	return 0;

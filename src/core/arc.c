@@ -25,12 +25,12 @@
 #include "hybounce/status.h"
 #include "arc_impl.h"
 
-struct arc {
-	struct arc_sample *s;
+struct hb_arc {
+	struct hb_arc_sample *s;
 	size_t n, cap;
-	struct arc_interval *iv;
+	struct hb_arc_interval *iv;
 	size_t niv, ivcap;
-	struct arc_jump *jp;
+	struct hb_arc_jump *jp;
 	size_t nj, jcap;
 	size_t max;
 	int thinned;
@@ -39,10 +39,10 @@ struct arc {
 
 enum { ARC_CHUNK = 4096 };
 
-struct arc *
+struct hb_arc *
 arc_new(size_t max_samples)
 {
-	struct arc *a = calloc(1, sizeof *a);
+	struct hb_arc *a = calloc(1, sizeof *a);
 
 	if (a == NULL)
 		return NULL;
@@ -51,7 +51,7 @@ arc_new(size_t max_samples)
 }
 
 void
-arc_free(struct arc *a)
+arc_free(struct hb_arc *a)
 {
 	if (a == NULL)
 		return;
@@ -81,18 +81,18 @@ grow(void **p, size_t *cap, size_t need, size_t size)
 
 /* Rebuilds the interval index from the samples. */
 static int
-reindex(struct arc *a)
+reindex(struct hb_arc *a)
 {
 	size_t i;
 
 	a->niv = 0;
 	for (i = 0; i < a->n; i++) {
-		const struct arc_sample *s = &a->s[i];
+		const struct hb_arc_sample *s = &a->s[i];
 
 		if (a->niv == 0 || a->iv[a->niv - 1].j != s->j) {
 			if (grow((void **)&a->iv, &a->ivcap, a->niv + 1, sizeof *a->iv))
 				return HB_ENOMEM;
-			a->iv[a->niv] = (struct arc_interval){ s->j, s->q, i, i, s->t, s->t };
+			a->iv[a->niv] = (struct hb_arc_interval){ s->j, s->q, i, i, s->t, s->t };
 			a->niv++;
 		} else {
 			a->iv[a->niv - 1].last = i;
@@ -108,7 +108,7 @@ reindex(struct arc *a)
  * index is rebuilt afterwards.
  */
 static void
-thin(struct arc *a, size_t upto)
+thin(struct hb_arc *a, size_t upto)
 {
 	size_t i, w = 0;
 	int drop = 0;
@@ -135,12 +135,12 @@ thin(struct arc *a, size_t upto)
  * and out of them.  The interval index is rebuilt afterwards.
  */
 static void
-thin_jumps(struct arc *a, size_t upto)
+thin_jumps(struct hb_arc *a, size_t upto)
 {
 	size_t k, i, w = 0, r, kw;
 
 	for (k = 0; k < a->niv; k++) {
-		const struct arc_interval *iv = &a->iv[k];
+		const struct hb_arc_interval *iv = &a->iv[k];
 
 		if (k % 2 == 1 && k + 1 < a->niv && iv->last < upto) {
 			a->skipped++;
@@ -166,14 +166,14 @@ thin_jumps(struct arc *a, size_t upto)
 
 /* Bytes in use: samples, intervals and jump records. */
 static size_t
-used(const struct arc *a)
+used(const struct hb_arc *a)
 {
 	return a->n * sizeof *a->s + a->niv * sizeof *a->iv + a->nj * sizeof *a->jp;
 }
 
 /* Thins until the arc is within its bound; 0 if nothing more can go. */
 static int
-make_room(struct arc *a, size_t bound, size_t upto)
+make_room(struct hb_arc *a, size_t bound, size_t upto)
 {
 	size_t before = used(a);
 
@@ -184,7 +184,7 @@ make_room(struct arc *a, size_t bound, size_t upto)
 }
 
 int
-arc_push(struct arc *a, const struct arc_sample *s)
+arc_push(struct hb_arc *a, const struct hb_arc_sample *s)
 {
 	if (used(a) + sizeof *s >= a->max * sizeof *s)
 		make_room(a, 0, a->n - a->n / 4);
@@ -193,7 +193,7 @@ arc_push(struct arc *a, const struct arc_sample *s)
 	if (a->niv == 0 || a->iv[a->niv - 1].j != s->j) {
 		if (grow((void **)&a->iv, &a->ivcap, a->niv + 1, sizeof *a->iv))
 			return HB_ENOMEM;
-		a->iv[a->niv] = (struct arc_interval){ s->j, s->q, a->n, a->n, s->t, s->t };
+		a->iv[a->niv] = (struct hb_arc_interval){ s->j, s->q, a->n, a->n, s->t, s->t };
 		a->niv++;
 	} else {
 		a->iv[a->niv - 1].last = a->n;
@@ -204,7 +204,7 @@ arc_push(struct arc *a, const struct arc_sample *s)
 }
 
 int
-arc_push_jump(struct arc *a, const struct arc_jump *jr)
+arc_push_jump(struct hb_arc *a, const struct hb_arc_jump *jr)
 {
 	if (grow((void **)&a->jp, &a->jcap, a->nj + 1, sizeof *a->jp))
 		return HB_ENOMEM;
@@ -213,7 +213,7 @@ arc_push_jump(struct arc *a, const struct arc_jump *jr)
 }
 
 void
-arc_truncate(struct arc *a, size_t keep)
+arc_truncate(struct hb_arc *a, size_t keep)
 {
 	long jlast;
 
@@ -231,7 +231,7 @@ arc_truncate(struct arc *a, size_t keep)
 }
 
 void
-arc_set_max(struct arc *a, size_t max_samples)
+arc_set_max(struct hb_arc *a, size_t max_samples)
 {
 	a->max = max_samples < 1024 ? 1024 : max_samples;
 	while (used(a) > a->max * sizeof *a->s && make_room(a, a->max * sizeof *a->s, a->n))
@@ -239,37 +239,37 @@ arc_set_max(struct arc *a, size_t max_samples)
 }
 
 size_t
-arc_len(const struct arc *a)
+hb_arc_len(const struct hb_arc *a)
 {
 	return a->n;
 }
 
-const struct arc_sample *
-arc_at(const struct arc *a, size_t i)
+const struct hb_arc_sample *
+hb_arc_at(const struct hb_arc *a, size_t i)
 {
 	return i < a->n ? &a->s[i] : NULL;
 }
 
-const struct arc_sample *
-arc_last(const struct arc *a)
+const struct hb_arc_sample *
+hb_arc_last(const struct hb_arc *a)
 {
 	return a->n ? &a->s[a->n - 1] : NULL;
 }
 
 size_t
-arc_nintervals(const struct arc *a)
+hb_arc_nintervals(const struct hb_arc *a)
 {
 	return a->niv;
 }
 
-const struct arc_interval *
-arc_interval_at(const struct arc *a, size_t k)
+const struct hb_arc_interval *
+hb_arc_interval_at(const struct hb_arc *a, size_t k)
 {
 	return k < a->niv ? &a->iv[k] : NULL;
 }
 
 size_t
-arc_interval_of(const struct arc *a, size_t i)
+hb_arc_interval_of(const struct hb_arc *a, size_t i)
 {
 	size_t lo = 0, hi = a->niv;
 
@@ -286,26 +286,26 @@ arc_interval_of(const struct arc *a, size_t i)
 }
 
 size_t
-arc_njumps(const struct arc *a)
+hb_arc_njumps(const struct hb_arc *a)
 {
 	return a->nj;
 }
 
-const struct arc_jump *
-arc_jump_at(const struct arc *a, size_t k)
+const struct hb_arc_jump *
+hb_arc_jump_at(const struct hb_arc *a, size_t k)
 {
 	return k < a->nj ? &a->jp[k] : NULL;
 }
 
 /* 1 if sample s is at or before (t, j) in hybrid-time order. */
 static int
-not_after(const struct arc_sample *s, double t, long j)
+not_after(const struct hb_arc_sample *s, double t, long j)
 {
 	return s->j < j || (s->j == j && s->t <= t);
 }
 
 size_t
-arc_find(const struct arc *a, double t, long j)
+hb_arc_find(const struct hb_arc *a, double t, long j)
 {
 	size_t lo = 0, hi = a->n;
 
@@ -323,7 +323,7 @@ arc_find(const struct arc *a, double t, long j)
 }
 
 size_t
-arc_find_t(const struct arc *a, double t)
+hb_arc_find_t(const struct hb_arc *a, double t)
 {
 	size_t lo = 0, hi = a->n;
 
@@ -341,19 +341,19 @@ arc_find_t(const struct arc *a, double t)
 }
 
 int
-arc_thinned(const struct arc *a)
+hb_arc_thinned(const struct hb_arc *a)
 {
 	return a->thinned;
 }
 
 long
-arc_skipped(const struct arc *a)
+hb_arc_skipped(const struct hb_arc *a)
 {
 	return a->skipped;
 }
 
 size_t
-arc_bytes(const struct arc *a)
+hb_arc_bytes(const struct hb_arc *a)
 {
 	return sizeof *a + a->cap * sizeof *a->s + a->ivcap * sizeof *a->iv +
 	       a->jcap * sizeof *a->jp;

@@ -8,19 +8,19 @@
 #include "hybounce/arc.h"
 
 /* An empty arc that thins beyond max_samples samples.  NULL on no memory. */
-struct arc *arc_new(size_t max_samples);
-void arc_free(struct arc *a);
+struct hb_arc *arc_new(size_t max_samples);
+void arc_free(struct hb_arc *a);
 
 /* Appends a sample (hybrid-time order is the caller's duty).  Returns 0 or HB_ENOMEM. */
-int arc_push(struct arc *a, const struct arc_sample *s);
+int arc_push(struct hb_arc *a, const struct hb_arc_sample *s);
 
 /* Appends a jump record.  Returns 0 or HB_ENOMEM. */
-int arc_push_jump(struct arc *a, const struct arc_jump *jr);
+int arc_push_jump(struct hb_arc *a, const struct hb_arc_jump *jr);
 
 /* Keeps samples [0, keep) and the jumps whose post-jump sample is kept. */
-void arc_truncate(struct arc *a, size_t keep);
+void arc_truncate(struct hb_arc *a, size_t keep);
 
 /* Changes the memory bound (thins at once if needed). */
-void arc_set_max(struct arc *a, size_t max_samples);
+void arc_set_max(struct hb_arc *a, size_t max_samples);
 
 #endif

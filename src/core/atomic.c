@@ -12,7 +12,7 @@
  * follow; the links are removed.  Should a rename fail, the ones made are
  * undone from those links.  A kill can strike between any two of these
  * steps; what it leaves is a temporary file or a .old link, both named
- * TARGET.hbtmp-PID-..., which atomic_add() removes the next time a set
+ * TARGET.hbtmp-PID-..., which hb_atomic_add() removes the next time a set
  * writes beside them once PID is no longer running.
  */
 #include <dirent.h>
@@ -54,28 +54,28 @@ follow_dangling(const char *path, char *out, size_t n, char *msg, size_t mn)
 	struct stat st;
 
 	if (strlen(path) >= sizeof cur)
-		return status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(ENAMETOOLONG));
+		return hb_status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(ENAMETOOLONG));
 	strcpy(cur, path);
 	for (int hop = 0; hop < 40; hop++) {
 		ssize_t len;
 
 		if (lstat(cur, &st) != 0 || !S_ISLNK(st.st_mode)) {
 			if (strlen(cur) >= n)
-				return status_set(msg, mn, HB_EIO, "%s: %s", path,
+				return hb_status_set(msg, mn, HB_EIO, "%s: %s", path,
 				                  strerror(ENAMETOOLONG));
 			strcpy(out, cur);
 			return HB_OK;
 		}
 		len = readlink(cur, link, sizeof link - 1);
 		if (len < 0)
-			return status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(errno));
+			return hb_status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(errno));
 		link[len] = '\0';
 		if (link[0] == '/') {
 			strcpy(cur, link);
 		} else {
 			dir_of(cur, dir, sizeof dir);
 			if (strlen(dir) + 1 + strlen(link) >= sizeof link)
-				return status_set(msg, mn, HB_EIO, "%s: %s", path,
+				return hb_status_set(msg, mn, HB_EIO, "%s: %s", path,
 				                  strerror(ENAMETOOLONG));
 			size_t dl = strlen(dir);
 
@@ -85,11 +85,11 @@ follow_dangling(const char *path, char *out, size_t n, char *msg, size_t mn)
 			strcpy(cur, link);
 		}
 	}
-	return status_set(msg, mn, HB_EINVAL, "%s: %s", path, strerror(ELOOP));
+	return hb_status_set(msg, mn, HB_EINVAL, "%s: %s", path, strerror(ELOOP));
 }
 
 int
-atomic_probe(const char *path, struct atomic_target *t, char *msg, size_t n)
+hb_atomic_probe(const char *path, struct hb_atomic_target *t, char *msg, size_t n)
 {
 	struct stat st, lst;
 	char dir[4096];
@@ -98,54 +98,54 @@ atomic_probe(const char *path, struct atomic_target *t, char *msg, size_t n)
 	memset(t, 0, sizeof *t);
 	t->via_link = islink;
 	if (path[0] == '\0')
-		return status_set(msg, n, HB_EINVAL, "empty file name");
+		return hb_status_set(msg, n, HB_EINVAL, "empty file name");
 	if (strlen(path) >= sizeof t->real)
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(ENAMETOOLONG));
+		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(ENAMETOOLONG));
 	if (stat(path, &st) == 0) {
 		if (S_ISDIR(st.st_mode))
-			return status_set(msg, n, HB_EINVAL, "%s: is a folder; expected a file",
+			return hb_status_set(msg, n, HB_EINVAL, "%s: is a folder; expected a file",
 			                  path);
 		/* /dev/stdout, /dev/fd/N, /proc/PID/fd/N lead to an open file of
 		 * some process: written in place, like the device they stand for. */
 		if (!S_ISREG(st.st_mode) || strncmp(path, "/dev/", 5) == 0 ||
 		    strncmp(path, "/proc/", 6) == 0) {
 			strcpy(t->real, path);
-			t->how = ATOMIC_IN_PLACE;
+			t->how = HB_ATOMIC_IN_PLACE;
 			if (access(path, W_OK) != 0)
-				return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+				return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
 			return HB_OK;
 		}
-		t->how = ATOMIC_REPLACE;
+		t->how = HB_ATOMIC_REPLACE;
 		if (!islink)
 			strcpy(t->real, path);
 		else if (realpath(path, t->real) == NULL)
-			return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+			return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
 	} else if (errno == ENOENT && islink) {
 		int st2 = follow_dangling(path, t->real, sizeof t->real, msg, n);
 
 		if (st2 != HB_OK)
 			return st2;
-		t->how = ATOMIC_NEW;
+		t->how = HB_ATOMIC_NEW;
 	} else if (errno == ENOENT) {
 		strcpy(t->real, path);
-		t->how = ATOMIC_NEW;
+		t->how = HB_ATOMIC_NEW;
 	} else if (errno == ELOOP) {
-		return status_set(msg, n, HB_EINVAL, "%s: %s", path, strerror(errno));
+		return hb_status_set(msg, n, HB_EINVAL, "%s: %s", path, strerror(errno));
 	} else {
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
 	}
 	dir_of(t->real, dir, sizeof dir);
 	if (stat(dir, &st) != 0)
-		return status_set(msg, n, HB_EIO, "%s: folder %s: %s", path, dir, strerror(errno));
+		return hb_status_set(msg, n, HB_EIO, "%s: folder %s: %s", path, dir, strerror(errno));
 	if (!S_ISDIR(st.st_mode))
-		return status_set(msg, n, HB_EIO, "%s: %s is not a folder", path, dir);
+		return hb_status_set(msg, n, HB_EIO, "%s: %s is not a folder", path, dir);
 	if (access(dir, W_OK | X_OK) != 0)
-		return status_set(msg, n, HB_EIO, "%s: folder %s: %s", path, dir, strerror(errno));
+		return hb_status_set(msg, n, HB_EIO, "%s: folder %s: %s", path, dir, strerror(errno));
 	return HB_OK;
 }
 
 void
-atomic_begin(struct atomic_set *set)
+hb_atomic_begin(struct hb_atomic_set *set)
 {
 	struct tm tm;
 	char when[32];
@@ -195,27 +195,27 @@ clean_stale(const char *real)
 }
 
 FILE *
-atomic_add(struct atomic_set *set, const char *path, char *msg, size_t n)
+hb_atomic_add(struct hb_atomic_set *set, const char *path, char *msg, size_t n)
 {
-	struct atomic_file *af;
+	struct hb_atomic_file *af;
 	struct stat st;
 	int fd;
 
-	if (set->n >= ATOMIC_MAX) {
-		status_set(msg, n, HB_EINVAL, "%s: too many files in one export", path);
+	if (set->n >= HB_ATOMIC_MAX) {
+		hb_status_set(msg, n, HB_EINVAL, "%s: too many files in one export", path);
 		return NULL;
 	}
 	af = &set->file[set->n];
 	memset(af, 0, sizeof *af);
 	af->path = path;
-	if (atomic_probe(path, &af->target, msg, n) != HB_OK)
+	if (hb_atomic_probe(path, &af->target, msg, n) != HB_OK)
 		return NULL;
-	if (af->target.how == ATOMIC_IN_PLACE) {
+	if (af->target.how == HB_ATOMIC_IN_PLACE) {
 		/* O_APPEND: a regular file behind /dev/stdout keeps what the
 		 * process wrote there before (a report). */
 		fd = open(af->target.real, O_WRONLY | O_APPEND | O_NOCTTY | O_CLOEXEC);
 		if (fd < 0) {
-			status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+			hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
 			return NULL;
 		}
 	} else {
@@ -227,11 +227,11 @@ atomic_add(struct atomic_set *set, const char *path, char *msg, size_t n)
 		memcpy(af->tmp, tmp, sizeof tmp);
 		fd = mkstemp(af->tmp);
 		if (fd < 0) {
-			status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+			hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
 			return NULL;
 		}
 		/* The replaced file's permissions, or what creat() would give. */
-		if (af->target.how == ATOMIC_REPLACE && stat(af->target.real, &st) == 0) {
+		if (af->target.how == HB_ATOMIC_REPLACE && stat(af->target.real, &st) == 0) {
 			(void)fchmod(fd, st.st_mode & 07777);
 		} else {
 			mode_t um = umask(0);
@@ -247,7 +247,7 @@ atomic_add(struct atomic_set *set, const char *path, char *msg, size_t n)
 		close(fd);
 		if (af->tmp[0])
 			unlink(af->tmp);
-		status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
+		hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e));
 		return NULL;
 	}
 	set->n++;
@@ -255,10 +255,10 @@ atomic_add(struct atomic_set *set, const char *path, char *msg, size_t n)
 }
 
 void
-atomic_abort(struct atomic_set *set)
+hb_atomic_abort(struct hb_atomic_set *set)
 {
 	for (int k = 0; k < set->n; k++) {
-		struct atomic_file *af = &set->file[k];
+		struct hb_atomic_file *af = &set->file[k];
 
 		if (af->f != NULL)
 			fclose(af->f);
@@ -271,7 +271,7 @@ atomic_abort(struct atomic_set *set)
 
 /* Flushes, stamps, syncs and closes one file; 0 or the errno. */
 static int
-finish(struct atomic_set *set, struct atomic_file *af)
+finish(struct hb_atomic_set *set, struct hb_atomic_file *af)
 {
 	int e = 0, fd = fileno(af->f);
 
@@ -308,7 +308,7 @@ sync_dir(const char *path)
 }
 
 int
-atomic_commit(struct atomic_set *set, char *msg, size_t n)
+hb_atomic_commit(struct hb_atomic_set *set, char *msg, size_t n)
 {
 	int k, e = 0, failed = -1, done = 0;
 
@@ -321,13 +321,13 @@ atomic_commit(struct atomic_set *set, char *msg, size_t n)
 		}
 	}
 	if (e != 0) {
-		atomic_abort(set);
-		return status_set(msg, n, HB_EIO, "%s: %s", set->file[failed].path, strerror(e));
+		hb_atomic_abort(set);
+		return hb_status_set(msg, n, HB_EIO, "%s: %s", set->file[failed].path, strerror(e));
 	}
 	for (k = 0; k < set->n; k++) {
-		struct atomic_file *af = &set->file[k];
+		struct hb_atomic_file *af = &set->file[k];
 
-		if (af->tmp[0] && af->target.how == ATOMIC_REPLACE) {
+		if (af->tmp[0] && af->target.how == HB_ATOMIC_REPLACE) {
 			size_t tl = strlen(af->tmp);
 
 			memcpy(af->bak, af->tmp, tl);           /* tmp is shorter than bak - 4 */
@@ -336,7 +336,7 @@ atomic_commit(struct atomic_set *set, char *msg, size_t n)
 		}
 	}
 	for (k = 0; k < set->n; k++) {
-		struct atomic_file *af = &set->file[k];
+		struct hb_atomic_file *af = &set->file[k];
 
 		if (!af->tmp[0])
 			continue;
@@ -351,26 +351,26 @@ atomic_commit(struct atomic_set *set, char *msg, size_t n)
 	if (e != 0) {
 		/* Undo: the replaced files come back, the new ones go. */
 		for (k = 0; k < done; k++) {
-			struct atomic_file *af = &set->file[k];
+			struct hb_atomic_file *af = &set->file[k];
 
 			if (af->has_bak)
 				rename(af->bak, af->target.real);
-			else if (af->target.how == ATOMIC_NEW)
+			else if (af->target.how == HB_ATOMIC_NEW)
 				unlink(af->target.real);
 		}
-		atomic_abort(set);
+		hb_atomic_abort(set);
 	}
 	for (k = 0; k < set->n; k++) {
-		struct atomic_file *af = &set->file[k];
+		struct hb_atomic_file *af = &set->file[k];
 
 		if (af->has_bak)
 			unlink(af->bak);
 		af->has_bak = 0;
-		if (e == 0 && af->target.how != ATOMIC_IN_PLACE)
+		if (e == 0 && af->target.how != HB_ATOMIC_IN_PLACE)
 			sync_dir(af->target.real);
 	}
 	if (e != 0)
-		return status_set(msg, n, HB_EIO, "%s: %s", set->file[failed].path, strerror(e));
+		return hb_status_set(msg, n, HB_EIO, "%s: %s", set->file[failed].path, strerror(e));
 	return HB_OK;
 }
 
@@ -388,9 +388,9 @@ crc_table(uint32_t t[256])
 }
 
 int
-atomic_cksum(struct atomic_set *set, int k, unsigned long *crc, unsigned long long *len)
+hb_atomic_cksum(struct hb_atomic_set *set, int k, unsigned long *crc, unsigned long long *len)
 {
-	struct atomic_file *af = &set->file[k];
+	struct hb_atomic_file *af = &set->file[k];
 	unsigned char buf[65536];
 	uint32_t t[256], c = 0;
 	unsigned long long n = 0;
@@ -423,19 +423,19 @@ atomic_cksum(struct atomic_set *set, int k, unsigned long *crc, unsigned long lo
 }
 
 int
-atomic_write_with(const char *path, void (*fill)(FILE *f, const void *ctx), const void *ctx,
+hb_atomic_write_with(const char *path, void (*fill)(FILE *f, const void *ctx), const void *ctx,
                   char *msg, size_t n)
 {
-	struct atomic_set set;
+	struct hb_atomic_set set;
 	FILE *f;
 
-	atomic_begin(&set);
-	f = atomic_add(&set, path, msg, n);
+	hb_atomic_begin(&set);
+	f = hb_atomic_add(&set, path, msg, n);
 	if (f == NULL)
 		return HB_EIO;
 	errno = 0;
 	fill(f, ctx);   /* a failure shows in ferror() at commit */
-	return atomic_commit(&set, msg, n);
+	return hb_atomic_commit(&set, msg, n);
 }
 
 struct bytes {
@@ -453,9 +453,9 @@ fill_bytes(FILE *f, const void *ctx)
 }
 
 int
-atomic_write_file(const char *path, const void *buf, size_t len, char *msg, size_t n)
+hb_atomic_write_file(const char *path, const void *buf, size_t len, char *msg, size_t n)
 {
 	const struct bytes b = { buf, len };
 
-	return atomic_write_with(path, fill_bytes, &b, msg, n);
+	return hb_atomic_write_with(path, fill_bytes, &b, msg, n);
 }

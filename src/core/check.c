@@ -14,13 +14,13 @@
 #include "hybounce/status.h"
 
 static double
-phi_of(const struct scene *sc, const struct arc_sample *a)
+phi_of(const struct hb_scene *sc, const struct hb_arc_sample *a)
 {
 	return sc->law->phi(sc->par, sc->ext, a->xc, a->z, a->v);
 }
 
 int
-check_in_C(const struct scene *sc, const struct arc_sample *a)
+hb_check_in_C(const struct hb_scene *sc, const struct hb_arc_sample *a)
 {
 	if (a->q == 0)
 		return a->x >= 0.0 || a->v >= 0.0;
@@ -28,7 +28,7 @@ check_in_C(const struct scene *sc, const struct arc_sample *a)
 }
 
 int
-check_in_D(const struct scene *sc, const struct arc_sample *a)
+hb_check_in_D(const struct hb_scene *sc, const struct hb_arc_sample *a)
 {
 	if (a->q == 0)
 		return a->x <= 0.0 && a->v <= 0.0;
@@ -36,76 +36,76 @@ check_in_D(const struct scene *sc, const struct arc_sample *a)
 }
 
 int
-check_solution_pair(const struct scene *sc, const struct arc *arc, char *msg, size_t n)
+hb_check_solution_pair(const struct hb_scene *sc, const struct hb_arc *arc, char *msg, size_t n)
 {
-	size_t i, len = arc_len(arc);
+	size_t i, len = hb_arc_len(arc);
 	int nz = sc->law->n_z, k;
 	long skipped = 0;   /* flow intervals thinned out so far */
 
 	if (len == 0)
-		return status_set(msg, n, HB_EINVAL, "empty arc");
-	if (arc_at(arc, 0)->j != 0 || arc_at(arc, 0)->t != 0.0 || arc_at(arc, 0)->q != 0)
-		return status_set(msg, n, HB_EINVAL, "the arc does not start at (0, 0) with q_c = 0");
+		return hb_status_set(msg, n, HB_EINVAL, "empty arc");
+	if (hb_arc_at(arc, 0)->j != 0 || hb_arc_at(arc, 0)->t != 0.0 || hb_arc_at(arc, 0)->q != 0)
+		return hb_status_set(msg, n, HB_EINVAL, "the arc does not start at (0, 0) with q_c = 0");
 	for (i = 0; i < len; i++) {
-		const struct arc_sample *a = arc_at(arc, i), *b = i + 1 < len ? arc_at(arc, i + 1) : NULL;
+		const struct hb_arc_sample *a = hb_arc_at(arc, i), *b = i + 1 < len ? hb_arc_at(arc, i + 1) : NULL;
 
 		if (b != NULL) {
 			if (b->j == a->j) {
 				if (!(b->t >= a->t))
-					return status_set(msg, n, HB_EINVAL,
+					return hb_status_set(msg, n, HB_EINVAL,
 					                  "sample %zu: t decreases within j = %ld (%.17g -> %.17g)",
 					                  i, a->j, a->t, b->t);
 				if (b->q != a->q)
-					return status_set(msg, n, HB_EINVAL, "sample %zu: q_c changes without a jump", i);
+					return hb_status_set(msg, n, HB_EINVAL, "sample %zu: q_c changes without a jump", i);
 			} else if (b->j == a->j + 1) {
 				if (b->t != a->t)
-					return status_set(msg, n, HB_EINVAL,
+					return hb_status_set(msg, n, HB_EINVAL,
 					                  "sample %zu: a jump changes t (%.17g -> %.17g)", i, a->t, b->t);
-				if (!check_in_D(sc, a))
-					return status_set(msg, n, HB_EINVAL,
+				if (!hb_check_in_D(sc, a))
+					return hb_status_set(msg, n, HB_EINVAL,
 					                  "sample %zu (t = %.17g, j = %ld): the pre-jump state is not in D",
 					                  i, a->t, a->j);
 				/* g: x, v, x_m, v_m unchanged, x_c = 0, z_c = 0, q_c = 1 - q_c, exactly */
 				if (b->x != a->x || b->v != a->v || b->xm != a->xm || b->vm != a->vm ||
 				    b->xc != 0.0 || b->q != 1 - a->q)
-					return status_set(msg, n, HB_EINVAL,
+					return hb_status_set(msg, n, HB_EINVAL,
 					                  "sample %zu (t = %.17g, j = %ld): the post-jump state is not g of the pre-jump state",
 					                  i + 1, b->t, b->j);
 				for (k = 0; k < nz; k++)
 					if (b->z[k] != 0.0)
-						return status_set(msg, n, HB_EINVAL,
+						return hb_status_set(msg, n, HB_EINVAL,
 						                  "sample %zu: z_c is not reset by the jump", i + 1);
 				continue;
-			} else if (b->j > a->j + 1 && skipped + (b->j - a->j - 1) <= arc_skipped(arc)) {
+			} else if (b->j > a->j + 1 && skipped + (b->j - a->j - 1) <= hb_arc_skipped(arc)) {
 				/*
 				 * Flow intervals thinned out (arc.h): a is still a
 				 * pre-jump state in D, b a post-jump one (x_c = 0,
 				 * z_c = 0, q_c alternating), later or at once.
 				 */
 				skipped += b->j - a->j - 1;
-				if (!(b->t >= a->t) || !check_in_D(sc, a) || b->xc != 0.0 ||
+				if (!(b->t >= a->t) || !hb_check_in_D(sc, a) || b->xc != 0.0 ||
 				    b->q != (int)((a->q + b->j - a->j) % 2))
-					return status_set(msg, n, HB_EINVAL,
+					return hb_status_set(msg, n, HB_EINVAL,
 					                  "sample %zu: the jumps thinned out between j = %ld "
 					                  "and j = %ld do not join", i, a->j, b->j);
 				for (k = 0; k < nz; k++)
 					if (b->z[k] != 0.0)
-						return status_set(msg, n, HB_EINVAL,
+						return hb_status_set(msg, n, HB_EINVAL,
 						                  "sample %zu: z_c is not reset by the jump", i + 1);
 				continue;
 			} else {
-				return status_set(msg, n, HB_EINVAL, "sample %zu: j goes from %ld to %ld",
+				return hb_status_set(msg, n, HB_EINVAL, "sample %zu: j goes from %ld to %ld",
 				                  i, a->j, b->j);
 			}
 		}
-		if (!check_in_C(sc, a))
-			return status_set(msg, n, HB_EINVAL,
+		if (!hb_check_in_C(sc, a))
+			return hb_status_set(msg, n, HB_EINVAL,
 			                  "sample %zu (t = %.17g, j = %ld, q_c = %d) is not in C",
 			                  i, a->t, a->j, a->q);
 	}
-	if (skipped != arc_skipped(arc))
-		return status_set(msg, n, HB_EINVAL, "%ld flow intervals are missing, but the arc "
-		                  "thinned out %ld", skipped, arc_skipped(arc));
+	if (skipped != hb_arc_skipped(arc))
+		return hb_status_set(msg, n, HB_EINVAL, "%ld flow intervals are missing, but the arc "
+		                  "thinned out %ld", skipped, hb_arc_skipped(arc));
 	return 0;
 }
 
@@ -113,16 +113,16 @@ check_solution_pair(const struct scene *sc, const struct arc *arc, char *msg, si
 enum { EX, EV, EXC, EZ };
 
 static int
-euler_dim(const struct scene *sc)
+euler_dim(const struct hb_scene *sc)
 {
-	return EZ + sc->law->n_z + (sc->d.system == SCENE_FULL ? 2 : 0);
+	return EZ + sc->law->n_z + (sc->d.system == HB_SCENE_FULL ? 2 : 0);
 }
 
 static void
-euler_f(const struct scene *sc, int q, double t, const double *y, double *dy)
+euler_f(const struct hb_scene *sc, int q, double t, const double *y, double *dy)
 {
 	int nz = sc->law->n_z, k;
-	double phi = 0.0, Fer = scene_Fer(sc, t);
+	double phi = 0.0, Fer = hb_scene_Fer(sc, t);
 
 	for (k = 0; k < euler_dim(sc); k++)
 		dy[k] = 0.0;
@@ -134,17 +134,17 @@ euler_f(const struct scene *sc, int q, double t, const double *y, double *dy)
 	}
 	dy[EX] = y[EV];
 	dy[EV] = (-phi + Fer) / sc->d.m;
-	if (sc->d.system == SCENE_FULL) {
+	if (sc->d.system == HB_SCENE_FULL) {
 		double F1, F2;
 
-		scene_loads_at(sc, t, &F1, &F2);
+		hb_scene_loads_at(sc, t, &F1, &F2);
 		dy[EZ + nz] = y[EZ + nz + 1];
 		dy[EZ + nz + 1] = (F1 + F2) / (sc->d.m1 + sc->d.m2);
 	}
 }
 
 static void
-euler_pack(const struct scene *sc, const struct arc_sample *a, double *y)
+euler_pack(const struct hb_scene *sc, const struct hb_arc_sample *a, double *y)
 {
 	int nz = sc->law->n_z, k;
 
@@ -153,33 +153,33 @@ euler_pack(const struct scene *sc, const struct arc_sample *a, double *y)
 	y[EXC] = a->xc;
 	for (k = 0; k < nz; k++)
 		y[EZ + k] = a->z[k];
-	if (sc->d.system == SCENE_FULL) {
+	if (sc->d.system == HB_SCENE_FULL) {
 		y[EZ + nz] = a->xm;
 		y[EZ + nz + 1] = a->vm;
 	}
 }
 
 int
-check_euler(const struct scene *sc, const struct arc *arc, size_t k, double *order,
+hb_check_euler(const struct hb_scene *sc, const struct hb_arc *arc, size_t k, double *order,
             char *msg, size_t n)
 {
-	const struct arc_interval *iv = arc_interval_at(arc, k);
+	const struct hb_arc_interval *iv = hb_arc_interval_at(arc, k);
 	double y0[16], y1[16], scale[16], y[16], dy[16], e_prev = NAN, e = NAN;
 	int dim = euler_dim(sc), i, levels = 0;
 	long N;
 	size_t s;
 
 	if (iv == NULL)
-		return status_set(msg, n, HB_EINVAL, "no interval %zu", k);
+		return hb_status_set(msg, n, HB_EINVAL, "no interval %zu", k);
 	if (!(iv->t1 > iv->t0))
-		return status_set(msg, n, HB_EINVAL, "interval %zu has no length", k);
-	euler_pack(sc, arc_at(arc, iv->first), y0);
-	euler_pack(sc, arc_at(arc, iv->last), y1);
+		return hb_status_set(msg, n, HB_EINVAL, "interval %zu has no length", k);
+	euler_pack(sc, hb_arc_at(arc, iv->first), y0);
+	euler_pack(sc, hb_arc_at(arc, iv->last), y1);
 	/* each component's size over the interval, for a scaled norm */
 	for (i = 0; i < dim; i++)
 		scale[i] = 0.0;
 	for (s = iv->first; s <= iv->last; s++) {
-		euler_pack(sc, arc_at(arc, s), y);
+		euler_pack(sc, hb_arc_at(arc, s), y);
 		for (i = 0; i < dim; i++)
 			scale[i] = fmax(scale[i], fabs(y[i]));
 	}
@@ -208,7 +208,7 @@ check_euler(const struct scene *sc, const struct arc *arc, size_t k, double *ord
 	}
 	if (!(e > 0.0) || !isfinite(e_prev)) {
 		*order = e == 0.0 ? INFINITY : NAN;
-		return e == 0.0 ? 0 : status_set(msg, n, HB_EINVAL,
+		return e == 0.0 ? 0 : hb_status_set(msg, n, HB_EINVAL,
 		                                 "interval %zu: forward Euler did not converge", k);
 	}
 	/* Euler is exact here (a flight at constant velocity): nothing but rounding to measure */
@@ -262,11 +262,11 @@ append_msg(char *msg, size_t n, const char *fmt_, ...)
 }
 
 int
-check_physics(const struct scene *sc, const struct arc *arc, struct check_physics *r,
+hb_check_physics(const struct hb_scene *sc, const struct hb_arc *arc, struct hb_check_physics *r,
               char *msg, size_t n)
 {
-	const double m = sc->d.m, K = CHECK_PHYS_FACTOR;
-	size_t i, k, len = arc_len(arc), nint = arc_nintervals(arc);
+	const double m = sc->d.m, K = HB_CHECK_PHYS_FACTOR;
+	size_t i, k, len = hb_arc_len(arc), nint = hb_arc_nintervals(arc);
 	double v0, escale = 0.0, eworst = 0.0;
 	long ci;
 
@@ -286,9 +286,9 @@ check_physics(const struct scene *sc, const struct arc *arc, struct check_physic
 		return 0;
 
 	/* the work-energy identity at every sample */
-	v0 = arc_at(arc, 0)->v;
+	v0 = hb_arc_at(arc, 0)->v;
 	for (i = 0; i < len; i++) {
-		const struct arc_sample *a = arc_at(arc, i);
+		const struct hb_arc_sample *a = hb_arc_at(arc, i);
 
 		escale = fmax(escale, fmax(0.5 * m * a->v * a->v, fmax(fabs(a->Ee), fabs(a->Wc))));
 		/*
@@ -300,7 +300,7 @@ check_physics(const struct scene *sc, const struct arc *arc, struct check_physic
 	}
 	r->escale = escale;
 	for (i = 0; i < len && escale > 0.0; i++) {
-		const struct arc_sample *a = arc_at(arc, i);
+		const struct hb_arc_sample *a = hb_arc_at(arc, i);
 		/* (v - v0)(v + v0) keeps the difference exact when v is near v0 */
 		double res = fabs(0.5 * m * (a->v - v0) * (a->v + v0) - (a->Ee + a->Wc)) / escale;
 
@@ -311,7 +311,7 @@ check_physics(const struct scene *sc, const struct arc *arc, struct check_physic
 	}
 	r->resid = eworst;
 	if (!(r->resid <= K * r->tol)) {
-		const struct arc_sample *a = arc_at(arc, r->resid_at);
+		const struct hb_arc_sample *a = hb_arc_at(arc, r->resid_at);
 
 		r->failed++;
 		append_msg(msg, n, "work-energy identity: the residual of m v^2/2 - m v0^2/2 = "
@@ -327,15 +327,15 @@ check_physics(const struct scene *sc, const struct arc *arc, struct check_physic
 	 * thinned out of a long run are simply not there.
 	 */
 	for (k = 0; k < nint; k++) {
-		const struct arc_interval *iv = arc_interval_at(arc, k);
-		const struct arc_sample *a0, *a1;
+		const struct hb_arc_interval *iv = hb_arc_interval_at(arc, k);
+		const struct hb_arc_sample *a0, *a1;
 		double Ei, Eec, eref, w, e, ebound, dev;
 
 		if (iv->q != 1)
 			continue;
-		a0 = arc_at(arc, iv->first);
-		a1 = arc_at(arc, iv->last);
-		if (a1->kind != ARC_PRE_JUMP)
+		a0 = hb_arc_at(arc, iv->first);
+		a1 = hb_arc_at(arc, iv->last);
+		if (a1->kind != HB_ARC_PRE_JUMP)
 			continue;
 		ci = (iv->j - 1) / 2;
 		Ei = 0.5 * m * a0->v * a0->v;

@@ -86,13 +86,13 @@ stream_err(FILE *f)
  * write, after which it writes no further row.
  */
 static int
-write_arc(FILE *f, const struct sim *s)
+write_arc(FILE *f, const struct hb_sim *s)
 {
-	const struct scene *sc = sim_scene(s);
-	const struct arc *a = sim_arc(s);
+	const struct hb_scene *sc = hb_sim_scene(s);
+	const struct hb_arc *a = hb_sim_arc(s);
 	int nz = sc->law != NULL ? sc->law->n_z : 0;
-	int full = sc->d.system == SCENE_FULL;
-	size_t len = arc_len(a);
+	int full = sc->d.system == HB_SCENE_FULL;
+	size_t len = hb_arc_len(a);
 	char name[16];
 	int e;
 
@@ -118,7 +118,7 @@ write_arc(FILE *f, const struct sim *s)
 	if ((e = stream_err(f)) != 0)
 		return e;
 	for (size_t i = 0; i < len; i++) {
-		const struct arc_sample *p = arc_at(a, i);
+		const struct hb_arc_sample *p = hb_arc_at(a, i);
 		print_num(f, p->t);
 		fprintf(f, ",%ld,%d", p->j, p->q);
 		csv_put_num(f, p->x);
@@ -143,25 +143,25 @@ write_arc(FILE *f, const struct sim *s)
 
 /* As write_arc, for the completed collisions. */
 static int
-write_collisions(FILE *f, const struct sim *s)
+write_collisions(FILE *f, const struct hb_sim *s)
 {
-	size_t nc = sim_ncollisions(s);
+	size_t nc = hb_sim_ncollisions(s);
 	int e;
 
-	for (int k = 0; k < collision_ncolumns; k++) /* the columns of columns.h */
-		put_field(f, collision_columns[k].name, k == 0);
+	for (int k = 0; k < hb_collision_ncolumns; k++) /* the columns of columns.h */
+		put_field(f, hb_collision_columns[k].name, k == 0);
 	fputc('\n', f);
 	if ((e = stream_err(f)) != 0)
 		return e;
 	for (size_t i = 0; i < nc; i++) {
-		const struct collision *c = sim_collision(s, i);
+		const struct hb_collision *c = hb_sim_collision(s, i);
 		if (c == NULL || !c->complete)
 			continue;
-		for (int k = 0; k < collision_ncolumns; k++) {
-			if (collision_columns[k].index)
+		for (int k = 0; k < hb_collision_ncolumns; k++) {
+			if (hb_collision_columns[k].index)
 				fprintf(f, "%s%ld", k ? "," : "", c->i);
 			else
-				csv_put_num(f, collision_value(c, &collision_columns[k]));
+				csv_put_num(f, hb_collision_value(c, &hb_collision_columns[k]));
 		}
 		fputc('\n', f);
 		if ((e = stream_err(f)) != 0)
@@ -170,7 +170,7 @@ write_collisions(FILE *f, const struct sim *s)
 	return 0;
 }
 
-typedef int (*rows_fn)(FILE *, const struct sim *);
+typedef int (*rows_fn)(FILE *, const struct hb_sim *);
 
 static void
 fill_arc(FILE *f, const void *s)
@@ -185,20 +185,20 @@ fill_collisions(FILE *f, const void *s)
 }
 
 int
-csv_write_arc(const char *path, const struct sim *s, char *msg, size_t n)
+hb_csv_write_arc(const char *path, const struct hb_sim *s, char *msg, size_t n)
 {
-	return atomic_write_with(path, fill_arc, s, msg, n);
+	return hb_atomic_write_with(path, fill_arc, s, msg, n);
 }
 
 int
-csv_write_collisions(const char *path, const struct sim *s, char *msg, size_t n)
+hb_csv_write_collisions(const char *path, const struct hb_sim *s, char *msg, size_t n)
 {
-	return atomic_write_with(path, fill_collisions, s, msg, n);
+	return hb_atomic_write_with(path, fill_collisions, s, msg, n);
 }
 
 /* Writes fn's CSV to the stream f and flushes it (see csv.h). */
 static int
-stream_one(FILE *f, const struct sim *s, rows_fn fn, char *msg, size_t n)
+stream_one(FILE *f, const struct hb_sim *s, rows_fn fn, char *msg, size_t n)
 {
 	int e;
 
@@ -210,19 +210,19 @@ stream_one(FILE *f, const struct sim *s, rows_fn fn, char *msg, size_t n)
 		e = stream_err(f);
 	if (e == 0)
 		return HB_OK;
-	status_set(msg, n, HB_EIO, "write error: %s", strerror(e));
+	hb_status_set(msg, n, HB_EIO, "write error: %s", strerror(e));
 	errno = e;
 	return HB_EIO;
 }
 
 int
-csv_stream_arc(FILE *f, const struct sim *s, char *msg, size_t n)
+hb_csv_stream_arc(FILE *f, const struct hb_sim *s, char *msg, size_t n)
 {
 	return stream_one(f, s, write_arc, msg, n);
 }
 
 int
-csv_stream_collisions(FILE *f, const struct sim *s, char *msg, size_t n)
+hb_csv_stream_collisions(FILE *f, const struct hb_sim *s, char *msg, size_t n)
 {
 	return stream_one(f, s, write_collisions, msg, n);
 }
@@ -269,7 +269,7 @@ is_shipped_preset(const char *path)
 	if (slash == NULL)
 		return 0;
 	snprintf(dir, sizeof dir, "%.*s", (int)(slash - rp), rp);
-	for (const char *const *d = preset_dirs(); d != NULL && *d != NULL; d++)
+	for (const char *const *d = hb_preset_dirs(); d != NULL && *d != NULL; d++)
 		if (realpath(*d, rdir) != NULL && strcmp(rdir, dir) == 0)
 			return 1;
 	return 0;
@@ -280,11 +280,11 @@ static int
 protect(const char *path, const char *what, const char *run_preset, char *msg, size_t n)
 {
 	if (same_file(path, run_preset))
-		return status_set(msg, n, HB_EINVAL,
+		return hb_status_set(msg, n, HB_EINVAL,
 		    "%s%s is the preset being run; an export never overwrites it: name the "
 		    "CSV file otherwise (e.g. run.csv)", path, what);
 	if (is_shipped_preset(path))
-		return status_set(msg, n, HB_EINVAL,
+		return hb_status_set(msg, n, HB_EINVAL,
 		    "%s%s is a shipped preset; an export never overwrites it: put the CSV "
 		    "file in another folder or name it otherwise", path, what);
 	return HB_OK;
@@ -296,7 +296,7 @@ protect(const char *path, const char *what, const char *run_preset, char *msg, s
  */
 static int
 plan(const char *trace, const char *coll, const char *scene, const char *run_preset,
-     struct csv_export_report *r, char *msg, size_t n)
+     struct hb_csv_export_report *r, char *msg, size_t n)
 {
 	const char *csv[2] = { trace, coll };
 	char what[4200];
@@ -305,27 +305,27 @@ plan(const char *trace, const char *coll, const char *scene, const char *run_pre
 	memset(r, 0, sizeof *r);
 	r->scene_of = -1;
 	if (trace == NULL && coll == NULL)
-		return status_set(msg, n, HB_EINVAL, "nothing to export: no file named");
+		return hb_status_set(msg, n, HB_EINVAL, "nothing to export: no file named");
 	if (trace != NULL && coll != NULL &&
 	    (strcmp(trace, coll) == 0 || same_file(trace, coll)))
-		return status_set(msg, n, HB_EINVAL,
+		return hb_status_set(msg, n, HB_EINVAL,
 		    "%s: the trace and the collisions need two different files", trace);
 	for (int k = 0; k < 2; k++) {
 		if (csv[k] == NULL)
 			continue;
-		if ((st = atomic_probe(csv[k], &r->target[k], msg, n)) != HB_OK)
+		if ((st = hb_atomic_probe(csv[k], &r->target[k], msg, n)) != HB_OK)
 			return st;
 		if ((st = protect(csv[k], "", run_preset, msg, n)) != HB_OK)
 			return st;
 		/* The scene goes beside the first CSV that is a file. */
-		if (r->scene_of < 0 && r->target[k].how != ATOMIC_IN_PLACE) {
+		if (r->scene_of < 0 && r->target[k].how != HB_ATOMIC_IN_PLACE) {
 			if (scene != NULL) {
 				if (strlen(scene) >= sizeof r->scene)
-					return status_set(msg, n, HB_EIO, "%s: %s", scene,
+					return hb_status_set(msg, n, HB_EIO, "%s: %s", scene,
 					                  strerror(ENAMETOOLONG));
 				snprintf(r->scene, sizeof r->scene, "%s", scene);
 			} else if (scene_path(csv[k], r->scene, sizeof r->scene) != 0)
-				return status_set(msg, n, HB_EIO, "%s: %s", csv[k],
+				return hb_status_set(msg, n, HB_EIO, "%s: %s", csv[k],
 				                  strerror(ENAMETOOLONG));
 			r->scene_of = k;
 		}
@@ -335,32 +335,32 @@ plan(const char *trace, const char *coll, const char *scene, const char *run_pre
 	snprintf(what, sizeof what, " (the scene saved beside %s)", csv[r->scene_of]);
 	for (int k = 0; k < 2; k++)
 		if (csv[k] != NULL && (strcmp(r->scene, csv[k]) == 0 || same_file(r->scene, csv[k])))
-			return status_set(msg, n, HB_EINVAL,
+			return hb_status_set(msg, n, HB_EINVAL,
 			    "%s%s would overwrite this export; name the CSV file otherwise "
 			    "(e.g. run.csv)", r->scene, what);
 	if ((st = protect(r->scene, what, run_preset, msg, n)) != HB_OK)
 		return st;
-	return atomic_probe(r->scene, &r->target[2], msg, n);
+	return hb_atomic_probe(r->scene, &r->target[2], msg, n);
 }
 
 int
-csv_export_check(const char *trace, const char *coll, const char *run_preset,
+hb_csv_export_check(const char *trace, const char *coll, const char *run_preset,
                  char *msg, size_t n)
 {
-	struct csv_export_report r;
+	struct hb_csv_export_report r;
 
 	return plan(trace, coll, NULL, run_preset, &r, msg, n);
 }
 
 /* ", the trace PATH (cksum CRC LENGTH)": one CSV of the export, file k of set. */
 static void
-name_csv(FILE *f, struct atomic_set *set, int k, const char *what, const char *path)
+name_csv(FILE *f, struct hb_atomic_set *set, int k, const char *what, const char *path)
 {
 	unsigned long crc;
 	unsigned long long len;
 
 	fprintf(f, ", the %s %s", what, path);
-	if (k >= 0 && atomic_cksum(set, k, &crc, &len) == HB_OK)
+	if (k >= 0 && hb_atomic_cksum(set, k, &crc, &len) == HB_OK)
 		fprintf(f, " (cksum %lu %llu)", crc, len);
 }
 
@@ -370,15 +370,15 @@ name_csv(FILE *f, struct atomic_set *set, int k, const char *what, const char *p
  * renames shows (each file of set is index k_trace, k_coll or -1).
  */
 static int
-write_scene(FILE *f, const struct sim *s, struct atomic_set *set,
+write_scene(FILE *f, const struct hb_sim *s, struct hb_atomic_set *set,
             const char *trace, int k_trace, const char *coll, int k_coll)
 {
-	size_t len = preset_format(sim_scene(s), NULL, 0);
+	size_t len = hb_preset_format(hb_sim_scene(s), NULL, 0);
 	char *buf = malloc(len + 1);
 
 	if (buf == NULL)
 		return ENOMEM;
-	preset_format(sim_scene(s), buf, len + 1);
+	hb_preset_format(hb_sim_scene(s), buf, len + 1);
 	fwrite(buf, 1, len, f);
 	free(buf);
 	fprintf(f, "\n; export %s: this scene", set->id);
@@ -391,18 +391,18 @@ write_scene(FILE *f, const struct sim *s, struct atomic_set *set,
 }
 
 int
-csv_export_files(const struct sim *s, const char *trace, const char *coll,
-                 const char *run_preset, struct csv_export_report *r, char *msg, size_t n)
+hb_csv_export_files(const struct hb_sim *s, const char *trace, const char *coll,
+                 const char *run_preset, struct hb_csv_export_report *r, char *msg, size_t n)
 {
-	return csv_export_files_scene(s, trace, coll, NULL, run_preset, r, msg, n);
+	return hb_csv_export_files_scene(s, trace, coll, NULL, run_preset, r, msg, n);
 }
 
 int
-csv_export_files_scene(const struct sim *s, const char *trace, const char *coll,
+hb_csv_export_files_scene(const struct hb_sim *s, const char *trace, const char *coll,
                        const char *scene, const char *run_preset,
-                       struct csv_export_report *r, char *msg, size_t n)
+                       struct hb_csv_export_report *r, char *msg, size_t n)
 {
-	struct atomic_set set;
+	struct hb_atomic_set set;
 	const char *paths[3];
 	int st, index[2] = { -1, -1 };   /* trace, collisions: their file in set */
 
@@ -411,7 +411,7 @@ csv_export_files_scene(const struct sim *s, const char *trace, const char *coll,
 	paths[0] = trace;
 	paths[1] = coll;
 	paths[2] = r->scene[0] ? r->scene : NULL;
-	atomic_begin(&set);
+	hb_atomic_begin(&set);
 	snprintf(r->id, sizeof r->id, "%s", set.id);
 	for (int k = 0; k < 3; k++) {
 		FILE *f;
@@ -419,9 +419,9 @@ csv_export_files_scene(const struct sim *s, const char *trace, const char *coll,
 
 		if (paths[k] == NULL)
 			continue;
-		f = atomic_add(&set, paths[k], msg, n);
+		f = hb_atomic_add(&set, paths[k], msg, n);
 		if (f == NULL) {
-			atomic_abort(&set);
+			hb_atomic_abort(&set);
 			return HB_EIO;
 		}
 		r->target[k] = set.file[set.n - 1].target;
@@ -431,19 +431,19 @@ csv_export_files_scene(const struct sim *s, const char *trace, const char *coll,
 		e = k == 0 ? write_arc(f, s) : k == 1 ? write_collisions(f, s)
 		           : write_scene(f, s, &set, trace, index[0], coll, index[1]);
 		if (e == ENOMEM) {
-			atomic_abort(&set);
-			return status_set(msg, n, HB_ENOMEM, "%s: out of memory", paths[k]);
+			hb_atomic_abort(&set);
+			return hb_status_set(msg, n, HB_ENOMEM, "%s: out of memory", paths[k]);
 		}
 	}
-	return atomic_commit(&set, msg, n);
+	return hb_atomic_commit(&set, msg, n);
 }
 
 int
-csv_export(const struct sim *s, const char *trace_path, const char *coll_path,
+hb_csv_export(const struct hb_sim *s, const char *trace_path, const char *coll_path,
            char *scene_out, size_t sn, char *msg, size_t n)
 {
-	struct csv_export_report r;
-	int st = csv_export_files(s, trace_path, coll_path, NULL, &r, msg, n);
+	struct hb_csv_export_report r;
+	int st = hb_csv_export_files(s, trace_path, coll_path, NULL, &r, msg, n);
 
 	if (st == HB_OK && scene_out != NULL && sn > 0)
 		snprintf(scene_out, sn, "%s", r.scene);

@@ -31,8 +31,8 @@
 #define FIT_FAIL_RESID 1e6      /* residual of a point whose run failed */
 
 struct ctx {
-	const struct scene *sc;
-	const struct fit_data *d;
+	const struct hb_scene *sc;
+	const struct hb_fit_data *d;
 	const struct fit_param *fp;
 	int np;
 	size_t npts;
@@ -43,30 +43,30 @@ struct ctx {
 	/* the last f evaluation, reused by df at the same x */
 	double *last_u, *last_r;
 	int have_last;
-	struct scene *scs;    /* np + 1 scenes */
+	struct hb_scene *scs;    /* np + 1 scenes */
 	double *y;            /* (np + 1) * npts simulated values */
 	int *fail;
 };
 
 static const char *const reasons[] = {
-	[FIT_CONVERGED_STEP] = "converged (the step became small)",
-	[FIT_CONVERGED_GRAD] = "converged (the gradient became small)",
-	[FIT_CONVERGED_COST] = "converged (the cost stopped decreasing)",
-	[FIT_MAXITER] = "stopped at the iteration cap",
-	[FIT_NOPROGRESS] = "stopped: no step lowered the cost",
-	[FIT_SINGULAR] = "stopped: singular Jacobian",
-	[FIT_FAILED] = "stopped: runs failed",
-	[FIT_RUNNING] = "running",
+	[HB_FIT_CONVERGED_STEP] = "converged (the step became small)",
+	[HB_FIT_CONVERGED_GRAD] = "converged (the gradient became small)",
+	[HB_FIT_CONVERGED_COST] = "converged (the cost stopped decreasing)",
+	[HB_FIT_MAXITER] = "stopped at the iteration cap",
+	[HB_FIT_NOPROGRESS] = "stopped: no step lowered the cost",
+	[HB_FIT_SINGULAR] = "stopped: singular Jacobian",
+	[HB_FIT_FAILED] = "stopped: runs failed",
+	[HB_FIT_RUNNING] = "running",
 };
 
 const char *
-fit_reason_str(int reason)
+hb_fit_reason_str(int reason)
 {
-	return reason >= 0 && reason <= FIT_RUNNING ? reasons[reason] : "?";
+	return reason >= 0 && reason <= HB_FIT_RUNNING ? reasons[reason] : "?";
 }
 
 void
-fit_result_free(struct fit_result *r)
+hb_fit_result_free(struct hb_fit_result *r)
 {
 	if (r == NULL)
 		return;
@@ -77,28 +77,28 @@ fit_result_free(struct fit_result *r)
 
 /* Fills the measured values and their sd, point by point (see fit_eval). */
 static void
-points_of(const struct fit_data *d, double *meas, double *sd, int *row, int *obs, int *scaled)
+points_of(const struct hb_fit_data *d, double *meas, double *sd, int *row, int *obs, int *scaled)
 {
 	size_t k = 0;
 
 	*scaled = 0;
-	if (d->kind == FIT_SEQUENCE) {
+	if (d->kind == HB_FIT_SEQUENCE) {
 		double m = 0;
 
 		for (size_t i = 1; i < d->n; i++)
-			m = fmax(m, fabs(d->col[FIT_OBS_TE][i] - d->col[FIT_OBS_TE][0]));
+			m = fmax(m, fabs(d->col[HB_FIT_OBS_TE][i] - d->col[HB_FIT_OBS_TE][0]));
 		for (size_t i = 1; i < d->n; i++, k++) {
-			meas[k] = d->col[FIT_OBS_TE][i] - d->col[FIT_OBS_TE][0];
+			meas[k] = d->col[HB_FIT_OBS_TE][i] - d->col[HB_FIT_OBS_TE][0];
 			/* the difference of two times: the variances add */
-			sd[k] = d->sd[FIT_OBS_TE] != NULL
-			    ? hypot(d->sd[FIT_OBS_TE][i], d->sd[FIT_OBS_TE][0]) : m;
+			sd[k] = d->sd[HB_FIT_OBS_TE] != NULL
+			    ? hypot(d->sd[HB_FIT_OBS_TE][i], d->sd[HB_FIT_OBS_TE][0]) : m;
 			row[k] = (int)i;
-			obs[k] = FIT_OBS_TE;
+			obs[k] = HB_FIT_OBS_TE;
 		}
-		*scaled = d->sd[FIT_OBS_TE] == NULL;
+		*scaled = d->sd[HB_FIT_OBS_TE] == NULL;
 		return;
 	}
-	for (int ob = FIT_OBS_E; ob < FIT_OBS_COUNT; ob++) {
+	for (int ob = HB_FIT_OBS_E; ob < HB_FIT_OBS_COUNT; ob++) {
 		double m = 0;
 
 		if (d->col[ob] == NULL)
@@ -122,7 +122,7 @@ points_of(const struct fit_data *d, double *meas, double *sd, int *row, int *obs
 static int
 eval_many(struct ctx *c, const double *const *u, int ns, char *msg, size_t n)
 {
-	double th[FIT_MAX_FREE];
+	double th[HB_FIT_MAX_FREE];
 
 	for (int s = 0; s < ns; s++) {
 		c->scs[s] = *c->sc;
@@ -144,7 +144,7 @@ static int
 f_cb(const gsl_vector *x, void *params, gsl_vector *f)
 {
 	struct ctx *c = params;
-	double u[FIT_MAX_FREE];
+	double u[HB_FIT_MAX_FREE];
 	const double *up = u;
 	char m[256];
 
@@ -163,8 +163,8 @@ static int
 df_cb(const gsl_vector *x, void *params, gsl_matrix *J)
 {
 	struct ctx *c = params;
-	double u[FIT_MAX_FREE + 1][FIT_MAX_FREE], h[FIT_MAX_FREE];
-	const double *up[FIT_MAX_FREE + 1];
+	double u[HB_FIT_MAX_FREE + 1][HB_FIT_MAX_FREE], h[HB_FIT_MAX_FREE];
+	const double *up[HB_FIT_MAX_FREE + 1];
 	double *r0, *r1;
 	int base = 1, same = c->have_last;
 	char m[256];
@@ -207,13 +207,13 @@ df_cb(const gsl_vector *x, void *params, gsl_matrix *J)
 
 /* Standard errors and correlations of theta at u from J (see the top). */
 static void
-errors(const gsl_matrix *J, struct ctx *c, const double *u, struct fit_result *r)
+errors(const gsl_matrix *J, struct ctx *c, const double *u, struct hb_fit_result *r)
 {
 	int p = c->np;
 	gsl_matrix *C = gsl_matrix_alloc((size_t)p, (size_t)p);
-	double T[FIT_MAX_FREE * FIT_MAX_FREE], th[FIT_MAX_FREE], s2 = 1;
-	double cov[FIT_MAX_FREE * FIT_MAX_FREE];
-	struct scene tmp = *c->sc;
+	double T[HB_FIT_MAX_FREE * HB_FIT_MAX_FREE], th[HB_FIT_MAX_FREE], s2 = 1;
+	double cov[HB_FIT_MAX_FREE * HB_FIT_MAX_FREE];
+	struct hb_scene tmp = *c->sc;
 	char m[256];
 
 	for (int i = 0; i < p; i++)
@@ -241,15 +241,15 @@ errors(const gsl_matrix *J, struct ctx *c, const double *u, struct fit_result *r
 		r->se[i] = sqrt(cov[i * p + i]);
 	for (int i = 0; i < p; i++)
 		for (int j = 0; j < p; j++)
-			r->corr[i * FIT_MAX_FREE + j] = cov[i * p + j] / (r->se[i] * r->se[j]);
+			r->corr[i * HB_FIT_MAX_FREE + j] = cov[i * p + j] / (r->se[i] * r->se[j]);
 	gsl_matrix_free(C);
 }
 
 /* The fit in progress (fit.h): the solver, its callbacks' context, the result so far. */
-struct fit {
+struct hb_fit {
 	struct ctx c;                 /* c.sc -> scene, c.fp -> fp */
-	struct scene scene;
-	struct fit_param fp[FIT_MAX_FREE];
+	struct hb_scene scene;
+	struct fit_param fp[HB_FIT_MAX_FREE];
 	gsl_multifit_nlinear_fdf fdf;
 	gsl_multifit_nlinear_workspace *w;
 	double xtol, gtol, ftol;
@@ -257,11 +257,11 @@ struct fit {
 	void (*progress)(void *ctx, int iter, double cost, long runs);
 	void *pctx;
 	int done;
-	struct fit_result r;          /* keys, starts, points (start values), cost0; reason */
+	struct hb_fit_result r;          /* keys, starts, points (start values), cost0; reason */
 };
 
 void
-fit_free(struct fit *f)
+hb_fit_free(struct hb_fit *f)
 {
 	if (f == NULL)
 		return;
@@ -278,26 +278,26 @@ fit_free(struct fit *f)
 	free(f);
 }
 
-struct fit *
-fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_options *o,
+struct hb_fit *
+hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct hb_fit_options *o,
         char *msg, size_t n)
 {
 	gsl_multifit_nlinear_parameters par = gsl_multifit_nlinear_default_parameters();
-	struct fit *f;
-	struct fit_result *r;
+	struct hb_fit *f;
+	struct hb_fit_result *r;
 	struct ctx *c;
-	double u[FIT_MAX_FREE];
+	double u[HB_FIT_MAX_FREE];
 	int np = o->nkeys, *row = NULL, *obs = NULL;
-	size_t npts = fit_npoints(d);
+	size_t npts = hb_fit_npoints(d);
 	gsl_vector_view xv;
 
 	gsl_set_error_handler_off();
-	if (np < 1 || np > FIT_MAX_FREE) {
-		status_set(msg, n, HB_EINVAL, "--free: %d keys; accepted: 1 to %d", np, FIT_MAX_FREE);
+	if (np < 1 || np > HB_FIT_MAX_FREE) {
+		hb_status_set(msg, n, HB_EINVAL, "--free: %d keys; accepted: 1 to %d", np, HB_FIT_MAX_FREE);
 		return NULL;
 	}
 	if ((f = calloc(1, sizeof *f)) == NULL) {
-		status_set(msg, n, HB_ENOMEM, "out of memory");
+		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		return NULL;
 	}
 	r = &f->r;
@@ -308,15 +308,15 @@ fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_optio
 			goto fail;
 		for (int j = 0; j < i; j++)
 			if (strcmp(o->keys[i], o->keys[j]) == 0) {
-				status_set(msg, n, HB_EINVAL, "--free: %s given twice", o->keys[i]);
+				hb_status_set(msg, n, HB_EINVAL, "--free: %s given twice", o->keys[i]);
 				goto fail;
 			}
 		snprintf(r->key[i], sizeof r->key[i], "%s", o->keys[i]);
 		u[i] = f->fp[i].u0;
-		fit_key_get(sc, o->keys[i], &r->start[i], msg, n);
+		hb_fit_key_get(sc, o->keys[i], &r->start[i], msg, n);
 	}
 	if (npts < (size_t)np) {
-		status_set(msg, n, HB_EINVAL, "%s: %zu data point%s cannot determine %d "
+		hb_status_set(msg, n, HB_EINVAL, "%s: %zu data point%s cannot determine %d "
 		    "parameters; accepted: at least as many points as free keys", d->source, npts,
 		    npts == 1 ? "" : "s", np);
 		goto fail;
@@ -349,7 +349,7 @@ fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_optio
 	r->point = calloc(npts, sizeof *r->point);
 	c->meas = malloc(npts * sizeof(double));
 	c->sd = malloc(npts * sizeof(double));
-	c->last_u = malloc(FIT_MAX_FREE * sizeof(double));
+	c->last_u = malloc(HB_FIT_MAX_FREE * sizeof(double));
 	c->last_r = malloc(npts * sizeof(double));
 	c->scs = malloc((size_t)(np + 1) * sizeof *c->scs);
 	c->y = malloc((size_t)(np + 1) * npts * sizeof(double));
@@ -359,7 +359,7 @@ fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_optio
 	if (r->point == NULL || c->meas == NULL || c->sd == NULL || c->last_u == NULL
 	    || c->last_r == NULL || c->scs == NULL || c->y == NULL || c->fail == NULL
 	    || row == NULL || obs == NULL) {
-		status_set(msg, n, HB_ENOMEM, "out of memory");
+		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto fail;
 	}
 	points_of(d, c->meas, c->sd, row, obs, &r->sd_scaled);
@@ -371,11 +371,11 @@ fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_optio
 		int st;
 
 		if ((st = eval_many(c, &up, 1, m, sizeof m)) != HB_OK) {
-			status_set(msg, n, st, "the start: %s", m);
+			hb_status_set(msg, n, st, "the start: %s", m);
 			goto fail;
 		}
 		if (c->fail[0]) {
-			status_set(msg, n, HB_EINVAL, "at the start: %s; choose another start with "
+			hb_status_set(msg, n, HB_EINVAL, "at the start: %s; choose another start with "
 			    "--set", m);
 			goto fail;
 		}
@@ -403,7 +403,7 @@ fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_optio
 	par.solver = gsl_multifit_nlinear_solver_qr;
 	f->w = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &par, npts, (size_t)np);
 	if (f->w == NULL) {
-		status_set(msg, n, HB_ENOMEM, "out of memory");
+		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto fail;
 	}
 	xv = gsl_vector_view_array(u, (size_t)np);
@@ -411,21 +411,21 @@ fit_new(const struct scene *sc, const struct fit_data *d, const struct fit_optio
 	/* A Jacobian singular at the start: no iteration can tell the keys apart. */
 	if (fit_identifiability(gsl_multifit_nlinear_jac(f->w), f->fp, np, &r->cond, r->unident,
 	                    sizeof r->unident)) {
-		r->reason = FIT_SINGULAR;
+		r->reason = HB_FIT_SINGULAR;
 		f->done = 1;
 	}
 	return f;
 fail:
 	free(row);
 	free(obs);
-	fit_free(f);
+	hb_fit_free(f);
 	return NULL;
 }
 
 int
-fit_iterate(struct fit *f)
+hb_fit_iterate(struct hb_fit *f)
 {
-	struct fit_result *r = &f->r;
+	struct hb_fit_result *r = &f->r;
 	int info = 0, s;
 	gsl_vector *fv;
 	double cost;
@@ -448,46 +448,46 @@ fit_iterate(struct fit *f)
 		 */
 		double left = fit_gn_decrease(gsl_multifit_nlinear_jac(f->w), fv);
 
-		r->reason = left <= f->ftol * cost ? FIT_CONVERGED_COST : FIT_NOPROGRESS;
+		r->reason = left <= f->ftol * cost ? HB_FIT_CONVERGED_COST : HB_FIT_NOPROGRESS;
 		f->done = 1;
 	} else if (s != GSL_SUCCESS) {
-		r->reason = FIT_FAILED;
+		r->reason = HB_FIT_FAILED;
 		snprintf(r->why, sizeof r->why, "%s", gsl_strerror(s));
 		f->done = 1;
 	} else if (gsl_multifit_nlinear_test(f->xtol, f->gtol, f->ftol, &info, f->w)
 	           == GSL_SUCCESS) {
-		r->reason = info == 1 ? FIT_CONVERGED_STEP : info == 2
-		    ? FIT_CONVERGED_GRAD : FIT_CONVERGED_COST;
+		r->reason = info == 1 ? HB_FIT_CONVERGED_STEP : info == 2
+		    ? HB_FIT_CONVERGED_GRAD : HB_FIT_CONVERGED_COST;
 		f->done = 1;
 	} else if (r->iter >= f->max_iter) {
-		r->reason = FIT_MAXITER;
+		r->reason = HB_FIT_MAXITER;
 		f->done = 1;
 	}
-	if (f->done && r->reason != FIT_FAILED
+	if (f->done && r->reason != HB_FIT_FAILED
 	    && fit_identifiability(gsl_multifit_nlinear_jac(f->w), f->fp, f->c.np, &r->cond,
 	                       r->unident, sizeof r->unident))
-		r->reason = FIT_SINGULAR;
+		r->reason = HB_FIT_SINGULAR;
 	return f->done;
 }
 
 int
-fit_result_get(struct fit *f, struct fit_result *out, char *msg, size_t n)
+hb_fit_result_get(struct hb_fit *f, struct hb_fit_result *out, char *msg, size_t n)
 {
-	struct fit_result *r = out;
+	struct hb_fit_result *r = out;
 	struct ctx *c = &f->c;
 	int np = c->np;
-	double u[FIT_MAX_FREE], th[FIT_MAX_FREE];
+	double u[HB_FIT_MAX_FREE], th[HB_FIT_MAX_FREE];
 	gsl_vector *fv = gsl_multifit_nlinear_residual(f->w);
 
 	*r = f->r;
 	r->point = malloc(c->npts * sizeof *r->point);
 	if (r->point == NULL) {
 		r->npoints = 0;
-		return status_set(msg, n, HB_ENOMEM, "out of memory");
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
 	memcpy(r->point, f->r.point, c->npts * sizeof *r->point);
 	if (!f->done)
-		r->reason = FIT_RUNNING;
+		r->reason = HB_FIT_RUNNING;
 	/* The best point: GSL's position is the last accepted one. */
 	for (int j = 0; j < np; j++)
 		u[j] = gsl_vector_get(gsl_multifit_nlinear_position(f->w), (size_t)j);
@@ -495,7 +495,7 @@ fit_result_get(struct fit *f, struct fit_result *out, char *msg, size_t n)
 	if (fit_param_apply(&r->fitted, f->fp, np, u, th, NULL, msg, n) != HB_OK)
 		return HB_EINVAL;
 	for (int j = 0; j < np; j++)
-		fit_key_get(&r->fitted, r->key[j], &r->value[j], msg, n);
+		hb_fit_key_get(&r->fitted, r->key[j], &r->value[j], msg, n);
 	r->cost = 0;
 	for (size_t k = 0; k < c->npts; k++) {
 		double rk = gsl_vector_get(fv, k);
@@ -505,38 +505,38 @@ fit_result_get(struct fit *f, struct fit_result *out, char *msg, size_t n)
 		r->cost += rk * rk;
 	}
 	errors(gsl_multifit_nlinear_jac(f->w), c, u, r);
-	if (r->reason == FIT_SINGULAR) {
+	if (r->reason == HB_FIT_SINGULAR) {
 		for (int j = 0; j < np; j++)
 			if (strstr(r->unident, r->key[j]) != NULL)
 				r->se[j] = NAN;
 		snprintf(r->why, sizeof r->why, "not identifiable from these data: %s "
 		    "(condition number of the scaled Jacobian %.3g)", r->unident, r->cond);
-	} else if (r->reason != FIT_FAILED) {
-		snprintf(r->why, sizeof r->why, "%s", fit_reason_str(r->reason));
+	} else if (r->reason != HB_FIT_FAILED) {
+		snprintf(r->why, sizeof r->why, "%s", hb_fit_reason_str(r->reason));
 	}
 	r->runs = c->runs;
 	return HB_OK;
 }
 
 int
-fit_run(const struct scene *sc, const struct fit_data *d, const struct fit_options *o,
-        struct fit_result *r, char *msg, size_t n)
+hb_fit_run(const struct hb_scene *sc, const struct hb_fit_data *d, const struct hb_fit_options *o,
+        struct hb_fit_result *r, char *msg, size_t n)
 {
-	struct fit *f;
+	struct hb_fit *f;
 	int st;
 
 	memset(r, 0, sizeof *r);
-	if ((f = fit_new(sc, d, o, msg, n)) == NULL)
+	if ((f = hb_fit_new(sc, d, o, msg, n)) == NULL)
 		return msg != NULL && strstr(msg, "out of memory") != NULL ? HB_ENOMEM : HB_EINVAL;
-	while (!fit_iterate(f))
+	while (!hb_fit_iterate(f))
 		;
-	st = fit_result_get(f, r, msg, n);
-	fit_free(f);
+	st = hb_fit_result_get(f, r, msg, n);
+	hb_fit_free(f);
 	return st;
 }
 
 int
-fit_simulate(const struct scene *sc, const struct fit_data *d, int jobs, double *out,
+hb_fit_simulate(const struct hb_scene *sc, const struct hb_fit_data *d, int jobs, double *out,
              char *msg, size_t n)
 {
 	int fail = 0;

@@ -3,7 +3,7 @@
  * columns (a bouncing sequence by t_e, separate drops by v_i and e), and
  * sequences from impact times.  See fit.h for the formats.
  *
- * Invariant: a struct fit_data returned with status 0 has n >= 1 rows, every
+ * Invariant: a struct hb_fit_data returned with status 0 has n >= 1 rows, every
  * present column holds n finite values, every sd is > 0, and the t_e of a
  * sequence are strictly increasing.
  */
@@ -19,21 +19,21 @@
 
 enum { MAX_COLS = 64 };
 
-static const char *const obs_names[FIT_OBS_COUNT] = { "t_e", "e", "x_c_r", "t_d" };
+static const char *const obs_names[HB_FIT_OBS_COUNT] = { "t_e", "e", "x_c_r", "t_d" };
 
 const char *
-fit_obs_name(int obs)
+hb_fit_obs_name(int obs)
 {
-	return obs >= 0 && obs < FIT_OBS_COUNT ? obs_names[obs] : "?";
+	return obs >= 0 && obs < HB_FIT_OBS_COUNT ? obs_names[obs] : "?";
 }
 
 void
-fit_data_free(struct fit_data *d)
+hb_fit_data_free(struct hb_fit_data *d)
 {
 	if (d == NULL)
 		return;
 	free(d->vi);
-	for (int k = 0; k < FIT_OBS_COUNT; k++) {
+	for (int k = 0; k < HB_FIT_OBS_COUNT; k++) {
 		free(d->col[k]);
 		free(d->sd[k]);
 	}
@@ -90,67 +90,67 @@ push(double **a, size_t n, size_t *cap, double v)
 
 /* Checks the invariant of the header comment. */
 static int
-check_data(struct fit_data *d, char *msg, size_t mn)
+check_data(struct hb_fit_data *d, char *msg, size_t mn)
 {
 	if (d->n == 0)
-		return status_set(msg, mn, HB_EINVAL, "%s: no data rows", d->source);
-	for (int k = 0; k < FIT_OBS_COUNT; k++)
+		return hb_status_set(msg, mn, HB_EINVAL, "%s: no data rows", d->source);
+	for (int k = 0; k < HB_FIT_OBS_COUNT; k++)
 		for (size_t i = 0; d->sd[k] != NULL && i < d->n; i++)
 			if (!(d->sd[k][i] > 0))
-				return status_set(msg, mn, HB_EINVAL, "%s: row %zu: sd_%s = %g; "
+				return hb_status_set(msg, mn, HB_EINVAL, "%s: row %zu: sd_%s = %g; "
 				    "accepted: a standard deviation > 0", d->source, i + 1,
 				    obs_names[k], d->sd[k][i]);
-	if (d->kind == FIT_SEQUENCE) {
+	if (d->kind == HB_FIT_SEQUENCE) {
 		if (d->n < 2)
-			return status_set(msg, mn, HB_EINVAL, "%s: a sequence needs at least 2 "
+			return hb_status_set(msg, mn, HB_EINVAL, "%s: a sequence needs at least 2 "
 			    "impact times (the first one only aligns the clocks)", d->source);
 		for (size_t i = 1; i < d->n; i++)
-			if (!(d->col[FIT_OBS_TE][i] > d->col[FIT_OBS_TE][i - 1]))
-				return status_set(msg, mn, HB_EINVAL, "%s: row %zu: t_e = %.9g is "
+			if (!(d->col[HB_FIT_OBS_TE][i] > d->col[HB_FIT_OBS_TE][i - 1]))
+				return hb_status_set(msg, mn, HB_EINVAL, "%s: row %zu: t_e = %.9g is "
 				    "not after the previous one (%.9g); accepted: impact times in "
-				    "increasing order", d->source, i + 1, d->col[FIT_OBS_TE][i],
-				    d->col[FIT_OBS_TE][i - 1]);
+				    "increasing order", d->source, i + 1, d->col[HB_FIT_OBS_TE][i],
+				    d->col[HB_FIT_OBS_TE][i - 1]);
 	} else {
 		for (size_t i = 0; i < d->n; i++) {
 			if (d->vi[i] == 0)
-				return status_set(msg, mn, HB_EINVAL, "%s: row %zu: v_i = 0; accepted: "
+				return hb_status_set(msg, mn, HB_EINVAL, "%s: row %zu: v_i = 0; accepted: "
 				    "an approach velocity other than 0", d->source, i + 1);
 			d->vi[i] = -fabs(d->vi[i]);
 		}
-		if (d->col[FIT_OBS_E] != NULL)
+		if (d->col[HB_FIT_OBS_E] != NULL)
 			for (size_t i = 0; i < d->n; i++)
-				if (d->col[FIT_OBS_E][i] < 0)
-					return status_set(msg, mn, HB_EINVAL, "%s: row %zu: e = %g; "
+				if (d->col[HB_FIT_OBS_E][i] < 0)
+					return hb_status_set(msg, mn, HB_EINVAL, "%s: row %zu: e = %g; "
 					    "accepted: a restitution >= 0", d->source, i + 1,
-					    d->col[FIT_OBS_E][i]);
+					    d->col[HB_FIT_OBS_E][i]);
 	}
 	return HB_OK;
 }
 
 int
-fit_data_from_times(const double *t, const double *sd, size_t n, const char *source,
-                    struct fit_data *d, char *msg, size_t mn)
+hb_fit_data_from_times(const double *t, const double *sd, size_t n, const char *source,
+                    struct hb_fit_data *d, char *msg, size_t mn)
 {
 	int st;
 
 	memset(d, 0, sizeof *d);
 	snprintf(d->source, sizeof d->source, "%s", source);
-	d->kind = FIT_SEQUENCE;
+	d->kind = HB_FIT_SEQUENCE;
 	d->n = n;
-	d->col[FIT_OBS_TE] = malloc((n ? n : 1) * sizeof(double));
+	d->col[HB_FIT_OBS_TE] = malloc((n ? n : 1) * sizeof(double));
 	if (sd != NULL)
-		d->sd[FIT_OBS_TE] = malloc((n ? n : 1) * sizeof(double));
-	if (d->col[FIT_OBS_TE] == NULL || (sd != NULL && d->sd[FIT_OBS_TE] == NULL)) {
-		fit_data_free(d);
-		return status_set(msg, mn, HB_ENOMEM, "out of memory");
+		d->sd[HB_FIT_OBS_TE] = malloc((n ? n : 1) * sizeof(double));
+	if (d->col[HB_FIT_OBS_TE] == NULL || (sd != NULL && d->sd[HB_FIT_OBS_TE] == NULL)) {
+		hb_fit_data_free(d);
+		return hb_status_set(msg, mn, HB_ENOMEM, "out of memory");
 	}
 	for (size_t i = 0; i < n; i++) {
-		d->col[FIT_OBS_TE][i] = t[i];
+		d->col[HB_FIT_OBS_TE][i] = t[i];
 		if (sd != NULL)
-			d->sd[FIT_OBS_TE][i] = sd[i];
+			d->sd[HB_FIT_OBS_TE][i] = sd[i];
 	}
 	if ((st = check_data(d, msg, mn)) != HB_OK)
-		fit_data_free(d);
+		hb_fit_data_free(d);
 	return st;
 }
 
@@ -161,35 +161,35 @@ struct colmap {
 };
 
 int
-fit_data_load(const char *path, struct fit_data *d, char *msg, size_t mn)
+hb_fit_data_load(const char *path, struct hb_fit_data *d, char *msg, size_t mn)
 {
 	FILE *f;
 	int st;
 
 	memset(d, 0, sizeof *d);
 	if ((f = fopen(path, "r")) == NULL)
-		return status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(errno));
-	st = fit_data_read(f, path, d, msg, mn);
+		return hb_status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(errno));
+	st = hb_fit_data_read(f, path, d, msg, mn);
 	fclose(f);
 	return st;
 }
 
 int
-fit_data_read(FILE *f, const char *path, struct fit_data *d, char *msg, size_t mn)
+hb_fit_data_read(FILE *f, const char *path, struct hb_fit_data *d, char *msg, size_t mn)
 {
 	char *line = NULL, *fld[MAX_COLS];
 	size_t lcap = 0;
 	ssize_t len;
 	long lineno = 0;
 	int ncol = 0, st = HB_OK, have_hdr = 0;
-	int idx_vi = -1, idx[FIT_OBS_COUNT], idx_sd[FIT_OBS_COUNT];
+	int idx_vi = -1, idx[HB_FIT_OBS_COUNT], idx_sd[HB_FIT_OBS_COUNT];
 	struct colmap map[MAX_COLS];
 	char hname[MAX_COLS][32];
 
 	memset(d, 0, sizeof *d);
 	memset(map, 0, sizeof map);
 	snprintf(d->source, sizeof d->source, "%s", path);
-	for (int k = 0; k < FIT_OBS_COUNT; k++)
+	for (int k = 0; k < HB_FIT_OBS_COUNT; k++)
 		idx[k] = idx_sd[k] = -1;
 
 	while ((len = getline(&line, &lcap, f)) != -1) {
@@ -204,7 +204,7 @@ fit_data_read(FILE *f, const char *path, struct fit_data *d, char *msg, size_t m
 		if (*p == '\0' || *p == '#')
 			continue;
 		if ((nf = split(p, fld, MAX_COLS)) < 0) {
-			st = status_set(msg, mn, HB_EINVAL, "%s:%ld: more than %d columns", path,
+			st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: more than %d columns", path,
 			    lineno, MAX_COLS);
 			goto out;
 		}
@@ -213,7 +213,7 @@ fit_data_read(FILE *f, const char *path, struct fit_data *d, char *msg, size_t m
 			ncol = nf;
 			for (int c = 0; c < nf; c++) {
 				snprintf(hname[c], sizeof hname[c], "%s", fld[c]);
-				for (int k = 0; k < FIT_OBS_COUNT; k++) {
+				for (int k = 0; k < HB_FIT_OBS_COUNT; k++) {
 					if (strcmp(fld[c], obs_names[k]) == 0)
 						idx[k] = c;
 					if (strncmp(fld[c], "sd_", 3) == 0
@@ -223,23 +223,23 @@ fit_data_read(FILE *f, const char *path, struct fit_data *d, char *msg, size_t m
 				if (strcmp(fld[c], "v_i") == 0)
 					idx_vi = c;
 			}
-			if (idx[FIT_OBS_TE] >= 0) {
-				d->kind = FIT_SEQUENCE;
-				map[idx[FIT_OBS_TE]].dst = &d->col[FIT_OBS_TE];
-				if (idx_sd[FIT_OBS_TE] >= 0)
-					map[idx_sd[FIT_OBS_TE]].dst = &d->sd[FIT_OBS_TE];
-			} else if (idx_vi >= 0 && (idx[FIT_OBS_E] >= 0 || idx[FIT_OBS_XCR] >= 0
-			                           || idx[FIT_OBS_TD] >= 0)) {
-				d->kind = FIT_DROPS;
+			if (idx[HB_FIT_OBS_TE] >= 0) {
+				d->kind = HB_FIT_SEQUENCE;
+				map[idx[HB_FIT_OBS_TE]].dst = &d->col[HB_FIT_OBS_TE];
+				if (idx_sd[HB_FIT_OBS_TE] >= 0)
+					map[idx_sd[HB_FIT_OBS_TE]].dst = &d->sd[HB_FIT_OBS_TE];
+			} else if (idx_vi >= 0 && (idx[HB_FIT_OBS_E] >= 0 || idx[HB_FIT_OBS_XCR] >= 0
+			                           || idx[HB_FIT_OBS_TD] >= 0)) {
+				d->kind = HB_FIT_DROPS;
 				map[idx_vi].dst = &d->vi;
-				for (int k = FIT_OBS_E; k < FIT_OBS_COUNT; k++) {
+				for (int k = HB_FIT_OBS_E; k < HB_FIT_OBS_COUNT; k++) {
 					if (idx[k] >= 0)
 						map[idx[k]].dst = &d->col[k];
 					if (idx[k] >= 0 && idx_sd[k] >= 0)
 						map[idx_sd[k]].dst = &d->sd[k];
 				}
 			} else {
-				st = status_set(msg, mn, HB_EINVAL, "%s:%ld: no data columns recognised; "
+				st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: no data columns recognised; "
 				    "accepted: a column t_e (impact times of one bouncing sequence), or "
 				    "v_i with e, x_c_r and/or t_d (separate drops), each optionally with "
 				    "sd_NAME", path, lineno);
@@ -248,7 +248,7 @@ fit_data_read(FILE *f, const char *path, struct fit_data *d, char *msg, size_t m
 			continue;
 		}
 		if (nf != ncol) {
-			st = status_set(msg, mn, HB_EINVAL, "%s:%ld: %d fields, the header has %d",
+			st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: %d fields, the header has %d",
 			    path, lineno, nf, ncol);
 			goto out;
 		}
@@ -261,23 +261,23 @@ fit_data_read(FILE *f, const char *path, struct fit_data *d, char *msg, size_t m
 			errno = 0;
 			v = strtod(fld[c], &end);
 			if (fld[c][0] == '\0' || *end != '\0' || !isfinite(v)) {
-				st = status_set(msg, mn, HB_EINVAL, "%s:%ld: column %s: '%s'; accepted: "
+				st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: column %s: '%s'; accepted: "
 				    "a finite number in SI units", path, lineno, hname[c], fld[c]);
 				goto out;
 			}
 			if (push(map[c].dst, d->n, &map[c].cap, v) != 0) {
-				st = status_set(msg, mn, HB_ENOMEM, "out of memory");
+				st = hb_status_set(msg, mn, HB_ENOMEM, "out of memory");
 				goto out;
 			}
 		}
 		d->n++;
 	}
 	if (ferror(f)) {
-		st = status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(errno));
+		st = hb_status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(errno));
 		goto out;
 	}
 	if (!have_hdr) {
-		st = status_set(msg, mn, HB_EINVAL, "%s: empty file; accepted: a CSV file with "
+		st = hb_status_set(msg, mn, HB_EINVAL, "%s: empty file; accepted: a CSV file with "
 		    "a header row (t_e, or v_i and e ...)", path);
 		goto out;
 	}
@@ -285,18 +285,18 @@ fit_data_read(FILE *f, const char *path, struct fit_data *d, char *msg, size_t m
 out:
 	free(line);
 	if (st != HB_OK)
-		fit_data_free(d);
+		hb_fit_data_free(d);
 	return st;
 }
 
 size_t
-fit_npoints(const struct fit_data *d)
+hb_fit_npoints(const struct hb_fit_data *d)
 {
 	size_t np = 0;
 
-	if (d->kind == FIT_SEQUENCE)
+	if (d->kind == HB_FIT_SEQUENCE)
 		return d->n > 0 ? d->n - 1 : 0;
-	for (int k = FIT_OBS_E; k < FIT_OBS_COUNT; k++)
+	for (int k = HB_FIT_OBS_E; k < HB_FIT_OBS_COUNT; k++)
 		if (d->col[k] != NULL)
 			np += d->n;
 	return np;

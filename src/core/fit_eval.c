@@ -28,7 +28,7 @@
 #define STEPS_PER_COLLISION 5000
 
 struct task {
-	const struct scene *sc;
+	const struct hb_scene *sc;
 	int s;           /* scene index */
 	long row;        /* drop row, or -1 for the sequence */
 	int fail;
@@ -36,7 +36,7 @@ struct task {
 };
 
 struct pool {
-	const struct fit_data *d;
+	const struct hb_fit_data *d;
 	struct task *t;
 	size_t ntask, next;
 	size_t npts;
@@ -49,11 +49,11 @@ struct pool {
 static void
 run_sequence(struct pool *pl, struct task *tk)
 {
-	const struct fit_data *d = pl->d;
-	struct scene sc = *tk->sc;
+	const struct hb_fit_data *d = pl->d;
+	struct hb_scene sc = *tk->sc;
 	double *o = pl->out + (size_t)tk->s * pl->npts;
-	double span = d->col[FIT_OBS_TE][d->n - 1] - d->col[FIT_OBS_TE][0];
-	struct sim *s;
+	double span = d->col[HB_FIT_OBS_TE][d->n - 1] - d->col[HB_FIT_OBS_TE][0];
+	struct hb_sim *s;
 	size_t nc;
 	char m[256];
 
@@ -62,72 +62,72 @@ run_sequence(struct pool *pl, struct task *tk)
 		sc.run.T = 10 * span + 1; /* room for the fall before the first impact */
 	for (size_t k = 0; k < pl->npts; k++)
 		o[k] = pl->penalty;
-	if ((s = sim_new(&sc, m, sizeof m)) == NULL) {
+	if ((s = hb_sim_new(&sc, m, sizeof m)) == NULL) {
 		tk->fail = 1;
 		snprintf(tk->msg, sizeof tk->msg, "%s", m);
 		return;
 	}
-	if (sim_advance(s, STEPS_PER_COLLISION * (long)(d->n + 1), 0) != HB_OK) {
+	if (hb_sim_advance(s, STEPS_PER_COLLISION * (long)(d->n + 1), 0) != HB_OK) {
 		tk->fail = 1;
-		snprintf(tk->msg, sizeof tk->msg, "%s", sim_errmsg(s));
+		snprintf(tk->msg, sizeof tk->msg, "%s", hb_sim_errmsg(s));
 	}
-	nc = sim_ncollisions(s);
+	nc = hb_sim_ncollisions(s);
 	if (nc > 0) {
-		double t0 = sim_collision(s, 0)->te;
-		struct collision live;
+		double t0 = hb_sim_collision(s, 0)->te;
+		struct hb_collision live;
 
 		for (size_t i = 1; i < d->n && i < nc; i++)
-			o[i - 1] = sim_collision(s, i)->te - t0;
+			o[i - 1] = hb_sim_collision(s, i)->te - t0;
 		/*
 		 * A run that ends in permanent contact has all its later impacts
 		 * at the commencement of that contact: as a flight shrinks to
 		 * nothing the impacts after it merge there, so the residuals stay
 		 * continuous in the parameters.
 		 */
-		if (nc < d->n && !tk->fail && sim_contact_live(s, &live))
+		if (nc < d->n && !tk->fail && hb_sim_contact_live(s, &live))
 			for (size_t i = nc; i < d->n; i++)
 				o[i - 1] = live.te - t0;
 		else if (nc < d->n && !tk->fail) {
 			tk->fail = 1;
 			snprintf(tk->msg, sizeof tk->msg, "the run gives %zu collision%s (%s), the "
-			    "data has %zu", nc, nc == 1 ? "" : "s", sim_end_str(s), d->n);
+			    "data has %zu", nc, nc == 1 ? "" : "s", hb_sim_end_str(s), d->n);
 		}
 	} else if (!tk->fail) {
 		tk->fail = 1;
-		snprintf(tk->msg, sizeof tk->msg, "the run has no collision (%s)", sim_end_str(s));
+		snprintf(tk->msg, sizeof tk->msg, "the run has no collision (%s)", hb_sim_end_str(s));
 	}
-	sim_free(s);
+	hb_sim_free(s);
 }
 
 /* The run of one drop: from contact at v_i, stopped after its separation. */
 static void
 run_drop(struct pool *pl, struct task *tk)
 {
-	const struct fit_data *d = pl->d;
-	struct scene sc = *tk->sc;
+	const struct hb_fit_data *d = pl->d;
+	struct hb_scene sc = *tk->sc;
 	size_t r = (size_t)tk->row, k = 0;
 	double *o = pl->out + (size_t)tk->s * pl->npts;
-	double v[FIT_OBS_COUNT] = { 0 };
-	struct collision c = { 0 };
-	struct sim *s;
+	double v[HB_FIT_OBS_COUNT] = { 0 };
+	struct hb_collision c = { 0 };
+	struct hb_sim *s;
 	char m[256];
 	int have = 0;
 
 	sc.init.x0 = 0;
 	sc.init.v0 = d->vi[r];
 	sc.run.J = 2;
-	if ((s = sim_new(&sc, m, sizeof m)) == NULL) {
+	if ((s = hb_sim_new(&sc, m, sizeof m)) == NULL) {
 		tk->fail = 1;
 		snprintf(tk->msg, sizeof tk->msg, "drop %zu (v_i = %g m/s): %s", r + 1, d->vi[r], m);
 	} else {
-		if (sim_advance(s, STEPS_PER_COLLISION, 0) != HB_OK) {
+		if (hb_sim_advance(s, STEPS_PER_COLLISION, 0) != HB_OK) {
 			tk->fail = 1;
 			snprintf(tk->msg, sizeof tk->msg, "drop %zu (v_i = %g m/s): %s", r + 1,
-			    d->vi[r], sim_errmsg(s));
-		} else if (sim_ncollisions(s) > 0) {
-			c = *sim_collision(s, 0);
+			    d->vi[r], hb_sim_errmsg(s));
+		} else if (hb_sim_ncollisions(s) > 0) {
+			c = *hb_sim_collision(s, 0);
 			have = 1;
-		} else if (sim_contact_live(s, &c)) {
+		} else if (hb_sim_contact_live(s, &c)) {
 			/* no separation by T or within the budget: the ball stays
 			   (x_c^r and t_d so far) */
 			c.e = 0;
@@ -135,15 +135,15 @@ run_drop(struct pool *pl, struct task *tk)
 		} else {
 			tk->fail = 1;
 			snprintf(tk->msg, sizeof tk->msg, "drop %zu (v_i = %g m/s): no contact (%s)",
-			    r + 1, d->vi[r], sim_end_str(s));
+			    r + 1, d->vi[r], hb_sim_end_str(s));
 		}
-		sim_free(s);
+		hb_sim_free(s);
 	}
-	v[FIT_OBS_E] = c.e;
-	v[FIT_OBS_XCR] = c.xcr;
-	v[FIT_OBS_TD] = c.td;
+	v[HB_FIT_OBS_E] = c.e;
+	v[HB_FIT_OBS_XCR] = c.xcr;
+	v[HB_FIT_OBS_TD] = c.td;
 	/* points are ordered observable by observable, then row by row */
-	for (int ob = FIT_OBS_E; ob < FIT_OBS_COUNT; ob++) {
+	for (int ob = HB_FIT_OBS_E; ob < HB_FIT_OBS_COUNT; ob++) {
 		if (d->col[ob] == NULL)
 			continue;
 		o[k + r] = have && !tk->fail ? v[ob] : pl->penalty;
@@ -172,26 +172,26 @@ worker(void *arg)
 }
 
 int
-fit_eval(const struct scene *sc, int nsc, const struct fit_data *d, int jobs,
+fit_eval(const struct hb_scene *sc, int nsc, const struct hb_fit_data *d, int jobs,
          double penalty, double *out, int *fail, long *runs, char *msg, size_t n)
 {
 	struct pool pl;
-	size_t per = d->kind == FIT_SEQUENCE ? 1 : d->n;
+	size_t per = d->kind == HB_FIT_SEQUENCE ? 1 : d->n;
 	pthread_t th[64];
 	int nth, started = 0;
 
 	memset(&pl, 0, sizeof pl);
 	pl.d = d;
-	pl.npts = fit_npoints(d);
+	pl.npts = hb_fit_npoints(d);
 	pl.penalty = penalty;
 	pl.out = out;
 	pl.ntask = (size_t)nsc * per;
 	if ((pl.t = calloc(pl.ntask, sizeof *pl.t)) == NULL)
-		return status_set(msg, n, HB_ENOMEM, "out of memory");
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	for (size_t i = 0; i < pl.ntask; i++) {
 		pl.t[i].s = (int)(i / per);
 		pl.t[i].sc = &sc[i / per];
-		pl.t[i].row = d->kind == FIT_SEQUENCE ? -1 : (long)(i % per);
+		pl.t[i].row = d->kind == HB_FIT_SEQUENCE ? -1 : (long)(i % per);
 	}
 	if (jobs <= 0) {
 		long nc = sysconf(_SC_NPROCESSORS_ONLN);

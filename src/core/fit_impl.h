@@ -22,23 +22,23 @@ struct fit_param {
 };
 
 int
-fit_param_init(const struct scene *sc, const char *key, struct fit_param *fp,
+fit_param_init(const struct hb_scene *sc, const char *key, struct fit_param *fp,
                char *msg, size_t n);
 
 int
-fit_param_apply(struct scene *sc, const struct fit_param *fp, int np, const double *u,
+fit_param_apply(struct hb_scene *sc, const struct fit_param *fp, int np, const double *u,
                 double *th, double *T, char *msg, size_t n);
 
 /*
  * Simulates the data's observables for nsc scenes at once (the runs on
- * `jobs` threads): out[s * fit_npoints(d) + k] for scene s.  A run that
+ * `jobs` threads): out[s * hb_fit_npoints(d) + k] for scene s.  A run that
  * fails, or a sequence with fewer collisions than the data, sets
  * fail[s] = 1 (may be NULL) and, for the first such scene, the message; its
  * missing values are filled with `penalty` (NAN for none).  Adds the runs
  * made to *runs.  Returns 0, or HB_ENOMEM.
  */
 int
-fit_eval(const struct scene *sc, int nsc, const struct fit_data *d, int jobs,
+fit_eval(const struct hb_scene *sc, int nsc, const struct hb_fit_data *d, int jobs,
          double penalty, double *out, int *fail, long *runs, char *msg, size_t n);
 
 /*

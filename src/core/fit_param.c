@@ -2,8 +2,8 @@
  * fit_param.c - the free parameters of a fit: reading a numeric scene key,
  * its admissible range, and the transform theta(u) that keeps every trial
  * inside that range (see fit.h).  Values, units and ranges come from the
- * scene's typed accessors (scene_get); values are written back with
- * scene_set_number(), which checks them and keeps the scene's invariants
+ * scene's typed accessors (hb_scene_get); values are written back with
+ * hb_scene_set_number(), which checks them and keeps the scene's invariants
  * (derived masses, k).
  */
 #include <math.h>
@@ -17,22 +17,22 @@
 
 /* 1 if the key can be free: a typed number of the scene, not a run setting. */
 static int
-fittable(const struct scene_keyinfo *ki)
+fittable(const struct hb_scene_keyinfo *ki)
 {
-	return ki->kind == SCENE_KEY_NUMBER && !ki->readonly
+	return ki->kind == HB_SCENE_KEY_NUMBER && !ki->readonly
 	    && strncmp(ki->key, "run.", 4) != 0 && strncmp(ki->key, "derived.", 8) != 0;
 }
 
 /* "law.c, law.alpha, body1.E, ..." : the keys of this scene that can be free. */
 static void
-accepted(const struct scene *sc, char *buf, size_t n)
+accepted(const struct hb_scene *sc, char *buf, size_t n)
 {
-	struct scene_keyinfo row, ki;
+	struct hb_scene_keyinfo row, ki;
 	size_t len;
 
 	buf[0] = '\0';
-	for (int i = 0; i < scene_nkeys(sc); i++) {
-		if (scene_key(sc, i, &row) != HB_OK || scene_get(sc, row.key, &ki, NULL) != HB_OK
+	for (int i = 0; i < hb_scene_nkeys(sc); i++) {
+		if (hb_scene_key(sc, i, &row) != HB_OK || hb_scene_get(sc, row.key, &ki, NULL) != HB_OK
 		    || !fittable(&ki))
 			continue;
 		len = strlen(buf);
@@ -42,25 +42,25 @@ accepted(const struct scene *sc, char *buf, size_t n)
 
 /* The typed value of a key that can be free, or HB_EINVAL with a message. */
 static int
-find(const struct scene *sc, const char *key, struct scene_keyinfo *ki, char *msg, size_t n)
+find(const struct hb_scene *sc, const char *key, struct hb_scene_keyinfo *ki, char *msg, size_t n)
 {
 	char acc[640];
 
-	if (scene_get(sc, key, ki, NULL) == HB_OK && fittable(ki))
+	if (hb_scene_get(sc, key, ki, NULL) == HB_OK && fittable(ki))
 		return HB_OK;
 	accepted(sc, acc, sizeof acc);
 	if (strcmp(key, "law.k") == 0 || strncmp(key, "derived.", 8) == 0)
-		return status_set(msg, n, HB_EINVAL, "%s is derived from the materials (Hertz "
+		return hb_status_set(msg, n, HB_EINVAL, "%s is derived from the materials (Hertz "
 		    "contact theory); free body1.E or body2.E instead, or give masses instead of "
 		    "materials to make k a parameter; accepted: %s", key, acc);
-	return status_set(msg, n, HB_EINVAL, "%s: not a numeric key that can be fitted; "
+	return hb_status_set(msg, n, HB_EINVAL, "%s: not a numeric key that can be fitted; "
 	    "accepted: %s", key, acc);
 }
 
 int
-fit_key_get(const struct scene *sc, const char *key, double *v, char *msg, size_t n)
+hb_fit_key_get(const struct hb_scene *sc, const char *key, double *v, char *msg, size_t n)
 {
-	struct scene_keyinfo ki;
+	struct hb_scene_keyinfo ki;
 
 	if (find(sc, key, &ki, msg, n) != HB_OK)
 		return HB_EINVAL;
@@ -74,10 +74,10 @@ fit_key_get(const struct scene *sc, const char *key, double *v, char *msg, size_
  * range's bounds (the transform cannot reach them).
  */
 int
-fit_param_init(const struct scene *sc, const char *key, struct fit_param *fp,
+fit_param_init(const struct hb_scene *sc, const char *key, struct fit_param *fp,
                char *msg, size_t n)
 {
-	struct scene_keyinfo ki;
+	struct hb_scene_keyinfo ki;
 	double v;
 
 	memset(fp, 0, sizeof *fp);
@@ -88,40 +88,40 @@ fit_param_init(const struct scene *sc, const char *key, struct fit_param *fp,
 	fp->beta = -1;
 	fp->lo = ki.limits.lo;
 	fp->hi = ki.limits.hi;
-	if (strcmp(key, "law.gamma") == 0 && law_param_index(sc->law, "beta") >= 0
+	if (strcmp(key, "law.gamma") == 0 && hb_law_param_index(sc->law, "beta") >= 0
 	    && sc->law->check != NULL) {
-		fp->beta = law_param_index(sc->law, "beta");
+		fp->beta = hb_law_param_index(sc->law, "beta");
 		fp->lo = -HUGE_VAL; /* bounded by beta through the transform */
 		fp->hi = HUGE_VAL;
 	}
 	if (strncmp(key, "body", 4) == 0) {
-		const struct scene_body *b = &sc->body[key[4] - '1'];
+		const struct hb_scene_body *b = &sc->body[key[4] - '1'];
 		const char *f = key + 6;
 
 		if ((strcmp(f, "E") == 0 || strcmp(f, "nu") == 0) && !b->has_material)
-			return status_set(msg, n, HB_EINVAL, "%s: body %c is given by its mass, "
+			return hb_status_set(msg, n, HB_EINVAL, "%s: body %c is given by its mass, "
 			    "not a material; accepted: a key the scene uses", key, key[4]);
 		if (strcmp(f, "rho") == 0 && (b->mass_given || !(b->rho > 0)))
-			return status_set(msg, n, HB_EINVAL, "%s: the mass of body %c is "
+			return hb_status_set(msg, n, HB_EINVAL, "%s: the mass of body %c is "
 			    "given, not derived from rho; free %.6s.mass instead", key, key[4], key);
 		if (strcmp(f, "mass") == 0 && !b->mass_given)
-			return status_set(msg, n, HB_EINVAL, "%s: the mass of body %c is "
+			return hb_status_set(msg, n, HB_EINVAL, "%s: the mass of body %c is "
 			    "derived from rho and R; free %.6s.rho instead", key, key[4], key);
 	}
 	if (!isfinite(v))
-		return status_set(msg, n, HB_EINVAL, "%s = %g: a free parameter needs a finite "
+		return hb_status_set(msg, n, HB_EINVAL, "%s = %g: a free parameter needs a finite "
 		    "start", key, v);
 	if (fp->beta >= 0) {
 		double b = sc->par[fp->beta];
 
 		if (!(b > 0) || !(fabs(v) < b))
-			return status_set(msg, n, HB_EINVAL, "%s = %g: the start must lie inside "
+			return hb_status_set(msg, n, HB_EINVAL, "%s = %g: the start must lie inside "
 			    "(-beta, beta) = (%g, %g); set another with --set", key, v, -b, b);
 		fp->u0 = atanh(v / b);
 		return HB_OK;
 	}
 	if (!(v > fp->lo) || !(v < fp->hi))
-		return status_set(msg, n, HB_EINVAL, "%s = %g: the start must lie inside the "
+		return hb_status_set(msg, n, HB_EINVAL, "%s = %g: the start must lie inside the "
 		    "range (%g, %g), not on a bound; set another with --set", key, v, fp->lo,
 		    fp->hi);
 	fp->k = 1;
@@ -182,13 +182,13 @@ theta_of(const struct fit_param *fp, double u, double *dth)
 /*
  * Writes theta(u) of every free parameter into sc (gamma after beta) and
  * fills th[] and the transform's Jacobian T[i * np + j] = d theta_i / d u_j.
- * Returns 0 or HB_EINVAL with scene_set's message.
+ * Returns 0 or HB_EINVAL with hb_scene_set's message.
  */
 int
-fit_param_apply(struct scene *sc, const struct fit_param *fp, int np, const double *u,
+fit_param_apply(struct hb_scene *sc, const struct fit_param *fp, int np, const double *u,
                 double *th, double *T, char *msg, size_t n)
 {
-	struct scene_error err;
+	struct hb_scene_error err;
 	char m[512];
 	double d;
 
@@ -211,9 +211,9 @@ fit_param_apply(struct scene *sc, const struct fit_param *fp, int np, const doub
 			}
 			if (T != NULL)
 				T[i * np + i] = d;
-			if (scene_set_number(sc, fp[i].key, th[i], &err) != HB_OK)
-				return status_set(msg, n, HB_EINVAL, "%s",
-				    scene_error_str(&err, m, sizeof m));
+			if (hb_scene_set_number(sc, fp[i].key, th[i], &err) != HB_OK)
+				return hb_status_set(msg, n, HB_EINVAL, "%s",
+				    hb_scene_error_str(&err, m, sizeof m));
 		}
-	return scene_derive(sc, msg, n);
+	return hb_scene_derive(sc, msg, n);
 }

@@ -4,7 +4,7 @@
  * law_common.c.
  *
  * Each law lives in its own file (law_shccl.c, law_bwshccl.c, law_bwmcl.c,
- * law_hertz.c, law_linear.c) and ends in one `const struct law_type`.  This
+ * law_hertz.c, law_linear.c) and ends in one `const struct hb_law_type`.  This
  * file lists them; adding a law means adding one file and one line to
  * `laws` below.  The order of `laws` is the order of pickers and help text.
  */
@@ -17,12 +17,12 @@
 #include "hybounce/status.h"
 #include "hybounce/units.h"
 
-static const struct law_type *const laws[] = {
-	&law_shccl,
-	&law_bwshccl,
-	&law_bwmcl,
-	&law_hertz,
-	&law_linear,
+static const struct hb_law_type *const laws[] = {
+	&hb_law_shccl,
+	&hb_law_bwshccl,
+	&hb_law_bwmcl,
+	&hb_law_hertz,
+	&hb_law_linear,
 	NULL,
 };
 
@@ -43,8 +43,8 @@ law_name_eq(const char *a, const char *b)
  * Returns the registered laws as a NULL-terminated array in a fixed order.
  * The array and the laws are static: never freed by the caller.
  */
-const struct law_type *const *
-law_list(void)
+const struct hb_law_type *const *
+hb_law_list(void)
 {
 	return laws;
 }
@@ -53,8 +53,8 @@ law_list(void)
  * Returns the law whose name equals `name` ignoring ASCII case ("BWMCL" and
  * "bwmcl" are the same law), or NULL when there is none or name is NULL.
  */
-const struct law_type *
-law_find(const char *name)
+const struct hb_law_type *
+hb_law_find(const char *name)
 {
 	if (name == NULL)
 		return NULL;
@@ -70,7 +70,7 @@ law_find(const char *name)
  * one law never differ by case alone).
  */
 int
-law_param_index(const struct law_type *law, const char *name)
+hb_law_param_index(const struct hb_law_type *law, const char *name)
 {
 	if (law == NULL || name == NULL)
 		return -1;
@@ -85,17 +85,17 @@ law_param_index(const struct law_type *law, const char *name)
 
 /* Fills par[0 .. n_params-1] with the law's default values. */
 void
-law_defaults(const struct law_type *law, double *par)
+hb_law_defaults(const struct hb_law_type *law, double *par)
 {
 	for (int i = 0; i < law->n_params; i++)
 		par[i] = law->params[i].def;
 }
 
 /* The range of a parameter; an infinite bound is never admitted. */
-struct unit_range
-law_param_range(const struct law_param *pp)
+struct hb_unit_range
+hb_law_param_range(const struct hb_law_param *pp)
 {
-	struct unit_range r = { pp->lo, pp->hi, pp->lo_open || isinf(pp->lo),
+	struct hb_unit_range r = { pp->lo, pp->hi, pp->lo_open || isinf(pp->lo),
 		pp->hi_open || isinf(pp->hi), 0 };
 
 	return r;
@@ -107,20 +107,20 @@ law_param_range(const struct law_param *pp)
  * as "alpha = 1.2 is out of range; accepted: (0, 1)" in msg (size n).
  */
 int
-law_param_check(const struct law_param *pp, double value, char *msg, size_t n)
+hb_law_param_check(const struct hb_law_param *pp, double value, char *msg, size_t n)
 {
-	struct unit_range r = law_param_range(pp);
+	struct hb_unit_range r = hb_law_param_range(pp);
 	char rs[80];
 
-	if (isfinite(value) && units_in_range(value, &r))
+	if (isfinite(value) && hb_units_in_range(value, &r))
 		return HB_OK;
-	return status_set(msg, n, HB_EINVAL, "%s = %g is out of range; accepted: %s", pp->name,
-	    value, units_range_str(&r, NULL, rs, sizeof rs));
+	return hb_status_set(msg, n, HB_EINVAL, "%s = %g is out of range; accepted: %s", pp->name,
+	    value, hb_units_range_str(&r, NULL, rs, sizeof rs));
 }
 
 /* The value of the first parameter carrying `flag`, or 1 when none does. */
 static double
-law_flagged(const struct law_type *law, const double *par, int flag)
+law_flagged(const struct hb_law_type *law, const double *par, int flag)
 {
 	for (int i = 0; i < law->n_params; i++)
 		if (law->params[i].flags & flag)
@@ -130,14 +130,14 @@ law_flagged(const struct law_type *law, const double *par, int flag)
 
 /* The exponent p of this parameter set (1 if the law has none). */
 double
-law_exponent_p(const struct law_type *law, const double *par)
+hb_law_exponent_p(const struct hb_law_type *law, const double *par)
 {
-	return law_flagged(law, par, LAW_PARAM_EXPONENT_P);
+	return law_flagged(law, par, HB_LAW_PARAM_EXPONENT_P);
 }
 
 /* The exponent n of this parameter set (1 if the law has none). */
 double
-law_exponent_n(const struct law_type *law, const double *par)
+hb_law_exponent_n(const struct hb_law_type *law, const double *par)
 {
-	return law_flagged(law, par, LAW_PARAM_EXPONENT_N);
+	return law_flagged(law, par, HB_LAW_PARAM_EXPONENT_N);
 }

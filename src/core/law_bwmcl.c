@@ -23,7 +23,7 @@
 
 #include "law_common.h"
 
-static const struct law_param bwmcl_params[LAW_BW_NPAR] = {
+static const struct hb_law_param bwmcl_params[LAW_BW_NPAR] = {
 	LAW_BW_PARAMS(2.138e8, 5e7, 5e7, "Phi of the BWMCL", "Psi_1 of the BWMCL",
 	    "Bouc-Wen gain A: dz1/dt = A dz2/dt while z1 is small (Psi_1 of the BWMCL)",
 	    "exponent of both spring branches; 3/2 is Hertz's"),
@@ -107,7 +107,7 @@ bwmcl_kinks(const double *par, int ext, double xc, const double *z, double v,
 	g[2] = v - bwmcl_phi(par, ext, xc, z, v) / par[LAW_BW_C];
 }
 
-const struct law_type law_bwmcl = {
+const struct hb_law_type hb_law_bwmcl = {
 	.name = "bwmcl",
 	.title = "Bouc-Wen-Maxwell (BWMCL)",
 	.description = "Elastic and Bouc-Wen hysteretic Hertz branches in series "

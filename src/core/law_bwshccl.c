@@ -22,7 +22,7 @@
 
 #include "law_common.h"
 
-static const struct law_param bwshccl_params[LAW_BW_NPAR] = {
+static const struct hb_law_param bwshccl_params[LAW_BW_NPAR] = {
 	LAW_BW_PARAMS(7.095e7, 2.409e8, 2.409e8, "Phi of the BWSHCCL", "Psi of the BWSHCCL",
 	    "Bouc-Wen gain A: dz/dt = A v while z is small (Psi of the BWSHCCL)",
 	    "exponent of both branches and of the damping; 3/2 is Hertz's"),
@@ -87,7 +87,7 @@ bwshccl_kinks(const double *par, int ext, double xc, const double *z,
 	g[2] = v;
 }
 
-const struct law_type law_bwshccl = {
+const struct hb_law_type hb_law_bwshccl = {
 	.name = "bwshccl",
 	.title = "Bouc-Wen-Simon-Hunt-Crossley (BWSHCCL)",
 	.description = "Elastic and Bouc-Wen hysteretic Hertz branches with "

@@ -1,5 +1,5 @@
 /*
- * law_common.c - the callbacks of struct law_type that several laws share
+ * law_common.c - the callbacks of struct hb_law_type that several laws share
  * (declared in law_common.h): the kink at x_c = 0, k = k_H, and the
  * Bouc-Wen check and k_hertz.
  */
@@ -46,7 +46,7 @@ law_bw_check(const double *par, char *msg, size_t n)
 
 	if (gamma >= -beta && gamma <= beta)
 		return HB_OK;
-	return status_set(msg, n, HB_EINVAL,
+	return hb_status_set(msg, n, HB_EINVAL,
 	    "gamma = %g must lie in [-beta, beta] = [%g, %g]", gamma, -beta, beta);
 }
 

@@ -26,13 +26,13 @@
 
 #include "law_pow.h"
 
-/* Dimensions (struct unit_dim) used by several tables. */
+/* Dimensions (struct hb_unit_dim) used by several tables. */
 #define LAW_DIM_NONE    { 0 }
 #define LAW_DIM_K_HERTZ { .kg = 1, .m = 1, .s = -2, .mp = -1 } /* N m^-p */
 #define LAW_DIM_C_HC    { .kg = 1, .s = -1, .mp = -1 }         /* N s m^(-p-1) */
 #define LAW_DIM_PER_M_N { .mn = -1 }                           /* m^-n */
 
-/* Admissible ranges: lo, hi, lo_open, hi_open of struct law_param. */
+/* Admissible ranges: lo, hi, lo_open, hi_open of struct hb_law_param. */
 #define LAW_RANGE_POSITIVE 0, HUGE_VAL, 1, 0         /* (0, inf) */
 #define LAW_RANGE_NONNEG   0, HUGE_VAL, 0, 0         /* [0, inf) */
 #define LAW_RANGE_EXPONENT 1, 1e12, 0, 0             /* [1, 1e12]: far past any contact law (every power of such an exponent over- or underflows) */
@@ -41,11 +41,11 @@
 
 /* The stiffness k > 0 of a Hertz-type term k x|x|^(p-1), N m^-p. */
 #define LAW_PARAM_K(def, help) \
-	{ "k", LAW_DIM_K_HERTZ, LAW_RANGE_POSITIVE, (def), LAW_PARAM_STIFFNESS, help }
+	{ "k", LAW_DIM_K_HERTZ, LAW_RANGE_POSITIVE, (def), HB_LAW_PARAM_STIFFNESS, help }
 
 /* The exponent p >= 1 of the Hertz-type terms, 3/2 by default. */
 #define LAW_PARAM_P(help) \
-	{ "p", LAW_DIM_NONE, LAW_RANGE_EXPONENT, 1.5, LAW_PARAM_EXPONENT_P, help }
+	{ "p", LAW_DIM_NONE, LAW_RANGE_EXPONENT, 1.5, HB_LAW_PARAM_EXPONENT_P, help }
 
 /* The Hunt-Crossley damping c >= 0 of a term c|x|^p v; table: its number in the paper. */
 #define LAW_PARAM_C_HC(def, table) \
@@ -84,9 +84,9 @@ enum {
 	[LAW_BW_BETA] = { "beta", LAW_DIM_PER_M_N, LAW_RANGE_NONNEG, (beta_def), 0, \
 	        "Bouc-Wen beta, m^-n: shapes the hysteresis loop (" psi_eq ")" }, \
 	[LAW_BW_GAMMA] = { "gamma", LAW_DIM_PER_M_N, LAW_RANGE_ANY, (gamma_def), \
-	        LAW_PARAM_CHECKED, \
+	        HB_LAW_PARAM_CHECKED, \
 	        "Bouc-Wen gamma, m^-n, in [-beta, beta] (" psi_eq ")" }, \
-	[LAW_BW_N] = { "n", LAW_DIM_NONE, LAW_RANGE_EXPONENT, 2.0, LAW_PARAM_EXPONENT_N, \
+	[LAW_BW_N] = { "n", LAW_DIM_NONE, LAW_RANGE_EXPONENT, 2.0, HB_LAW_PARAM_EXPONENT_N, \
 	        "Bouc-Wen exponent n: sharpness of the yield (" psi_eq ")" }, \
 	[LAW_BW_P] = LAW_PARAM_P(p_help)
 
@@ -203,7 +203,7 @@ law_bw_rate_dw(const double *par, double z, double w)
 }
 
 /*
- * Callbacks of struct law_type shared by several laws (law_common.c).
+ * Callbacks of struct hb_law_type shared by several laws (law_common.c).
  */
 
 /* kinks of a law whose only kink is at x_c = 0: g = {x_c}. */

@@ -21,7 +21,7 @@
 
 enum { K, P, NPAR };
 
-static const struct law_param hertz_params[NPAR] = {
+static const struct hb_law_param hertz_params[NPAR] = {
 	[K] = LAW_PARAM_K(2.138e8, "stiffness of the spring, N m^-p; "
 	                  "k = k_H, the Hertz coefficient of the materials"),
 	[P] = LAW_PARAM_P("exponent of the spring; 3/2 is Hertz's for spheres"),
@@ -47,7 +47,7 @@ hertz_jac(const double *par, int ext, double xc, const double *z, double v,
 	dphi[1] = 0.0;
 }
 
-const struct law_type law_hertz = {
+const struct hb_law_type hb_law_hertz = {
 	.name = "hertz",
 	.title = "Hertz elastic",
 	.description = "Hertz spring k x|x|^(p-1), no dissipation; continued to "

@@ -21,7 +21,7 @@
 
 enum { K, NPAR };
 
-static const struct law_param linear_params[NPAR] = {
+static const struct hb_law_param linear_params[NPAR] = {
 	[K] = { "k", { .kg = 1, .s = -2 }, LAW_RANGE_POSITIVE, 1e5, 0,
 	        "spring constant, N/m (the paper's example of non-uniqueness at a separation); never derived from materials" },
 };
@@ -46,7 +46,7 @@ linear_jac(const double *par, int ext, double xc, const double *z, double v,
 	dphi[1] = 0.0;
 }
 
-const struct law_type law_linear = {
+const struct hb_law_type hb_law_linear = {
 	.name = "linear",
 	.title = "Clamped linear (non-uniqueness example)",
 	.description = "Linear spring k min(x_c, 0) of the paper's example of non-uniqueness at a separation; continued "

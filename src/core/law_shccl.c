@@ -21,7 +21,7 @@
 
 enum { K, P, C, NPAR };
 
-static const struct law_param shccl_params[NPAR] = {
+static const struct hb_law_param shccl_params[NPAR] = {
 	[K] = LAW_PARAM_K(4.254e8, "stiffness of the Hertz term, N m^-p; "
 	                  "k = k_H, the Hertz coefficient of the materials"),
 	[P] = LAW_PARAM_P("exponent of the spring and of the damping; 3/2 is Hertz's"),
@@ -48,7 +48,7 @@ shccl_jac(const double *par, int ext, double xc, const double *z, double v,
 	law_hc_jac(ext, par[K], par[C], par[P], xc, v, &dphi[0], &dphi[1]);
 }
 
-const struct law_type law_shccl = {
+const struct hb_law_type hb_law_shccl = {
 	.name = "shccl",
 	.title = "Simon-Hunt-Crossley (SHCCL)",
 	.description = "Hertz spring k x|x|^(p-1) with Hunt-Crossley damping "

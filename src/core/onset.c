@@ -26,7 +26,7 @@ enum { HOP = 64, WIN = 512 };
 #define RISE 0.002 /* longest rise of a click from its start to its peak, s */
 
 void
-onset_result_free(struct onset_result *r)
+hb_onset_result_free(struct hb_onset_result *r)
 {
 	if (r == NULL)
 		return;
@@ -62,13 +62,13 @@ read_all(const struct aubio_api *A, const char *path, float **x, size_t *nx, dou
 	*x = NULL;
 	*nx = 0;
 	if (src == NULL)
-		return status_set(msg, n, HB_EIO, "%s: cannot be read as a recording%s%s; "
+		return hb_status_set(msg, n, HB_EIO, "%s: cannot be read as a recording%s%s; "
 		    "accepted: a WAV file (or another format libaubio reads)", path,
 		    alog[0] ? ": " : "", alog);
 	*sr = A->aubio_source_get_samplerate(src);
 	if ((buf = A->new_fvec(HOP)) == NULL) {
 		A->del_aubio_source(src);
-		return status_set(msg, n, HB_ENOMEM, "out of memory");
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
 	do {
 		A->aubio_source_do(src, buf, &got);
@@ -79,7 +79,7 @@ read_all(const struct aubio_api *A, const char *path, float **x, size_t *nx, dou
 			if (t == NULL) {
 				A->del_fvec(buf);
 				A->del_aubio_source(src);
-				return status_set(msg, n, HB_ENOMEM, "out of memory");
+				return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 			}
 			*x = t;
 			cap = nc;
@@ -115,7 +115,7 @@ noise_floor(const float *x, size_t nx, double sr)
 }
 
 int
-onset_detect(const char *path, const struct onset_options *o, struct onset_result *r,
+hb_onset_detect(const char *path, const struct hb_onset_options *o, struct hb_onset_result *r,
              char *msg, size_t n)
 {
 	const char *method = o != NULL && o->method != NULL ? o->method : "hfc";
@@ -133,7 +133,7 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 
 	memset(r, 0, sizeof *r);
 	if (!(level < 1))
-		return status_set(msg, n, HB_EINVAL, "onset level %g; accepted: a fraction of "
+		return hb_status_set(msg, n, HB_EINVAL, "onset level %g; accepted: a fraction of "
 		    "the peak in (0, 1)", level);
 	if ((A = aubio_api(msg, n)) == NULL)
 		return HB_EIO;
@@ -145,7 +145,7 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 	r->noise = noise_floor(x, nx, r->samplerate);
 	od = A->new_aubio_onset(method, WIN, HOP, (uint_t)r->samplerate);
 	if (od == NULL) {
-		st = status_set(msg, n, HB_EINVAL, "onset method '%s'%s%s; accepted: default, "
+		st = hb_status_set(msg, n, HB_EINVAL, "onset method '%s'%s%s; accepted: default, "
 		    "energy, hfc, complex, phase, wphase, specdiff, kl, mkl, specflux", method,
 		    alog[0] ? ": " : "", alog);
 		goto out;
@@ -155,7 +155,7 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 	in = A->new_fvec(HOP);
 	out = A->new_fvec(1);
 	if (in == NULL || out == NULL) {
-		st = status_set(msg, n, HB_ENOMEM, "out of memory");
+		st = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
 	}
 	for (size_t s = 0; s < nx; s += HOP) {
@@ -203,7 +203,7 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 			if (p != NULL)
 				r->peak = p;
 			if (t == NULL || p == NULL) {
-				st = status_set(msg, n, HB_ENOMEM, "out of memory");
+				st = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 				goto out;
 			}
 			cap = nc;
@@ -214,7 +214,7 @@ onset_detect(const char *path, const struct onset_options *o, struct onset_resul
 		prev = on;
 	}
 	if (r->n == 0)
-		st = status_set(msg, n, HB_EINVAL, "%s: no onsets found in %.3g s of sound "
+		st = hb_status_set(msg, n, HB_EINVAL, "%s: no onsets found in %.3g s of sound "
 		    "(noise rms %.2g of full scale); lower --onset-threshold or check the "
 		    "recording", path, r->duration, r->noise);
 out:

@@ -73,7 +73,7 @@ aubio_api(char *msg, size_t n)
 	pthread_once(&aubio_once, load);
 	if (aubio_loaded)
 		return &aubio_tab;
-	status_set(msg, n, HB_EIO, "reading a recording needs libaubio (%s), which cannot be "
+	hb_status_set(msg, n, HB_EIO, "reading a recording needs libaubio (%s), which cannot be "
 	    "loaded: %s; expected the Debian package libaubio5 (make deps installs it)",
 	    AUBIO_SONAME, aubio_why);
 	return NULL;

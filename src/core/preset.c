@@ -4,7 +4,7 @@
  * Reading is in two passes.  inih first collects every (section, key,
  * value, line) into a list, through a line reader of our own that counts
  * lines (this inih build hands no line number to the handler); then the
- * list is applied to scene_defaults() in an order that makes the meaning
+ * list is applied to hb_scene_defaults() in an order that makes the meaning
  * of each value independent of where it stands in the file:
  *     [scene] law  (loads the law's defaults),
  *     the rest of [scene],
@@ -166,12 +166,12 @@ entry_key(const struct entry *e, char *key)
 
 /* 1 if key "SECTION.NAME" is in the table (or the current law's parameters). */
 static int
-key_known(const struct scene *sc, const struct entry *e)
+key_known(const struct hb_scene *sc, const struct entry *e)
 {
 	char key[128];
 
 	if (strcmp(e->section, "law") == 0) {
-		int i = law_param_index(sc->law, e->name);
+		int i = hb_law_param_index(sc->law, e->name);
 		return i >= 0 && strcmp(sc->law->params[i].name, e->name) == 0;
 	}
 	entry_key(e, key);
@@ -180,7 +180,7 @@ key_known(const struct scene *sc, const struct entry *e)
 
 /* The keys of a section, for "known keys" messages. */
 static void
-known_list(const struct scene *sc, const char *section, char *buf, size_t n)
+known_list(const struct hb_scene *sc, const char *section, char *buf, size_t n)
 {
 	size_t sl = strlen(section);
 
@@ -203,28 +203,28 @@ known_list(const struct scene *sc, const char *section, char *buf, size_t n)
 
 /* "FILE:LINE: [section] name: WHAT; accepted: ACCEPTED" */
 static int
-entry_error(const struct entry *e, const char *file, const struct scene_error *err, char *msg,
+entry_error(const struct entry *e, const char *file, const struct hb_scene_error *err, char *msg,
             size_t n)
 {
-	return status_set(msg, n, HB_EINVAL, "%s:%d: [%s] %s: %s%s%s", file, e->line, e->section,
+	return hb_status_set(msg, n, HB_EINVAL, "%s:%d: [%s] %s: %s%s%s", file, e->line, e->section,
 	    e->name, err->what, err->accepted[0] ? "; accepted: " : "", err->accepted);
 }
 
-/* Applies one entry through scene_set_text. */
+/* Applies one entry through hb_scene_set_text. */
 static int
-apply(struct scene *sc, const struct entry *e, const char *file, char *msg, size_t n)
+apply(struct hb_scene *sc, const struct entry *e, const char *file, char *msg, size_t n)
 {
-	struct scene_error err;
+	struct hb_scene_error err;
 	char key[128];
 
 	if (!key_known(sc, e)) {
 		char list[256];
 		known_list(sc, e->section, list, sizeof list);
-		return status_set(msg, n, HB_EINVAL, "%s:%d: [%s] %s: unknown key; known keys: %s",
+		return hb_status_set(msg, n, HB_EINVAL, "%s:%d: [%s] %s: unknown key; known keys: %s",
 		    file, e->line, e->section, e->name, list);
 	}
 	entry_key(e, key);
-	if (scene_set_text(sc, key, e->value, &err) == HB_OK)
+	if (hb_scene_set_text(sc, key, e->value, &err) == HB_OK)
 		return HB_OK;
 	return entry_error(e, file, &err, msg, n);
 }
@@ -252,16 +252,16 @@ is_string_key(const struct entry *e)
 
 /* Is entry e a law exponent (p or n) of the current law? */
 static int
-is_exponent(const struct scene *sc, const struct entry *e)
+is_exponent(const struct hb_scene *sc, const struct entry *e)
 {
-	int i = law_param_index(sc->law, e->name);
+	int i = hb_law_param_index(sc->law, e->name);
 
 	return i >= 0 && strcmp(sc->law->params[i].name, e->name) == 0 &&
-	    (sc->law->params[i].flags & (LAW_PARAM_EXPONENT_P | LAW_PARAM_EXPONENT_N));
+	    (sc->law->params[i].flags & (HB_LAW_PARAM_EXPONENT_P | HB_LAW_PARAM_EXPONENT_N));
 }
 
 static int
-load_entries(struct collect *c, const char *file, struct scene *sc, char *msg, size_t n)
+load_entries(struct collect *c, const char *file, struct hb_scene *sc, char *msg, size_t n)
 {
 	int st;
 
@@ -269,23 +269,23 @@ load_entries(struct collect *c, const char *file, struct scene *sc, char *msg, s
 	for (int i = 0; i < c->n; i++) {
 		const struct entry *e = &c->e[i];
 		if (section_index(e->section) < 0)
-			return status_set(msg, n, HB_EINVAL,
+			return hb_status_set(msg, n, HB_EINVAL,
 			    "%s:%d: [%s] %s: unknown section; known sections: scene, body1, body2, "
 			    "law, loads, initial, run", file, e->line, e->section, e->name);
 		for (int j = 0; j < i; j++)
 			if (strcmp(c->e[j].section, e->section) == 0 &&
 			    strcmp(c->e[j].name, e->name) == 0)
-				return status_set(msg, n, HB_EINVAL,
+				return hb_status_set(msg, n, HB_EINVAL,
 				    "%s:%d: [%s] %s: duplicate key (first given on line %d); "
 				    "accepted: one value per key", file, e->line, e->section, e->name,
 				    c->e[j].line);
 		if (e->value[0] == '\0' && !is_string_key(e))
-			return status_set(msg, n, HB_EINVAL,
+			return hb_status_set(msg, n, HB_EINVAL,
 			    "%s:%d: [%s] %s: empty value; accepted: key = value", file, e->line,
 			    e->section, e->name);
 	}
 
-	scene_defaults(sc);
+	hb_scene_defaults(sc);
 	/* [scene] law first, then the rest of [scene]. */
 	const struct entry *law = entry_find(c, "scene", "law");
 	if (law != NULL && (st = apply(sc, law, file, msg, n)) != HB_OK)
@@ -313,19 +313,19 @@ load_entries(struct collect *c, const char *file, struct scene *sc, char *msg, s
 		mass = entry_find(c, sec, "mass");
 		if ((E == NULL) != (nu == NULL)) {
 			const struct entry *e = E != NULL ? E : nu;
-			return status_set(msg, n, HB_EINVAL,
+			return hb_status_set(msg, n, HB_EINVAL,
 			    "%s:%d: [%s] %s: a material needs both E and nu; accepted: both, or "
 			    "neither (then give the mass and type law.k)", file, e->line, sec,
 			    e->name);
 		}
 		if (rho != NULL && mass != NULL) {
 			const struct entry *e = rho->line > mass->line ? rho : mass;
-			return status_set(msg, n, HB_EINVAL,
+			return hb_status_set(msg, n, HB_EINVAL,
 			    "%s:%d: [%s] %s: give rho (with R) or mass, not both; accepted: one "
 			    "of them", file, e->line, sec, e->name);
 		}
 	}
-	scene_derive(sc, NULL, 0);
+	hb_scene_derive(sc, NULL, 0);
 
 	/* [law]: the exponents first. */
 	for (int pass = 0; pass < 2; pass++)
@@ -344,15 +344,15 @@ load_entries(struct collect *c, const char *file, struct scene *sc, char *msg, s
 				return st;
 
 	/* The scene as a whole; name the line of the key at fault. */
-	struct scene_error err;
-	st = scene_check(sc, &err);
+	struct hb_scene_error err;
+	st = hb_scene_check(sc, &err);
 	if (st != HB_OK) {
 		const char *dot = strchr(err.key, '.');
 		char sec[32] = "";
 		const struct entry *e = NULL;
 		if (dot == NULL || (size_t)(dot - err.key) >= sizeof sec) {
 			char m[512];
-			return status_set(msg, n, st, "%s: %s", file, scene_error_str(&err, m, sizeof m));
+			return hb_status_set(msg, n, st, "%s: %s", file, hb_scene_error_str(&err, m, sizeof m));
 		}
 		memcpy(sec, err.key, (size_t)(dot - err.key));
 		sec[dot - err.key] = '\0';
@@ -360,9 +360,9 @@ load_entries(struct collect *c, const char *file, struct scene *sc, char *msg, s
 		if (e == NULL)
 			e = entry_find(c, sec, NULL);
 		if (e != NULL)
-			return status_set(msg, n, st, "%s:%d: [%s] %s: %s%s%s", file, e->line, sec,
+			return hb_status_set(msg, n, st, "%s:%d: [%s] %s: %s%s%s", file, e->line, sec,
 			    dot + 1, err.what, err.accepted[0] ? "; accepted: " : "", err.accepted);
-		return status_set(msg, n, st, "%s: [%s] %s: %s%s%s", file, sec, dot + 1, err.what,
+		return hb_status_set(msg, n, st, "%s: [%s] %s: %s%s%s", file, sec, dot + 1, err.what,
 		    err.accepted[0] ? "; accepted: " : "", err.accepted);
 	}
 	return HB_OK;
@@ -381,7 +381,7 @@ preset_ini_options(void)
 }
 
 int
-preset_load_string(const char *text, const char *name, struct scene *sc, char *msg, size_t n)
+hb_preset_load_string(const char *text, const char *name, struct hb_scene *sc, char *msg, size_t n)
 {
 	struct collect c = { 0 };
 	struct source src = { text, 0, 0 };
@@ -392,30 +392,30 @@ preset_load_string(const char *text, const char *name, struct scene *sc, char *m
 		name = "(string)";
 	c.e = malloc(PRESET_MAX_ENTRIES * sizeof *c.e); /* entries 0..c.n-1 are written whole */
 	if (c.e == NULL)
-		return status_set(msg, n, HB_ENOMEM, "%s: out of memory", name);
+		return hb_status_set(msg, n, HB_ENOMEM, "%s: out of memory", name);
 	preset_ini_options();
 	r = ini_parse_stream(source_read, &src, collect_handler, &h);
 	if (src.long_line != 0 && (r <= 0 || src.long_line <= r))
-		st = status_set(msg, n, HB_EINVAL,
+		st = hb_status_set(msg, n, HB_EINVAL,
 		    "%s:%d: line too long; accepted: at most %d characters", name, src.long_line,
 		    PRESET_MAX_LINE - 3);
 	else if (r > 0)
-		st = status_set(msg, n, HB_EINVAL,
+		st = hb_status_set(msg, n, HB_EINVAL,
 		    "%s:%d: malformed line (expected key = value or [section]); accepted: "
 		    "[section], key = value, ; comment", name, r);
 	else if (c.toomany_line)
-		st = status_set(msg, n, HB_EINVAL, "%s:%d: too many keys; accepted: at most %d "
+		st = hb_status_set(msg, n, HB_EINVAL, "%s:%d: too many keys; accepted: at most %d "
 		    "key = value lines (a preset has about 40)", name, c.toomany_line,
 		    PRESET_MAX_ENTRIES);
 	else if (r < 0 || c.oom)
-		st = status_set(msg, n, HB_ENOMEM, "%s: out of memory", name);
+		st = hb_status_set(msg, n, HB_ENOMEM, "%s: out of memory", name);
 	else if (c.overflow_line)
-		st = status_set(msg, n, HB_EINVAL,
+		st = hb_status_set(msg, n, HB_EINVAL,
 		    "%s:%d: section or key name too long; accepted: the keys of preset.h", name,
 		    c.overflow_line);
 	else if (c.n == 0)
 		/* not the default scene in disguise: an empty file is a mistake */
-		st = status_set(msg, n, HB_EINVAL,
+		st = hb_status_set(msg, n, HB_EINVAL,
 		    "%s: the preset is empty (no key = value line); expected [scene], [body1], "
 		    "[body2], [law], [loads], [initial] and [run] sections with their keys, "
 		    "as in presets/*.preset", name);
@@ -434,7 +434,7 @@ read_file(const char *path, char **out, char *msg, size_t n)
 	size_t len = 0, cap = 0;
 
 	if (f == NULL)
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
 	for (;;) {
 		size_t got;
 		if (cap - len < 4096) {
@@ -442,7 +442,7 @@ read_file(const char *path, char **out, char *msg, size_t n)
 			if (nb == NULL) {
 				free(buf);
 				fclose(f);
-				return status_set(msg, n, HB_ENOMEM, "%s: out of memory", path);
+				return hb_status_set(msg, n, HB_ENOMEM, "%s: out of memory", path);
 			}
 			buf = nb;
 			cap += 65536;
@@ -456,13 +456,13 @@ read_file(const char *path, char **out, char *msg, size_t n)
 		int e = errno;
 		free(buf);
 		fclose(f);
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e ? e : EIO));
+		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e ? e : EIO));
 	}
 	fclose(f);
 	buf[len] = '\0';
 	if (strlen(buf) != len) {
 		free(buf);
-		return status_set(msg, n, HB_EINVAL, "%s: not a text file (contains NUL bytes); "
+		return hb_status_set(msg, n, HB_EINVAL, "%s: not a text file (contains NUL bytes); "
 		    "expected a preset: text lines [section] and key = value", path);
 	}
 	*out = buf;
@@ -470,28 +470,28 @@ read_file(const char *path, char **out, char *msg, size_t n)
 }
 
 int
-preset_load(const char *path, struct scene *sc, char *msg, size_t n)
+hb_preset_load(const char *path, struct hb_scene *sc, char *msg, size_t n)
 {
 	char *text = NULL;
 	int st = read_file(path, &text, msg, n);
 
 	if (st != HB_OK)
 		return st;
-	st = preset_load_string(text, path, sc, msg, n);
+	st = hb_preset_load_string(text, path, sc, msg, n);
 	free(text);
 	return st;
 }
 
 /* "KEY=VALUE" applied to sc; the key is trimmed of blanks. */
 static int
-apply_set(struct scene *sc, const char *arg, char *msg, size_t n)
+apply_set(struct hb_scene *sc, const char *arg, char *msg, size_t n)
 {
-	struct scene_error err;
+	struct hb_scene_error err;
 	char key[128], m[512];
 	const char *eq = strchr(arg, '='), *k0 = arg, *k1;
 
 	if (eq == NULL)
-		return status_set(msg, n, HB_EINVAL, "--set '%s': expected KEY=VALUE, e.g. "
+		return hb_status_set(msg, n, HB_EINVAL, "--set '%s': expected KEY=VALUE, e.g. "
 		    "--set law.c=0.4 or --set initial.x0='40 um'", arg);
 	k1 = eq;
 	while (k0 < k1 && isspace((unsigned char)*k0))
@@ -499,30 +499,30 @@ apply_set(struct scene *sc, const char *arg, char *msg, size_t n)
 	while (k1 > k0 && isspace((unsigned char)k1[-1]))
 		k1--;
 	if (k1 == k0 || (size_t)(k1 - k0) >= sizeof key)
-		return status_set(msg, n, HB_EINVAL, "--set '%s': expected KEY=VALUE with a key "
+		return hb_status_set(msg, n, HB_EINVAL, "--set '%s': expected KEY=VALUE with a key "
 		    "such as law.c, body1.R, initial.x0, run.rtol, scene.law", arg);
 	memcpy(key, k0, (size_t)(k1 - k0));
 	key[k1 - k0] = '\0';
-	if (scene_set_text(sc, key, eq + 1, &err) != HB_OK) {
+	if (hb_scene_set_text(sc, key, eq + 1, &err) != HB_OK) {
 		/* a long argument is shown by its start, so that the reason stays in sight */
 		int shown = strlen(arg) > 72 ? 60 : 72;
-		return status_set(msg, n, HB_EINVAL, "--set %.*s%s: %s", shown, arg,
-		    strlen(arg) > 72 ? "..." : "", scene_error_str(&err, m, sizeof m));
+		return hb_status_set(msg, n, HB_EINVAL, "--set %.*s%s: %s", shown, arg,
+		    strlen(arg) > 72 ? "..." : "", hb_scene_error_str(&err, m, sizeof m));
 	}
 	return HB_OK;
 }
 
 int
-preset_open(const char *path, const char *const *sets, int nsets, struct scene *sc,
+hb_preset_open(const char *path, const char *const *sets, int nsets, struct hb_scene *sc,
             char *msg, size_t n)
 {
 	char m[512];
-	int st = preset_load(path, sc, msg, n);
+	int st = hb_preset_load(path, sc, msg, n);
 
 	for (int i = 0; st == HB_OK && i < nsets; i++)
 		st = apply_set(sc, sets[i], msg, n);
-	if (st == HB_OK && (st = scene_validate(sc, m, sizeof m)) != HB_OK)
-		status_set(msg, n, st, "%s: %s", path, m);
+	if (st == HB_OK && (st = hb_scene_validate(sc, m, sizeof m)) != HB_OK)
+		hb_status_set(msg, n, st, "%s: %s", path, m);
 	return st;
 }
 
@@ -540,7 +540,7 @@ out_entry(struct textbuf *o, const char *key, const char *value)
 }
 
 size_t
-preset_format(const struct scene *sc, char *buf, size_t n)
+hb_preset_format(const struct hb_scene *sc, char *buf, size_t n)
 {
 	struct textbuf o = { buf, n, 0 };
 	char v[512], sec[16], u[64];
@@ -557,10 +557,10 @@ preset_format(const struct scene *sc, char *buf, size_t n)
 		textbuf_printf(&o, "\n[%s]\n", sections[s]);
 		if (strcmp(sections[s], "law") == 0) {
 			for (int i = 0; sc->law != NULL && i < sc->law->n_params; i++) {
-				const struct law_param *pp = &sc->law->params[i];
-				if ((pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived)
+				const struct hb_law_param *pp = &sc->law->params[i];
+				if ((pp->flags & HB_LAW_PARAM_STIFFNESS) && sc->d.k_derived)
 					continue;
-				units_dim_str(scene_lawpar_dim(sc, i), u, sizeof u);
+				hb_units_dim_str(scene_lawpar_dim(sc, i), u, sizeof u);
 				snprintf(v, sizeof v, "%.17g%s%s", sc->par[i], u[0] ? " " : "", u);
 				out_entry(&o, pp->name, v);
 			}
@@ -579,16 +579,16 @@ preset_format(const struct scene *sc, char *buf, size_t n)
 }
 
 int
-preset_save(const char *path, const struct scene *sc, char *msg, size_t n)
+hb_preset_save(const char *path, const struct hb_scene *sc, char *msg, size_t n)
 {
-	size_t len = preset_format(sc, NULL, 0);
+	size_t len = hb_preset_format(sc, NULL, 0);
 	char *buf = malloc(len + 1);
 	int st;
 
 	if (buf == NULL)
-		return status_set(msg, n, HB_ENOMEM, "%s: out of memory", path);
-	preset_format(sc, buf, len + 1);
-	st = atomic_write_file(path, buf, len, msg, n);
+		return hb_status_set(msg, n, HB_ENOMEM, "%s: out of memory", path);
+	hb_preset_format(sc, buf, len + 1);
+	st = hb_atomic_write_file(path, buf, len, msg, n);
 	free(buf);
 	return st == HB_OK ? HB_OK : HB_EIO;
 }

@@ -92,7 +92,7 @@ dirs_key_make(void)
 }
 
 const char *const *
-preset_dirs(void)
+hb_preset_dirs(void)
 {
 	static _Thread_local char datadir[sizeof HYBOUNCE_DATADIR + 16], near[2][1024];
 	static _Thread_local const char *fallback[3];
@@ -184,15 +184,15 @@ not_a_preset(const char *name, char *msg, size_t mn)
 	const char *what = NULL;
 
 	if (lstat(name, &lst) != 0)
-		return status_set(msg, mn, HB_EINVAL, "%s: %s", name, strerror(errno));
+		return hb_status_set(msg, mn, HB_EINVAL, "%s: %s", name, strerror(errno));
 	if (stat(name, &st) != 0) {
 		if (errno == ELOOP)
-			return status_set(msg, mn, HB_EINVAL, "%s: a loop of symbolic links (%s); "
+			return hb_status_set(msg, mn, HB_EINVAL, "%s: a loop of symbolic links (%s); "
 			    "expected a preset file", name, strerror(ELOOP));
 		if (S_ISLNK(lst.st_mode))
-			return status_set(msg, mn, HB_EINVAL, "%s: a symbolic link to nothing (%s); "
+			return hb_status_set(msg, mn, HB_EINVAL, "%s: a symbolic link to nothing (%s); "
 			    "expected a preset file", name, strerror(errno));
-		return status_set(msg, mn, HB_EINVAL, "%s: %s", name, strerror(errno));
+		return hb_status_set(msg, mn, HB_EINVAL, "%s: %s", name, strerror(errno));
 	}
 	if (S_ISDIR(st.st_mode))
 		what = "a directory";
@@ -204,35 +204,35 @@ not_a_preset(const char *name, char *msg, size_t mn)
 		what = "a socket";
 	else
 		what = "not a regular file";
-	return status_set(msg, mn, HB_EINVAL, "%s: is %s; expected a preset file (or a pipe, "
+	return hb_status_set(msg, mn, HB_EINVAL, "%s: is %s; expected a preset file (or a pipe, "
 	    "e.g. <(...)) or a preset name", name, what);
 }
 
 int
-preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn)
+hb_preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn)
 {
 	const char *const *dirs;
 	char path[1024], where[1024] = "";
 	struct stat lst;
 
 	if (name == NULL || name[0] == '\0')
-		return status_set(msg, mn, HB_EINVAL, "no preset name given; expected a preset name "
+		return hb_status_set(msg, mn, HB_EINVAL, "no preset name given; expected a preset name "
 		    "(hybounce --list-presets) or the path of a preset file");
 	if (is_file_or_pipe(name)) {
 		if (strlen(name) >= n)
-			return status_set(msg, mn, HB_EINVAL, "%s: path too long", name);
+			return hb_status_set(msg, mn, HB_EINVAL, "%s: path too long", name);
 		snprintf(out, n, "%s", name);
 		return HB_OK;
 	}
 	if (strchr(name, '/') == NULL) {
-		dirs = preset_dirs();
+		dirs = hb_preset_dirs();
 		for (int i = 0; dirs[i] != NULL; i++) {
 			for (int ext = 0; ext < 2; ext++) {
 				snprintf(path, sizeof path, "%s/%s%s", dirs[i], name,
 				    ext ? ".preset" : "");
 				if (is_file(path)) {
 					if (strlen(path) >= n)
-						return status_set(msg, mn, HB_EINVAL, "%s: path too long",
+						return hb_status_set(msg, mn, HB_EINVAL, "%s: path too long",
 						    path);
 					snprintf(out, n, "%s", path);
 					return HB_OK;
@@ -243,7 +243,7 @@ preset_resolve(const char *name, char *out, size_t n, char *msg, size_t mn)
 		}
 		if (lstat(name, &lst) == 0) /* something is there: say what */
 			return not_a_preset(name, msg, mn);
-		return status_set(msg, mn, HB_EINVAL,
+		return hb_status_set(msg, mn, HB_EINVAL,
 		    "no preset '%s': not a file, and neither %s nor %s.preset is in %s", name, name,
 		    name, where);
 	}
@@ -272,14 +272,14 @@ title_handler(void *user, const char *section, const char *name, const char *val
 static int
 info_cmp(const void *a, const void *b)
 {
-	return strcmp(((const struct preset_info *)a)->name, ((const struct preset_info *)b)->name);
+	return strcmp(((const struct hb_preset_info *)a)->name, ((const struct hb_preset_info *)b)->name);
 }
 
 int
-preset_list(struct preset_info **out)
+hb_preset_list(struct hb_preset_info **out)
 {
-	const char *const *dirs = preset_dirs();
-	struct preset_info *v = NULL;
+	const char *const *dirs = hb_preset_dirs();
+	struct hb_preset_info *v = NULL;
 	int cnt = 0, cap = 0;
 
 	*out = NULL;
@@ -290,7 +290,7 @@ preset_list(struct preset_info **out)
 			continue;
 		while ((de = readdir(d)) != NULL) {
 			size_t l = strlen(de->d_name);
-			struct preset_info pi;
+			struct hb_preset_info pi;
 			struct title_ctx t = { "", "" };
 			int dup = 0;
 			if (l <= 7 || strcmp(de->d_name + l - 7, ".preset") != 0 || l - 7 >= sizeof pi.name)
@@ -311,7 +311,7 @@ preset_list(struct preset_info **out)
 			snprintf(pi.description, sizeof pi.description, "%s", t.description);
 			if (cnt == cap) {
 				int nc = cap ? 2 * cap : 16;
-				struct preset_info *nv = realloc(v, (size_t)nc * sizeof *nv);
+				struct hb_preset_info *nv = realloc(v, (size_t)nc * sizeof *nv);
 				if (nv == NULL) {
 					closedir(d);
 					free(v);

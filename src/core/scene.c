@@ -46,28 +46,28 @@ ramp_Sd(double w)
 
 /* The drawing force of the ramp, F_e0 (1 + S(t/T_e)). */
 static double
-ramp_draw(const struct scene *sc, double t)
+ramp_draw(const struct hb_scene *sc, double t)
 {
 	return sc->loads.Fe0 * (1.0 + ramp_S(t / sc->loads.Te));
 }
 
 /* a(t) = v_m0 / T_s S'(t / T_s) (eq. a_of_t). */
 static double
-ramp_a(const struct scene *sc, double t)
+ramp_a(const struct hb_scene *sc, double t)
 {
 	return sc->init.vm0 / sc->loads.Ts * ramp_Sd(t / sc->loads.Ts);
 }
 
 void
-scene_loads_at(const struct scene *sc, double t, double *Fe1, double *Fe2)
+hb_scene_loads_at(const struct hb_scene *sc, double t, double *Fe1, double *Fe2)
 {
-	const struct scene_loads *L = &sc->loads;
+	const struct hb_scene_loads *L = &sc->loads;
 	double m1 = sc->d.m1, m2 = sc->d.m2;
 	double f1 = L->F1 - m1 * L->g, f2 = 0;
 
 	if (L->ramp)
 		f1 -= ramp_draw(sc, t) + m1 * ramp_a(sc, t);
-	if (sc->d.system == SCENE_FULL) {
+	if (sc->d.system == HB_SCENE_FULL) {
 		f2 = L->F2 - m2 * L->g;
 		if (L->ramp)
 			f2 += ramp_draw(sc, t) - m2 * ramp_a(sc, t);
@@ -80,28 +80,28 @@ scene_loads_at(const struct scene *sc, double t, double *Fe1, double *Fe2)
 
 /* The constant part of F_er. */
 static double
-fer_const(const struct scene *sc)
+fer_const(const struct hb_scene *sc)
 {
-	if (sc->d.system == SCENE_FULL)
+	if (sc->d.system == HB_SCENE_FULL)
 		return sc->d.etac * sc->loads.F1 - sc->d.eta * sc->loads.F2;
 	return sc->loads.F1 - sc->d.m1 * sc->loads.g;
 }
 
 double
-scene_Fer(const struct scene *sc, double t)
+hb_scene_Fer(const struct hb_scene *sc, double t)
 {
 	double f = fer_const(sc);
 
 	if (sc->loads.ramp) {
 		f -= ramp_draw(sc, t);
-		if (sc->d.system != SCENE_FULL)
+		if (sc->d.system != HB_SCENE_FULL)
 			f -= sc->d.m1 * ramp_a(sc, t);
 	}
 	return f;
 }
 
 int
-scene_load_kinks(const struct scene *sc, double t0, double t1, double *out, int max)
+hb_scene_load_kinks(const struct hb_scene *sc, double t0, double t1, double *out, int max)
 {
 	double k[2];
 	int nk = 0, cnt = 0;
@@ -123,7 +123,7 @@ scene_load_kinks(const struct scene *sc, double t0, double t1, double *out, int 
 }
 
 int
-scene_Fer_constant(const struct scene *sc, double t0, double t1)
+hb_scene_Fer_constant(const struct hb_scene *sc, double t0, double t1)
 {
 	(void)t1;
 	if (!sc->loads.ramp)
@@ -131,7 +131,7 @@ scene_Fer_constant(const struct scene *sc, double t0, double t1)
 	if (t0 < sc->loads.Te)
 		return 0;
 	/* In the reduced system the m1 a(t) term is present until T_s. */
-	if (sc->d.system != SCENE_FULL && sc->init.vm0 != 0 && t0 < sc->loads.Ts)
+	if (sc->d.system != HB_SCENE_FULL && sc->init.vm0 != 0 && t0 < sc->loads.Ts)
 		return 0;
 	return 1;
 }
@@ -182,7 +182,7 @@ piece_trig(double w, double a, double b, int sine, double *I0, double *I1)
  * I0 = int_a^b F_er, I1 = int_a^b (b - s) F_er(s) ds.
  */
 static void
-fer_piece(const struct scene *sc, double a, double b, double *I0, double *I1)
+fer_piece(const struct hb_scene *sc, double a, double b, double *I0, double *I1)
 {
 	double h = b - a, c = fer_const(sc), J0, J1;
 	double mid = 0.5 * (a + b);
@@ -203,7 +203,7 @@ fer_piece(const struct scene *sc, double a, double b, double *I0, double *I1)
 			*I0 += 0.5 * Fe0 * J0;
 			*I1 += 0.5 * Fe0 * J1;
 		}
-		if (sc->d.system != SCENE_FULL && mid > 0 && mid < sc->loads.Ts) {
+		if (sc->d.system != HB_SCENE_FULL && mid > 0 && mid < sc->loads.Ts) {
 			/* m1 a(s) = m1 v_m0 / T_s (pi/2) sin(pi s / T_s) */
 			double Ts = sc->loads.Ts, A = sc->d.m1 * sc->init.vm0 / Ts * 0.5 * M_PI;
 			piece_trig(M_PI / Ts, a, b, 1, &J0, &J1);
@@ -216,7 +216,7 @@ fer_piece(const struct scene *sc, double a, double b, double *I0, double *I1)
 }
 
 void
-scene_flight_increment(const struct scene *sc, double t0, double t1, double *dx, double *dv)
+hb_scene_flight_increment(const struct hb_scene *sc, double t0, double t1, double *dx, double *dv)
 {
 	double cuts[4], x = 0, v = 0, a = t0;
 	int nc = 0;
@@ -254,11 +254,11 @@ scene_flight_increment(const struct scene *sc, double t0, double t1, double *dx,
  * x_m = x_m0 + v_m0 t + c t^2/2 - ramp v_m0 int_0^t S(s/T_s) ds.
  */
 void
-scene_com(const struct scene *sc, double t, double *xm, double *vm)
+hb_scene_com(const struct hb_scene *sc, double t, double *xm, double *vm)
 {
 	double c, x, v;
 
-	if (sc->d.system != SCENE_FULL) {
+	if (sc->d.system != HB_SCENE_FULL) {
 		*xm = 0;
 		*vm = 0;
 		return;

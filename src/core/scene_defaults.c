@@ -23,24 +23,24 @@
 /* ---------------------------------------------------------------- */
 /* Steppers */
 
-static const char *const stepper_names[STEPPER_COUNT] = {
+static const char *const stepper_names[HB_STEPPER_COUNT] = {
 	"rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto", "dop853",
 };
 
 const char *
-scene_stepper_name(int stepper)
+hb_scene_stepper_name(int stepper)
 {
-	if (stepper < 0 || stepper >= STEPPER_COUNT)
+	if (stepper < 0 || stepper >= HB_STEPPER_COUNT)
 		return "?";
 	return stepper_names[stepper];
 }
 
 int
-scene_stepper_find(const char *name)
+hb_scene_stepper_find(const char *name)
 {
 	if (name == NULL)
 		return -1;
-	for (int i = 0; i < STEPPER_COUNT; i++)
+	for (int i = 0; i < HB_STEPPER_COUNT; i++)
 		if (strcmp(stepper_names[i], name) == 0)
 			return i;
 	return -1;
@@ -55,7 +55,7 @@ scene_stepper_find(const char *name)
  * is the default of its row in the key table (scene_keys.c).
  */
 void
-scene_defaults(struct scene *sc)
+hb_scene_defaults(struct hb_scene *sc)
 {
 	char *base = (char *)sc;
 
@@ -83,8 +83,8 @@ scene_defaults(struct scene *sc)
 			break;
 		case ST_LAW:
 			scene_keydef_read_choice(kd, kd->deftext, &v);
-			sc->law = law_list()[v];
-			law_defaults(sc->law, sc->par);
+			sc->law = hb_law_list()[v];
+			hb_law_defaults(sc->law, sc->par);
 			break;
 		default:
 			scene_keydef_read_choice(kd, kd->deftext, &v);
@@ -92,12 +92,12 @@ scene_defaults(struct scene *sc)
 			break;
 		}
 	}
-	scene_derive(sc, NULL, 0);
+	hb_scene_derive(sc, NULL, 0);
 }
 
 /* The mass of body i: given, or 4/3 pi R^3 rho, or INFINITY for an obstacle. */
 static int
-body_mass(const struct scene_body *b, int i, double *mass, char *msg, size_t n)
+body_mass(const struct hb_scene_body *b, int i, double *mass, char *msg, size_t n)
 {
 	if (b->mass_given) {
 		*mass = b->mass;
@@ -111,7 +111,7 @@ body_mass(const struct scene_body *b, int i, double *mass, char *msg, size_t n)
 		*mass = INFINITY;
 		return HB_OK;
 	}
-	return status_set(msg, n, HB_EINVAL,
+	return hb_status_set(msg, n, HB_EINVAL,
 	    "body%d.mass: body %d has no mass; accepted: a mass, or rho with a finite R%s", i + 1,
 	    i + 1, i == 1 ? " (or R = inf: a fixed obstacle)" : "");
 }
@@ -123,10 +123,10 @@ body_mass(const struct scene_body *b, int i, double *mass, char *msg, size_t n)
  * infinite mass.
  */
 int
-scene_derive(struct scene *sc, char *msg, size_t n)
+hb_scene_derive(struct hb_scene *sc, char *msg, size_t n)
 {
-	struct scene_derived *d = &sc->d;
-	const struct scene_body *b1 = &sc->body[0], *b2 = &sc->body[1];
+	struct hb_scene_derived *d = &sc->d;
+	const struct hb_scene_body *b1 = &sc->body[0], *b2 = &sc->body[1];
 	double m1 = NAN, m2 = NAN;
 	int st, ki;
 
@@ -139,13 +139,13 @@ scene_derive(struct scene *sc, char *msg, size_t n)
 	sc->body[1].mass = m2;
 	d->m1 = m1;
 	if (isinf(m2)) {
-		d->system = SCENE_REDUCED;
+		d->system = HB_SCENE_REDUCED;
 		d->m2 = INFINITY;
 		d->m = m1;
 		d->eta = 0;  /* the limits of m1/(m1+m2) and m2/(m1+m2) as m2 -> inf */
 		d->etac = 1;
 	} else {
-		d->system = SCENE_FULL;
+		d->system = HB_SCENE_FULL;
 		d->m2 = m2;
 		d->m = m1 * m2 / (m1 + m2);
 		d->eta = m1 / (m1 + m2);

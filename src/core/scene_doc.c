@@ -30,19 +30,19 @@ mdoc_default(struct textbuf *o, const char *def)
 static void
 mdoc_laws(struct textbuf *o)
 {
-	for (const struct law_type *const *l = law_list(); *l != NULL; l++) {
-		const struct law_type *law = *l;
+	for (const struct hb_law_type *const *l = hb_law_list(); *l != NULL; l++) {
+		const struct hb_law_type *law = *l;
 		textbuf_printf(o, ".It Li [law] No with Cm law No = Cm %s\n%s: %s.\n", law->name, law->title,
 		    law->description);
 		textbuf_printf(o, ".Bl -tag -width \"description\" -compact\n");
 		for (int i = 0; i < law->n_params; i++) {
-			struct scene_keyinfo ki;
+			struct hb_scene_keyinfo ki;
 			char def[64];
-			scene_law_param_info(law, i, &ki);
-			units_format(ki.number, ki.dim, 6, def, sizeof def);
+			hb_scene_law_param_info(law, i, &ki);
+			hb_units_format(ki.number, ki.dim, 6, def, sizeof def);
 			textbuf_printf(o, ".It Cm %s\n%s%s\n", law->params[i].name, ki.help,
 			    ki.help[0] && ki.help[strlen(ki.help) - 1] == '.' ? "" : ".");
-			if ((law->params[i].flags & LAW_PARAM_STIFFNESS) && law->k_hertz != NULL)
+			if ((law->params[i].flags & HB_LAW_PARAM_STIFFNESS) && law->k_hertz != NULL)
 				textbuf_printf(o, "Derived from the materials by Hertz contact theory when both bodies "
 				    "have them; typed otherwise.\n");
 			textbuf_printf(o, "Accepted: %s%s%s.\n", ki.range, ki.unit[0] ? ", in " : "",
@@ -57,15 +57,15 @@ size_t
 scene_keys_mdoc(char *buf, size_t n)
 {
 	struct textbuf o = { buf, n, 0 };
-	struct scene sc;
+	struct hb_scene sc;
 	char sec[16], prev[16] = "";
 
 	if (buf != NULL && n > 0)
 		buf[0] = '\0';
-	scene_defaults(&sc);
+	hb_scene_defaults(&sc);
 	for (int i = 0; i < scene_nkeydefs; i++) {
 		const struct scene_keydef *kd = &scene_keydefs[i];
-		struct scene_keyinfo ki;
+		struct hb_scene_keyinfo ki;
 		char def[96];
 
 		scene_keydef_section(kd, sec, sizeof sec);
@@ -82,18 +82,18 @@ scene_keys_mdoc(char *buf, size_t n)
 			if (isnan(kd->def))
 				snprintf(def, sizeof def, "not given");
 			else
-				units_format(kd->def, *kd->dim, 6, def, sizeof def);
+				hb_units_format(kd->def, *kd->dim, 6, def, sizeof def);
 		} else if (kd->store == ST_LONG || kd->store == ST_INT)
 			snprintf(def, sizeof def, "%.0f", kd->def);
 		else
 			snprintf(def, sizeof def, "%s", kd->deftext);
 		textbuf_printf(&o, ".It Cm %s\n%s.\n", kd->key + strlen(sec) + 1, kd->help);
-		if (ki.kind == SCENE_KEY_CHOICE) {
+		if (ki.kind == HB_SCENE_KEY_CHOICE) {
 			textbuf_printf(&o, "Accepted:");
 			for (int c = 0; c < ki.nchoices; c++)
 				textbuf_printf(&o, "%s %s", c ? "," : "", ki.choices[c]);
 			textbuf_printf(&o, ".\n");
-		} else if (ki.kind == SCENE_KEY_TEXT)
+		} else if (ki.kind == HB_SCENE_KEY_TEXT)
 			textbuf_printf(&o, "Accepted: text of at most %zu bytes.\n", kd->size - 1);
 		else
 			textbuf_printf(&o, "Accepted: %s.\n", ki.range);

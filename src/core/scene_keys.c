@@ -1,7 +1,7 @@
 /*
  * scene_keys.c - the table of scene keys and the typed access to them (see
  * scene_keys.h and scene.h): every key's unit, range, default, meaning,
- * and how it is read and printed; scene_get(), errors as data, and the
+ * and how it is read and printed; hb_scene_get(), errors as data, and the
  * PRESETS reference of the man page generated from the table.
  */
 #include <limits.h>
@@ -18,8 +18,8 @@
 
 #include "scene_keys.h"
 
-#define OFF(f) offsetof(struct scene, f)
-#define SIZE(f) sizeof ((struct scene *)0)->f
+#define OFF(f) offsetof(struct hb_scene, f)
+#define SIZE(f) sizeof ((struct hb_scene *)0)->f
 #define INF HUGE_VAL
 
 /* Ranges: lo, hi, lo_open, hi_open, whole. */
@@ -34,7 +34,7 @@
  * Bounds on the initial state and on gravity: wide beyond any impact this
  * model describes (100 km/s is above meteorite speeds, 10^7 m/s^2 about an
  * ultracentrifuge's; the forces F1, F2 are held to the same acceleration by
- * scene_check), and narrow enough that a flight's x, v and v^2 stay
+ * hb_scene_check), and narrow enough that a flight's x, v and v^2 stay
  * far from overflowing a double (1e300 m/s is refused, not run into NaN).
  */
 #define R_GAP      { 0, 1e6, 0, 0, 0 }   /* [0, 1000 km] */
@@ -49,16 +49,16 @@
 #define BODY(i, defname, defrho, defR, massrange, masshelp)                                           \
 	TXT("body" #i ".name", "bodies", "name (body " #i ")", ST_STRING, defname,            \
 	    body[i - 1].name, SIZE(body[0].name), "name of body " #i),                        \
-	NUM("body" #i ".E", "bodies", "E (body " #i ")", UNIT_PRESSURE, R_POS, 200e9,         \
+	NUM("body" #i ".E", "bodies", "E (body " #i ")", hb_unit_pressure, R_POS, 200e9,         \
 	    body[i - 1].E, SP_MATERIAL, "Young's modulus of body " #i),                       \
-	NUM("body" #i ".nu", "bodies", "nu (body " #i ")", UNIT_NONE,                         \
+	NUM("body" #i ".nu", "bodies", "nu (body " #i ")", hb_unit_none,                         \
 	    R_NU, 0.3, body[i - 1].nu, SP_MATERIAL,      \
 	    "Poisson's ratio of body " #i),                                                   \
-	NUM("body" #i ".rho", "bodies", "rho (body " #i ")", UNIT_DENSITY, R_POS, defrho,     \
+	NUM("body" #i ".rho", "bodies", "rho (body " #i ")", hb_unit_density, R_POS, defrho,     \
 	    body[i - 1].rho, SP_RHO, "density of body " #i "; m = 4/3 pi R^3 rho"),           \
-	NUM("body" #i ".R", "bodies", "R (body " #i ")", UNIT_LENGTH, R_POS_INF, defR,        \
+	NUM("body" #i ".R", "bodies", "R (body " #i ")", hb_unit_length, R_POS_INF, defR,        \
 	    body[i - 1].R, SP_NONE, "radius of body " #i "; inf for a flat"),                 \
-	NUM("body" #i ".mass", "bodies", "mass (body " #i ")", UNIT_MASS, R_##massrange, NAN,     \
+	NUM("body" #i ".mass", "bodies", "mass (body " #i ")", hb_unit_mass, R_##massrange, NAN,     \
 	    body[i - 1].mass, SP_MASS, masshelp)
 
 const struct scene_keydef scene_keydefs[] = {
@@ -77,41 +77,41 @@ const struct scene_keydef scene_keydefs[] = {
 	BODY(2, "steel flat", NAN, INF, POS_INF,
 	     "mass of body 2: given (inf: a fixed obstacle), or derived from rho and R"),
 
-	NUM("loads.g", "loads", "g", UNIT_ACCEL, R_GRAVITY, 9.81, loads.g, SP_NONE,
+	NUM("loads.g", "loads", "g", hb_unit_accel, R_GRAVITY, 9.81, loads.g, SP_NONE,
 	    "gravity along -n1 on both bodies: F_ei += -m_i g"),
-	NUM("loads.F1", "loads", "F1", UNIT_FORCE, R_ANY, 0, loads.F1, SP_NONE,
+	NUM("loads.F1", "loads", "F1", hb_unit_force, R_ANY, 0, loads.F1, SP_NONE,
 	    "constant force on body 1 along n1, |F1| <= 1e7 m/s^2 times m1"),
-	NUM("loads.F2", "loads", "F2", UNIT_FORCE, R_ANY, 0, loads.F2, SP_FULL,
+	NUM("loads.F2", "loads", "F2", hb_unit_force, R_ANY, 0, loads.F2, SP_FULL,
 	    "constant force on body 2 along n1 (full system), |F2| <= 1e7 m/s^2 times m2"),
 	TXT("loads.ramp", "loads", "ramp", ST_BOOL, "no", loads.ramp, 0,
 	    "the S-ramp loads F_e1(t), F_e2(t) of the second study: yes or no"),
-	NUM("loads.F_e0", "loads", "F_e0", UNIT_FORCE, R_NONNEG, 0, loads.Fe0, SP_RAMP,
+	NUM("loads.F_e0", "loads", "F_e0", hb_unit_force, R_NONNEG, 0, loads.Fe0, SP_RAMP,
 	    "ramp: force drawing the bodies together, from F_e0 to 2 F_e0"),
-	NUM("loads.T_e", "loads", "T_e", UNIT_TIME, R_POS, 0.2, loads.Te, SP_RAMP,
+	NUM("loads.T_e", "loads", "T_e", hb_unit_time, R_POS, 0.2, loads.Te, SP_RAMP,
 	    "ramp: duration of the growth of the drawing force"),
-	NUM("loads.T_s", "loads", "T_s", UNIT_TIME, R_POS, 0.1, loads.Ts, SP_RAMP,
+	NUM("loads.T_s", "loads", "T_s", hb_unit_time, R_POS, 0.1, loads.Ts, SP_RAMP,
 	    "ramp: time in which the centre of mass is brought to rest"),
 
-	NUM("initial.x0", "initial", "x0", UNIT_LENGTH, R_GAP, 0.010, init.x0, SP_NONE,
+	NUM("initial.x0", "initial", "x0", hb_unit_length, R_GAP, 0.010, init.x0, SP_NONE,
 	    "initial gap (relative displacement), >= 0"),
-	NUM("initial.v0", "initial", "v0", UNIT_VELOCITY, R_SPEED, 0, init.v0, SP_NONE,
+	NUM("initial.v0", "initial", "v0", hb_unit_velocity, R_SPEED, 0, init.v0, SP_NONE,
 	    "initial relative velocity (negative: approaching)"),
-	NUM("initial.x_m0", "initial", "x_m0", UNIT_LENGTH, R_POSITION, 0, init.xm0, SP_FULL,
+	NUM("initial.x_m0", "initial", "x_m0", hb_unit_length, R_POSITION, 0, init.xm0, SP_FULL,
 	    "initial position of the centre of mass (full system)"),
-	NUM("initial.v_m0", "initial", "v_m0", UNIT_VELOCITY, R_SPEED, 0, init.vm0, SP_FULL,
+	NUM("initial.v_m0", "initial", "v_m0", hb_unit_velocity, R_SPEED, 0, init.vm0, SP_FULL,
 	    "initial velocity of the centre of mass (full system)"),
 
-	NUM("run.T", "run", "T", UNIT_TIME, R_POS, 0.2, run.T, SP_NONE, "end of ordinary time"),
+	NUM("run.T", "run", "T", hb_unit_time, R_POS, 0.2, run.T, SP_NONE, "end of ordinary time"),
 	{ "run.J", "run", "J", ST_LONG, NULL, { 1, 1e18, 0, 0, 1 }, 100000, NULL, OFF(run.J), 0,
 	  SP_NONE, "jump cap" },
 	TXT("run.stepper", "run", "stepper", ST_STEPPER, "rk8pd", run.stepper, 0,
 	    "stepper: rk8pd, dop853 (with dense output), rkf45, rkck, msbdf, rk4imp, bsimp, "
 	    "or auto (rk8pd, then bsimp for the contacts once one is found stiff)"),
-	NUM("run.rtol", "run", "rtol", UNIT_NONE, R_TOL, 1e-10,
+	NUM("run.rtol", "run", "rtol", hb_unit_none, R_TOL, 1e-10,
 	    run.rtol, SP_NONE, "relative tolerance of the integrator"),
-	NUM("run.atol", "run", "atol", UNIT_NONE, R_TOL, 1e-10,
+	NUM("run.atol", "run", "atol", hb_unit_none, R_TOL, 1e-10,
 	    run.atol, SP_NONE, "absolute tolerance, relative to each component's scale"),
-	NUM("run.h_max", "run", "h_max", UNIT_TIME, R_NONNEG, 0, run.h_max, SP_NONE,
+	NUM("run.h_max", "run", "h_max", hb_unit_time, R_NONNEG, 0, run.h_max, SP_NONE,
 	    "largest step inside a contact; 0: none"),
 	{ "run.max_samples", "run", "max_samples", ST_LONG, NULL, { 1024, 1e18, 0, 0, 1 }, 262144,
 	  NULL, OFF(run.max_samples), 0, SP_NONE, "arc memory bound: thinning starts beyond this" },
@@ -151,7 +151,7 @@ scene_keydef_section(const struct scene_keydef *kd, char *buf, size_t n)
 }
 
 int
-scene_keydef_present(const struct scene *sc, const struct scene_keydef *kd)
+scene_keydef_present(const struct hb_scene *sc, const struct scene_keydef *kd)
 {
 	int b = scene_keydef_body(kd);
 
@@ -167,7 +167,7 @@ scene_keydef_present(const struct scene *sc, const struct scene_keydef *kd)
 
 static const char *const ext_names[] = { "none", "adhesive" };
 static const char *const bool_names[] = { "no", "yes" };
-/* Every reduction set, by its flags (REDUCE_FLIGHT 1, CONTACT 2, COM 4). */
+/* Every reduction set, by its flags (HB_REDUCE_FLIGHT 1, CONTACT 2, COM 4). */
 static const char *const reduce_names[] = {
 	"none", "flight", "contact", "flight,contact", "com", "flight,com", "contact,com", "all",
 };
@@ -180,7 +180,7 @@ scene_keydef_choices(const struct scene_keydef *kd, const char **out, int max)
 #define ADD(s) do { if (k < max) out[k] = (s); k++; } while (0)
 	switch (kd->store) {
 	case ST_LAW:
-		for (const struct law_type *const *l = law_list(); *l != NULL; l++)
+		for (const struct hb_law_type *const *l = hb_law_list(); *l != NULL; l++)
 			ADD((*l)->name);
 		break;
 	case ST_EXT:
@@ -188,8 +188,8 @@ scene_keydef_choices(const struct scene_keydef *kd, const char **out, int max)
 		ADD(ext_names[0]);
 		break;
 	case ST_STEPPER:
-		for (int i = 0; i < STEPPER_COUNT; i++)
-			ADD(scene_stepper_name(i));
+		for (int i = 0; i < HB_STEPPER_COUNT; i++)
+			ADD(hb_scene_stepper_name(i));
 		break;
 	case ST_BOOL:
 		ADD(bool_names[1]);
@@ -215,7 +215,7 @@ scene_keydef_read_choice(const struct scene_keydef *kd, const char *t, int *v)
 
 	switch (kd->store) {
 	case ST_LAW: {
-		const struct law_type *const *l = law_list();
+		const struct hb_law_type *const *l = hb_law_list();
 		for (int i = 0; l[i] != NULL; i++)
 			if (strcasecmp(l[i]->name, t) == 0)
 				return *v = i, 0;
@@ -228,7 +228,7 @@ scene_keydef_read_choice(const struct scene_keydef *kd, const char *t, int *v)
 			return *v = 0, 0;
 		return -1;
 	case ST_STEPPER:
-		*v = scene_stepper_find(t);
+		*v = hb_scene_stepper_find(t);
 		return *v < 0 ? -1 : 0;
 	case ST_BOOL:
 		for (int i = 0; i < 4; i++) {
@@ -242,7 +242,7 @@ scene_keydef_read_choice(const struct scene_keydef *kd, const char *t, int *v)
 		static const char *const flag[] = { "flight", "contact", "com" };
 		int r = 0;
 		if (strcasecmp(t, "all") == 0)
-			return *v = REDUCE_ALL, 0;
+			return *v = HB_REDUCE_ALL, 0;
 		if (strcasecmp(t, "none") == 0)
 			return *v = 0, 0;
 		while (*t) {
@@ -266,7 +266,7 @@ scene_keydef_read_choice(const struct scene_keydef *kd, const char *t, int *v)
 }
 
 const char *
-scene_keydef_choice(const struct scene *sc, const struct scene_keydef *kd)
+scene_keydef_choice(const struct hb_scene *sc, const struct scene_keydef *kd)
 {
 	const char *base = (const char *)sc;
 	int v = kd->store == ST_LAW ? 0 : *(const int *)(base + kd->off);
@@ -274,22 +274,22 @@ scene_keydef_choice(const struct scene *sc, const struct scene_keydef *kd)
 	switch (kd->store) {
 	case ST_LAW: return sc->law != NULL ? sc->law->name : "";
 	case ST_EXT: return ext_names[v != 0];
-	case ST_STEPPER: return scene_stepper_name(v);
+	case ST_STEPPER: return hb_scene_stepper_name(v);
 	case ST_BOOL: return bool_names[v != 0];
-	case ST_REDUCE: return reduce_names[v & REDUCE_ALL];
+	case ST_REDUCE: return reduce_names[v & HB_REDUCE_ALL];
 	default: return "";
 	}
 }
 
 void
-scene_keydef_print(const struct scene *sc, const struct scene_keydef *kd, char *buf, size_t n)
+scene_keydef_print(const struct hb_scene *sc, const struct scene_keydef *kd, char *buf, size_t n)
 {
 	const char *base = (const char *)sc;
 	char u[64];
 
 	switch (kd->store) {
 	case ST_DOUBLE:
-		units_dim_str(*kd->dim, u, sizeof u);
+		hb_units_dim_str(*kd->dim, u, sizeof u);
 		snprintf(buf, n, "%.17g%s%s", *(const double *)(base + kd->off), u[0] ? " " : "", u);
 		break;
 	case ST_LONG:
@@ -308,32 +308,32 @@ scene_keydef_print(const struct scene *sc, const struct scene_keydef *kd, char *
 }
 
 int
-scene_stiffness_index(const struct law_type *law)
+scene_stiffness_index(const struct hb_law_type *law)
 {
 	if (law == NULL)
 		return -1;
 	for (int i = 0; i < law->n_params; i++)
-		if (law->params[i].flags & LAW_PARAM_STIFFNESS)
+		if (law->params[i].flags & HB_LAW_PARAM_STIFFNESS)
 			return i;
 	return -1;
 }
 
-struct unit_dim
-scene_lawpar_dim(const struct scene *sc, int i)
+struct hb_unit_dim
+scene_lawpar_dim(const struct hb_scene *sc, int i)
 {
-	return units_resolve(sc->law->params[i].dim, law_exponent_p(sc->law, sc->par),
-	    law_exponent_n(sc->law, sc->par));
+	return hb_units_resolve(sc->law->params[i].dim, hb_law_exponent_p(sc->law, sc->par),
+	    hb_law_exponent_n(sc->law, sc->par));
 }
 
 /* ---------------------------------------------------------------- */
 /* Errors as data */
 
 static int
-error_vset(struct scene_error *e, const char *key, const char *fmt, va_list ap)
+error_vset(struct hb_scene_error *e, const char *key, const char *fmt, va_list ap)
     __attribute__((format(printf, 3, 0)));
 
 static int
-error_vset(struct scene_error *e, const char *key, const char *fmt, va_list ap)
+error_vset(struct hb_scene_error *e, const char *key, const char *fmt, va_list ap)
 {
 	if (e == NULL)
 		return HB_EINVAL;
@@ -344,7 +344,7 @@ error_vset(struct scene_error *e, const char *key, const char *fmt, va_list ap)
 }
 
 int
-scene_error_set(struct scene_error *e, const char *key, const char *accepted,
+scene_error_set(struct hb_scene_error *e, const char *key, const char *accepted,
                 const char *fmt, ...)
 {
 	va_list ap;
@@ -358,8 +358,8 @@ scene_error_set(struct scene_error *e, const char *key, const char *accepted,
 }
 
 int
-scene_error_range(struct scene_error *e, const char *key, const struct unit_range *r,
-                  const struct unit_dim *dim, const char *fmt, ...)
+scene_error_range(struct hb_scene_error *e, const char *key, const struct hb_unit_range *r,
+                  const struct hb_unit_dim *dim, const char *fmt, ...)
 {
 	va_list ap;
 
@@ -369,13 +369,13 @@ scene_error_range(struct scene_error *e, const char *key, const struct unit_rang
 	if (e != NULL) {
 		e->has_range = 1;
 		e->range = *r;
-		units_range_str(r, dim, e->accepted, sizeof e->accepted);
+		hb_units_range_str(r, dim, e->accepted, sizeof e->accepted);
 	}
 	return HB_EINVAL;
 }
 
 char *
-scene_error_str(const struct scene_error *e, char *buf, size_t n)
+hb_scene_error_str(const struct hb_scene_error *e, char *buf, size_t n)
 {
 	snprintf(buf, n, "%s%s%s%s%s", e->key, e->key[0] ? ": " : "", e->what,
 	    e->accepted[0] ? "; accepted: " : "", e->accepted);
@@ -387,7 +387,7 @@ scene_error_str(const struct scene_error *e, char *buf, size_t n)
 
 /* Fills the typed part and the display strings of a table key. */
 static void
-info_keydef(const struct scene *sc, const struct scene_keydef *kd, struct scene_keyinfo *o)
+info_keydef(const struct hb_scene *sc, const struct scene_keydef *kd, struct hb_scene_keyinfo *o)
 {
 	const char *base = (const char *)sc;
 
@@ -398,36 +398,36 @@ info_keydef(const struct scene *sc, const struct scene_keydef *kd, struct scene_
 	o->number = NAN;
 	switch (kd->store) {
 	case ST_STRING:
-		o->kind = SCENE_KEY_TEXT;
+		o->kind = HB_SCENE_KEY_TEXT;
 		snprintf(o->value, sizeof o->value, "%s", base + kd->off);
 		snprintf(o->edit, sizeof o->edit, "%s", base + kd->off);
 		snprintf(o->range, sizeof o->range, "text");
 		break;
 	case ST_LONG:
 	case ST_INT:
-		o->kind = SCENE_KEY_WHOLE;
+		o->kind = HB_SCENE_KEY_WHOLE;
 		o->number = kd->store == ST_LONG ? (double)*(const long *)(base + kd->off)
 		                                  : (double)*(const int *)(base + kd->off);
 		o->limits = kd->range;
 		snprintf(o->value, sizeof o->value, "%.0f", o->number);
 		snprintf(o->edit, sizeof o->edit, "%.0f", o->number);
-		units_range_str(&kd->range, NULL, o->range, sizeof o->range);
+		hb_units_range_str(&kd->range, NULL, o->range, sizeof o->range);
 		break;
 	case ST_DOUBLE: {
 		int b = scene_keydef_body(kd);
-		o->kind = SCENE_KEY_NUMBER;
+		o->kind = HB_SCENE_KEY_NUMBER;
 		o->dim = *kd->dim;
-		units_dim_str(o->dim, o->unit, sizeof o->unit);
+		hb_units_dim_str(o->dim, o->unit, sizeof o->unit);
 		o->limits = kd->range;
-		units_range_str(&kd->range, kd->dim, o->range, sizeof o->range);
+		hb_units_range_str(&kd->range, kd->dim, o->range, sizeof o->range);
 		o->number = *(const double *)(base + kd->off);
 		if (b >= 0 && !scene_keydef_present(sc, kd) && kd->special != SP_MASS)
 			o->number = NAN; /* no material, or no density */
 		if (isnan(o->number))
 			snprintf(o->value, sizeof o->value, "-");
 		else {
-			units_format(o->number, o->dim, 4, o->value, sizeof o->value);
-			units_format_exact(o->number, o->dim, o->edit, sizeof o->edit);
+			hb_units_format(o->number, o->dim, 4, o->value, sizeof o->value);
+			hb_units_format_exact(o->number, o->dim, o->edit, sizeof o->edit);
 		}
 		if (b >= 0 && kd->special == SP_MASS && !sc->body[b].mass_given)
 			snprintf(o->help, sizeof o->help, "derived from rho and R (type a mass to give it)");
@@ -436,7 +436,7 @@ info_keydef(const struct scene *sc, const struct scene_keydef *kd, struct scene_
 	default: {
 		const char *cur = scene_keydef_choice(sc, kd);
 		size_t l = 0;
-		o->kind = SCENE_KEY_CHOICE;
+		o->kind = HB_SCENE_KEY_CHOICE;
 		o->nchoices = scene_keydef_choices(kd, o->choices, 16);
 		if (o->nchoices > 16)
 			o->nchoices = 16;
@@ -462,34 +462,34 @@ info_keydef(const struct scene *sc, const struct scene_keydef *kd, struct scene_
 
 /* Law parameter i is derived by the scene (k from the materials), not typed. */
 static int
-lawpar_readonly(const struct scene *sc, int i)
+lawpar_readonly(const struct hb_scene *sc, int i)
 {
-	return (sc->law->params[i].flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived;
+	return (sc->law->params[i].flags & HB_LAW_PARAM_STIFFNESS) && sc->d.k_derived;
 }
 
 /* Fills the row of law parameter i. */
 static void
-info_lawpar(const struct scene *sc, int i, struct scene_keyinfo *o)
+info_lawpar(const struct hb_scene *sc, int i, struct hb_scene_keyinfo *o)
 {
-	const struct law_param *pp = &sc->law->params[i];
+	const struct hb_law_param *pp = &sc->law->params[i];
 
 	snprintf(o->key, sizeof o->key, "law.%s", pp->name);
 	snprintf(o->section, sizeof o->section, "law");
 	snprintf(o->label, sizeof o->label, "%s", pp->name);
 	snprintf(o->help, sizeof o->help, "%s", pp->help ? pp->help : "");
-	o->kind = SCENE_KEY_NUMBER;
+	o->kind = HB_SCENE_KEY_NUMBER;
 	o->number = sc->par[i];
 	o->dim = scene_lawpar_dim(sc, i);
-	units_dim_str(o->dim, o->unit, sizeof o->unit);
-	o->limits = law_param_range(pp);
-	units_format(o->number, o->dim, 4, o->value, sizeof o->value);
-	units_format_exact(o->number, o->dim, o->edit, sizeof o->edit);
-	units_range_str(&o->limits, NULL, o->range, sizeof o->range);
+	hb_units_dim_str(o->dim, o->unit, sizeof o->unit);
+	o->limits = hb_law_param_range(pp);
+	hb_units_format(o->number, o->dim, 4, o->value, sizeof o->value);
+	hb_units_format_exact(o->number, o->dim, o->edit, sizeof o->edit);
+	hb_units_range_str(&o->limits, NULL, o->range, sizeof o->range);
 	o->readonly = lawpar_readonly(sc, i);
 }
 
 int
-scene_key_info_law(const struct scene *sc, int i, struct scene_keyinfo *out)
+scene_key_info_law(const struct hb_scene *sc, int i, struct hb_scene_keyinfo *out)
 {
 	memset(out, 0, sizeof *out);
 	if (sc->law == NULL || i < 0 || i >= sc->law->n_params)
@@ -499,22 +499,22 @@ scene_key_info_law(const struct scene *sc, int i, struct scene_keyinfo *out)
 }
 
 int
-scene_law_param_info(const struct law_type *law, int i, struct scene_keyinfo *out)
+hb_scene_law_param_info(const struct hb_law_type *law, int i, struct hb_scene_keyinfo *out)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
 	memset(out, 0, sizeof *out);
 	if (law == NULL || i < 0 || i >= law->n_params)
 		return HB_EINVAL;
 	memset(&sc, 0, sizeof sc);
 	sc.law = law;
-	law_defaults(law, sc.par);
+	hb_law_defaults(law, sc.par);
 	info_lawpar(&sc, i, out);
 	return HB_OK;
 }
 
 int
-scene_key_info(const struct scene *sc, const struct scene_keydef *kd, struct scene_keyinfo *out)
+scene_key_info(const struct hb_scene *sc, const struct scene_keydef *kd, struct hb_scene_keyinfo *out)
 {
 	memset(out, 0, sizeof *out);
 	info_keydef(sc, kd, out);
@@ -522,8 +522,8 @@ scene_key_info(const struct scene *sc, const struct scene_keydef *kd, struct sce
 }
 
 int
-scene_key_resolve(const struct scene *sc, const char *key, const struct scene_keydef **kd,
-                  int *li, int *readonly, struct scene_error *err)
+scene_key_resolve(const struct hb_scene *sc, const char *key, const struct scene_keydef **kd,
+                  int *li, int *readonly, struct hb_scene_error *err)
 {
 	*kd = NULL;
 	*li = -1;
@@ -531,7 +531,7 @@ scene_key_resolve(const struct scene *sc, const char *key, const struct scene_ke
 	if (key == NULL)
 		return scene_error_set(err, "", NULL, "no key");
 	if (strncmp(key, "law.", 4) == 0) {
-		int i = sc->law != NULL ? law_param_index(sc->law, key + 4) : -1;
+		int i = sc->law != NULL ? hb_law_param_index(sc->law, key + 4) : -1;
 		if (i < 0 || strcmp(sc->law->params[i].name, key + 4) != 0) {
 			char names[160] = "";
 			for (int k = 0; sc->law != NULL && k < sc->law->n_params; k++) {
@@ -553,8 +553,8 @@ scene_key_resolve(const struct scene *sc, const char *key, const struct scene_ke
 }
 
 int
-scene_get(const struct scene *sc, const char *key, struct scene_keyinfo *out,
-          struct scene_error *err)
+hb_scene_get(const struct hb_scene *sc, const char *key, struct hb_scene_keyinfo *out,
+          struct hb_scene_error *err)
 {
 	const struct scene_keydef *kd;
 	int li, ro, st;

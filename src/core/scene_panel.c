@@ -26,19 +26,19 @@ struct row {
 };
 
 static double
-xcs(const struct scene *sc)
+xcs(const struct hb_scene *sc)
 {
 	double f = sc->d.m * sc->loads.g / sc->d.kH;
 
-	return pow(f, 1.0 / law_exponent_p(sc->law, sc->par));
+	return pow(f, 1.0 / hb_law_exponent_p(sc->law, sc->par));
 }
 
 /* Lists the rows of the panel; returns the count (at most max). */
 static int
-rows_list(const struct scene *sc, struct row *rows, int max)
+rows_list(const struct hb_scene *sc, struct row *rows, int max)
 {
 	static const char *const order[] = { "bodies", "derived", "law", "loads", "initial", "run" };
-	int nr = 0, full = sc->d.system == SCENE_FULL;
+	int nr = 0, full = sc->d.system == HB_SCENE_FULL;
 
 #define PUSH(k, d, i) do { if (nr < max) { rows[nr].kind = (k); rows[nr].kd = (d); \
 	rows[nr].id = (i); } nr++; } while (0)
@@ -74,7 +74,7 @@ rows_list(const struct scene *sc, struct row *rows, int max)
 		}
 		if (strcmp(order[s], "law") == 0 && sc->law != NULL) {
 			for (int i = 0; i < sc->law->n_params; i++) {
-				if ((sc->law->params[i].flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived)
+				if ((sc->law->params[i].flags & HB_LAW_PARAM_STIFFNESS) && sc->d.k_derived)
 					continue;
 				PUSH(1, NULL, i);
 			}
@@ -85,30 +85,30 @@ rows_list(const struct scene *sc, struct row *rows, int max)
 }
 
 int
-scene_nkeys(const struct scene *sc)
+hb_scene_nkeys(const struct hb_scene *sc)
 {
 	return rows_list(sc, NULL, 0);
 }
 
 static void
-derived_row(const struct scene *sc, int id, struct scene_keyinfo *o)
+derived_row(const struct hb_scene *sc, int id, struct hb_scene_keyinfo *o)
 {
 	static const struct {
 		const char *key, *label, *help;
-		const struct unit_dim *dim;
+		const struct hb_unit_dim *dim;
 	} dr[D_COUNT] = {
-		[D_ESTAR] = { "derived.Estar", "E*", "effective modulus ((1-nu1^2)/E1 + (1-nu2^2)/E2)^-1", &UNIT_PRESSURE },
-		[D_RE] = { "derived.Re", "R_e", "effective radius (1/R1 + 1/R2)^-1", &UNIT_LENGTH },
-		[D_M1] = { "derived.m1", "m1", "mass of body 1", &UNIT_MASS },
-		[D_M2] = { "derived.m2", "m2", "mass of body 2", &UNIT_MASS },
-		[D_M] = { "derived.m", "m", "effective mass m1 m2/(m1 + m2)", &UNIT_MASS },
-		[D_ETA] = { "derived.eta", "eta", "m1/(m1 + m2)", &UNIT_NONE },
+		[D_ESTAR] = { "derived.Estar", "E*", "effective modulus ((1-nu1^2)/E1 + (1-nu2^2)/E2)^-1", &hb_unit_pressure },
+		[D_RE] = { "derived.Re", "R_e", "effective radius (1/R1 + 1/R2)^-1", &hb_unit_length },
+		[D_M1] = { "derived.m1", "m1", "mass of body 1", &hb_unit_mass },
+		[D_M2] = { "derived.m2", "m2", "mass of body 2", &hb_unit_mass },
+		[D_M] = { "derived.m", "m", "effective mass m1 m2/(m1 + m2)", &hb_unit_mass },
+		[D_ETA] = { "derived.eta", "eta", "m1/(m1 + m2)", &hb_unit_none },
 		[D_KH] = { "derived.kH", "k_H", "Hertz coefficient 4/3 E* sqrt(R_e)", NULL },
 		[D_K] = { "derived.k", "k", "stiffness, from the materials by Hertz contact theory", NULL },
-		[D_XCS] = { "derived.xcs", "x_c^s", "static Hertz indentation (m g / k_H)^(1/p)", &UNIT_LENGTH },
+		[D_XCS] = { "derived.xcs", "x_c^s", "static Hertz indentation (m g / k_H)^(1/p)", &hb_unit_length },
 	};
 	double v = 0;
-	struct unit_dim dim = UNIT_NONE;
+	struct hb_unit_dim dim = hb_unit_none;
 
 	snprintf(o->key, sizeof o->key, "%s", dr[id].key);
 	snprintf(o->section, sizeof o->section, "derived");
@@ -116,7 +116,7 @@ derived_row(const struct scene *sc, int id, struct scene_keyinfo *o)
 	snprintf(o->help, sizeof o->help, "%s", dr[id].help);
 	snprintf(o->range, sizeof o->range, "derived");
 	o->readonly = 1;
-	o->kind = SCENE_KEY_NUMBER;
+	o->kind = HB_SCENE_KEY_NUMBER;
 	if (dr[id].dim != NULL)
 		dim = *dr[id].dim;
 	switch (id) {
@@ -129,11 +129,11 @@ derived_row(const struct scene *sc, int id, struct scene_keyinfo *o)
 	case D_KH:
 	case D_K: {
 		int ki = scene_stiffness_index(sc->law);
-		struct unit_dim kd = { 1, 1, -2, -1, 0 };
+		struct hb_unit_dim kd = { 1, 1, -2, -1, 0 };
 		if (ki >= 0)
 			kd = sc->law->params[ki].dim;
-		dim = units_resolve(kd, law_exponent_p(sc->law, sc->par),
-		    law_exponent_n(sc->law, sc->par));
+		dim = hb_units_resolve(kd, hb_law_exponent_p(sc->law, sc->par),
+		    hb_law_exponent_n(sc->law, sc->par));
 		v = id == D_KH ? sc->d.kH : (ki >= 0 ? sc->par[ki] : NAN);
 		break;
 	}
@@ -142,12 +142,12 @@ derived_row(const struct scene *sc, int id, struct scene_keyinfo *o)
 	}
 	o->number = v;
 	o->dim = dim;
-	units_dim_str(dim, o->unit, sizeof o->unit);
-	units_format(v, dim, 4, o->value, sizeof o->value);
+	hb_units_dim_str(dim, o->unit, sizeof o->unit);
+	hb_units_format(v, dim, 4, o->value, sizeof o->value);
 }
 
 int
-scene_key(const struct scene *sc, int i, struct scene_keyinfo *out)
+hb_scene_key(const struct hb_scene *sc, int i, struct hb_scene_keyinfo *out)
 {
 	struct row rows[128];
 	int nr = rows_list(sc, rows, 128);

@@ -38,11 +38,11 @@ trim_copy(const char *text, char *buf, size_t n)
 
 /* "a number with a unit of U (SI prefixes allowed), or a plain number in U" */
 static void
-unit_accepted(struct unit_dim dim, char *buf, size_t n)
+unit_accepted(struct hb_unit_dim dim, char *buf, size_t n)
 {
 	char u[48];
 
-	units_dim_str(dim, u, sizeof u);
+	hb_units_dim_str(dim, u, sizeof u);
 	if (u[0] == '\0')
 		snprintf(buf, n, "a plain number");
 	else
@@ -91,7 +91,7 @@ keydef_accepted(const struct scene_keydef *kd, char *acc, size_t n)
 }
 
 static void
-body_typed(struct scene *sc, const struct scene_keydef *kd)
+body_typed(struct hb_scene *sc, const struct scene_keydef *kd)
 {
 	int b = scene_keydef_body(kd);
 
@@ -112,8 +112,8 @@ body_typed(struct scene *sc, const struct scene_keydef *kd)
  * the value as typed, for the message (NULL: print v).
  */
 static int
-store_number(struct scene *tmp, const char *key, double v, const char *text,
-             struct scene_error *err)
+store_number(struct hb_scene *tmp, const char *key, double v, const char *text,
+             struct hb_scene_error *err)
 {
 	const struct scene_keydef *kd;
 	char vs[64];
@@ -123,15 +123,15 @@ store_number(struct scene *tmp, const char *key, double v, const char *text,
 	else
 		snprintf(vs, sizeof vs, "%s", text);
 	if (strncmp(key, "law.", 4) == 0) {
-		int i = law_param_index(tmp->law, key + 4);
-		struct unit_range r = law_param_range(&tmp->law->params[i]);
-		if (!units_in_range(v, &r))
+		int i = hb_law_param_index(tmp->law, key + 4);
+		struct hb_unit_range r = hb_law_param_range(&tmp->law->params[i]);
+		if (!hb_units_in_range(v, &r))
 			return scene_error_range(err, key, &r, NULL, "value %s is out of range", vs);
 		tmp->par[i] = v;
 		return HB_OK;
 	}
 	kd = scene_keydef_find(key);
-	if (!units_in_range(v, &kd->range))
+	if (!hb_units_in_range(v, &kd->range))
 		return scene_error_range(err, key, &kd->range, kd->dim, "value %s is out of range",
 		    vs);
 	switch (kd->store) {
@@ -149,8 +149,8 @@ store_number(struct scene *tmp, const char *key, double v, const char *text,
  * be typed in tmp; *kd is NULL for a law parameter (index *li).
  */
 static int
-key_lookup(const struct scene *tmp, const char *key, const struct scene_keydef **kd, int *li,
-           struct scene_error *err)
+key_lookup(const struct hb_scene *tmp, const char *key, const struct scene_keydef **kd, int *li,
+           struct hb_scene_error *err)
 {
 	int st, ro;
 
@@ -172,15 +172,15 @@ key_lookup(const struct scene *tmp, const char *key, const struct scene_keydef *
 }
 
 int
-scene_set_text(struct scene *sc, const char *key, const char *text, struct scene_error *err)
+hb_scene_set_text(struct hb_scene *sc, const char *key, const char *text, struct hb_scene_error *err)
 {
-	struct scene tmp = *sc;
+	struct hb_scene tmp = *sc;
 	const struct scene_keydef *kd;
 	char t[512], m[256], acc[192];
 	double v;
 	int st, li;
 
-	scene_derive(&tmp, NULL, 0);
+	hb_scene_derive(&tmp, NULL, 0);
 	if ((st = key_lookup(&tmp, key, &kd, &li, err)) != HB_OK)
 		return st;
 	if (text == NULL)
@@ -188,14 +188,14 @@ scene_set_text(struct scene *sc, const char *key, const char *text, struct scene
 	if (trim_copy(text, t, sizeof t) != 0)
 		return scene_error_set(err, key, "at most 511 characters", "value too long");
 	if (kd == NULL) { /* a law parameter */
-		struct unit_dim dim = scene_lawpar_dim(&tmp, li);
-		if (units_parse(t, dim, &v, m, sizeof m) != HB_OK) {
+		struct hb_unit_dim dim = scene_lawpar_dim(&tmp, li);
+		if (hb_units_parse(t, dim, &v, m, sizeof m) != HB_OK) {
 			unit_accepted(dim, acc, sizeof acc);
 			return scene_error_set(err, key, acc, "%s", m);
 		}
 		if ((st = store_number(&tmp, key, v, t, err)) != HB_OK)
 			return st;
-		scene_derive(&tmp, NULL, 0);
+		hb_scene_derive(&tmp, NULL, 0);
 		*sc = tmp;
 		return HB_OK;
 	}
@@ -223,7 +223,7 @@ scene_set_text(struct scene *sc, const char *key, const char *text, struct scene
 		memcpy(base + kd->off, t, strlen(t) + 1);
 		break;
 	case ST_DOUBLE:
-		if (units_parse(t, *kd->dim, &v, m, sizeof m) != HB_OK) {
+		if (hb_units_parse(t, *kd->dim, &v, m, sizeof m) != HB_OK) {
 			unit_accepted(*kd->dim, acc, sizeof acc);
 			return scene_error_set(err, key, acc, "%s", m);
 		}
@@ -232,7 +232,7 @@ scene_set_text(struct scene *sc, const char *key, const char *text, struct scene
 		break;
 	case ST_LONG:
 	case ST_INT:
-		if (units_parse(t, UNIT_NONE, &v, m, sizeof m) != HB_OK)
+		if (hb_units_parse(t, hb_unit_none, &v, m, sizeof m) != HB_OK)
 			return scene_error_set(err, key, "a whole number", "%s", m);
 		if (v != floor(v))
 			return scene_error_set(err, key, "a whole number", "'%s' is not a whole number",
@@ -247,48 +247,48 @@ scene_set_text(struct scene *sc, const char *key, const char *text, struct scene
 			return scene_error_set(err, key, acc, "'%s' is not accepted", t);
 		}
 		if (kd->store == ST_LAW) {
-			const struct law_type *law = law_list()[c];
+			const struct hb_law_type *law = hb_law_list()[c];
 			if (law != tmp.law) {
 				tmp.law = law;
 				memset(tmp.par, 0, sizeof tmp.par);
-				law_defaults(law, tmp.par);
+				hb_law_defaults(law, tmp.par);
 			}
 		} else
 			*(int *)(base + kd->off) = c;
 		break;
 	}
 	}
-	scene_derive(&tmp, NULL, 0);
+	hb_scene_derive(&tmp, NULL, 0);
 	*sc = tmp;
 	return HB_OK;
 }
 
 int
-scene_set_number(struct scene *sc, const char *key, double v, struct scene_error *err)
+hb_scene_set_number(struct hb_scene *sc, const char *key, double v, struct hb_scene_error *err)
 {
-	struct scene tmp = *sc;
+	struct hb_scene tmp = *sc;
 	const struct scene_keydef *kd;
 	int st, li;
 
-	scene_derive(&tmp, NULL, 0);
+	hb_scene_derive(&tmp, NULL, 0);
 	if ((st = key_lookup(&tmp, key, &kd, &li, err)) != HB_OK)
 		return st;
 	if (kd != NULL && kd->store != ST_DOUBLE && kd->store != ST_LONG && kd->store != ST_INT)
 		return scene_error_set(err, key, NULL, "not a number key");
 	if ((st = store_number(&tmp, key, v, NULL, err)) != HB_OK)
 		return st;
-	scene_derive(&tmp, NULL, 0);
+	hb_scene_derive(&tmp, NULL, 0);
 	*sc = tmp;
 	return HB_OK;
 }
 
 int
-scene_set(struct scene *sc, const char *key, const char *text, char *msg, size_t n)
+hb_scene_set(struct hb_scene *sc, const char *key, const char *text, char *msg, size_t n)
 {
-	struct scene_error e;
-	int st = scene_set_text(sc, key, text, &e);
+	struct hb_scene_error e;
+	int st = hb_scene_set_text(sc, key, text, &e);
 
 	if (st != HB_OK && msg != NULL && n > 0)
-		scene_error_str(&e, msg, n);
+		hb_scene_error_str(&e, msg, n);
 	return st;
 }

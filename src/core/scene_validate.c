@@ -17,20 +17,20 @@
 
 /* Checks number v of key against r; vs is written with dim. */
 static int
-check_value(const char *key, double v, const struct unit_range *r, struct unit_dim dim,
-            const struct unit_dim *rdim, const char *what, struct scene_error *err)
+check_value(const char *key, double v, const struct hb_unit_range *r, struct hb_unit_dim dim,
+            const struct hb_unit_dim *rdim, const char *what, struct hb_scene_error *err)
 {
 	char vs[64];
 
-	if (units_in_range(v, r))
+	if (hb_units_in_range(v, r))
 		return HB_OK;
-	units_format(v, dim, 6, vs, sizeof vs);
+	hb_units_format(v, dim, 6, vs, sizeof vs);
 	return scene_error_range(err, key, r, rdim, "%s %s is out of range", what, vs);
 }
 
 /* The values of the table that this scene uses. */
 static int
-check_table(const struct scene *sc, struct scene_error *err)
+check_table(const struct hb_scene *sc, struct hb_scene_error *err)
 {
 	const char *base = (const char *)sc;
 	int st;
@@ -50,19 +50,19 @@ check_table(const struct scene *sc, struct scene_error *err)
 		case ST_INT:
 			v = kd->store == ST_LONG ? (double)*(const long *)(base + kd->off)
 			                         : (double)*(const int *)(base + kd->off);
-			st = check_value(kd->key, v, &kd->range, UNIT_NONE, NULL, "value", err);
+			st = check_value(kd->key, v, &kd->range, hb_unit_none, NULL, "value", err);
 			break;
 		case ST_LAW:
 			st = sc->law == NULL ? scene_error_set(err, kd->key, NULL, "no contact law")
 			                     : HB_OK;
 			break;
 		case ST_STEPPER:
-			st = sc->run.stepper < 0 || sc->run.stepper >= STEPPER_COUNT
+			st = sc->run.stepper < 0 || sc->run.stepper >= HB_STEPPER_COUNT
 			    ? scene_error_set(err, kd->key, NULL, "value %d is out of range",
 			          sc->run.stepper) : HB_OK;
 			break;
 		case ST_REDUCE:
-			st = sc->run.reduce < 0 || sc->run.reduce > REDUCE_ALL
+			st = sc->run.reduce < 0 || sc->run.reduce > HB_REDUCE_ALL
 			    ? scene_error_set(err, kd->key, NULL, "value %d is out of range",
 			          sc->run.reduce) : HB_OK;
 			break;
@@ -78,16 +78,16 @@ check_table(const struct scene *sc, struct scene_error *err)
 
 /* The law's parameters, each in its range, then the law's own check. */
 static int
-check_law(const struct scene *sc, struct scene_error *err)
+check_law(const struct hb_scene *sc, struct hb_scene_error *err)
 {
-	const struct law_type *law = sc->law;
+	const struct hb_law_type *law = sc->law;
 	char lm[256], key[48], vs[64];
 	int st;
 
 	for (int i = 0; i < law->n_params; i++) {
-		const struct law_param *pp = &law->params[i];
-		struct unit_range r = law_param_range(pp);
-		int derived = (pp->flags & LAW_PARAM_STIFFNESS) && sc->d.k_derived;
+		const struct hb_law_param *pp = &law->params[i];
+		struct hb_unit_range r = hb_law_param_range(pp);
+		int derived = (pp->flags & HB_LAW_PARAM_STIFFNESS) && sc->d.k_derived;
 
 		snprintf(key, sizeof key, "law.%s", pp->name);
 		st = check_value(key, sc->par[i], &r, scene_lawpar_dim(sc, i), NULL,
@@ -104,12 +104,12 @@ check_law(const struct scene *sc, struct scene_error *err)
 	if (law->check != NULL && law->check(sc->par, lm, sizeof lm) != HB_OK) {
 		int pi = 0;
 		for (int i = 0; i < law->n_params; i++)
-			if (law->params[i].flags & LAW_PARAM_CHECKED) {
+			if (law->params[i].flags & HB_LAW_PARAM_CHECKED) {
 				pi = i;
 				break;
 			}
 		snprintf(key, sizeof key, "law.%s", law->params[pi].name);
-		units_format(sc->par[pi], scene_lawpar_dim(sc, pi), 6, vs, sizeof vs);
+		hb_units_format(sc->par[pi], scene_lawpar_dim(sc, pi), 6, vs, sizeof vs);
 		return scene_error_set(err, key, lm, "value %s is out of range", vs);
 	}
 	return HB_OK;
@@ -121,18 +121,18 @@ check_law(const struct scene *sc, struct scene_error *err)
  * an overflowing flight.
  */
 static int
-check_weight(const struct scene *sc, struct scene_error *err)
+check_weight(const struct hb_scene *sc, struct hb_scene_error *err)
 {
 	for (int b = 0; b < 2; b++) {
 		double m = b == 0 ? sc->d.m1 : sc->d.m2;
 		char ms[64], lim[96], gs[64];
-		if (b == 1 && (sc->d.system != SCENE_FULL || isinf(m)))
+		if (b == 1 && (sc->d.system != HB_SCENE_FULL || isinf(m)))
 			continue; /* body 2 fixed, or its load not applied */
 		if (isfinite(m * sc->loads.g))
 			continue;
-		units_format(m, UNIT_MASS, 4, ms, sizeof ms);
-		units_format(sc->loads.g, UNIT_ACCEL, 4, gs, sizeof gs);
-		units_format(DBL_MAX / fabs(sc->loads.g), UNIT_MASS, 4, lim, sizeof lim);
+		hb_units_format(m, hb_unit_mass, 4, ms, sizeof ms);
+		hb_units_format(sc->loads.g, hb_unit_accel, 4, gs, sizeof gs);
+		hb_units_format(DBL_MAX / fabs(sc->loads.g), hb_unit_mass, 4, lim, sizeof lim);
 		snprintf(lim + strlen(lim), sizeof lim - strlen(lim), " or less at g = %s", gs);
 		return scene_error_set(err, b == 0 ? "body1.mass" : "body2.mass", lim,
 		    "its weight m g (%s times %s) overflows a double", ms, gs);
@@ -146,27 +146,27 @@ check_weight(const struct scene *sc, struct scene_error *err)
  * forces that mass accepts, rather than run into a meaningless flight.
  */
 static int
-check_forces(const struct scene *sc, struct scene_error *err)
+check_forces(const struct hb_scene *sc, struct hb_scene_error *err)
 {
 	for (int b = 0; b < 2; b++) {
 		double m = b == 0 ? sc->d.m1 : sc->d.m2, F = b == 0 ? sc->loads.F1 : sc->loads.F2;
 		char ms[64];
-		if (b == 1 && (sc->d.system != SCENE_FULL || isinf(m)))
+		if (b == 1 && (sc->d.system != HB_SCENE_FULL || isinf(m)))
 			continue; /* body 2 fixed, or its load not applied */
 		if (fabs(F) <= SCENE_ACCEL_MAX * m)
 			continue;
-		struct unit_range r = { -SCENE_ACCEL_MAX * m, SCENE_ACCEL_MAX * m, 0, 0, 0 };
-		units_format(m, UNIT_MASS, 4, ms, sizeof ms);
-		return scene_error_range(err, b == 0 ? "loads.F1" : "loads.F2", &r, &UNIT_FORCE,
+		struct hb_unit_range r = { -SCENE_ACCEL_MAX * m, SCENE_ACCEL_MAX * m, 0, 0, 0 };
+		hb_units_format(m, hb_unit_mass, 4, ms, sizeof ms);
+		return scene_error_range(err, b == 0 ? "loads.F1" : "loads.F2", &r, &hb_unit_force,
 		    "it would accelerate body %d (%s) beyond %g m/s^2", b + 1, ms, SCENE_ACCEL_MAX);
 	}
 	return HB_OK;
 }
 
 int
-scene_check(struct scene *sc, struct scene_error *err)
+hb_scene_check(struct hb_scene *sc, struct hb_scene_error *err)
 {
-	static const struct unit_range m1 = { 0, HUGE_VAL, 1, 1, 0 }, m2 = { 0, HUGE_VAL, 1, 0, 0 };
+	static const struct hb_unit_range m1 = { 0, HUGE_VAL, 1, 1, 0 }, m2 = { 0, HUGE_VAL, 1, 0, 0 };
 	char key[32];
 	int st;
 
@@ -175,13 +175,13 @@ scene_check(struct scene *sc, struct scene_error *err)
 	if ((st = check_table(sc, err)) != HB_OK)
 		return st;
 	if (sc->loads.ramp) { /* the ramp needs a drawing force: F_e0 > 0 */
-		static const struct unit_range fe0 = { 0, HUGE_VAL, 1, 1, 0 };
-		if ((st = check_value("loads.F_e0", sc->loads.Fe0, &fe0, UNIT_FORCE, &UNIT_FORCE,
+		static const struct hb_unit_range fe0 = { 0, HUGE_VAL, 1, 1, 0 };
+		if ((st = check_value("loads.F_e0", sc->loads.Fe0, &fe0, hb_unit_force, &hb_unit_force,
 		    "value", err)) != HB_OK)
 			return st;
 	}
 	for (int b = 0; b < 2; b++) {
-		const struct scene_body *bd = &sc->body[b];
+		const struct hb_scene_body *bd = &sc->body[b];
 		if (!bd->mass_given && !(bd->rho > 0 && isfinite(bd->R)) && !(b == 1 && isinf(bd->R))) {
 			snprintf(key, sizeof key, "%s", b == 0 ? "body1.mass" : "body2.mass");
 			return scene_error_set(err, key,
@@ -189,10 +189,10 @@ scene_check(struct scene *sc, struct scene_error *err)
 			           : "a mass, or rho with a finite R", "body %d has no mass", b + 1);
 		}
 	}
-	scene_derive(sc, NULL, 0);
-	if ((st = check_value("body1.mass", sc->d.m1, &m1, UNIT_MASS, &UNIT_MASS, "value", err)))
+	hb_scene_derive(sc, NULL, 0);
+	if ((st = check_value("body1.mass", sc->d.m1, &m1, hb_unit_mass, &hb_unit_mass, "value", err)))
 		return st;
-	if ((st = check_value("body2.mass", sc->d.m2, &m2, UNIT_MASS, &UNIT_MASS, "value", err)))
+	if ((st = check_value("body2.mass", sc->d.m2, &m2, hb_unit_mass, &hb_unit_mass, "value", err)))
 		return st;
 	if ((st = check_weight(sc, err)) != HB_OK)
 		return st;
@@ -202,12 +202,12 @@ scene_check(struct scene *sc, struct scene_error *err)
 }
 
 int
-scene_validate(struct scene *sc, char *msg, size_t n)
+hb_scene_validate(struct hb_scene *sc, char *msg, size_t n)
 {
-	struct scene_error e;
-	int st = scene_check(sc, &e);
+	struct hb_scene_error e;
+	int st = hb_scene_check(sc, &e);
 
 	if (st != HB_OK && msg != NULL && n > 0)
-		scene_error_str(&e, msg, n);
+		hb_scene_error_str(&e, msg, n);
 	return st;
 }

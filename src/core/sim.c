@@ -13,9 +13,9 @@
  * Work is organised by flow interval (DESIGN.md section 3):
  *  - flight, F_er constant on [t, T]: closed form x + v tau + a tau^2 / 2,
  *    the event from the quadratic, then nudged by ulps into D;
- *  - flight otherwise: GSL on (x, v) (+ (x_m, v_m) when REDUCE_COM is off);
+ *  - flight otherwise: GSL on (x, v) (+ (x_m, v_m) when HB_REDUCE_COM is off);
  *  - contact: GSL on (x_c, v, z_c, W, J_Fc, J_Fe) with x = x_e + x_c
- *    (or with x as well when REDUCE_CONTACT is off).
+ *    (or with x as well when HB_REDUCE_CONTACT is off).
  * The ODE is integrated in scaled variables u_i = y_i / s_i, with s_i the
  * component's scale taken from the interval's own sizes (see scales()), so
  * that GSL's standard control with one eps_abs = atol gives each component
@@ -43,14 +43,14 @@
  * run.stepper = auto then goes over to bsimp for the contacts.
  *
  * Invariants: the arc's samples are all in C except each pre-jump sample,
- * which is in D by check_in_D's test; post-jump samples are g of the
+ * which is in D by hb_check_in_D's test; post-jump samples are g of the
  * pre-jump ones bit for bit; a failed step leaves the arc as it was.
  */
 #include "sim_impl.h"
 #include "clock.h"
 
 /*
- * A flow interval continued after sim_seek (or sim_set_scene) from inside
+ * A flow interval continued after hb_sim_seek (or hb_sim_set_scene) from inside
  * it: what a run that had not stopped would carry on with.  The scales are
  * those of the interval's first sample (a fresh run took them there), and
  * the noise filter's largest values (gmax, vmax) are those of the samples
@@ -58,10 +58,10 @@
  * before the seek (without them every step "locates" one).
  */
 static void
-resume_interval(struct sim *s)
+resume_interval(struct hb_sim *s)
 {
 	const struct layout *L = &s->cur->L;
-	const struct arc_sample *f = arc_at(s->arc, s->resume_first);
+	const struct hb_arc_sample *f = hb_arc_at(s->arc, s->resume_first);
 	double t = s->t, x = s->x, v = s->v, xm = s->xm, vm = s->vm;
 	double fv[MAXFUN], u[MAXDIM];
 	int kind[MAXFUN], n, i;
@@ -79,7 +79,7 @@ resume_interval(struct sim *s)
 	s->xm = xm;
 	s->vm = vm;
 	for (k = s->resume_first; k <= s->resume_last; k++) {
-		const struct arc_sample *a = arc_at(s->arc, k);
+		const struct hb_arc_sample *a = hb_arc_at(s->arc, k);
 
 		hbs_pack_sample(s, L, a, u);
 		n = hbs_watch(s, s->cur, a->t, u, fv, kind);
@@ -91,18 +91,18 @@ resume_interval(struct sim *s)
 
 /* Begins a flow interval at the current state. */
 static int
-setup_interval(struct sim *s)
+setup_interval(struct hb_sim *s)
 {
-	const struct scene *sc = &s->sc;
+	const struct hb_scene *sc = &s->sc;
 
 	s->setup = 0;
 	s->ntiny = 0;
 	s->msign = s->mforce = 0;
 	memset(s->gmax, 0, sizeof s->gmax);
 	s->vmax = fabs(s->v);
-	s->closed = !s->q && (sc->run.reduce & REDUCE_FLIGHT) &&
-	            scene_Fer_constant(sc, s->t, sc->run.T) &&
-	            (sc->d.system == SCENE_REDUCED || (sc->run.reduce & REDUCE_COM));
+	s->closed = !s->q && (sc->run.reduce & HB_REDUCE_FLIGHT) &&
+	            hb_scene_Fer_constant(sc, s->t, sc->run.T) &&
+	            (sc->d.system == HB_SCENE_REDUCED || (sc->run.reduce & HB_REDUCE_COM));
 	if (s->closed) {
 		s->resume = 0;
 		return 0;
@@ -148,14 +148,14 @@ setup_interval(struct sim *s)
  * as last), which was of the other mode.
  */
 static void
-set_mode(struct sim *s)
+set_mode(struct hb_sim *s)
 {
-	const struct scene *sc = &s->sc;
+	const struct hb_scene *sc = &s->sc;
 	const struct phase *p = s->cur;
 	int m = 0;
 
 	if (p->q && sc->law->psi_mode && sc->run.kinks) {
-		double y[MAXDIM], g[LAW_MAX_KINKS], z[LAW_MAX_Z] = { 0 };
+		double y[MAXDIM], g[HB_LAW_MAX_KINKS], z[HB_LAW_MAX_Z] = { 0 };
 		const struct layout *L = &p->L;
 		int i;
 
@@ -177,10 +177,10 @@ set_mode(struct sim *s)
 
 /* One accepted step of the numeric phase, with what follows from it. */
 static int
-numeric_step(struct sim *s)
+numeric_step(struct hb_sim *s)
 {
 	struct phase *p = s->cur;
-	const struct scene *sc = &s->sc;
+	const struct hb_scene *sc = &s->sc;
 	double t = s->t, t1 = sc->run.T, kinks[4];
 	int nk, load_kink = 0, rc, tries = 0;
 	unsigned long failed0;
@@ -192,9 +192,9 @@ numeric_step(struct sim *s)
 
 		hbs_watch_at(s, p, s->t, s->u, f, kind, NULL);
 		if (f[0] < 0.0)
-			return hbs_jump(s, LOCATE_START, 0, 0.0, f[0], f[0]);
+			return hbs_jump(s, HB_LOCATE_START, 0, 0.0, f[0], f[0]);
 	}
-	nk = sc->run.kinks ? scene_load_kinks(sc, t, t1, kinks, 4) : 0;
+	nk = sc->run.kinks ? hb_scene_load_kinks(sc, t, t1, kinks, 4) : 0;
 	if (nk > 0) {
 		t1 = kinks[0];
 		load_kink = 1;
@@ -252,11 +252,11 @@ retry:
 	memcpy(s->u1, s->u, sizeof s->u);
 	if ((rc = hbs_after_step(s, load_kink && t == t1)))
 		return rc;
-	if (s->end == SIM_RUNNING && !s->setup && (rc = hbs_stiffness(s)))
+	if (s->end == HB_SIM_RUNNING && !s->setup && (rc = hbs_stiffness(s)))
 		return rc;
-	if (s->end == SIM_RUNNING && !s->setup && s->t >= sc->run.T) {
+	if (s->end == HB_SIM_RUNNING && !s->setup && s->t >= sc->run.T) {
 		/* the horizon: the last sample is the end */
-		if ((rc = hbs_push_sample(s, ARC_END)))
+		if ((rc = hbs_push_sample(s, HB_ARC_END)))
 			return rc;
 		hbs_finish_T(s);
 	}
@@ -264,11 +264,11 @@ retry:
 }
 
 static void
-reset_state(struct sim *s)
+reset_state(struct hb_sim *s)
 {
-	const struct scene *sc = &s->sc;
+	const struct hb_scene *sc = &s->sc;
 
-	s->end = SIM_RUNNING;
+	s->end = HB_SIM_RUNNING;
 	s->err[0] = s->endmsg[0] = '\0';
 	s->t = 0.0;
 	s->j = 0;
@@ -277,8 +277,8 @@ reset_state(struct sim *s)
 	s->v = sc->init.v0;
 	s->xc = 0.0;
 	memset(s->z, 0, sizeof s->z);
-	s->xm = sc->d.system == SCENE_FULL ? sc->init.xm0 : 0.0;
-	s->vm = sc->d.system == SCENE_FULL ? sc->init.vm0 : 0.0;
+	s->xm = sc->d.system == HB_SCENE_FULL ? sc->init.xm0 : 0.0;
+	s->vm = sc->d.system == HB_SCENE_FULL ? sc->init.vm0 : 0.0;
 	s->W = s->JFc = s->JFe = s->xcmax = s->Fcmax = 0.0;
 	s->Ee = s->Wc = s->Wc0 = 0.0;
 	s->xe = s->te = s->vi = 0.0;
@@ -288,28 +288,28 @@ reset_state(struct sim *s)
 	s->h1[0] = s->h1[1] = 0.0;
 	s->ncol = 0;
 	s->ncol_total = 0;
-	s->stepper[1] = sc->run.stepper == STEPPER_AUTO ? STEPPER_RK8PD : sc->run.stepper;
+	s->stepper[1] = sc->run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : sc->run.stepper;
 	arc_truncate(s->arc, 0);
 	{
-		struct sim_stats keep = s->st;
+		struct hb_sim_stats keep = s->st;
 
 		memset(&s->st, 0, sizeof s->st);
 		s->st.ncomp = keep.ncomp;
 		memcpy(s->st.comp, keep.comp, sizeof s->st.comp);
 	}
-	hbs_push_sample(s, ARC_START);
+	hbs_push_sample(s, HB_ARC_START);
 }
 
 static int
-build(struct sim *s, char *msg, size_t n)
+build(struct hb_sim *s, char *msg, size_t n)
 {
 	int q;
 
 	for (q = 0; q < 2; q++)
-		s->stepper[q] = s->sc.run.stepper == STEPPER_AUTO ? STEPPER_RK8PD : s->sc.run.stepper;
+		s->stepper[q] = s->sc.run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : s->sc.run.stepper;
 	for (q = 0; q < 2; q++)
 		if (hbs_phase_alloc(s, &s->ph[q], q))
-			return status_set(msg, n, HB_ENOMEM, "out of memory for the integrator");
+			return hb_status_set(msg, n, HB_ENOMEM, "out of memory for the integrator");
 	{
 		const char *names[MAXDIM];
 		const struct layout *L = &s->ph[1].L;
@@ -337,19 +337,19 @@ build(struct sim *s, char *msg, size_t n)
 	return 0;
 }
 
-struct sim *
-sim_new(const struct scene *sc, char *msg, size_t n)
+struct hb_sim *
+hb_sim_new(const struct hb_scene *sc, char *msg, size_t n)
 {
-	struct sim *s;
+	struct hb_sim *s;
 
 	gsl_set_error_handler_off();
 	s = calloc(1, sizeof *s);
 	if (s == NULL) {
-		status_set(msg, n, HB_ENOMEM, "out of memory");
+		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		return NULL;
 	}
 	s->sc = *sc;
-	if (scene_validate(&s->sc, msg, n) != 0) {
+	if (hb_scene_validate(&s->sc, msg, n) != 0) {
 		free(s);
 		return NULL;
 	}
@@ -357,8 +357,8 @@ sim_new(const struct scene *sc, char *msg, size_t n)
 	s->root = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
 	if (s->arc == NULL || s->root == NULL || build(s, msg, n) != 0) {
 		if (s->arc == NULL || s->root == NULL)
-			status_set(msg, n, HB_ENOMEM, "out of memory");
-		sim_free(s);
+			hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+		hb_sim_free(s);
 		return NULL;
 	}
 	reset_state(s);
@@ -366,7 +366,7 @@ sim_new(const struct scene *sc, char *msg, size_t n)
 }
 
 void
-sim_free(struct sim *s)
+hb_sim_free(struct hb_sim *s)
 {
 	if (s == NULL)
 		return;
@@ -386,15 +386,15 @@ sim_free(struct sim *s)
 }
 
 int
-sim_advance(struct sim *s, long max_steps, double max_seconds)
+hb_sim_advance(struct hb_sim *s, long max_steps, double max_seconds)
 {
 	double start = clock_seconds(CLOCK_MONOTONIC), cpu0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
 	long work0 = s->work;
 	int rc = 0;
 
-	if (s->end != SIM_RUNNING)
+	if (s->end != HB_SIM_RUNNING)
 		return HB_EDONE;
-	while (s->end == SIM_RUNNING) {
+	while (s->end == HB_SIM_RUNNING) {
 		if (max_steps > 0 && s->work - work0 >= max_steps)
 			break;
 		if (max_seconds > 0 && ((s->work - work0) & 7) == 0 &&
@@ -418,67 +418,67 @@ sim_advance(struct sim *s, long max_steps, double max_seconds)
 }
 
 int
-sim_run(struct sim *s)
+hb_sim_run(struct hb_sim *s)
 {
-	return sim_advance(s, 0, 0.0);
+	return hb_sim_advance(s, 0, 0.0);
 }
 
-enum sim_end
-sim_end(const struct sim *s)
+enum hb_sim_end
+hb_sim_end(const struct hb_sim *s)
 {
 	return s->end;
 }
 
 const char *
-sim_end_str(const struct sim *s)
+hb_sim_end_str(const struct hb_sim *s)
 {
-	return s->end == SIM_RUNNING ? "running" : s->endmsg;
+	return s->end == HB_SIM_RUNNING ? "running" : s->endmsg;
 }
 
 const char *
-sim_errmsg(const struct sim *s)
+hb_sim_errmsg(const struct hb_sim *s)
 {
 	return s->err;
 }
 
-const struct scene *
-sim_scene(const struct sim *s)
+const struct hb_scene *
+hb_sim_scene(const struct hb_sim *s)
 {
 	return &s->sc;
 }
 
-const struct arc *
-sim_arc(const struct sim *s)
+const struct hb_arc *
+hb_sim_arc(const struct hb_sim *s)
 {
 	return s->arc;
 }
 
-const struct sim_stats *
-sim_stats(const struct sim *s)
+const struct hb_sim_stats *
+hb_sim_stats(const struct hb_sim *s)
 {
 	return &s->st;
 }
 
 size_t
-sim_ncollisions(const struct sim *s)
+hb_sim_ncollisions(const struct hb_sim *s)
 {
 	return s->ncol;
 }
 
 long
-sim_collisions_total(const struct sim *s)
+hb_sim_collisions_total(const struct hb_sim *s)
 {
 	return s->ncol_total;
 }
 
-const struct collision *
-sim_collision(const struct sim *s, size_t i)
+const struct hb_collision *
+hb_sim_collision(const struct hb_sim *s, size_t i)
 {
 	return i < s->ncol ? &s->col[i] : NULL;
 }
 
 int
-sim_contact_live(const struct sim *s, struct collision *out)
+hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out)
 {
 	if (!s->q)
 		return 0;
@@ -503,12 +503,12 @@ sim_contact_live(const struct sim *s, struct collision *out)
 }
 
 int
-sim_seek(struct sim *s, size_t i)
+hb_sim_seek(struct hb_sim *s, size_t i)
 {
-	const struct arc_sample *a;
-	const struct arc_interval *iv;
+	const struct hb_arc_sample *a;
+	const struct hb_arc_interval *iv;
 
-	if (i >= arc_len(s->arc))
+	if (i >= hb_arc_len(s->arc))
 		return HB_EINVAL;
 	/*
 	 * The step to continue with: the one the controller proposes where the
@@ -516,16 +516,16 @@ sim_seek(struct sim *s, size_t i)
 	 * to it), else the one the run took from that sample.
 	 */
 	s->resume_h = 0.0;
-	if (i + 1 < arc_len(s->arc) && arc_at(s->arc, i + 1)->j == arc_at(s->arc, i)->j)
-		s->resume_h = arc_at(s->arc, i + 1)->t - arc_at(s->arc, i)->t;
-	else if (i + 1 == arc_len(s->arc) && s->end == SIM_RUNNING && !s->setup
-	         && s->t == arc_at(s->arc, i)->t && s->j == arc_at(s->arc, i)->j && s->h > 0)
+	if (i + 1 < hb_arc_len(s->arc) && hb_arc_at(s->arc, i + 1)->j == hb_arc_at(s->arc, i)->j)
+		s->resume_h = hb_arc_at(s->arc, i + 1)->t - hb_arc_at(s->arc, i)->t;
+	else if (i + 1 == hb_arc_len(s->arc) && s->end == HB_SIM_RUNNING && !s->setup
+	         && s->t == hb_arc_at(s->arc, i)->t && s->j == hb_arc_at(s->arc, i)->j && s->h > 0)
 		s->resume_h = s->h;
 	arc_truncate(s->arc, i + 1);
-	a = arc_at(s->arc, i);
-	iv = arc_interval_at(s->arc, arc_interval_of(s->arc, i));
+	a = hb_arc_at(s->arc, i);
+	iv = hb_arc_interval_at(s->arc, hb_arc_interval_of(s->arc, i));
 	/* continuing inside the interval (not at its pre-jump end) */
-	s->resume = a->kind != ARC_PRE_JUMP;
+	s->resume = a->kind != HB_ARC_PRE_JUMP;
 	s->resume_first = iv->first;
 	s->resume_last = i;
 	s->t = a->t;
@@ -547,7 +547,7 @@ sim_seek(struct sim *s, size_t i)
 	s->Wc0 = a->Wc + a->W;
 	s->xe = a->x - a->xc;
 	if (s->q) {
-		const struct arc_sample *f = arc_at(s->arc, iv->first);
+		const struct hb_arc_sample *f = hb_arc_at(s->arc, iv->first);
 
 		s->te = f->t;
 		s->vi = f->v;
@@ -561,12 +561,12 @@ sim_seek(struct sim *s, size_t i)
 		s->col[s->ncol - 1].tf = NAN;
 	s->n_instant = 0;
 	s->err[0] = s->endmsg[0] = '\0';
-	s->end = SIM_RUNNING;
+	s->end = HB_SIM_RUNNING;
 	s->setup = 1;
 	if (s->t >= s->sc.run.T)
 		hbs_finish_T(s);
 	else if (s->j >= s->sc.run.J) {
-		s->end = SIM_END_J;
+		s->end = HB_SIM_END_J;
 		snprintf(s->endmsg, sizeof s->endmsg, "jump cap J = %ld reached at t = %.9g s",
 		         s->sc.run.J, s->t);
 	}
@@ -574,31 +574,31 @@ sim_seek(struct sim *s, size_t i)
 }
 
 static int
-same_bodies(const struct scene *a, const struct scene *b)
+same_bodies(const struct hb_scene *a, const struct hb_scene *b)
 {
 	return a->d.m1 == b->d.m1 && a->d.m2 == b->d.m2 && a->d.system == b->d.system;
 }
 
 int
-sim_set_scene(struct sim *s, const struct scene *sc, int *restarted, char *msg, size_t n)
+hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, char *msg, size_t n)
 {
-	struct scene nsc = *sc;
+	struct hb_scene nsc = *sc;
 	int restart, rc;
 
 	if (restarted)
 		*restarted = 0;
-	if ((rc = scene_validate(&nsc, msg, n)) != 0)
+	if ((rc = hb_scene_validate(&nsc, msg, n)) != 0)
 		return rc;
 	restart = nsc.d.system != s->sc.d.system ||
 	          memcmp(&nsc.init, &s->sc.init, sizeof nsc.init) != 0 ||
 	          (s->q && (nsc.law != s->sc.law || nsc.ext != s->sc.ext || !same_bodies(&nsc, &s->sc)));
 	{
 		/* build for the new scene aside: on failure the simulator is exactly as it was */
-		struct scene old = s->sc;
+		struct hb_scene old = s->sc;
 		struct phase oldph[2] = { s->ph[0], s->ph[1] };
 		int oldstepper[2] = { s->stepper[0], s->stepper[1] };
 		int oldbuilt[2] = { s->built[0], s->built[1] };
-		struct sim_stats oldst = s->st;
+		struct hb_sim_stats oldst = s->st;
 
 		s->sc = nsc;
 		memset(s->ph, 0, sizeof s->ph);
@@ -623,11 +623,11 @@ sim_set_scene(struct sim *s, const struct scene *sc, int *restarted, char *msg, 
 		return 0;
 	}
 	/* continue from the last sample with the new values */
-	return sim_seek(s, arc_len(s->arc) - 1);
+	return hb_sim_seek(s, hb_arc_len(s->arc) - 1);
 }
 
 int
-sim_restart(struct sim *s)
+hb_sim_restart(struct hb_sim *s)
 {
 	reset_state(s);
 	return 0;

@@ -58,11 +58,11 @@ flight_event(double x, double v, double a)
 }
 
 int
-hbs_flight_closed(struct sim *s)
+hbs_flight_closed(struct hb_sim *s)
 {
 	const double T = s->sc.run.T;
 	const double t0 = s->t, x0 = s->x, v0 = s->v;
-	const double a = scene_Fer(&s->sc, t0) / s->sc.d.m;
+	const double a = hb_scene_Fer(&s->sc, t0) / s->sc.d.m;
 	const double Ee0 = s->Ee;
 	double tau = flight_event(x0, v0, a), tend, tapex = INFINITY;
 	int i, rc, it = 0;
@@ -76,13 +76,13 @@ hbs_flight_closed(struct sim *s)
 		tapex = -v0 / a;
 	for (i = 1; i < FLIGHT_SAMPLES; i++) {
 		double tk = tend * i / FLIGHT_SAMPLES;
-		int kind = ARC_STEP;
+		int kind = HB_ARC_STEP;
 
 		if (tapex < tk) { /* the apex, an extremum of x */
 			tk = tapex;
 			tapex = INFINITY;
 			i--;
-			kind = ARC_EXTREMUM;
+			kind = HB_ARC_EXTREMUM;
 		}
 		if (tk <= 0.0)
 			continue;
@@ -98,7 +98,7 @@ hbs_flight_closed(struct sim *s)
 		flight_at(x0, v0, a, T - t0, &s->x, &s->v);
 		s->Ee = Ee0 + a * s->sc.d.m * (s->x - x0);
 		hbs_set_com(s);
-		if ((rc = hbs_push_sample(s, ARC_END)))
+		if ((rc = hbs_push_sample(s, HB_ARC_END)))
 			return rc;
 		hbs_finish_T(s);
 		return 0;
@@ -122,7 +122,7 @@ hbs_flight_closed(struct sim *s)
 		s->t = te;
 		s->Ee = Ee0 + a * s->sc.d.m * (s->x - x0);
 		hbs_set_com(s);
-		return hbs_jump(s, tau == 0.0 ? LOCATE_START : LOCATE_CLOSED_FORM, it, te - tprev,
+		return hbs_jump(s, tau == 0.0 ? HB_LOCATE_START : HB_LOCATE_CLOSED_FORM, it, te - tprev,
 		            fmax(xp, vp), fmax(s->x, s->v));
 	}
 }

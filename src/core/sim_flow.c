@@ -8,20 +8,20 @@
 int
 hbs_explicit_stepper(int stepper)
 {
-	return stepper == STEPPER_RK8PD || stepper == STEPPER_RKF45 || stepper == STEPPER_RKCK ||
-	       stepper == STEPPER_DOP853;
+	return stepper == HB_STEPPER_RK8PD || stepper == HB_STEPPER_RKF45 || stepper == HB_STEPPER_RKCK ||
+	       stepper == HB_STEPPER_DOP853;
 }
 
 static const gsl_odeiv2_step_type *
 stepper_type(int stepper)
 {
 	switch (stepper) {
-	case STEPPER_RKF45: return gsl_odeiv2_step_rkf45;
-	case STEPPER_RKCK: return gsl_odeiv2_step_rkck;
-	case STEPPER_MSBDF: return gsl_odeiv2_step_msbdf;
-	case STEPPER_RK4IMP: return gsl_odeiv2_step_rk4imp;
-	case STEPPER_BSIMP: return hb_step_bsimp_shifted;
-	case STEPPER_DOP853: return hb_step_dop853;
+	case HB_STEPPER_RKF45: return gsl_odeiv2_step_rkf45;
+	case HB_STEPPER_RKCK: return gsl_odeiv2_step_rkck;
+	case HB_STEPPER_MSBDF: return gsl_odeiv2_step_msbdf;
+	case HB_STEPPER_RK4IMP: return gsl_odeiv2_step_rk4imp;
+	case HB_STEPPER_BSIMP: return hb_step_bsimp_shifted;
+	case HB_STEPPER_DOP853: return hb_step_dop853;
 	default: return gsl_odeiv2_step_rk8pd;
 	}
 }
@@ -47,12 +47,12 @@ static int
 rhs(double t, const double u[], double du[], void *params)
 {
 	struct phase *p = params;
-	struct sim *s = p->s;
+	struct hb_sim *s = p->s;
 	const struct layout *L = &p->L;
-	const struct scene *sc = &s->sc;
+	const struct hb_scene *sc = &s->sc;
 	const double *is = s->iscale;
 	double y[MAXDIM];
-	double Fer = scene_Fer(sc, t), phi = 0.0, v, bad = 0.0;
+	double Fer = hb_scene_Fer(sc, t), phi = 0.0, v, bad = 0.0;
 	int i;
 
 	s->st.rhs++;
@@ -64,7 +64,7 @@ rhs(double t, const double u[], double du[], void *params)
 	if (p->q) {
 		const int nz = sc->law->n_z;
 		const double *z = nz ? &y[L->iz] : NULL;
-		double dz[LAW_MAX_Z];
+		double dz[HB_LAW_MAX_Z];
 
 		phi = sc->law->phi(sc->par, sc->ext, y[L->ixc], z, v);
 		if (s->msign)
@@ -85,9 +85,9 @@ rhs(double t, const double u[], double du[], void *params)
 	if (L->ixm >= 0) {
 		double F1, F2;
 
-		scene_loads_at(sc, t, &F1, &F2);
+		hb_scene_loads_at(sc, t, &F1, &F2);
 		PUT(L->ixm, u[L->ivm] * s->scale[L->ivm]);
-		PUT(L->ivm, sc->d.system == SCENE_FULL ? (F1 + F2) / (sc->d.m1 + sc->d.m2) : 0.0);
+		PUT(L->ivm, sc->d.system == HB_SCENE_FULL ? (F1 + F2) / (sc->d.m1 + sc->d.m2) : 0.0);
 	}
 #undef PUT
 	if (bad != 0.0 || isnan(bad))
@@ -96,11 +96,11 @@ rhs(double t, const double u[], double du[], void *params)
 }
 
 static double
-Fer_rate(const struct scene *sc, double t)
+Fer_rate(const struct hb_scene *sc, double t)
 {
 	double h = 1e-7 * (fabs(t) + 1e-3);
 
-	return (scene_Fer(sc, t + h) - scene_Fer(sc, t - h)) / (2 * h);
+	return (hb_scene_Fer(sc, t + h) - hb_scene_Fer(sc, t - h)) / (2 * h);
 }
 
 /* The Jacobian of rhs, for the implicit steppers; the law's partials. */
@@ -108,9 +108,9 @@ int
 hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *params)
 {
 	struct phase *p = params;
-	struct sim *s = p->s;
+	struct hb_sim *s = p->s;
 	const struct layout *L = &p->L;
-	const struct scene *sc = &s->sc;
+	const struct hb_scene *sc = &s->sc;
 	int n = L->dim, nz = sc->law->n_z, i, k;
 	double y[MAXDIM], J[MAXDIM * MAXDIM], dt[MAXDIM];
 	double m = sc->d.m, Ferdot = Fer_rate(sc, t);
@@ -123,11 +123,11 @@ hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *para
 		J[L->ix * n + L->iv] = 1.0;
 	dt[L->iv] = Ferdot / m;
 	if (p->q) {
-		double dphi[LAW_MAX_Z + 2], dpsi[LAW_MAX_Z * (LAW_MAX_Z + 2)];
+		double dphi[HB_LAW_MAX_Z + 2], dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)];
 		const double *z = nz ? &y[L->iz] : NULL;
 		double v = y[L->iv];
 		double phi = sc->law->phi(sc->par, sc->ext, y[L->ixc], z, v);
-		int col[LAW_MAX_Z + 2];
+		int col[HB_LAW_MAX_Z + 2];
 
 		sc->law->jac(sc->par, sc->ext, y[L->ixc], z, v, dphi, nz ? dpsi : NULL);
 		col[0] = L->ixc;
@@ -145,7 +145,7 @@ hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *para
 		J[L->iW * n + L->iv] += phi;
 		dt[L->iJe] = Ferdot;
 	}
-	J[L->iEe * n + L->iv] = scene_Fer(sc, t);
+	J[L->iEe * n + L->iv] = hb_scene_Fer(sc, t);
 	dt[L->iEe] = Ferdot * y[L->iv];
 	if (L->ixm >= 0)
 		J[L->ixm * n + L->ivm] = 1.0;
@@ -158,14 +158,14 @@ hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *para
 }
 
 static void
-make_layout(const struct scene *sc, int q, struct layout *L)
+make_layout(const struct hb_scene *sc, int q, struct layout *L)
 {
 	int n = 0;
-	int com = !(sc->run.reduce & REDUCE_COM);
+	int com = !(sc->run.reduce & HB_REDUCE_COM);
 
 	*L = (struct layout){ 0, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0 };
 	if (q) {
-		if (!(sc->run.reduce & REDUCE_CONTACT))
+		if (!(sc->run.reduce & HB_REDUCE_CONTACT))
 			L->ix = n++;
 		L->ixc = n++;
 		L->iv = n++;
@@ -201,9 +201,9 @@ hbs_phase_free(struct phase *p)
 }
 
 int
-hbs_phase_alloc(struct sim *s, struct phase *p, int q)
+hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
 {
-	const struct scene *sc = &s->sc;
+	const struct hb_scene *sc = &s->sc;
 	const gsl_odeiv2_step_type *T = stepper_type(s->stepper[q]);
 	/* msbdf is multistep: locate with the single-step implicit bsimp */
 	const gsl_odeiv2_step_type *TL = T == gsl_odeiv2_step_msbdf ? hb_step_bsimp_shifted : T;
@@ -226,27 +226,27 @@ hbs_phase_alloc(struct sim *s, struct phase *p, int q)
 }
 
 void
-hbs_set_com(struct sim *s)
+hbs_set_com(struct hb_sim *s)
 {
-	if (s->sc.d.system == SCENE_FULL)
-		scene_com(&s->sc, s->t, &s->xm, &s->vm);
+	if (s->sc.d.system == HB_SCENE_FULL)
+		hb_scene_com(&s->sc, s->t, &s->xm, &s->vm);
 	else
 		s->xm = s->vm = 0.0;
 }
 
 /* The stiffness k and exponent p of the law (k of the first stiffness param). */
 static void
-law_kp(const struct scene *sc, double *k, double *p)
+law_kp(const struct hb_scene *sc, double *k, double *p)
 {
 	int i;
 
 	*k = NAN;
 	for (i = 0; i < sc->law->n_params; i++)
-		if (sc->law->params[i].flags & LAW_PARAM_STIFFNESS || !strcmp(sc->law->params[i].name, "k")) {
+		if (sc->law->params[i].flags & HB_LAW_PARAM_STIFFNESS || !strcmp(sc->law->params[i].name, "k")) {
 			*k = sc->par[i];
 			break;
 		}
-	*p = law_exponent_p(sc->law, sc->par);
+	*p = hb_law_exponent_p(sc->law, sc->par);
 }
 
 /*
@@ -257,10 +257,10 @@ law_kp(const struct scene *sc, double *k, double *p)
  * ~ m V.  In flight: X = max(|x|, v^2/(2|a|)), V = max(|v|, sqrt(2|a|X)).
  */
 void
-hbs_scales(struct sim *s, const struct layout *L, int q)
+hbs_scales(struct hb_sim *s, const struct layout *L, int q)
 {
-	const struct scene *sc = &s->sc;
-	double m = sc->d.m, F = fabs(scene_Fer(sc, s->t)), X, V, k, p;
+	const struct hb_scene *sc = &s->sc;
+	double m = sc->d.m, F = fabs(hb_scene_Fer(sc, s->t)), X, V, k, p;
 	int i;
 
 	s->w.valid = 0; /* the watched values were of the old scales */
@@ -325,7 +325,7 @@ hbs_scales(struct sim *s, const struct layout *L, int q)
 
 /* Packs the canonical state into u (scaled). */
 void
-hbs_pack(struct sim *s, const struct layout *L, double *u)
+hbs_pack(struct hb_sim *s, const struct layout *L, double *u)
 {
 	double y[MAXDIM];
 	int i;
@@ -352,7 +352,7 @@ hbs_pack(struct sim *s, const struct layout *L, double *u)
 
 /* Unpacks u at time t into the canonical state. */
 void
-hbs_unpack(struct sim *s, const struct phase *p, double t, const double *u)
+hbs_unpack(struct hb_sim *s, const struct phase *p, double t, const double *u)
 {
 	const struct layout *L = &p->L;
 	double y[MAXDIM];
@@ -384,7 +384,7 @@ hbs_unpack(struct sim *s, const struct phase *p, double t, const double *u)
 
 /* The scaled state of an arc sample, in the layout L (as pack() for the canonical state). */
 void
-hbs_pack_sample(const struct sim *s, const struct layout *L, const struct arc_sample *a, double *u)
+hbs_pack_sample(const struct hb_sim *s, const struct layout *L, const struct hb_arc_sample *a, double *u)
 {
 	double y[MAXDIM];
 	int i;

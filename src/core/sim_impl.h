@@ -1,6 +1,6 @@
 /*
  * sim_impl.h - what the files of the simulator share (private to the engine):
- * the state of a run (struct sim), the layouts and phases of the flow
+ * the state of a run (struct hb_sim), the layouts and phases of the flow
  * intervals, and the functions one file calls in another.  sim.c holds the
  * driver and the public API (its header comment describes the method).
  */
@@ -30,7 +30,7 @@
 
 enum {
 	MAXDIM = 11,           /* x, v, x_c, z1, z2, W, JFc, JFe, E_e, x_m, v_m */
-	MAXFUN = LAW_MAX_KINKS + 3,
+	MAXFUN = HB_LAW_MAX_KINKS + 3,
 	CACHE = 96,
 	FLIGHT_SAMPLES = 48,   /* samples drawn along a closed-form flight, for plots */
 	MAX_BRENT = 100,
@@ -46,7 +46,7 @@ struct layout {
 };
 
 struct phase {
-	struct sim *s;
+	struct hb_sim *s;
 	struct layout L;
 	int q;
 	gsl_odeiv2_system sys;
@@ -62,22 +62,22 @@ struct cached {
 	double u[MAXDIM];
 };
 
-struct sim {
-	struct scene sc;
-	struct arc *arc;
-	struct collision *col;
+struct hb_sim {
+	struct hb_scene sc;
+	struct hb_arc *arc;
+	struct hb_collision *col;
 	size_t ncol, colcap;
 	long ncol_total;        /* collisions completed, kept or thinned out (col[].i) */
-	enum sim_end end;
+	enum hb_sim_end end;
 	char err[640];
 	char endmsg[700];
-	struct sim_stats st;
+	struct hb_sim_stats st;
 
 	/* canonical state at (t, j) */
 	double t;
 	long j;
 	int q;
-	double x, v, xc, z[LAW_MAX_Z], xm, vm;
+	double x, v, xc, z[HB_LAW_MAX_Z], xm, vm;
 	double W, JFc, JFe, xcmax, Fcmax;
 	double Ee, Wc;      /* works of F_er and F_c since t = 0 */
 	double Wc0;         /* Wc at the commencement of the contact in progress */
@@ -115,7 +115,7 @@ struct sim {
 	double f0[MAXDIM], f1[MAXDIM]; /* its derivatives at the step's ends (scaled) */
 	int hug;            /* 1: the step began on Phi = 0 to the noise, receding (see snap_separation) */
 	int msign;          /* the frozen sign of the law's mode kink in this step (0: none) */
-	int resume;         /* 1: the next interval continues one cut by sim_seek (see resume_interval) */
+	int resume;         /* 1: the next interval continues one cut by hb_sim_seek (see resume_interval) */
 	size_t resume_first, resume_last; /* its samples kept in the arc */
 	double resume_h;    /* the step to continue with from the seek point, or 0 */
 	double h1[2];       /* the first step of the last numeric interval of each q, / its Tc */
@@ -135,7 +135,7 @@ struct sim {
 };
 
 static inline double
-phi_at(const struct sim *s, double xc, const double *z, double v)
+phi_at(const struct hb_sim *s, double xc, const double *z, double v)
 {
 	return s->sc.law->phi(s->sc.par, s->sc.ext, xc, z, v);
 }
@@ -154,47 +154,47 @@ void
 hbs_phase_free(struct phase *p);
 
 int
-hbs_phase_alloc(struct sim *s, struct phase *p, int q);
+hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q);
 
 void
-hbs_set_com(struct sim *s);
+hbs_set_com(struct hb_sim *s);
 
 void
-hbs_scales(struct sim *s, const struct layout *L, int q);
+hbs_scales(struct hb_sim *s, const struct layout *L, int q);
 
 void
-hbs_pack(struct sim *s, const struct layout *L, double *u);
+hbs_pack(struct hb_sim *s, const struct layout *L, double *u);
 
 void
-hbs_unpack(struct sim *s, const struct phase *p, double t, const double *u);
+hbs_unpack(struct hb_sim *s, const struct phase *p, double t, const double *u);
 
 void
-hbs_pack_sample(const struct sim *s, const struct layout *L, const struct arc_sample *a, double *u);
+hbs_pack_sample(const struct hb_sim *s, const struct layout *L, const struct hb_arc_sample *a, double *u);
 
 /* sim_record.c */
 int
-hbs_fail(struct sim *s, int status, const char *why);
+hbs_fail(struct hb_sim *s, int status, const char *why);
 
 int
-hbs_push_sample(struct sim *s, int kind);
+hbs_push_sample(struct hb_sim *s, int kind);
 
 int
-hbs_jump(struct sim *s, int how, int iterations, double width, double ilo, double ihi);
+hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, double ihi);
 
 void
-hbs_finish_T(struct sim *s);
+hbs_finish_T(struct hb_sim *s);
 
 /* sim_flight.c */
 int
-hbs_flight_closed(struct sim *s);
+hbs_flight_closed(struct hb_sim *s);
 
 /* sim_watch.c: the values of the watched functions at a scaled state, their kinds */
 int
-hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
+hbs_watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
           int *kind);
 /* ... the value of function k alone (the same double), its kind in *kind */
 double
-hbs_watch_one(const struct sim *s, const struct phase *p, double t, const double *u, int k,
+hbs_watch_one(const struct hb_sim *s, const struct phase *p, double t, const double *u, int k,
               int *kind);
 
 /*
@@ -202,16 +202,16 @@ hbs_watch_one(const struct sim *s, const struct phase *p, double t, const double
  * next begins); hbs_scales forgets it.
  */
 int
-hbs_watch_at(struct sim *s, const struct phase *p, double t, const double *u, double *f,
+hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
              int *kind, double *rate);
 
 /* sim_snap.c: a state on the boundary of C to the precision of the computation */
 int
-hbs_hugging(struct sim *s, const double *u);
+hbs_hugging(struct hb_sim *s, const double *u);
 void
-hbs_snap_stick(struct sim *s, double *u);
+hbs_snap_stick(struct hb_sim *s, double *u);
 int
-hbs_snap_separation(struct sim *s, double *u);
+hbs_snap_separation(struct hb_sim *s, double *u);
 
 /* Did function i (of this kind) cross between values a (step start) and b? */
 static inline int
@@ -231,7 +231,7 @@ hbs_crossed(int kind, double a, double b)
  * (Called for every function at every step: inline, and without fmax.)
  */
 static inline int
-hbs_candidate(const struct sim *s, int kind, int i, double f0, double fx)
+hbs_candidate(const struct hb_sim *s, int kind, int i, double f0, double fx)
 {
 	double a0 = fabs(f0), ax = fabs(fx);
 
@@ -242,10 +242,10 @@ hbs_candidate(const struct sim *s, int kind, int i, double f0, double fx)
 
 /* sim_locate.c: acts on the accepted step (t0, u0) -> (t0 + H, u1) */
 int
-hbs_after_step(struct sim *s, int load_kink);
+hbs_after_step(struct hb_sim *s, int load_kink);
 
 /* sim_stiff.c */
 int
-hbs_stiffness(struct sim *s);
+hbs_stiffness(struct hb_sim *s);
 
 #endif

@@ -14,7 +14,7 @@
  * (see locate_on_steps); no located point is taken from it.
  */
 static void
-hermite(const struct sim *s, double h, double *u)
+hermite(const struct hb_sim *s, double h, double *u)
 {
 	double th = h / s->H, th2 = th * th, th3 = th2 * th;
 	double a0 = 2 * th3 - 3 * th2 + 1, b0 = (th3 - 2 * th2 + th) * s->H;
@@ -26,7 +26,7 @@ hermite(const struct sim *s, double h, double *u)
 
 /* Sets the Hermite interpolant of the step up (two evaluations of f): 0, or the rhs' error. */
 static int
-hermite_setup(struct sim *s)
+hermite_setup(struct hb_sim *s)
 {
 	struct phase *p = s->cur;
 	int rc;
@@ -38,7 +38,7 @@ hermite_setup(struct sim *s)
 
 /* The state one step of length h from (t0, u0), cached. */
 static int
-restep(struct sim *s, double h, double *u)
+restep(struct hb_sim *s, double h, double *u)
 {
 	struct phase *p = s->cur;
 	double yerr[MAXDIM];
@@ -104,7 +104,7 @@ restep(struct sim *s, double h, double *u)
 static double
 oriented(double h, void *params)
 {
-	struct sim *s = params;
+	struct hb_sim *s = params;
 	double u[MAXDIM], val;
 	int kind;
 
@@ -135,7 +135,7 @@ oriented(double h, void *params)
  * snap_separation).  Returns 0, with the bracket in *a, *b.
  */
 static int
-bracket(struct sim *s, int k, int sign0, double lo, double hi, double htol, double *a, double *b)
+bracket(struct hb_sim *s, int k, int sign0, double lo, double hi, double htol, double *a, double *b)
 {
 	gsl_function F = { oriented, s };
 	double tol = fmax(4.0 * DBL_EPSILON * fmax(fabs(s->t0 + hi), 1e-300), htol);
@@ -218,7 +218,7 @@ bracket(struct sim *s, int k, int sign0, double lo, double hi, double htol, doub
 
 /* Accepts the state at h (a located point) as the current state and restarts the stepper. */
 static void
-accept_at(struct sim *s, double h)
+accept_at(struct hb_sim *s, double h)
 {
 	double u[MAXDIM];
 
@@ -240,7 +240,7 @@ accept_at(struct sim *s, double h)
  * fx), or 0.
  */
 static double
-dip(struct sim *s, const double *f0, const double *f1, double r0, double r1, double *fx)
+dip(struct hb_sim *s, const double *f0, const double *f1, double r0, double r1, double *fx)
 {
 	struct phase *p = s->cur;
 	double H = s->H, d0, d1, c2, c3, th[2], u[MAXDIM];
@@ -285,7 +285,7 @@ dip(struct sim *s, const double *f0, const double *f1, double r0, double r1, dou
  * Leaves use_dense set when the interpolated points stand.
  */
 static void
-real_point(struct sim *s, int event, double hi, double *a, double *b)
+real_point(struct hb_sim *s, int event, double hi, double *a, double *b)
 {
 	double w = fmax(16.0 * (*b - *a), 1e-10 * s->H), ra, rb;
 	int tries;
@@ -330,7 +330,7 @@ keep:
  * the Hermite interpolant, to well within its own error, 1e-10 of the step.
  */
 static double
-htol_of(const struct sim *s, int kind, int tight)
+htol_of(const struct hb_sim *s, int kind, int tight)
 {
 	double h = 0.0;
 
@@ -351,7 +351,7 @@ htol_of(const struct sim *s, int kind, int tight)
  * then narrowed to htol (see bracket).  Returns 0 with the bracket in *a, *b.
  */
 static int
-locate_on_steps(struct sim *s, int k, int sign0, double hi, double htol, double *a, double *b)
+locate_on_steps(struct hb_sim *s, int k, int sign0, double hi, double htol, double *a, double *b)
 {
 	double x0 = *b, g0, gl, gu, d = 1e-3 * s->H, xl, xu, slope, x1, w;
 	int tries;
@@ -416,7 +416,7 @@ locate_on_steps(struct sim *s, int k, int sign0, double hi, double htol, double 
  * NULL); returns how many, or -1 if the state at a cannot be computed.
  */
 static int
-crossed_at(struct sim *s, int k, const double *f0, int n, const int *kind, double a, int *cand)
+crossed_at(struct hb_sim *s, int k, const double *f0, int n, const int *kind, double a, int *cand)
 {
 	double ua[MAXDIM], fa[MAXFUN];
 	int kk[MAXFUN], i, nb = 0;
@@ -438,7 +438,7 @@ crossed_at(struct sim *s, int k, const double *f0, int n, const int *kind, doubl
  * crossing of the watched functions, if any, and acts on it.
  */
 int
-hbs_after_step(struct sim *s, int load_kink)
+hbs_after_step(struct hb_sim *s, int load_kink)
 {
 	struct phase *p = s->cur;
 	double f0[MAXFUN], f1[MAXFUN];
@@ -499,7 +499,7 @@ hbs_after_step(struct sim *s, int load_kink)
 			gsl_odeiv2_driver_reset(p->d);
 			s->st.kinks++;
 		}
-		return hbs_push_sample(s, load_kink ? ARC_KINK : ARC_STEP);
+		return hbs_push_sample(s, load_kink ? HB_ARC_KINK : HB_ARC_STEP);
 	}
 	/* the earliest crossing: bracket one, then look for earlier ones before it */
 	s->loc_iter = 0;
@@ -597,7 +597,7 @@ again:
 			restep(s, a, ua);
 			fa0 = hbs_watch_one(s, p, s->t0 + a, ua, 0, &ka);
 			accept_at(s, b);
-			return hbs_jump(s, LOCATE_BRENT, s->loc_iter, b - a, fa0, fb[0]);
+			return hbs_jump(s, HB_LOCATE_BRENT, s->loc_iter, b - a, fa0, fb[0]);
 		}
 		accept_at(s, b);
 		if (s->msign && hbs_crossed(FUN_KINK, f0[1 + s->sc.law->mode_kink],
@@ -607,6 +607,6 @@ again:
 			s->mforce_t = s->t;
 		}
 		s->st.kinks += kink;
-		return hbs_push_sample(s, kink ? ARC_KINK : ARC_EXTREMUM);
+		return hbs_push_sample(s, kink ? HB_ARC_KINK : HB_ARC_EXTREMUM);
 	}
 }

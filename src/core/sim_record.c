@@ -4,9 +4,9 @@
 #include "sim_impl.h"
 
 int
-hbs_fail(struct sim *s, int status, const char *why)
+hbs_fail(struct hb_sim *s, int status, const char *why)
 {
-	s->end = SIM_END_FAIL;
+	s->end = HB_SIM_END_FAIL;
 	snprintf(s->err, sizeof s->err,
 	         "%s at (t = %.12g s, j = %ld): x = %.6g m, v = %.6g m/s, x_c = %.6g m, q_c = %d",
 	         why, s->t, s->j, s->x, s->v, s->xc, s->q);
@@ -15,9 +15,9 @@ hbs_fail(struct sim *s, int status, const char *why)
 }
 
 int
-hbs_push_sample(struct sim *s, int kind)
+hbs_push_sample(struct hb_sim *s, int kind)
 {
-	struct arc_sample a;
+	struct hb_arc_sample a;
 	double phi = 0.0;
 
 	memset(&a, 0, sizeof a);
@@ -37,7 +37,7 @@ hbs_push_sample(struct sim *s, int kind)
 			s->Fcmax = -phi;
 	}
 	a.Fc = -phi;
-	a.Fer = scene_Fer(&s->sc, s->t);
+	a.Fer = hb_scene_Fer(&s->sc, s->t);
 	a.xm = s->xm;
 	a.vm = s->vm;
 	a.W = s->W;
@@ -53,9 +53,9 @@ hbs_push_sample(struct sim *s, int kind)
 }
 
 static int
-push_collision(struct sim *s)
+push_collision(struct hb_sim *s)
 {
-	struct collision c;
+	struct hb_collision c;
 
 	/*
 	 * Bounded like the arc: at run.max_samples / 8 collisions every other
@@ -73,7 +73,7 @@ push_collision(struct sim *s)
 	}
 	if (s->ncol == s->colcap) {
 		size_t cap = s->colcap ? 2 * s->colcap : 64;
-		struct collision *p = realloc(s->col, cap * sizeof *p);
+		struct hb_collision *p = realloc(s->col, cap * sizeof *p);
 
 		if (p == NULL)
 			return hbs_fail(s, HB_ENOMEM, "out of memory for the collisions");
@@ -107,12 +107,12 @@ push_collision(struct sim *s)
  * sample.
  */
 int
-hbs_jump(struct sim *s, int how, int iterations, double width, double ilo, double ihi)
+hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, double ihi)
 {
-	struct arc_jump jr;
+	struct hb_arc_jump jr;
 	int rc;
 
-	if ((rc = hbs_push_sample(s, ARC_PRE_JUMP)))
+	if ((rc = hbs_push_sample(s, HB_ARC_PRE_JUMP)))
 		return rc;
 	if (s->n_instant > 0 && s->t == s->t_instant)
 		s->n_instant++;
@@ -158,11 +158,11 @@ hbs_jump(struct sim *s, int how, int iterations, double width, double ilo, doubl
 			s->col[s->ncol - 1].tf = s->t - s->col[s->ncol - 1].ts;
 	}
 	s->st.jumps++;
-	if ((rc = hbs_push_sample(s, ARC_POST_JUMP)))
+	if ((rc = hbs_push_sample(s, HB_ARC_POST_JUMP)))
 		return rc;
 	s->setup = 1;
 	if (s->j >= s->sc.run.J) {
-		s->end = SIM_END_J;
+		s->end = HB_SIM_END_J;
 		snprintf(s->endmsg, sizeof s->endmsg,
 		         "jump cap J = %ld reached at t = %.9g s", s->sc.run.J, s->t);
 	}
@@ -170,9 +170,9 @@ hbs_jump(struct sim *s, int how, int iterations, double width, double ilo, doubl
 }
 
 void
-hbs_finish_T(struct sim *s)
+hbs_finish_T(struct hb_sim *s)
 {
-	s->end = SIM_END_T;
+	s->end = HB_SIM_END_T;
 	snprintf(s->endmsg, sizeof s->endmsg, "horizon T = %.9g s reached at j = %ld",
 	         s->sc.run.T, s->j);
 }

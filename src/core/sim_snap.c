@@ -18,12 +18,12 @@
  * which keeps it in C (rule R2) and changes it by less than the tolerance.
  */
 void
-hbs_snap_stick(struct sim *s, double *u)
+hbs_snap_stick(struct hb_sim *s, double *u)
 {
 	struct phase *p = s->cur;
 	const struct layout *L = &p->L;
 	double y[MAXDIM], eta = fmax(64 * DBL_EPSILON, 100 * fmax(s->sc.run.rtol, s->sc.run.atol)), phi, v;
-	double z[LAW_MAX_Z] = { 0 };
+	double z[HB_LAW_MAX_Z] = { 0 };
 	int i;
 
 	v = u[L->iv] * s->scale[L->iv];
@@ -44,7 +44,7 @@ hbs_snap_stick(struct sim *s, double *u)
 enum { NOISE = 100 };
 
 static double
-v_noise(const struct sim *s, const double *u)
+v_noise(const struct hb_sim *s, const double *u)
 {
 	int iv = s->cur->L.iv;
 
@@ -66,12 +66,12 @@ v_noise(const struct sim *s, const double *u)
  * state was moved.
  */
 int
-hbs_snap_separation(struct sim *s, double *u)
+hbs_snap_separation(struct hb_sim *s, double *u)
 {
 	const struct phase *p = s->cur;
 	const struct layout *L = &p->L;
-	const struct scene *sc = &s->sc;
-	double y[MAXDIM], z[LAW_MAX_Z] = { 0 }, dphi[LAW_MAX_Z + 2], phi, v, vn, dv;
+	const struct hb_scene *sc = &s->sc;
+	double y[MAXDIM], z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi, v, vn, dv;
 	int nz = sc->law->n_z, i;
 
 	if (!p->q)
@@ -100,12 +100,12 @@ hbs_snap_separation(struct sim *s, double *u)
 
 /* Does the step from the scaled state u begin on Phi = 0 to the noise, receding? */
 int
-hbs_hugging(struct sim *s, const double *u)
+hbs_hugging(struct hb_sim *s, const double *u)
 {
 	const struct phase *p = s->cur;
 	const struct layout *L = &p->L;
-	const struct scene *sc = &s->sc;
-	double y[MAXDIM], z[LAW_MAX_Z] = { 0 }, dphi[LAW_MAX_Z + 2], phi;
+	const struct hb_scene *sc = &s->sc;
+	double y[MAXDIM], z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi;
 	int nz = sc->law->n_z, i;
 
 	if (!p->q)

@@ -15,8 +15,8 @@ static double
 stability_radius(int stepper)
 {
 	switch (stepper) {
-	case STEPPER_DOP853: return 6.1;
-	case STEPPER_RK8PD: return 5.3;
+	case HB_STEPPER_DOP853: return 6.1;
+	case HB_STEPPER_RK8PD: return 5.3;
 	default: return 3.0;
 	}
 }
@@ -36,7 +36,7 @@ stability_radius(int stepper)
  * with run.stepper = auto the contacts go over to bsimp from then on.
  */
 int
-hbs_stiffness(struct sim *s)
+hbs_stiffness(struct hb_sim *s)
 {
 	struct phase *p = s->cur;
 	const struct layout *L = &p->L;
@@ -94,8 +94,8 @@ hbs_stiffness(struct sim *s)
 		return 0;
 	s->st.stiff = 1;
 	s->st.stiff_t = s->t;
-	if (s->sc.run.stepper == STEPPER_AUTO) {
-		s->stepper[1] = STEPPER_BSIMP;
+	if (s->sc.run.stepper == HB_STEPPER_AUTO) {
+		s->stepper[1] = HB_STEPPER_BSIMP;
 		s->st.switched = 1;
 		if (hbs_phase_alloc(s, &s->ph[1], 1))
 			return hbs_fail(s, HB_ENOMEM, "out of memory for the integrator");

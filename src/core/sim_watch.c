@@ -16,13 +16,13 @@
  * them: a bracketing evaluates one function many times.
  */
 static int
-watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
+watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
       int *kind, double *rate, int only)
 {
-	const struct scene *sc = &s->sc;
+	const struct hb_scene *sc = &s->sc;
 	const struct layout *L = &p->L;
-	double y[MAXDIM], v, xc, z[LAW_MAX_Z] = { 0 };
-	double dphi[LAW_MAX_Z + 2], dpsi[LAW_MAX_Z * (LAW_MAX_Z + 2)], dz[LAW_MAX_Z];
+	double y[MAXDIM], v, xc, z[HB_LAW_MAX_Z] = { 0 };
+	double dphi[HB_LAW_MAX_Z + 2], dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)], dz[HB_LAW_MAX_Z];
 	double phi = 0.0, vdot, d;
 	int i, nz = sc->law->n_z;
 	int nk = sc->law->n_kinks && sc->run.kinks ? sc->law->n_kinks : 0;
@@ -34,7 +34,7 @@ watch(const struct sim *s, const struct phase *p, double t, const double *u, dou
 	if (!p->q) {
 		f[0] = fmax(y[L->ix], v);
 		if (rate != NULL)
-			*rate = y[L->ix] > v ? v : scene_Fer(sc, t) / sc->d.m;
+			*rate = y[L->ix] > v ? v : hb_scene_Fer(sc, t) / sc->d.m;
 		return 1;
 	}
 	xc = y[L->ixc];
@@ -55,7 +55,7 @@ watch(const struct sim *s, const struct phase *p, double t, const double *u, dou
 		sc->law->jac(sc->par, sc->ext, xc, z, v, dphi, nz ? dpsi : NULL);
 		if (nz)
 			sc->law->psi(sc->par, sc->ext, xc, z, v, dz);
-		vdot = (-phi + scene_Fer(sc, t)) / sc->d.m;
+		vdot = (-phi + hb_scene_Fer(sc, t)) / sc->d.m;
 		d = dphi[0] * v + dphi[nz + 1] * vdot;
 		for (i = 0; i < nz; i++)
 			d += dphi[1 + i] * dz[i];
@@ -67,14 +67,14 @@ watch(const struct sim *s, const struct phase *p, double t, const double *u, dou
 }
 
 int
-hbs_watch(const struct sim *s, const struct phase *p, double t, const double *u, double *f,
+hbs_watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
           int *kind)
 {
 	return watch(s, p, t, u, f, kind, NULL, -1);
 }
 
 double
-hbs_watch_one(const struct sim *s, const struct phase *p, double t, const double *u, int k,
+hbs_watch_one(const struct hb_sim *s, const struct phase *p, double t, const double *u, int k,
               int *kind)
 {
 	double f[MAXFUN];
@@ -86,7 +86,7 @@ hbs_watch_one(const struct sim *s, const struct phase *p, double t, const double
 }
 
 int
-hbs_watch_at(struct sim *s, const struct phase *p, double t, const double *u, double *f,
+hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
              int *kind, double *rate)
 {
 	size_t nu = (size_t)p->L.dim * sizeof *u;

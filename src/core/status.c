@@ -7,7 +7,7 @@
 #include "hybounce/status.h"
 
 const char *
-status_str(int status)
+hb_status_str(int status)
 {
 	switch (status) {
 	case HB_OK: return "ok";
@@ -22,7 +22,7 @@ status_str(int status)
 }
 
 int
-status_set(char *buf, size_t n, int status, const char *fmt, ...)
+hb_status_set(char *buf, size_t n, int status, const char *fmt, ...)
 {
 	va_list ap;
 

@@ -4,7 +4,7 @@
  * sweep.h).  The threads, the journal and the merge are in sweep_run.c.
  *
  * Values.  Every axis value is kept as canonical text: the value read
- * back from the preset writer after scene_set (a %.17g SI number, or a
+ * back from the preset writer after hb_scene_set (a %.17g SI number, or a
  * word such as a law name).  A point's scene applies exactly those texts,
  * and runs.csv shows exactly those texts, so "--batch --set KEY=VALUE" with
  * a row's values reproduces the point to the bit.
@@ -37,10 +37,10 @@ struct axis {
 	char **val;       /* n canonical texts */
 };
 
-struct sweep {
-	struct scene base;
+struct hb_sweep {
+	struct hb_scene base;
 	/*
-	 * sim_new() switches GSL's process-wide error handler off: one global
+	 * hb_sim_new() switches GSL's process-wide error handler off: one global
 	 * written by every call.  The sweep's threads take this lock around it
 	 * (no static lock: the engine keeps no mutable static state).
 	 */
@@ -49,13 +49,13 @@ struct sweep {
 	struct axis ax[SWEEP_MAX_AXES];
 };
 
-struct sim *
-sweep_sim_new(const struct sweep *sw, const struct scene *sc, char *msg, size_t n)
+struct hb_sim *
+sweep_sim_new(const struct hb_sweep *sw, const struct hb_scene *sc, char *msg, size_t n)
 {
-	struct sim *s;
+	struct hb_sim *s;
 
 	pthread_mutex_lock(sw->simnew);
-	s = sim_new(sc, msg, n);
+	s = hb_sim_new(sc, msg, n);
 	pthread_mutex_unlock(sw->simnew);
 	return s;
 }
@@ -69,14 +69,14 @@ axis_free(struct axis *a)
 	memset(a, 0, sizeof *a);
 }
 
-struct sweep *
-sweep_new(const struct scene *base, char *msg, size_t n)
+struct hb_sweep *
+hb_sweep_new(const struct hb_scene *base, char *msg, size_t n)
 {
-	struct sweep *sw = calloc(1, sizeof *sw);
+	struct hb_sweep *sw = calloc(1, sizeof *sw);
 
 	if (sw == NULL || (sw->simnew = malloc(sizeof *sw->simnew)) == NULL) {
 		free(sw);
-		status_set(msg, n, HB_ENOMEM, "out of memory");
+		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		return NULL;
 	}
 	pthread_mutex_init(sw->simnew, NULL);
@@ -85,7 +85,7 @@ sweep_new(const struct scene *base, char *msg, size_t n)
 }
 
 void
-sweep_free(struct sweep *sw)
+hb_sweep_free(struct hb_sweep *sw)
 {
 	if (sw == NULL)
 		return;
@@ -97,13 +97,13 @@ sweep_free(struct sweep *sw)
 }
 
 int
-sweep_naxes(const struct sweep *sw)
+hb_sweep_naxes(const struct hb_sweep *sw)
 {
 	return sw->naxes;
 }
 
 long
-sweep_npoints(const struct sweep *sw)
+hb_sweep_npoints(const struct hb_sweep *sw)
 {
 	long p = 1;
 
@@ -115,25 +115,25 @@ sweep_npoints(const struct sweep *sw)
 }
 
 /*
- * The value of key in sc as text that scene_set() reads back to the same
+ * The value of key in sc as text that hb_scene_set() reads back to the same
  * value: a number in SI as %.17g, or the word of a choice.  Returns 0, or
  * -1 for a key that has no such value (unknown, free text, derived).
  */
 static int
-key_value(const struct scene *sc, const char *key, char *buf, size_t n)
+key_value(const struct hb_scene *sc, const char *key, char *buf, size_t n)
 {
-	struct scene_keyinfo ki;
+	struct hb_scene_keyinfo ki;
 
-	if (scene_get(sc, key, &ki, NULL) != HB_OK || ki.readonly)
+	if (hb_scene_get(sc, key, &ki, NULL) != HB_OK || ki.readonly)
 		return -1;
 	switch (ki.kind) {
-	case SCENE_KEY_NUMBER:
-	case SCENE_KEY_WHOLE:
+	case HB_SCENE_KEY_NUMBER:
+	case HB_SCENE_KEY_WHOLE:
 		if (isnan(ki.number))
 			return -1;
 		snprintf(buf, n, "%.17g", ki.number);
 		return 0;
-	case SCENE_KEY_CHOICE:
+	case HB_SCENE_KEY_CHOICE:
 		if (ki.choice < 0 || ki.choice >= ki.nchoices || strlen(ki.choices[ki.choice]) >= n)
 			return -1;
 		snprintf(buf, n, "%s", ki.choices[ki.choice]);
@@ -145,29 +145,29 @@ key_value(const struct scene *sc, const char *key, char *buf, size_t n)
 
 /* The scene on which axis k's values are checked: base + earlier axes' first values. */
 static void
-check_scene(const struct sweep *sw, int k, struct scene *sc)
+check_scene(const struct hb_sweep *sw, int k, struct hb_scene *sc)
 {
 	char m[256];
 
 	*sc = sw->base;
 	for (int i = 0; i < k; i++)
-		(void)scene_set(sc, sw->ax[i].key, sw->ax[i].val[0], m, sizeof m);
+		(void)hb_scene_set(sc, sw->ax[i].key, sw->ax[i].val[0], m, sizeof m);
 }
 
 /* Applies text to key on a copy of sc and reads the canonical value back. */
 static int
-canonical(const struct scene *sc, const char *key, const char *text, char *out, size_t on,
+canonical(const struct hb_scene *sc, const char *key, const char *text, char *out, size_t on,
           char *msg, size_t n)
 {
-	struct scene t = *sc;
+	struct hb_scene t = *sc;
 	char m[512];
 
 	m[0] = '\0';
-	if (scene_set(&t, key, text, m, sizeof m) != HB_OK)
-		return status_set(msg, n, HB_EINVAL, "--vary %s: value '%s': %s", key, text,
+	if (hb_scene_set(&t, key, text, m, sizeof m) != HB_OK)
+		return hb_status_set(msg, n, HB_EINVAL, "--vary %s: value '%s': %s", key, text,
 		                  m[0] ? m : "rejected");
 	if (key_value(&t, key, out, on) != 0)
-		return status_set(msg, n, HB_EINVAL, "--vary %s: this key cannot be varied "
+		return hb_status_set(msg, n, HB_EINVAL, "--vary %s: this key cannot be varied "
 		                  "(it is not a typed value of the scene)", key);
 	return HB_OK;
 }
@@ -208,7 +208,7 @@ parse_count(const char *t, long *out)
 
 /* A range FROM:TO:N[:log] into a->val. */
 static int
-parse_range(struct axis *a, const struct scene *sc, char *msg, size_t n)
+parse_range(struct axis *a, const struct hb_scene *sc, char *msg, size_t n)
 {
 	char *part[5] = { 0 }, num[64];
 	const char *p = a->spec, *c;
@@ -220,7 +220,7 @@ parse_range(struct axis *a, const struct scene *sc, char *msg, size_t n)
 		c = strchr(p, ':');
 		part[np++] = trimmed(p, c ? c : p + strlen(p));
 		if (part[np - 1] == NULL) {
-			rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 			goto out;
 		}
 		if (c == NULL)
@@ -229,12 +229,12 @@ parse_range(struct axis *a, const struct scene *sc, char *msg, size_t n)
 	}
 	if (np < 3 || np > 4 || (np == 4 && strcmp(part[3], "log") != 0 &&
 	    strcmp(part[3], "lin") != 0)) {
-		rc = status_set(msg, n, HB_EINVAL, "--vary %s=%s: " RANGE_HELP, a->key, a->spec);
+		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: " RANGE_HELP, a->key, a->spec);
 		goto out;
 	}
 	lg = np == 4 && strcmp(part[3], "log") == 0;
 	if (parse_count(part[2], &a->n) != 0) {
-		rc = status_set(msg, n, HB_EINVAL, "--vary %s=%s: N '%s' is not a count; "
+		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: N '%s' is not a count; "
 		                "accepted: an integer from 1 to %ld", a->key, a->spec, part[2],
 		                SWEEP_MAX_POINTS);
 		goto out;
@@ -243,7 +243,7 @@ parse_range(struct axis *a, const struct scene *sc, char *msg, size_t n)
 		goto out;
 	from = strtod(num, &end);
 	if (*end != '\0') {
-		rc = status_set(msg, n, HB_EINVAL, "--vary %s=%s: a range needs a numeric key; "
+		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: a range needs a numeric key; "
 		                "accepted for %s: a list V1,V2,...", a->key, a->spec, a->key);
 		goto out;
 	}
@@ -251,18 +251,18 @@ parse_range(struct axis *a, const struct scene *sc, char *msg, size_t n)
 		goto out;
 	to = strtod(num, &end);
 	if (!isfinite(from) || !isfinite(to)) {
-		rc = status_set(msg, n, HB_EINVAL, "--vary %s=%s: the ends of a range must be "
+		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: the ends of a range must be "
 		                "finite", a->key, a->spec);
 		goto out;
 	}
 	if (lg && (from == 0 || to == 0 || (from < 0) != (to < 0))) {
-		rc = status_set(msg, n, HB_EINVAL, "--vary %s=%s: a log range needs FROM and TO "
+		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: a log range needs FROM and TO "
 		                "of the same sign, not 0", a->key, a->spec);
 		goto out;
 	}
 	a->val = calloc((size_t)a->n, sizeof *a->val);
 	if (a->val == NULL) {
-		rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
 	}
 	for (long i = 0; i < a->n; i++) {
@@ -281,7 +281,7 @@ parse_range(struct axis *a, const struct scene *sc, char *msg, size_t n)
 		if ((rc = canonical(sc, a->key, t, num, sizeof num, msg, n)) != HB_OK)
 			goto out;
 		if ((a->val[i] = strdup(num)) == NULL) {
-			rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 			goto out;
 		}
 	}
@@ -293,7 +293,7 @@ out:
 
 /* A list V1,V2,... into a->val. */
 static int
-parse_list(struct axis *a, const struct scene *sc, char *msg, size_t n)
+parse_list(struct axis *a, const struct hb_scene *sc, char *msg, size_t n)
 {
 	const char *p = a->spec, *c;
 	long cnt = 1;
@@ -303,7 +303,7 @@ parse_list(struct axis *a, const struct scene *sc, char *msg, size_t n)
 		cnt += *c == ',';
 	a->val = calloc((size_t)cnt, sizeof *a->val);
 	if (a->val == NULL)
-		return status_set(msg, n, HB_ENOMEM, "out of memory");
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	for (a->n = 0; a->n < cnt; a->n++) {
 		char *t;
 		int rc;
@@ -311,10 +311,10 @@ parse_list(struct axis *a, const struct scene *sc, char *msg, size_t n)
 		c = strchr(p, ',');
 		t = trimmed(p, c ? c : p + strlen(p));
 		if (t == NULL)
-			return status_set(msg, n, HB_ENOMEM, "out of memory");
+			return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		if (t[0] == '\0') {
 			free(t);
-			return status_set(msg, n, HB_EINVAL, "--vary %s=%s: empty value in the "
+			return hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: empty value in the "
 			                  "list; " RANGE_HELP, a->key, a->spec);
 		}
 		rc = canonical(sc, a->key, t, num, sizeof num, msg, n);
@@ -322,42 +322,42 @@ parse_list(struct axis *a, const struct scene *sc, char *msg, size_t n)
 		if (rc != HB_OK)
 			return rc;
 		if ((a->val[a->n] = strdup(num)) == NULL)
-			return status_set(msg, n, HB_ENOMEM, "out of memory");
+			return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		p = c ? c + 1 : p;
 	}
 	return HB_OK;
 }
 
 int
-sweep_vary(struct sweep *sw, const char *arg, char *msg, size_t n)
+hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 {
 	const char *eq = strchr(arg, '=');
 	struct axis a;
-	struct scene sc;
+	struct hb_scene sc;
 	char *key;
 	int k, rc;
 	long total;
 
 	memset(&a, 0, sizeof a);
 	if (eq == NULL)
-		return status_set(msg, n, HB_EINVAL, "--vary '%s': " RANGE_HELP, arg);
+		return hb_status_set(msg, n, HB_EINVAL, "--vary '%s': " RANGE_HELP, arg);
 	key = trimmed(arg, eq);
 	if (key == NULL)
-		return status_set(msg, n, HB_ENOMEM, "out of memory");
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	if (key[0] == '\0' || strlen(key) >= sizeof a.key) {
 		free(key);
-		return status_set(msg, n, HB_EINVAL, "--vary '%s': " RANGE_HELP, arg);
+		return hb_status_set(msg, n, HB_EINVAL, "--vary '%s': " RANGE_HELP, arg);
 	}
 	strcpy(a.key, key);
 	free(key);
 	if (strlen(eq + 1) >= sizeof a.spec)
-		return status_set(msg, n, HB_EINVAL, "--vary %s: value too long", a.key);
+		return hb_status_set(msg, n, HB_EINVAL, "--vary %s: value too long", a.key);
 	snprintf(a.spec, sizeof a.spec, "%s", eq + 1);
 	for (k = 0; k < sw->naxes; k++)
 		if (strcmp(sw->ax[k].key, a.key) == 0)
 			break;
 	if (k == sw->naxes && sw->naxes == SWEEP_MAX_AXES)
-		return status_set(msg, n, HB_EINVAL, "--vary %s: too many axes; accepted: at "
+		return hb_status_set(msg, n, HB_EINVAL, "--vary %s: too many axes; accepted: at "
 		                  "most %d", a.key, SWEEP_MAX_AXES);
 	check_scene(sw, k, &sc);
 	if (strchr(a.spec, ':') != NULL)
@@ -373,7 +373,7 @@ sweep_vary(struct sweep *sw, const char *arg, char *msg, size_t n)
 		if (i != k) {
 			if (total > SWEEP_MAX_POINTS / sw->ax[i].n) {
 				axis_free(&a);
-				return status_set(msg, n, HB_EINVAL, "--vary %s: the sweep would have "
+				return hb_status_set(msg, n, HB_EINVAL, "--vary %s: the sweep would have "
 				                  "more than %ld points", a.key, SWEEP_MAX_POINTS);
 			}
 			total *= sw->ax[i].n;
@@ -387,7 +387,7 @@ sweep_vary(struct sweep *sw, const char *arg, char *msg, size_t n)
 }
 
 int
-sweep_vary_from_preset(struct sweep *sw, const char *text, const char *name,
+hb_sweep_vary_from_preset(struct hb_sweep *sw, const char *text, const char *name,
                        char *msg, size_t n)
 {
 	const char *p = text;
@@ -404,8 +404,8 @@ sweep_vary_from_preset(struct sweep *sw, const char *text, const char *name,
 
 			snprintf(arg, sizeof arg, "%.*s", (int)(len - strlen(tag)), p + strlen(tag));
 			m[0] = '\0';
-			if (sweep_vary(sw, arg, m, sizeof m) != HB_OK)
-				return status_set(msg, n, HB_EINVAL, "%s:%d: %s", name, line, m);
+			if (hb_sweep_vary(sw, arg, m, sizeof m) != HB_OK)
+				return hb_status_set(msg, n, HB_EINVAL, "%s:%d: %s", name, line, m);
 		}
 		p = end ? end + 1 : p + len;
 	}
@@ -414,7 +414,7 @@ sweep_vary_from_preset(struct sweep *sw, const char *text, const char *name,
 
 /* Index of axis k at point id (row-major, the last axis fastest). */
 static long
-axis_index(const struct sweep *sw, long id, int k)
+axis_index(const struct hb_sweep *sw, long id, int k)
 {
 	for (int i = sw->naxes - 1; i > k; i--)
 		id /= sw->ax[i].n;
@@ -422,62 +422,62 @@ axis_index(const struct sweep *sw, long id, int k)
 }
 
 int
-sweep_point_value(const struct sweep *sw, long id, int k, char *buf, size_t n)
+hb_sweep_point_value(const struct hb_sweep *sw, long id, int k, char *buf, size_t n)
 {
-	if (k < 0 || k >= sw->naxes || id < 0 || id >= sweep_npoints(sw))
+	if (k < 0 || k >= sw->naxes || id < 0 || id >= hb_sweep_npoints(sw))
 		return HB_EINVAL;
 	snprintf(buf, n, "%s", sw->ax[k].val[axis_index(sw, id, k)]);
 	return HB_OK;
 }
 
 int
-sweep_point_scene(const struct sweep *sw, long id, struct scene *out, char *msg, size_t n)
+hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n)
 {
 	char m[512];
 
-	if (id < 0 || id >= sweep_npoints(sw))
-		return status_set(msg, n, HB_EINVAL, "point %ld: no such point", id);
+	if (id < 0 || id >= hb_sweep_npoints(sw))
+		return hb_status_set(msg, n, HB_EINVAL, "point %ld: no such point", id);
 	*out = sw->base;
 	for (int k = 0; k < sw->naxes; k++) {
 		const char *v = sw->ax[k].val[axis_index(sw, id, k)];
 
 		m[0] = '\0';
-		if (scene_set(out, sw->ax[k].key, v, m, sizeof m) != HB_OK)
-			return status_set(msg, n, HB_EINVAL, "point %ld: %s=%s: %s", id,
+		if (hb_scene_set(out, sw->ax[k].key, v, m, sizeof m) != HB_OK)
+			return hb_status_set(msg, n, HB_EINVAL, "point %ld: %s=%s: %s", id,
 			                  sw->ax[k].key, v, m);
 	}
 	m[0] = '\0';
-	if (scene_validate(out, m, sizeof m) != HB_OK) {
+	if (hb_scene_validate(out, m, sizeof m) != HB_OK) {
 		char vals[512] = "";
 		size_t l = 0;
 
 		for (int k = 0; k < sw->naxes && l < sizeof vals; k++)
 			l += (size_t)snprintf(vals + l, sizeof vals - l, "%s%s=%s", k ? " " : "",
 			                      sw->ax[k].key, sw->ax[k].val[axis_index(sw, id, k)]);
-		return status_set(msg, n, HB_EINVAL, "point %ld (%s): %s", id, vals, m);
+		return hb_status_set(msg, n, HB_EINVAL, "point %ld (%s): %s", id, vals, m);
 	}
 	return HB_OK;
 }
 
 int
-sweep_check(const struct sweep *sw, char *msg, size_t n)
+hb_sweep_check(const struct hb_sweep *sw, char *msg, size_t n)
 {
-	struct scene sc;
-	long np = sweep_npoints(sw);
+	struct hb_scene sc;
+	long np = hb_sweep_npoints(sw);
 
 	if (np == 0)
-		return status_set(msg, n, HB_EINVAL, "nothing to vary; expected at least one "
+		return hb_status_set(msg, n, HB_EINVAL, "nothing to vary; expected at least one "
 		                  "--vary KEY=SPEC");
 	for (long id = 0; id < np; id++)
-		if (sweep_point_scene(sw, id, &sc, msg, n) != HB_OK)
+		if (hb_sweep_point_scene(sw, id, &sc, msg, n) != HB_OK)
 			return HB_EINVAL;
 	return HB_OK;
 }
 
 size_t
-sweep_spec_format(const struct sweep *sw, char *buf, size_t n)
+hb_sweep_spec_format(const struct hb_sweep *sw, char *buf, size_t n)
 {
-	size_t len = preset_format(&sw->base, buf, n);
+	size_t len = hb_preset_format(&sw->base, buf, n);
 
 	len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
 	    "\n; The sweep (hybounce sweep FILE --out DIR runs it):\n");
@@ -492,7 +492,7 @@ static const char runs_cols[] =
 	"t_end,j_end,q_c_end,x_end,v_end,x_c_end,steps,rejected,rhs,jac,cpu_s";
 
 size_t
-sweep_runs_header(const struct sweep *sw, char *buf, size_t n)
+hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n)
 {
 	size_t len = (size_t)snprintf(buf, n, "id");
 
@@ -506,20 +506,20 @@ sweep_runs_header(const struct sweep *sw, char *buf, size_t n)
 
 /* The runs row of a finished sim (no newline). */
 static void
-runs_row(FILE *f, const struct sweep *sw, long id, const struct sim *s, double cpu)
+runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s, double cpu)
 {
-	const struct sim_stats *st = sim_stats(s);
-	const struct arc_sample *last = arc_last(sim_arc(s));
-	size_t nc = sim_ncollisions(s);
-	const struct collision *c0 = nc ? sim_collision(s, 0) : NULL;
-	const struct collision *cl = nc ? sim_collision(s, nc - 1) : NULL;
-	struct collision live;
+	const struct hb_sim_stats *st = hb_sim_stats(s);
+	const struct hb_arc_sample *last = hb_arc_last(hb_sim_arc(s));
+	size_t nc = hb_sim_ncollisions(s);
+	const struct hb_collision *c0 = nc ? hb_sim_collision(s, 0) : NULL;
+	const struct hb_collision *cl = nc ? hb_sim_collision(s, nc - 1) : NULL;
+	struct hb_collision live;
 	double xcr = 0, tpc = NAN;
-	int failed = sim_end(s) == SIM_END_FAIL;
+	int failed = hb_sim_end(s) == HB_SIM_END_FAIL;
 
 	for (size_t i = 0; i < nc; i++)
-		xcr += sim_collision(s, i)->xcr;
-	if (!failed && sim_contact_live(s, &live))
+		xcr += hb_sim_collision(s, i)->xcr;
+	if (!failed && hb_sim_contact_live(s, &live))
 		tpc = live.te;
 	fprintf(f, "r,%ld", id);
 	for (int k = 0; k < sw->naxes; k++) {
@@ -527,7 +527,7 @@ runs_row(FILE *f, const struct sweep *sw, long id, const struct sim *s, double c
 		csv_put_field(f, sw->ax[k].val[axis_index(sw, id, k)]);
 	}
 	fprintf(f, ",%s,", failed ? "failed" : "ok");
-	csv_put_field(f, failed && sim_errmsg(s)[0] ? sim_errmsg(s) : sim_end_str(s));
+	csv_put_field(f, failed && hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_sim_end_str(s));
 	fprintf(f, ",%zu", nc);
 	csv_put_num(f, tpc);
 	csv_put_num(f, c0 ? c0->e : NAN);
@@ -546,12 +546,12 @@ runs_row(FILE *f, const struct sweep *sw, long id, const struct sim *s, double c
 }
 
 int
-sweep_point_block(const struct sweep *sw, long id, char **out, int *failed,
+hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed,
                   char *msg, size_t n)
 {
 	double c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
-	struct scene sc;
-	struct sim *s;
+	struct hb_scene sc;
+	struct hb_sim *s;
 	char *coll = NULL, *blk = NULL, m[512];
 	size_t clen = 0, blen = 0;
 	FILE *f;
@@ -559,32 +559,32 @@ sweep_point_block(const struct sweep *sw, long id, char **out, int *failed,
 
 	*out = NULL;
 	*failed = 0;
-	if ((rc = sweep_point_scene(sw, id, &sc, msg, n)) != HB_OK)
+	if ((rc = hb_sweep_point_scene(sw, id, &sc, msg, n)) != HB_OK)
 		return rc;
 	m[0] = '\0';
 	s = sweep_sim_new(sw, &sc, m, sizeof m);
 	if (s == NULL)
-		return status_set(msg, n, HB_EINVAL, "point %ld: %s", id, m[0] ? m : "no memory");
-	(void)sim_run(s);
-	*failed = sim_end(s) == SIM_END_FAIL;
+		return hb_status_set(msg, n, HB_EINVAL, "point %ld: %s", id, m[0] ? m : "no memory");
+	(void)hb_sim_run(s);
+	*failed = hb_sim_end(s) == HB_SIM_END_FAIL;
 
 	/* The collisions exactly as --collisions writes them, each row prefixed. */
 	f = open_memstream(&coll, &clen);
 	if (f == NULL) {
-		sim_free(s);
-		return status_set(msg, n, HB_ENOMEM, "out of memory");
+		hb_sim_free(s);
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
-	rc = csv_stream_collisions(f, s, m, sizeof m);
+	rc = hb_csv_stream_collisions(f, s, m, sizeof m);
 	if (fclose(f) != 0 || rc != HB_OK) {
 		free(coll);
-		sim_free(s);
-		return status_set(msg, n, HB_ENOMEM, "point %ld: collisions: %s", id, m);
+		hb_sim_free(s);
+		return hb_status_set(msg, n, HB_ENOMEM, "point %ld: collisions: %s", id, m);
 	}
 	f = open_memstream(&blk, &blen);
 	if (f == NULL) {
 		free(coll);
-		sim_free(s);
-		return status_set(msg, n, HB_ENOMEM, "out of memory");
+		hb_sim_free(s);
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
 	{
 		const char *p = strchr(coll, '\n');    /* skip the header */
@@ -600,10 +600,10 @@ sweep_point_block(const struct sweep *sw, long id, char **out, int *failed,
 	}
 	free(coll);
 	runs_row(f, sw, id, s, clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0);
-	sim_free(s);
+	hb_sim_free(s);
 	if (fclose(f) != 0 || blk == NULL) {
 		free(blk);
-		return status_set(msg, n, HB_ENOMEM, "out of memory");
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
 	*out = blk;
 	return HB_OK;

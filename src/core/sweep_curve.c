@@ -2,10 +2,10 @@
  * sweep_curve.c - one observable over one parameter, computed by
  * background threads for the explorer (see sweep.h, "Curves").
  *
- * The curve is a one-axis sweep: the same point scenes as sweep_run, run
- * by sim_advance in slices of SLICE_STEPS accepted steps so that a worker
+ * The curve is a one-axis sweep: the same point scenes as hb_sweep_run, run
+ * by hb_sim_advance in slices of SLICE_STEPS accepted steps so that a worker
  * sees a cancellation within one slice.  Results go into arrays under a
- * mutex; sweep_curve_poll copies them and never waits for a point.
+ * mutex; hb_sweep_curve_poll copies them and never waits for a point.
  */
 #include <math.h>
 #include <pthread.h>
@@ -23,12 +23,12 @@
 #define SLICE_STEPS 2000
 #define CURVE_MAX_JOBS 64
 
-static const char *const obs_names[CURVE_COUNT] = {
+static const char *const obs_names[HB_CURVE_COUNT] = {
 	"e", "v_i", "x_c_r", "collisions", "t_pc", "x_c_r_total",
 };
 
-struct sweep_curve {
-	struct sweep *sw;
+struct hb_sweep_curve {
+	struct hb_sweep *sw;
 	char key[48];
 	int obs;
 	long coll_i, np;
@@ -42,29 +42,29 @@ struct sweep_curve {
 };
 
 const char *
-sweep_observable_name(int obs)
+hb_sweep_observable_name(int obs)
 {
-	return obs >= 0 && obs < CURVE_COUNT ? obs_names[obs] : NULL;
+	return obs >= 0 && obs < HB_CURVE_COUNT ? obs_names[obs] : NULL;
 }
 
 double
-sweep_observe(const struct sim *s, int obs, long i)
+hb_sweep_observe(const struct hb_sim *s, int obs, long i)
 {
-	size_t nc = sim_ncollisions(s);
-	const struct collision *c = i >= 0 && (size_t)i < nc ? sim_collision(s, (size_t)i) : NULL;
-	struct collision live;
+	size_t nc = hb_sim_ncollisions(s);
+	const struct hb_collision *c = i >= 0 && (size_t)i < nc ? hb_sim_collision(s, (size_t)i) : NULL;
+	struct hb_collision live;
 	double sum = 0;
 
 	switch (obs) {
-	case CURVE_E: return c ? c->e : NAN;
-	case CURVE_VI: return c ? c->vi : NAN;
-	case CURVE_XCR: return c ? c->xcr : NAN;
-	case CURVE_COLLISIONS: return (double)nc;
-	case CURVE_TPC:
-		return sim_end(s) != SIM_END_FAIL && sim_contact_live(s, &live) ? live.te : NAN;
+	case HB_CURVE_E: return c ? c->e : NAN;
+	case HB_CURVE_VI: return c ? c->vi : NAN;
+	case HB_CURVE_XCR: return c ? c->xcr : NAN;
+	case HB_CURVE_COLLISIONS: return (double)nc;
+	case HB_CURVE_TPC:
+		return hb_sim_end(s) != HB_SIM_END_FAIL && hb_sim_contact_live(s, &live) ? live.te : NAN;
 	default:
 		for (size_t k = 0; k < nc; k++)
-			sum += sim_collision(s, k)->xcr;
+			sum += hb_sim_collision(s, k)->xcr;
 		return sum;
 	}
 }
@@ -72,14 +72,14 @@ sweep_observe(const struct sim *s, int obs, long i)
 static void *
 curve_worker(void *arg)
 {
-	struct sweep_curve *c = arg;
+	struct hb_sweep_curve *c = arg;
 
 	for (;;) {
-		struct scene sc;
-		struct sim *s = NULL;
+		struct hb_scene sc;
+		struct hb_sim *s = NULL;
 		char m[256];
 		long id;
-		int st = CURVE_FAILED, stop = 0;
+		int st = HB_CURVE_FAILED, stop = 0;
 		double y = NAN;
 
 		pthread_mutex_lock(&c->mu);
@@ -90,10 +90,10 @@ curve_worker(void *arg)
 		id = c->next++;
 		pthread_mutex_unlock(&c->mu);
 
-		if (sweep_point_scene(c->sw, id, &sc, m, sizeof m) == HB_OK)
+		if (hb_sweep_point_scene(c->sw, id, &sc, m, sizeof m) == HB_OK)
 			s = sweep_sim_new(c->sw, &sc, m, sizeof m);
-		while (s != NULL && sim_end(s) == SIM_RUNNING) {
-			if (sim_advance(s, SLICE_STEPS, 0) != HB_OK)
+		while (s != NULL && hb_sim_end(s) == HB_SIM_RUNNING) {
+			if (hb_sim_advance(s, SLICE_STEPS, 0) != HB_OK)
 				break;
 			pthread_mutex_lock(&c->mu);
 			stop = c->stop;
@@ -101,11 +101,11 @@ curve_worker(void *arg)
 			if (stop)
 				break;
 		}
-		if (s != NULL && !stop && sim_end(s) != SIM_RUNNING) {
-			y = sweep_observe(s, c->obs, c->coll_i);
-			st = sim_end(s) == SIM_END_FAIL ? CURVE_FAILED : CURVE_DONE;
+		if (s != NULL && !stop && hb_sim_end(s) != HB_SIM_RUNNING) {
+			y = hb_sweep_observe(s, c->obs, c->coll_i);
+			st = hb_sim_end(s) == HB_SIM_END_FAIL ? HB_CURVE_FAILED : HB_CURVE_DONE;
 		}
-		sim_free(s);
+		hb_sim_free(s);
 		if (stop)
 			return NULL;
 		pthread_mutex_lock(&c->mu);
@@ -117,7 +117,7 @@ curve_worker(void *arg)
 }
 
 void
-sweep_curve_free(struct sweep_curve *c)
+hb_sweep_curve_free(struct hb_sweep_curve *c)
 {
 	if (c == NULL)
 		return;
@@ -127,33 +127,33 @@ sweep_curve_free(struct sweep_curve *c)
 	for (int i = 0; i < c->nth; i++)
 		pthread_join(c->th[i], NULL);
 	pthread_mutex_destroy(&c->mu);
-	sweep_free(c->sw);
+	hb_sweep_free(c->sw);
 	free(c->x);
 	free(c->y);
 	free(c->state);
 	free(c);
 }
 
-struct sweep_curve *
-sweep_curve_start(const struct scene *base, const char *key, const char *spec, int obs,
+struct hb_sweep_curve *
+hb_sweep_curve_start(const struct hb_scene *base, const char *key, const char *spec, int obs,
                   long coll_i, int jobs, char *msg, size_t n)
 {
-	struct sweep_curve *c;
+	struct hb_sweep_curve *c;
 	char arg[512], v[64];
 
-	if (obs < 0 || obs >= CURVE_COUNT) {
-		status_set(msg, n, HB_EINVAL, "observable %d: accepted: e, v_i, x_c_r, "
+	if (obs < 0 || obs >= HB_CURVE_COUNT) {
+		hb_status_set(msg, n, HB_EINVAL, "observable %d: accepted: e, v_i, x_c_r, "
 		           "collisions, t_pc, x_c_r_total", obs);
 		return NULL;
 	}
 	if (strlen(key) >= sizeof c->key) {
-		status_set(msg, n, HB_EINVAL, "%s: unknown key", key);
+		hb_status_set(msg, n, HB_EINVAL, "%s: unknown key", key);
 		return NULL;
 	}
 	c = calloc(1, sizeof *c);
-	if (c == NULL || (c->sw = sweep_new(base, msg, n)) == NULL) {
+	if (c == NULL || (c->sw = hb_sweep_new(base, msg, n)) == NULL) {
 		free(c);
-		status_set(msg, n, HB_ENOMEM, "out of memory");
+		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		return NULL;
 	}
 	pthread_mutex_init(&c->mu, NULL);
@@ -161,21 +161,21 @@ sweep_curve_start(const struct scene *base, const char *key, const char *spec, i
 	c->obs = obs;
 	c->coll_i = coll_i;
 	snprintf(arg, sizeof arg, "%s=%s", key, spec);
-	if (sweep_vary(c->sw, arg, msg, n) != HB_OK || sweep_check(c->sw, msg, n) != HB_OK) {
-		sweep_curve_free(c);
+	if (hb_sweep_vary(c->sw, arg, msg, n) != HB_OK || hb_sweep_check(c->sw, msg, n) != HB_OK) {
+		hb_sweep_curve_free(c);
 		return NULL;
 	}
-	c->np = sweep_npoints(c->sw);
+	c->np = hb_sweep_npoints(c->sw);
 	c->x = malloc((size_t)c->np * sizeof *c->x);
 	c->y = malloc((size_t)c->np * sizeof *c->y);
 	c->state = calloc((size_t)c->np, sizeof *c->state);
 	if (c->x == NULL || c->y == NULL || c->state == NULL) {
-		sweep_curve_free(c);
-		status_set(msg, n, HB_ENOMEM, "out of memory");
+		hb_sweep_curve_free(c);
+		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		return NULL;
 	}
 	for (long i = 0; i < c->np; i++) {
-		sweep_point_value(c->sw, i, 0, v, sizeof v);
+		hb_sweep_point_value(c->sw, i, 0, v, sizeof v);
 		c->x[i] = strtod(v, NULL);   /* NAN-free: a word (a law name) gives 0 */
 		c->y[i] = NAN;
 	}
@@ -187,21 +187,21 @@ sweep_curve_start(const struct scene *base, const char *key, const char *spec, i
 		if (pthread_create(&c->th[c->nth], NULL, curve_worker, c) != 0)
 			break;
 	if (c->nth == 0) {
-		sweep_curve_free(c);
-		status_set(msg, n, HB_ENOMEM, "cannot start a thread");
+		hb_sweep_curve_free(c);
+		hb_status_set(msg, n, HB_ENOMEM, "cannot start a thread");
 		return NULL;
 	}
 	return c;
 }
 
 long
-sweep_curve_npoints(const struct sweep_curve *c)
+hb_sweep_curve_npoints(const struct hb_sweep_curve *c)
 {
 	return c->np;
 }
 
 long
-sweep_curve_poll(struct sweep_curve *c, double *x, double *y, int *state, long n)
+hb_sweep_curve_poll(struct hb_sweep_curve *c, double *x, double *y, int *state, long n)
 {
 	long done;
 
@@ -221,9 +221,9 @@ sweep_curve_poll(struct sweep_curve *c, double *x, double *y, int *state, long n
 	return done;
 }
 
-/* What sweep_curve_write_csv writes: the header, then the computed points. */
+/* What hb_sweep_curve_write_csv writes: the header, then the computed points. */
 struct curve_rows {
-	const struct sweep_curve *c;
+	const struct hb_sweep_curve *c;
 	const double *y;
 	const int *st;
 };
@@ -237,9 +237,9 @@ fill_curve(FILE *f, const void *ctx)
 	for (long i = 0; i < r->c->np; i++) {
 		char v[64];
 
-		if (r->st[i] == CURVE_PENDING)
+		if (r->st[i] == HB_CURVE_PENDING)
 			continue;
-		sweep_point_value(r->c->sw, i, 0, v, sizeof v);
+		hb_sweep_point_value(r->c->sw, i, 0, v, sizeof v);
 		fputs(v, f);
 		csv_put_num(f, r->y[i]);
 		fputc('\n', f);
@@ -247,7 +247,7 @@ fill_curve(FILE *f, const void *ctx)
 }
 
 int
-sweep_curve_write_csv(struct sweep_curve *c, const char *path, char *msg, size_t n)
+hb_sweep_curve_write_csv(struct hb_sweep_curve *c, const char *path, char *msg, size_t n)
 {
 	double *y = malloc((size_t)c->np * sizeof *y);
 	int *st = malloc((size_t)c->np * sizeof *st);
@@ -256,10 +256,10 @@ sweep_curve_write_csv(struct sweep_curve *c, const char *path, char *msg, size_t
 	if (y == NULL || st == NULL) {
 		free(y);
 		free(st);
-		return status_set(msg, n, HB_ENOMEM, "out of memory");
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
-	sweep_curve_poll(c, NULL, y, st, c->np);
-	rc = atomic_write_with(path, fill_curve, &(struct curve_rows){ c, y, st }, msg, n);
+	hb_sweep_curve_poll(c, NULL, y, st, c->np);
+	rc = hb_atomic_write_with(path, fill_curve, &(struct curve_rows){ c, y, st }, msg, n);
 	free(y);
 	free(st);
 	return rc;

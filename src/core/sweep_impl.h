@@ -7,14 +7,14 @@
 #include <stddef.h>
 #include "hybounce/sim.h"
 
-struct sweep;
+struct hb_sweep;
 
 /*
- * sim_new() for a worker thread of sweep sw: serialised with the sweep's
- * other threads, because sim_new() switches GSL's process-wide error
+ * hb_sim_new() for a worker thread of sweep sw: serialised with the sweep's
+ * other threads, because hb_sim_new() switches GSL's process-wide error
  * handler off (one global written by every call).
  */
-struct sim *
-sweep_sim_new(const struct sweep *sw, const struct scene *sc, char *msg, size_t n);
+struct hb_sim *
+sweep_sim_new(const struct hb_sweep *sw, const struct hb_scene *sc, char *msg, size_t n);
 
 #endif

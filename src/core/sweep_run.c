@@ -19,7 +19,7 @@
  * a failed merge leaves the old ones.
  *
  * Threads.  Workers take the next id under a mutex, run the point on their
- * own scene and sim (sweep_point_block), and queue the block; the calling
+ * own scene and sim (hb_sweep_point_block), and queue the block; the calling
  * thread writes blocks and reports progress.  The results do not depend on
  * the number of threads or the order of completion: each point's bytes come
  * from its own run alone, and the files are sorted by id.
@@ -104,13 +104,13 @@ write_all(int fd, const char *p, size_t len)
 }
 
 static char *
-spec_text(const struct sweep *sw, size_t *len)
+spec_text(const struct hb_sweep *sw, size_t *len)
 {
-	size_t l = sweep_spec_format(sw, NULL, 0);
+	size_t l = hb_sweep_spec_format(sw, NULL, 0);
 	char *t = malloc(l + 1);
 
 	if (t != NULL)
-		sweep_spec_format(sw, t, l + 1);
+		hb_sweep_spec_format(sw, t, l + 1);
 	*len = l;
 	return t;
 }
@@ -127,7 +127,7 @@ ours(const char *name)
 }
 
 int
-sweep_prepare_dir(const struct sweep *sw, const char *dir, char *msg, size_t n)
+hb_sweep_prepare_dir(const struct hb_sweep *sw, const char *dir, char *msg, size_t n)
 {
 	char path[4096];
 	struct stat st;
@@ -136,25 +136,25 @@ sweep_prepare_dir(const struct sweep *sw, const char *dir, char *msg, size_t n)
 	int rc;
 
 	if (dir == NULL || dir[0] == '\0')
-		return status_set(msg, n, HB_EINVAL, "--out: empty folder name; expected a "
+		return hb_status_set(msg, n, HB_EINVAL, "--out: empty folder name; expected a "
 		                  "folder for runs.csv and collisions.csv");
 	if (mkdir(dir, 0777) != 0 && errno != EEXIST)
-		return status_set(msg, n, HB_EINVAL, "--out %s: cannot create the folder: %s",
+		return hb_status_set(msg, n, HB_EINVAL, "--out %s: cannot create the folder: %s",
 		                  dir, strerror(errno));
 	if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
-		return status_set(msg, n, HB_EINVAL, "--out %s: not a folder; expected a folder "
+		return hb_status_set(msg, n, HB_EINVAL, "--out %s: not a folder; expected a folder "
 		                  "(created if missing)", dir);
 	if (access(dir, W_OK) != 0)
-		return status_set(msg, n, HB_EINVAL, "--out %s: cannot write there: %s", dir,
+		return hb_status_set(msg, n, HB_EINVAL, "--out %s: cannot write there: %s", dir,
 		                  strerror(errno));
 	want = spec_text(sw, &len);
 	if (want == NULL)
-		return status_set(msg, n, HB_ENOMEM, "out of memory");
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	snprintf(path, sizeof path, "%s/" SPEC_NAME, dir);
 	have = slurp(path, &have_len);
 	if (have != NULL) {
 		rc = have_len == len && memcmp(have, want, len) == 0 ? HB_OK
-		   : status_set(msg, n, HB_EINVAL, "--out %s: the folder holds a different "
+		   : hb_status_set(msg, n, HB_EINVAL, "--out %s: the folder holds a different "
 		                "sweep (%s differs from this one's); expected a new folder, "
 		                "or this sweep's own folder to resume it", dir, path);
 		free(have);
@@ -163,7 +163,7 @@ sweep_prepare_dir(const struct sweep *sw, const char *dir, char *msg, size_t n)
 	}
 	if (errno != ENOENT) {
 		free(want);
-		return status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
 	}
 	{
 		DIR *d = opendir(dir);
@@ -171,11 +171,11 @@ sweep_prepare_dir(const struct sweep *sw, const char *dir, char *msg, size_t n)
 
 		if (d == NULL) {
 			free(want);
-			return status_set(msg, n, HB_EIO, "%s: %s", dir, strerror(errno));
+			return hb_status_set(msg, n, HB_EIO, "%s: %s", dir, strerror(errno));
 		}
 		while ((e = readdir(d)) != NULL)
 			if (!ours(e->d_name)) {
-				status_set(msg, n, HB_EINVAL, "--out %s: the folder is not empty "
+				hb_status_set(msg, n, HB_EINVAL, "--out %s: the folder is not empty "
 				    "and holds no sweep (found %s); expected a new or empty folder",
 				    dir, e->d_name);
 				closedir(d);
@@ -184,7 +184,7 @@ sweep_prepare_dir(const struct sweep *sw, const char *dir, char *msg, size_t n)
 			}
 		closedir(d);
 	}
-	rc = atomic_write_file(path, want, len, msg, n);
+	rc = hb_atomic_write_file(path, want, len, msg, n);
 	free(want);
 	return rc;
 }
@@ -225,7 +225,7 @@ journal_scan(const char *path, long npoints, int trunc,
 	int kind, rc = HB_OK;
 
 	if (f == NULL)
-		return errno == ENOENT ? HB_OK : status_set(msg, n, HB_EIO, "%s: %s", path,
+		return errno == ENOENT ? HB_OK : hb_status_set(msg, n, HB_EIO, "%s: %s", path,
 		                                             strerror(errno));
 	while ((got = getline(&line, &cap, f)) > 0) {
 		lineno++;
@@ -233,7 +233,7 @@ journal_scan(const char *path, long npoints, int trunc,
 			break;  /* a torn last line */
 		kind = journal_line(line, (size_t)got, &id);
 		if (kind < 0 || id >= npoints || (block_id >= 0 && id != block_id)) {
-			rc = status_set(msg, n, HB_EINVAL, "%s:%ld: not a line of this sweep's "
+			rc = hb_status_set(msg, n, HB_EINVAL, "%s:%ld: not a line of this sweep's "
 			                "journal; remove the file to compute its points again",
 			                path, lineno);
 			break;
@@ -250,10 +250,10 @@ journal_scan(const char *path, long npoints, int trunc,
 	}
 	free(line);
 	if (ferror(f) && rc == HB_OK)
-		rc = status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+		rc = hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
 	fclose(f);
 	if (rc == HB_OK && trunc && truncate(path, block) != 0)
-		rc = status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+		rc = hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
 	return rc;
 }
 
@@ -298,7 +298,7 @@ struct result {
 };
 
 struct pool {
-	const struct sweep *sw;
+	const struct hb_sweep *sw;
 	pthread_mutex_t mu;
 	pthread_cond_t cv;
 	const long *pending;
@@ -329,7 +329,7 @@ worker(void *arg)
 		c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
 		if (r != NULL) {
 			r->id = id;
-			r->rc = sweep_point_block(p->sw, id, &r->blk, &r->failed, r->msg,
+			r->rc = hb_sweep_point_block(p->sw, id, &r->blk, &r->failed, r->msg,
 			                          sizeof r->msg);
 			r->cpu = clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
 		}
@@ -349,10 +349,10 @@ worker(void *arg)
 }
 
 int
-sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size_t n)
+hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *msg, size_t n)
 {
-	long np = sweep_npoints(sw), k = o->shard_k, ns = o->shard_n < 1 ? 1 : o->shard_n;
-	struct sweep_progress pr;
+	long np = hb_sweep_npoints(sw), k = o->shard_k, ns = o->shard_n < 1 ? 1 : o->shard_n;
+	struct hb_sweep_progress pr;
 	struct doneset ds = { 0 };
 	struct pool p;
 	pthread_t *th = NULL;
@@ -364,12 +364,12 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 	memset(&pr, 0, sizeof pr);
 	memset(&p, 0, sizeof p);
 	if (np == 0)
-		return status_set(msg, n, HB_EINVAL, "nothing to vary; expected at least one "
+		return hb_status_set(msg, n, HB_EINVAL, "nothing to vary; expected at least one "
 		                  "--vary KEY=SPEC");
 	if (k < 0 || k >= ns)
-		return status_set(msg, n, HB_EINVAL, "--shard %ld/%ld: accepted: K/N with "
+		return hb_status_set(msg, n, HB_EINVAL, "--shard %ld/%ld: accepted: K/N with "
 		                  "0 <= K < N", k, ns);
-	if ((rc = sweep_prepare_dir(sw, o->dir, msg, n)) != HB_OK)
+	if ((rc = hb_sweep_prepare_dir(sw, o->dir, msg, n)) != HB_OK)
 		return rc;
 	journal_name(jpath, sizeof jpath, o->dir, k, ns);
 	if (ns == 1 && access(jpath, F_OK) != 0 && errno == ENOENT) {
@@ -387,7 +387,7 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 	}
 	ds.bits = calloc((size_t)np / 8 + 1, 1);
 	if (ds.bits == NULL)
-		return status_set(msg, n, HB_ENOMEM, "out of memory");
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	if ((rc = journal_scan(jpath, np, 1, mark_done, &ds, msg, n)) != HB_OK)
 		goto out;
 	/* The shard's points that the journal does not hold. */
@@ -395,7 +395,7 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 		pr.total++;
 	pending = malloc((size_t)(pr.total - ds.count + 1) * sizeof *pending);
 	if (pending == NULL) {
-		rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
 	}
 	for (long id = k; id < np; id += ns)
@@ -408,7 +408,7 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 	if (p.npending > 0) {
 		fd = open(jpath, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
 		if (fd < 0) {
-			rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 			goto out;
 		}
 		p.sw = sw;
@@ -420,14 +420,14 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 			nth = p.npending;
 		th = calloc((size_t)nth, sizeof *th);
 		if (th == NULL) {
-			rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 			goto threads_done;
 		}
 		for (long i = 0; i < nth; i++)
 			if (pthread_create(&th[i], NULL, worker, &p) != 0) {
 				nth = i;
 				if (nth == 0) {
-					rc = status_set(msg, n, HB_ENOMEM, "cannot start a thread");
+					rc = hb_status_set(msg, n, HB_ENOMEM, "cannot start a thread");
 					goto threads_done;
 				}
 				break;
@@ -456,7 +456,7 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 				break;
 			}
 			if (p.head == NULL) {
-				rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+				rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 				break;
 			}
 			r = p.head;
@@ -465,9 +465,9 @@ sweep_run(const struct sweep *sw, const struct sweep_options *o, char *msg, size
 				p.tail = NULL;
 			pthread_mutex_unlock(&p.mu);
 			if (r->rc != HB_OK)
-				rc = status_set(msg, n, r->rc, "%s", r->msg);
+				rc = hb_status_set(msg, n, r->rc, "%s", r->msg);
 			else if (write_all(fd, r->blk, strlen(r->blk)) != 0)
-				rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+				rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 			else {
 				got++;
 				pr.done++;
@@ -492,7 +492,7 @@ threads_done:
 			/* Stopped: the points that were finishing are kept too. */
 			if (cancelled && rc == HB_OK && r->rc == HB_OK) {
 				if (write_all(fd, r->blk, strlen(r->blk)) != 0)
-					rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+					rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 				else {
 					pr.done++;
 					pr.failed += r->failed;
@@ -503,20 +503,20 @@ threads_done:
 			free(r);
 		}
 		if (cancelled && rc == HB_OK)
-			rc = status_set(msg, n, HB_EDONE, "stopped with %ld of %ld points done; "
+			rc = hb_status_set(msg, n, HB_EDONE, "stopped with %ld of %ld points done; "
 			                "the same command resumes", pr.done, pr.total);
 		free(th);
 		pthread_cond_destroy(&p.cv);
 		pthread_mutex_destroy(&p.mu);
 		if (close(fd) != 0 && rc == HB_OK)
-			rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 		if (rc != HB_OK)
 			goto out;
 	}
 	if (ns == 1) {
-		if ((rc = sweep_merge(o->dir, msg, n)) == HB_OK && unlink(jpath) != 0 &&
+		if ((rc = hb_sweep_merge(o->dir, msg, n)) == HB_OK && unlink(jpath) != 0 &&
 		    errno != ENOENT)
-			rc = status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 	}
 out:
 	free(pending);
@@ -551,9 +551,9 @@ index_add(void *ctx, long id, off_t off, size_t len)
 
 /* The collisions header of --collisions (from an empty run's CSV). */
 static int
-collisions_header(const struct scene *sc, char *buf, size_t n, char *msg, size_t mn)
+collisions_header(const struct hb_scene *sc, char *buf, size_t n, char *msg, size_t mn)
 {
-	struct sim *s = sim_new(sc, msg, mn);
+	struct hb_sim *s = hb_sim_new(sc, msg, mn);
 	char *t = NULL;
 	size_t tl = 0;
 	FILE *f;
@@ -563,12 +563,12 @@ collisions_header(const struct scene *sc, char *buf, size_t n, char *msg, size_t
 		return HB_EINVAL;
 	f = open_memstream(&t, &tl);
 	if (f == NULL) {
-		sim_free(s);
-		return status_set(msg, mn, HB_ENOMEM, "out of memory");
+		hb_sim_free(s);
+		return hb_status_set(msg, mn, HB_ENOMEM, "out of memory");
 	}
-	rc = csv_stream_collisions(f, s, msg, mn);
+	rc = hb_csv_stream_collisions(f, s, msg, mn);
 	fclose(f);
-	sim_free(s);
+	hb_sim_free(s);
 	if (rc == HB_OK && t != NULL)
 		snprintf(buf, n, "%.*s", (int)strcspn(t, "\n"), t);
 	free(t);
@@ -576,34 +576,34 @@ collisions_header(const struct scene *sc, char *buf, size_t n, char *msg, size_t
 }
 
 /* Loads DIR/sweep.preset into a sweep. */
-static struct sweep *
-load_spec(const char *dir, struct scene *sc, char *msg, size_t n)
+static struct hb_sweep *
+load_spec(const char *dir, struct hb_scene *sc, char *msg, size_t n)
 {
 	char path[4096], m[1024];
-	struct sweep *sw;
+	struct hb_sweep *sw;
 	char *text;
 
 	snprintf(path, sizeof path, "%s/" SPEC_NAME, dir);
 	text = slurp(path, NULL);
 	if (text == NULL) {
-		status_set(msg, n, HB_EINVAL, "%s: %s; expected a sweep folder (--out DIR of "
+		hb_status_set(msg, n, HB_EINVAL, "%s: %s; expected a sweep folder (--out DIR of "
 		           "hybounce sweep)", path, strerror(errno));
 		return NULL;
 	}
 	m[0] = '\0';
-	if (preset_load_string(text, path, sc, m, sizeof m) != HB_OK) {
-		status_set(msg, n, HB_EINVAL, "%s", m);
+	if (hb_preset_load_string(text, path, sc, m, sizeof m) != HB_OK) {
+		hb_status_set(msg, n, HB_EINVAL, "%s", m);
 		free(text);
 		return NULL;
 	}
-	sw = sweep_new(sc, msg, n);
-	if (sw != NULL && sweep_vary_from_preset(sw, text, path, msg, n) != HB_OK) {
-		sweep_free(sw);
+	sw = hb_sweep_new(sc, msg, n);
+	if (sw != NULL && hb_sweep_vary_from_preset(sw, text, path, msg, n) != HB_OK) {
+		hb_sweep_free(sw);
 		sw = NULL;
 	}
-	if (sw != NULL && sweep_npoints(sw) == 0) {
-		status_set(msg, n, HB_EINVAL, "%s: no '; sweep: --vary' line", path);
-		sweep_free(sw);
+	if (sw != NULL && hb_sweep_npoints(sw) == 0) {
+		hb_status_set(msg, n, HB_EINVAL, "%s: no '; sweep: --vary' line", path);
+		hb_sweep_free(sw);
 		sw = NULL;
 	}
 	free(text);
@@ -611,14 +611,14 @@ load_spec(const char *dir, struct scene *sc, char *msg, size_t n)
 }
 
 int
-sweep_merge(const char *dir, char *msg, size_t n)
+hb_sweep_merge(const char *dir, char *msg, size_t n)
 {
-	struct scene sc;
-	struct sweep *sw = load_spec(dir, &sc, msg, n);
+	struct hb_scene sc;
+	struct hb_sweep *sw = load_spec(dir, &sc, msg, n);
 	struct index x = { 0 };
 	char **names = NULL, hdr[4096], path[4200];
 	int nnames = 0, *fds = NULL, rc = HB_OK;
-	struct atomic_set set;
+	struct hb_atomic_set set;
 	FILE *runs = NULL, *coll = NULL;
 	int set_open = 0;
 	char *blk = NULL;
@@ -629,19 +629,19 @@ sweep_merge(const char *dir, char *msg, size_t n)
 
 	if (sw == NULL)
 		return HB_EINVAL;
-	np = sweep_npoints(sw);
+	np = hb_sweep_npoints(sw);
 	x.off = malloc((size_t)np * sizeof *x.off);
 	x.len = malloc((size_t)np * sizeof *x.len);
 	x.file = malloc((size_t)np * sizeof *x.file);
 	if (x.off == NULL || x.len == NULL || x.file == NULL) {
-		rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
 	}
 	for (long i = 0; i < np; i++)
 		x.off[i] = -1;
 	d = opendir(dir);
 	if (d == NULL) {
-		rc = status_set(msg, n, HB_EIO, "%s: %s", dir, strerror(errno));
+		rc = hb_status_set(msg, n, HB_EIO, "%s: %s", dir, strerror(errno));
 		goto out;
 	}
 	while ((e = readdir(d)) != NULL) {
@@ -651,12 +651,12 @@ sweep_merge(const char *dir, char *msg, size_t n)
 		if (l <= 8 || strcmp(e->d_name + l - 8, ".journal") != 0)
 			continue;
 		if (nnames == 65535 || (nn = realloc(names, (size_t)(nnames + 1) * sizeof *names)) == NULL) {
-			rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 			break;
 		}
 		names = nn;
 		if ((names[nnames] = strdup(e->d_name)) == NULL) {
-			rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 			break;
 		}
 		nnames++;
@@ -666,7 +666,7 @@ sweep_merge(const char *dir, char *msg, size_t n)
 		goto out;
 	fds = malloc((size_t)(nnames + 1) * sizeof *fds);
 	if (fds == NULL) {
-		rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
 	}
 	for (int i = 0; i < nnames; i++)
@@ -676,7 +676,7 @@ sweep_merge(const char *dir, char *msg, size_t n)
 		x.cur = i;
 		rc = journal_scan(path, np, 0, index_add, &x, msg, n);
 		if (rc == HB_OK && (fds[i] = open(path, O_RDONLY | O_CLOEXEC)) < 0)
-			rc = status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
 	}
 	if (rc != HB_OK)
 		goto out;
@@ -685,25 +685,25 @@ sweep_merge(const char *dir, char *msg, size_t n)
 
 		while (first < np && x.off[first] >= 0)
 			first++;
-		rc = status_set(msg, n, HB_EINVAL, "%s: %ld of %ld points are missing (the "
+		rc = hb_status_set(msg, n, HB_EINVAL, "%s: %ld of %ld points are missing (the "
 		                "first is point %ld); expected every shard to have finished "
 		                "(%d journal%s found)", dir, np - x.count, np, first, nnames,
 		                nnames == 1 ? "" : "s");
 		goto out;
 	}
-	atomic_begin(&set);
+	hb_atomic_begin(&set);
 	set_open = 1;
 	snprintf(path, sizeof path, "%s/runs.csv", dir);
-	if ((runs = atomic_add(&set, path, msg, n)) == NULL) {
+	if ((runs = hb_atomic_add(&set, path, msg, n)) == NULL) {
 		rc = HB_EIO;
 		goto out;
 	}
 	snprintf(path, sizeof path, "%s/collisions.csv", dir);
-	if ((coll = atomic_add(&set, path, msg, n)) == NULL) {
+	if ((coll = hb_atomic_add(&set, path, msg, n)) == NULL) {
 		rc = HB_EIO;
 		goto out;
 	}
-	sweep_runs_header(sw, hdr, sizeof hdr);
+	hb_sweep_runs_header(sw, hdr, sizeof hdr);
 	fprintf(runs, "%s\n", hdr);
 	if ((rc = collisions_header(&sc, hdr, sizeof hdr, msg, n)) != HB_OK)
 		goto out;
@@ -716,13 +716,13 @@ sweep_merge(const char *dir, char *msg, size_t n)
 			char *nb = realloc(blk, cap = len + 1);
 
 			if (nb == NULL) {
-				rc = status_set(msg, n, HB_ENOMEM, "out of memory");
+				rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 				break;
 			}
 			blk = nb;
 		}
 		if (pread(fds[x.file[id]], blk, len, (off_t)x.off[id]) != (ssize_t)len) {
-			rc = status_set(msg, n, HB_EIO, "%s/%s: short read", dir, names[x.file[id]]);
+			rc = hb_status_set(msg, n, HB_EIO, "%s/%s: short read", dir, names[x.file[id]]);
 			break;
 		}
 		blk[len] = '\0';
@@ -737,9 +737,9 @@ sweep_merge(const char *dir, char *msg, size_t n)
 out:
 	if (set_open) {
 		if (rc == HB_OK)
-			rc = atomic_commit(&set, msg, n);   /* both files, or neither */
+			rc = hb_atomic_commit(&set, msg, n);   /* both files, or neither */
 		else
-			atomic_abort(&set);
+			hb_atomic_abort(&set);
 	}
 	for (int i = 0; i < nnames; i++) {
 		if (fds && fds[i] >= 0)
@@ -752,6 +752,6 @@ out:
 	free(x.off);
 	free(x.len);
 	free(x.file);
-	sweep_free(sw);
+	hb_sweep_free(sw);
 	return rc;
 }

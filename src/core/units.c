@@ -22,17 +22,17 @@
 #include "hybounce/status.h"
 #include "hybounce/units.h"
 
-const struct unit_dim UNIT_NONE = { 0, 0, 0, 0, 0 };
-const struct unit_dim UNIT_LENGTH = { 0, 1, 0, 0, 0 };
-const struct unit_dim UNIT_TIME = { 0, 0, 1, 0, 0 };
-const struct unit_dim UNIT_MASS = { 1, 0, 0, 0, 0 };
-const struct unit_dim UNIT_VELOCITY = { 0, 1, -1, 0, 0 };
-const struct unit_dim UNIT_ACCEL = { 0, 1, -2, 0, 0 };
-const struct unit_dim UNIT_FORCE = { 1, 1, -2, 0, 0 };
-const struct unit_dim UNIT_PRESSURE = { 1, -1, -2, 0, 0 };
-const struct unit_dim UNIT_DENSITY = { 1, -3, 0, 0, 0 };
-const struct unit_dim UNIT_ENERGY = { 1, 2, -2, 0, 0 };
-const struct unit_dim UNIT_IMPULSE = { 1, 1, -1, 0, 0 };
+const struct hb_unit_dim hb_unit_none = { 0, 0, 0, 0, 0 };
+const struct hb_unit_dim hb_unit_length = { 0, 1, 0, 0, 0 };
+const struct hb_unit_dim hb_unit_time = { 0, 0, 1, 0, 0 };
+const struct hb_unit_dim hb_unit_mass = { 1, 0, 0, 0, 0 };
+const struct hb_unit_dim hb_unit_velocity = { 0, 1, -1, 0, 0 };
+const struct hb_unit_dim hb_unit_accel = { 0, 1, -2, 0, 0 };
+const struct hb_unit_dim hb_unit_force = { 1, 1, -2, 0, 0 };
+const struct hb_unit_dim hb_unit_pressure = { 1, -1, -2, 0, 0 };
+const struct hb_unit_dim hb_unit_density = { 1, -3, 0, 0, 0 };
+const struct hb_unit_dim hb_unit_energy = { 1, 2, -2, 0, 0 };
+const struct hb_unit_dim hb_unit_impulse = { 1, 1, -1, 0, 0 };
 
 #define UNITS_TOL 1e-9
 
@@ -77,10 +77,10 @@ static const struct prefix out_prefixes[] = {
 };
 #define NOUT (sizeof out_prefixes / sizeof out_prefixes[0])
 
-struct unit_dim
-units_resolve(struct unit_dim d, double p, double n)
+struct hb_unit_dim
+hb_units_resolve(struct hb_unit_dim d, double p, double n)
 {
-	struct unit_dim r = d;
+	struct hb_unit_dim r = d;
 
 	r.m = d.m + d.mp * p + d.mn * n;
 	r.mp = 0;
@@ -96,7 +96,7 @@ exp_eq(double a, double b)
 }
 
 static int
-dim_eq(struct unit_dim a, struct unit_dim b)
+dim_eq(struct hb_unit_dim a, struct hb_unit_dim b)
 {
 	return exp_eq(a.kg, b.kg) && exp_eq(a.m, b.m) && exp_eq(a.s, b.s);
 }
@@ -115,7 +115,7 @@ symbol_find(const char *tok, size_t len)
  * and dimension.  Returns 0 or -1 if unknown.
  */
 static int
-token_resolve(const char *tok, size_t len, double *factor, struct unit_dim *d)
+token_resolve(const char *tok, size_t len, double *factor, struct hb_unit_dim *d)
 {
 	const struct symbol *sym = symbol_find(tok, len);
 	double pf = 1;
@@ -170,23 +170,23 @@ exponent_parse(const char **pp, double *e)
  * a message and returns HB_EINVAL.
  */
 static int
-unit_parse(const char *text, double *factor, struct unit_dim *dim, char *msg, size_t n)
+unit_parse(const char *text, double *factor, struct hb_unit_dim *dim, char *msg, size_t n)
 {
 	const char *p = text;
 	int denom = 0;
 	double f = 1;
-	struct unit_dim d = { 0, 0, 0, 0, 0 };
+	struct hb_unit_dim d = { 0, 0, 0, 0, 0 };
 
 	for (;;) {
 		const char *tok;
 		size_t len;
 		double tf, e = 1, sign;
-		struct unit_dim td;
+		struct hb_unit_dim td;
 
 		while (*p == ' ' || *p == '\t' || *p == '*' || *p == '/') {
 			if (*p == '/') {
 				if (denom)
-					return status_set(msg, n, HB_EINVAL,
+					return hb_status_set(msg, n, HB_EINVAL,
 					    "unit '%s' has more than one '/'", text);
 				denom = 1;
 			}
@@ -202,14 +202,14 @@ unit_parse(const char *text, double *factor, struct unit_dim *dim, char *msg, si
 		if (len == 0 || token_resolve(tok, len, &tf, &td) != 0) {
 			while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '*' && *p != '/')
 				p++;
-			return status_set(msg, n, HB_EINVAL,
+			return hb_status_set(msg, n, HB_EINVAL,
 			    "unknown unit '%.*s'; known units: m, g, s, N, Pa, J, W, Hz "
 			    "with SI prefixes (e.g. mm, kg, GPa)", (int)(p - tok), tok);
 		}
 		if (*p == '^') {
 			p++;
 			if (exponent_parse(&p, &e) != 0)
-				return status_set(msg, n, HB_EINVAL,
+				return hb_status_set(msg, n, HB_EINVAL,
 				    "bad exponent in unit '%s' (expected e.g. m^3, m^-5/2)", text);
 		}
 		sign = denom ? -1 : 1;
@@ -218,7 +218,7 @@ unit_parse(const char *text, double *factor, struct unit_dim *dim, char *msg, si
 		d.m += sign * e * td.m;
 		d.s += sign * e * td.s;
 		if (*p != '\0' && *p != ' ' && *p != '\t' && *p != '*' && *p != '/')
-			return status_set(msg, n, HB_EINVAL, "malformed unit '%s'", text);
+			return hb_status_set(msg, n, HB_EINVAL, "malformed unit '%s'", text);
 	}
 	*factor = f;
 	*dim = d;
@@ -227,23 +227,23 @@ unit_parse(const char *text, double *factor, struct unit_dim *dim, char *msg, si
 
 /* A name for a dimension in messages: "a length", "a value in N s m^-5/2". */
 static void
-dim_describe(struct unit_dim d, char *buf, size_t n)
+dim_describe(struct hb_unit_dim d, char *buf, size_t n)
 {
 	static const struct {
-		const struct unit_dim *d;
+		const struct hb_unit_dim *d;
 		const char *name, *eg;
 	} names[] = {
-		{ &UNIT_NONE, "a dimensionless value", "0.35" },
-		{ &UNIT_LENGTH, "a length", "mm" },
-		{ &UNIT_TIME, "a time", "ms" },
-		{ &UNIT_MASS, "a mass", "kg" },
-		{ &UNIT_VELOCITY, "a velocity", "m/s" },
-		{ &UNIT_ACCEL, "an acceleration", "m/s^2" },
-		{ &UNIT_FORCE, "a force", "N" },
-		{ &UNIT_PRESSURE, "a pressure", "GPa" },
-		{ &UNIT_DENSITY, "a density", "kg/m^3" },
-		{ &UNIT_ENERGY, "an energy", "J" },
-		{ &UNIT_IMPULSE, "an impulse", "N s" },
+		{ &hb_unit_none, "a dimensionless value", "0.35" },
+		{ &hb_unit_length, "a length", "mm" },
+		{ &hb_unit_time, "a time", "ms" },
+		{ &hb_unit_mass, "a mass", "kg" },
+		{ &hb_unit_velocity, "a velocity", "m/s" },
+		{ &hb_unit_accel, "an acceleration", "m/s^2" },
+		{ &hb_unit_force, "a force", "N" },
+		{ &hb_unit_pressure, "a pressure", "GPa" },
+		{ &hb_unit_density, "a density", "kg/m^3" },
+		{ &hb_unit_energy, "an energy", "J" },
+		{ &hb_unit_impulse, "an impulse", "N s" },
 	};
 	char u[64];
 
@@ -256,27 +256,27 @@ dim_describe(struct unit_dim d, char *buf, size_t n)
 			return;
 		}
 	}
-	snprintf(buf, n, "a value in %s", units_dim_str(d, u, sizeof u));
+	snprintf(buf, n, "a value in %s", hb_units_dim_str(d, u, sizeof u));
 }
 
 int
-units_parse(const char *text, struct unit_dim expect, double *value, char *msg, size_t n)
+hb_units_parse(const char *text, struct hb_unit_dim expect, double *value, char *msg, size_t n)
 {
 	const char *p = text;
 	char *end;
 	double v, factor = 1;
-	struct unit_dim d = { 0, 0, 0, 0, 0 };
+	struct hb_unit_dim d = { 0, 0, 0, 0, 0 };
 	int st;
 
 	while (isspace((unsigned char)*p))
 		p++;
 	if (*p == '\0')
-		return status_set(msg, n, HB_EINVAL, "empty value");
+		return hb_status_set(msg, n, HB_EINVAL, "empty value");
 	v = strtod(p, &end);
 	/* strtod also reads "nan" and hexadecimal; refuse those. */
 	if (end == p || isnan(v) || memchr(p, 'x', (size_t)(end - p)) != NULL ||
 	    memchr(p, 'X', (size_t)(end - p)) != NULL)
-		return status_set(msg, n, HB_EINVAL, "'%s' is not a number", text);
+		return hb_status_set(msg, n, HB_EINVAL, "'%s' is not a number", text);
 	p = end;
 	while (isspace((unsigned char)*p))
 		p++;
@@ -292,11 +292,11 @@ units_parse(const char *text, struct unit_dim expect, double *value, char *msg, 
 		while (len > 0 && isspace((unsigned char)p[len - 1]))
 			len--;
 		if (len >= sizeof ubuf)
-			return status_set(msg, n, HB_EINVAL, "unit of '%s' too long", text);
+			return hb_status_set(msg, n, HB_EINVAL, "unit of '%s' too long", text);
 		memcpy(ubuf, p, len);
 		ubuf[len] = '\0';
 		if (!isalpha((unsigned char)ubuf[0]) && (unsigned char)ubuf[0] < 0x80)
-			return status_set(msg, n, HB_EINVAL, "'%s' is not a number", text);
+			return hb_status_set(msg, n, HB_EINVAL, "'%s' is not a number", text);
 		st = unit_parse(ubuf, &factor, &d, msg, n);
 		if (st != HB_OK)
 			return st;
@@ -304,12 +304,12 @@ units_parse(const char *text, struct unit_dim expect, double *value, char *msg, 
 	if (!dim_eq(d, expect)) {
 		char have[64], want[96];
 
-		units_dim_str(d, have, sizeof have);
+		hb_units_dim_str(d, have, sizeof have);
 		dim_describe(expect, want, sizeof want);
 		if (have[0] == '\0')
-			return status_set(msg, n, HB_EINVAL,
+			return hb_status_set(msg, n, HB_EINVAL,
 			    "'%s' has no dimension but %s is expected", text, want);
-		return status_set(msg, n, HB_EINVAL, "'%s' has unit %s but %s is expected",
+		return hb_status_set(msg, n, HB_EINVAL, "'%s' has unit %s but %s is expected",
 		    text, have, want);
 	}
 	*value = v * factor;
@@ -373,7 +373,7 @@ is_int(double e)
 }
 
 char *
-units_dim_str(struct unit_dim d, char *buf, size_t n)
+hb_units_dim_str(struct hb_unit_dim d, char *buf, size_t n)
 {
 	static const struct {
 		const char *name;
@@ -388,9 +388,9 @@ units_dim_str(struct unit_dim d, char *buf, size_t n)
 	if (n == 0)
 		return buf;
 	buf[0] = '\0';
-	d = units_resolve(d, 0, 0);
+	d = hb_units_resolve(d, 0, 0);
 	for (size_t i = 0; i < sizeof named / sizeof named[0]; i++) {
-		struct unit_dim nd = { named[i].kg, named[i].m, named[i].s, 0, 0 };
+		struct hb_unit_dim nd = { named[i].kg, named[i].m, named[i].s, 0, 0 };
 		if (dim_eq(d, nd)) {
 			append(buf, n, named[i].name);
 			return buf;
@@ -490,21 +490,21 @@ format_prefixed(double value, double base_factor, const char *base, const char *
 }
 
 char *
-units_format(double value, struct unit_dim d, int sig, char *buf, size_t n)
+hb_units_format(double value, struct hb_unit_dim d, int sig, char *buf, size_t n)
 {
 	static const struct {
-		const struct unit_dim *d;
+		const struct hb_unit_dim *d;
 		const char *base, *tail;
 		double factor;
 		int lo, hi; /* range of out_prefixes indices */
 	} simple[] = {
-		{ &UNIT_LENGTH, "m", "", 1, 0, 6 },
-		{ &UNIT_TIME, "s", "", 1, 0, 5 },
-		{ &UNIT_MASS, "g", "", 1e-3, 0, 7 },
-		{ &UNIT_FORCE, "N", "", 1, 0, 7 },
-		{ &UNIT_PRESSURE, "Pa", "", 1, 0, 9 },
-		{ &UNIT_ENERGY, "J", "", 1, 0, 7 },
-		{ &UNIT_VELOCITY, "m", "/s", 1, 3, 5 },
+		{ &hb_unit_length, "m", "", 1, 0, 6 },
+		{ &hb_unit_time, "s", "", 1, 0, 5 },
+		{ &hb_unit_mass, "g", "", 1e-3, 0, 7 },
+		{ &hb_unit_force, "N", "", 1, 0, 7 },
+		{ &hb_unit_pressure, "Pa", "", 1, 0, 9 },
+		{ &hb_unit_energy, "J", "", 1, 0, 7 },
+		{ &hb_unit_velocity, "m", "/s", 1, 3, 5 },
 	};
 	char u[64];
 
@@ -516,8 +516,8 @@ units_format(double value, struct unit_dim d, int sig, char *buf, size_t n)
 		sig = 17;
 	if (value == 0)
 		value = 0; /* -0 is shown as 0: its sign carries nothing */
-	d = units_resolve(d, 0, 0);
-	if (dim_eq(d, UNIT_NONE)) {
+	d = hb_units_resolve(d, 0, 0);
+	if (dim_eq(d, hb_unit_none)) {
 		snprintf(buf, n, "%.*g", sig, value);
 		return buf;
 	}
@@ -532,30 +532,30 @@ units_format(double value, struct unit_dim d, int sig, char *buf, size_t n)
 		return format_prefixed(value, simple[i].factor, simple[i].base, simple[i].tail,
 		    simple[i].lo, simple[i].hi, sig, buf, n);
 	}
-	units_dim_str(d, u, sizeof u);
+	hb_units_dim_str(d, u, sizeof u);
 	snprintf(buf, n, "%.*g %s", sig, value, u);
 	return buf;
 }
 
 char *
-units_format_exact(double value, struct unit_dim d, char *buf, size_t n)
+hb_units_format_exact(double value, struct hb_unit_dim d, char *buf, size_t n)
 {
 	char u[64];
 	double back;
 
 	for (int sig = 6; sig <= 17; sig++) { /* %g of 6 digits and more: no "2e+01" */
-		units_format(value, d, sig, buf, n);
-		if (units_parse(buf, units_resolve(d, 0, 0), &back, NULL, 0) == 0 &&
+		hb_units_format(value, d, sig, buf, n);
+		if (hb_units_parse(buf, hb_units_resolve(d, 0, 0), &back, NULL, 0) == 0 &&
 		    memcmp(&back, &value, sizeof back) == 0)
 			return buf;
 	}
-	units_dim_str(d, u, sizeof u);
+	hb_units_dim_str(d, u, sizeof u);
 	snprintf(buf, n, "%.17g%s%s", value, u[0] ? " " : "", u);
 	return buf;
 }
 
 double
-units_axis(double magnitude, const char *base, char *label, size_t n)
+hb_units_axis(double magnitude, const char *base, char *label, size_t n)
 {
 	double a = fabs(magnitude), f = 1;
 	const char *b = base;
@@ -570,7 +570,7 @@ units_axis(double magnitude, const char *base, char *label, size_t n)
 			hl = sizeof head - 1;
 		memcpy(head, base, hl);
 		head[hl] = '\0';
-		sc = units_axis(magnitude, head, label, n);
+		sc = hb_units_axis(magnitude, head, label, n);
 		if (strlen(label) + strlen(base + hl) < n)
 			strcat(label, base + hl);
 		return sc;
@@ -591,7 +591,7 @@ units_axis(double magnitude, const char *base, char *label, size_t n)
 }
 
 int
-units_in_range(double v, const struct unit_range *r)
+hb_units_in_range(double v, const struct hb_unit_range *r)
 {
 	if (isnan(v))
 		return 0;
@@ -613,7 +613,7 @@ bound_str(double b, char *buf, size_t n)
 }
 
 char *
-units_range_str(const struct unit_range *r, const struct unit_dim *dim, char *buf, size_t n)
+hb_units_range_str(const struct hb_unit_range *r, const struct hb_unit_dim *dim, char *buf, size_t n)
 {
 	char l[32], h[32], u[64] = "";
 
@@ -633,7 +633,7 @@ units_range_str(const struct unit_range *r, const struct unit_dim *dim, char *bu
 		return buf;
 	}
 	if (dim != NULL)
-		units_dim_str(*dim, u, sizeof u);
+		hb_units_dim_str(*dim, u, sizeof u);
 	snprintf(buf, n, "%c%s, %s%c%s%s", r->lo_open ? '(' : '[', l, h, r->hi_open ? ')' : ']',
 	    u[0] ? " " : "", u);
 	return buf;

@@ -3,7 +3,7 @@
  * slice of computation -> playback -> one frame.
  *
  * The simulation computes ahead of the display: every frame calls
- * sim_advance(sim, 0, budget) with a budget of a few milliseconds, so the
+ * hb_sim_advance(sim, 0, budget) with a budget of a few milliseconds, so the
  * screen never freezes however long or stiff a run is.  Playback
  * (playback.c) moves the cursor in simulated time.  Keys are dispatched
  * through the action table (actions.c).
@@ -51,24 +51,24 @@ app_relayout(struct app *a)
 static void
 cursor_follow_want(struct app *a)
 {
-	const struct arc *arc = sim_arc(a->sim);
-	const struct arc_sample *l = arc_last(arc);
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
+	const struct hb_arc_sample *l = hb_arc_last(arc);
 
 	if (a->want_t < 0 || l == NULL)
 		return;
-	if (l->t >= a->want_t || sim_end(a->sim) != SIM_RUNNING) {
+	if (l->t >= a->want_t || hb_sim_end(a->sim) != HB_SIM_RUNNING) {
 		/* the sample nearest to that time */
-		size_t i = arc_find_t(arc, a->want_t);
-		if (i + 1 < arc_len(arc)
-		    && fabs(arc_at(arc, i + 1)->t - a->want_t) < fabs(arc_at(arc, i)->t - a->want_t))
+		size_t i = hb_arc_find_t(arc, a->want_t);
+		if (i + 1 < hb_arc_len(arc)
+		    && fabs(hb_arc_at(arc, i + 1)->t - a->want_t) < fabs(hb_arc_at(arc, i)->t - a->want_t))
 			i++;
 		a->cursor = i;
-		a->tcur = arc_at(arc, i)->t;
+		a->tcur = hb_arc_at(arc, i)->t;
 		a->want_t = -1;
 		if (coll_at_cursor(a) >= 0)
 			a->table_sel = coll_at_cursor(a);
 	} else {
-		a->cursor = arc_len(arc) - 1;
+		a->cursor = hb_arc_len(arc) - 1;
 		a->tcur = a->want_t;
 	}
 }
@@ -83,11 +83,11 @@ app_tick(struct app *a)
 	last = t;
 	if (dt > 0.25)
 		dt = 0.25;
-	if (sim_end(a->sim) == SIM_RUNNING) {
-		rc = sim_advance(a->sim, 0, a->budget);
+	if (hb_sim_end(a->sim) == HB_SIM_RUNNING) {
+		rc = hb_sim_advance(a->sim, 0, a->budget);
 		if (rc != HB_OK && rc != HB_EDONE) {
-			app_msg(a, 1, "run failed: %s (everything before is kept)", sim_errmsg(a->sim));
-		} else if (sim_end(a->sim) != SIM_RUNNING && sim_stats(a->sim)->stiff) {
+			app_msg(a, 1, "run failed: %s (everything before is kept)", hb_sim_errmsg(a->sim));
+		} else if (hb_sim_end(a->sim) != HB_SIM_RUNNING && hb_sim_stats(a->sim)->stiff) {
 			char note[160];
 
 			app_msg(a, 0, "run computed%s", stiff_note(a, note, sizeof note));
@@ -95,8 +95,8 @@ app_tick(struct app *a)
 		busy = 1;
 	}
 	for (int i = 0; i < a->npins; i++)
-		if (sim_end(a->pin[i].sim) == SIM_RUNNING) {
-			sim_advance(a->pin[i].sim, 0, a->budget / 4);
+		if (hb_sim_end(a->pin[i].sim) == HB_SIM_RUNNING) {
+			hb_sim_advance(a->pin[i].sim, 0, a->budget / 4);
 			busy = 1;
 		}
 	if (fitov_tick(a))
@@ -162,7 +162,7 @@ int
 app_run(const struct app_options *o, char *msg, size_t n)
 {
 	struct app *a;
-	struct sim *s;
+	struct hb_sim *s;
 	char path[512];
 	int status;
 
@@ -178,12 +178,12 @@ app_run(const struct app_options *o, char *msg, size_t n)
 		         "terminal there, or --batch PRESET for a report, or --script FILE to play keys "
 		         "without a terminal",
 		         !isatty(STDIN_FILENO) ? "input" : "output");
-		sim_free(s);
+		hb_sim_free(s);
 		return 2;
 	}
 	a = calloc(1, sizeof *a);
 	if (a == NULL) {
-		sim_free(s);
+		hb_sim_free(s);
 		snprintf(msg, n, "out of memory");
 		return 1;
 	}
@@ -200,7 +200,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 		status = script_run(a, o->script, msg, n);
 	} else {
 		if (term_begin(msg, n) != 0) { /* an unknown TERM is bad input */
-			sim_free(a->sim);
+			hb_sim_free(a->sim);
 			free(a);
 			return 2;
 		}
@@ -208,7 +208,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 		a->colour = term_colour();
 		term_mouse(1);
 		app_relayout(a);
-		app_msg(a, 0, "%s: %s   (? or F1 for help)", a->preset, sim_scene(a->sim)->name);
+		app_msg(a, 0, "%s: %s   (? or F1 for help)", a->preset, hb_sim_scene(a->sim)->name);
 		status = loop(a);
 		term_end();
 		if (term_signalled()) {
@@ -219,7 +219,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 	fitov_free(a);
 	sweep_view_free(a);
 	pins_clear(a);
-	sim_free(a->sim);
+	hb_sim_free(a->sim);
 	log_free(a);
 	free(a->presets);
 	free(a);

@@ -382,7 +382,7 @@ canvas_axis(double lo, double hi, int max_ticks, const char *base, struct axis *
 	}
 	if (base != NULL && base[0]) {
 		mag = fmax(fabs(ax->lo), fabs(ax->hi));
-		ax->scale = units_axis(mag > 0 ? mag : 1, base, ax->unit, sizeof ax->unit);
+		ax->scale = hb_units_axis(mag > 0 ? mag : 1, base, ax->unit, sizeof ax->unit);
 		if (!(ax->scale > 0) || !isfinite(ax->scale))
 			ax->scale = 1;
 	} else {

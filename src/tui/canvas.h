@@ -112,7 +112,7 @@ canvas_nice_step(double span, int parts);
  * Scales an axis for data in [lo, hi] with at most max_ticks ticks
  * (2 <= max_ticks <= AXIS_MAX_TICKS) spaced by a 1-2-5 step, the range
  * widened to whole steps.  base is the SI unit ("m", "N", "s"), whose prefix
- * is chosen by units_axis() from the largest magnitude; NULL for a plain
+ * is chosen by hb_units_axis() from the largest magnitude; NULL for a plain
  * number (scale 1, no unit).  A degenerate range (lo == hi) is widened
  * around the value; a non-finite one becomes [0, 1].  Returns 0.
  */

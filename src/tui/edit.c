@@ -5,7 +5,7 @@
  * An edit restarts the run from t = 0 with the new scene, the cursor
  * keeping its time: the whole consequence of the change is on screen at
  * once (runs take milliseconds).  "Branch here" (b) arms the next edit to
- * continue from the cursor instead: the run is cut there (sim_seek) and
+ * continue from the cursor instead: the run is cut there (hb_sim_seek) and
  * goes on with the new values.  A run that contains such a branch records
  * it (a->branch_t, a->branch_j): its scene alone no longer reproduces it,
  * and an export says so.  The scene is validated first, so a refused edit
@@ -23,29 +23,29 @@
 
 /* Applies a changed scene: from t = 0 (the default), or at the cursor after b. */
 static void
-apply_scene(struct app *a, const struct scene *sc_in, const char *what)
+apply_scene(struct app *a, const struct hb_scene *sc_in, const char *what)
 {
-	struct scene sc = *sc_in;
+	struct hb_scene sc = *sc_in;
 	char emsg[512], tb[32];
 	int restarted = 0, rc, branch = a->branch_armed;
 
 	a->branch_armed = 0;
-	if (scene_validate(&sc, emsg, sizeof emsg) != HB_OK) {
+	if (hb_scene_validate(&sc, emsg, sizeof emsg) != HB_OK) {
 		app_msg(a, 1, "refused (old value kept): %s", emsg);
 		return;
 	}
 	cursor_clamp(a);
-	units_format(a->tcur, UNIT_TIME, 6, tb, sizeof tb);
+	hb_units_format(a->tcur, hb_unit_time, 6, tb, sizeof tb);
 	if (branch) {
 		size_t at = a->cursor;
-		const struct arc_sample *s = arc_len(sim_arc(a->sim)) ? arc_at(sim_arc(a->sim), at) : NULL;
+		const struct hb_arc_sample *s = hb_arc_len(hb_sim_arc(a->sim)) ? hb_arc_at(hb_sim_arc(a->sim), at) : NULL;
 		long j = s ? s->j : 0;
 
-		if (s != NULL && sim_seek(a->sim, at) != HB_OK) {
-			app_msg(a, 1, "cannot branch at the cursor: %s", sim_errmsg(a->sim));
+		if (s != NULL && hb_sim_seek(a->sim, at) != HB_OK) {
+			app_msg(a, 1, "cannot branch at the cursor: %s", hb_sim_errmsg(a->sim));
 			return;
 		}
-		rc = sim_set_scene(a->sim, &sc, &restarted, emsg, sizeof emsg);
+		rc = hb_sim_set_scene(a->sim, &sc, &restarted, emsg, sizeof emsg);
 		if (rc != HB_OK) {
 			app_msg(a, 1, "refused (old value kept): %s", emsg);
 			return;
@@ -66,9 +66,9 @@ apply_scene(struct app *a, const struct scene *sc_in, const char *what)
 			        what, tb, j);
 		}
 	} else {
-		rc = sim_set_scene(a->sim, &sc, &restarted, emsg, sizeof emsg);
-		if (rc == HB_OK && !restarted && sim_restart(a->sim) != HB_OK) {
-			app_msg(a, 1, "restart failed: %s", sim_errmsg(a->sim));
+		rc = hb_sim_set_scene(a->sim, &sc, &restarted, emsg, sizeof emsg);
+		if (rc == HB_OK && !restarted && hb_sim_restart(a->sim) != HB_OK) {
+			app_msg(a, 1, "restart failed: %s", hb_sim_errmsg(a->sim));
 			return;
 		}
 		if (rc != HB_OK) {
@@ -92,14 +92,14 @@ apply_scene(struct app *a, const struct scene *sc_in, const char *what)
 void
 edit_value(struct app *a, const char *key, const char *text)
 {
-	struct scene sc = *sim_scene(a->sim);
-	struct scene_error err;
+	struct hb_scene sc = *hb_sim_scene(a->sim);
+	struct hb_scene_error err;
 	char emsg[512], what[160];
 
 	/* The error names the key and what is accepted (scene_error). */
-	if (scene_set_text(&sc, key, text, &err) != HB_OK) {
+	if (hb_scene_set_text(&sc, key, text, &err) != HB_OK) {
 		a->branch_armed = 0;
-		app_msg(a, 1, "refused (old value kept): %s", scene_error_str(&err, emsg, sizeof emsg));
+		app_msg(a, 1, "refused (old value kept): %s", hb_scene_error_str(&err, emsg, sizeof emsg));
 		return;
 	}
 	snprintf(what, sizeof what, "%s = %s", key, text);
@@ -109,10 +109,10 @@ edit_value(struct app *a, const char *key, const char *text)
 void
 app_set_law(struct app *a, const char *law)
 {
-	struct scene sc = *sim_scene(a->sim);
+	struct hb_scene sc = *hb_sim_scene(a->sim);
 	char emsg[512], what[96];
 
-	if (scene_set(&sc, "scene.law", law, emsg, sizeof emsg) != HB_OK) {
+	if (hb_scene_set(&sc, "scene.law", law, emsg, sizeof emsg) != HB_OK) {
 		a->branch_armed = 0;
 		app_msg(a, 1, "refused: %s", emsg);
 		return;
@@ -121,12 +121,12 @@ app_set_law(struct app *a, const char *law)
 	apply_scene(a, &sc, what);
 }
 
-/* The scene_key index of the selected panel row, or -1. */
+/* The hb_scene_key index of the selected panel row, or -1. */
 int
 param_key_index(const struct app *a)
 {
 	struct param_row rows[256];
-	int n = params_rows(sim_scene(a->sim), rows, 256);
+	int n = params_rows(hb_sim_scene(a->sim), rows, 256);
 
 	if (a->param_sel < 0 || a->param_sel >= n)
 		return -1;
@@ -141,26 +141,26 @@ param_key_index(const struct app *a)
 static void
 nudge(struct app *a, int dir)
 {
-	struct scene_keyinfo ki;
-	struct scene sc = *sim_scene(a->sim);
-	struct scene_error err;
+	struct hb_scene_keyinfo ki;
+	struct hb_scene sc = *hb_sim_scene(a->sim);
+	struct hb_scene_error err;
 	int k = param_key_index(a);
 	char text[96], emsg[512];
 	double v;
 
-	if (k < 0 || scene_key(sim_scene(a->sim), k, &ki) != 0)
+	if (k < 0 || hb_scene_key(hb_sim_scene(a->sim), k, &ki) != 0)
 		return;
 	if (ki.readonly) {
 		app_msg(a, 1, "%s is derived: computed from the bodies, never typed", ki.label);
 		return;
 	}
-	if (ki.kind == SCENE_KEY_CHOICE) {
+	if (ki.kind == HB_SCENE_KEY_CHOICE) {
 		if (ki.choice >= 0 && ki.nchoices >= 2)
 			edit_value(a, ki.key,
 			    ki.choices[((ki.choice + dir) % ki.nchoices + ki.nchoices) % ki.nchoices]);
 		return;
 	}
-	if (ki.kind == SCENE_KEY_TEXT || !isfinite(ki.number)) {
+	if (ki.kind == HB_SCENE_KEY_TEXT || !isfinite(ki.number)) {
 		app_msg(a, 1, "%s is not a number: press Enter to type a value", ki.label);
 		return;
 	}
@@ -169,17 +169,17 @@ nudge(struct app *a, int dir)
 		return;
 	}
 	v = dir > 0 ? ki.number * 1.1 : ki.number / 1.1;
-	if (ki.kind == SCENE_KEY_WHOLE)
+	if (ki.kind == HB_SCENE_KEY_WHOLE)
 		v = dir > 0 ? fmax(round(v), ki.number + 1) : fmin(round(v), ki.number - 1);
-	if (scene_set_number(&sc, ki.key, v, &err) != HB_OK) {
+	if (hb_scene_set_number(&sc, ki.key, v, &err) != HB_OK) {
 		a->branch_armed = 0;
-		app_msg(a, 1, "refused (old value kept): %s", scene_error_str(&err, emsg, sizeof emsg));
+		app_msg(a, 1, "refused (old value kept): %s", hb_scene_error_str(&err, emsg, sizeof emsg));
 		return;
 	}
-	if (ki.kind == SCENE_KEY_WHOLE)
+	if (ki.kind == HB_SCENE_KEY_WHOLE)
 		snprintf(text, sizeof text, "%.0f", v);
 	else
-		units_format(v, ki.dim, 6, text, sizeof text);
+		hb_units_format(v, ki.dim, 6, text, sizeof text);
 	snprintf(emsg, sizeof emsg, "%s = %s", ki.key, text);
 	apply_scene(a, &sc, emsg);
 }
@@ -187,10 +187,10 @@ nudge(struct app *a, int dir)
 static void
 prompt_edit_begin(struct app *a)
 {
-	struct scene_keyinfo ki;
+	struct hb_scene_keyinfo ki;
 	int k = param_key_index(a);
 
-	if (k < 0 || scene_key(sim_scene(a->sim), k, &ki) != 0)
+	if (k < 0 || hb_scene_key(hb_sim_scene(a->sim), k, &ki) != 0)
 		return;
 	if (ki.readonly) {
 		app_msg(a, 1, "%s is derived: computed from the bodies, never typed", ki.label);
@@ -225,7 +225,7 @@ act_branch(struct app *a)
 	char tb[32];
 
 	cursor_clamp(a);
-	units_format(a->tcur, UNIT_TIME, 6, tb, sizeof tb);
+	hb_units_format(a->tcur, hb_unit_time, 6, tb, sizeof tb);
 	a->branch_armed = !a->branch_armed;
 	if (a->branch_armed)
 		app_msg(a, 0, "branch here: the next edit (Enter, +/-, L) continues the run from t = %s instead of restarting it (b again: cancel)",
@@ -237,11 +237,11 @@ act_branch(struct app *a)
 void
 act_law(struct app *a)
 {
-	const struct law_type *const *l = law_list();
+	const struct hb_law_type *const *l = hb_law_list();
 
 	a->overlay = OV_LAW;
 	a->pick_sel = a->pick_top = 0;
 	for (int i = 0; l[i]; i++)
-		if (l[i] == sim_scene(a->sim)->law)
+		if (l[i] == hb_sim_scene(a->sim)->law)
 			a->pick_sel = i;
 }

@@ -63,7 +63,7 @@ mouse_event(struct app *a)
 		} else if (ev.y > a->L.params.y) {
 			/* rows are drawn from param_top, scrolled to keep param_sel in view */
 			struct param_row rows[256];
-			int n = params_rows(sim_scene(a->sim), rows, 256);
+			int n = params_rows(hb_sim_scene(a->sim), rows, 256);
 			int top = layout_scroll(a->param_top, a->param_sel, a->L.params.h - 1, n);
 			int row = top + ev.y - a->L.params.y - 1;
 			if (row >= 0 && row < n && rows[row].key >= 0)
@@ -78,19 +78,19 @@ mouse_event(struct app *a)
 			return;
 		}
 		double t;
-		if (plot_abscissa_at(a, ev.x, &t) == 0 && arc_len(sim_arc(a->sim)) > 0) {
-			const struct arc *arc = sim_arc(a->sim);
+		if (plot_abscissa_at(a, ev.x, &t) == 0 && hb_arc_len(hb_sim_arc(a->sim)) > 0) {
+			const struct hb_arc *arc = hb_sim_arc(a->sim);
 			a->playing = 0;
 			if (a->view == VIEW_J) {
 				/* the first sample of the interval at that j */
-				size_t i = 0, n = arc_len(arc);
-				while (i + 1 < n && (double)arc_at(arc, i)->j < t - 0.5)
+				size_t i = 0, n = hb_arc_len(arc);
+				while (i + 1 < n && (double)hb_arc_at(arc, i)->j < t - 0.5)
 					i++;
 				cursor_set(a, i);
 			} else {
 				if (t < 0)
 					t = 0;
-				cursor_set(a, arc_find_t(arc, t));
+				cursor_set(a, hb_arc_find_t(arc, t));
 			}
 			{
 				long i = coll_at_cursor(a);

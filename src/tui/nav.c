@@ -3,8 +3,8 @@
  * focused table: moving around a run without changing it.
  *
  * The cursor is a sample index into the current run's arc (always valid:
- * < arc_len); tcur is the time it stands for.  Every function here only
- * reads the run (sim_arc, sim_collision) and moves the cursor or a
+ * < hb_arc_len); tcur is the time it stands for.  Every function here only
+ * reads the run (hb_sim_arc, hb_sim_collision) and moves the cursor or a
  * selection.
  */
 #include <curses.h>
@@ -17,21 +17,21 @@
 long
 app_ncollisions(const struct app *a)
 {
-	struct collision live;
+	struct hb_collision live;
 
-	return (long)sim_ncollisions(a->sim) + (sim_contact_live(a->sim, &live) ? 1 : 0);
+	return (long)hb_sim_ncollisions(a->sim) + (hb_sim_contact_live(a->sim, &live) ? 1 : 0);
 }
 
-const struct collision *
-app_collision(const struct app *a, long i, struct collision *live)
+const struct hb_collision *
+app_collision(const struct app *a, long i, struct hb_collision *live)
 {
-	size_t nc = sim_ncollisions(a->sim);
+	size_t nc = hb_sim_ncollisions(a->sim);
 
 	if (i < 0)
 		return NULL;
 	if ((size_t)i < nc)
-		return sim_collision(a->sim, (size_t)i);
-	if ((size_t)i == nc && sim_contact_live(a->sim, live))
+		return hb_sim_collision(a->sim, (size_t)i);
+	if ((size_t)i == nc && hb_sim_contact_live(a->sim, live))
 		return live;
 	return NULL;
 }
@@ -39,8 +39,8 @@ app_collision(const struct app *a, long i, struct collision *live)
 void
 cursor_set(struct app *a, size_t i)
 {
-	const struct arc *arc = sim_arc(a->sim);
-	size_t n = arc_len(arc);
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
+	size_t n = hb_arc_len(arc);
 
 	if (n == 0) {
 		a->cursor = 0;
@@ -50,13 +50,13 @@ cursor_set(struct app *a, size_t i)
 	if (i >= n)
 		i = n - 1;
 	a->cursor = i;
-	a->tcur = arc_at(arc, i)->t;
+	a->tcur = hb_arc_at(arc, i)->t;
 }
 
 void
 cursor_clamp(struct app *a)
 {
-	size_t n = arc_len(sim_arc(a->sim));
+	size_t n = hb_arc_len(hb_sim_arc(a->sim));
 
 	if (n == 0)
 		a->cursor = 0;
@@ -67,17 +67,17 @@ cursor_clamp(struct app *a)
 long
 coll_at_cursor(const struct app *a)
 {
-	const struct arc *arc = sim_arc(a->sim);
-	const struct arc_sample *s;
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
+	const struct hb_arc_sample *s;
 
-	if (arc_len(arc) == 0)
+	if (hb_arc_len(arc) == 0)
 		return -1;
-	s = arc_at(arc, a->cursor);
+	s = hb_arc_at(arc, a->cursor);
 	if (!s->q)
 		return -1;
 	for (long i = 0; i < app_ncollisions(a); i++) {
-		struct collision live;
-		const struct collision *c = app_collision(a, i, &live);
+		struct hb_collision live;
+		const struct hb_collision *c = app_collision(a, i, &live);
 		if (c && c->j == s->j)
 			return i;
 	}
@@ -87,12 +87,12 @@ coll_at_cursor(const struct app *a)
 void
 cursor_to_collision(struct app *a, long i)
 {
-	struct collision live;
-	const struct collision *c = app_collision(a, i, &live);
+	struct hb_collision live;
+	const struct hb_collision *c = app_collision(a, i, &live);
 
 	if (c == NULL)
 		return;
-	cursor_set(a, arc_find(sim_arc(a->sim), c->te, c->j));
+	cursor_set(a, hb_arc_find(hb_sim_arc(a->sim), c->te, c->j));
 	a->table_sel = i;
 }
 
@@ -109,23 +109,23 @@ follow(struct app *a)
 static void
 jump_move(struct app *a, int dir)
 {
-	const struct arc *arc = sim_arc(a->sim);
-	size_t k, nk = arc_nintervals(arc);
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
+	size_t k, nk = hb_arc_nintervals(arc);
 
 	a->playing = 0;
-	if (arc_len(arc) == 0 || nk == 0)
+	if (hb_arc_len(arc) == 0 || nk == 0)
 		return;
-	k = arc_interval_of(arc, a->cursor);
+	k = hb_arc_interval_of(arc, a->cursor);
 	if (dir > 0) {
 		if (k + 1 < nk)
-			cursor_set(a, arc_interval_at(arc, k + 1)->first);
+			cursor_set(a, hb_arc_interval_at(arc, k + 1)->first);
 		else
 			app_msg(a, 0, "no later jump (yet)");
 	} else {
-		if (a->cursor > arc_interval_at(arc, k)->first && k > 0)
-			cursor_set(a, arc_interval_at(arc, k)->first);
+		if (a->cursor > hb_arc_interval_at(arc, k)->first && k > 0)
+			cursor_set(a, hb_arc_interval_at(arc, k)->first);
 		else if (k > 0)
-			cursor_set(a, arc_interval_at(arc, k - 1)->first);
+			cursor_set(a, hb_arc_interval_at(arc, k - 1)->first);
 		else {
 			cursor_set(a, 0);
 			app_msg(a, 0, "no earlier jump");
@@ -137,19 +137,19 @@ jump_move(struct app *a, int dir)
 static void
 coll_move(struct app *a, int dir)
 {
-	const struct arc *arc = sim_arc(a->sim);
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
 	long nc = app_ncollisions(a), i, best = -1;
-	const struct arc_sample *s;
+	const struct hb_arc_sample *s;
 	size_t first;
 
 	a->playing = 0;
-	if (arc_len(arc) == 0)
+	if (hb_arc_len(arc) == 0)
 		return;
-	s = arc_at(arc, a->cursor);
-	first = arc_interval_at(arc, arc_interval_of(arc, a->cursor))->first;
+	s = hb_arc_at(arc, a->cursor);
+	first = hb_arc_interval_at(arc, hb_arc_interval_of(arc, a->cursor))->first;
 	for (i = 0; i < nc; i++) {
-		struct collision live;
-		const struct collision *c = app_collision(a, i, &live);
+		struct hb_collision live;
+		const struct hb_collision *c = app_collision(a, i, &live);
 		if (c == NULL)
 			continue;
 		if (dir > 0 && c->j > s->j) {
@@ -169,35 +169,35 @@ coll_move(struct app *a, int dir)
 double
 view_span(const struct app *a)
 {
-	const struct arc_sample *l = arc_last(sim_arc(a->sim));
-	double T = sim_scene(a->sim)->run.T;
+	const struct hb_arc_sample *l = hb_arc_last(hb_sim_arc(a->sim));
+	double T = hb_sim_scene(a->sim)->run.T;
 
 	if (a->view == VIEW_FOLLOW)
 		return T / 10;
 	if (a->view == VIEW_ZOOM) {
-		struct collision live;
-		const struct collision *c = app_collision(a, a->zoom_i, &live);
+		struct hb_collision live;
+		const struct hb_collision *c = app_collision(a, a->zoom_i, &live);
 		if (c)
 			return 1.5 * fmax(c->ts - c->te, 1e-9);
 	}
-	return l && sim_end(a->sim) != SIM_RUNNING ? l->t : T;
+	return l && hb_sim_end(a->sim) != HB_SIM_RUNNING ? l->t : T;
 }
 
 static void
 scrub(struct app *a, int dir)
 {
-	const struct arc *arc = sim_arc(a->sim);
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
 	double d = view_span(a) / 100;
 
-	if (arc_len(arc) == 0)
+	if (hb_arc_len(arc) == 0)
 		return;
 	a->playing = 0;
 	a->tcur += dir * d;
 	if (a->tcur < 0)
 		a->tcur = 0;
-	if (a->tcur > arc_last(arc)->t)
-		a->tcur = arc_last(arc)->t;
-	a->cursor = arc_find_t(arc, a->tcur);
+	if (a->tcur > hb_arc_last(arc)->t)
+		a->tcur = hb_arc_last(arc)->t;
+	a->cursor = hb_arc_find_t(arc, a->tcur);
 	follow(a);
 }
 
@@ -240,7 +240,7 @@ sel_move(struct app *a, long d)
 			a->table_sel = 0;
 	} else {
 		struct param_row rows[256];
-		int n = params_rows(sim_scene(a->sim), rows, 256), s = a->param_sel;
+		int n = params_rows(hb_sim_scene(a->sim), rows, 256), s = a->param_sel;
 		int step = d > 0 ? 1 : -1;
 		for (long k = 0; k < (d > 0 ? d : -d); k++) {
 			int t = s + step;
@@ -305,12 +305,12 @@ void
 search_do(struct app *a, const char *text, int final)
 {
 	struct param_row rows[256];
-	const struct scene *sc = sim_scene(a->sim);
+	const struct hb_scene *sc = hb_sim_scene(a->sim);
 	int n = params_rows(sc, rows, 256);
 
 	for (int i = 0; i < n; i++) {
-		struct scene_keyinfo ki;
-		if (rows[i].key < 0 || scene_key(sc, rows[i].key, &ki) != 0)
+		struct hb_scene_keyinfo ki;
+		if (rows[i].key < 0 || hb_scene_key(sc, rows[i].key, &ki) != 0)
 			continue;
 		if (contains(ki.key, text) || contains(ki.label, text)) {
 			a->param_sel = i;
@@ -342,7 +342,7 @@ static void
 section_move(struct app *a, int dir)
 {
 	struct param_row rows[256];
-	int n = params_rows(sim_scene(a->sim), rows, 256), i = a->param_sel, head = -1;
+	int n = params_rows(hb_sim_scene(a->sim), rows, 256), i = a->param_sel, head = -1;
 
 	/* the heading of the current section */
 	for (int k = i; k >= 0; k--)

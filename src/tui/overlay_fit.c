@@ -5,7 +5,7 @@
  * D (or --data FILE) opens a data file of `hybounce fit` (fit.h): a
  * bouncing sequence (t_e) or separate drops (v_i, e, x_c_r, t_d).  The
  * data's observables are simulated for the current scene whenever it
- * changes (fit_simulate), and shown
+ * changes (hb_fit_simulate), and shown
  *  - on the x plot: each measured impact as 'o' on the axis x = 0, the
  *    clocks aligned at the run's first collision (sequences);
  *  - in the collisions table: the measured t_e of each collision beside
@@ -13,7 +13,7 @@
  *  - in a box (M): every data point, measured against simulated now, with
  *    the difference, for both kinds of data.
  * F asks for the free keys and runs the fit one trust-region iteration per
- * frame (fit_new / fit_iterate), with a progress line; F again stops it.
+ * frame (hb_fit_new / hb_fit_iterate), with a progress line; F again stops it.
  * When it stops, the run before the fit is pinned (when a pin is free) and
  * the current run takes the fitted values, so measured, start and fit are
  * drawn together.
@@ -32,19 +32,19 @@
 #include "units.h"
 
 struct fitov {
-	struct fit_data d;
+	struct hb_fit_data d;
 	int loaded;
 	char path[512];
 	size_t np;                 /* data points */
 	double *meas, *sim;        /* measured, simulated for `for_scene` (NAN: not computed) */
 	int *row, *obs;
-	struct scene for_scene;    /* the scene sim[] was computed for */
+	struct hb_scene for_scene;    /* the scene sim[] was computed for */
 	int sim_valid;
 	char sim_err[256];         /* why sim[] is missing */
-	struct fit *fit;           /* a fit in progress, or NULL */
+	struct hb_fit *fit;           /* a fit in progress, or NULL */
 	char keys_text[256];       /* the free keys as typed */
 	char keys_buf[256];
-	const char *keys[FIT_MAX_FREE];
+	const char *keys[HB_FIT_MAX_FREE];
 	int nkeys, iter;
 	double cost, cost0;
 	long runs;
@@ -83,19 +83,19 @@ fitov_free(struct app *a)
 
 	if (f == NULL)
 		return;
-	fit_free(f->fit);
+	hb_fit_free(f->fit);
 	points_free(f);
-	fit_data_free(&f->d);
+	hb_fit_data_free(&f->d);
 	free(f);
 	a->fitov = NULL;
 }
 
-/* The measured value of each point, in fit_simulate's order (fit.h). */
+/* The measured value of each point, in hb_fit_simulate's order (fit.h). */
 static int
 points_make(struct fitov *f)
 {
-	size_t n = fit_npoints(&f->d), k = 0;
-	const struct fit_data *d = &f->d;
+	size_t n = hb_fit_npoints(&f->d), k = 0;
+	const struct hb_fit_data *d = &f->d;
 
 	f->meas = calloc(n ? n : 1, sizeof *f->meas);
 	f->sim = calloc(n ? n : 1, sizeof *f->sim);
@@ -103,14 +103,14 @@ points_make(struct fitov *f)
 	f->obs = calloc(n ? n : 1, sizeof *f->obs);
 	if (!f->meas || !f->sim || !f->row || !f->obs)
 		return -1;
-	if (d->kind == FIT_SEQUENCE) {
+	if (d->kind == HB_FIT_SEQUENCE) {
 		for (size_t i = 1; i < d->n && k < n; i++, k++) {
-			f->meas[k] = d->col[FIT_OBS_TE][i] - d->col[FIT_OBS_TE][0];
+			f->meas[k] = d->col[HB_FIT_OBS_TE][i] - d->col[HB_FIT_OBS_TE][0];
 			f->row[k] = (int)i;
-			f->obs[k] = FIT_OBS_TE;
+			f->obs[k] = HB_FIT_OBS_TE;
 		}
 	} else {
-		for (int ob = FIT_OBS_E; ob < FIT_OBS_COUNT; ob++)
+		for (int ob = HB_FIT_OBS_E; ob < HB_FIT_OBS_COUNT; ob++)
 			for (size_t i = 0; d->col[ob] != NULL && i < d->n && k < n; i++, k++) {
 				f->meas[k] = d->col[ob][i];
 				f->row[k] = (int)i;
@@ -125,16 +125,16 @@ int
 fitov_load(struct app *a, const char *path, char *msg, size_t n)
 {
 	struct fitov *f = ov_get(a);
-	struct fit_data d;
+	struct hb_fit_data d;
 
 	if (f->fit != NULL) {
 		snprintf(msg, n, "a fit is running (F stops it); the data stay %s", f->path);
 		return -1;
 	}
-	if (fit_data_load(path, &d, msg, n) != HB_OK)
+	if (hb_fit_data_load(path, &d, msg, n) != HB_OK)
 		return -1;
 	points_free(f);
-	fit_data_free(&f->d);
+	hb_fit_data_free(&f->d);
 	f->d = d;
 	f->loaded = 1;
 	f->top = 0;
@@ -157,17 +157,17 @@ fmt_obs(int ob, double v, char *buf, size_t n)
 {
 	if (!isfinite(v))
 		snprintf(buf, n, "-");
-	else if (ob == FIT_OBS_E)
+	else if (ob == HB_FIT_OBS_E)
 		snprintf(buf, n, "%.4f", v);
 	else
-		units_format(v, ob == FIT_OBS_XCR ? UNIT_LENGTH : UNIT_TIME, 4, buf, n);
+		hb_units_format(v, ob == HB_FIT_OBS_XCR ? hb_unit_length : hb_unit_time, 4, buf, n);
 	return buf;
 }
 
 static void
 describe(const struct fitov *f, char *buf, size_t n)
 {
-	if (f->d.kind == FIT_SEQUENCE)
+	if (f->d.kind == HB_FIT_SEQUENCE)
 		snprintf(buf, n, "%.200s: one bouncing sequence, %zu impacts", f->path, f->d.n);
 	else
 		snprintf(buf, n, "%.200s: %zu separate drops, %zu points", f->path, f->d.n, f->np);
@@ -204,21 +204,21 @@ act_data(struct app *a)
  * numeric key.
  */
 static void
-default_keys(const struct scene *sc, char *buf, size_t n)
+default_keys(const struct hb_scene *sc, char *buf, size_t n)
 {
 	static const char *const pref[] = { "law.c", "law.alpha" };
-	int nk = scene_nkeys(sc);
+	int nk = hb_scene_nkeys(sc);
 
 	buf[0] = 0;
 	for (size_t k = 0; k < sizeof pref / sizeof pref[0]; k++) {
-		struct scene_keyinfo ki;
+		struct hb_scene_keyinfo ki;
 		size_t l = strlen(buf);
-		if (scene_get(sc, pref[k], &ki, NULL) == 0 && !ki.readonly && ki.kind == SCENE_KEY_NUMBER)
+		if (hb_scene_get(sc, pref[k], &ki, NULL) == 0 && !ki.readonly && ki.kind == HB_SCENE_KEY_NUMBER)
 			snprintf(buf + l, n - l, "%s%s", l ? "," : "", pref[k]);
 	}
 	for (int i = 0; i < nk && buf[0] == 0; i++) {
-		struct scene_keyinfo ki;
-		if (scene_key(sc, i, &ki) == 0 && !ki.readonly && ki.kind == SCENE_KEY_NUMBER
+		struct hb_scene_keyinfo ki;
+		if (hb_scene_key(sc, i, &ki) == 0 && !ki.readonly && ki.kind == HB_SCENE_KEY_NUMBER
 		    && strcmp(ki.section, "law") == 0)
 			snprintf(buf, n, "%s", ki.key);
 	}
@@ -251,26 +251,26 @@ static void
 fit_finish(struct app *a, int stopped)
 {
 	struct fitov *f = a->fitov;
-	struct fit_result r;
+	struct hb_fit_result r;
 	char emsg[512], line[512], v[48], s[48];
 	int restarted = 0, st;
 	size_t l;
 
 	memset(&r, 0, sizeof r);
-	st = fit_result_get(f->fit, &r, emsg, sizeof emsg);
-	fit_free(f->fit);
+	st = hb_fit_result_get(f->fit, &r, emsg, sizeof emsg);
+	hb_fit_free(f->fit);
 	f->fit = NULL;
 	if (st != HB_OK) {
 		app_msg(a, 1, "fit failed: %s", emsg);
-		fit_result_free(&r);
+		hb_fit_result_free(&r);
 		return;
 	}
 	if (a->npins < APP_MAX_PINS)
 		act_pin(a); /* the start stays drawn, pinned */
-	if (sim_set_scene(a->sim, &r.fitted, &restarted, emsg, sizeof emsg) != HB_OK
-	    || (!restarted && sim_restart(a->sim) != HB_OK)) {
+	if (hb_sim_set_scene(a->sim, &r.fitted, &restarted, emsg, sizeof emsg) != HB_OK
+	    || (!restarted && hb_sim_restart(a->sim) != HB_OK)) {
 		app_msg(a, 1, "fit done but its scene was refused: %s", emsg);
-		fit_result_free(&r);
+		hb_fit_result_free(&r);
 		return;
 	}
 	app_label_runs(a);
@@ -279,16 +279,16 @@ fit_finish(struct app *a, int stopped)
 	cursor_set(a, 0);
 	a->playing = 1;
 	snprintf(line, sizeof line, "fit %s after %d iterations, %ld runs, cost %.4g -> %.4g:",
-	         stopped ? "stopped by F" : fit_reason_str(r.reason), r.iter, r.runs, r.cost0,
+	         stopped ? "stopped by F" : hb_fit_reason_str(r.reason), r.iter, r.runs, r.cost0,
 	         r.cost);
 	for (int k = 0; k < r.np; k++) {
-		struct scene_keyinfo ki;
-		struct unit_dim dim = UNIT_NONE;
-		if (scene_get(&r.fitted, r.key[k], &ki, NULL) == 0 && ki.kind == SCENE_KEY_NUMBER)
+		struct hb_scene_keyinfo ki;
+		struct hb_unit_dim dim = hb_unit_none;
+		if (hb_scene_get(&r.fitted, r.key[k], &ki, NULL) == 0 && ki.kind == HB_SCENE_KEY_NUMBER)
 			dim = ki.dim;
-		units_format(r.value[k], dim, 5, v, sizeof v);
+		hb_units_format(r.value[k], dim, 5, v, sizeof v);
 		if (isfinite(r.se[k]))
-			units_format(r.se[k], dim, 2, s, sizeof s);
+			hb_units_format(r.se[k], dim, 2, s, sizeof s);
 		else
 			snprintf(s, sizeof s, "? (not identifiable)");
 		l = strlen(line);
@@ -300,24 +300,24 @@ fit_finish(struct app *a, int stopped)
 		snprintf(line + l, sizeof line - l, " (%s not identifiable from these data)", r.unident);
 	}
 	snprintf(f->last, sizeof f->last, "last fit: %s, cost %.4g -> %.4g",
-	         stopped ? "stopped by F" : fit_reason_str(r.reason), r.cost0, r.cost);
-	app_msg(a, r.reason == FIT_FAILED, "%s", line);
-	fit_result_free(&r);
+	         stopped ? "stopped by F" : hb_fit_reason_str(r.reason), r.cost0, r.cost);
+	app_msg(a, r.reason == HB_FIT_FAILED, "%s", line);
+	hb_fit_result_free(&r);
 }
 
 static void
 fit_start(struct app *a, const char *text)
 {
 	struct fitov *f = a->fitov;
-	struct fit_options o;
+	struct hb_fit_options o;
 	char emsg[512], *p, *tok;
 
 	snprintf(f->keys_text, sizeof f->keys_text, "%s", text);
 	snprintf(f->keys_buf, sizeof f->keys_buf, "%s", text);
 	f->nkeys = 0;
 	for (tok = strtok_r(f->keys_buf, ", ", &p); tok; tok = strtok_r(NULL, ", ", &p)) {
-		if (f->nkeys == FIT_MAX_FREE) {
-			app_msg(a, 1, "fit: at most %d free keys", FIT_MAX_FREE);
+		if (f->nkeys == HB_FIT_MAX_FREE) {
+			app_msg(a, 1, "fit: at most %d free keys", HB_FIT_MAX_FREE);
 			return;
 		}
 		f->keys[f->nkeys++] = tok;
@@ -334,19 +334,19 @@ fit_start(struct app *a, const char *text)
 	f->iter = 0;
 	f->runs = 0;
 	f->cost = f->cost0 = NAN;
-	f->fit = fit_new(sim_scene(a->sim), &f->d, &o, emsg, sizeof emsg);
+	f->fit = hb_fit_new(hb_sim_scene(a->sim), &f->d, &o, emsg, sizeof emsg);
 	if (f->fit == NULL) {
 		app_msg(a, 1, "fit not started: %s", emsg);
 		return;
 	}
 	{
-		struct fit_result r;
+		struct hb_fit_result r;
 		memset(&r, 0, sizeof r);
-		if (fit_result_get(f->fit, &r, emsg, sizeof emsg) == HB_OK) {
+		if (hb_fit_result_get(f->fit, &r, emsg, sizeof emsg) == HB_OK) {
 			f->cost = f->cost0 = r.cost0;
 			f->runs = r.runs;
 		}
-		fit_result_free(&r);
+		hb_fit_result_free(&r);
 	}
 	app_msg(a, 0, "fit %s to %s started", f->keys_text, f->path);
 	progress_msg(a);
@@ -369,7 +369,7 @@ act_fit(struct app *a)
 	if (f->keys_text[0])
 		snprintf(def, sizeof def, "%s", f->keys_text);
 	else
-		default_keys(sim_scene(a->sim), def, sizeof def);
+		default_keys(hb_sim_scene(a->sim), def, sizeof def);
 	prompt_open(a, PROMPT_FIT, def, "fit to %.40s: free keys (KEY,KEY...; Enter starts)",
 	            f->path);
 }
@@ -387,25 +387,25 @@ int
 fitov_tick(struct app *a)
 {
 	struct fitov *f = a->fitov;
-	const struct scene *sc;
+	const struct hb_scene *sc;
 	char emsg[256];
 
 	if (f == NULL || !f->loaded)
 		return 0;
 	if (f->fit != NULL) {
-		if (fit_iterate(f->fit))
+		if (hb_fit_iterate(f->fit))
 			fit_finish(a, 0);
 		else
 			progress_msg(a);
 		return 1;
 	}
-	sc = sim_scene(a->sim);
+	sc = hb_sim_scene(a->sim);
 	if (f->sim_valid && memcmp(&f->for_scene, sc, sizeof *sc) == 0)
 		return 0;
 	f->for_scene = *sc;
 	f->sim_valid = 1;
 	f->sim_err[0] = 0;
-	if (fit_simulate(sc, &f->d, 0, f->sim, emsg, sizeof emsg) != HB_OK) {
+	if (hb_fit_simulate(sc, &f->d, 0, f->sim, emsg, sizeof emsg) != HB_OK) {
 		snprintf(f->sim_err, sizeof f->sim_err, "%s", emsg);
 		for (size_t k = 0; k < f->np; k++)
 			if (!isfinite(f->sim[k]))
@@ -420,8 +420,8 @@ fitov_tick(struct app *a)
 static double
 first_te(const struct app *a)
 {
-	struct collision live;
-	const struct collision *c = app_ncollisions(a) > 0 ? app_collision(a, 0, &live) : NULL;
+	struct hb_collision live;
+	const struct hb_collision *c = app_ncollisions(a) > 0 ? app_collision(a, 0, &live) : NULL;
 
 	return c != NULL ? c->te : -1;
 }
@@ -433,7 +433,7 @@ fitov_plot_marks(const struct app *a, struct canvas *c, int q_is_x, double t0, d
 	double te0 = first_te(a);
 	int row;
 
-	if (f == NULL || !f->loaded || f->d.kind != FIT_SEQUENCE || !q_is_x || te0 < 0
+	if (f == NULL || !f->loaded || f->d.kind != HB_FIT_SEQUENCE || !q_is_x || te0 < 0
 	    || a->view == VIEW_J)
 		return;
 	row = (int)floor(canvas_pyf(c, 0) + 0.5);
@@ -443,7 +443,7 @@ fitov_plot_marks(const struct app *a, struct canvas *c, int q_is_x, double t0, d
 	if (row < 0)
 		row = 0;
 	for (size_t i = 0; i < f->d.n; i++) {
-		double t = te0 + f->d.col[FIT_OBS_TE][i] - f->d.col[FIT_OBS_TE][0];
+		double t = te0 + f->d.col[HB_FIT_OBS_TE][i] - f->d.col[HB_FIT_OBS_TE][0];
 		int col = t >= t0 && t <= t1 ? canvas_col(c, t) : -1;
 		if (col >= 0)
 			canvas_mark(c, col, row, 'o', 1);
@@ -457,10 +457,10 @@ fitov_table_note(const struct app *a, long i, char *line, size_t n)
 	double te0 = first_te(a), tm, te;
 	char b1[32], b2[32], note[80];
 	size_t l = strlen(line);
-	struct collision live;
-	const struct collision *c;
+	struct hb_collision live;
+	const struct hb_collision *c;
 
-	if (f == NULL || !f->loaded || f->d.kind != FIT_SEQUENCE)
+	if (f == NULL || !f->loaded || f->d.kind != HB_FIT_SEQUENCE)
 		return;
 	if (i < 0) {
 		snprintf(line + l, n - l, "  %-24s", "data t_e (sim - data)");
@@ -468,10 +468,10 @@ fitov_table_note(const struct app *a, long i, char *line, size_t n)
 	}
 	if (te0 < 0 || (size_t)i >= f->d.n || (c = app_collision(a, i, &live)) == NULL)
 		return;
-	tm = f->d.col[FIT_OBS_TE][i] - f->d.col[FIT_OBS_TE][0]; /* since the first impact */
+	tm = f->d.col[HB_FIT_OBS_TE][i] - f->d.col[HB_FIT_OBS_TE][0]; /* since the first impact */
 	te = c->te - te0;
-	units_format(te0 + tm, UNIT_TIME, 5, b1, sizeof b1);
-	units_format(te - tm, UNIT_TIME, 2, b2, sizeof b2);
+	hb_units_format(te0 + tm, hb_unit_time, 5, b1, sizeof b1);
+	hb_units_format(te - tm, hb_unit_time, 2, b2, sizeof b2);
 	snprintf(note, sizeof note, "%s (%s%s)", b1, te - tm >= 0 ? "+" : "", b2);
 	snprintf(line + l, n - l, "  %-24s", note);
 }
@@ -527,14 +527,14 @@ fitov_draw(const struct app *a)
 	else if (f->last[0])
 		tui_puts(y++, in.x, in.w, f->last, 0);
 	snprintf(line, sizeof line, "%5s %-6s %12s %12s %12s", "row", "obs",
-	         f->d.kind == FIT_SEQUENCE ? "data t-t0" : "data", "simulated", "sim - data");
+	         f->d.kind == HB_FIT_SEQUENCE ? "data t-t0" : "data", "simulated", "sim - data");
 	tui_puts(y++, in.x, in.w, line, A_UNDERLINE);
 	for (int k = f->top; k < (int)f->np && y < in.y + in.h - 1; k++) {
 		fmt_obs(f->obs[k], f->meas[k], m, sizeof m);
 		fmt_obs(f->obs[k], f->sim_valid ? f->sim[k] : NAN, s, sizeof s);
 		fmt_obs(f->obs[k], f->sim_valid ? f->sim[k] - f->meas[k] : NAN, dlt, sizeof dlt);
 		snprintf(line, sizeof line, "%5d %-6s %12s %12s %12s", f->row[k],
-		         fit_obs_name(f->obs[k]), m, s, dlt);
+		         hb_fit_obs_name(f->obs[k]), m, s, dlt);
 		tui_puts(y++, in.x, in.w, line, 0);
 	}
 	tui_puts(in.y + in.h - 1, in.x, in.w,

@@ -1,5 +1,5 @@
 /*
- * pane_params.c - the parameter panel: scene_key rows grouped by section
+ * pane_params.c - the parameter panel: hb_scene_key rows grouped by section
  * (bodies, derived, law, loads, initial, run) under headings; derived rows
  * are read-only (dim).  Drawing only, plus the pure row list.
  */
@@ -12,18 +12,18 @@
 
 /*
  * The panel's rows: a heading (key = -1) before each new section, then the
- * scene_key indices of that section in the engine's order.  Returns the
+ * hb_scene_key indices of that section in the engine's order.  Returns the
  * number of rows (at most max).
  */
 int
-params_rows(const struct scene *sc, struct param_row *rows, int max)
+params_rows(const struct hb_scene *sc, struct param_row *rows, int max)
 {
-	int n = 0, nk = scene_nkeys(sc);
+	int n = 0, nk = hb_scene_nkeys(sc);
 	char last[16] = "";
 
 	for (int i = 0; i < nk && n < max; i++) {
-		struct scene_keyinfo ki;
-		if (scene_key(sc, i, &ki) != 0)
+		struct hb_scene_keyinfo ki;
+		if (hb_scene_key(sc, i, &ki) != 0)
 			continue;
 		if (strcmp(ki.section, last) != 0) {
 			snprintf(last, sizeof last, "%s", ki.section);
@@ -43,7 +43,7 @@ void
 pane_params_draw(const struct app *a)
 {
 	const struct rect *r = &a->L.params;
-	const struct scene *sc = sim_scene(a->sim);
+	const struct hb_scene *sc = hb_sim_scene(a->sim);
 	struct param_row rows[256];
 	int n = params_rows(sc, rows, 256), top, i, h = r->h - 1;
 	int focused = a->focus == FOCUS_PARAMS, sel = a->param_sel;
@@ -53,8 +53,8 @@ pane_params_draw(const struct app *a)
 	if (r->h < 2)
 		return;
 	{
-		struct scene_keyinfo ks;
-		if (sel >= 0 && sel < n && rows[sel].key >= 0 && scene_key(sc, rows[sel].key, &ks) == 0)
+		struct hb_scene_keyinfo ks;
+		if (sel >= 0 && sel < n && rows[sel].key >= 0 && hb_scene_key(sc, rows[sel].key, &ks) == 0)
 			snprintf(head, sizeof head, "parameters %s %s: %s", focused ? "(Enter edits, +/- nudge)"
 			         : "(Tab to edit)", ks.key, ks.help);
 		else
@@ -69,8 +69,8 @@ pane_params_draw(const struct app *a)
 			tui_puts(y, r->x, r->w, line, A_BOLD);
 			continue;
 		}
-		struct scene_keyinfo ki;
-		if (scene_key(sc, rows[i].key, &ki) != 0)
+		struct hb_scene_keyinfo ki;
+		if (hb_scene_key(sc, rows[i].key, &ki) != 0)
 			continue;
 		snprintf(line, sizeof line, "  %-*.*s %-18s %s", lw, lw, ki.label, ki.value,
 		         r->w >= 70 ? ki.range : "");

@@ -26,7 +26,7 @@ static const char *qname[NQ] = { "x", "x_c", "F_c" };
 static const char *qbase[NQ] = { "m", "m", "N" };
 
 static double
-qval(const struct arc_sample *s, int q)
+qval(const struct hb_arc_sample *s, int q)
 {
 	switch (q) {
 	case Q_X: return s->x;
@@ -37,7 +37,7 @@ qval(const struct arc_sample *s, int q)
 
 /* The abscissa of a sample: t, or j in the (t, j) view. */
 static double
-absc(const struct app *a, const struct arc_sample *s)
+absc(const struct app *a, const struct hb_arc_sample *s)
 {
 	return a->view == VIEW_J ? (double)s->j : s->t;
 }
@@ -54,7 +54,7 @@ canvas_or_die(int w, int h, int braille)
 
 /* The runs to draw: pins first, then the current one (ink 1). */
 static int
-runs(const struct app *a, const struct sim **s, int *ink)
+runs(const struct app *a, const struct hb_sim **s, int *ink)
 {
 	int n = 0;
 
@@ -71,32 +71,32 @@ runs(const struct app *a, const struct sim **s, int *ink)
 static void
 view_range(const struct app *a, double *lo, double *hi)
 {
-	const struct sim *s[APP_MAX_PINS + 1];
+	const struct hb_sim *s[APP_MAX_PINS + 1];
 	int ink[APP_MAX_PINS + 1], n = runs(a, s, ink);
 	double end = 0;
-	const struct arc *arc = sim_arc(a->sim);
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
 
 	for (int k = 0; k < n; k++) {
-		const struct arc_sample *l = arc_last(sim_arc(s[k]));
+		const struct hb_arc_sample *l = hb_arc_last(hb_sim_arc(s[k]));
 		double e;
 		if (a->view == VIEW_J)
 			e = l ? (double)l->j : 0;
 		else
-			e = sim_end(s[k]) == SIM_RUNNING || l == NULL ? sim_scene(s[k])->run.T : l->t;
+			e = hb_sim_end(s[k]) == HB_SIM_RUNNING || l == NULL ? hb_sim_scene(s[k])->run.T : l->t;
 		if (e > end)
 			end = e;
 	}
 	*lo = 0;
 	*hi = end > 0 ? end : 1;
-	if (a->view == VIEW_FOLLOW && arc_len(arc) > 0) {
-		double w = *hi / 10, t = arc_at(arc, a->cursor)->t;
+	if (a->view == VIEW_FOLLOW && hb_arc_len(arc) > 0) {
+		double w = *hi / 10, t = hb_arc_at(arc, a->cursor)->t;
 		*lo = t - 0.7 * w;
 		if (*lo < 0)
 			*lo = 0;
 		*hi = *lo + w;
 	} else if (a->view == VIEW_ZOOM) {
-		struct collision live;
-		const struct collision *c = app_collision(a, a->zoom_i, &live);
+		struct hb_collision live;
+		const struct hb_collision *c = app_collision(a, a->zoom_i, &live);
 		if (c != NULL) {
 			double td = c->ts - c->te;
 			if (!(td > 0))
@@ -109,19 +109,19 @@ view_range(const struct app *a, double *lo, double *hi)
 
 /* Visits the samples of arc with abscissa in [lo, hi] (and one either side). */
 static void
-sample_span(const struct app *a, const struct arc *arc, double lo, double hi, size_t *i0, size_t *i1)
+sample_span(const struct app *a, const struct hb_arc *arc, double lo, double hi, size_t *i0, size_t *i1)
 {
-	size_t n = arc_len(arc), i;
+	size_t n = hb_arc_len(arc), i;
 
 	*i0 = 0;
 	*i1 = n;
 	if (a->view == VIEW_J || n == 0)
 		return;
-	*i0 = arc_find_t(arc, lo);
-	/* arc_find_t gives the last sample at lo of the greatest j: step back over a jump */
-	while (*i0 > 0 && arc_at(arc, *i0 - 1)->t >= lo)
+	*i0 = hb_arc_find_t(arc, lo);
+	/* hb_arc_find_t gives the last sample at lo of the greatest j: step back over a jump */
+	while (*i0 > 0 && hb_arc_at(arc, *i0 - 1)->t >= lo)
 		(*i0)--;
-	i = arc_find_t(arc, hi);
+	i = hb_arc_find_t(arc, hi);
 	*i1 = i + 2 < n ? i + 2 : n;
 }
 
@@ -219,22 +219,22 @@ legend(const struct app *a, int y, int x, int w, const char *title)
  * apart without colour.  In ASCII the curve is drawn with the glyph.
  */
 static void
-pin_marks(const struct app *a, struct canvas *c, const struct sim *const *s, const int *ink,
+pin_marks(const struct app *a, struct canvas *c, const struct hb_sim *const *s, const int *ink,
           int n, int q, double t0, double t1)
 {
 	if (!c->braille)
 		return;
 	for (int k = 0; k < n; k++) {
-		const struct arc *ak = sim_arc(s[k]);
-		if (ink[k] == 1 || arc_len(ak) == 0)
+		const struct hb_arc *ak = hb_sim_arc(s[k]);
+		if (ink[k] == 1 || hb_arc_len(ak) == 0)
 			continue;
 		for (int col = 2 + 3 * (ink[k] - 2); col < c->w; col += 10) {
 			double t = t0 + (t1 - t0) * (col + 0.5) / c->w;
-			const struct arc_sample *p;
+			const struct hb_arc_sample *p;
 			int row;
-			if (a->view == VIEW_J || t > arc_last(ak)->t)
+			if (a->view == VIEW_J || t > hb_arc_last(ak)->t)
 				break;
-			p = arc_at(ak, arc_find_t(ak, t));
+			p = hb_arc_at(ak, hb_arc_find_t(ak, t));
 			row = (int)floor(canvas_pyf(c, qval(p, q)) / 4);
 			if (row >= 0 && row < c->h)
 				canvas_mark(c, col, row, canvas_glyph(ink[k]), ink[k]);
@@ -247,7 +247,7 @@ static void
 draw_loop(const struct app *a)
 {
 	const struct rect *r = &a->L.plots;
-	const struct sim *s[APP_MAX_PINS + 1];
+	const struct hb_sim *s[APP_MAX_PINS + 1];
 	int ink[APP_MAX_PINS + 1], n = runs(a, s, ink), ch = r->h - 2, cw = r->w - LM;
 	double xlo = 0, xhi = 0, ylo = 0, yhi = 0;
 	struct canvas *c = NULL;
@@ -259,18 +259,18 @@ draw_loop(const struct app *a)
 		return;
 	for (int pass = 0; pass < 2; pass++) {
 		for (int k = 0; k < n; k++) {
-			struct collision live;
-			const struct collision *col;
-			const struct arc *arc = sim_arc(s[k]);
+			struct hb_collision live;
+			const struct hb_collision *col;
+			const struct hb_arc *arc = hb_sim_arc(s[k]);
 			if (s[k] == a->sim)
 				col = app_collision(a, a->zoom_i, &live);
 			else
-				col = a->zoom_i >= 0 && (size_t)a->zoom_i < sim_ncollisions(s[k])
-				      ? sim_collision(s[k], (size_t)a->zoom_i) : NULL;
-			if (col == NULL || arc_len(arc) == 0)
+				col = a->zoom_i >= 0 && (size_t)a->zoom_i < hb_sim_ncollisions(s[k])
+				      ? hb_sim_collision(s[k], (size_t)a->zoom_i) : NULL;
+			if (col == NULL || hb_arc_len(arc) == 0)
 				continue;
-			for (size_t i = arc_find(arc, col->te, col->j); i < arc_len(arc); i++) {
-				const struct arc_sample *p = arc_at(arc, i);
+			for (size_t i = hb_arc_find(arc, col->te, col->j); i < hb_arc_len(arc); i++) {
+				const struct hb_arc_sample *p = hb_arc_at(arc, i);
 				if (p->j != col->j)
 					break;
 				if (pass == 0) {
@@ -280,8 +280,8 @@ draw_loop(const struct app *a)
 					yhi = fmax(yhi, p->Fc);
 				} else if (c == NULL) {
 					break;
-				} else if (i > 0 && arc_at(arc, i - 1)->j == p->j) {
-					const struct arc_sample *q = arc_at(arc, i - 1);
+				} else if (i > 0 && hb_arc_at(arc, i - 1)->j == p->j) {
+					const struct hb_arc_sample *q = hb_arc_at(arc, i - 1);
 					canvas_line(c, q->xc, q->Fc, p->xc, p->Fc, ink[k]);
 				} else {
 					canvas_point(c, p->xc, p->Fc, ink[k]);
@@ -297,11 +297,11 @@ draw_loop(const struct app *a)
 	}
 	/* the cursor, when it lies in this collision */
 	{
-		const struct arc *arc = sim_arc(a->sim);
-		if (arc_len(arc) > 0) {
-			const struct arc_sample *p = arc_at(arc, a->cursor);
-			struct collision live;
-			const struct collision *col = app_collision(a, a->zoom_i, &live);
+		const struct hb_arc *arc = hb_sim_arc(a->sim);
+		if (hb_arc_len(arc) > 0) {
+			const struct hb_arc_sample *p = hb_arc_at(arc, a->cursor);
+			struct hb_collision live;
+			const struct hb_collision *col = app_collision(a, a->zoom_i, &live);
 			if (col && p->j == col->j) {
 				int cc = canvas_col(c, p->xc);
 				double py = floor(canvas_pyf(c, p->Fc) + 0.5);
@@ -323,15 +323,15 @@ draw_loop(const struct app *a)
 
 /* Widens [*lo, *hi] to the finite values of quantity q of the n runs in [t0, t1]. */
 static void
-value_range(const struct app *a, const struct sim *const *s, int n, int q, double t0, double t1,
+value_range(const struct app *a, const struct hb_sim *const *s, int n, int q, double t0, double t1,
             double *lo, double *hi)
 {
 	for (int k = 0; k < n; k++) {
-		const struct arc *ak = sim_arc(s[k]);
+		const struct hb_arc *ak = hb_sim_arc(s[k]);
 		size_t i, end;
 
 		for (sample_span(a, ak, t0, t1, &i, &end); i < end; i++) {
-			double xv = absc(a, arc_at(ak, i)), v = qval(arc_at(ak, i), q);
+			double xv = absc(a, hb_arc_at(ak, i)), v = qval(hb_arc_at(ak, i), q);
 
 			if (xv >= t0 && xv <= t1 && isfinite(v)) {
 				*lo = fmin(*lo, v);
@@ -345,11 +345,11 @@ void
 pane_plot_draw(const struct app *a)
 {
 	const struct rect *r = &a->L.plots;
-	const struct sim *s[APP_MAX_PINS + 1];
+	const struct hb_sim *s[APP_MAX_PINS + 1];
 	int ink[APP_MAX_PINS + 1], n, hs[NQ], cw = r->w - LM, y, curcol = -1;
 	double t0, t1;
 	char line[1024], title[128];
-	const struct arc *arc = sim_arc(a->sim);
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
 	static const char *vname[VIEW_COUNT] = { "whole run", "follow the cursor", "zoom",
 	                                         "loop", "against j" };
 
@@ -379,13 +379,13 @@ pane_plot_draw(const struct app *a)
 		c = canvas_or_die(cw, hs[q], a->braille);
 		canvas_range(c, t0, t1, ay.lo, ay.hi);
 		for (int k = 0; k < n; k++) {
-			const struct arc *ak = sim_arc(s[k]);
+			const struct hb_arc *ak = hb_sim_arc(s[k]);
 			size_t i0, i1;
 			sample_span(a, ak, t0, t1, &i0, &i1);
 			for (size_t i = i0; i < i1; i++) {
-				const struct arc_sample *p = arc_at(ak, i);
+				const struct hb_arc_sample *p = hb_arc_at(ak, i);
 				if (i > i0) {
-					const struct arc_sample *o = arc_at(ak, i - 1);
+					const struct hb_arc_sample *o = hb_arc_at(ak, i - 1);
 					if (a->view != VIEW_J || o->j == p->j) {
 						canvas_line(c, absc(a, o), qval(o, q), absc(a, p), qval(p, q), ink[k]);
 						continue;
@@ -396,8 +396,8 @@ pane_plot_draw(const struct app *a)
 		}
 		pin_marks(a, c, s, ink, n, q, t0, t1);
 		fitov_plot_marks(a, c, q == Q_X, t0, t1);
-		if (arc_len(arc) > 0)
-			curcol = canvas_col(c, absc(a, arc_at(arc, a->cursor)));
+		if (hb_arc_len(arc) > 0)
+			curcol = canvas_col(c, absc(a, hb_arc_at(arc, a->cursor)));
 		blit(a, c, y, r->x + LM, curcol);
 		margin_labels(&ay, y, hs[q], qname[q]);
 		canvas_free(c);
@@ -407,8 +407,8 @@ pane_plot_draw(const struct app *a)
 	memset(line, ' ', (size_t)cw);
 	line[cw] = 0;
 	if (a->view != VIEW_J) {
-		for (size_t k = 0; k < arc_nintervals(arc); k++) {
-			const struct arc_interval *iv = arc_interval_at(arc, k);
+		for (size_t k = 0; k < hb_arc_nintervals(arc); k++) {
+			const struct hb_arc_interval *iv = hb_arc_interval_at(arc, k);
 			double c0, c1;
 			int k0, k1;
 			if (!iv->q || iv->t1 < t0 || iv->t0 > t1)
@@ -434,8 +434,8 @@ pane_plot_draw(const struct app *a)
 		}
 	} else {
 		/* (t, j) view: the phase of each interval at its j */
-		for (size_t k = 0; k < arc_nintervals(arc); k++) {
-			const struct arc_interval *iv = arc_interval_at(arc, k);
+		for (size_t k = 0; k < hb_arc_nintervals(arc); k++) {
+			const struct hb_arc_interval *iv = hb_arc_interval_at(arc, k);
 			int col = (int)lround(((double)iv->j - t0) / (t1 - t0) * (cw - 1));
 			if (col >= 0 && col < cw)
 				line[col] = iv->q ? 'c' : 'f';

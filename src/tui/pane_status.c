@@ -42,9 +42,9 @@ tui_puts(int y, int x, int maxw, const char *s, int attr)
 static const char *
 state_name(const struct app *a)
 {
-	switch (sim_end(a->sim)) {
-	case SIM_RUNNING: return "computing";
-	case SIM_END_FAIL: return "failed";
+	switch (hb_sim_end(a->sim)) {
+	case HB_SIM_RUNNING: return "computing";
+	case HB_SIM_END_FAIL: return "failed";
 	default: return "finished";
 	}
 }
@@ -57,26 +57,26 @@ state_name(const struct app *a)
 static void
 readout_draw(const struct app *a)
 {
-	const struct arc *arc = sim_arc(a->sim);
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
 	const struct rect *r = &a->L.readout;
-	const struct arc_sample *s;
+	const struct hb_arc_sample *s;
 	char f[9][96], tb[48], vb[32], line[512];
 	int sig, nf = 0, row = 0, col = 0;
 
-	if (r->h < 1 || arc_len(arc) == 0)
+	if (r->h < 1 || hb_arc_len(arc) == 0)
 		return;
-	s = arc_at(arc, a->cursor);
+	s = hb_arc_at(arc, a->cursor);
 	/* digits of t: enough that both neighbours read differently */
 	for (sig = 6; sig < 17; sig++) {
 		char p[48], nb[48];
 		int ok = 1;
-		units_format(s->t, UNIT_TIME, sig, tb, sizeof tb);
-		if (a->cursor > 0 && arc_at(arc, a->cursor - 1)->t != s->t) {
-			units_format(arc_at(arc, a->cursor - 1)->t, UNIT_TIME, sig, p, sizeof p);
+		hb_units_format(s->t, hb_unit_time, sig, tb, sizeof tb);
+		if (a->cursor > 0 && hb_arc_at(arc, a->cursor - 1)->t != s->t) {
+			hb_units_format(hb_arc_at(arc, a->cursor - 1)->t, hb_unit_time, sig, p, sizeof p);
 			ok = ok && strcmp(p, tb) != 0;
 		}
-		if (a->cursor + 1 < arc_len(arc) && arc_at(arc, a->cursor + 1)->t != s->t) {
-			units_format(arc_at(arc, a->cursor + 1)->t, UNIT_TIME, sig, nb, sizeof nb);
+		if (a->cursor + 1 < hb_arc_len(arc) && hb_arc_at(arc, a->cursor + 1)->t != s->t) {
+			hb_units_format(hb_arc_at(arc, a->cursor + 1)->t, hb_unit_time, sig, nb, sizeof nb);
 			ok = ok && strcmp(nb, tb) != 0;
 		}
 		if (ok)
@@ -86,17 +86,17 @@ readout_draw(const struct app *a)
 	snprintf(f[nf++], sizeof f[0], "t=%s", tb);
 	snprintf(f[nf++], sizeof f[0], "j=%ld", s->j);
 	snprintf(f[nf++], sizeof f[0], "q_c=%d", s->q);
-	units_format(s->x, UNIT_LENGTH, 4, vb, sizeof vb);
+	hb_units_format(s->x, hb_unit_length, 4, vb, sizeof vb);
 	snprintf(f[nf++], sizeof f[0], "x=%s", vb);
-	units_format(s->v, UNIT_VELOCITY, 4, vb, sizeof vb);
+	hb_units_format(s->v, hb_unit_velocity, 4, vb, sizeof vb);
 	snprintf(f[nf++], sizeof f[0], "v=%s", vb);
-	units_format(s->xc, UNIT_LENGTH, 4, vb, sizeof vb);
+	hb_units_format(s->xc, hb_unit_length, 4, vb, sizeof vb);
 	snprintf(f[nf++], sizeof f[0], "x_c=%s", vb);
-	units_format(s->Fc, UNIT_FORCE, 4, vb, sizeof vb);
+	hb_units_format(s->Fc, hb_unit_force, 4, vb, sizeof vb);
 	snprintf(f[nf++], sizeof f[0], "F_c=%s", vb);
-	if (sim_scene(a->sim)->law->n_z > 0) {
+	if (hb_sim_scene(a->sim)->law->n_z > 0) {
 		f[nf][0] = 0;
-		for (int k = 0; k < sim_scene(a->sim)->law->n_z && k < LAW_MAX_Z; k++) {
+		for (int k = 0; k < hb_sim_scene(a->sim)->law->n_z && k < HB_LAW_MAX_Z; k++) {
 			size_t l = strlen(f[nf]);
 			snprintf(f[nf] + l, sizeof f[0] - l, "%sz_c%d=%.4g", k ? " " : "", k + 1, s->z[k]);
 		}
@@ -125,23 +125,23 @@ readout_draw(const struct app *a)
 void
 pane_status_draw(const struct app *a)
 {
-	const struct arc *arc = sim_arc(a->sim);
-	const struct arc_sample *s = arc_len(arc) ? arc_at(arc, a->cursor) : NULL;
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
+	const struct hb_arc_sample *s = hb_arc_len(arc) ? hb_arc_at(arc, a->cursor) : NULL;
 	char line[512], tb[32], sp[32], foot[512];
 	int attr = a->colour ? COLOR_PAIR(PAIR_STATUS) : A_REVERSE;
 	const struct rect *r = &a->L.status;
 
 	if (s != NULL)
-		units_format(s->t, UNIT_TIME, 5, tb, sizeof tb);
+		hb_units_format(s->t, hb_unit_time, 5, tb, sizeof tb);
 	else
 		snprintf(tb, sizeof tb, "-");
-	units_format(a->speed, UNIT_NONE, 2, sp, sizeof sp);
+	hb_units_format(a->speed, hb_unit_none, 2, sp, sizeof sp);
 	{
 		char tail[256];
 		int room;
 		snprintf(tail, sizeof tail, " %s t=%s j=%ld q_c=%d coll %zu x%s%s %s %s",
-		         sim_scene(a->sim)->law->name, tb, s ? s->j : 0L, s ? s->q : 0,
-		         sim_ncollisions(a->sim), sp, a->in_slow ? " slow" : "",
+		         hb_sim_scene(a->sim)->law->name, tb, s ? s->j : 0L, s ? s->q : 0,
+		         hb_sim_ncollisions(a->sim), sp, a->in_slow ? " slow" : "",
 		         a->playing ? "playing" : "paused", state_name(a));
 		room = r->w - (int)strlen(tail) - 1;
 		if (room < 8)

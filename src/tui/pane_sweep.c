@@ -53,7 +53,7 @@ draw_curve(struct canvas *c, const struct sweep_view *v, const struct sv_curve *
 	double px = 0, py = 0;
 
 	for (long i = 0; i < k->n; i++) {
-		if (k->st[i] != CURVE_DONE || !isfinite(k->y[i])) {
+		if (k->st[i] != HB_CURVE_DONE || !isfinite(k->y[i])) {
 			have = 0;
 			continue;
 		}
@@ -78,7 +78,7 @@ extend(const struct sweep_view *v, const struct sv_curve *k, double *x0, double 
 			*x0 = fmin(*x0, x);
 			*x1 = fmax(*x1, x);
 		}
-		if (k->st[i] == CURVE_DONE && isfinite(k->y[i])) {
+		if (k->st[i] == HB_CURVE_DONE && isfinite(k->y[i])) {
 			*y0 = fmin(*y0, k->y[i]);
 			*y1 = fmax(*y1, k->y[i]);
 		}
@@ -87,7 +87,7 @@ extend(const struct sweep_view *v, const struct sv_curve *k, double *x0, double 
 
 /* The abscissa's labels: the axis line (linear), or decades and both ends (log). */
 static void
-x_labels(const struct sweep_view *v, const struct scene_keyinfo *ki, const struct axis *ax,
+x_labels(const struct sweep_view *v, const struct hb_scene_keyinfo *ki, const struct axis *ax,
          const struct canvas *c, int y, int x)
 {
 	char line[512], lab[48];
@@ -103,7 +103,7 @@ x_labels(const struct sweep_view *v, const struct scene_keyinfo *ki, const struc
 	int last = -100;
 	for (double d = ceil(c->x0 - 1e-9); d <= c->x1 + 1e-9; d += 1) {
 		int col = canvas_col(c, d);
-		units_format(sg * pow(10, d), ki->dim, 3, lab, sizeof lab);
+		hb_units_format(sg * pow(10, d), ki->dim, 3, lab, sizeof lab);
 		int l = (int)strlen(lab);
 		int at = col - l / 2;
 		if (at < 0)
@@ -144,24 +144,24 @@ pane_sweep_draw(const struct app *a)
 	int top = a->L.status.y + 1, bottom = a->L.msg.y;      /* rows top .. bottom-1 */
 	int cw = COLS - SLM - 1, ch = bottom - top - 3;        /* title, legend, x axis */
 	double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY, xs = NAN, ys;
-	struct scene_keyinfo ki = { 0 };
+	struct hb_scene_keyinfo ki = { 0 };
 	struct axis ax, ay;
 	struct canvas *c;
 	char line[512], vx[48], vy[48];
-	const char *on = sweep_observable_name(v->obs), *ou = sv_obs_unit(v->obs);
+	const char *on = hb_sweep_observable_name(v->obs), *ou = sv_obs_unit(v->obs);
 
 	for (int r = top; r < bottom; r++) {
 		move(r, 0);
 		clrtoeol();
 	}
-	if (scene_get(sim_scene(a->sim), v->key, &ki, NULL) == 0)
+	if (hb_scene_get(hb_sim_scene(a->sim), v->key, &ki, NULL) == 0)
 		xs = ki.number;
 	else
-		scene_get(&v->base, v->key, &ki, NULL);
+		hb_scene_get(&v->base, v->key, &ki, NULL);
 	ys = sv_current_y(a, v->obs, v->coll);
 
 	/* title: what is plotted and how far it is */
-	if (v->obs == CURVE_E || v->obs == CURVE_VI || v->obs == CURVE_XCR)
+	if (v->obs == HB_CURVE_E || v->obs == HB_CURVE_VI || v->obs == HB_CURVE_XCR)
 		snprintf(vy, sizeof vy, "%s of collision %ld", on, v->coll + 1);
 	else
 		snprintf(vy, sizeof vy, "%s", on);
@@ -193,12 +193,12 @@ pane_sweep_draw(const struct app *a)
 			tui_puts(top + 1, col, COLS - col, line, ink_attr(a, ink));
 			col += (int)strlen(line);
 		}
-		units_format(xs, ki.dim, 4, vx, sizeof vx);
+		hb_units_format(xs, ki.dim, 4, vx, sizeof vx);
 		if (isfinite(ys))
-			units_format(ys, ou ? (v->obs == CURVE_VI ? UNIT_VELOCITY
-			             : v->obs == CURVE_TPC ? UNIT_TIME : UNIT_LENGTH) : UNIT_NONE, 4, vy, sizeof vy);
+			hb_units_format(ys, ou ? (v->obs == HB_CURVE_VI ? hb_unit_velocity
+			             : v->obs == HB_CURVE_TPC ? hb_unit_time : hb_unit_length) : hb_unit_none, 4, vy, sizeof vy);
 		else
-			snprintf(vy, sizeof vy, "%s", sim_end(a->sim) == SIM_RUNNING ? "computing" : "none");
+			snprintf(vy, sizeof vy, "%s", hb_sim_end(a->sim) == HB_SIM_RUNNING ? "computing" : "none");
 		snprintf(line, sizeof line, "@ scene: %s = %s, %s = %s", ki.label, vx, on, vy);
 		tui_puts(top + 1, col, COLS - col, line, A_BOLD);
 	}

@@ -1,7 +1,7 @@
 /*
  * pane_table.c - the collisions table (paper eqs. t_d .. Lambda): one row
  * per completed collision, then the contact in progress marked "live".
- * The unit of each column is chosen from its largest value (units_axis)
+ * The unit of each column is chosen from its largest value (hb_units_axis)
  * and written in the header.  With compare on (c), the columns are those
  * of the comparison: each collision against the one of the same index in
  * a pinned run, with the differences (now - pinned) of t_e, e and x_c^max
@@ -33,13 +33,13 @@ static const struct {
  * delta[k] 1 where column k is a difference against a pinned run.
  */
 static int
-columns(int compare, const struct collision_column **cols, int *width, int *delta)
+columns(int compare, const struct hb_collision_column **cols, int *width, int *delta)
 {
 	int n = 0;
 
 	if (compare) {
 		for (size_t k = 0; k < sizeof compared / sizeof compared[0]; k++) {
-			const struct collision_column *c = collision_column_find(compared[k].name);
+			const struct hb_collision_column *c = hb_collision_column_find(compared[k].name);
 			if (c == NULL)
 				continue;
 			cols[n] = c;
@@ -51,9 +51,9 @@ columns(int compare, const struct collision_column **cols, int *width, int *delt
 		}
 		return n;
 	}
-	for (int k = 0; k < collision_ncolumns && n < NCOL_MAX; k++) {
-		const struct collision_column *c = &collision_columns[k];
-		if (!(c->shown & COLUMN_EXPLORER))
+	for (int k = 0; k < hb_collision_ncolumns && n < NCOL_MAX; k++) {
+		const struct hb_collision_column *c = &hb_collision_columns[k];
+		if (!(c->shown & HB_COLUMN_EXPLORER))
 			continue;
 		cols[n] = c;
 		delta[n] = 0;
@@ -70,24 +70,24 @@ columns(int compare, const struct collision_column **cols, int *width, int *delt
 }
 
 /* Collision i of a pinned run (completed ones only), or NULL. */
-static const struct collision *
-pinned(const struct sim *ps, long i)
+static const struct hb_collision *
+pinned(const struct hb_sim *ps, long i)
 {
-	if (ps == NULL || i < 0 || (size_t)i >= sim_ncollisions(ps))
+	if (ps == NULL || i < 0 || (size_t)i >= hb_sim_ncollisions(ps))
 		return NULL;
-	return sim_collision(ps, (size_t)i);
+	return hb_sim_collision(ps, (size_t)i);
 }
 
 /* The value shown in column k: the column's, or its difference against p. */
 static double
-value(const struct collision *c, const struct collision *p, const struct collision_column *col,
+value(const struct hb_collision *c, const struct hb_collision *p, const struct hb_collision_column *col,
       int delta)
 {
 	if (!delta)
-		return collision_value(c, col);
+		return hb_collision_value(c, col);
 	if (p == NULL || (!c->complete && strcmp(col->name, "e") == 0))
 		return NAN;
-	return collision_value(c, col) - collision_value(p, col);
+	return hb_collision_value(c, col) - hb_collision_value(p, col);
 }
 
 void
@@ -95,22 +95,22 @@ pane_table_draw(const struct app *a)
 {
 	const struct rect *r = &a->L.table;
 	long n = app_ncollisions(a), top, i, rows = r->h - 1, sel = a->table_sel;
-	const struct sim *ps = a->compare > 0 && a->compare <= a->npins ? a->pin[a->compare - 1].sim : NULL;
-	const struct collision_column *cols[NCOL_MAX];
+	const struct hb_sim *ps = a->compare > 0 && a->compare <= a->npins ? a->pin[a->compare - 1].sim : NULL;
+	const struct hb_collision_column *cols[NCOL_MAX];
 	int width[NCOL_MAX], delta[NCOL_MAX], ncol = columns(ps != NULL, cols, width, delta);
 	double scale[NCOL_MAX], mag[NCOL_MAX];
 	char unit[NCOL_MAX][16], line[512], cell[64];
 	int k, focused = a->focus == FOCUS_TABLE;
 	long at = -1;
-	const struct arc *arc = sim_arc(a->sim);
-	struct collision live;
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
+	struct hb_collision live;
 
 	if (r->h < 2)
 		return;
-	if (arc_len(arc) > 0 && arc_at(arc, a->cursor)->q) {
-		long jc = arc_at(arc, a->cursor)->j;
+	if (hb_arc_len(arc) > 0 && hb_arc_at(arc, a->cursor)->q) {
+		long jc = hb_arc_at(arc, a->cursor)->j;
 		for (i = 0; i < n; i++) {
-			const struct collision *c = app_collision(a, i, &live);
+			const struct hb_collision *c = app_collision(a, i, &live);
 			if (c && c->j == jc)
 				at = i;
 		}
@@ -118,7 +118,7 @@ pane_table_draw(const struct app *a)
 	for (k = 0; k < ncol; k++)
 		mag[k] = 0;
 	for (i = 0; i < n; i++) {
-		const struct collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
+		const struct hb_collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
 		for (k = 0; c && k < ncol; k++) {
 			double v = value(c, p, cols[k], delta[k]);
 			if (isfinite(v) && fabs(v) > mag[k])
@@ -129,7 +129,7 @@ pane_table_draw(const struct app *a)
 	for (k = 0; k < ncol; k++) {
 		char h[48];
 		if (cols[k]->unit[0]) {
-			scale[k] = units_axis(mag[k] > 0 ? mag[k] : 1, cols[k]->unit, unit[k], sizeof unit[k]);
+			scale[k] = hb_units_axis(mag[k] > 0 ? mag[k] : 1, cols[k]->unit, unit[k], sizeof unit[k]);
 			snprintf(h, sizeof h, "%s%s[%s]", delta[k] ? "d" : "", cols[k]->label, unit[k]);
 		} else {
 			scale[k] = 1;
@@ -142,8 +142,8 @@ pane_table_draw(const struct app *a)
 	if (ps)
 		snprintf(cell, sizeof cell, "  vs %d", a->compare);
 	else
-		snprintf(cell, sizeof cell, "  collisions: %zu%s", sim_ncollisions(a->sim),
-		         n > (long)sim_ncollisions(a->sim) ? " + live" : "");
+		snprintf(cell, sizeof cell, "  collisions: %zu%s", hb_sim_ncollisions(a->sim),
+		         n > (long)hb_sim_ncollisions(a->sim) ? " + live" : "");
 	strncat(line, cell, sizeof line - strlen(line) - 1);
 	tui_puts(r->y, r->x, r->w, line, A_BOLD | (focused ? A_UNDERLINE : 0));
 
@@ -152,7 +152,7 @@ pane_table_draw(const struct app *a)
 		sel = n - 1;
 	top = layout_scroll(a->table_top, sel, rows, n);
 	for (i = top; i < n && i < top + rows; i++) {
-		const struct collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
+		const struct hb_collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
 		int attr = 0;
 		if (c == NULL)
 			continue;

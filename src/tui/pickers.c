@@ -1,6 +1,6 @@
 /*
- * pickers.c - the law picker (law_list: name, title, description,
- * parameters) and the preset picker (preset_list: the *.preset files of presets/ and
+ * pickers.c - the law picker (hb_law_list: name, title, description,
+ * parameters) and the preset picker (hb_preset_list: the *.preset files of presets/ and
  * $HYBOUNCE_PRESETS, with descriptions), drawn as a box over the plots.
  * Up/Down (k/j) move, PgUp/PgDn a page, Home/End (g/G) to the ends,
  * Enter chooses, Esc or q closes.
@@ -19,7 +19,7 @@ count(const struct app *a)
 
 	if (a->overlay == OV_PRESET)
 		return a->npresets;
-	while (law_list()[n])
+	while (hb_law_list()[n])
 		n++;
 	return n;
 }
@@ -85,7 +85,7 @@ pickers_key(struct app *a, int ch)
 			snprintf(name, sizeof name, "%s", a->presets[a->pick_sel].path);
 			app_open_preset(a, name);
 		} else {
-			app_set_law(a, law_list()[a->pick_sel]->name);
+			app_set_law(a, hb_law_list()[a->pick_sel]->name);
 		}
 		break;
 	default:
@@ -116,8 +116,8 @@ pickers_draw(const struct app *a)
 		if (a->overlay == OV_PRESET)
 			snprintf(line, sizeof line, " %-28s %s", a->presets[i].name, a->presets[i].title);
 		else
-			snprintf(line, sizeof line, " %-10s %s%s", law_list()[i]->name, law_list()[i]->title,
-			         law_list()[i] == sim_scene(a->sim)->law ? "  (current)" : "");
+			snprintf(line, sizeof line, " %-10s %s%s", hb_law_list()[i]->name, hb_law_list()[i]->title,
+			         hb_law_list()[i] == hb_sim_scene(a->sim)->law ? "  (current)" : "");
 		tui_puts(y0 + 1 + i - top, x0, w, line, attr);
 	}
 	/* the description of the selected entry, on the last rows of the box */
@@ -128,7 +128,7 @@ pickers_draw(const struct app *a)
 			snprintf(line, sizeof line, " %.500s", a->presets[a->pick_sel].path);
 			tui_puts(y0 + h - 2, x0, w, line, A_DIM);
 		} else {
-			const struct law_type *l = law_list()[a->pick_sel];
+			const struct hb_law_type *l = hb_law_list()[a->pick_sel];
 			size_t len;
 			snprintf(line, sizeof line, " %s", l->description);
 			tui_puts(y0 + h - 3, x0, w, line, A_DIM);

@@ -50,13 +50,13 @@ speed_default(double T)
 const char *
 stiff_note(const struct app *a, char *buf, size_t n)
 {
-	const struct sim_stats *st = sim_stats(a->sim);
+	const struct hb_sim_stats *st = hb_sim_stats(a->sim);
 	char tb[32];
 
 	buf[0] = '\0';
 	if (!st->stiff)
 		return buf;
-	units_format(st->stiff_t, UNIT_TIME, 4, tb, sizeof tb);
+	hb_units_format(st->stiff_t, hb_unit_time, 4, tb, sizeof tb);
 	if (st->switched)
 		snprintf(buf, n, "; stiff contact at t = %s: auto went over to bsimp", tb);
 	else
@@ -68,26 +68,26 @@ stiff_note(const struct app *a, char *buf, size_t n)
 int
 playback_tick(struct app *a, double dt)
 {
-	const struct arc *arc = sim_arc(a->sim);
-	const struct arc_sample *cs, *ls;
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
+	const struct hb_arc_sample *cs, *ls;
 	double sp = a->speed, tnew;
 	size_t k;
 
 	a->in_slow = 0;
-	if (!a->playing || arc_len(arc) == 0)
+	if (!a->playing || hb_arc_len(arc) == 0)
 		return 0;
-	cs = arc_at(arc, a->cursor);
-	ls = arc_last(arc);
-	k = arc_interval_of(arc, a->cursor);
+	cs = hb_arc_at(arc, a->cursor);
+	ls = hb_arc_last(arc);
+	k = hb_arc_interval_of(arc, a->cursor);
 	if (a->slowmo && cs->q) {
 		/* a contact as long as the last completed one takes SLOW_WALL
 		 * seconds; a contact that lasts far longer (a permanent
 		 * contact) is played at the normal speed after a while */
 		double td = 1e-3;
-		size_t nc = sim_ncollisions(a->sim);
-		const struct arc_interval *iv = arc_interval_at(arc, k);
-		if (nc > 0 && sim_collision(a->sim, nc - 1)->td > 0)
-			td = sim_collision(a->sim, nc - 1)->td;
+		size_t nc = hb_sim_ncollisions(a->sim);
+		const struct hb_arc_interval *iv = hb_arc_interval_at(arc, k);
+		if (nc > 0 && hb_sim_collision(a->sim, nc - 1)->td > 0)
+			td = hb_sim_collision(a->sim, nc - 1)->td;
 		if (a->tcur - iv->t0 < SLOW_SPAN * td) {
 			if (sp > td / SLOW_WALL)
 				sp = td / SLOW_WALL;
@@ -96,8 +96,8 @@ playback_tick(struct app *a, double dt)
 	}
 	tnew = a->tcur + sp * dt;
 	/* slow motion: stop at the start of a contact rather than skip it */
-	if (a->slowmo && !cs->q && k + 1 < arc_nintervals(arc)) {
-		const struct arc_interval *nx = arc_interval_at(arc, k + 1);
+	if (a->slowmo && !cs->q && k + 1 < hb_arc_nintervals(arc)) {
+		const struct hb_arc_interval *nx = hb_arc_interval_at(arc, k + 1);
 		if (nx->q && nx->t0 <= tnew) {
 			cursor_set(a, nx->first);
 			return 1;
@@ -105,8 +105,8 @@ playback_tick(struct app *a, double dt)
 	}
 	if (tnew >= ls->t) {
 		a->tcur = ls->t;
-		a->cursor = arc_len(arc) - 1;
-		if (sim_end(a->sim) != SIM_RUNNING) {
+		a->cursor = hb_arc_len(arc) - 1;
+		if (hb_sim_end(a->sim) != HB_SIM_RUNNING) {
 			char note[160];
 
 			if (a->present) {
@@ -115,12 +115,12 @@ playback_tick(struct app *a, double dt)
 				return 1;
 			}
 			a->playing = 0;
-			app_msg(a, 0, "end of the run: %s%s", sim_end_str(a->sim),
+			app_msg(a, 0, "end of the run: %s%s", hb_sim_end_str(a->sim),
 			        stiff_note(a, note, sizeof note));
 		}
 	} else {
 		a->tcur = tnew;
-		a->cursor = arc_find_t(arc, tnew);
+		a->cursor = hb_arc_find_t(arc, tnew);
 	}
 	return 1;
 }
@@ -131,7 +131,7 @@ void
 act_play(struct app *a)
 {
 	a->playing = !a->playing;
-	if (a->playing && sim_end(a->sim) != SIM_RUNNING && a->cursor + 1 >= arc_len(sim_arc(a->sim)))
+	if (a->playing && hb_sim_end(a->sim) != HB_SIM_RUNNING && a->cursor + 1 >= hb_arc_len(hb_sim_arc(a->sim)))
 		cursor_set(a, 0); /* at the end of a finished run: play it again */
 }
 
@@ -176,7 +176,7 @@ act_present(struct app *a)
 		a->view = VIEW_FOLLOW;
 		a->slowmo = 1;
 		a->playing = 1;
-		if (sim_end(a->sim) != SIM_RUNNING && a->cursor + 1 >= arc_len(sim_arc(a->sim)))
+		if (hb_sim_end(a->sim) != HB_SIM_RUNNING && a->cursor + 1 >= hb_arc_len(hb_sim_arc(a->sim)))
 			cursor_set(a, 0);
 		app_msg(a, 0, "presentation: contacts in slow motion, looping (T: back)");
 	} else {

@@ -20,17 +20,17 @@
 #include "tui.h"
 #include "units.h"
 
-struct sim *
+struct hb_sim *
 load_sim(const char *name, const char *const *sets, int nsets, char *path, size_t pn,
          char *msg, size_t n)
 {
-	struct scene sc;
+	struct hb_scene sc;
 
-	if (preset_resolve(name, path, pn, msg, n) != HB_OK)
+	if (hb_preset_resolve(name, path, pn, msg, n) != HB_OK)
 		return NULL;
-	if (preset_open(path, sets, nsets, &sc, msg, n) != HB_OK)
+	if (hb_preset_open(path, sets, nsets, &sc, msg, n) != HB_OK)
 		return NULL;
-	return sim_new(&sc, msg, n);
+	return hb_sim_new(&sc, msg, n);
 }
 
 /* File name without folder and ".preset". */
@@ -48,7 +48,7 @@ base_name(const char *path, char *out, size_t n)
 
 /* How early a differing key is named in a label: the law first, names last. */
 static int
-key_rank(const struct scene_keyinfo *k)
+key_rank(const struct hb_scene_keyinfo *k)
 {
 	size_t l = strlen(k->key);
 
@@ -65,20 +65,20 @@ key_rank(const struct scene_keyinfo *k)
  * "same scene" when nothing differs.
  */
 static void
-diff_label(const struct scene *a, const struct scene *b, char *out, size_t n)
+diff_label(const struct hb_scene *a, const struct hb_scene *b, char *out, size_t n)
 {
-	int shown = 0, more = 0, na = scene_nkeys(a), nb = scene_nkeys(b);
+	int shown = 0, more = 0, na = hb_scene_nkeys(a), nb = hb_scene_nkeys(b);
 
 	out[0] = 0;
 	for (int rank = 0; rank < 3; rank++)
 		for (int i = 0; i < na; i++) {
-			struct scene_keyinfo ka, kb;
+			struct hb_scene_keyinfo ka, kb;
 			int found = 0;
 
-			if (scene_key(a, i, &ka) != 0 || ka.readonly || key_rank(&ka) != rank)
+			if (hb_scene_key(a, i, &ka) != 0 || ka.readonly || key_rank(&ka) != rank)
 				continue;
 			for (int k = 0; k < nb && !found; k++)
-				if (scene_key(b, k, &kb) == 0 && strcmp(ka.key, kb.key) == 0)
+				if (hb_scene_key(b, k, &kb) == 0 && strcmp(ka.key, kb.key) == 0)
 					found = 1 + (strcmp(ka.value, kb.value) != 0);
 			if (found != 2)
 				continue;
@@ -103,22 +103,22 @@ diff_label(const struct scene *a, const struct scene *b, char *out, size_t n)
 void
 app_label_runs(struct app *a)
 {
-	const struct scene *cur = sim_scene(a->sim);
+	const struct hb_scene *cur = hb_sim_scene(a->sim);
 
 	if (a->npins == 0) {
 		snprintf(a->run_label, sizeof a->run_label, "%.40s/%.20s", a->preset, cur->law->name);
 		return;
 	}
 	for (int i = 0; i < a->npins; i++)
-		diff_label(sim_scene(a->pin[i].sim), cur, a->pin[i].label, sizeof a->pin[i].label);
+		diff_label(hb_sim_scene(a->pin[i].sim), cur, a->pin[i].label, sizeof a->pin[i].label);
 	/* the current run: its values of what differs from the first pin */
-	diff_label(cur, sim_scene(a->pin[0].sim), a->run_label, sizeof a->run_label);
+	diff_label(cur, hb_sim_scene(a->pin[0].sim), a->run_label, sizeof a->run_label);
 }
 
 static void
-adopt_sim(struct app *a, struct sim *s, const char *path)
+adopt_sim(struct app *a, struct hb_sim *s, const char *path)
 {
-	sim_free(a->sim);
+	hb_sim_free(a->sim);
 	a->sim = s;
 	snprintf(a->preset_path, sizeof a->preset_path, "%s", path);
 	base_name(path, a->preset, sizeof a->preset);
@@ -132,12 +132,12 @@ adopt_sim(struct app *a, struct sim *s, const char *path)
 	a->table_sel = a->table_top = 0;
 	a->param_sel = 1;
 	a->param_top = 0;
-	a->speed = speed_default(sim_scene(s)->run.T);
+	a->speed = speed_default(hb_sim_scene(s)->run.T);
 	a->zoom_i = 0;
 }
 
 void
-app_adopt(struct app *a, struct sim *s, const char *path)
+app_adopt(struct app *a, struct hb_sim *s, const char *path)
 {
 	adopt_sim(a, s, path);
 }
@@ -146,7 +146,7 @@ void
 app_open_preset(struct app *a, const char *name)
 {
 	char path[512], emsg[512];
-	struct sim *s = load_sim(name, NULL, 0, path, sizeof path, emsg, sizeof emsg);
+	struct hb_sim *s = load_sim(name, NULL, 0, path, sizeof path, emsg, sizeof emsg);
 
 	if (s == NULL) {
 		app_msg(a, 1, "cannot open %s: %s", name, emsg);
@@ -161,7 +161,7 @@ void
 pins_clear(struct app *a)
 {
 	for (int i = 0; i < a->npins; i++)
-		sim_free(a->pin[i].sim);
+		hb_sim_free(a->pin[i].sim);
 	a->npins = 0;
 	app_label_runs(a);
 }
@@ -174,13 +174,13 @@ void
 act_pin(struct app *a)
 {
 	char emsg[512];
-	struct sim *s;
+	struct hb_sim *s;
 
 	if (a->npins >= APP_MAX_PINS) {
 		app_msg(a, 1, "at most %d pinned runs; P clears them", APP_MAX_PINS);
 		return;
 	}
-	s = sim_new(sim_scene(a->sim), emsg, sizeof emsg);
+	s = hb_sim_new(hb_sim_scene(a->sim), emsg, sizeof emsg);
 	if (s == NULL) {
 		app_msg(a, 1, "cannot pin: %s", emsg);
 		return;
@@ -213,7 +213,7 @@ act_study3(struct app *a)
 	static const char *names[3] = {
 		"permanent-contact-shccl", "permanent-contact-bwshccl", "permanent-contact-bwmcl"
 	};
-	struct sim *s[3] = { NULL, NULL, NULL };
+	struct hb_sim *s[3] = { NULL, NULL, NULL };
 	char path[3][512], emsg[512];
 	int i;
 
@@ -222,7 +222,7 @@ act_study3(struct app *a)
 		if (s[i] == NULL) {
 			app_msg(a, 1, "third study: %s", emsg);
 			for (int k = 0; k < i; k++)
-				sim_free(s[k]);
+				hb_sim_free(s[k]);
 			return;
 		}
 	}
@@ -239,8 +239,8 @@ act_study3(struct app *a)
 void
 act_restart(struct app *a)
 {
-	if (sim_restart(a->sim) != HB_OK) {
-		app_msg(a, 1, "restart failed: %s", sim_errmsg(a->sim));
+	if (hb_sim_restart(a->sim) != HB_OK) {
+		app_msg(a, 1, "restart failed: %s", hb_sim_errmsg(a->sim));
 		return;
 	}
 	a->branch_t = -1;
@@ -258,12 +258,12 @@ act_preset(struct app *a)
 	free(a->presets);
 	a->presets = NULL;
 	a->npresets = 0;
-	n = preset_list(&a->presets);
+	n = hb_preset_list(&a->presets);
 	if (n < 0)
 		term_oom();
 	a->npresets = n;
 	if (n == 0) {
-		const char *const *d = preset_dirs();
+		const char *const *d = hb_preset_dirs();
 		char where[1024] = "";
 		for (int i = 0; d[i] != NULL; i++) {
 			size_t l = strlen(where);
@@ -299,25 +299,25 @@ act_export(struct app *a)
 
 /* " (replaced)" and the like: how a target of the export was written, for the message. */
 static const char *
-how_written(const struct atomic_target *t)
+how_written(const struct hb_atomic_target *t)
 {
-	if (t->how == ATOMIC_IN_PLACE)
+	if (t->how == HB_ATOMIC_IN_PLACE)
 		return " (written in place)";
 	if (t->via_link)
-		return t->how == ATOMIC_REPLACE ? " (through a link, replacing its target)" : " (through a link)";
-	return t->how == ATOMIC_REPLACE ? " (replaced the existing file)" : "";
+		return t->how == HB_ATOMIC_REPLACE ? " (through a link, replacing its target)" : " (through a link)";
+	return t->how == HB_ATOMIC_REPLACE ? " (replaced the existing file)" : "";
 }
 
 /*
  * Writes BASE-trace.csv, BASE-collisions.csv and the scene as BASE.preset
- * through csv_export_files(): all or nothing, never over the preset being
+ * through hb_csv_export_files(): all or nothing, never over the preset being
  * run or a shipped preset, every overwrite named in the message.
  */
 void
 export_do(struct app *a, const char *base)
 {
 	char trace[600], coll[600], scene[600], emsg[512], note[256] = "";
-	struct csv_export_report *rep;
+	struct hb_csv_export_report *rep;
 
 	if (base[0] == 0) {
 		app_msg(a, 1, "export cancelled: empty name");
@@ -329,7 +329,7 @@ export_do(struct app *a, const char *base)
 	rep = calloc(1, sizeof *rep);
 	if (rep == NULL)
 		term_oom();
-	if (csv_export_files_scene(a->sim, trace, coll, scene, a->preset_path, rep, emsg,
+	if (hb_csv_export_files_scene(a->sim, trace, coll, scene, a->preset_path, rep, emsg,
 	        sizeof emsg) != HB_OK) {
 		app_msg(a, 1, "export failed, nothing written: %s", emsg);
 		free(rep);
@@ -337,7 +337,7 @@ export_do(struct app *a, const char *base)
 	}
 	if (a->branch_t >= 0) {
 		char tb[32];
-		units_format(a->branch_t, UNIT_TIME, 6, tb, sizeof tb);
+		hb_units_format(a->branch_t, hb_unit_time, 6, tb, sizeof tb);
 		snprintf(note, sizeof note,
 		         "; NOTE: this run was branched at t = %s, j = %ld: the scene file holds the values after the branch and does NOT reproduce it (r, then export, gives a reproducible run)",
 		         tb, a->branch_j);
@@ -345,7 +345,7 @@ export_do(struct app *a, const char *base)
 	app_msg(a, a->branch_t >= 0, "wrote %s%s, %s%s and %s%s (%zu samples, %zu collisions)%s", trace,
 	        how_written(&rep->target[0]), coll, how_written(&rep->target[1]),
 	        rep->scene[0] ? rep->scene : "no scene", rep->scene[0] ? how_written(&rep->target[2]) : "",
-	        arc_len(sim_arc(a->sim)), sim_ncollisions(a->sim), note);
+	        hb_arc_len(hb_sim_arc(a->sim)), hb_sim_ncollisions(a->sim), note);
 	free(rep);
 }
 

@@ -118,7 +118,7 @@ wait_ms(struct app *a, double ms)
 	double t0 = clock_seconds(CLOCK_MONOTONIC);
 
 	while (!term_signalled() && !a->quit && (clock_seconds(CLOCK_MONOTONIC) - t0) * 1e3 < ms) {
-		int computing = sim_end(a->sim) == SIM_RUNNING;
+		int computing = hb_sim_end(a->sim) == HB_SIM_RUNNING;
 		if (!app_tick(a) && !live)
 			break;
 		frame(a);
@@ -130,10 +130,10 @@ wait_ms(struct app *a, double ms)
 static int
 all_ended(const struct app *a)
 {
-	if (sim_end(a->sim) == SIM_RUNNING)
+	if (hb_sim_end(a->sim) == HB_SIM_RUNNING)
 		return 0;
 	for (int i = 0; i < a->npins; i++)
-		if (sim_end(a->pin[i].sim) == SIM_RUNNING)
+		if (hb_sim_end(a->pin[i].sim) == HB_SIM_RUNNING)
 			return 0;
 	return 1;
 }

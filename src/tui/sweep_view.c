@@ -9,7 +9,7 @@
  * law (L) or the range then starts a new curve to compare with.
  * Changing the parameter, observable or collision clears the pins (they
  * would not share the axes).  Export writes the current curve's finished
- * points as CSV (sweep_curve_write_csv: a temporary file renamed over the
+ * points as CSV (hb_sweep_curve_write_csv: a temporary file renamed over the
  * name, so a failed export damages nothing).
  */
 #include <curses.h>
@@ -32,10 +32,10 @@ const char *
 sv_obs_unit(int obs)
 {
 	switch (obs) {
-	case CURVE_VI: return "m/s";
-	case CURVE_XCR:
-	case CURVE_XCR_TOTAL: return "m";
-	case CURVE_TPC: return "s";
+	case HB_CURVE_VI: return "m/s";
+	case HB_CURVE_XCR:
+	case HB_CURVE_XCR_TOTAL: return "m";
+	case HB_CURVE_TPC: return "s";
 	default: return NULL;
 	}
 }
@@ -44,16 +44,16 @@ double
 sv_current_y(const struct app *a, int obs, long coll)
 {
 	/* a value of collision i is final once it completed; the others once the run ended */
-	if (obs != CURVE_E && obs != CURVE_VI && obs != CURVE_XCR
-	    && (sim_end(a->sim) == SIM_RUNNING || sim_end(a->sim) == SIM_END_FAIL))
+	if (obs != HB_CURVE_E && obs != HB_CURVE_VI && obs != HB_CURVE_XCR
+	    && (hb_sim_end(a->sim) == HB_SIM_RUNNING || hb_sim_end(a->sim) == HB_SIM_END_FAIL))
 		return NAN;
-	return sweep_observe(a->sim, obs, coll);
+	return hb_sweep_observe(a->sim, obs, coll);
 }
 
 static void
 curve_drop(struct sv_curve *k)
 {
-	sweep_curve_free(k->c);
+	hb_sweep_curve_free(k->c);
 	free(k->x);
 	free(k->y);
 	free(k->st);
@@ -74,10 +74,10 @@ curve_poll(struct sv_curve *k)
 {
 	if (k->c == NULL)
 		return 0;
-	k->done = sweep_curve_poll(k->c, k->x, k->y, k->st, k->n);
+	k->done = hb_sweep_curve_poll(k->c, k->x, k->y, k->st, k->n);
 	k->failed = 0;
 	for (long i = 0; i < k->n; i++)
-		k->failed += k->st[i] == CURVE_FAILED;
+		k->failed += k->st[i] == HB_CURVE_FAILED;
 	return k->done < k->n;
 }
 
@@ -97,12 +97,12 @@ curve_start(struct app *a)
 	struct sv_curve k = { 0 };
 	char msg[512];
 
-	k.c = sweep_curve_start(&v->base, v->key, v->spec, v->obs, v->coll, jobs(), msg, sizeof msg);
+	k.c = hb_sweep_curve_start(&v->base, v->key, v->spec, v->obs, v->coll, jobs(), msg, sizeof msg);
 	if (k.c == NULL) {
 		app_msg(a, 1, "sweep not started: %s", msg);
 		return -1;
 	}
-	k.n = sweep_curve_npoints(k.c);
+	k.n = hb_sweep_curve_npoints(k.c);
 	k.x = calloc((size_t)k.n, sizeof *k.x);
 	k.y = calloc((size_t)k.n, sizeof *k.y);
 	k.st = calloc((size_t)k.n, sizeof *k.st);
@@ -116,28 +116,28 @@ curve_start(struct app *a)
 		v->log = sp != NULL && strcmp(sp + 1, "log") == 0;
 	}
 	curve_poll(&v->cur);
-	app_msg(a, 0, "sweep: %s over %s = %s, %ld points on %d threads", sweep_observable_name(v->obs),
+	app_msg(a, 0, "sweep: %s over %s = %s, %ld points on %d threads", hb_sweep_observable_name(v->obs),
 	        v->key, v->spec, k.n, jobs());
 	return 0;
 }
 
 /* A default range around the value: a decade either way (log) when it is not 0. */
 static void
-default_spec(const struct scene_keyinfo *ki, char *buf, size_t n)
+default_spec(const struct hb_scene_keyinfo *ki, char *buf, size_t n)
 {
 	char lo[48], hi[48];
 	double x = ki->number;
 
-	if (ki->kind == SCENE_KEY_NUMBER && isfinite(x) && x != 0) {
-		units_format(x / 10, ki->dim, 3, lo, sizeof lo);
-		units_format(x * 10, ki->dim, 3, hi, sizeof hi);
+	if (ki->kind == HB_SCENE_KEY_NUMBER && isfinite(x) && x != 0) {
+		hb_units_format(x / 10, ki->dim, 3, lo, sizeof lo);
+		hb_units_format(x * 10, ki->dim, 3, hi, sizeof hi);
 		snprintf(buf, n, "%s:%s:%d:log", lo, hi, SV_DEFAULT_N);
-	} else if (ki->kind == SCENE_KEY_WHOLE && isfinite(x)) {
+	} else if (ki->kind == HB_SCENE_KEY_WHOLE && isfinite(x)) {
 		snprintf(buf, n, "%.0f:%.0f:%d", x > 1 ? floor(x / 2) : 1, x > 1 ? 2 * x : 10,
 		         x > 1 ? (int)fmin(x * 1.5 + 1, SV_DEFAULT_N) : 10);
-	} else if (ki->kind == SCENE_KEY_NUMBER) {
-		units_format(-1, ki->dim, 3, lo, sizeof lo);
-		units_format(1, ki->dim, 3, hi, sizeof hi);
+	} else if (ki->kind == HB_SCENE_KEY_NUMBER) {
+		hb_units_format(-1, ki->dim, 3, lo, sizeof lo);
+		hb_units_format(1, ki->dim, 3, hi, sizeof hi);
 		snprintf(buf, n, "%s:%s:%d", lo, hi, SV_DEFAULT_N + 1);
 	} else {
 		snprintf(buf, n, "%s", ki->edit);
@@ -156,15 +156,15 @@ open_range_prompt(struct app *a)
 void
 act_sweep(struct app *a)
 {
-	const struct scene *sc = sim_scene(a->sim);
-	struct scene_keyinfo ki;
+	const struct hb_scene *sc = hb_sim_scene(a->sim);
+	struct hb_scene_keyinfo ki;
 	int k = param_key_index(a);
 
-	if (k < 0 || scene_key(sc, k, &ki) != 0) {
+	if (k < 0 || hb_scene_key(sc, k, &ki) != 0) {
 		app_msg(a, 1, "sweep: select a parameter first (Tab, then Up/Down)");
 		return;
 	}
-	if (ki.readonly || (ki.kind != SCENE_KEY_NUMBER && ki.kind != SCENE_KEY_WHOLE)) {
+	if (ki.readonly || (ki.kind != HB_SCENE_KEY_NUMBER && ki.kind != HB_SCENE_KEY_WHOLE)) {
 		app_msg(a, 1, "sweep: %s is %s; a sweep varies a number that is typed (law, bodies, "
 		        "loads, initial, run sections)", ki.key, ki.readonly ? "derived" : "not a number");
 		return;
@@ -217,7 +217,7 @@ sweep_prompt_done(struct app *a, const char *text, int cancelled)
 		app_msg(a, 1, "export: no curve (p pinned it; L or r computes a new one)");
 		return;
 	}
-	if (sweep_curve_write_csv(v->cur.c, path, msg, sizeof msg) != HB_OK) {
+	if (hb_sweep_curve_write_csv(v->cur.c, path, msg, sizeof msg) != HB_OK) {
 		app_msg(a, 1, "export failed, nothing written: %s", msg);
 		return;
 	}
@@ -240,17 +240,17 @@ static void
 next_law(struct app *a, int dir)
 {
 	struct sweep_view *v = a->sv;
-	const struct law_type *const *list = law_list();
+	const struct hb_law_type *const *list = hb_law_list();
 	int n = 0, i = 0;
 	char msg[512];
-	struct scene sc = v->base;
+	struct hb_scene sc = v->base;
 
 	while (list[n])
 		n++;
 	while (i < n && list[i] != v->base.law)
 		i++;
 	i = ((i + dir) % n + n) % n;
-	if (scene_set(&sc, "scene.law", list[i]->name, msg, sizeof msg) != HB_OK) {
+	if (hb_scene_set(&sc, "scene.law", list[i]->name, msg, sizeof msg) != HB_OK) {
 		app_msg(a, 1, "sweep: law %s refused: %s", list[i]->name, msg);
 		return;
 	}
@@ -298,16 +298,16 @@ sweep_view_key(struct app *a, int ch)
 		break;
 	case 'o':
 	case 'O':
-		v->obs = (v->obs + (ch == 'o' ? 1 : CURVE_COUNT - 1)) % CURVE_COUNT;
+		v->obs = (v->obs + (ch == 'o' ? 1 : HB_CURVE_COUNT - 1)) % HB_CURVE_COUNT;
 		restart(a, 1);
 		break;
 	case '>':
 	case '.':
 	case '<':
 	case ',':
-		if (v->obs != CURVE_E && v->obs != CURVE_VI && v->obs != CURVE_XCR) {
+		if (v->obs != HB_CURVE_E && v->obs != HB_CURVE_VI && v->obs != HB_CURVE_XCR) {
 			app_msg(a, 1, "< >: %s does not depend on a collision number (o: the observable)",
-			        sweep_observable_name(v->obs));
+			        hb_sweep_observable_name(v->obs));
 			break;
 		}
 		if (ch == '<' || ch == ',') {
@@ -323,7 +323,7 @@ sweep_view_key(struct app *a, int ch)
 		open_range_prompt(a);
 		break;
 	case 'R':
-		v->base = *sim_scene(a->sim);
+		v->base = *hb_sim_scene(a->sim);
 		curve_start(a);
 		break;
 	case 'L':
@@ -339,7 +339,7 @@ sweep_view_key(struct app *a, int ch)
 		break;
 	case 'e':
 		snprintf(def, sizeof def, "%s-%s-%s.csv", a->preset, v->key,
-		         sweep_observable_name(v->obs));
+		         hb_sweep_observable_name(v->obs));
 		v->prompt = SV_PROMPT_EXPORT;
 		prompt_open(a, PROMPT_SWEEP, def, "export the curve as CSV to");
 		break;

@@ -1,7 +1,7 @@
 /*
  * sweep_view.h - the explorer's sweep view (private to src/tui/): one
  * observable over one parameter, computed by background threads
- * (sweep_curve_start), with pinned curves to compare laws.
+ * (hb_sweep_curve_start), with pinned curves to compare laws.
  *
  * sweep_view.c owns the state and its keys; pane_sweep.c draws it.
  */
@@ -17,7 +17,7 @@ enum { SV_MAX_PINS = 3 };
 
 /* One curve: the engine's computation and the last copy of its points. */
 struct sv_curve {
-	struct sweep_curve *c;
+	struct hb_sweep_curve *c;
 	char label[64];          /* "shccl" (the law), shown in the legend */
 	long n, done, failed;
 	double *x, *y;
@@ -29,9 +29,9 @@ struct sweep_view {
 	char key[48];            /* the parameter swept */
 	char spec[160];          /* FROM:TO:N[:log] as typed */
 	int log;                 /* the range is logarithmic */
-	int obs;                 /* enum sweep_observable */
+	int obs;                 /* enum hb_sweep_observable */
 	long coll;               /* collision index (0-based) for e, v_i, x_c^r */
-	struct scene base;       /* the scene the curve starts from (its law may differ) */
+	struct hb_scene base;       /* the scene the curve starts from (its law may differ) */
 	struct sv_curve cur;     /* cur.c NULL: nothing computing (just pinned) */
 	struct sv_curve pin[SV_MAX_PINS];
 	int npins;

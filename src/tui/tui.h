@@ -8,7 +8,7 @@
  * through app_msg (log.c) and app_relayout.
  *
  * The cursor is a sample index into the current run's arc (always valid:
- * < arc_len); tcur is the playback time it follows while playing.
+ * < hb_arc_len); tcur is the playback time it follows while playing.
  */
 #ifndef HYBOUNCE_TUI_H
 #define HYBOUNCE_TUI_H
@@ -30,14 +30,14 @@ enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH, PROMPT_SWEEP }
 enum { PROMPT_DATA = 16, PROMPT_FIT };  /* overlay_fit.c */
 
 struct pin {
-	struct sim *sim;
+	struct hb_sim *sim;
 	char label[96];             /* what differs from the current run */
 	int branched;               /* the run contains a "branch here" */
 };
 
 struct app {
 	const struct app_options *opt;
-	struct sim *sim;
+	struct hb_sim *sim;
 	char preset[64];            /* name shown in the status line */
 	char preset_path[512];
 	char run_label[96];         /* legend label of the current run */
@@ -45,7 +45,7 @@ struct app {
 	struct pin pin[APP_MAX_PINS];
 	int npins;
 
-	size_t cursor;              /* sample index in sim_arc(sim) */
+	size_t cursor;              /* sample index in hb_sim_arc(sim) */
 	double tcur;                /* playback time, s */
 	double want_t;              /* after an edit: the cursor goes back to this t (-1: none) */
 	int branch_armed;           /* the next edit continues from the cursor (b) */
@@ -68,7 +68,7 @@ struct app {
 
 	int overlay;                /* enum overlay */
 	int pick_sel, pick_top, help_top;
-	struct preset_info *presets;
+	struct hb_preset_info *presets;
 	int npresets;
 	int prompt_kind;
 	char prompt_key[48];
@@ -105,7 +105,7 @@ action_fn act_play, act_step_fwd, act_step_back, act_prev_jump, act_next_jump,
 
 /* nav.c: the cursor and the selections. */
 void cursor_set(struct app *a, size_t i);
-void cursor_clamp(struct app *a);                 /* keeps it < arc_len */
+void cursor_clamp(struct app *a);                 /* keeps it < hb_arc_len */
 long coll_at_cursor(const struct app *a);         /* the collision at the cursor, or -1 */
 void cursor_to_collision(struct app *a, long i);  /* to its commencement; selects its row */
 double view_span(const struct app *a);
@@ -124,9 +124,9 @@ void edit_value(struct app *a, const char *key, const char *text);
 int param_key_index(const struct app *a);
 
 /* runs.c */
-struct sim *load_sim(const char *name, const char *const *sets, int nsets, char *path,
+struct hb_sim *load_sim(const char *name, const char *const *sets, int nsets, char *path,
                      size_t pn, char *msg, size_t n);
-void app_adopt(struct app *a, struct sim *s, const char *path);
+void app_adopt(struct app *a, struct hb_sim *s, const char *path);
 void app_label_runs(struct app *a);               /* legend labels from what differs */
 void pins_clear(struct app *a);
 void export_do(struct app *a, const char *base);
@@ -182,17 +182,17 @@ app_tick(struct app *a);
 void
 app_relayout(struct app *a);
 
-/* Parameter panel rows (pane_params.c): the row list built from scene_key. */
+/* Parameter panel rows (pane_params.c): the row list built from hb_scene_key. */
 struct param_row {
-	int key;          /* scene_key index, or -1 for a section heading */
+	int key;          /* hb_scene_key index, or -1 for a section heading */
 	char section[16];
 };
 int
-params_rows(const struct scene *sc, struct param_row *rows, int max);
+params_rows(const struct hb_scene *sc, struct param_row *rows, int max);
 
 /* Plot helpers shared by the panes (pane_plot.c). */
-const struct collision *
-app_collision(const struct app *a, long i, struct collision *live);
+const struct hb_collision *
+app_collision(const struct app *a, long i, struct hb_collision *live);
 long
 app_ncollisions(const struct app *a);   /* completed + the live one (if any) */
 
@@ -200,7 +200,7 @@ app_ncollisions(const struct app *a);   /* completed + the live one (if any) */
 void
 app_open_preset(struct app *a, const char *name);
 
-/* Changes the law of the current run at the cursor (sim_set_scene). */
+/* Changes the law of the current run at the cursor (hb_sim_set_scene). */
 void
 app_set_law(struct app *a, const char *law);
 

@@ -6,7 +6,7 @@
  * For each preset of the paper (studies 1, 2 and 3) and the two presets with
  * a closed form (nonunique-separation, hertz-elastic), each GSL stepper and
  * rtol = atol in {1e-4, 1e-6, 1e-8, 1e-10, 1e-12}: the wall time of the
- * whole run (sim_new + sim_run, median of up to 5 runs, clock_gettime
+ * whole run (hb_sim_new + hb_sim_run, median of up to 5 runs, clock_gettime
  * CLOCK_MONOTONIC in this process), the steps, the right-hand-side
  * evaluations and the error on what users read.  Then the paper's own
  * setting, the reductions of DESIGN.md section 3, the cost against the
@@ -54,7 +54,7 @@
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
 
-enum { NTOL = 5, NSTEP = STEPPER_AUTO /* the GSL steppers */, MAXREP = 5 };
+enum { NTOL = 5, NSTEP = HB_STEPPER_AUTO /* the GSL steppers */, MAXREP = 5 };
 
 static const double tols[NTOL] = { 1e-4, 1e-6, 1e-8, 1e-10, 1e-12 };
 static const char stepper_letter[NSTEP] = { 'P', 'F', 'C', 'M', 'I', 'B' };
@@ -84,15 +84,15 @@ struct obs {
 	int status;             /* 0 ok, 1 failed, 2 over budget */
 	char msg[400];
 	double sec;             /* median wall time */
-	double cpu;             /* median CPU time in sim_advance (sim_stats.seconds) */
+	double cpu;             /* median CPU time in hb_sim_advance (hb_sim_stats.seconds) */
 	int reps;
 	long steps, rejected, rhs, jac, kinks;
 	int stiff, switched;    /* the engine's stiffness verdict */
 	double hrho;            /* largest h max(-Re lambda) it saw */
 	size_t n;               /* completed collisions */
-	struct collision *c;
+	struct hb_collision *c;
 	int live;               /* 1: a contact is in progress at the end */
-	struct collision lc;    /* its values so far */
+	struct hb_collision lc;    /* its values so far */
 	double tT, xT, vT;      /* state at the end */
 	int qT;
 	long jT;
@@ -139,9 +139,9 @@ obs_free(struct obs *o)
 
 /* Mechanical energy of the reduced system under gravity and a Hertz law. */
 static double
-hertz_energy(const struct scene *sc, const struct arc_sample *a)
+hertz_energy(const struct hb_scene *sc, const struct hb_arc_sample *a)
 {
-	int ik = law_param_index(sc->law, "k"), ip = law_param_index(sc->law, "p");
+	int ik = hb_law_param_index(sc->law, "k"), ip = hb_law_param_index(sc->law, "p");
 	double k = sc->par[ik], p = sc->par[ip], E;
 
 	E = 0.5 * sc->d.m * a->v * a->v + sc->d.m * sc->loads.g * a->x;
@@ -152,12 +152,12 @@ hertz_energy(const struct scene *sc, const struct arc_sample *a)
 
 /* One finished run into o (collisions copied). */
 static void
-collect(struct sim *s, struct obs *o)
+collect(struct hb_sim *s, struct obs *o)
 {
-	const struct arc *a = sim_arc(s);
-	const struct sim_stats *st = sim_stats(s);
-	const struct arc_sample *l = arc_last(a);
-	size_t i, n = arc_len(a);
+	const struct hb_arc *a = hb_sim_arc(s);
+	const struct hb_sim_stats *st = hb_sim_stats(s);
+	const struct hb_arc_sample *l = hb_arc_last(a);
+	size_t i, n = hb_arc_len(a);
 
 	o->steps = st->steps;
 	o->rejected = st->rejected;
@@ -167,11 +167,11 @@ collect(struct sim *s, struct obs *o)
 	o->stiff = st->stiff;
 	o->switched = st->switched;
 	o->hrho = st->stiff_hrho;
-	o->n = sim_ncollisions(s);
-	o->live = sim_contact_live(s, &o->lc);
+	o->n = hb_sim_ncollisions(s);
+	o->live = hb_sim_contact_live(s, &o->lc);
 	o->c = calloc(o->n ? o->n : 1, sizeof *o->c);
 	for (i = 0; i < o->n; i++)
-		o->c[i] = *sim_collision(s, i);
+		o->c[i] = *hb_sim_collision(s, i);
 	o->tT = l->t;
 	o->xT = l->x;
 	o->vT = l->v;
@@ -179,50 +179,50 @@ collect(struct sim *s, struct obs *o)
 	o->jT = l->j;
 	o->X = o->V = 0;
 	for (i = 0; i < n; i++) {
-		o->X = fmax(o->X, fabs(arc_at(a, i)->x));
-		o->V = fmax(o->V, fabs(arc_at(a, i)->v));
+		o->X = fmax(o->X, fabs(hb_arc_at(a, i)->x));
+		o->V = fmax(o->V, fabs(hb_arc_at(a, i)->v));
 	}
-	if (sim_scene(s)->law == law_find("hertz")) {
-		double E0 = hertz_energy(sim_scene(s), arc_at(a, 0));
+	if (hb_sim_scene(s)->law == hb_law_find("hertz")) {
+		double E0 = hertz_energy(hb_sim_scene(s), hb_arc_at(a, 0));
 
-		o->dE = fabs(hertz_energy(sim_scene(s), l) - E0) / fabs(E0);
+		o->dE = fabs(hertz_energy(hb_sim_scene(s), l) - E0) / fabs(E0);
 	}
 	o->samples = n;
-	o->bytes = arc_bytes(a);
-	o->thinned = arc_thinned(a);
+	o->bytes = hb_arc_bytes(a);
+	o->thinned = hb_arc_thinned(a);
 }
 
 /* One timed run; returns the wall time, or a negative value on failure. */
 static double
-run_once(const struct scene *sc, struct obs *o, int keep)
+run_once(const struct hb_scene *sc, struct obs *o, int keep)
 {
 	char msg[380];
-	struct sim *s;
+	struct hb_sim *s;
 	double t0 = now(), t1, cpu = 0;
 	int rc = HB_OK;
 
-	s = sim_new(sc, msg, sizeof msg);
+	s = hb_sim_new(sc, msg, sizeof msg);
 	if (!s) {
 		o->status = 1;
 		snprintf(o->msg, sizeof o->msg, "sim_new: %s", msg);
 		return -1;
 	}
-	while (sim_end(s) == SIM_RUNNING) {
-		rc = sim_advance(s, 0, 1.0);
+	while (hb_sim_end(s) == HB_SIM_RUNNING) {
+		rc = hb_sim_advance(s, 0, 1.0);
 		if (rc != HB_OK)
 			break;
-		cpu = sim_stats(s)->seconds;
+		cpu = hb_sim_stats(s)->seconds;
 		if (cpu > budget_s)
 			break;
 	}
 	t1 = now();
-	if (sim_end(s) == SIM_RUNNING) {
+	if (hb_sim_end(s) == HB_SIM_RUNNING) {
 		o->status = 2;
 		snprintf(o->msg, sizeof o->msg, "over budget: %.0f s of CPU, t = %.6g s",
-		         budget_s, arc_last(sim_arc(s))->t);
-	} else if (sim_end(s) == SIM_END_FAIL) {
+		         budget_s, hb_arc_last(hb_sim_arc(s))->t);
+	} else if (hb_sim_end(s) == HB_SIM_END_FAIL) {
 		o->status = 1;
-		snprintf(o->msg, sizeof o->msg, "%s", sim_errmsg(s));
+		snprintf(o->msg, sizeof o->msg, "%s", hb_sim_errmsg(s));
 	} else {
 		o->status = 0;
 		o->msg[0] = 0;
@@ -231,14 +231,14 @@ run_once(const struct scene *sc, struct obs *o, int keep)
 		obs_free(o);
 		collect(s, o);
 	}
-	o->cpu = sim_stats(s)->seconds;
-	sim_free(s);
+	o->cpu = hb_sim_stats(s)->seconds;
+	hb_sim_free(s);
 	return o->status ? -1 : t1 - t0;
 }
 
 /* Timed runs: up to MAXREP, fewer when a run is slow; o gets the median. */
 static void
-run_timed(const struct scene *sc, struct obs *o, int maxrep)
+run_timed(const struct hb_scene *sc, struct obs *o, int maxrep)
 {
 	double t[MAXREP], c[MAXREP];
 	int r, reps;
@@ -285,7 +285,7 @@ compare(const struct obs *o, const struct obs *r, enum ref_kind kind, struct err
 
 	memset(e, 0, sizeof *e);
 	for (i = 0; i < n; i++) {
-		const struct collision *a = &o->c[i], *b = &r->c[i];
+		const struct hb_collision *a = &o->c[i], *b = &r->c[i];
 		double dt = fmax(fabs(a->te - b->te), fabs(a->ts - b->ts)) / b->td;
 
 		e->t = fmax(e->t, dt);
@@ -314,9 +314,9 @@ compare(const struct obs *o, const struct obs *r, enum ref_kind kind, struct err
 
 /* The linear law k min(x_c, 0), no load: one collision, exact. */
 static void
-closed_linear(const struct scene *sc, struct obs *r)
+closed_linear(const struct hb_scene *sc, struct obs *r)
 {
-	double k = sc->par[law_param_index(sc->law, "k")], m = sc->d.m;
+	double k = sc->par[hb_law_param_index(sc->law, "k")], m = sc->d.m;
 	double w = sqrt(k / m), v0 = fabs(sc->init.v0);
 
 	memset(r, 0, sizeof *r);
@@ -363,10 +363,10 @@ hz_integrand(double s, void *params)
  * (x = d (1 - s^2) removes the end singularity), flights 2 v / g.
  */
 static void
-closed_hertz(const struct scene *sc, struct obs *r)
+closed_hertz(const struct hb_scene *sc, struct obs *r)
 {
 	struct hz h;
-	double k = sc->par[law_param_index(sc->law, "k")], v, tf, te0, td, res, aerr;
+	double k = sc->par[hb_law_param_index(sc->law, "k")], v, tf, te0, td, res, aerr;
 	gsl_integration_glfixed_table *tab = gsl_integration_glfixed_table_alloc(96);
 	gsl_integration_glfixed_table *tab2 = gsl_integration_glfixed_table_alloc(64);
 	gsl_function F;
@@ -375,7 +375,7 @@ closed_hertz(const struct scene *sc, struct obs *r)
 
 	memset(r, 0, sizeof *r);
 	h.g = sc->loads.g;
-	h.p = sc->par[law_param_index(sc->law, "p")];
+	h.p = sc->par[hb_law_param_index(sc->law, "p")];
 	h.km = k / sc->d.m;
 	v = sqrt(2 * h.g * sc->init.x0);
 	h.v2 = v * v;
@@ -419,12 +419,12 @@ closed_hertz(const struct scene *sc, struct obs *r)
 /* Output helpers.                                                          */
 
 static int
-load(const char *dir, const char *name, struct scene *sc)
+load(const char *dir, const char *name, struct hb_scene *sc)
 {
 	char path[1024], msg[512];
 
 	snprintf(path, sizeof path, "%s/%s.preset", dir, name);
-	if (preset_load(path, sc, msg, sizeof msg)) {
+	if (hb_preset_load(path, sc, msg, sizeof msg)) {
 		fprintf(stderr, "hybounce-bench: %s\n", msg);
 		return -1;
 	}
@@ -432,18 +432,18 @@ load(const char *dir, const char *name, struct scene *sc)
 }
 
 static void
-set(struct scene *sc, const char *key, const char *val)
+set(struct hb_scene *sc, const char *key, const char *val)
 {
 	char msg[512];
 
-	if (scene_set(sc, key, val, msg, sizeof msg)) {
+	if (hb_scene_set(sc, key, val, msg, sizeof msg)) {
 		fprintf(stderr, "hybounce-bench: %s\n", msg);
 		exit(1);
 	}
 }
 
 static void
-set_tol(struct scene *sc, int stepper, double rtol, double atol)
+set_tol(struct hb_scene *sc, int stepper, double rtol, double atol)
 {
 	sc->run.stepper = stepper;
 	sc->run.rtol = rtol;
@@ -535,12 +535,12 @@ static const struct {
 	int st;
 	double rtol, atol;
 } extra[] = {
-	{ STEPPER_RK8PD, 1e-10, 1e-14 }, { STEPPER_RK8PD, 1e-11, 1e-16 },
-	{ STEPPER_RK8PD, 1e-12, 1e-14 }, { STEPPER_RK8PD, 1e-12, 1e-16 },
-	{ STEPPER_RK8PD, 1e-13, 1e-14 }, { STEPPER_RK8PD, 1e-13, 1e-16 },
+	{ HB_STEPPER_RK8PD, 1e-10, 1e-14 }, { HB_STEPPER_RK8PD, 1e-11, 1e-16 },
+	{ HB_STEPPER_RK8PD, 1e-12, 1e-14 }, { HB_STEPPER_RK8PD, 1e-12, 1e-16 },
+	{ HB_STEPPER_RK8PD, 1e-13, 1e-14 }, { HB_STEPPER_RK8PD, 1e-13, 1e-16 },
 	/* DOP853 with dense output and kinks as modes (issue 8); 3e-14/1e-14 the presets' default */
-	{ STEPPER_DOP853, 1e-12, 1e-14 }, { STEPPER_DOP853, 1e-13, 1e-14 },
-	{ STEPPER_DOP853, 3e-14, 1e-14 }, { STEPPER_DOP853, 1e-14, 1e-14 },
+	{ HB_STEPPER_DOP853, 1e-12, 1e-14 }, { HB_STEPPER_DOP853, 1e-13, 1e-14 },
+	{ HB_STEPPER_DOP853, 3e-14, 1e-14 }, { HB_STEPPER_DOP853, 1e-14, 1e-14 },
 };
 enum { NEXTRA = sizeof extra / sizeof extra[0] };
 static struct cell xgrid[NSTUDY][NEXTRA];
@@ -551,7 +551,7 @@ static struct err refAB[NSTUDY], paperE[NSTUDY], dfltE[NSTUDY];
 static const struct obs *
 reference_for(int s, int stepper)
 {
-	return stepper == STEPPER_RK8PD ? &refB[s] : &refA[s];
+	return stepper == HB_STEPPER_RK8PD ? &refB[s] : &refA[s];
 }
 
 /*
@@ -613,15 +613,15 @@ ref_check(const char *pdir, const char *name)
 		int st;
 		double rtol, atol;
 	} cand[] = {
-		{ STEPPER_RK8PD, 1e-14, 1e-14 }, { STEPPER_RK8PD, 1e-14, 1e-16 },
-		{ STEPPER_RK8PD, 1e-14, 1e-18 }, { STEPPER_RK8PD, 1e-13, 1e-16 },
-		{ STEPPER_RKCK, 1e-14, 1e-14 },  { STEPPER_RKCK, 1e-14, 1e-18 },
-		{ STEPPER_RKF45, 1e-14, 1e-18 }, { STEPPER_RK4IMP, 1e-14, 1e-18 },
-		{ STEPPER_MSBDF, 1e-14, 1e-18 },
+		{ HB_STEPPER_RK8PD, 1e-14, 1e-14 }, { HB_STEPPER_RK8PD, 1e-14, 1e-16 },
+		{ HB_STEPPER_RK8PD, 1e-14, 1e-18 }, { HB_STEPPER_RK8PD, 1e-13, 1e-16 },
+		{ HB_STEPPER_RKCK, 1e-14, 1e-14 },  { HB_STEPPER_RKCK, 1e-14, 1e-18 },
+		{ HB_STEPPER_RKF45, 1e-14, 1e-18 }, { HB_STEPPER_RK4IMP, 1e-14, 1e-18 },
+		{ HB_STEPPER_MSBDF, 1e-14, 1e-18 },
 	};
 	enum { NC = sizeof cand / sizeof cand[0] };
 	struct obs o[NC];
-	struct scene sc;
+	struct hb_scene sc;
 	struct err e;
 	int a, b;
 
@@ -631,7 +631,7 @@ ref_check(const char *pdir, const char *name)
 		set_tol(&sc, cand[a].st, cand[a].rtol, cand[a].atol);
 		run_timed(&sc, &o[a], 1);
 		printf("%d: %-6s %g/%g  %s %.1f ms  %zu collisions  %ld steps\n", a,
-		       scene_stepper_name(cand[a].st), cand[a].rtol, cand[a].atol,
+		       hb_scene_stepper_name(cand[a].st), cand[a].rtol, cand[a].atol,
 		       o[a].status ? o[a].msg : "ok", o[a].sec * 1e3, o[a].n, o[a].steps);
 	}
 	printf("collision error (t,e,xc,F max) / horizon error, row against column\n    ");
@@ -661,7 +661,7 @@ main(int argc, char **argv)
 	const char *out = "build/bench", *pdir = "presets", *refcheck = NULL;
 	char path[1024], b1[16], b2[16], b3[16], b4[16], b5[16], b6[16];
 	FILE *md, *csv;
-	struct scene sc;
+	struct hb_scene sc;
 	double T0 = now();
 	int i, s, st, t;
 
@@ -697,9 +697,9 @@ main(int argc, char **argv)
 	for (s = 0; s < NSTUDY; s++) {
 		if (load(pdir, studies[s].preset, &sc))
 			return 1;
-		set_tol(&sc, STEPPER_RK8PD, 1e-14, 1e-18);
+		set_tol(&sc, HB_STEPPER_RK8PD, 1e-14, 1e-18);
 		run_timed(&sc, &refA[s], 1);
-		set_tol(&sc, STEPPER_RKCK, 1e-14, 1e-18);
+		set_tol(&sc, HB_STEPPER_RKCK, 1e-14, 1e-18);
 		run_timed(&sc, &refB[s], 1);
 		if (refA[s].status || refB[s].status) {
 			fprintf(stderr, "hybounce-bench: %s: reference failed: %s%s\n",
@@ -745,19 +745,19 @@ main(int argc, char **argv)
 					compare(&c->o, reference_for(s, st), studies[s].kind, &c->e);
 				fprintf(csv, "%s,%s,%g,%g,%s,%.6g,%.6g,%d,%ld,%ld,%ld,%ld,%zu,%ld,"
 				             "%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%s,\"",
-				        studies[s].preset, scene_stepper_name(st), tols[t], tols[t],
+				        studies[s].preset, hb_scene_stepper_name(st), tols[t], tols[t],
 				        c->o.status == 0 ? "ok" : c->o.status == 1 ? "failed" : "budget",
 				        c->o.sec * 1e3, c->o.cpu * 1e3, c->o.reps, c->o.steps, c->o.rejected, c->o.rhs,
 				        c->o.jac, c->o.n, c->e.dn, c->e.t, c->e.tabs, c->e.e, c->e.xc, c->e.F,
 				        c->e.coll, c->e.T,
 				        studies[s].kind != REF_RUN ? "closed form"
-				        : st == STEPPER_RK8PD ? "rkck 1e-14/1e-18" : "rk8pd 1e-14/1e-18");
+				        : st == HB_STEPPER_RK8PD ? "rkck 1e-14/1e-18" : "rk8pd 1e-14/1e-18");
 				for (const char *q = c->o.msg; *q; q++)
 					fprintf(csv, *q == '"' ? "\"\"" : "%c", *q);
 				fprintf(csv, "\"\n");
 				if (c->o.status)
 					fprintf(stderr, "  %s %s %g: %s\n", studies[s].preset,
-					        scene_stepper_name(st), tols[t], c->o.msg);
+					        hb_scene_stepper_name(st), tols[t], c->o.msg);
 			}
 		fprintf(stderr, "grid %-26s done (%.0f s)\n", studies[s].preset, now() - T0);
 	}
@@ -769,7 +769,7 @@ main(int argc, char **argv)
 		run_timed(&sc, &dflt[s], MAXREP);
 		if (!dflt[s].status)
 			compare(&dflt[s], reference_for(s, sc.run.stepper), studies[s].kind, &dfltE[s]);
-		set_tol(&sc, STEPPER_RK8PD, 1e-11, 1e-14);
+		set_tol(&sc, HB_STEPPER_RK8PD, 1e-11, 1e-14);
 		run_timed(&sc, &paper[s], MAXREP);
 		if (!paper[s].status)
 			compare(&paper[s], &refB[s], studies[s].kind, &paperE[s]);
@@ -814,13 +814,13 @@ main(int argc, char **argv)
 				compare(&c->o, reference_for(s, extra[i].st), studies[s].kind, &c->e);
 			fprintf(csv, "%s,%s,%g,%g,%s,%.6g,%.6g,%d,%ld,%ld,%ld,%ld,%zu,%ld,"
 			             "%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%.3e,%s,\"%s\"\n",
-			        studies[s].preset, scene_stepper_name(extra[i].st), extra[i].rtol,
+			        studies[s].preset, hb_scene_stepper_name(extra[i].st), extra[i].rtol,
 			        extra[i].atol, c->o.status ? "failed" : "ok", c->o.sec * 1e3, c->o.cpu * 1e3,
 			        c->o.reps,
 			        c->o.steps, c->o.rejected, c->o.rhs, c->o.jac, c->o.n, c->e.dn, c->e.t,
 			        c->e.tabs, c->e.e, c->e.xc, c->e.F, c->e.coll, c->e.T,
 			        studies[s].kind != REF_RUN       ? "closed form"
-			        : extra[i].st == STEPPER_RK8PD ? "rkck 1e-14/1e-18" : "rk8pd 1e-14/1e-18",
+			        : extra[i].st == HB_STEPPER_RK8PD ? "rkck 1e-14/1e-18" : "rk8pd 1e-14/1e-18",
 			        c->o.status ? "failed" : "");
 		}
 	}
@@ -839,11 +839,11 @@ main(int argc, char **argv)
 
 				if (c->o.status) {
 					fprintf(md, "| %s | %g | failed | | | | | | | | | %s |\n",
-					        scene_stepper_name(st), tols[t], c->o.msg);
+					        hb_scene_stepper_name(st), tols[t], c->o.msg);
 					continue;
 				}
 				fprintf(md, "| %s | %g | %.2f | %ld | %ld | %zu | %ld | %s | %s | %s | %s | %s |\n",
-				        scene_stepper_name(st), tols[t], c->o.sec * 1e3, c->o.steps,
+				        hb_scene_stepper_name(st), tols[t], c->o.sec * 1e3, c->o.steps,
 				        c->o.rhs, c->o.n, c->e.dn, fmt_e(b1, c->e.t), fmt_e(b2, c->e.e),
 				        fmt_e(b3, c->e.xc), fmt_e(b4, c->e.F), fmt_e(b5, c->e.T));
 				pts[np].ms = c->o.sec * 1e3;
@@ -862,7 +862,7 @@ main(int argc, char **argv)
 			if (c->o.status)
 				continue;
 			fprintf(md, "| %s (%ld rejected) | %g/%g | %.2f | %ld | %ld | %zu | %ld | %s | %s | %s | %s | %s |\n",
-			        scene_stepper_name(extra[i].st), c->o.rejected,
+			        hb_scene_stepper_name(extra[i].st), c->o.rejected,
 			        extra[i].rtol, extra[i].atol, c->o.sec * 1e3, c->o.steps, c->o.rhs, c->o.n,
 			        c->e.dn, fmt_e(b1, c->e.t), fmt_e(b2, c->e.e), fmt_e(b3, c->e.xc),
 			        fmt_e(b4, c->e.F), fmt_e(b5, c->e.T));
@@ -899,7 +899,7 @@ main(int argc, char **argv)
 			fprintf(md, "| %s | paper | failed: %s |||||||\n", studies[s].preset, paper[s].msg);
 		if (!dflt[s].status)
 			fprintf(md, "| %s | preset: %s %g/%g | %.2f | %.2f | %zu | %s | %s | %s | %s | %s | %s |\n",
-			        studies[s].preset, scene_stepper_name(sc.run.stepper), sc.run.rtol,
+			        studies[s].preset, hb_scene_stepper_name(sc.run.stepper), sc.run.rtol,
 			        sc.run.atol, dflt[s].sec * 1e3, dflt[s].cpu * 1e3, dflt[s].n, fmt_e(b1, dfltE[s].t),
 			        fmt_e(b6, dfltE[s].tabs),
 			        fmt_e(b2, dfltE[s].e), fmt_e(b3, dfltE[s].xc), fmt_e(b4, dfltE[s].F),
@@ -935,13 +935,13 @@ main(int argc, char **argv)
 				cst = extra[i - NSTEP * NTOL].st, rt = extra[i - NSTEP * NTOL].rtol,
 				at = extra[i - NSTEP * NTOL].atol;
 			ok = qualify(cells, &slow, &ratio);
-			fprintf(md, "| %s | %g | %g | %s | %.2f | %.2g |\n", scene_stepper_name(cst), rt, at,
+			fprintf(md, "| %s | %g | %g | %s | %.2f | %.2g |\n", hb_scene_stepper_name(cst), rt, at,
 			        ok ? "**yes**" : "no", slow, ratio);
 			if (ok && slow < best_ms) {
 				best_ms = slow;
 				best = i;
 				snprintf(best_label, sizeof best_label, "%s at rtol %g, atol %g",
-				         scene_stepper_name(cst), rt, at);
+				         hb_scene_stepper_name(cst), rt, at);
 			}
 		}
 		if (best >= 0)
@@ -973,7 +973,7 @@ main(int argc, char **argv)
 				if (load(pdir, studies[s].preset, &sc))
 					return 1;
 				if (w == 0)
-					set_tol(&sc, STEPPER_RK8PD, 1e-11, 1e-14);
+					set_tol(&sc, HB_STEPPER_RK8PD, 1e-11, 1e-14);
 				sc.run.kinks = kk;
 				run_timed(&sc, &o, MAXREP);
 				if (o.status) {
@@ -1066,9 +1066,9 @@ main(int argc, char **argv)
 
 			if (load(pdir, hard[i], &sc))
 				return 1;
-			set_tol(&sc, STEPPER_RK8PD, 1e-14, 1e-18);
+			set_tol(&sc, HB_STEPPER_RK8PD, 1e-14, 1e-18);
 			run_timed(&sc, &ra, 1);
-			set_tol(&sc, STEPPER_RKCK, 1e-14, 1e-18);
+			set_tol(&sc, HB_STEPPER_RKCK, 1e-14, 1e-18);
 			run_timed(&sc, &rb, 1);
 			if (ra.status)
 				fprintf(md, "| %s | reference rk8pd 1e-14/1e-18 | failed: %s |||||||||\n",
@@ -1076,11 +1076,11 @@ main(int argc, char **argv)
 			if (rb.status)
 				fprintf(md, "| %s | reference rkck 1e-14/1e-18 | failed: %s |||||||||\n",
 				        hard[i], rb.msg);
-			for (st = 0; st < STEPPER_COUNT; st++)
+			for (st = 0; st < HB_STEPPER_COUNT; st++)
 				for (t = 0; t < 2; t++) {
 					struct obs o;
 					struct err e = { 0 };
-					const struct obs *ref = st == STEPPER_RK8PD ? &rb : &ra;
+					const struct obs *ref = st == HB_STEPPER_RK8PD ? &rb : &ra;
 					double emax = 0;
 					size_t k;
 
@@ -1088,9 +1088,9 @@ main(int argc, char **argv)
 					run_timed(&sc, &o, 3);
 					if (o.status) {
 						fprintf(md, "| %s | %s | %g | failed: %s ||||||||\n", hard[i],
-						        scene_stepper_name(st), htol[t], o.msg);
+						        hb_scene_stepper_name(st), htol[t], o.msg);
 						fprintf(stderr, "  %s %s %g: %s\n", hard[i],
-						        scene_stepper_name(st), htol[t], o.msg);
+						        hb_scene_stepper_name(st), htol[t], o.msg);
 						obs_free(&o);
 						continue;
 					}
@@ -1102,7 +1102,7 @@ main(int argc, char **argv)
 
 					snprintf(sv, sizeof sv, "%s (%.2g)", o.switched ? "yes: went implicit" : o.stiff ? "yes" : "no", o.hrho);
 					fprintf(md, "| %s | %s | %g | %.2f | %ld | %ld | %zu | %ld | %s | %s | %s | %s |\n",
-					        hard[i], scene_stepper_name(st), htol[t], o.sec * 1e3, o.steps,
+					        hard[i], hb_scene_stepper_name(st), htol[t], o.sec * 1e3, o.steps,
 					        o.rhs, o.n, ref->status ? 0 : e.dn,
 					        ref->status ? "-" : fmt_e(b1, e.coll),
 					        ref->status ? "-" : fmt_e(b2, e.T),
@@ -1174,30 +1174,30 @@ main(int argc, char **argv)
 		}
 		if (pid == 0) {
 			char msg[400];
-			struct sim *sm;
+			struct hb_sim *sm;
 			double t0 = now();
 
 			close(fd[0]);
-			sm = sim_new(&sc, msg, sizeof msg);
+			sm = hb_sim_new(&sc, msg, sizeof msg);
 			if (sm) {
-				while (sim_end(sm) == SIM_RUNNING) {
-					if (sim_advance(sm, 500, 0) != HB_OK)
+				while (hb_sim_end(sm) == HB_SIM_RUNNING) {
+					if (hb_sim_advance(sm, 500, 0) != HB_OK)
 						break;
-					if (arc_bytes(sim_arc(sm)) > mr.peak)
-						mr.peak = arc_bytes(sim_arc(sm));
-					if (arc_len(sim_arc(sm)) > mr.peak_n)
-						mr.peak_n = arc_len(sim_arc(sm));
+					if (hb_arc_bytes(hb_sim_arc(sm)) > mr.peak)
+						mr.peak = hb_arc_bytes(hb_sim_arc(sm));
+					if (hb_arc_len(hb_sim_arc(sm)) > mr.peak_n)
+						mr.peak_n = hb_arc_len(hb_sim_arc(sm));
 				}
 				mr.wall = now() - t0;
 				mr.ok = 1;
-				snprintf(mr.end, sizeof mr.end, "%s", sim_end_str(sm));
-				mr.steps = sim_stats(sm)->steps;
-				mr.rhs = sim_stats(sm)->rhs;
-				mr.kinks = sim_stats(sm)->kinks;
-				mr.ncoll = sim_ncollisions(sm);
-				mr.samples = arc_len(sim_arc(sm));
-				mr.thinned = arc_thinned(sim_arc(sm));
-				sim_free(sm);
+				snprintf(mr.end, sizeof mr.end, "%s", hb_sim_end_str(sm));
+				mr.steps = hb_sim_stats(sm)->steps;
+				mr.rhs = hb_sim_stats(sm)->rhs;
+				mr.kinks = hb_sim_stats(sm)->kinks;
+				mr.ncoll = hb_sim_ncollisions(sm);
+				mr.samples = hb_arc_len(hb_sim_arc(sm));
+				mr.thinned = hb_arc_thinned(hb_sim_arc(sm));
+				hb_sim_free(sm);
 			} else
 				snprintf(mr.end, sizeof mr.end, "sim_new: %.180s", msg);
 			if (write(fd[1], &mr, sizeof mr) != (ssize_t)sizeof mr)

@@ -133,7 +133,7 @@ hybounce*) ok "the installed binary runs ($v)" ;;
 esac
 
 # Re-entrancy: no object of the core in writable static storage, except
-# preset_dirs()'s per-thread buffer (.tbss) with the pthread key that frees
+# hb_preset_dirs()'s per-thread buffer (.tbss) with the pthread key that frees
 # it when its thread ends (dirs_tls, dirs_once: set once by pthread_once),
 # the step type pointer hb_step_bsimp_shifted, which is set once at
 # compile time, like GSL's own, and the table of libaubio's functions,

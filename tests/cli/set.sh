@@ -1,5 +1,5 @@
 #!/bin/sh
-# --set is read by one function (preset_open) for both front ends: the batch
+# --set is read by one function (hb_preset_open) for both front ends: the batch
 # run and the explorer accept the same overrides (blanks around the key and
 # the value are ignored) and refuse the same ones with the same message and
 # exit status 2.

@@ -5,11 +5,11 @@
 #     tables live in .rodata / .data.rel.ro, per-thread buffers in .tbss)
 #     are only hb_step_bsimp_shifted, a pointer to a const step type set at
 #     load time and never written (declared like GSL's own
-#     gsl_odeiv2_step_*), and preset_dirs()'s thread key, created once
+#     gsl_odeiv2_step_*), and hb_preset_dirs()'s thread key, created once
 #     under pthread_once (dirs_tls, dirs_once in preset_find.c), and the
 #     table of libaubio's functions, loaded once under pthread_once and only
 #     read after (aubio_once, aubio_tab, aubio_loaded, aubio_why in
-#     onset_aubio.c).  The lock around sim_new() (GSL's process-wide
+#     onset_aubio.c).  The lock around hb_sim_new() (GSL's process-wide
 #     error handler) belongs to each sweep, not to static storage.
 #  2. One point, 12 times, on 4 threads: every row and collision equal.
 # make check-tsan runs this script with a ThreadSanitizer build

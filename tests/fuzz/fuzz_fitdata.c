@@ -1,5 +1,5 @@
 /*
- * fuzz_fitdata.c - the data files of `hybounce fit` (fit_data_read): any
+ * fuzz_fitdata.c - the data files of `hybounce fit` (hb_fit_data_read): any
  * input is read or refused with a message, never a crash, a leak or a
  * read out of bounds; what is read keeps the invariant of fit_data.c (n >=
  * 1 rows, finite values, sd > 0, a sequence's times increasing).
@@ -14,7 +14,7 @@
 int
 LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-	struct fit_data d;
+	struct hb_fit_data d;
 	char msg[512];
 	FILE *f = fmemopen((void *)data, size ? size : 1, "r");
 
@@ -24,21 +24,21 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		fclose(f);
 		return 0;
 	}
-	if (fit_data_read(f, "fuzz.csv", &d, msg, sizeof msg) == HB_OK) {
-		if (d.n == 0 || fit_npoints(&d) == 0)
+	if (hb_fit_data_read(f, "fuzz.csv", &d, msg, sizeof msg) == HB_OK) {
+		if (d.n == 0 || hb_fit_npoints(&d) == 0)
 			abort();
-		for (int k = 0; k < FIT_OBS_COUNT; k++)
+		for (int k = 0; k < HB_FIT_OBS_COUNT; k++)
 			for (size_t i = 0; i < d.n; i++) {
 				if (d.col[k] != NULL && !isfinite(d.col[k][i]))
 					abort();
 				if (d.sd[k] != NULL && !(d.sd[k][i] > 0))
 					abort();
 			}
-		if (d.kind == FIT_SEQUENCE)
+		if (d.kind == HB_FIT_SEQUENCE)
 			for (size_t i = 1; i < d.n; i++)
-				if (!(d.col[FIT_OBS_TE][i] > d.col[FIT_OBS_TE][i - 1]))
+				if (!(d.col[HB_FIT_OBS_TE][i] > d.col[HB_FIT_OBS_TE][i - 1]))
 					abort();
-		fit_data_free(&d);
+		hb_fit_data_free(&d);
 	} else if (msg[0] == '\0') {
 		abort(); /* a refusal always says why */
 	}

@@ -1,7 +1,7 @@
 /*
- * fuzz_preset.c - the preset parser (preset_load_string) on any text: it
+ * fuzz_preset.c - the preset parser (hb_preset_load_string) on any text: it
  * loads or refuses with a message, never crashes; a loaded scene is valid
- * (scene_validate agrees) and can be formatted and listed in the panel.
+ * (hb_scene_validate agrees) and can be formatted and listed in the panel.
  */
 #include <stdio.h>
 
@@ -13,11 +13,11 @@ int
 LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	char *text = fuzz_string(data, size), msg[1024], buf[8192];
-	struct scene sc;
+	struct hb_scene sc;
 	int rc;
 
 	msg[0] = '\0';
-	rc = preset_load_string(text, "fuzz.preset", &sc, msg, sizeof msg);
+	rc = hb_preset_load_string(text, "fuzz.preset", &sc, msg, sizeof msg);
 	if (rc != HB_OK) {
 		/* a refusal names the file and says what is wrong */
 		if (strncmp(msg, "fuzz.preset", 11) != 0 || strlen(msg) < 16) {
@@ -25,15 +25,15 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 			abort();
 		}
 	} else {
-		struct scene_keyinfo ki;
+		struct hb_scene_keyinfo ki;
 
-		if (scene_validate(&sc, msg, sizeof msg) != HB_OK) {
+		if (hb_scene_validate(&sc, msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, "loaded but not valid: %s\n", msg);
 			abort();
 		}
-		preset_format(&sc, buf, sizeof buf);
-		for (int i = 0; i < scene_nkeys(&sc); i++)
-			scene_key(&sc, i, &ki);
+		hb_preset_format(&sc, buf, sizeof buf);
+		for (int i = 0; i < hb_scene_nkeys(&sc); i++)
+			hb_scene_key(&sc, i, &ki);
 	}
 	free(text);
 	return 0;

@@ -1,6 +1,6 @@
 /*
  * fuzz_roundtrip.c - "a saved scene loads back to the same scene": any
- * preset text that loads is formatted as a preset (preset_format, what
+ * preset text that loads is formatted as a preset (hb_preset_format, what
  * --trace/--collisions save beside the CSV), loaded again, and the two
  * scenes must agree in every value, to the bit (abort otherwise).
  */
@@ -42,7 +42,7 @@ same_s(const char *what, const char *a, const char *b)
 }
 
 static void
-same_scene(const struct scene *a, const struct scene *b)
+same_scene(const struct hb_scene *a, const struct hb_scene *b)
 {
 	static const char *const bn[2] = { "body1", "body2" };
 	char w[64];
@@ -50,7 +50,7 @@ same_scene(const struct scene *a, const struct scene *b)
 	same_s("scene.name", a->name, b->name);
 	same_s("scene.description", a->description, b->description);
 	for (int i = 0; i < 2; i++) {
-		const struct scene_body *x = &a->body[i], *y = &b->body[i];
+		const struct hb_scene_body *x = &a->body[i], *y = &b->body[i];
 
 #define W(f) (snprintf(w, sizeof w, "%s.%s", bn[i], f), w)
 		same_s(W("name"), x->name, y->name);
@@ -87,7 +87,7 @@ same_scene(const struct scene *a, const struct scene *b)
 	}
 	same_d("initial.x0", a->init.x0, b->init.x0);
 	same_d("initial.v0", a->init.v0, b->init.v0);
-	if (a->d.system == SCENE_FULL) {
+	if (a->d.system == HB_SCENE_FULL) {
 		same_d("initial.x_m0", a->init.xm0, b->init.xm0);
 		same_d("initial.v_m0", a->init.vm0, b->init.vm0);
 	}
@@ -109,19 +109,19 @@ int
 LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	char *text = fuzz_string(data, size), msg[1024], *saved;
-	struct scene sc, back;
+	struct hb_scene sc, back;
 	size_t need;
 
-	if (preset_load_string(text, "fuzz.preset", &sc, msg, sizeof msg) != HB_OK) {
+	if (hb_preset_load_string(text, "fuzz.preset", &sc, msg, sizeof msg) != HB_OK) {
 		free(text);
 		return 0;
 	}
-	need = preset_format(&sc, NULL, 0);
+	need = hb_preset_format(&sc, NULL, 0);
 	saved = malloc(need + 1);
 	if (saved == NULL)
 		abort();
-	preset_format(&sc, saved, need + 1);
-	if (preset_load_string(saved, "saved.preset", &back, msg, sizeof msg) != HB_OK) {
+	hb_preset_format(&sc, saved, need + 1);
+	if (hb_preset_load_string(saved, "saved.preset", &back, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, "the saved scene does not load back: %s\n--- saved:\n%s\n---\n",
 		        msg, saved);
 		abort();

@@ -18,32 +18,32 @@ int
 LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
 	char *text = fuzz_string(data, size), msg[2048];
-	struct scene sc;
-	struct sim *s;
+	struct hb_scene sc;
+	struct hb_sim *s;
 
-	if (preset_load_string(text, "fuzz.preset", &sc, msg, sizeof msg) == HB_OK) {
+	if (hb_preset_load_string(text, "fuzz.preset", &sc, msg, sizeof msg) == HB_OK) {
 		/* keep each input short: a small arc bound too */
 		if (sc.run.max_samples > 4096)
 			sc.run.max_samples = 4096;
-		s = sim_new(&sc, msg, sizeof msg);
+		s = hb_sim_new(&sc, msg, sizeof msg);
 		if (s != NULL) {
-			struct collision live;
-			struct check_physics ph;
-			int rc = sim_advance(s, 400, 0.05);
+			struct hb_collision live;
+			struct hb_check_physics ph;
+			int rc = hb_sim_advance(s, 400, 0.05);
 
-			if (rc != HB_OK && rc != HB_EDONE && sim_errmsg(s)[0] == '\0') {
+			if (rc != HB_OK && rc != HB_EDONE && hb_sim_errmsg(s)[0] == '\0') {
 				fprintf(stderr, "failed (%d) without a message\n", rc);
 				abort();
 			}
-			check_solution_pair(sim_scene(s), sim_arc(s), msg, sizeof msg);
-			check_physics(sim_scene(s), sim_arc(s), &ph, msg, sizeof msg);
-			for (size_t i = 0; i < sim_ncollisions(s); i++)
-				(void)sim_collision(s, i)->e;
-			sim_contact_live(s, &live);
-			if (arc_len(sim_arc(s)) > 1)
-				sim_seek(s, arc_len(sim_arc(s)) / 2);
-			sim_advance(s, 50, 0.01);
-			sim_free(s);
+			hb_check_solution_pair(hb_sim_scene(s), hb_sim_arc(s), msg, sizeof msg);
+			hb_check_physics(hb_sim_scene(s), hb_sim_arc(s), &ph, msg, sizeof msg);
+			for (size_t i = 0; i < hb_sim_ncollisions(s); i++)
+				(void)hb_sim_collision(s, i)->e;
+			hb_sim_contact_live(s, &live);
+			if (hb_arc_len(hb_sim_arc(s)) > 1)
+				hb_sim_seek(s, hb_arc_len(hb_sim_arc(s)) / 2);
+			hb_sim_advance(s, 50, 0.01);
+			hb_sim_free(s);
 		}
 	}
 	free(text);

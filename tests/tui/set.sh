@@ -1,6 +1,6 @@
 #!/bin/sh
 # The explorer opens a preset with --set as batch mode does (one function,
-# preset_open): blanks around the key and the value are ignored, so
+# hb_preset_open): blanks around the key and the value are ignored, so
 # --set ' run.T = 1 ms' gives a 1 ms run: the panel shows T = 1 ms and the
 # time axis ends at 1.0 ms.
 . tests/tui/common.inc
