@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # hybounce - plain Makefile (GNU make).
 #
 #   make            build build/hybounce

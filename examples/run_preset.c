@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * run_preset.c - the smallest complete use of libhybounce from C: load a
  * preset, run it to its end, print its completed collisions.

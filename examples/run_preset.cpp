@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * run_preset.cpp - run_preset.c from C++: the same output, the library's
  * handle held by a std::unique_ptr so that every path frees it.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * gen_keys.c - prints the explorer's key list from the key table
  * (src/tui/keys.c): "man" the mdoc list of man/hybounce.1's EXPLORER KEYS,

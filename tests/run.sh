@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs every test: the Criterion unit tests, then each script under
 # tests/cli/ and tests/tui/ (TAP-style: one "ok - NAME" or "not ok - NAME"
 # line per test).  Ends with "N passed, N failed" alone on a line.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_arc.c - the hybrid arc (src/core/arc.c) on its own, with arcs built
  * by hand: the interval index, hybrid-time look-ups against a linear scan,

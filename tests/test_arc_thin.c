@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_arc_thin.c - memory stays bounded whatever J and T: the arc thins
  * jumps as it thins flow samples, the collision list is thinned the same

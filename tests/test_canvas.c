@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_canvas.c - the explorer's curses-free plot raster and axes
  * (src/tui/canvas.c), compared as strings.

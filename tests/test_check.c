@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_check.c - the checker checked: real arcs corrupted on purpose must be
  * rejected (hb_check_solution_pair), and the physics checks (hb_check_physics)

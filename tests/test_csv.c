@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_csv.c - CSV export (src/core/csv.c): the header of each system and
  * law, every number read back with strtod() equal to the double written,

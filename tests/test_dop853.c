@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_dop853.c - the DOP853 step type alone (src/core/step_dop853.c):
  * its order on a smooth problem with a known solution, the order of its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_fit.c - the fit (fit.h) and the onsets of a recording (onset.h).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_golden.c - the collision table of every paper preset against the one
  * stored in tests/golden/NAME.csv, so that a change in any number is seen.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_hard.c - the hard cases of issue 4, one preset each
  * (presets/hard-*.preset).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_law.c - the contact laws (src/core/law*.c): eq. vanishing, the
  * partial derivatives against central differences, rule R1 (ext), the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_paper.c - the paper's own evidence on every preset: the solution-pair
  * check, the forward Euler check, the work-energy identity, the printed

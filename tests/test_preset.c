@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_preset.c - presets (src/core/preset.c and the files in presets/): every
  * preset loads and validates; the paper's inferred values from the study

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_reentrant.c - the library's re-entrancy promise (README, "The
  * library"): sims run at the same time in several threads give, to the

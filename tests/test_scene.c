@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_scene.c - scenes (src/core/scene*.c): the defaults, the derived values
  * against the paper's printed 'Inferred' rows (Tables tab:one, tab:two,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_sim.c - the simulator against closed forms, identities between
  * laws, the rules R1 and R2, the budgeted driver and the error paths.

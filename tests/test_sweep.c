@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_sweep.c - the sweep engine: axes from specs, point order, the spec
  * file, one point equal to a plain run, the journal (resume, torn block,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_tui_keys.c - the explorer's key table (src/tui/keys.c) and its
  * layout (src/tui/layout.c): pure functions, no terminal.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * test_units.c - values with units (src/core/units.c): parsing with SI
  * prefixes, products, quotients and fractional powers; the messages of a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * testutil.h - helpers shared by every Criterion test file (tests/test_*.c):
  * the paper's presets, where presets are, loading and running a scene,

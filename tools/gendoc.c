@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * gendoc.c - writes the generated parts of the man page and the README
  * from the engine's tables, so that they cannot drift:

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # An ASCII scatter plot of two columns of sweeps' runs.csv, one symbol per
 # sweep folder (o, +, x, *, #):
 #

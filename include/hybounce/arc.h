@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * arc.h - the hybrid arc: samples over the hybrid time domain (t, j).
  *

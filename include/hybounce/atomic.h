@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * atomic.h - the one way the program writes files: a set of files replaced
  * together, each written to a temporary name beside it, flushed to disk and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * check.h - the paper's checks of a computed solution (section Simulation).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * collisions.h - per-collision observables (paper eqs. t_d .. Lambda).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * columns.h - the table of collision columns: name, unit and meaning of
  * each observable of struct hb_collision (paper eqs. t_d .. Lambda).  The CSV

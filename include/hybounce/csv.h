@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * csv.h - export of a run: RFC 4180 CSV, one header row, SI units,
  * numbers as %.17g so that they round-trip.

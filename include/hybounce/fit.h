@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fit.h - identify a scene's parameters from measured collisions: nonlinear
  * least squares over runs of the simulator.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * onset.h - impact times from a sound recording of a bouncing sequence.
  *

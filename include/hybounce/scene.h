@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * scene.h - everything a run needs: bodies and materials, the derived
  * values, the contact law and its parameters, the applied loads, the initial

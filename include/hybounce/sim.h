@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim.h - the simulator: flow, event location, jump map, rules R1 and R2.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sweep.h - parameter sweeps: the Cartesian product of varied scene values,
  * run on every core, resumable, in shards for a cluster.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * batch.c - batch mode: load a preset, apply --set overrides, run the
  * simulator to its end, print a report for a reader of the paper and write

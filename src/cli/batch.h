@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * batch.h - batch mode of the command line: preset -> sim -> report, CSV.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fit_cmd.c - `hybounce fit PRESET --data FILE --free KEY[,KEY...]`: reads
  * the data (a CSV file, or a recording whose onsets give the impact times,

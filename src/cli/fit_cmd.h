@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fit_cmd.h - `hybounce fit`: fit a scene's parameters to measured data
  * (fit_cmd.c), a thin shell over the engine's fit.h and onset.h.

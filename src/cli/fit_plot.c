@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fit_plot.c - the text plot of measured against simulated values that
  * `hybounce fit` prints after the residuals: one panel per observable,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * main.c - the command line: parse options, then open the explorer or run
  * a preset in batch mode.

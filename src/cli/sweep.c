@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sweep.c - the "hybounce sweep" command: a thin shell over the sweep
  * engine (src/core/sweep*.c).  It parses the options, loads the preset and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sweep_cli.h - the "hybounce sweep" command (sweep.c) and its job files
  * for a scheduler (sweep_emit.c).

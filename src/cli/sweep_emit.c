@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sweep_emit.c - job files for a scheduler: "--emit slurm" prints a shell
  * script that submits the shards as a Slurm job array (sbatch

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * arc_impl.h - the arc's constructor and mutators, private to the engine
  * (the front ends read the arc through include/hybounce/arc.h only).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * atomic.c - sets of files replaced together (see atomic.h).
  *

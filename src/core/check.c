@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * check.c - the paper's checks of a computed solution pair (section
  * Simulation): the definition of a solution pair, and forward Euler as an

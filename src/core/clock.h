@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * clock.h - seconds on a POSIX clock, as a double: CLOCK_MONOTONIC for
  * elapsed (wall) time, CLOCK_PROCESS_CPUTIME_ID or CLOCK_THREAD_CPUTIME_ID

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * columns.c - the table of collision columns (see columns.h), and its
  * reference text for the man page and the README.

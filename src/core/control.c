@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* control.c - the standard control, no growth after a rejection (see control.h). */
 #include <stdlib.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * control.h - GSL's standard step-size control, without growth right after
  * a rejected step.  Internal to the engine.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * csv.c - export of a run as RFC 4180 CSV (see csv.h).
  *

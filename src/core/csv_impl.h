@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * csv_impl.h - the CSV field and number writers that csv.c's collision
  * tables and sweep.c's runs table share (private to the engine).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * docs.h - reference texts generated from the engine's tables, for the
  * man page and the README (private: tools/gendoc.c writes them between

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fit.c - nonlinear least squares over runs of the simulator (GSL
  * gsl_multifit_nlinear, trust region): the residuals are

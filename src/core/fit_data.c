@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fit_data.c - measured data for fit.c: CSV files recognised by their
  * columns (a bouncing sequence by t_e, separate drops by v_i and e), and

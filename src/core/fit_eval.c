@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fit_eval.c - the simulated observables of a data set: one run per
  * bouncing sequence, one run per drop, spread over threads.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fit_impl.h - declarations shared by fit.c, fit_eval.c, fit_lin.c and fit_param.c
  * (not part of the API).

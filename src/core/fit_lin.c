@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fit_lin.c - what the Jacobian J of the residuals at the estimates says
  * (see fit.c): whether the data identify the free parameters, and how much

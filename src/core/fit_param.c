@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fit_param.c - the free parameters of a fit: reading a numeric scene key,
  * its admissible range, and the transform theta(u) that keeps every trial

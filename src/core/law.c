@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * law.c - the registry of contact laws and helpers over their parameter
  * tables (see law.h).  The callbacks several laws share are in

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * law_bwmcl.c - the Bouc-Wen-Maxwell collision law (paper example ex:bwm,
  * eqs. bwm_psi1, bwm_psi2 and bwm_phi; n_z = 2):

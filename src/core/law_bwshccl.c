@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * law_bwshccl.c - the Bouc-Wen-Simon-Hunt-Crossley collision law (paper
  * example ex:bwshc, eqs. bwshc_psi and bwshc_phi; n_z = 1):

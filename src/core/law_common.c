@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * law_common.c - the callbacks of struct hb_law_type that several laws share
  * (declared in law_common.h): the kink at x_c = 0, k = k_H, and the

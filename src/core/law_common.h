@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * law_common.h - what the contact laws (src/core/law_*.c) share: parameter
  * descriptors, rule R1, the Bouc-Wen terms and the shared callbacks of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * law_hertz.c - the Hertz elastic law (n_z = 0):
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * law_linear.c - the clamped linear law of the non-uniqueness example
  * (paper eq. nonuniq_law, n_z = 0):

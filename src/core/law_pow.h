@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * law_pow.h - powers shared by the power-law contact laws (private to the engine).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * law_shccl.c - the Simon-Hunt-Crossley collision law (n_z = 0):
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * onset.c - impact times from a recording (see onset.h): aubio's onset
  * detector finds the clicks, then each is placed on the first sample where

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * onset_aubio.c - libaubio through dlopen(3) (see onset_aubio.h).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * onset_aubio.h - libaubio, loaded when a recording is first read.
  *

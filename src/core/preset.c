@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * preset.c - scenes in INI files, read with inih (see preset.h).
  *

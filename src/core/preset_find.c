@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * preset_find.c - finding presets (see preset.h): the preset folders
  * ($HYBOUNCE_PRESETS, ./presets, the install folder), a name or path

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * preset_ini.h - how presets are read with inih (private to the engine):
  * inih's options are process globals in this build, so every reader sets

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * scene.c - the applied loads of a scene and their closed forms (see
  * scene.h).  The scene's defaults and derived values are in

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * scene_defaults.c - the default scene (from the key table), the derived
  * values of a scene, and the names of the steppers (see scene.h).

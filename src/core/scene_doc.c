@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * scene_doc.c - the PRESETS reference of the man page, generated from the
  * key table and the laws' parameter tables (scene_keys_mdoc, written into

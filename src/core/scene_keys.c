@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * scene_keys.c - the table of scene keys and the typed access to them (see
  * scene_keys.h and scene.h): every key's unit, range, default, meaning,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * scene_panel.c - the rows of the explorer's parameter panel (see
  * scene.h): the keys of the table and the law's parameters by panel

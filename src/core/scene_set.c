@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * scene_set.c - reading one value of a scene by its key (see scene.h):
  * text with an optional unit, or a number, checked against the key's row

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * scene_validate.c - checking a whole scene against the admissible ranges
  * of the key table and of the law's parameters, and the constraints between

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim.c - the simulator of the hybrid systems H_r and H_f (paper section
  * Model, eqs. Hr_f .. Hr_init and H_f .. H_init).

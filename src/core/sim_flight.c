@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim_flight.c - flight in closed form: the parabola, its event by a quadratic, the
  * pre-jump state placed in D ulp by ulp (see sim.c for the method).

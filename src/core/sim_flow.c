@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim_flow.c - the flow map: the right-hand side and its Jacobian in scaled variables, the
  * layouts and GSL workspaces of the phases, the scales of the components, and

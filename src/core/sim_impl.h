@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim_impl.h - what the files of the simulator share (private to the engine):
  * the state of a run (struct hb_sim), the layouts and phases of the flow

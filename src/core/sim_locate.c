@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim_locate.c - location on a step: where a watched function (sim_watch.c)
  * crosses, on re-steps, on the step's continuous extension (dop853) or

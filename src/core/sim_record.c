@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim_record.c - samples, collision records, the jump map g and the ends of a run (see sim.c for the method).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim_snap.c - states on the boundary of C to the precision of the
  * computation: round-off at a sticking contact, and the separation that

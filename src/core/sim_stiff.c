@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim_stiff.c - the stiffness check: h |lambda| over the decaying eigenvalues of the
  * contact flow's Jacobian against the stepper's stability radius (see sim.c for the method).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim_watch.c - the functions watched along a step: the indicator of the
  * flow set C, the law's switching functions, the extremum functions of x_c

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* step_bsimp.c - GSL's bsimp on shifted variables (see step_bsimp.h). */
 #include <stdlib.h>
 #include <string.h>

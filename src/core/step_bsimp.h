@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * step_bsimp.h - GSL's bsimp (Bader-Deuflhard semi-implicit extrapolation)
  * applied to shifted variables.  Internal to the engine.

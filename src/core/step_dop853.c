@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * step_dop853.c - DOP853 as a GSL odeiv2 step type (see step_dop853.h).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * step_dop853.h - Dormand and Prince's explicit Runge-Kutta 8(5,3) pair
  * with its 7th-order continuous extension, as a GSL odeiv2 step type.

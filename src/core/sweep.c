@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sweep.c - the points of a sweep: axes from "KEY=SPEC", the scene of a
  * point, the spec file, and one point run into its journal block (see

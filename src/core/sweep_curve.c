@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sweep_curve.c - one observable over one parameter, computed by
  * background threads for the explorer (see sweep.h, "Curves").

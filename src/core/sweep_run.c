@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sweep_run.c - running a sweep into a folder: the folder's identity
  * (sweep.preset), the journal that makes it resumable, the worker threads,

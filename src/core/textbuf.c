@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* textbuf.c - appending formatted text to a caller's buffer (see textbuf.h). */
 #include <stdarg.h>
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * textbuf.h - appending formatted text to a caller's buffer, snprintf
  * style: the text is cut to the buffer (always terminated when n > 0) and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * actions.c - what each action of the key table does: one function per
  * action (as htop's Action functions), found by the action's number.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * app.c - the explorer's loop: key (with a timeout) -> action -> a bounded
  * slice of computation -> playback -> one frame.

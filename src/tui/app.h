@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * app.h - the explorer (ncurses), as called by the command line (src/cli/main.c).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * canvas.c - curses-free plot raster (ASCII and Braille) and axis scaling.
  *

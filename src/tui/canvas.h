@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * canvas.h - curses-free plot raster and axis scaling.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * edit.c - the what-if loop: a value or the law changes, and the run
  * shows the consequence.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * keys.h - the explorer's one key table { key, action, label, help }.
  *

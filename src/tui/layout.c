@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * layout.c - pane geometry (see layout.h).  Pure functions of the size.
  */

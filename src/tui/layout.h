@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * layout.h - pane geometry from the terminal size (pure; no curses).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * log.c - messages: the message line, the log of every message (m), and
  * the scrolling of the two text overlays (help, log).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * mouse.c - clicks and the wheel (ncurses mouse events).  Everything here
  * is also reachable from the keyboard: a click on a table row selects that

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * nav.c - the time cursor, the collisions and the selection of the
  * focused table: moving around a run without changing it.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * overlay_fit.c - measured data over the explorer's scene, and the fit
  * started from there (issue 13, part 4).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * pane_params.c - the parameter panel: hb_scene_key rows grouped by section
  * (bodies, derived, law, loads, initial, run) under headings; derived rows

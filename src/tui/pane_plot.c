@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * pane_plot.c - the plots: x, x_c and F_c against t, stacked over one time
  * axis, with a marker row for contacts ("[==]", "#" when a contact fits

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * pane_status.c - the status line, the message (or prompt) line, the
  * footer, the help overlay and the "terminal too small" screen.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * pane_sweep.c - draws the sweep view over the plots and the tables: the
  * observable against the parameter, pinned curves first as ghosts (inks

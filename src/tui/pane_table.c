@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * pane_table.c - the collisions table (paper eqs. t_d .. Lambda): one row
  * per completed collision, then the contact in progress marked "live".

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * pickers.c - the law picker (hb_law_list: name, title, description,
  * parameters) and the preset picker (hb_preset_list: the *.preset files of presets/ and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * playback.c - the cursor moving in simulated time, and the views.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * prompt.c - the one-line prompt on the message line: a value to type, an
  * export name, a parameter to search for.  Keys typed into it are text

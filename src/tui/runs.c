@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * runs.c - the runs the explorer holds: the current one (opened from a
  * preset), up to APP_MAX_PINS pinned runs to compare with, their labels,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * script.c - scripted mode (--script FILE): plays keys from a file, on the
  * real screen when standard input and output are a terminal (a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sweep_view.c - the sweep view's state and keys: one parameter (the
  * parameter panel's selected key), a range typed as for --vary

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sweep_view.h - the explorer's sweep view (private to src/tui/): one
  * observable over one parameter, computed by background threads

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * term.c - curses setup and teardown (like htop's CRT.c).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * term.h - curses setup and teardown, colours, signal flags.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * tui.h - the explorer's state, shared by its files (private to src/tui/).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * bench.c - the work-precision benchmark of hybounce (`make bench`).
  *

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # report.sh [DIR]: after `make bench` (DIR, default build/bench), splices the
 # per-study table (DIR/study-table.md) into README.md between the
 # STUDY-TABLE markers, and writes tests/bench/REPORT.md: a header, the

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The engine side by side with the paper's own method (make bench-scipy; a
 # benchmark, not a test): on each of the five paper studies,
 #  (a) SciPy's simulation time: tests/bench/scipy_ref.py, the paper's method

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """scipy_ref.py - the paper's own method, re-implemented for a side-by-side
 benchmark (make bench-scipy; tests/bench/scipy.sh).
 

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # study-table.sh [CSV]: the per-study table of README "Speed and accuracy"
 # and tests/bench/REPORT.md, from a `make bench` run (default
 # build/bench/work-precision.csv) and the run before issue 8

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The sweep's speed targets (make bench-sweep; a benchmark, not a test):
 #  1. rate: the third study's SHCCL preset (permanent-contact-shccl) over
 #     N points (initial.x0 from 5 um to 60 um) with --jobs 1 and --jobs 2;

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The bad-input matrix (issue 10): every row of tests/cli/badinput.tab is one
 # class of bad (or borderline) input, run in a fresh folder:
 #

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Batch mode on every preset in presets/: exit 0, a collision table header,
 # the summary; the paper's first study (steel-on-bitumen) has at least ten
 # collisions; --check --jumps passes on every preset.

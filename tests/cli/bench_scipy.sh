@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # make bench-scipy (tests/bench/scipy.sh, tests/bench/scipy_ref.py) without
 # depending on SciPy: the script refuses a Python without scipy with the
 # install hint, and scipy_ref.py compiles.  Where Debian's python3-scipy is

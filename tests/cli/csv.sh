@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # --trace and --collisions write parseable CSV with the documented header,
 # the same number of fields on every row and numbers that parse, plus the
 # scene as a .preset beside them; batch on that saved preset reproduces the

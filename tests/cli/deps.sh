@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Dependencies point one way: no cycle among the #include "..." of src/ and
 # include/ (tsort finds loops); units.h includes no other header of ours;
 # law_common.h declares no function that law.c defines; the engine

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The generated parts of the man page (PRESETS keys, --collisions columns)
 # and of the README (collisions table) agree with the engine's tables:
 # hybounce-gendoc --check fails when one is stale (fix: make docs).  And

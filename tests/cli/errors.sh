@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Bad input exits 2 with a message on stderr that names the file or key and
 # what is accepted, and leaves no CSV behind: unknown option, missing
 # preset, out-of-range and wrongly-united --set, a malformed preset file,

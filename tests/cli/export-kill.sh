@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A kill at any instant of an export leaves every target either its complete
 # old version or its complete new version; a mixed set shows, both as
 # different modification times (every file of one export carries the

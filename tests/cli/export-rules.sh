@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # What an export may write over: never the preset being run nor a shipped
 # preset (exit 2 before the run, nothing written); a device or FIFO in
 # place, with no .preset beside it; through a symbolic link, which stays;

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A run that fails numerically exits 1, says why on stderr (after the
 # report), still prints the table and the summary, and still writes what it
 # computed.  The failure is provoked with a step bound far below what the

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # hybounce fit from the command line: the README's worked example runs as
 # written and prints what the README shows; the fitted preset reproduces
 # the fit; a recording made with sox from the program's own impact times

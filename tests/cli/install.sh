@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # libhybounce as an outside program sees it: `make install` into a DESTDIR
 # puts the shared library (with its soname), the static library, the public
 # headers under include/hybounce/ and hybounce.pc in place; the shared

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # What a user reads never cites the paper's internal LaTeX labels
 # ("tab:one", "eq. bwm_psi1", "eqs. u_1") or the project's issue numbers
 # ("hard case of issue 4"): --help texts, the preset list and files, the

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The man page lints clean with mandoc and documents every long option
 # that --help lists.
 . "$(dirname "$0")/common.inc"

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # --help mentions every option; --version prints the version; --list-laws
 # lists the five laws; --list-presets lists every file in presets/.
 . "$(dirname "$0")/common.inc"

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The physics checks in batch mode (issue 10): a run that creates energy
 # (hard-bouc-wen-beta with bsimp at rtol 1e-3: W < 0, e up to 1.317) is
 # warned about, exit 0; with --check it is a failure, exit 1; a good run

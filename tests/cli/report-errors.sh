@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Output that cannot be written is an error: the report, --help, --version,
 # --list-laws and --list-presets to a full device (/dev/full) or a closed
 # standard output exit 2 with "write error on standard output: REASON";

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # --set is read by one function (hb_preset_open) for both front ends: the batch
 # run and the explorer accept the same overrides (blanks around the key and
 # the value are ignored) and refuse the same ones with the same message and

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # SIGTERM and SIGINT in batch mode end the run, and what was computed is
 # reported and written, as after a numerical failure; the exit status is
 # 128 + the signal.  A run that lasts more than a second shows its progress

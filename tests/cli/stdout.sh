@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # "--trace -" and "--collisions -" write that CSV to stdout: byte for byte
 # the file the same run writes, with the report on stderr so that stdout
 # holds the CSV alone; no file named "-" and no .preset beside stdout (the

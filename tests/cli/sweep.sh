@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # hybounce sweep on one machine: the files, bit-identity with --batch runs
 # point by point, independence of --jobs, resuming after SIGKILL, a folder
 # of another sweep refused, bad input (exit 2, nothing written), failed

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A bounded smoke of make bench-sweep: the sweep benchmark runs (40 and 200
 # points) and reports the rate, the overhead and the memory.
 # Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # hybounce sweep --emit parallel, run for real with GNU parallel on the local
 # cores (and through --sshlogin ':', parallel's name for this machine): the
 # merged files equal the one-machine sweep's.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The engine is re-entrant: no hidden mutable static state, and the same
 # point run in many threads at once gives the same bytes.
 #  1. The writable static objects of libhybounce.a (.data and .bss; read-only

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # hybounce sweep --emit slurm, run for real on a single-node Slurm cluster
 # that this test starts itself (Debian's slurm-wlm and munge, installed by
 # make deps): munged with a fresh key, slurmctld and slurmd from a

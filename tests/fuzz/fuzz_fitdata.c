@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fuzz_fitdata.c - the data files of `hybounce fit` (hb_fit_data_read): any
  * input is read or refused with a message, never a crash, a leak or a

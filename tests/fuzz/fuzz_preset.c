@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fuzz_preset.c - the preset parser (hb_preset_load_string) on any text: it
  * loads or refuses with a message, never crashes; a loaded scene is valid

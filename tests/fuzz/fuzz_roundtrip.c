@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fuzz_roundtrip.c - "a saved scene loads back to the same scene": any
  * preset text that loads is formatted as a preset (hb_preset_format, what

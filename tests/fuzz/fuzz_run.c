@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fuzz_run.c - preset plus a short run: any preset text that loads is run
  * for a bounded amount of work (at most 400 accepted steps and 50 ms of

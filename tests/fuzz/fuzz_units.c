@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fuzz_units.c - the unit and value parser: hb_units_parse against every
  * dimension a value can have, and hb_scene_set on a key chosen by the first

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs the libFuzzer harnesses (see fuzz.h and the Makefile's fuzz targets).
 #
 #   sh tests/fuzz/run.sh smoke RUNS BIN...      each harness RUNS executions (make check)

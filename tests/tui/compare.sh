@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Comparing runs in tmux at 80x23: a pinned run is labelled by what differs
 # from the current one, told apart by colour and by marker (in Braille too),
 # and c puts the differences of each collision in the table.  The readout

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The explorer's time controls, views, pickers and parameter nudges, in
 # tmux at 80x24 (send-keys, then poll capture-pane; never a bare sleep).
 # Needs HYBOUNCE_BIN and HYBOUNCE_PRESETS, as set by tests/run.sh.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The explorer driven as a person uses it: tmux at fixed sizes, send-keys,
 # then poll capture-pane until the expected text appears (never a bare
 # sleep).  Needs HYBOUNCE_BIN (absolute path) and HYBOUNCE_PRESETS, as set

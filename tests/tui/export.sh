@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The explorer's export in tmux: the prompt names the folder the files go
 # to; a second export to the same name says which files it replaced; an
 # export refused (a missing folder) writes nothing and says why.

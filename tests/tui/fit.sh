@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Measured data in the explorer (issue 13, part 4), in tmux at 120x40:
 # --data shows the impacts of a bouncing sequence as o on the x plot and
 # beside the simulated t_e in the table; M lists every point, measured

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Typed input in tmux: + then - returns a typed value exactly (the nudge
 # works on the value, not on its display), --set takes blanks around the
 # key as batch mode does, and non-ASCII typed into a prompt is kept.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # --script on a real terminal plays on the real screen, for teaching: the
 # captions appear on the message line while the run plays, waits take real
 # time, and a key pressed by the viewer ends it.  A folder given as the

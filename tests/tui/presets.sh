@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Presets are found beside the program (BIN/../presets, as build/hybounce in
 # the source tree), not only through ./presets: the explorer started in an
 # empty folder with HYBOUNCE_PRESETS unset opens the default preset and

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The README's examples are real: the explorer's screen at 80x24 and the
 # batch example are what the program prints now (make readme-examples
 # regenerates them; the batch run's CPU time is the one line allowed to

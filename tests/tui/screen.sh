@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The explorer's screen in tmux: small terminals (down to 60x16), the help
 # (F1) inside a bordered box at 80 columns with the legend of the contact
 # strip and status fields, F10, unknown keys, the panel's paging, sections

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The explorer's scripted mode (--script FILE): keys from a file, screen
 # dumps as text, no terminal needed (stdin and stdout are not a tty here).
 # Needs HYBOUNCE_BIN and HYBOUNCE_PRESETS, as set by tests/run.sh.

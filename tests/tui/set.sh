@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The explorer opens a preset with --set as batch mode does (one function,
 # hb_preset_open): blanks around the key and the value are ignored, so
 # --set ' run.T = 1 ms' gives a 1 ms run: the panel shows T = 1 ms and the

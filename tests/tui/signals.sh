@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # How the explorer ends: Ctrl-C, SIGTERM, Ctrl-\ (SIGQUIT) and SIGHUP
 # restore the terminal (cursor shown, alternate screen left) and exit with
 # 128 + the signal; without a terminal on standard input or output it

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The explorer passes on the engine's word on stiffness: on the stiff
 # Maxwell preset (stepper = auto) it says auto went over to bsimp; with
 # rk8pd it suggests auto or bsimp.  tmux at 100x30, polled capture-pane.

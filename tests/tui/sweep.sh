@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The explorer's sweep view in tmux at 80x24: S on the selected parameter
 # proposes a range, the curve fills in from background threads with the
 # current scene marked on it, the observable and the law change, a curve

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The what-if loop in tmux at 80x23 (an 80x24 terminal under tmux or
 # screen): an edit restarts the run from t = 0 and keeps the cursor's t;
 # an export after an edit reproduces the run; "branch here" continues from
