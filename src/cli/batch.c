@@ -287,7 +287,7 @@ print_header(FILE *out, const char *preset, const char *path,
 
 		fprintf(out, "            absolute tolerance = atol x scale (scales of the last contact):\n");
 		line[0] = '\0';
-		for (i = 0; i < st->ncomp && i < 8 && len < sizeof line; i++)
+		for (i = 0; i < st->ncomp && i < HB_SIM_MAXCOMP && len < sizeof line; i++)
 			len += (size_t)snprintf(line + len, sizeof line - len, "%s%s %.3g",
 			                        i ? ", " : "", st->comp[i] ? st->comp[i] : "?",
 			                        st->scale[i]);

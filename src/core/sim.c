@@ -332,7 +332,7 @@ build(struct hb_sim *s, char *msg, size_t n)
 			names[L->ivm] = "v_m";
 		}
 		/* the names depend on the law only through n_z: keep per-sim copies */
-		for (i = 0; i < 8; i++)
+		for (i = 0; i < HB_SIM_MAXCOMP; i++)
 			s->st.comp[i] = i < L->dim ? names[i] : NULL;
 	}
 	return 0;
