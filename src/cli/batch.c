@@ -659,7 +659,7 @@ int
 batch_run(const struct batch_options *o)
 {
 	struct hb_scene sc;
-	char path[1024], msg[1024];
+	char path[1024], msg[4096]; /* the resolver names a refused preset whole */
 	struct hb_collision live;
 	struct hb_sim *s;
 	struct sigaction old_term, old_int;
@@ -672,14 +672,9 @@ batch_run(const struct batch_options *o)
 	FILE *out = trace_out || coll_out ? stderr : stdout;
 
 	msg[0] = '\0';
-	if (hb_preset_resolve(o->preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": preset '%s': %s\n", o->preset,
-		        msg[0] ? msg : "not found");
-		return 2;
-	}
-	msg[0] = '\0';
-	if (hb_preset_open(path, o->sets, o->nsets, &sc, msg, sizeof msg) != HB_OK) {
-		err(msg[0] ? msg : path);
+	if (hb_preset_open_named(o->preset, o->sets, o->nsets, &sc, path, sizeof path, msg,
+	                         sizeof msg) != HB_OK) {
+		err(msg[0] ? msg : o->preset);
 		return 2;
 	}
 	if (trace_out && coll_out) {

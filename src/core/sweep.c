@@ -351,9 +351,15 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 	}
 	strcpy(a.key, key);
 	free(key);
-	if (strlen(eq + 1) >= sizeof a.spec)
+	/* blanks around the spec go, as around a --set value */
+	if ((key = trimmed(eq + 1, eq + 1 + strlen(eq + 1))) == NULL)
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+	if (strlen(key) >= sizeof a.spec) {
+		free(key);
 		return hb_status_set(msg, n, HB_EINVAL, "--vary %s: value too long", a.key);
-	snprintf(a.spec, sizeof a.spec, "%s", eq + 1);
+	}
+	strcpy(a.spec, key);
+	free(key);
 	for (k = 0; k < sw->naxes; k++)
 		if (strcmp(sw->ax[k].key, a.key) == 0)
 			break;
