@@ -46,6 +46,7 @@
 #include "hybounce/columns.h"
 #include "hybounce/csv.h"
 #include "hybounce/law.h"
+#include "hybounce/observables.h"
 #include "hybounce/preset.h"
 #include "hybounce/scene.h"
 #include "hybounce/sim.h"
@@ -517,6 +518,41 @@ print_jumps(FILE *out, const struct hb_arc *a)
 	fprintf(out, "\n");
 }
 
+/*
+ * The run observables (observables.h), "name = value unit" in SI as a
+ * sweep's runs.csv has them (6 digits; "-" where there is none), as many
+ * to a line as fit in 79 columns.
+ */
+static void
+print_observables(FILE *out, const struct hb_sim *s)
+{
+	int col = 12; /* "  observables" less the blank that each pair brings */
+
+	fprintf(out, "  observables");
+	for (int k = 0; k < HB_OBS_COUNT; k++) {
+		const struct hb_observable_def *d = &hb_observables[k];
+		double v = hb_observable_value(s, k);
+		char b[96];
+		int len;
+
+		if (isnan(v))
+			len = snprintf(b, sizeof b, "%s = -", d->name);
+		else if (d->whole)
+			len = snprintf(b, sizeof b, "%s = %ld", d->name, (long)v);
+		else
+			len = snprintf(b, sizeof b, "%s = %.6g%s%s", d->name, v, d->unit[0] ? " " : "",
+			               d->unit);
+		if (k > 0 && col + 2 + len > 79) {
+			fprintf(out, ",\n              %s", b);
+			col = 14 + len;
+		} else {
+			fprintf(out, "%s %s", k ? "," : "", b);
+			col += 2 + len;
+		}
+	}
+	fprintf(out, "\n");
+}
+
 static void
 print_summary(FILE *out, const struct hb_sim *s, int sig)
 {
@@ -551,6 +587,7 @@ print_summary(FILE *out, const struct hb_sim *s, int sig)
 		        hb_sim_ncollisions(s));
 	else
 		fprintf(out, "  collisions  %zu\n", hb_sim_ncollisions(s));
+	print_observables(out, s);
 	fprintf(out, "  run time    %s CPU", fmt(st->seconds, hb_unit_time, b1, sizeof b1));
 	fprintf(out, ", %s wall\n", fmt(st->wall, hb_unit_time, b1, sizeof b1));
 	fprintf(out, "  steps       %ld accepted, %ld rejected\n", st->steps, st->rejected);

@@ -495,6 +495,7 @@ hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out)
 	out->xcmax = s->xcmax;
 	out->Fcmax = s->Fcmax;
 	out->xcr = fabs(s->xc);
+	out->xcr_sum = (s->ncol > 0 ? s->col[s->ncol - 1].xcr_sum : 0.0) + out->xcr;
 	out->W = s->W;
 	out->JFc = s->JFc;
 	out->JFe = s->JFe;
