@@ -4,6 +4,7 @@
  * file, one point equal to a plain run, the journal (resume, torn block,
  * damage), the threads and the merge.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -411,4 +412,57 @@ Test(sweep, curve_cancels, .timeout = 30)
 	hb_sweep_curve_free(c);
 	cr_assert_null(hb_sweep_curve_start(&sc, "law.nope", "1,2", HB_CURVE_E, 0, 1, msg, sizeof msg));
 	cr_assert(strstr(msg, "law.nope") != NULL, "%s", msg);
+}
+
+/*
+ * The sweep view counts as the batch summary and runs.csv do: its run
+ * observables are the table's (observables.h), every collision counted
+ * (hertz-elastic over 30 s with max_samples 1024: 469 collisions, 85 kept),
+ * and "collision i" is the one numbered i among all (none once thinned out).
+ */
+Test(sweep, curve_observables_are_the_table, .timeout = 60)
+{
+	struct hb_scene sc;
+	struct hb_sweep_curve *c;
+	struct hb_sim *s;
+	char msg[512];
+	double x[1], y[1];
+	int st[1];
+	long kept_i = -1, thinned_i = -1;
+
+	scene_preset("hertz-elastic", &sc);
+	cr_assert_eq(hb_scene_set(&sc, "run.T", "30", msg, sizeof msg), HB_OK);
+	cr_assert_eq(hb_scene_set(&sc, "run.max_samples", "1024", msg, sizeof msg), HB_OK);
+	s = run_scene(&sc);
+	cr_assert_eq(hb_sim_collisions_total(s), 469);
+	cr_assert_eq(hb_sim_ncollisions(s), 85);
+	cr_assert_eq(hb_sweep_observe(s, HB_CURVE_COLLISIONS, 0), 469.0);
+	cr_assert_eq(hb_observable_find("collisions"), HB_OBS_COLLISIONS);
+	for (int k = 0; k < HB_OBS_COUNT; k++) {
+		double a = hb_observable_value(s, k), b = hb_sweep_observe(s, HB_CURVE_RUN + k, 0);
+
+		cr_assert(a == b || (isnan(a) && isnan(b)), "%s: %g %g", hb_observables[k].name, a, b);
+		cr_assert_str_eq(hb_sweep_observable_name(HB_CURVE_RUN + k), hb_observables[k].name);
+	}
+	for (size_t r = 1; r < hb_sim_ncollisions(s) && thinned_i < 0; r++) {
+		const struct hb_collision *p = hb_sim_collision(s, r - 1), *q = hb_sim_collision(s, r);
+
+		if (q->i > p->i + 1) {
+			thinned_i = p->i + 1;
+			kept_i = q->i;
+			cr_assert_eq(hb_sweep_observe(s, HB_CURVE_E, kept_i), q->e);
+			cr_assert_eq(hb_sweep_observe(s, HB_CURVE_VI, kept_i), q->vi);
+		}
+	}
+	cr_assert_geq(thinned_i, 0);
+	cr_assert(isnan(hb_sweep_observe(s, HB_CURVE_E, thinned_i)));
+	hb_sim_free(s);
+
+	c = hb_sweep_curve_start(&sc, "run.T", "30", HB_CURVE_COLLISIONS, 0, 1, msg, sizeof msg);
+	cr_assert_not_null(c, "%s", msg);
+	while (hb_sweep_curve_poll(c, x, y, st, 1) < 1)
+		nanosleep(&(struct timespec){ 0, 1000000 }, NULL);
+	cr_assert_eq(st[0], HB_CURVE_DONE);
+	cr_assert_eq(y[0], 469.0);
+	hb_sweep_curve_free(c);
 }

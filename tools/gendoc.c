@@ -11,6 +11,9 @@
  *     preset-keys                 the keys of a preset (scene_keys_mdoc)
  *     collision-columns-mdoc      the columns of --collisions (mdoc list)
  *     collision-columns-markdown  the same as a Markdown table
+ *     run-observables-mdoc        the run observables, runs.csv's columns
+ *                                 (observables.h; mdoc list items)
+ *     run-observables-markdown    the same as a Markdown table
  * With --check nothing is written: the exit status is 1, with the file and
  * block named on stderr, when a block differs from its generator's text.
  * `make docs` runs it on man/hybounce.1 and README.md; tests/cli/docs.sh
@@ -29,6 +32,8 @@ static const struct {
 	{ "preset-keys", scene_keys_mdoc },
 	{ "collision-columns-mdoc", collision_columns_mdoc },
 	{ "collision-columns-markdown", collision_columns_markdown },
+	{ "run-observables-mdoc", run_observables_mdoc },
+	{ "run-observables-markdown", run_observables_markdown },
 };
 
 static char *

@@ -26,6 +26,7 @@ struct hb_collision {
 	double W;        /* -int F_c v dt, J */
 	double JFc, JFe; /* impulses, N s */
 	double Lambda;   /* J_Fe / J_Fc */
+	double xcr_sum;  /* x_c^r summed over collisions 0 .. i (the thinned ones too), m */
 	int complete;    /* 0 for the contact in progress (values so far, ts = now) */
 };
 

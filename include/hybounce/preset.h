@@ -47,6 +47,17 @@ hb_preset_open(const char *path, const char *const *sets, int nsets, struct hb_s
             char *msg, size_t n);
 
 /*
+ * The one way every front end (--batch, the explorer, sweep, fit) opens a
+ * scene: finds the preset NAME (hb_preset_resolve; its path goes into path,
+ * pn bytes), then hb_preset_open with the --set texts.  Returns 0, or
+ * HB_EINVAL / HB_EIO with msg holding "preset 'NAME': ..." when it is not
+ * found, else hb_preset_open's message.
+ */
+int
+hb_preset_open_named(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
+                     char *path, size_t pn, char *msg, size_t n);
+
+/*
  * Writes the scene as a preset that reproduces it exactly (%.17g values),
  * to a temporary name in the same folder and renamed.  Returns 0, or HB_EIO
  * with "PATH: strerror" in msg; an existing file is left intact on failure.

@@ -57,6 +57,9 @@ enum hb_sim_end {
 	HB_SIM_END_FAIL,   /* failed: hb_sim_errmsg() says why, at which (t, j) */
 };
 
+/* Room for the components of any contact ODE in hb_sim_stats (11 today). */
+#define HB_SIM_MAXCOMP 16
+
 struct hb_sim_stats {
 	long steps;        /* accepted integrator steps */
 	long rejected;     /* rejected trial steps */
@@ -83,9 +86,9 @@ struct hb_sim_stats {
 	int switched;      /* 1: run.stepper = auto went over to bsimp for the contacts */
 	double seconds;    /* CPU time spent in hb_sim_advance (CLOCK_PROCESS_CPUTIME_ID), s */
 	double wall;       /* wall time spent in hb_sim_advance (CLOCK_MONOTONIC), s */
-	int ncomp;         /* components of the contact ODE */
-	double scale[8];   /* per-component scale of the absolute tolerance */
-	const char *comp[8]; /* their names */
+	int ncomp;         /* components of the contact ODE (at most HB_SIM_MAXCOMP) */
+	double scale[HB_SIM_MAXCOMP]; /* per-component scale of the absolute tolerance */
+	const char *comp[HB_SIM_MAXCOMP]; /* their names */
 };
 
 struct hb_sim;

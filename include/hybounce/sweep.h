@@ -44,6 +44,7 @@ HB_BEGIN_DECLS
 
 #include <signal.h>
 #include <stddef.h>
+#include "observables.h"
 #include "scene.h"
 
 struct hb_sweep;
@@ -183,24 +184,29 @@ hb_sweep_merge(const char *dir, char *msg, size_t n);
  * the same runs: bit-identical to --batch), taken in order.
  */
 enum hb_sweep_observable {
-	HB_CURVE_E = 0,      /* e of collision i */
+	HB_CURVE_E = 0,      /* e of collision i (i among all: NAN if thinned out) */
 	HB_CURVE_VI,         /* v_i of collision i, m/s */
 	HB_CURVE_XCR,        /* x_c^r of collision i, m */
-	HB_CURVE_COLLISIONS, /* number of completed collisions */
-	HB_CURVE_TPC,        /* time of permanent contact, s (NAN: the run ends apart) */
-	HB_CURVE_XCR_TOTAL,  /* sum of x_c^r over the collisions, m */
-	HB_CURVE_COUNT
+	HB_CURVE_RUN,        /* HB_CURVE_RUN + k: run observable k (observables.h) */
+	HB_CURVE_COLLISIONS = HB_CURVE_RUN + HB_OBS_COLLISIONS, /* every completed collision */
+	HB_CURVE_TPC = HB_CURVE_RUN + HB_OBS_T_PC,    /* time of permanent contact, s */
+	HB_CURVE_XCR_TOTAL = HB_CURVE_RUN + HB_OBS_X_C_R_TOTAL, /* sum of x_c^r, m */
+	HB_CURVE_COUNT = HB_CURVE_RUN + HB_OBS_COUNT
 };
 
 enum { HB_CURVE_PENDING = 0, HB_CURVE_DONE, HB_CURVE_FAILED };
 
-/* Name of an observable ("e", "collisions", "t_pc" ...), NULL if out of range. */
+/*
+ * Name of an observable ("e", "v_i", "x_c_r", then the run observables'
+ * names: "collisions", "t_pc" ...), NULL if out of range.
+ */
 const char *
 hb_sweep_observable_name(int obs);
 
 /*
  * The observable obs of a run (of collision i where it applies), as the
- * curve takes it once the run has ended: NAN when it does not exist.
+ * curve takes it once the run has ended: NAN when it does not exist.  A run
+ * observable is hb_observable_value(s, obs - HB_CURVE_RUN), as in runs.csv.
  */
 struct hb_sim;
 double

@@ -46,6 +46,7 @@
 #include "hybounce/columns.h"
 #include "hybounce/csv.h"
 #include "hybounce/law.h"
+#include "hybounce/observables.h"
 #include "hybounce/preset.h"
 #include "hybounce/scene.h"
 #include "hybounce/sim.h"
@@ -287,7 +288,7 @@ print_header(FILE *out, const char *preset, const char *path,
 
 		fprintf(out, "            absolute tolerance = atol x scale (scales of the last contact):\n");
 		line[0] = '\0';
-		for (i = 0; i < st->ncomp && i < 8 && len < sizeof line; i++)
+		for (i = 0; i < st->ncomp && i < HB_SIM_MAXCOMP && len < sizeof line; i++)
 			len += (size_t)snprintf(line + len, sizeof line - len, "%s%s %.3g",
 			                        i ? ", " : "", st->comp[i] ? st->comp[i] : "?",
 			                        st->scale[i]);
@@ -517,6 +518,41 @@ print_jumps(FILE *out, const struct hb_arc *a)
 	fprintf(out, "\n");
 }
 
+/*
+ * The run observables (observables.h), "name = value unit" in SI as a
+ * sweep's runs.csv has them (6 digits; "-" where there is none), as many
+ * to a line as fit in 79 columns.
+ */
+static void
+print_observables(FILE *out, const struct hb_sim *s)
+{
+	int col = 12; /* "  observables" less the blank that each pair brings */
+
+	fprintf(out, "  observables");
+	for (int k = 0; k < HB_OBS_COUNT; k++) {
+		const struct hb_observable_def *d = &hb_observables[k];
+		double v = hb_observable_value(s, k);
+		char b[96];
+		int len;
+
+		if (isnan(v))
+			len = snprintf(b, sizeof b, "%s = -", d->name);
+		else if (d->whole)
+			len = snprintf(b, sizeof b, "%s = %ld", d->name, (long)v);
+		else
+			len = snprintf(b, sizeof b, "%s = %.6g%s%s", d->name, v, d->unit[0] ? " " : "",
+			               d->unit);
+		if (k > 0 && col + 2 + len > 79) {
+			fprintf(out, ",\n              %s", b);
+			col = 14 + len;
+		} else {
+			fprintf(out, "%s %s", k ? "," : "", b);
+			col += 2 + len;
+		}
+	}
+	fprintf(out, "\n");
+}
+
 static void
 print_summary(FILE *out, const struct hb_sim *s, int sig)
 {
@@ -551,6 +587,7 @@ print_summary(FILE *out, const struct hb_sim *s, int sig)
 		        hb_sim_ncollisions(s));
 	else
 		fprintf(out, "  collisions  %zu\n", hb_sim_ncollisions(s));
+	print_observables(out, s);
 	fprintf(out, "  run time    %s CPU", fmt(st->seconds, hb_unit_time, b1, sizeof b1));
 	fprintf(out, ", %s wall\n", fmt(st->wall, hb_unit_time, b1, sizeof b1));
 	fprintf(out, "  steps       %ld accepted, %ld rejected\n", st->steps, st->rejected);
@@ -659,7 +696,7 @@ int
 batch_run(const struct batch_options *o)
 {
 	struct hb_scene sc;
-	char path[1024], msg[1024];
+	char path[1024], msg[4096]; /* the resolver names a refused preset whole */
 	struct hb_collision live;
 	struct hb_sim *s;
 	struct sigaction old_term, old_int;
@@ -672,14 +709,9 @@ batch_run(const struct batch_options *o)
 	FILE *out = trace_out || coll_out ? stderr : stdout;
 
 	msg[0] = '\0';
-	if (hb_preset_resolve(o->preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": preset '%s': %s\n", o->preset,
-		        msg[0] ? msg : "not found");
-		return 2;
-	}
-	msg[0] = '\0';
-	if (hb_preset_open(path, o->sets, o->nsets, &sc, msg, sizeof msg) != HB_OK) {
-		err(msg[0] ? msg : path);
+	if (hb_preset_open_named(o->preset, o->sets, o->nsets, &sc, path, sizeof path, msg,
+	                         sizeof msg) != HB_OK) {
+		err(msg[0] ? msg : o->preset);
 		return 2;
 	}
 	if (trace_out && coll_out) {

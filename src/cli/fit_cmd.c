@@ -94,26 +94,6 @@ bad(const char *fmt, ...)
 	return 2;
 }
 
-/* Applies "KEY=VALUE" to sc; 0 or exit status 2 with the message printed. */
-static int
-apply_set(struct hb_scene *sc, const char *arg)
-{
-	const char *eq = strchr(arg, '=');
-	char key[64], msg[512];
-	size_t kl;
-
-	if (eq == NULL || eq == arg || (kl = (size_t)(eq - arg)) >= sizeof key)
-		return bad("--set '%s': expected KEY=VALUE, e.g. --set law.c=0.4", arg);
-	memcpy(key, arg, kl);
-	key[kl] = '\0';
-	while (kl > 0 && (key[kl - 1] == ' ' || key[kl - 1] == '\t'))
-		key[--kl] = '\0';
-	msg[0] = '\0';
-	if (hb_scene_set(sc, key, eq + 1, msg, sizeof msg) != HB_OK)
-		return bad("--set %s: %s", arg, msg);
-	return 0;
-}
-
 /* Parses a positive whole number for an option. */
 static int
 parse_int(const char *opt, const char *s, int *out)
@@ -306,7 +286,7 @@ fit_main(int argc, char **argv)
 {
 	const char *data = NULL, *out = NULL, *resid_path = NULL, *preset;
 	const char **sets = NULL, *keys[HB_FIT_MAX_FREE];
-	char *freebuf = NULL, path[1024], outbuf[1024], msg[1024];
+	char *freebuf = NULL, path[1024], outbuf[1024], msg[4096];
 	struct hb_onset_options oo = { 0 };
 	struct hb_fit_options fo = { 0 };
 	struct hb_fit_data d = { 0 };
@@ -387,8 +367,8 @@ fit_main(int argc, char **argv)
 		status = bad("--free KEY[,KEY...] is required, e.g. --free law.c,law.alpha");
 		goto out;
 	}
-	for (char *save = NULL, *k = strtok_r(freebuf, ", ", &save); k != NULL;
-	     k = strtok_r(NULL, ", ", &save)) {
+	for (char *save = NULL, *k = strtok_r(freebuf, ", \t", &save); k != NULL;
+	     k = strtok_r(NULL, ", \t", &save)) {
 		if (nkeys == HB_FIT_MAX_FREE) {
 			status = bad("--free: more than %d keys", HB_FIT_MAX_FREE);
 			goto out;
@@ -401,19 +381,9 @@ fit_main(int argc, char **argv)
 	}
 
 	msg[0] = '\0';
-	if (hb_preset_resolve(preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
-		status = bad("preset '%s': %s", preset, msg);
-		goto out;
-	}
-	if (hb_preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
-		status = bad("%s", msg);
-		goto out;
-	}
-	for (int i = 0; i < nsets; i++)
-		if (apply_set(&sc, sets[i]) != 0)
-			goto out;
-	if (hb_scene_validate(&sc, msg, sizeof msg) != HB_OK) {
-		status = bad("%s: %s", path, msg);
+	if (hb_preset_open_named(preset, sets, nsets, &sc, path, sizeof path, msg,
+	                         sizeof msg) != HB_OK) {
+		status = bad("%s", msg[0] ? msg : preset);
 		goto out;
 	}
 	if (out == NULL) {

@@ -161,7 +161,7 @@ hybounce_main(int argc, char **argv)
 	const char **sets;
 	const char *batch = NULL, *script = NULL, *data = NULL;
 	int nsets = 0, ascii = 0, list_presets = 0, list_laws = 0, c, status;
-	char msg[1024];
+	char msg[4096];
 
 	if (argc > 1 && strcmp(argv[1], "sweep") == 0)
 		return sweep_main(argc - 1, argv + 1);   /* hybounce sweep ... (sweep.c) */
@@ -190,12 +190,7 @@ hybounce_main(int argc, char **argv)
 			}
 			batch = optarg;
 			break;
-		case 's':
-			if (strchr(optarg, '=') == NULL) {
-				free(sets);
-				return bad_usage("--set '%s': expected KEY=VALUE, e.g. "
-				                 "--set law.c=0.4", optarg);
-			}
+		case 's': /* read with the preset, by hb_preset_open_named */
 			sets[nsets++] = optarg;
 			break;
 		case 't': bo.trace = optarg; break;

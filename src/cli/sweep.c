@@ -240,40 +240,15 @@ static struct hb_sweep *
 build(const char *preset, const char *const *sets, int nsets,
       const char *const *varies, int nvaries)
 {
-	char path[4096], msg[1024];
+	char path[4096], msg[4096];
 	struct hb_scene sc;
 	struct hb_sweep *sw;
 	char *text;
 
 	msg[0] = '\0';
-	if (hb_preset_resolve(preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": preset '%s': %s\n", preset, msg[0] ? msg : "not found");
-		return NULL;
-	}
-	msg[0] = '\0';
-	if (hb_preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": %s\n", msg[0] ? msg : path);
-		return NULL;
-	}
-	for (int i = 0; i < nsets; i++) {
-		const char *eq = strchr(sets[i], '=');
-		char key[128];
-
-		if (eq == NULL || eq == sets[i] || (size_t)(eq - sets[i]) >= sizeof key) {
-			fprintf(stderr, PROG ": --set '%s': expected KEY=VALUE, e.g. "
-			        "--set law.c=0.4\n", sets[i]);
-			return NULL;
-		}
-		snprintf(key, sizeof key, "%.*s", (int)(eq - sets[i]), sets[i]);
-		msg[0] = '\0';
-		if (hb_scene_set(&sc, key, eq + 1, msg, sizeof msg) != HB_OK) {
-			fprintf(stderr, PROG ": --set %s: %s\n", sets[i], msg);
-			return NULL;
-		}
-	}
-	msg[0] = '\0';
-	if (hb_scene_validate(&sc, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": %s: %s\n", path, msg);
+	if (hb_preset_open_named(preset, sets, nsets, &sc, path, sizeof path, msg,
+	                         sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": %s\n", msg[0] ? msg : preset);
 		return NULL;
 	}
 	sw = hb_sweep_new(&sc, msg, sizeof msg);

@@ -20,4 +20,10 @@ collision_columns_mdoc(char *buf, size_t n);
 size_t
 collision_columns_markdown(char *buf, size_t n);
 
+/* The run observables (observables.h): mdoc list items, and a Markdown table. */
+size_t
+run_observables_mdoc(char *buf, size_t n);
+size_t
+run_observables_markdown(char *buf, size_t n);
+
 #endif

@@ -527,6 +527,21 @@ hb_preset_open(const char *path, const char *const *sets, int nsets, struct hb_s
 	return st;
 }
 
+int
+hb_preset_open_named(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
+                     char *path, size_t pn, char *msg, size_t n)
+{
+	char m[4096];
+	int st;
+
+	m[0] = '\0';
+	/* the resolver's message names the preset too: a long name is shown by its start here */
+	if ((st = hb_preset_resolve(name, path, pn, m, sizeof m)) != HB_OK)
+		return hb_status_set(msg, n, st, "preset '%.*s%s': %s", strlen(name) > 72 ? 60 : 72,
+		    name, strlen(name) > 72 ? "..." : "", m[0] ? m : "not found");
+	return hb_preset_open(path, sets, nsets, sc, msg, n);
+}
+
 /* ---------------------------------------------------------------- */
 /* Writing */
 

@@ -332,7 +332,7 @@ build(struct hb_sim *s, char *msg, size_t n)
 			names[L->ivm] = "v_m";
 		}
 		/* the names depend on the law only through n_z: keep per-sim copies */
-		for (i = 0; i < 8; i++)
+		for (i = 0; i < HB_SIM_MAXCOMP; i++)
 			s->st.comp[i] = i < L->dim ? names[i] : NULL;
 	}
 	return 0;
@@ -495,6 +495,7 @@ hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out)
 	out->xcmax = s->xcmax;
 	out->Fcmax = s->Fcmax;
 	out->xcr = fabs(s->xc);
+	out->xcr_sum = (s->ncol > 0 ? s->col[s->ncol - 1].xcr_sum : 0.0) + out->xcr;
 	out->W = s->W;
 	out->JFc = s->JFc;
 	out->JFe = s->JFe;

@@ -318,7 +318,7 @@ hbs_scales(struct hb_sim *s, const struct layout *L, int q)
 		s->iscale[i] = 1.0 / s->scale[i];
 	}
 	if (q) {
-		s->st.ncomp = L->dim < 8 ? L->dim : 8;
+		s->st.ncomp = L->dim < HB_SIM_MAXCOMP ? L->dim : HB_SIM_MAXCOMP;
 		for (i = 0; i < s->st.ncomp; i++)
 			s->st.scale[i] = s->scale[i];
 	}

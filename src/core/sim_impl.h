@@ -38,6 +38,7 @@ enum {
 	MAX_RETRY = 60,        /* retries of a step that produced a non-finite state */
 	MAX_TINY = 200,        /* consecutive steps at the resolution of t before failing */
 };
+_Static_assert(MAXDIM <= HB_SIM_MAXCOMP, "hb_sim_stats holds every component's scale");
 
 /* Which components the ODE of a flow interval carries; -1 when absent. */
 struct layout {

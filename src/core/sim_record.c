@@ -93,6 +93,7 @@ push_collision(struct hb_sim *s)
 	c.xcmax = s->xcmax;
 	c.Fcmax = s->Fcmax;
 	c.xcr = fabs(s->xc);
+	c.xcr_sum = (s->ncol > 0 ? s->col[s->ncol - 1].xcr_sum : 0.0) + c.xcr;
 	c.W = s->W;
 	c.JFc = s->JFc;
 	c.JFe = s->JFe;

@@ -20,6 +20,7 @@
 
 #include "hybounce/arc.h"
 #include "hybounce/csv.h"
+#include "hybounce/observables.h"
 #include "hybounce/preset.h"
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
@@ -351,9 +352,15 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 	}
 	strcpy(a.key, key);
 	free(key);
-	if (strlen(eq + 1) >= sizeof a.spec)
+	/* blanks around the spec go, as around a --set value */
+	if ((key = trimmed(eq + 1, eq + 1 + strlen(eq + 1))) == NULL)
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+	if (strlen(key) >= sizeof a.spec) {
+		free(key);
 		return hb_status_set(msg, n, HB_EINVAL, "--vary %s: value too long", a.key);
-	snprintf(a.spec, sizeof a.spec, "%s", eq + 1);
+	}
+	strcpy(a.spec, key);
+	free(key);
 	for (k = 0; k < sw->naxes; k++)
 		if (strcmp(sw->ax[k].key, a.key) == 0)
 			break;
@@ -488,10 +495,7 @@ hb_sweep_spec_format(const struct hb_sweep *sw, char *buf, size_t n)
 	return len;
 }
 
-static const char runs_cols[] =
-	"status,message,collisions,t_pc,e_first,v_i_first,e_last,v_i_last,x_c_r_total,"
-	"t_end,j_end,q_c_end,x_end,v_end,x_c_end,steps,rejected,rhs,jac,cpu_s";
-
+/* id, the axes, status, message, the run observables (observables.h), cpu_s. */
 size_t
 hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n)
 {
@@ -501,7 +505,11 @@ hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n)
 		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
 		                        ",%s", sw->ax[k].key);
 	len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
-	                        ",%s", runs_cols);
+	                        ",status,message");
+	for (int k = 0; k < HB_OBS_COUNT; k++)
+		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
+		                        ",%s", hb_observables[k].name);
+	len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0, ",cpu_s");
 	return len;
 }
 
@@ -509,19 +517,8 @@ hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n)
 static void
 runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s, double cpu)
 {
-	const struct hb_sim_stats *st = hb_sim_stats(s);
-	const struct hb_arc_sample *last = hb_arc_last(hb_sim_arc(s));
-	size_t nc = hb_sim_ncollisions(s);
-	const struct hb_collision *c0 = nc ? hb_sim_collision(s, 0) : NULL;
-	const struct hb_collision *cl = nc ? hb_sim_collision(s, nc - 1) : NULL;
-	struct hb_collision live;
-	double xcr = 0, tpc = NAN;
 	int failed = hb_sim_end(s) == HB_SIM_END_FAIL;
 
-	for (size_t i = 0; i < nc; i++)
-		xcr += hb_sim_collision(s, i)->xcr;
-	if (!failed && hb_sim_contact_live(s, &live))
-		tpc = live.te;
 	fprintf(f, "r,%ld", id);
 	for (int k = 0; k < sw->naxes; k++) {
 		fputc(',', f);
@@ -529,19 +526,14 @@ runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s, do
 	}
 	fprintf(f, ",%s,", failed ? "failed" : "ok");
 	csv_put_field(f, failed && hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_sim_end_str(s));
-	fprintf(f, ",%zu", nc);
-	csv_put_num(f, tpc);
-	csv_put_num(f, c0 ? c0->e : NAN);
-	csv_put_num(f, c0 ? c0->vi : NAN);
-	csv_put_num(f, cl ? cl->e : NAN);
-	csv_put_num(f, cl ? cl->vi : NAN);
-	csv_put_num(f, xcr);
-	csv_put_num(f, last ? last->t : NAN);
-	fprintf(f, ",%ld,%d", last ? last->j : 0L, last ? last->q : 0);
-	csv_put_num(f, last ? last->x : NAN);
-	csv_put_num(f, last ? last->v : NAN);
-	csv_put_num(f, last ? last->xc : NAN);
-	fprintf(f, ",%ld,%ld,%ld,%ld", st->steps, st->rejected, st->rhs, st->jac);
+	for (int k = 0; k < HB_OBS_COUNT; k++) {
+		double v = hb_observable_value(s, k);
+
+		if (hb_observables[k].whole)
+			fprintf(f, ",%ld", (long)v);
+		else
+			csv_put_num(f, v);
+	}
 	csv_put_num(f, cpu);
 	fputc('\n', f);
 }

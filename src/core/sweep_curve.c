@@ -24,9 +24,8 @@
 #define SLICE_STEPS 2000
 #define CURVE_MAX_JOBS 64
 
-static const char *const obs_names[HB_CURVE_COUNT] = {
-	"e", "v_i", "x_c_r", "collisions", "t_pc", "x_c_r_total",
-};
+/* The per-collision observables; the run observables are named by their table. */
+static const char *const obs_names[HB_CURVE_RUN] = { "e", "v_i", "x_c_r" };
 
 struct hb_sweep_curve {
 	struct hb_sweep *sw;
@@ -45,28 +44,44 @@ struct hb_sweep_curve {
 const char *
 hb_sweep_observable_name(int obs)
 {
-	return obs >= 0 && obs < HB_CURVE_COUNT ? obs_names[obs] : NULL;
+	if (obs >= HB_CURVE_RUN && obs < HB_CURVE_COUNT)
+		return hb_observables[obs - HB_CURVE_RUN].name;
+	return obs >= 0 && obs < HB_CURVE_RUN ? obs_names[obs] : NULL;
+}
+
+/* The kept collision numbered i among all, or NULL (none, or thinned out). */
+static const struct hb_collision *
+collision_numbered(const struct hb_sim *s, long i)
+{
+	size_t lo = 0, hi = hb_sim_ncollisions(s);
+
+	while (lo < hi) { /* the kept ones are in increasing i */
+		size_t mid = lo + (hi - lo) / 2;
+		const struct hb_collision *c = hb_sim_collision(s, mid);
+
+		if (c->i == i)
+			return c;
+		if (c->i < i)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return NULL;
 }
 
 double
 hb_sweep_observe(const struct hb_sim *s, int obs, long i)
 {
-	size_t nc = hb_sim_ncollisions(s);
-	const struct hb_collision *c = i >= 0 && (size_t)i < nc ? hb_sim_collision(s, (size_t)i) : NULL;
-	struct hb_collision live;
-	double sum = 0;
+	const struct hb_collision *c;
 
+	if (obs >= HB_CURVE_RUN)
+		return hb_observable_value(s, obs - HB_CURVE_RUN);
+	c = collision_numbered(s, i);
 	switch (obs) {
 	case HB_CURVE_E: return c ? c->e : NAN;
 	case HB_CURVE_VI: return c ? c->vi : NAN;
 	case HB_CURVE_XCR: return c ? c->xcr : NAN;
-	case HB_CURVE_COLLISIONS: return (double)nc;
-	case HB_CURVE_TPC:
-		return hb_sim_end(s) != HB_SIM_END_FAIL && hb_sim_contact_live(s, &live) ? live.te : NAN;
-	default:
-		for (size_t k = 0; k < nc; k++)
-			sum += hb_sim_collision(s, k)->xcr;
-		return sum;
+	default: return NAN;
 	}
 }
 

@@ -196,8 +196,7 @@ pane_sweep_draw(const struct app *a)
 		}
 		hb_units_format(xs, ki.dim, 4, vx, sizeof vx);
 		if (isfinite(ys))
-			hb_units_format(ys, ou ? (v->obs == HB_CURVE_VI ? hb_unit_velocity
-			             : v->obs == HB_CURVE_TPC ? hb_unit_time : hb_unit_length) : hb_unit_none, 4, vy, sizeof vy);
+			hb_units_format(ys, sv_obs_dim(v->obs), 4, vy, sizeof vy);
 		else
 			snprintf(vy, sizeof vy, "%s", hb_sim_end(a->sim) == HB_SIM_RUNNING ? "computing" : "none");
 		snprintf(line, sizeof line, "@ scene: %s = %s, %s = %s", ki.label, vx, on, vy);

@@ -27,9 +27,7 @@ load_sim(const char *name, const char *const *sets, int nsets, char *path, size_
 {
 	struct hb_scene sc;
 
-	if (hb_preset_resolve(name, path, pn, msg, n) != HB_OK)
-		return NULL;
-	if (hb_preset_open(path, sets, nsets, &sc, msg, n) != HB_OK)
+	if (hb_preset_open_named(name, sets, nsets, &sc, path, pn, msg, n) != HB_OK)
 		return NULL;
 	return hb_sim_new(&sc, msg, n);
 }

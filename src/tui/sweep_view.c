@@ -32,13 +32,23 @@
 const char *
 sv_obs_unit(int obs)
 {
+	if (obs >= HB_CURVE_RUN && obs < HB_CURVE_COUNT) /* the run observables' table */
+		return hb_observables[obs - HB_CURVE_RUN].unit[0] ? hb_observables[obs - HB_CURVE_RUN].unit
+		                                                  : NULL;
 	switch (obs) {
 	case HB_CURVE_VI: return "m/s";
-	case HB_CURVE_XCR:
-	case HB_CURVE_XCR_TOTAL: return "m";
-	case HB_CURVE_TPC: return "s";
+	case HB_CURVE_XCR: return "m";
 	default: return NULL;
 	}
+}
+
+struct hb_unit_dim
+sv_obs_dim(int obs)
+{
+	if (obs >= HB_CURVE_RUN && obs < HB_CURVE_COUNT)
+		return *hb_observables[obs - HB_CURVE_RUN].dim;
+	return obs == HB_CURVE_VI ? hb_unit_velocity : obs == HB_CURVE_XCR ? hb_unit_length
+	                                                                  : hb_unit_none;
 }
 
 double

@@ -42,6 +42,9 @@ struct sweep_view {
 enum { SV_PROMPT_RANGE = 1, SV_PROMPT_EXPORT };
 
 /* SI base unit of an observable for axis labels ("m", "m/s", "s"), NULL for a plain number. */
+struct hb_unit_dim
+sv_obs_dim(int obs);
+/* The same as text. */
 const char *
 sv_obs_unit(int obs);
 

@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # hybounce sweep --emit parallel, run for real with GNU parallel on the local
 # cores (and through --sshlogin ':', parallel's name for this machine): the
-# merged files equal the one-machine sweep's.
+# merged files equal the one-machine sweep's, also for folders, presets and
+# --set values whose names hold what a shell would read: blanks, quotes,
+# $(...), backquotes, newlines, parallel's {} (no command in them runs).
 # Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
 . "$(dirname "$0")/common.inc"
 if ! command -v parallel >/dev/null 2>&1; then
@@ -19,7 +21,7 @@ set -- --vary "initial.x0=5um:60um:12" --vary "law.c=1e9,4.3e9"
 
 "$BIN" sweep $P "$@" --out "$T/par" --emit parallel --shards 5 >"$T/cmd" 2>"$T/err"
 rc=$?
-if [ $rc -eq 0 ] && [ "$(wc -l <"$T/cmd")" -eq 1 ] && grep -q '^parallel .* --shard {}/5 ::: 0 1 2 3 4 && .* sweep --quiet --merge ' "$T/cmd" &&
+if [ $rc -eq 0 ] && [ "$(wc -l <"$T/cmd")" -eq 1 ] && grep -q '^HB_SWEEP_BIN=.* HB_SWEEP_DIR=.* parallel .* --shard {}/5'"'"' ::: 0 1 2 3 4 && .* sweep --quiet --merge ' "$T/cmd" &&
     [ -f "$T/par/sweep.preset" ] && [ ! -f "$T/par/runs.csv" ]; then
 	ok "--emit parallel prints one command line (5 shards, then --merge) and writes sweep.preset"
 else notok "--emit parallel prints one command line (exit $rc)" "$T/cmd"; fi
@@ -30,8 +32,54 @@ if [ $rc -eq 0 ] && same_sweep "$T/one" "$T/par" && [ -f "$T/par/shard-4-of-5.jo
 else notok "GNU parallel runs the shards and the merge (exit $rc)" "$T/out"; fi
 
 "$BIN" sweep $P "$@" --out "$T/ssh" --emit parallel --shards 3 --sshlogin ':' >"$T/cmd" 2>"$T/err"
-if grep -q "^parallel --halt now,fail=1 --sshlogin ':' " "$T/cmd" &&
+if grep -q " parallel --halt now,fail=1 --sshlogin ':' --env HB_SWEEP_BIN --env HB_SWEEP_DIR " "$T/cmd" &&
     timeout 120 sh -c "$(cat "$T/cmd")" >"$T/out" 2>&1 && same_sweep "$T/one" "$T/ssh"; then
 	ok "--emit parallel --sshlogin ':' (this machine as an ssh login) gives the same files"
 else notok "--emit parallel --sshlogin ':' gives the same files" "$T/out"; cat "$T/cmd" | sed 's/^/# /'; fi
-exit 0
+# Hostile names: each is the folder (and the preset file's name, and part of
+# a --set value) of a sweep emitted for parallel and run for real; a command
+# in a name would touch a canary in $T (the scripts run there).
+. "$(dirname "$0")/hostile_names.inc"
+cd "$T" || exit 1
+tried=0 injected=0
+i=0
+while [ $i -lt "$hostile_count" ]; do
+	name=$(hostile_name $i)
+	tried=$((tried + 1))
+	mkdir -p "$T/h$i" && cp "$HYBOUNCE_PRESETS/$P.preset" "$T/h$i/$name.preset"
+	set -- --vary "initial.x0=5um:60um:4" --set "scene.description=$(hostile_value $i)"
+	"$BIN" sweep "$T/h$i/$name.preset" "$@" --quiet --out "$T/h$i/one" 2>"$T/err" ||
+	    notok "folder $(hostile_show "$name"): one-machine sweep" "$T/err"
+	"$BIN" sweep "$T/h$i/$name.preset" "$@" --out "$T/h$i/$name" --emit parallel --shards 3 \
+	    >"$T/cmd" 2>"$T/err"
+	rc=$?
+	timeout 120 sh "$T/cmd" >"$T/out" 2>&1
+	rc2=$?
+	if [ $rc -eq 0 ] && [ $rc2 -eq 0 ] && same_sweep "$T/h$i/one" "$T/h$i/$name"; then
+		ok "--emit parallel, folder $(hostile_show "$name"): runs as emitted, same files as one machine"
+	else
+		notok "--emit parallel, folder $(hostile_show "$name") (emit $rc, run $rc2)" "$T/out"
+		show "$T/cmd"
+	fi
+	hostile_canaries "$T" || injected=$((injected + 1))
+	i=$((i + 1))
+done
+# The last, worst name once more through --sshlogin ':' (--env carries it).
+i=$((hostile_count - 1))
+name=$(hostile_name $i)
+"$BIN" sweep "$T/h$i/$name.preset" --vary "initial.x0=5um:60um:4" \
+    --set "scene.description=$(hostile_value $i)" --out "$T/h$i/ssh $name" --emit parallel \
+    --shards 2 --sshlogin ':' >"$T/cmd" 2>"$T/err" &&
+    timeout 120 sh "$T/cmd" >"$T/out" 2>&1 && same_sweep "$T/h$i/one" "$T/h$i/ssh $name"
+rc=$?
+tried=$((tried + 1))
+hostile_canaries "$T" || injected=$((injected + 1))
+if [ $rc -eq 0 ]; then
+	ok "--emit parallel --sshlogin ':', folder $(hostile_show "ssh $name"): same files"
+else notok "--emit parallel --sshlogin ':', folder $(hostile_show "ssh $name")" "$T/out"; fi
+if [ "$injected" -eq 0 ]; then
+	ok "--emit parallel: names tried $tried, commands injected 0"
+else
+	notok "--emit parallel: names tried $tried, commands injected $injected"
+fi
+exit $((fails > 0))

@@ -6,7 +6,10 @@
 # slurm.conf naming this host, with every state, spool, log and socket in a
 # temporary folder and ports of their own.  The emitted script submits the
 # job array and the dependent merge job; the merged files must equal the
-# one-machine sweep's.  The daemons are stopped by the pids they wrote.
+# one-machine sweep's, also for folders, presets and --set values whose names
+# hold what a shell would read (blanks, quotes, $(...), backquotes, newlines,
+# Slurm's %A): no command in them runs.  The daemons are stopped by the pids
+# they wrote.
 # Needs root (slurmd runs jobs as their user; munged and slurm as root here).
 # Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
 set -u
@@ -137,5 +140,56 @@ if [ "$state" = COMPLETED ] && [ -f "$T/cluster/runs.csv" ] &&
 else
 	notok "Slurm ran the shards and the merge (merge job $merge: ${state:-unknown})" "$T/log/slurmctld.log"
 	cat "$T"/cluster/slurm-*.out 2>/dev/null | sed 's/^/# /' | tail -n 20
+fi
+# Hostile names: each is the folder (and the preset file's name, and part of
+# a --set value) of a sweep emitted for Slurm; every script is submitted from
+# $T, where a command in a name would touch a canary.
+. "$(dirname "$0")/hostile_names.inc"
+tried=0 injected=0 fails=0
+i=0
+while [ $i -lt "$hostile_count" ]; do
+	name=$(hostile_name $i)
+	mkdir -p "$T/h$i" && cp "$HYBOUNCE_PRESETS/$P.preset" "$T/h$i/$name.preset"
+	set -- --vary "initial.x0=5um:60um:4" --set "scene.description=$(hostile_value $i)"
+	"$BIN" sweep "$T/h$i/$name.preset" "$@" --quiet --out "$T/h$i/one" 2>"$T/err" ||
+	    notok "folder $(hostile_show "$name"): one-machine sweep" "$T/err"
+	if ! "$BIN" sweep "$T/h$i/$name.preset" "$@" --out "$T/h$i/$name" --emit slurm --shards 2 \
+	    >"$T/h$i/job.sh" 2>"$T/err" || ! sh -n "$T/h$i/job.sh"; then
+		notok "--emit slurm, folder $(hostile_show "$name"): a script" "$T/err"
+	elif ! (cd "$T" && sh "$T/h$i/job.sh") >"$T/h$i/submit" 2>&1; then
+		notok "--emit slurm, folder $(hostile_show "$name"): sh job.sh submits" "$T/h$i/submit"
+	fi
+	i=$((i + 1))
+done
+i=0
+while [ $i -lt 900 ]; do
+	[ -z "$(squeue -h 2>/dev/null)" ] && break
+	i=$((i + 1))
+	sleep 0.2
+done
+i=0
+while [ $i -lt "$hostile_count" ]; do
+	name=$(hostile_name $i)
+	tried=$((tried + 1))
+	merge=$(sed -n 's/^submitted array job \([0-9]*\) and merge job \([0-9]*\)$/\2/p' "$T/h$i/submit" 2>/dev/null)
+	state=$(scontrol show job "$merge" 2>/dev/null | sed -n 's/.*JobState=\([A-Z_]*\).*/\1/p')
+	if [ "$state" = COMPLETED ] && [ -f "$T/h$i/$name/runs.csv" ] &&
+	    nocpu "$T/h$i/one/runs.csv" >"$T/a" && nocpu "$T/h$i/$name/runs.csv" >"$T/b" &&
+	    cmp -s "$T/a" "$T/b" && cmp -s "$T/h$i/one/collisions.csv" "$T/h$i/$name/collisions.csv" &&
+	    cmp -s "$T/h$i/one/sweep.preset" "$T/h$i/$name/sweep.preset"; then
+		ok "--emit slurm, folder $(hostile_show "$name"): Slurm ran it, same files as one machine"
+	else
+		notok "--emit slurm, folder $(hostile_show "$name") (merge job ${merge:-none}: ${state:-unknown})" "$T/h$i/job.sh"
+		fails=$((fails + 1))
+		cat "$T/h$i/$name"/slurm-*.out 2>/dev/null | sed 's/^/# /' | tail -n 10
+	fi
+	i=$((i + 1))
+done
+# The jobs ran in $T, the scripts were submitted from there; the folders too.
+hostile_canaries "$T" || injected=1
+if [ "$injected" -eq 0 ]; then
+	ok "--emit slurm: names tried $tried, commands injected 0"
+else
+	notok "--emit slurm: names tried $tried, commands injected (a canary appeared under $T)"
 fi
 exit 0
