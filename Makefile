@@ -343,12 +343,22 @@ clean:
 
 # The sweep's threads under ThreadSanitizer (build-tsan/): the engine's
 # writable statics and the same point on many threads at once
-# (tests/cli/sweep_reentrant.sh, which make check runs on the plain build).
+# (tests/cli/sweep_reentrant.sh, which make check runs on the plain build);
+# then 16 threads loading and running every shipped preset at once
+# (tests/host/preset_threads.c, linked with the installable libhybounce.a).
 .PHONY: check-tsan
+PRESET_THREADS := $(BUILD)/preset-threads
+$(PRESET_THREADS): tests/host/preset_threads.c $(STATIC_LIB)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(STATIC_LIB) $(CORE_LIBS) $(AUBIO_LIBS)
 check-tsan: deps
-	@$(MAKE) --no-print-directory BUILD=build-tsan SAN=thread OPT=-O1 all
+	@$(MAKE) --no-print-directory BUILD=build-tsan SAN=thread OPT=-O1 all build-tsan/preset-threads
 	@TSAN_OPTIONS=halt_on_error=1:exitcode=66 HYBOUNCE_BIN=$(CURDIR)/build-tsan/hybounce \
 	    HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/cli/sweep_reentrant.sh | tee build-tsan/tsan.log; \
+	TSAN_OPTIONS=halt_on_error=1:exitcode=66 HYBOUNCE_PRESETS=$(CURDIR)/presets \
+	    build-tsan/preset-threads 16 >build-tsan/preset-threads.log 2>&1; rc=$$?; \
+	    cat build-tsan/preset-threads.log | tee -a build-tsan/tsan.log; \
+	    [ $$rc -eq 0 ] || echo "not ok - preset-threads 16 exits $$rc (build-tsan/preset-threads.log)" | \
+	    tee -a build-tsan/tsan.log; \
 	    ! grep -q '^not ok' build-tsan/tsan.log
 
 # The sweep's speed targets: rate on 2 cores, overhead per point, memory of a
