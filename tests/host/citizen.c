@@ -134,6 +134,14 @@ snapshot(struct state *st)
 	st->ini_max_line = ini_max_line;
 }
 
+static void
+snapshot_free(struct state *st)
+{
+	for (int i = 0; i < st->nenv; i++)
+		free(st->env[i]);
+	st->nenv = 0;
+}
+
 static int
 same_env(const struct state *a, const struct state *b)
 {
@@ -300,6 +308,8 @@ main(int argc, char **argv)
 	    after.ini_stop == 1 && after.ini_max_line == 77 &&
 	    after.ini_inline_prefixes == before.ini_inline_prefixes &&
 	    after.ini_start_prefixes == before.ini_start_prefixes, "inih's options are the host's");
+	snapshot_free(&before);
+	snapshot_free(&after);
 	fflush(stdout);
 	return fails != 0;
 }
