@@ -14,7 +14,10 @@
 #   make SAN=address,undefined   any target with sanitizers
 #   make debug      -O0 -g3
 
-VERSION   := 0.1.0
+# The release number (MAJOR.MINOR.PATCH) is the VERSION file's; the
+# public header version.h, generated in $(BUILD)/include/hybounce/, adds the
+# commit (tools/version.sh).
+VERSION   := $(strip $(file <VERSION))
 PREFIX    ?= /usr/local
 MANPREFIX ?= $(PREFIX)/share/man
 DATADIR   ?= $(PREFIX)/share/hybounce
@@ -22,7 +25,7 @@ LIBDIR    ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
 PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
 # libhybounce.so.SOVERSION: raise it when the ABI changes incompatibly.
-SOVERSION := 0
+SOVERSION := 1
 CC        ?= gcc
 PKG_CONFIG ?= pkg-config
 
@@ -77,7 +80,7 @@ else
 BIN_LIBS := $(TUI_LIBS) $(CORE_LIBS)
 endif
 
-CPPFLAGS  += -Iinclude -Iinclude/hybounce -Isrc/core -DHYBOUNCE_VERSION='"$(VERSION)"' \
+CPPFLAGS  += -Iinclude -Iinclude/hybounce -I$(BUILD)/include -Isrc/core -DHYBOUNCE_VERSION='"$(VERSION)"' \
              -DHYBOUNCE_DATADIR='"$(DATADIR)"' -D_POSIX_C_SOURCE=200809L -D_XOPEN_SOURCE=700
 CFLAGS    ?= $(OPT) -g
 CFLAGS    += -std=c17 $(WARN) $(SANFLAGS) -MMD -MP
@@ -94,7 +97,10 @@ TUI_OBJ   := $(TUI_SRC:%.c=$(BUILD)/%.o)
 CLI_OBJ   := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ  := $(TEST_SRC:%.c=$(BUILD)/%.o)
 BENCH_OBJ := $(BENCH_SRC:%.c=$(BUILD)/%.o)
-CORE_LIB  := $(BUILD)/libhybounce.a
+# The engine for the programs built here (the hybounce binary, the tests,
+# the bench, the tools), which may call its internal functions; the
+# installed static library is STATIC_LIB (below).
+CORE_LIB  := $(BUILD)/libhybounce-internal.a
 TUI_LIB   := $(BUILD)/libhybounce-tui.a
 BIN       := $(BUILD)/hybounce
 UNIT      := $(BUILD)/unit-tests
@@ -106,7 +112,16 @@ LIB_CFLAGS := -fPIC -fvisibility=hidden
 SHLIB_SO   := libhybounce.so.$(SOVERSION)
 SHLIB      := $(BUILD)/libhybounce.so.$(VERSION)
 PCFILE     := $(BUILD)/hybounce.pc
-PUBLIC_H   := $(sort $(wildcard include/hybounce/*.h))
+VERSION_H  := $(BUILD)/include/hybounce/version.h
+PUBLIC_H   := $(sort $(wildcard include/hybounce/*.h)) $(VERSION_H)
+# libhybounce.a, as installed: the core objects linked into one relocatable
+# object (ld -r) whose hidden symbols objcopy --localize-hidden makes local,
+# so that only the public hb_ names are global: a host program that links
+# it statically may define any of the engine's internal names (atomic_add,
+# textbuf_init, ...) without a clash, and the engine's own calls still
+# reach the engine's functions (tests/cli/host.sh).
+STATIC_LIB := $(BUILD)/libhybounce.a
+STATIC_OBJ := $(BUILD)/libhybounce.o
 # Paths under PREFIX are written relative to ${prefix} in hybounce.pc.
 pc_rel      = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
 .PHONY: fuzz fuzzers fuzz-smoke
@@ -115,7 +130,7 @@ pc_rel      = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
 
 all: $(BIN) lib
 
-lib: $(CORE_LIB) $(SHLIB) $(PCFILE)
+lib: $(STATIC_LIB) $(SHLIB) $(PCFILE)
 
 $(BUILD)/src/core/%.o: src/core/%.c
 	@mkdir -p $(@D)
@@ -140,6 +155,18 @@ $(BUILD)/src/core/onset_aubio.o: CORE_CFLAGS += $(AUBIO_CFLAGS) \
 $(CORE_LIB): $(CORE_OBJ)
 	@mkdir -p $(@D)
 	rm -f $@ && ar rcs $@ $^
+$(STATIC_OBJ): $(CORE_OBJ)
+	$(LD) -r -o $@.tmp $^ && objcopy --localize-hidden $@.tmp $@ && rm -f $@.tmp
+$(STATIC_LIB): $(STATIC_OBJ)
+	rm -f $@ && ar rcs $@ $^
+# version.h: rewritten only when it changes (a new commit, a change to the
+# working tree's state, a new VERSION), so that an unchanged tree rebuilds
+# nothing; version.o and main.o, which include it, are rebuilt when it does.
+$(VERSION_H): FORCE
+	@mkdir -p $(@D)
+	@sh tools/version.sh include/hybounce/version.h.in VERSION >$@.new && \
+	    { cmp -s $@.new $@ && rm -f $@.new || mv $@.new $@; }
+$(BUILD)/src/core/version.o $(BUILD)/src/cli/main.o: $(VERSION_H)
 # The objects are rebuilt when what is compiled into them changes: the
 # library flags, or the preset folder of PREFIX (make PREFIX=/opt/x install
 # after a plain make installs a program that looks in /opt/x).
@@ -149,8 +176,18 @@ $(BUILD)/build-config: FORCE
 	@echo '$(BUILD_CONFIG)' | cmp -s - $@ || echo '$(BUILD_CONFIG)' >$@
 $(CORE_OBJ) $(TUI_OBJ) $(CLI_OBJ): $(BUILD)/build-config
 FORCE:
+# -Bsymbolic-functions: the library's calls to its own public functions bind
+# inside it when it is linked, so that a host (or another library) that
+# defines a function of the same name (hb_atomic_add, ...) does not redirect
+# the engine's own calls to it; the internal functions are hidden, bound
+# inside already.  Chosen over protected visibility on the public
+# declarations, which makes the linker refuse (or copy-relocate) a host's
+# reference to a public object and is treated unevenly by compilers; what
+# it costs: a host's &hb_f and the library's own may differ, and the API
+# compares no function pointers with public functions.
 $(SHLIB): $(CORE_OBJ)
-	$(CC) -shared $(LDFLAGS) -Wl,-soname,$(SHLIB_SO) -Wl,--no-undefined -o $@ $^ $(CORE_LIBS) $(AUBIO_LIBS)
+	$(CC) -shared $(LDFLAGS) -Wl,-soname,$(SHLIB_SO) -Wl,--no-undefined -Wl,-Bsymbolic-functions \
+	    -o $@ $^ $(CORE_LIBS) $(AUBIO_LIBS)
 $(PCFILE): hybounce.pc.in $(BUILD)/build-config
 	@mkdir -p $(@D)
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(call pc_rel,$(LIBDIR))|' \
@@ -232,6 +269,7 @@ FUZZ_BINS  := $(FUZZ_SRC:tests/fuzz/%.c=$(FUZZ_DIR)/%)
 FUZZ_OBJ   := $(CORE_SRC:%.c=$(FUZZ_DIR)/obj/%.o)
 # kept: not intermediate files that make would delete after linking
 .SECONDARY: $(FUZZ_OBJ)
+$(FUZZ_DIR)/obj/src/core/version.o: $(VERSION_H)
 
 $(FUZZ_DIR)/obj/%.o: %.c
 	@mkdir -p $(@D)
@@ -283,7 +321,7 @@ install: $(BIN) lib
 	install -m 755 $(SHLIB) $(DESTDIR)$(LIBDIR)/
 	ln -sf libhybounce.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SHLIB_SO)
 	ln -sf $(SHLIB_SO) $(DESTDIR)$(LIBDIR)/libhybounce.so
-	install -m 644 $(CORE_LIB) $(DESTDIR)$(LIBDIR)/libhybounce.a
+	install -m 644 $(STATIC_LIB) $(DESTDIR)$(LIBDIR)/libhybounce.a
 	install -m 644 $(PUBLIC_H) $(DESTDIR)$(INCLUDEDIR)/hybounce/
 	install -m 644 $(PCFILE) $(DESTDIR)$(PKGCONFIGDIR)/hybounce.pc
 	@if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ] && command -v ldconfig >/dev/null; then ldconfig; fi
@@ -295,7 +333,7 @@ uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/libhybounce.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SHLIB_SO) \
 	      $(DESTDIR)$(LIBDIR)/libhybounce.so $(DESTDIR)$(LIBDIR)/libhybounce.a \
 	      $(DESTDIR)$(PKGCONFIGDIR)/hybounce.pc
-	rm -f $(PUBLIC_H:include/hybounce/%=$(DESTDIR)$(INCLUDEDIR)/hybounce/%)
+	rm -f $(addprefix $(DESTDIR)$(INCLUDEDIR)/hybounce/,$(notdir $(PUBLIC_H)))
 	-rmdir $(DESTDIR)$(INCLUDEDIR)/hybounce
 
 clean:
@@ -305,12 +343,22 @@ clean:
 
 # The sweep's threads under ThreadSanitizer (build-tsan/): the engine's
 # writable statics and the same point on many threads at once
-# (tests/cli/sweep_reentrant.sh, which make check runs on the plain build).
+# (tests/cli/sweep_reentrant.sh, which make check runs on the plain build);
+# then 16 threads loading and running every shipped preset at once
+# (tests/host/preset_threads.c, linked with the installable libhybounce.a).
 .PHONY: check-tsan
+PRESET_THREADS := $(BUILD)/preset-threads
+$(PRESET_THREADS): tests/host/preset_threads.c $(STATIC_LIB)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(STATIC_LIB) $(CORE_LIBS) $(AUBIO_LIBS)
 check-tsan: deps
-	@$(MAKE) --no-print-directory BUILD=build-tsan SAN=thread OPT=-O1 all
+	@$(MAKE) --no-print-directory BUILD=build-tsan SAN=thread OPT=-O1 all build-tsan/preset-threads
 	@TSAN_OPTIONS=halt_on_error=1:exitcode=66 HYBOUNCE_BIN=$(CURDIR)/build-tsan/hybounce \
 	    HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/cli/sweep_reentrant.sh | tee build-tsan/tsan.log; \
+	TSAN_OPTIONS=halt_on_error=1:exitcode=66 HYBOUNCE_PRESETS=$(CURDIR)/presets \
+	    build-tsan/preset-threads 16 >build-tsan/preset-threads.log 2>&1; rc=$$?; \
+	    cat build-tsan/preset-threads.log | tee -a build-tsan/tsan.log; \
+	    [ $$rc -eq 0 ] || echo "not ok - preset-threads 16 exits $$rc (build-tsan/preset-threads.log)" | \
+	    tee -a build-tsan/tsan.log; \
 	    ! grep -q '^not ok' build-tsan/tsan.log
 
 # The sweep's speed targets: rate on 2 cores, overhead per point, memory of a

@@ -17,6 +17,17 @@
  * pointers it returns stay valid until the next call that changes it
  * (hb_sim_advance, hb_sim_seek, hb_sim_set_scene, hb_sim_restart, hb_sim_free).
  *
+ * Process state.  The library changes nothing that belongs to the process:
+ * not GSL's error handler, the locale, signal dispositions, the buffering
+ * of stdio streams, the environment, the umask or the working directory
+ * (tests/cli/host.sh checks each).  The engine checks what GSL returns and
+ * tests the cases it expects before calling GSL (a root bracket that does
+ * not straddle, a non-finite value), so GSL's handler sees only what GSL
+ * itself calls an error (out of memory, a bug).  GSL's default handler
+ * aborts: a host that would rather have the status returned calls
+ * gsl_set_error_handler_off() itself, as GSL's manual advises; the
+ * hybounce program does.
+ *
  * Numerical method (see README "How the engine integrates"):
  *  - flight: closed form when F_er is constant on the interval (a parabola;
  *    the event by a quadratic), otherwise GSL on (x, v);
@@ -95,8 +106,7 @@ struct hb_sim;
 
 /*
  * Validates and copies the scene and builds the workspaces.  Returns NULL
- * with a message in msg on bad input (HB_EINVAL) or no memory.  Turns
- * GSL's aborting error handler off.
+ * with a message in msg on bad input (HB_EINVAL) or no memory.
  */
 struct hb_sim *
 hb_sim_new(const struct hb_scene *sc, char *msg, size_t n);

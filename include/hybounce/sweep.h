@@ -31,9 +31,9 @@
  *                      whole point at a time; what a restart reads.
  *
  * Re-entrancy: a point uses only its own scene, sim and buffers; the
- * engine keeps no mutable static state.  GSL's process-wide error handler,
- * which hb_sim_new() switches off, is the one global written: a sweep's
- * threads take a lock of the sweep around hb_sim_new().
+ * engine keeps no mutable static state and writes no process-wide state
+ * (sim.h), so a sweep's threads share nothing but the sweep itself, which
+ * they only read.
  * Nothing here prints or exits.
  */
 #ifndef HB_SWEEP_H

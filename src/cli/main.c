@@ -23,7 +23,10 @@
 #include <string.h>
 #include <unistd.h>
 
+#include <gsl/gsl_errno.h>
+
 #include "hybounce/status.h"
+#include "hybounce/version.h"
 #include "app.h"
 #include "batch.h"
 #include "sweep_cli.h"
@@ -97,7 +100,7 @@ DEFAULT_PRESET ")\n"
 "      --list-presets      list the presets: name, title, description\n"
 "      --list-laws         list the contact laws and their parameters\n"
 "  -h, --help              show this help\n"
-"  -V, --version           show the version\n"
+"  -V, --version           show the version and the commit it was built from\n"
 "\n"
 "PRESET is a name (presets/NAME.preset, searched in $HYBOUNCE_PRESETS,\n"
 "./presets and the installed presets) or a path to a .preset file.\n"
@@ -147,6 +150,12 @@ int
 main(int argc, char **argv)
 {
 	hold_std_fds();
+	/*
+	 * The library leaves GSL's error handler as the host set it (GSL's
+	 * default aborts); the program reports GSL's errors through the
+	 * engine's return codes, as GSL advises for a program that checks them.
+	 */
+	gsl_set_error_handler_off();
 	int status = hybounce_main(argc, argv);
 
 	/* Output that could not all be written is exit 2 (batch.h). */
@@ -208,7 +217,10 @@ hybounce_main(int argc, char **argv)
 			free(sets);
 			return 0;
 		case 'V':
-			printf("hybounce %s\n", HYBOUNCE_VERSION);
+			/* "hybounce 0.2.0 (commit 1a2b3c4)": the release, then the
+			 * commit of the engine it runs (version.h) */
+			printf("hybounce %d.%d.%d (commit %s)\n", HB_VERSION_MAJOR, HB_VERSION_MINOR,
+			    HB_VERSION_PATCH, hb_version_commit());
 			free(sets);
 			return 0;
 		default: /* getopt_long has said what was wrong */

@@ -292,7 +292,6 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 	size_t npts = hb_fit_npoints(d);
 	gsl_vector_view xv;
 
-	gsl_set_error_handler_off();
 	if (np < 1 || np > HB_FIT_MAX_FREE) {
 		hb_status_set(msg, n, HB_EINVAL, "--free: %d keys; accepted: 1 to %d", np, HB_FIT_MAX_FREE);
 		return NULL;

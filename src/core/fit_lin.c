@@ -36,11 +36,17 @@ fit_identifiability(const gsl_matrix *J, const struct fit_param *fp, int np, dou
 	for (size_t j = 0; j < p; j++) {
 		gsl_vector_const_view col = gsl_matrix_const_column(J, j);
 
-		if (!(gsl_blas_dnrm2(&col.vector) > 0)) {
+		double norm = gsl_blas_dnrm2(&col.vector);
+
+		if (!(norm > 0)) {
 			snprintf(names, nn, "%s (no effect on these data)", fp[j].key);
 			*cond = INFINITY;
 			return 1;
 		}
+		/* GSL's SVD would not converge, and would say so through its
+		 * process-wide error handler: no verdict, as for a failed SVD */
+		if (!isfinite(norm))
+			return 0;
 	}
 	if (n < p)
 		return 0;

@@ -16,8 +16,8 @@
  * Then the scene is validated as a whole.  Every error is reported as
  * "FILE:LINE: [section] key: message; accepted: ...".
  *
- * inih's options are process globals in this build; preset_ini_options()
- * sets them before each parse (preset_ini.h).  Finding presets is in
+ * inih's options are process globals in this build; each parse sets them
+ * under a lock and puts them back (preset_ini.h).  Finding presets is in
  * preset_find.c.
  *
  * Writing prints every value in SI with %.17g and its unit, so that
@@ -28,6 +28,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -369,9 +370,20 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, char *msg
 	return HB_OK;
 }
 
+/* The one lock around inih's globals (preset_ini.h). */
+static pthread_mutex_t ini_lock = PTHREAD_MUTEX_INITIALIZER;
+
 void
-preset_ini_options(void)
+preset_ini_begin(struct preset_ini_saved *sv)
 {
+	pthread_mutex_lock(&ini_lock);
+	sv->multiline = ini_allow_multiline;
+	sv->inline_comments = ini_allow_inline_comments;
+	sv->inline_prefixes = ini_inline_comment_prefixes;
+	sv->start_prefixes = ini_start_comment_prefixes;
+	sv->no_value = ini_allow_no_value;
+	sv->stop_on_first_error = ini_stop_on_first_error;
+	sv->max_line = ini_max_line;
 	ini_allow_multiline = 0;
 	ini_allow_inline_comments = 1;
 	ini_inline_comment_prefixes = (char *)";#";
@@ -381,12 +393,26 @@ preset_ini_options(void)
 	ini_max_line = PRESET_MAX_LINE;
 }
 
+void
+preset_ini_end(const struct preset_ini_saved *sv)
+{
+	ini_allow_multiline = sv->multiline;
+	ini_allow_inline_comments = sv->inline_comments;
+	ini_inline_comment_prefixes = sv->inline_prefixes;
+	ini_start_comment_prefixes = sv->start_prefixes;
+	ini_allow_no_value = sv->no_value;
+	ini_stop_on_first_error = sv->stop_on_first_error;
+	ini_max_line = sv->max_line;
+	pthread_mutex_unlock(&ini_lock);
+}
+
 int
 hb_preset_load_string(const char *text, const char *name, struct hb_scene *sc, char *msg, size_t n)
 {
 	struct collect c = { 0 };
 	struct source src = { text, 0, 0 };
 	struct handler_ctx h = { &c, &src };
+	struct preset_ini_saved sv;
 	int r, st;
 
 	if (name == NULL)
@@ -394,8 +420,9 @@ hb_preset_load_string(const char *text, const char *name, struct hb_scene *sc, c
 	c.e = malloc(PRESET_MAX_ENTRIES * sizeof *c.e); /* entries 0..c.n-1 are written whole */
 	if (c.e == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "%s: out of memory", name);
-	preset_ini_options();
+	preset_ini_begin(&sv);
 	r = ini_parse_stream(source_read, &src, collect_handler, &h);
+	preset_ini_end(&sv);
 	if (src.long_line != 0 && (r <= 0 || src.long_line <= r))
 		st = hb_status_set(msg, n, HB_EINVAL,
 		    "%s:%d: line too long; accepted: at most %d characters", name, src.long_line,

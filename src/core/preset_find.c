@@ -306,8 +306,11 @@ hb_preset_list(struct hb_preset_info **out)
 			if ((size_t)snprintf(pi.path, sizeof pi.path, "%s/%s", dirs[i], de->d_name) >=
 			    sizeof pi.path || !is_file(pi.path))
 				continue;
-			preset_ini_options();
+			struct preset_ini_saved sv;
+
+			preset_ini_begin(&sv);
 			ini_parse(pi.path, title_handler, &t);
+			preset_ini_end(&sv);
 			snprintf(pi.title, sizeof pi.title, "%s", t.title);
 			snprintf(pi.description, sizeof pi.description, "%s", t.description);
 			if (cnt == cap) {

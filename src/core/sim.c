@@ -343,7 +343,6 @@ hb_sim_new(const struct hb_scene *sc, char *msg, size_t n)
 {
 	struct hb_sim *s;
 
-	gsl_set_error_handler_off();
 	s = calloc(1, sizeof *s);
 	if (s == NULL) {
 		hb_status_set(msg, n, HB_ENOMEM, "out of memory");

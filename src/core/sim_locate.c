@@ -100,16 +100,15 @@ restep(struct hb_sim *s, double h, double *u)
 /*
  * The oriented value of the target function at h for Brent: > 0 where it
  * has not crossed yet (an exact zero counts as not crossed), < 0 where it
- * has.
+ * has; NAN where the state there cannot be computed.  Not counted in
+ * loc_iter (oriented() is).
  */
 static double
-oriented(double h, void *params)
+oriented_value(double h, struct hb_sim *s)
 {
-	struct hb_sim *s = params;
 	double u[MAXDIM], val;
 	int kind;
 
-	s->loc_iter++;
 	if (s->fun_target != 0 && s->t0 + h == s->t0) /* 0 is the indicator, the event */
 		return DBL_MIN; /* the step's start has not crossed (a mode's side is its sign there) */
 	if (restep(s, h, u))
@@ -119,6 +118,65 @@ oriented(double h, void *params)
 		return val >= 0.0 ? fmax(val, DBL_MIN) : val;
 	val *= s->fun_sign0;
 	return val > 0.0 ? val : (val == 0.0 ? DBL_MIN : val);
+}
+
+/* oriented_value(), counted as one evaluation of the location. */
+static double
+oriented(double h, void *params)
+{
+	struct hb_sim *s = params;
+
+	s->loc_iter++;
+	return oriented_value(h, s);
+}
+
+/*
+ * GSL's root solvers call their error handler (process-wide, the host's:
+ * GSL's default aborts) for a function value that is not finite and for a
+ * bracket whose ends do not straddle the root.  Both are expected here (a
+ * re-step that fails; a bracket that Brent left with its ends' signs the
+ * other way round), so the solver never sees them: it is given
+ * brent_value(), which turns a value that is not finite into DBL_MIN and
+ * counts it in bad (brent_iterate returns what GSL would have: GSL_EBADFUNC),
+ * and is (re)set through brent_set(), which checks the ends first.
+ */
+struct brent_fn {
+	struct hb_sim *s;
+	int bad;
+};
+
+static double
+brent_value(double h, void *params)
+{
+	struct brent_fn *b = params;
+	double g = oriented(h, b->s);
+
+	if (isfinite(g))
+		return g;
+	b->bad++;
+	return DBL_MIN;
+}
+
+static int
+brent_set(struct brent_fn *b, gsl_function *F, double lo, double hi)
+{
+	double gl = oriented_value(lo, b->s), gu = oriented_value(hi, b->s);
+
+	if (!isfinite(gl) || !isfinite(gu))
+		return GSL_EBADFUNC;
+	if (!(lo < hi) || (gl < 0) == (gu < 0))
+		return GSL_EINVAL;
+	return gsl_root_fsolver_set(b->s->root, F, lo, hi);
+}
+
+static int
+brent_iterate(struct brent_fn *b)
+{
+	int rc;
+
+	b->bad = 0;
+	rc = gsl_root_fsolver_iterate(b->s->root);
+	return rc == GSL_SUCCESS && b->bad ? GSL_EBADFUNC : rc;
 }
 
 /*
@@ -138,7 +196,8 @@ oriented(double h, void *params)
 static int
 bracket(struct hb_sim *s, int k, int sign0, double lo, double hi, double htol, double *a, double *b)
 {
-	gsl_function F = { oriented, s };
+	struct brent_fn bf = { s, 0 };
+	gsl_function F = { brent_value, &bf };
 	double tol = fmax(4.0 * DBL_EPSILON * fmax(fabs(s->t0 + hi), 1e-300), htol);
 	double xl = lo, xu = hi, prev = hi - lo, w;
 	int it = 0, rc;
@@ -147,10 +206,11 @@ bracket(struct hb_sim *s, int k, int sign0, double lo, double hi, double htol, d
 	s->fun_sign0 = sign0;
 	if (!(oriented(lo, s) > 0) || !(oriented(hi, s) < 0))
 		return GSL_FAILURE;
+	/* the ends are known to straddle: set without brent_set's second look */
 	if ((rc = gsl_root_fsolver_set(s->root, &F, lo, hi)) != GSL_SUCCESS)
 		return rc;
 	while (xu - xl > tol && it++ < MAX_BRENT) {
-		if ((rc = gsl_root_fsolver_iterate(s->root)) != GSL_SUCCESS)
+		if ((rc = brent_iterate(&bf)) != GSL_SUCCESS)
 			return rc;
 		xl = gsl_root_fsolver_x_lower(s->root);
 		xu = gsl_root_fsolver_x_upper(s->root);
@@ -197,7 +257,7 @@ bracket(struct hb_sim *s, int k, int sign0, double lo, double hi, double htol, d
 			}
 			if (xu - xl <= tol)
 				break;
-			if ((rc = gsl_root_fsolver_set(s->root, &F, xl, xu)) != GSL_SUCCESS)
+			if ((rc = brent_set(&bf, &F, xl, xu)) != GSL_SUCCESS)
 				return rc;
 		}
 		prev = xu - xl;

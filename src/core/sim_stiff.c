@@ -67,8 +67,16 @@ hbs_stiffness(struct hb_sim *s)
 	}
 	hbs_jacobian(s->t, s->u, J, dfdt, p);
 	for (i = 0; i < nd; i++)
-		for (k = 0; k < nd; k++)
-			gsl_matrix_set(s->Jdyn, (size_t)i, (size_t)k, J[idx[i] * L->dim + idx[k]]);
+		for (k = 0; k < nd; k++) {
+			double a = J[idx[i] * L->dim + idx[k]];
+
+			/* GSL's QR iteration does not converge on a matrix that is
+			 * not finite, and says so through its process-wide error
+			 * handler: no check on this step */
+			if (!isfinite(a))
+				return 0;
+			gsl_matrix_set(s->Jdyn, (size_t)i, (size_t)k, a);
+		}
 	if (gsl_eigen_nonsymm(s->Jdyn, s->lambda, s->eig) != GSL_SUCCESS)
 		return 0;
 	/*

@@ -12,7 +12,6 @@
  */
 #include <errno.h>
 #include <math.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,26 +40,9 @@ struct axis {
 
 struct hb_sweep {
 	struct hb_scene base;
-	/*
-	 * hb_sim_new() switches GSL's process-wide error handler off: one global
-	 * written by every call.  The sweep's threads take this lock around it
-	 * (no static lock: the engine keeps no mutable static state).
-	 */
-	pthread_mutex_t *simnew;
 	int naxes;
 	struct axis ax[SWEEP_MAX_AXES];
 };
-
-struct hb_sim *
-sweep_sim_new(const struct hb_sweep *sw, const struct hb_scene *sc, char *msg, size_t n)
-{
-	struct hb_sim *s;
-
-	pthread_mutex_lock(sw->simnew);
-	s = hb_sim_new(sc, msg, n);
-	pthread_mutex_unlock(sw->simnew);
-	return s;
-}
 
 static void
 axis_free(struct axis *a)
@@ -76,12 +58,10 @@ hb_sweep_new(const struct hb_scene *base, char *msg, size_t n)
 {
 	struct hb_sweep *sw = calloc(1, sizeof *sw);
 
-	if (sw == NULL || (sw->simnew = malloc(sizeof *sw->simnew)) == NULL) {
-		free(sw);
+	if (sw == NULL) {
 		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		return NULL;
 	}
-	pthread_mutex_init(sw->simnew, NULL);
 	sw->base = *base;
 	return sw;
 }
@@ -93,8 +73,6 @@ hb_sweep_free(struct hb_sweep *sw)
 		return;
 	for (int k = 0; k < sw->naxes; k++)
 		axis_free(&sw->ax[k]);
-	pthread_mutex_destroy(sw->simnew);
-	free(sw->simnew);
 	free(sw);
 }
 
@@ -555,7 +533,7 @@ hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed
 	if ((rc = hb_sweep_point_scene(sw, id, &sc, msg, n)) != HB_OK)
 		return rc;
 	m[0] = '\0';
-	s = sweep_sim_new(sw, &sc, m, sizeof m);
+	s = hb_sim_new(&sc, m, sizeof m);
 	if (s == NULL)
 		return hb_status_set(msg, n, HB_EINVAL, "point %ld: %s", id, m[0] ? m : "no memory");
 	(void)hb_sim_run(s);

@@ -107,7 +107,7 @@ curve_worker(void *arg)
 		pthread_mutex_unlock(&c->mu);
 
 		if (hb_sweep_point_scene(c->sw, id, &sc, m, sizeof m) == HB_OK)
-			s = sweep_sim_new(c->sw, &sc, m, sizeof m);
+			s = hb_sim_new(&sc, m, sizeof m);
 		while (s != NULL && hb_sim_end(s) == HB_SIM_RUNNING) {
 			if (hb_sim_advance(s, SLICE_STEPS, 0) != HB_OK)
 				break;

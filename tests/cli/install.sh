@@ -26,22 +26,22 @@ if [ "$rc" -eq 0 ] && [ -n "$pc" ] && [ -n "$PREFIX" ]; then ok "make install in
 else notok "make install into a DESTDIR (exit $rc)" "$T/install.log"; fi
 
 missing=
-for f in lib/libhybounce.a lib/libhybounce.so lib/libhybounce.so.0 lib/pkgconfig/hybounce.pc \
+for f in lib/libhybounce.a lib/libhybounce.so lib/libhybounce.so.1 lib/pkgconfig/hybounce.pc \
     bin/hybounce share/man/man1/hybounce.1; do
 	[ -e "$DEST$PREFIX/$f" ] || missing="$missing $f"
 done
-for h in include/hybounce/*.h; do
+for h in include/hybounce/*.h include/hybounce/version.h; do
 	[ -f "$DEST$PREFIX/$h" ] || missing="$missing $h"
 done
 if [ -z "$missing" ]; then ok "libraries, headers, hybounce.pc, binary and man page installed"
 else notok "libraries, headers, hybounce.pc, binary and man page installed (missing:$missing)"; fi
 
 so=$(readelf -d "$LIB/libhybounce.so" 2>/dev/null | sed -n 's/.*(SONAME).*\[\(.*\)\]/\1/p')
-if [ "$so" = libhybounce.so.0 ] && [ "$(readlink "$LIB/libhybounce.so")" = libhybounce.so.0 ] &&
-    [ -f "$LIB/$(readlink "$LIB/libhybounce.so.0")" ]; then
-	ok "the shared library has the soname libhybounce.so.0 and its links"
+if [ "$so" = libhybounce.so.1 ] && [ "$(readlink "$LIB/libhybounce.so")" = libhybounce.so.1 ] &&
+    [ -f "$LIB/$(readlink "$LIB/libhybounce.so.1")" ]; then
+	ok "the shared library has the soname libhybounce.so.1 and its links"
 else
-	notok "the shared library has the soname libhybounce.so.0 and its links (soname '$so')"
+	notok "the shared library has the soname libhybounce.so.1 and its links (soname '$so')"
 fi
 
 # Exported: every defined dynamic symbol must be declared in a public header
@@ -50,7 +50,7 @@ nm -D --defined-only "$LIB/libhybounce.so" | awk 'NF == 3 && $3 !~ /^__/ { print
 n=0 extra=
 while read -r sym; do
 	n=$((n + 1))
-	grep -qw -- "$sym" include/hybounce/*.h || extra="$extra $sym"
+	grep -qw -- "$sym" include/hybounce/*.h "$BUILD/include/hybounce/version.h" || extra="$extra $sym"
 done <"$T/exported"
 if [ "$n" -ge 50 ] && [ -z "$extra" ]; then
 	ok "libhybounce.so exports only what the public headers declare ($n symbols)"
@@ -76,9 +76,10 @@ PCS=$(pkg-config --static --cflags --libs hybounce 2>/dev/null)
 SAN=
 readelf -d "$LIB/libhybounce.so" | grep -q 'libasan' && SAN=-fsanitize=address,undefined
 
-# Each public header compiles on its own, as C17 and as C++17.
+# Each public header compiles on its own, as C17 and as C++17 (version.h,
+# generated, too).
 bad=
-for h in include/hybounce/*.h; do
+for h in include/hybounce/*.h include/hybounce/version.h; do
 	printf '#include <hybounce/%s>\ntypedef int hb_not_empty;\n' "${h##*/}" >"$T/h.c"
 	cp "$T/h.c" "$T/h.cpp"
 	cc -std=c17 -Wall -Wextra -pedantic -Werror $(pkg-config --cflags hybounce) \
@@ -139,10 +140,11 @@ esac
 # the step type pointer hb_step_bsimp_shifted, which is set once at
 # compile time, like GSL's own, and the table of libaubio's functions,
 # loaded once under pthread_once (aubio_once, aubio_tab, aubio_loaded,
-# aubio_why in onset_aubio.c).
+# aubio_why in onset_aubio.c), and the lock around inih's process-wide
+# options (ini_lock in preset.c, preset_ini.h).
 objdump -t "$BUILD"/src/core/*.o |
     awk '$2 ~ /^[lg]$/ && $0 ~ / O / && $0 ~ /[ \t]\.(data|bss)/ && $0 !~ /\.data\.rel\.ro/ {
-	    print $NF }' | grep -v '^hb_step_bsimp_shifted$\|^dirs_tls$\|^dirs_once$\|^aubio_\(once\|tab\|loaded\|why\)$' | grep -v '^__\|^\.' >"$T/statics"
+	    print $NF }' | grep -v '^hb_step_bsimp_shifted$\|^dirs_tls$\|^dirs_once$\|^ini_lock$\|^aubio_\(once\|tab\|loaded\|why\)$' | grep -v '^__\|^\.' >"$T/statics"
 if [ ! -s "$T/statics" ]; then ok "the core keeps no mutable static state"
 else notok "the core keeps no mutable static state (found: $(tr '\n' ' ' <"$T/statics"))"; fi
 

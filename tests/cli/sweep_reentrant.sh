@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The engine is re-entrant: no hidden mutable static state, and the same
 # point run in many threads at once gives the same bytes.
-#  1. The writable static objects of libhybounce.a (.data and .bss; read-only
+#  1. The writable static objects of the engine's objects (.data and .bss,
+#     in libhybounce-internal.a, which keeps them apart; read-only
 #     tables live in .rodata / .data.rel.ro, per-thread buffers in .tbss)
 #     are only hb_step_bsimp_shifted, a pointer to a const step type set at
 #     load time and never written (declared like GSL's own
@@ -10,15 +11,15 @@
 #     under pthread_once (dirs_tls, dirs_once in preset_find.c), and the
 #     table of libaubio's functions, loaded once under pthread_once and only
 #     read after (aubio_once, aubio_tab, aubio_loaded, aubio_why in
-#     onset_aubio.c).  The lock around hb_sim_new() (GSL's process-wide
-#     error handler) belongs to each sweep, not to static storage.
+#     onset_aubio.c), and the lock around inih's process-wide options
+#     (ini_lock in preset.c, preset_ini.h).
 #  2. One point, 12 times, on 4 threads: every row and collision equal.
 # make check-tsan runs this script with a ThreadSanitizer build
 # (build-tsan/hybounce, TSAN_OPTIONS=halt_on_error=1): any data race fails it.
 # Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
 . "$(dirname "$0")/common.inc"
 
-LIB=$(dirname "$BIN")/libhybounce.a
+LIB=$(dirname "$BIN")/libhybounce-internal.a
 if [ -f "$LIB" ] && command -v objdump >/dev/null 2>&1; then
 	# "SYMBOL (object)" for each object symbol in a writable data section.
 	objdump -t "$LIB" | awk '
@@ -30,9 +31,9 @@ if [ -f "$LIB" ] && command -v objdump >/dev/null 2>&1; then
 	grep -v -x -e 'hb_step_bsimp_shifted (step_bsimp.o)' -e 'dirs_tls (preset_find.o)' \
 	    -e 'dirs_once (preset_find.o)' -e 'aubio_once (onset_aubio.o)' \
 	    -e 'aubio_tab (onset_aubio.o)' -e 'aubio_loaded (onset_aubio.o)' \
-	    -e 'aubio_why (onset_aubio.o)' "$T/statics" >"$T/unknown"
+	    -e 'aubio_why (onset_aubio.o)' -e 'ini_lock (preset.o)' "$T/statics" >"$T/unknown"
 	if grep -q -x 'hb_step_bsimp_shifted (step_bsimp.o)' "$T/statics" && [ ! -s "$T/unknown" ]; then
-		ok "libhybounce.a has no mutable static state but a const step pointer, a pthread_once thread key and the once-loaded aubio table (objdump of .data and .bss)"
+		ok "the engine has no mutable static state but a const step pointer, a pthread_once thread key, the once-loaded aubio table and inih's lock (objdump of .data and .bss)"
 	else notok "libhybounce.a: unexpected mutable statics" "$T/unknown"; fi
 else
 	notok "objdump and $LIB are there to list the engine's writable statics"
