@@ -10,7 +10,9 @@
 #     under pthread_once (dirs_tls, dirs_once in preset_find.c), and the
 #     table of libaubio's functions, loaded once under pthread_once and only
 #     read after (aubio_once, aubio_tab, aubio_loaded, aubio_why in
-#     onset_aubio.c).  The lock around hb_sim_new() (GSL's process-wide
+#     onset_aubio.c), and the C locale numbers are read and written in,
+#     made once under pthread_once (cnum_locale, cnum_once in cnum.c).
+#     The lock around hb_sim_new() (GSL's process-wide
 #     error handler) belongs to each sweep, not to static storage.
 #  2. One point, 12 times, on 4 threads: every row and collision equal.
 # make check-tsan runs this script with a ThreadSanitizer build
@@ -30,9 +32,10 @@ if [ -f "$LIB" ] && command -v objdump >/dev/null 2>&1; then
 	grep -v -x -e 'hb_step_bsimp_shifted (step_bsimp.o)' -e 'dirs_tls (preset_find.o)' \
 	    -e 'dirs_once (preset_find.o)' -e 'aubio_once (onset_aubio.o)' \
 	    -e 'aubio_tab (onset_aubio.o)' -e 'aubio_loaded (onset_aubio.o)' \
-	    -e 'aubio_why (onset_aubio.o)' "$T/statics" >"$T/unknown"
+	    -e 'aubio_why (onset_aubio.o)' -e 'cnum_locale (cnum.o)' -e 'cnum_once (cnum.o)' \
+	    "$T/statics" >"$T/unknown"
 	if grep -q -x 'hb_step_bsimp_shifted (step_bsimp.o)' "$T/statics" && [ ! -s "$T/unknown" ]; then
-		ok "libhybounce.a has no mutable static state but a const step pointer, a pthread_once thread key and the once-loaded aubio table (objdump of .data and .bss)"
+		ok "libhybounce.a has no mutable static state but a const step pointer, a pthread_once thread key, the once-loaded aubio table and the once-made C locale (objdump of .data and .bss)"
 	else notok "libhybounce.a: unexpected mutable statics" "$T/unknown"; fi
 else
 	notok "objdump and $LIB are there to list the engine's writable statics"
