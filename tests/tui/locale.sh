@@ -4,7 +4,8 @@
 # Turkish one: it takes the character set from the locale (Braille plots
 # in UTF-8) and nothing else, so numbers stay C numbers.  A shipped preset
 # opens with o, measured data with D, 0.31 typed in a field is taken, the
-# screen shows dots, and the export (e) writes files that
+# screen and the sweep view (S, a range with decimals) show dots, and the
+# export (e) writes files that
 # `hybounce --batch` on the exported preset reproduces byte for byte and
 # that pandas reads to the same floats, with the header's column count, as
 # the batch run's under LANG=C.  The locales come from `make deps`, pandas
@@ -47,7 +48,7 @@ table_dots() {
 	i=0
 	while [ "$i" -lt 30 ]; do
 		screen "$1" | sed -n '/ t_e\[ms\] /,/^#[0-9]* t=/p' >"$2"
-		if [ "$(wc -l <"$2")" -gt 3 ] && grep -q '^ *0  *[0-9]*\.[0-9]' "$2" &&
+		if [ "$(wc -l <"$2")" -gt 3 ] && grep -q '^ *>\{0,1\}0  *[0-9]*\.[0-9]' "$2" &&
 		    grep -q '^#[0-9]* t=[0-9]*\.[0-9]' "$2" && ! grep -q '[0-9],[0-9]' "$2"; then
 			return 0
 		fi
@@ -135,6 +136,19 @@ for a in LANG=de_DE.UTF-8 LC_ALL=fr_FR.UTF-8 LANG=tr_TR.UTF-8; do
 	    wait_for $s ' data t_e ' 30 && wait_for $s ' 88\.472 ms \(' 30; then
 		ok "$a: D opens measured data (10 impacts; its t_e in the table, with a dot)"
 	else notok "$a: D opens measured data" $s; fi
+
+	# S: the sweep view reads a range with decimals and shows dots
+	keys $s / ; keys $s -l v0 ; keys $s Enter
+	wait_for $s 'nudge\) initial\.v0:' 30 && keys $s S
+	wait_for $s '^sweep initial\.v0 over ' 30
+	keys $s C-u ; keys $s -l -- "-0.25 m/s:-1.25 m/s:5" ; keys $s Enter
+	if wait_for $s '^sweep: e of collision 1 against initial\.v0 = -0\.25 m/s:-1\.25 m/s:5 +5/5 done$' 300 &&
+	    wait_for $s '^\* now .*, e = [0-9]\.[0-9]' 30 &&
+	    ! screen $s | grep -v '^sweep' | grep -q '[0-9],[0-9]'; then
+		ok "$a: the sweep view takes -0.25 m/s:-1.25 m/s:5 and shows decimal dots"
+	else notok "$a: the sweep view takes a range with decimals" $s; fi
+	keys $s q
+	wait_gone $s '^sweep: e of' 30
 	keys $s q
 	wait_exit $s 50 || notok "$a: q ends the explorer" $s
 done
