@@ -32,7 +32,11 @@ PKG_CONFIG ?= pkg-config
 # Debian packages the build and the tests use (apt-get names).
 APT_PACKAGES := libgsl-dev libncurses-dev libinih-dev libcriterion-dev pkg-config tmux mandoc \
                 clang libclang-rt-14-dev strace parallel slurm-wlm munge \
-                libaubio-dev aubio-tools sox
+                libaubio-dev aubio-tools sox locales python3-pandas
+# Locales the tests run under (decimal commas, a Turkish case fold): `make
+# deps` generates those `locale -a` lacks with localedef (about 2 MB each,
+# where locales-all would take 220 MB).
+TEST_LOCALES := de_DE fr_FR tr_TR
 
 BUILD     ?= build
 OPT       ?= -O2
@@ -231,6 +235,15 @@ deps:
 	    $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing >/dev/null \
 	    || { echo "hybounce: apt-get install$$missing failed" >&2; exit 1; }; \
 	fi
+	@for l in $(TEST_LOCALES); do \
+	    locale -a 2>/dev/null | grep -qix "$$l.utf-\?8" && continue; \
+	    echo "hybounce: generating the locale $$l.UTF-8 (the tests run under it)"; \
+	    if [ "$$(id -u)" = 0 ]; then SUDO=; elif command -v sudo >/dev/null; then SUDO=sudo; \
+	    else echo "hybounce: run as root: localedef -i $$l -f UTF-8 $$l.UTF-8" >&2; exit 1; fi; \
+	    $$SUDO localedef -i $$l -f UTF-8 $$l.UTF-8; \
+	    locale -a 2>/dev/null | grep -qix "$$l.utf-\?8" \
+	    || { echo "hybounce: localedef -i $$l -f UTF-8 $$l.UTF-8 failed" >&2; exit 1; }; \
+	done
 
 run: deps
 	@$(MAKE) --no-print-directory all

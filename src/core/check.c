@@ -13,6 +13,7 @@
 
 #include "hybounce/check.h"
 #include "hybounce/status.h"
+#include "cnum.h"
 
 static double
 phi_of(const struct hb_scene *sc, const struct hb_arc_sample *a)
@@ -257,7 +258,7 @@ append_msg(char *msg, size_t n, const char *fmt_, ...)
 	}
 	if (l + 1 < n) {
 		va_start(ap, fmt_);
-		vsnprintf(msg + l, n - l, fmt_, ap);
+		cnum_vsnprintf(msg + l, n - l, fmt_, ap);
 		va_end(ap);
 	}
 }

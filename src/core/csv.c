@@ -34,6 +34,7 @@
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
 #include "csv_impl.h"
+#include "cnum.h"
 
 /* Writes one field, quoted as RFC 4180 asks when it needs to be. */
 void
@@ -64,7 +65,7 @@ put_field(FILE *f, const char *s, int first)
 static void
 print_num(FILE *f, double v)
 {
-	fprintf(f, "%.17g", v == 0 ? 0.0 : v);
+	cnum_fprintf(f, "%.17g", v == 0 ? 0.0 : v);
 }
 
 void

@@ -28,6 +28,7 @@
 #include "hybounce/fit.h"
 #include "hybounce/status.h"
 #include "fit_impl.h"
+#include "cnum.h"
 
 #define FIT_FAIL_RESID 1e6      /* residual of a point whose run failed */
 
@@ -509,7 +510,7 @@ hb_fit_result_get(struct hb_fit *f, struct hb_fit_result *out, char *msg, size_t
 		for (int j = 0; j < np; j++)
 			if (strstr(r->unident, r->key[j]) != NULL)
 				r->se[j] = NAN;
-		snprintf(r->why, sizeof r->why, "not identifiable from these data: %s "
+		cnum_snprintf(r->why, sizeof r->why, "not identifiable from these data: %s "
 		    "(condition number of the scaled Jacobian %.3g)", r->unident, r->cond);
 	} else if (r->reason != HB_FIT_FAILED) {
 		snprintf(r->why, sizeof r->why, "%s", hb_fit_reason_str(r->reason));

@@ -17,6 +17,7 @@
 
 #include "hybounce/fit.h"
 #include "hybounce/status.h"
+#include "cnum.h"
 
 enum { MAX_COLS = 64 };
 
@@ -260,7 +261,7 @@ hb_fit_data_read(FILE *f, const char *path, struct hb_fit_data *d, char *msg, si
 			if (map[c].dst == NULL)
 				continue;
 			errno = 0;
-			v = strtod(fld[c], &end);
+			v = cnum_strtod(fld[c], &end);
 			if (fld[c][0] == '\0' || *end != '\0' || !isfinite(v)) {
 				st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: column %s: '%s'; accepted: "
 				    "a finite number in SI units", path, lineno, hname[c], fld[c]);

@@ -20,6 +20,7 @@
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
 #include "fit_impl.h"
+#include "cnum.h"
 
 /*
  * Accepted steps a run may take per collision of the data before it is cut
@@ -119,11 +120,11 @@ run_drop(struct pool *pl, struct task *tk)
 	sc.run.J = 2;
 	if ((s = hb_sim_new(&sc, m, sizeof m)) == NULL) {
 		tk->fail = 1;
-		snprintf(tk->msg, sizeof tk->msg, "drop %zu (v_i = %g m/s): %s", r + 1, d->vi[r], m);
+		cnum_snprintf(tk->msg, sizeof tk->msg, "drop %zu (v_i = %g m/s): %s", r + 1, d->vi[r], m);
 	} else {
 		if (hb_sim_advance(s, STEPS_PER_COLLISION, 0) != HB_OK) {
 			tk->fail = 1;
-			snprintf(tk->msg, sizeof tk->msg, "drop %zu (v_i = %g m/s): %s", r + 1,
+			cnum_snprintf(tk->msg, sizeof tk->msg, "drop %zu (v_i = %g m/s): %s", r + 1,
 			    d->vi[r], hb_sim_errmsg(s));
 		} else if (hb_sim_ncollisions(s) > 0) {
 			c = *hb_sim_collision(s, 0);
@@ -135,7 +136,7 @@ run_drop(struct pool *pl, struct task *tk)
 			have = 1;
 		} else {
 			tk->fail = 1;
-			snprintf(tk->msg, sizeof tk->msg, "drop %zu (v_i = %g m/s): no contact (%s)",
+			cnum_snprintf(tk->msg, sizeof tk->msg, "drop %zu (v_i = %g m/s): no contact (%s)",
 			    r + 1, d->vi[r], hb_sim_end_str(s));
 		}
 		hb_sim_free(s);

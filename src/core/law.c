@@ -17,6 +17,7 @@
 #include "hybounce/law.h"
 #include "hybounce/status.h"
 #include "hybounce/units.h"
+#include "cnum.h"
 
 static const struct hb_law_type *const laws[] = {
 	&hb_law_shccl,
@@ -32,7 +33,7 @@ static int
 law_name_eq(const char *a, const char *b)
 {
 	while (*a != '\0' && *b != '\0') {
-		if (tolower((unsigned char)*a) != tolower((unsigned char)*b))
+		if (cnum_tolower((unsigned char)*a) != cnum_tolower((unsigned char)*b))
 			return 0;
 		a++;
 		b++;

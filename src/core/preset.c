@@ -43,6 +43,7 @@
 #include "preset_ini.h"
 #include "scene_keys.h"
 #include "textbuf.h"
+#include "cnum.h"
 
 #define PRESET_MAX_ENTRIES 512
 
@@ -604,7 +605,7 @@ hb_preset_format(const struct hb_scene *sc, char *buf, size_t n)
 				if ((pp->flags & HB_LAW_PARAM_STIFFNESS) && sc->d.k_derived)
 					continue;
 				hb_units_dim_str(scene_lawpar_dim(sc, i), u, sizeof u);
-				snprintf(v, sizeof v, "%.17g%s%s", sc->par[i], u[0] ? " " : "", u);
+				cnum_snprintf(v, sizeof v, "%.17g%s%s", sc->par[i], u[0] ? " " : "", u);
 				out_entry(&o, pp->name, v);
 			}
 			continue;

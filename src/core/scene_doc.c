@@ -14,6 +14,7 @@
 #include "docs.h"
 #include "scene_keys.h"
 #include "textbuf.h"
+#include "cnum.h"
 
 /* ---------------------------------------------------------------- */
 /* The man page's PRESETS reference */
@@ -85,7 +86,7 @@ scene_keys_mdoc(char *buf, size_t n)
 			else
 				hb_units_format(kd->def, *kd->dim, 6, def, sizeof def);
 		} else if (kd->store == ST_LONG || kd->store == ST_INT)
-			snprintf(def, sizeof def, "%.0f", kd->def);
+			cnum_snprintf(def, sizeof def, "%.0f", kd->def);
 		else
 			snprintf(def, sizeof def, "%s", kd->deftext);
 		textbuf_printf(&o, ".It Cm %s\n%s.\n", kd->key + strlen(sec) + 1, kd->help);

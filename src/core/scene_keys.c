@@ -11,13 +11,13 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
-#include <strings.h>
 
 #include "hybounce/scene.h"
 #include "hybounce/status.h"
 #include "hybounce/units.h"
 
 #include "scene_keys.h"
+#include "cnum.h"
 
 #define OFF(f) offsetof(struct hb_scene, f)
 #define SIZE(f) sizeof ((struct hb_scene *)0)->f
@@ -218,14 +218,14 @@ scene_keydef_read_choice(const struct scene_keydef *kd, const char *t, int *v)
 	case ST_LAW: {
 		const struct hb_law_type *const *l = hb_law_list();
 		for (int i = 0; l[i] != NULL; i++)
-			if (strcasecmp(l[i]->name, t) == 0)
+			if (cnum_casecmp(l[i]->name, t) == 0)
 				return *v = i, 0;
 		return -1;
 	}
 	case ST_EXT:
-		if (strcasecmp(t, "adhesive") == 0)
+		if (cnum_casecmp(t, "adhesive") == 0)
 			return *v = 1, 0;
-		if (strcasecmp(t, "none") == 0 || strcasecmp(t, "clamped") == 0)
+		if (cnum_casecmp(t, "none") == 0 || cnum_casecmp(t, "clamped") == 0)
 			return *v = 0, 0;
 		return -1;
 	case ST_STEPPER:
@@ -233,24 +233,24 @@ scene_keydef_read_choice(const struct scene_keydef *kd, const char *t, int *v)
 		return *v < 0 ? -1 : 0;
 	case ST_BOOL:
 		for (int i = 0; i < 4; i++) {
-			if (strcasecmp(t, yes[i]) == 0)
+			if (cnum_casecmp(t, yes[i]) == 0)
 				return *v = 1, 0;
-			if (strcasecmp(t, no[i]) == 0)
+			if (cnum_casecmp(t, no[i]) == 0)
 				return *v = 0, 0;
 		}
 		return -1;
 	case ST_REDUCE: {
 		static const char *const flag[] = { "flight", "contact", "com" };
 		int r = 0;
-		if (strcasecmp(t, "all") == 0)
+		if (cnum_casecmp(t, "all") == 0)
 			return *v = HB_REDUCE_ALL, 0;
-		if (strcasecmp(t, "none") == 0)
+		if (cnum_casecmp(t, "none") == 0)
 			return *v = 0, 0;
 		while (*t) {
 			size_t len = strcspn(t, ", \t");
 			int f = -1;
 			for (int i = 0; i < 3; i++)
-				if (strlen(flag[i]) == len && strncasecmp(t, flag[i], len) == 0)
+				if (strlen(flag[i]) == len && cnum_ncasecmp(t, flag[i], len) == 0)
 					f = i;
 			if (len > 0 && f < 0)
 				return -1;
@@ -291,7 +291,7 @@ scene_keydef_print(const struct hb_scene *sc, const struct scene_keydef *kd, cha
 	switch (kd->store) {
 	case ST_DOUBLE:
 		hb_units_dim_str(*kd->dim, u, sizeof u);
-		snprintf(buf, n, "%.17g%s%s", *(const double *)(base + kd->off), u[0] ? " " : "", u);
+		cnum_snprintf(buf, n, "%.17g%s%s", *(const double *)(base + kd->off), u[0] ? " " : "", u);
 		break;
 	case ST_LONG:
 		snprintf(buf, n, "%ld", *(const long *)(base + kd->off));
@@ -340,7 +340,7 @@ error_vset(struct hb_scene_error *e, const char *key, const char *fmt, va_list a
 		return HB_EINVAL;
 	memset(e, 0, sizeof *e);
 	snprintf(e->key, sizeof e->key, "%s", key != NULL ? key : "");
-	vsnprintf(e->what, sizeof e->what, fmt, ap);
+	cnum_vsnprintf(e->what, sizeof e->what, fmt, ap);
 	return HB_EINVAL;
 }
 
@@ -410,8 +410,8 @@ info_keydef(const struct hb_scene *sc, const struct scene_keydef *kd, struct hb_
 		o->number = kd->store == ST_LONG ? (double)*(const long *)(base + kd->off)
 		                                  : (double)*(const int *)(base + kd->off);
 		o->limits = kd->range;
-		snprintf(o->value, sizeof o->value, "%.0f", o->number);
-		snprintf(o->edit, sizeof o->edit, "%.0f", o->number);
+		cnum_snprintf(o->value, sizeof o->value, "%.0f", o->number);
+		cnum_snprintf(o->edit, sizeof o->edit, "%.0f", o->number);
 		hb_units_range_str(&kd->range, NULL, o->range, sizeof o->range);
 		break;
 	case ST_DOUBLE: {

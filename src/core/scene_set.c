@@ -18,6 +18,7 @@
 #include "hybounce/units.h"
 
 #include "scene_keys.h"
+#include "cnum.h"
 
 /* Trims leading and trailing blanks of text into buf. */
 static int
@@ -120,7 +121,7 @@ store_number(struct hb_scene *tmp, const char *key, double v, const char *text,
 	char vs[64];
 
 	if (text == NULL)
-		snprintf(vs, sizeof vs, "%.17g", v);
+		cnum_snprintf(vs, sizeof vs, "%.17g", v);
 	else
 		snprintf(vs, sizeof vs, "%s", text);
 	if (strncmp(key, "law.", 4) == 0) {

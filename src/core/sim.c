@@ -49,6 +49,7 @@
  */
 #include "sim_impl.h"
 #include "clock.h"
+#include "cnum.h"
 
 /*
  * A flow interval continued after hb_sim_seek (or hb_sim_set_scene) from inside
@@ -568,7 +569,7 @@ hb_sim_seek(struct hb_sim *s, size_t i)
 		hbs_finish_T(s);
 	else if (s->j >= s->sc.run.J) {
 		s->end = HB_SIM_END_J;
-		snprintf(s->endmsg, sizeof s->endmsg, "jump cap J = %ld reached at t = %.9g s",
+		cnum_snprintf(s->endmsg, sizeof s->endmsg, "jump cap J = %ld reached at t = %.9g s",
 		         s->sc.run.J, s->t);
 	}
 	return 0;

@@ -3,12 +3,13 @@
  * sim_record.c - samples, collision records, the jump map g and the ends of a run (see sim.c for the method).
  */
 #include "sim_impl.h"
+#include "cnum.h"
 
 int
 hbs_fail(struct hb_sim *s, int status, const char *why)
 {
 	s->end = HB_SIM_END_FAIL;
-	snprintf(s->err, sizeof s->err,
+	cnum_snprintf(s->err, sizeof s->err,
 	         "%s at (t = %.12g s, j = %ld): x = %.6g m, v = %.6g m/s, x_c = %.6g m, q_c = %d",
 	         why, s->t, s->j, s->x, s->v, s->xc, s->q);
 	snprintf(s->endmsg, sizeof s->endmsg, "failed: %s", s->err);
@@ -165,7 +166,7 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 	s->setup = 1;
 	if (s->j >= s->sc.run.J) {
 		s->end = HB_SIM_END_J;
-		snprintf(s->endmsg, sizeof s->endmsg,
+		cnum_snprintf(s->endmsg, sizeof s->endmsg,
 		         "jump cap J = %ld reached at t = %.9g s", s->sc.run.J, s->t);
 	}
 	return 0;
@@ -175,6 +176,6 @@ void
 hbs_finish_T(struct hb_sim *s)
 {
 	s->end = HB_SIM_END_T;
-	snprintf(s->endmsg, sizeof s->endmsg, "horizon T = %.9g s reached at j = %ld",
+	cnum_snprintf(s->endmsg, sizeof s->endmsg, "horizon T = %.9g s reached at j = %ld",
 	         s->sc.run.T, s->j);
 }

@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "hybounce/status.h"
+#include "cnum.h"
 
 const char *
 hb_status_str(int status)
@@ -30,7 +31,7 @@ hb_status_set(char *buf, size_t n, int status, const char *fmt, ...)
 	if (buf == NULL || n == 0)
 		return status;
 	va_start(ap, fmt);
-	vsnprintf(buf, n, fmt, ap);
+	cnum_vsnprintf(buf, n, fmt, ap);
 	va_end(ap);
 	return status;
 }

@@ -27,6 +27,7 @@
 #include "clock.h"
 #include "csv_impl.h"
 #include "sweep_impl.h"
+#include "cnum.h"
 
 #define SWEEP_MAX_POINTS 1000000000L
 #define SWEEP_MAX_AXES 16
@@ -111,7 +112,7 @@ key_value(const struct hb_scene *sc, const char *key, char *buf, size_t n)
 	case HB_SCENE_KEY_WHOLE:
 		if (isnan(ki.number))
 			return -1;
-		snprintf(buf, n, "%.17g", ki.number);
+		cnum_snprintf(buf, n, "%.17g", ki.number);
 		return 0;
 	case HB_SCENE_KEY_CHOICE:
 		if (ki.choice < 0 || ki.choice >= ki.nchoices || strlen(ki.choices[ki.choice]) >= n)
@@ -221,7 +222,7 @@ parse_range(struct axis *a, const struct hb_scene *sc, char *msg, size_t n)
 	}
 	if ((rc = canonical(sc, a->key, part[0], num, sizeof num, msg, n)) != HB_OK)
 		goto out;
-	from = strtod(num, &end);
+	from = cnum_strtod(num, &end);
 	if (*end != '\0') {
 		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: a range needs a numeric key; "
 		                "accepted for %s: a list V1,V2,...", a->key, a->spec, a->key);
@@ -229,7 +230,7 @@ parse_range(struct axis *a, const struct hb_scene *sc, char *msg, size_t n)
 	}
 	if ((rc = canonical(sc, a->key, part[1], num, sizeof num, msg, n)) != HB_OK)
 		goto out;
-	to = strtod(num, &end);
+	to = cnum_strtod(num, &end);
 	if (!isfinite(from) || !isfinite(to)) {
 		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: the ends of a range must be "
 		                "finite", a->key, a->spec);
@@ -257,7 +258,7 @@ parse_range(struct axis *a, const struct hb_scene *sc, char *msg, size_t n)
 			v = copysign(exp(log(fabs(from)) + (log(fabs(to)) - log(fabs(from))) * f), from);
 		else
 			v = from + (to - from) * f;
-		snprintf(t, sizeof t, "%.17g", v);
+		cnum_snprintf(t, sizeof t, "%.17g", v);
 		if ((rc = canonical(sc, a->key, t, num, sizeof num, msg, n)) != HB_OK)
 			goto out;
 		if ((a->val[i] = strdup(num)) == NULL) {

@@ -20,6 +20,7 @@
 #include "hybounce/sweep.h"
 #include "csv_impl.h"
 #include "sweep_impl.h"
+#include "cnum.h"
 
 #define SLICE_STEPS 2000
 #define CURVE_MAX_JOBS 64
@@ -192,7 +193,7 @@ hb_sweep_curve_start(const struct hb_scene *base, const char *key, const char *s
 	}
 	for (long i = 0; i < c->np; i++) {
 		hb_sweep_point_value(c->sw, i, 0, v, sizeof v);
-		c->x[i] = strtod(v, NULL);   /* NAN-free: a word (a law name) gives 0 */
+		c->x[i] = cnum_strtod(v, NULL);   /* NAN-free: a word (a law name) gives 0 */
 		c->y[i] = NAN;
 	}
 	if (jobs < 1)

@@ -4,6 +4,7 @@
 #include <stdio.h>
 
 #include "textbuf.h"
+#include "cnum.h"
 
 void
 textbuf_printf(struct textbuf *t, const char *fmt, ...)
@@ -13,7 +14,7 @@ textbuf_printf(struct textbuf *t, const char *fmt, ...)
 	int k;
 
 	va_start(ap, fmt);
-	k = vsnprintf(room ? t->buf + t->len : NULL, room, fmt, ap);
+	k = cnum_vsnprintf(room ? t->buf + t->len : NULL, room, fmt, ap);
 	va_end(ap);
 	if (k > 0)
 		t->len += (size_t)k;

@@ -22,6 +22,7 @@
 
 #include "hybounce/status.h"
 #include "hybounce/units.h"
+#include "cnum.h"
 
 const struct hb_unit_dim hb_unit_none = { 0, 0, 0, 0, 0 };
 const struct hb_unit_dim hb_unit_length = { 0, 1, 0, 0, 0 };
@@ -148,15 +149,15 @@ exponent_parse(const char **pp, double *e)
 	char *end;
 	double num, den = 1;
 
-	if (!(isdigit((unsigned char)*p) || ((*p == '-' || *p == '+') &&
-	    (isdigit((unsigned char)p[1]) || p[1] == '.')) || *p == '.'))
+	if (!(cnum_isdigit((unsigned char)*p) || ((*p == '-' || *p == '+') &&
+	    (cnum_isdigit((unsigned char)p[1]) || p[1] == '.')) || *p == '.'))
 		return -1;
-	num = strtod(p, &end);
+	num = cnum_strtod(p, &end);
 	if (end == p)
 		return -1;
 	p = end;
-	if (*p == '/' && isdigit((unsigned char)p[1])) {
-		den = strtod(p + 1, &end);
+	if (*p == '/' && cnum_isdigit((unsigned char)p[1])) {
+		den = cnum_strtod(p + 1, &end);
 		if (den == 0)
 			return -1;
 		p = end;
@@ -269,17 +270,17 @@ hb_units_parse(const char *text, struct hb_unit_dim expect, double *value, char 
 	struct hb_unit_dim d = { 0, 0, 0, 0, 0 };
 	int st;
 
-	while (isspace((unsigned char)*p))
+	while (cnum_isspace((unsigned char)*p))
 		p++;
 	if (*p == '\0')
 		return hb_status_set(msg, n, HB_EINVAL, "empty value");
-	v = strtod(p, &end);
+	v = cnum_strtod(p, &end);
 	/* strtod also reads "nan" and hexadecimal; refuse those. */
 	if (end == p || isnan(v) || memchr(p, 'x', (size_t)(end - p)) != NULL ||
 	    memchr(p, 'X', (size_t)(end - p)) != NULL)
 		return hb_status_set(msg, n, HB_EINVAL, "'%s' is not a number", text);
 	p = end;
-	while (isspace((unsigned char)*p))
+	while (cnum_isspace((unsigned char)*p))
 		p++;
 	if (*p == '\0') {
 		/* A bare number is taken as SI, whatever the expected dimension. */
@@ -290,13 +291,13 @@ hb_units_parse(const char *text, struct hb_unit_dim expect, double *value, char 
 		char ubuf[128];
 		size_t len = strlen(p);
 
-		while (len > 0 && isspace((unsigned char)p[len - 1]))
+		while (len > 0 && cnum_isspace((unsigned char)p[len - 1]))
 			len--;
 		if (len >= sizeof ubuf)
 			return hb_status_set(msg, n, HB_EINVAL, "unit of '%s' too long", text);
 		memcpy(ubuf, p, len);
 		ubuf[len] = '\0';
-		if (!isalpha((unsigned char)ubuf[0]) && (unsigned char)ubuf[0] < 0x80)
+		if (!cnum_isalpha((unsigned char)ubuf[0]) && (unsigned char)ubuf[0] < 0x80)
 			return hb_status_set(msg, n, HB_EINVAL, "'%s' is not a number", text);
 		st = unit_parse(ubuf, &factor, &d, msg, n);
 		if (st != HB_OK)
@@ -329,11 +330,11 @@ exp_str(double e, char *buf, size_t n)
 	double r2 = round(2 * e);
 
 	if (fabs(e - round(e)) < UNITS_TOL && fabs(e) < 1e15)
-		snprintf(buf, n, "%.0f", round(e) == 0 ? 0.0 : round(e));
+		cnum_snprintf(buf, n, "%.0f", round(e) == 0 ? 0.0 : round(e));
 	else if (fabs(2 * e - r2) < UNITS_TOL && fabs(e) < 1e15)
-		snprintf(buf, n, "%.0f/2", r2);
+		cnum_snprintf(buf, n, "%.0f/2", r2);
 	else
-		snprintf(buf, n, "%.17g", e);
+		cnum_snprintf(buf, n, "%.17g", e);
 }
 
 static void
@@ -451,8 +452,8 @@ hb_units_dim_str(struct hb_unit_dim d, char *buf, size_t n)
 static double
 mantissa(double v, int sig, char *buf, size_t n)
 {
-	snprintf(buf, n, "%.*g", sig, v);
-	return fabs(strtod(buf, NULL));
+	cnum_snprintf(buf, n, "%.*g", sig, v);
+	return fabs(cnum_strtod(buf, NULL));
 }
 
 /*
@@ -519,14 +520,14 @@ hb_units_format(double value, struct hb_unit_dim d, int sig, char *buf, size_t n
 		value = 0; /* -0 is shown as 0: its sign carries nothing */
 	d = hb_units_resolve(d, 0, 0);
 	if (dim_eq(d, hb_unit_none)) {
-		snprintf(buf, n, "%.*g", sig, value);
+		cnum_snprintf(buf, n, "%.*g", sig, value);
 		return buf;
 	}
 	for (size_t i = 0; i < sizeof simple / sizeof simple[0]; i++) {
 		if (!dim_eq(d, *simple[i].d))
 			continue;
 		if (!isfinite(value)) {
-			snprintf(buf, n, "%g %s%s%s", value, simple[i].factor == 1 ? "" : "k",
+			cnum_snprintf(buf, n, "%g %s%s%s", value, simple[i].factor == 1 ? "" : "k",
 			    simple[i].base, simple[i].tail);
 			return buf;
 		}
@@ -534,7 +535,7 @@ hb_units_format(double value, struct hb_unit_dim d, int sig, char *buf, size_t n
 		    simple[i].lo, simple[i].hi, sig, buf, n);
 	}
 	hb_units_dim_str(d, u, sizeof u);
-	snprintf(buf, n, "%.*g %s", sig, value, u);
+	cnum_snprintf(buf, n, "%.*g %s", sig, value, u);
 	return buf;
 }
 
@@ -551,7 +552,7 @@ hb_units_format_exact(double value, struct hb_unit_dim d, char *buf, size_t n)
 			return buf;
 	}
 	hb_units_dim_str(d, u, sizeof u);
-	snprintf(buf, n, "%.17g%s%s", value, u[0] ? " " : "", u);
+	cnum_snprintf(buf, n, "%.17g%s%s", value, u[0] ? " " : "", u);
 	return buf;
 }
 
@@ -610,7 +611,7 @@ bound_str(double b, char *buf, size_t n)
 	if (isinf(b))
 		snprintf(buf, n, "%sinf", b < 0 ? "-" : "");
 	else
-		snprintf(buf, n, "%g", b);
+		cnum_snprintf(buf, n, "%g", b);
 }
 
 char *

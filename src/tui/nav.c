@@ -11,8 +11,8 @@
 #include <curses.h>
 #include <math.h>
 #include <string.h>
-#include <strings.h>
 
+#include "cnum.h" /* ASCII case fold (src/core) */
 #include "tui.h"
 
 long
@@ -288,7 +288,7 @@ act_focus(struct app *a)
 
 /* ---- the parameter panel: search and sections ------------------------------ */
 
-/* Case-insensitive strstr. */
+/* Case-insensitive strstr (ASCII fold: the same under a Turkish locale). */
 static int
 contains(const char *hay, const char *needle)
 {
@@ -297,7 +297,7 @@ contains(const char *hay, const char *needle)
 	if (n == 0)
 		return 1;
 	for (; *hay; hay++)
-		if (strncasecmp(hay, needle, n) == 0)
+		if (cnum_ncasecmp(hay, needle, n) == 0)
 			return 1;
 	return 0;
 }

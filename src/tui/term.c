@@ -16,8 +16,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 
+#include "cnum.h" /* ASCII case fold (src/core) */
 #include "term.h"
 
 static volatile sig_atomic_t stop_signal;
@@ -53,9 +53,15 @@ locale_setup(void)
 {
 	const char *cs;
 
-	setlocale(LC_ALL, "");
+	/*
+	 * The character set only (UTF-8 text, Braille plots): numbers stay in
+	 * the C numeric locale (LC_NUMERIC is never taken from the
+	 * environment), so fields, exports and presets read and write a dot
+	 * under LANG=de_DE.UTF-8 as under LANG=C.
+	 */
+	setlocale(LC_CTYPE, "");
 	cs = nl_langinfo(CODESET);
-	utf8 = cs != NULL && (strcasecmp(cs, "UTF-8") == 0 || strcasecmp(cs, "utf8") == 0);
+	utf8 = cs != NULL && (cnum_casecmp(cs, "UTF-8") == 0 || cnum_casecmp(cs, "utf8") == 0);
 }
 
 static void

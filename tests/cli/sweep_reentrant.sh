@@ -11,8 +11,10 @@
 #     under pthread_once (dirs_tls, dirs_once in preset_find.c), and the
 #     table of libaubio's functions, loaded once under pthread_once and only
 #     read after (aubio_once, aubio_tab, aubio_loaded, aubio_why in
-#     onset_aubio.c), and the lock around inih's process-wide options
-#     (ini_lock in preset.c, preset_ini.h).
+#     onset_aubio.c), the lock around inih's process-wide options
+#     (ini_lock in preset.c, preset_ini.h), and the C locale numbers are
+#     read and written in, made once under pthread_once (cnum_locale,
+#     cnum_once in cnum.c).
 #  2. One point, 12 times, on 4 threads: every row and collision equal.
 # make check-tsan runs this script with a ThreadSanitizer build
 # (build-tsan/hybounce, TSAN_OPTIONS=halt_on_error=1): any data race fails it.
@@ -31,9 +33,10 @@ if [ -f "$LIB" ] && command -v objdump >/dev/null 2>&1; then
 	grep -v -x -e 'hb_step_bsimp_shifted (step_bsimp.o)' -e 'dirs_tls (preset_find.o)' \
 	    -e 'dirs_once (preset_find.o)' -e 'aubio_once (onset_aubio.o)' \
 	    -e 'aubio_tab (onset_aubio.o)' -e 'aubio_loaded (onset_aubio.o)' \
-	    -e 'aubio_why (onset_aubio.o)' -e 'ini_lock (preset.o)' "$T/statics" >"$T/unknown"
+	    -e 'aubio_why (onset_aubio.o)' -e 'ini_lock (preset.o)' \
+	    -e 'cnum_locale (cnum.o)' -e 'cnum_once (cnum.o)' "$T/statics" >"$T/unknown"
 	if grep -q -x 'hb_step_bsimp_shifted (step_bsimp.o)' "$T/statics" && [ ! -s "$T/unknown" ]; then
-		ok "the engine has no mutable static state but a const step pointer, a pthread_once thread key, the once-loaded aubio table and inih's lock (objdump of .data and .bss)"
+		ok "the engine has no mutable static state but a const step pointer, a pthread_once thread key, the once-loaded aubio table, inih's lock and the once-made C locale (objdump of .data and .bss)"
 	else notok "libhybounce.a: unexpected mutable statics" "$T/unknown"; fi
 else
 	notok "objdump and $LIB are there to list the engine's writable statics"
