@@ -35,6 +35,7 @@
 #include <ini.h>
 
 #include "hybounce/atomic.h"
+#include "hybounce/input.h"
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
 #include "hybounce/units.h"
@@ -426,41 +427,16 @@ hb_preset_load_string(const char *text, const char *name, struct hb_scene *sc, c
 	return st;
 }
 
-/* Reads a whole file into a malloc'd string. */
+/* Reads a whole file into a malloc'd string, once, bounded (input.h). */
 static int
 read_file(const char *path, char **out, char *msg, size_t n)
 {
-	FILE *f = fopen(path, "rb");
 	char *buf = NULL;
-	size_t len = 0, cap = 0;
+	size_t len = 0;
+	int st = hb_input_read(path, HB_INPUT_PRESET_MAX, &buf, &len, msg, n);
 
-	if (f == NULL)
-		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
-	for (;;) {
-		size_t got;
-		if (cap - len < 4096) {
-			char *nb = realloc(buf, cap + 65536);
-			if (nb == NULL) {
-				free(buf);
-				fclose(f);
-				return hb_status_set(msg, n, HB_ENOMEM, "%s: out of memory", path);
-			}
-			buf = nb;
-			cap += 65536;
-		}
-		got = fread(buf + len, 1, cap - len - 1, f);
-		len += got;
-		if (got == 0)
-			break;
-	}
-	if (ferror(f)) {
-		int e = errno;
-		free(buf);
-		fclose(f);
-		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e ? e : EIO));
-	}
-	fclose(f);
-	buf[len] = '\0';
+	if (st != HB_OK)
+		return st;
 	if (strlen(buf) != len) {
 		free(buf);
 		return hb_status_set(msg, n, HB_EINVAL, "%s: not a text file (contains NUL bytes); "
