@@ -77,7 +77,10 @@ else
 BIN_LIBS := $(TUI_LIBS) $(CORE_LIBS)
 endif
 
+# The commit the program is built from, for the provenance line of every output.
+COMMIT    := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
 CPPFLAGS  += -Iinclude -Iinclude/hybounce -Isrc/core -DHYBOUNCE_VERSION='"$(VERSION)"' \
+             -DHYBOUNCE_COMMIT='"$(COMMIT)"' \
              -DHYBOUNCE_DATADIR='"$(DATADIR)"' -D_POSIX_C_SOURCE=200809L -D_XOPEN_SOURCE=700
 CFLAGS    ?= $(OPT) -g
 CFLAGS    += -std=c17 $(WARN) $(SANFLAGS) -MMD -MP
@@ -148,6 +151,11 @@ $(BUILD)/build-config: FORCE
 	@mkdir -p $(@D)
 	@echo '$(BUILD_CONFIG)' | cmp -s - $@ || echo '$(BUILD_CONFIG)' >$@
 $(CORE_OBJ) $(TUI_OBJ) $(CLI_OBJ): $(BUILD)/build-config
+# Only the object that prints the commit (src/cli/signals.c) follows it.
+$(BUILD)/commit: FORCE
+	@mkdir -p $(@D)
+	@echo '$(COMMIT)' | cmp -s - $@ || echo '$(COMMIT)' >$@
+$(BUILD)/src/cli/signals.o: $(BUILD)/commit
 FORCE:
 $(SHLIB): $(CORE_OBJ)
 	$(CC) -shared $(LDFLAGS) -Wl,-soname,$(SHLIB_SO) -Wl,--no-undefined -o $@ $^ $(CORE_LIBS) $(AUBIO_LIBS)

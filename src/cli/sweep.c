@@ -25,26 +25,20 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "hybounce/input.h"
+#include "hybounce/outputs.h"
 #include "hybounce/preset.h"
 #include "hybounce/scene.h"
 #include "hybounce/status.h"
 #include "hybounce/sweep.h"
 
 #include "sweep_cli.h"
+#include "signals.h"
 #include "clock.h"
 
 #define PROG "hybounce sweep"
 
-/* Set by SIGINT, SIGTERM and SIGHUP: the sweep stops after the points in hand. */
-static volatile sig_atomic_t stop_signal;
-
-static void
-on_stop_signal(int sig)
-{
-	stop_signal = sig;
-}
-
-enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS };
+enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS, OPT_MAX_POINTS };
 
 static const struct option sweep_options_long[] = {
 	{ "set",      required_argument, NULL, 's' },
@@ -58,6 +52,7 @@ static const struct option sweep_options_long[] = {
 	{ "sshlogin", required_argument, NULL, OPT_SSHLOGIN },
 	{ "merge",    required_argument, NULL, OPT_MERGE },
 	{ "progress", required_argument, NULL, OPT_PROGRESS },
+	{ "max-points", required_argument, NULL, OPT_MAX_POINTS },
 	{ "help",     no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
 };
@@ -88,6 +83,8 @@ sweep_usage(FILE *f)
 "  -q, --quiet             no progress\n"
 "      --progress PCT      without a terminal, a progress line every PCT %%\n"
 "                          of the points (default 10)\n"
+"      --max-points N      allow a sweep of up to N points (default 1000000,\n"
+"                          at most 1000000000); a larger sweep is refused\n"
 "      --emit slurm        print a script that submits the shards as a Slurm\n"
 "                          job array and a dependent merge job (sh FILE)\n"
 "      --emit parallel     print a GNU parallel command line for the shards\n"
@@ -209,50 +206,27 @@ on_progress(void *ctx, const struct hb_sweep_progress *p)
 /* ------------------------------------------------------------------ */
 /* Input                                                               */
 
-static char *
-read_text(const char *path)
-{
-	FILE *f = fopen(path, "r");
-	char *buf = NULL;
-	size_t len = 0;
-	FILE *m;
-	int c;
-
-	if (f == NULL)
-		return NULL;
-	m = open_memstream(&buf, &len);
-	if (m == NULL) {
-		fclose(f);
-		return NULL;
-	}
-	while ((c = getc(f)) != EOF)
-		putc(c, m);
-	fclose(f);
-	if (fclose(m) != 0) {
-		free(buf);
-		return NULL;
-	}
-	return buf;
-}
-
 /* The preset, the --set values and the axes; NULL after printing why (exit 2). */
 static struct hb_sweep *
 build(const char *preset, const char *const *sets, int nsets,
-      const char *const *varies, int nvaries)
+      const char *const *varies, int nvaries, const char *out, long max_points)
 {
-	char path[4096], msg[1024];
+	char path[4096], spec[4200], msg[1024], more[128];
 	struct hb_scene sc;
 	struct hb_sweep *sw;
-	char *text;
+	char *text = NULL;
 
 	msg[0] = '\0';
 	if (hb_preset_resolve(preset, path, sizeof path, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": preset '%s': %s\n", preset, msg[0] ? msg : "not found");
 		return NULL;
 	}
+	/* Read once (a pipe or FIFO works), bounded; the scene and the axes come from it. */
 	msg[0] = '\0';
-	if (hb_preset_load(path, &sc, msg, sizeof msg) != HB_OK) {
+	if (hb_input_read(path, HB_INPUT_PRESET_MAX, &text, NULL, msg, sizeof msg) != HB_OK ||
+	    hb_preset_load_string(text, path, &sc, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": %s\n", msg[0] ? msg : path);
+		free(text);
 		return NULL;
 	}
 	for (int i = 0; i < nsets; i++) {
@@ -262,31 +236,38 @@ build(const char *preset, const char *const *sets, int nsets,
 		if (eq == NULL || eq == sets[i] || (size_t)(eq - sets[i]) >= sizeof key) {
 			fprintf(stderr, PROG ": --set '%s': expected KEY=VALUE, e.g. "
 			        "--set law.c=0.4\n", sets[i]);
+			free(text);
 			return NULL;
 		}
 		snprintf(key, sizeof key, "%.*s", (int)(eq - sets[i]), sets[i]);
 		msg[0] = '\0';
 		if (hb_scene_set(&sc, key, eq + 1, msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": --set %s: %s\n", sets[i], msg);
+			free(text);
 			return NULL;
 		}
 	}
 	msg[0] = '\0';
 	if (hb_scene_validate(&sc, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": %s: %s\n", path, msg);
+		free(text);
 		return NULL;
 	}
 	sw = hb_sweep_new(&sc, msg, sizeof msg);
 	if (sw == NULL) {
 		fprintf(stderr, PROG ": %s\n", msg);
+		free(text);
 		return NULL;
 	}
-	text = read_text(path);
-	if (text == NULL) {
-		fprintf(stderr, PROG ": %s: %s\n", path, strerror(errno));
-		hb_sweep_free(sw);
-		return NULL;
-	}
+	/*
+	 * Work bounded: at most max_points unless asked for.  The folder's own
+	 * sweep.preset (a shard of --emit, a resume) was allowed when it was made.
+	 */
+	snprintf(spec, sizeof spec, "%s/sweep.preset", out);
+	if (max_points == 0 && hb_outputs_same_file(path, spec))
+		max_points = 1000000000L;
+	snprintf(more, sizeof more, "--max-points N allows up to N (at most 1000000000)");
+	hb_sweep_set_max_points(sw, max_points ? max_points : HB_SWEEP_MAX_POINTS, more);
 	msg[0] = '\0';
 	if (hb_sweep_vary_from_preset(sw, text, path, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": %s\n", msg);
@@ -323,7 +304,7 @@ sweep_main(int argc, char **argv)
 {
 	const char **sets, **varies;
 	int nsets = 0, nvaries = 0, quiet = 0, c, status = 2;
-	long jobs = 0, shard_k = 0, shard_n = 1, shards = 0, pct = 10;
+	long jobs = 0, shard_k = 0, shard_n = 1, shards = 0, pct = 10, max_points = 0;
 	const char *out = NULL, *emit = NULL, *sshlogin = NULL, *merge = NULL;
 	struct hb_sweep *sw = NULL;
 	char msg[2048];
@@ -385,6 +366,13 @@ sweep_main(int argc, char **argv)
 				goto done;
 			}
 			break;
+		case OPT_MAX_POINTS:
+			if (parse_long(optarg, 1, 1000000000L, &max_points) != 0) {
+				status = bad("--max-points '%s': accepted: an integer from 1 to "
+				             "1000000000", optarg);
+				goto done;
+			}
+			break;
 		case 'h':
 			sweep_usage(stdout);
 			status = 0;
@@ -434,7 +422,7 @@ sweep_main(int argc, char **argv)
 		             : "--sshlogin goes with --emit parallel");
 		goto done;
 	}
-	sw = build(argv[optind], sets, nsets, varies, nvaries);
+	sw = build(argv[optind], sets, nsets, varies, nvaries, out, max_points);
 	if (sw == NULL)
 		goto done;      /* exit 2: build said why */
 
@@ -462,25 +450,20 @@ sweep_main(int argc, char **argv)
 		o.shard_n = shard_n;
 		o.progress = on_progress;
 		o.ctx = &g;
-		o.cancel = &stop_signal;
-		{
-			struct sigaction sa;
-
-			memset(&sa, 0, sizeof sa);
-			sa.sa_handler = on_stop_signal;
-			sigemptyset(&sa.sa_mask);
-			sigaction(SIGINT, &sa, NULL);
-			sigaction(SIGTERM, &sa, NULL);
-			sigaction(SIGHUP, &sa, NULL);
-		}
+		o.provenance = cli_provenance();
+		/* SIGINT, SIGTERM, SIGHUP (those not ignored): the points done are
+		 * journaled, exit 128 + N (signals.h). */
+		cli_signals_watch();
+		o.cancel = &cli_signal;
 		msg[0] = '\0';
 		status = hb_sweep_run(sw, &o, msg, sizeof msg);
+		cli_signals_restore();
 		if (status == HB_EDONE) {
 			/* Interrupted: what was done is journaled; exit as the signal would. */
 			if (g.tty && !quiet)
 				fputc('\n', stderr);
 			fprintf(stderr, PROG ": %s\n", msg);
-			status = 128 + (int)stop_signal;
+			status = cli_signal_status((int)cli_signal);
 		} else if (status == HB_EINVAL) {
 			fprintf(stderr, PROG ": %s\n", msg);
 			status = 2;
