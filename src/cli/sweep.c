@@ -25,6 +25,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "hybounce/atomic.h"
 #include "hybounce/input.h"
 #include "hybounce/outputs.h"
 #include "hybounce/preset.h"
@@ -143,6 +144,7 @@ online_cpus(void)
 /* Progress                                                            */
 
 struct progress {
+	long resumed, total;   /* points found done at the start, points of the shard */
 	int tty, quiet;
 	double step;       /* fraction between lines without a terminal */
 	double next;       /* next fraction to report */
@@ -172,6 +174,10 @@ on_progress(void *ctx, const struct hb_sweep_progress *p)
 	double eta = rate > 0 ? (double)(p->total - p->done) / rate : -1;
 	char e[32];
 
+	if (computed == 0) {
+		g->resumed = p->resumed;
+		g->total = p->total;
+	}
 	if (g->quiet)
 		return;
 	if (computed == 0) {
@@ -201,6 +207,46 @@ on_progress(void *ctx, const struct hb_sweep_progress *p)
 		g->next += g->step;
 	fprintf(stderr, "sweep: %ld/%ld points (%.0f%%), %.1f points/s, ETA %s, %ld failed\n",
 	        p->done, p->total, 100 * frac, rate, e, p->failed);
+}
+
+/* ------------------------------------------------------------------ */
+/* Output                                                              */
+
+/* How DIR/runs.csv and DIR/collisions.csv will be written (before). */
+struct dir_targets {
+	char path[2][4200];
+	struct hb_atomic_target t[2];
+};
+
+static void
+probe_dir(const char *dir, struct dir_targets *d)
+{
+	char m[256];
+
+	for (int k = 0; k < 2; k++) {
+		snprintf(d->path[k], sizeof d->path[k], "%s/%s", dir, k ? "collisions.csv" : "runs.csv");
+		if (hb_atomic_probe(d->path[k], &d->t[k], m, sizeof m) != HB_OK)
+			memset(&d->t[k], 0, sizeof d->t[k]);
+	}
+}
+
+/*
+ * "wrote DIR/runs.csv (replaced the existing file)" ... (outputs.h); a
+ * sweep found complete writes nothing: "kept DIR/runs.csv ...".
+ */
+static void
+print_wrote_dir(const struct dir_targets *d, int unchanged)
+{
+	char how[4200];
+
+	for (int k = 0; k < 2; k++) {
+		if (unchanged) {
+			fprintf(stderr, "kept %s (the sweep was complete)\n", d->path[k]);
+			continue;
+		}
+		hb_outputs_how(&d->t[k], how, sizeof how);
+		fprintf(stderr, "wrote %s%s\n", d->path[k], how);
+	}
 }
 
 /* ------------------------------------------------------------------ */
@@ -388,6 +434,9 @@ sweep_main(int argc, char **argv)
 			status = bad("--merge DIR takes no preset and no other option");
 			goto done;
 		}
+		struct dir_targets dt;
+
+		probe_dir(merge, &dt);
 		msg[0] = '\0';
 		if (hb_sweep_merge(merge, msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": merge: %s\n", msg);
@@ -395,7 +444,7 @@ sweep_main(int argc, char **argv)
 			goto done;
 		}
 		if (!quiet)
-			fprintf(stderr, "wrote %s/runs.csv\nwrote %s/collisions.csv\n", merge, merge);
+			print_wrote_dir(&dt, 0);
 		status = 0;
 		goto done;
 	}
@@ -439,6 +488,7 @@ sweep_main(int argc, char **argv)
 	{
 		struct progress g = { 0 };
 		struct hb_sweep_options o = { 0 };
+		struct dir_targets dt;
 
 		g.tty = isatty(STDERR_FILENO);
 		g.quiet = quiet;
@@ -455,6 +505,7 @@ sweep_main(int argc, char **argv)
 		 * journaled, exit 128 + N (signals.h). */
 		cli_signals_watch();
 		o.cancel = &cli_signal;
+		probe_dir(out, &dt);
 		msg[0] = '\0';
 		status = hb_sweep_run(sw, &o, msg, sizeof msg);
 		cli_signals_restore();
@@ -475,7 +526,7 @@ sweep_main(int argc, char **argv)
 				fprintf(stderr, "sweep: shard %ld of %ld done in %s; merge the shards "
 				        "with: hybounce sweep --merge %s\n", shard_k, shard_n, out, out);
 			else
-				fprintf(stderr, "wrote %s/runs.csv\nwrote %s/collisions.csv\n", out, out);
+				print_wrote_dir(&dt, g.total > 0 && g.resumed == g.total);
 		}
 	}
 done:

@@ -163,4 +163,17 @@ else
 	notok "sweep.preset records version, commit and command; another command line resumes the folder"
 	show "$T/err"
 fi
+# Sweep: a complete folder run again is kept and said so; a merge that
+# replaces the files names that.
+(cd "$W" && "$BIN" sweep six/sweep.preset --jobs 1 --out six 2>"$T/err")
+(cd "$W" && for k in 0 1; do "$BIN" sweep six/sweep.preset -q --shard $k/2 --out sh; done &&
+    "$BIN" sweep --merge sh 2>/dev/null && "$BIN" sweep --merge sh 2>"$T/err2")
+if grep -q '^kept six/runs.csv (the sweep was complete)$' "$T/err" &&
+    grep -q '^wrote sh/runs.csv (replaced the existing file)$' "$T/err2" &&
+    grep -q '^wrote sh/collisions.csv (replaced the existing file)$' "$T/err2"; then
+	ok "sweep: a complete folder is kept and said so; --merge names the files it replaces"
+else
+	notok "sweep: a complete folder is kept; --merge names the files it replaces"
+	show "$T/err"; show "$T/err2"
+fi
 exit $((fails > 0))
