@@ -21,7 +21,7 @@ wait_line() {
 
 for sig in INT TERM HUP; do
 	case $sig in INT) want=130 ;; TERM) want=143 ;; HUP) want=129 ;; esac
-	rm -f "$T/f.preset" "$T/r.csv"
+	rm -f "$T/f.preset" "$T/r.csv" "$T/out" "$T/err"
 	# env --default-signal: a background job of a script ignores SIGINT.
 	(cd "$T" && exec env --default-signal=INT,HUP "$BIN" fit steel-on-bitumen --data drops.csv \
 	    --free law.c,law.alpha --jobs 1 --out f.preset --residuals r.csv >"$T/out" 2>"$T/err") &
@@ -45,6 +45,7 @@ for sig in INT TERM HUP; do
 done
 
 # fit with SIGHUP ignored on entry runs to its end.
+rm -f "$T/out" "$T/err"
 (cd "$T" && trap '' HUP && exec "$BIN" fit steel-on-bitumen --data drops.csv --free law.c \
     --jobs 1 --max-iter 4 --out g.preset >"$T/out" 2>"$T/err") &
 pid=$!
@@ -81,7 +82,7 @@ fi
 
 # sweep: nohup-style (SIGHUP ignored on entry) keeps running; SIGHUP otherwise stops it.
 for how in ignored caught; do
-	rm -rf "$T/sw"
+	rm -rf "$T/sw" "$T/err"
 	if [ $how = ignored ]; then
 		(trap '' HUP && exec "$BIN" sweep hertz-elastic --vary run.T=1:3:40 -q --jobs 1 \
 		    --out "$T/sw" 2>"$T/err") &
