@@ -146,14 +146,20 @@ parse_pos(const char *opt, const char *s, double *out)
 	return 0;
 }
 
-/* 1 if the data is a recording: a .wav name or a RIFF header (text read once). */
+/* 1 if path names a recording by its extension (.wav). */
 static int
-is_recording(const char *path, const char *text, size_t len)
+wav_name(const char *path)
 {
 	size_t l = strlen(path);
 
-	return (l > 4 && strcasecmp(path + l - 4, ".wav") == 0) ||
-	       (len >= 4 && memcmp(text, "RIFF", 4) == 0);
+	return l > 4 && strcasecmp(path + l - 4, ".wav") == 0;
+}
+
+/* 1 if the data is a recording: a .wav name, or a RIFF header (text read once). */
+static int
+is_recording(const char *path, const char *text, size_t len)
+{
+	return wav_name(path) || (text != NULL && len >= 4 && memcmp(text, "RIFF", 4) == 0);
 }
 
 /* The default output: the data file's base name without extension + -fit.preset. */
@@ -456,8 +462,10 @@ fit_main(int argc, char **argv)
 		}
 		k_resid = pol.nout - 1;
 	}
-	/* The data, read once (a pipe or a FIFO works) and bounded (input.h). */
-	if (hb_input_read(data, HB_INPUT_DATA_MAX, &text, &textlen, msg, sizeof msg) != HB_OK) {
+	/* The data, read once (a pipe or a FIFO works) and bounded (input.h);
+	 * a .wav recording is left to aubio, which reads it by name. */
+	if (!wav_name(data) &&
+	    hb_input_read(data, HB_INPUT_DATA_MAX, &text, &textlen, msg, sizeof msg) != HB_OK) {
 		status = bad("--data %s", msg);
 		goto out;
 	}
