@@ -479,6 +479,13 @@ sweep_main(int argc, char **argv)
 		if (shards == 0)
 			shards = online_cpus();
 		msg[0] = '\0';
+		/* sweep.preset with its provenance line first; sweep_emit finds it in place. */
+		status = hb_sweep_prepare_dir_with(sw, out, cli_provenance(), msg, sizeof msg);
+		if (status != HB_OK) {
+			fprintf(stderr, PROG ": %s\n", msg);
+			status = status == HB_EINVAL ? 2 : 1;
+			goto done;
+		}
 		status = sweep_emit(sw, out, emit, shards, sshlogin, msg, sizeof msg);
 		if (status != 0)
 			fprintf(stderr, PROG ": %s\n", msg);
