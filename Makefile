@@ -170,7 +170,7 @@ $(VERSION_H): FORCE
 	@mkdir -p $(@D)
 	@sh tools/version.sh include/hybounce/version.h.in VERSION >$@.new && \
 	    { cmp -s $@.new $@ && rm -f $@.new || mv $@.new $@; }
-$(BUILD)/src/core/version.o $(BUILD)/src/cli/main.o: $(VERSION_H)
+$(BUILD)/src/core/version.o $(BUILD)/src/cli/main.o $(BUILD)/src/cli/signals.o: $(VERSION_H)
 # The objects are rebuilt when what is compiled into them changes: the
 # library flags, or the preset folder of PREFIX (make PREFIX=/opt/x install
 # after a plain make installs a program that looks in /opt/x).

@@ -54,6 +54,25 @@ struct hb_atomic_target {
 
 enum { HB_ATOMIC_MAX = 4 };
 
+/* What a temporary file's name has after its target's: TARGET.hbtmp-PID-... */
+#define HB_ATOMIC_TMP_TAG ".hbtmp-"
+
+/*
+ * 1 if name (a file name without folder) is a temporary file of the atomic
+ * writer for the target named target (also without folder; NULL: any
+ * target); *pid gets its writer's process id (may be NULL).
+ */
+int
+hb_atomic_is_temp(const char *name, const char *target, long *pid);
+
+/*
+ * 1 if name, a temporary file in folder dir (hb_atomic_is_temp), was left
+ * by a process that is gone; such a file is never renamed over its target
+ * and may be removed.
+ */
+int
+hb_atomic_temp_stale(const char *dir, const char *name);
+
 struct hb_atomic_file {
 	const char *path;     /* as named by the caller (borrowed) */
 	struct hb_atomic_target target;

@@ -91,6 +91,35 @@ hb_csv_export_files_scene(const struct hb_sim *s, const char *trace, const char 
                        const char *scene, const char *run_preset,
                        struct hb_csv_export_report *r, char *msg, size_t n);
 
+struct hb_outputs;
+
+/* An export with every setting (hb_csv_export_with). */
+struct hb_csv_export_opts {
+	const char *trace;        /* the arc CSV, or NULL */
+	const char *coll;         /* the collisions CSV, or NULL */
+	const char *scene;        /* the scene's file; NULL: beside the first CSV file */
+	const char *run_preset;   /* the preset being run (never overwritten); may be NULL */
+	/* A comment line (outputs.h: hb_outputs_provenance) written into the
+	 * scene before the export line: which program and command made it.
+	 * NULL: none. */
+	const char *provenance;
+	/* The command's other inputs and outputs (outputs.h), which the
+	 * export's files must not be; NULL: none.  Not changed. */
+	const struct hb_outputs *outputs;
+};
+
+/*
+ * hb_csv_export_files_scene with the options above: the same rules, with
+ * the command's other inputs and outputs and the provenance line.
+ */
+int
+hb_csv_export_with(const struct hb_sim *s, const struct hb_csv_export_opts *o,
+                   struct hb_csv_export_report *r, char *msg, size_t n);
+
+/* Every check of hb_csv_export_with that can be made before the run. */
+int
+hb_csv_export_check_with(const struct hb_csv_export_opts *o, char *msg, size_t n);
+
 /* Every check of hb_csv_export_files that can be made before the run. */
 int
 hb_csv_export_check(const char *trace, const char *coll, const char *run_preset,

@@ -86,10 +86,20 @@ hb_fit_obs_name(int obs);
 /*
  * Reads a data file (see the top of this header).  Returns 0, or HB_EINVAL /
  * HB_EIO / HB_ENOMEM with "FILE:LINE: ..." in msg naming the column or value
- * and what is accepted.  On error *d holds nothing to free.
+ * and what is accepted.  On error *d holds nothing to free.  The file is
+ * read once, whole (a pipe or a FIFO works), up to HB_INPUT_DATA_MAX
+ * bytes (input.h); a NUL byte in a row is an error naming row and column.
  */
 int
 hb_fit_data_load(const char *path, struct hb_fit_data *d, char *msg, size_t n);
+
+/*
+ * The same from text already in memory (len bytes; a front end that read
+ * the file once, e.g. to tell a recording): `name` stands for the file.
+ */
+int
+hb_fit_data_parse(const char *text, size_t len, const char *name, struct hb_fit_data *d,
+                  char *msg, size_t n);
 
 /* The same from an open stream (borrowed); `name` stands for the file in messages. */
 int

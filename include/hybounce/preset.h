@@ -58,6 +58,16 @@ hb_preset_open_named(const char *name, const char *const *sets, int nsets, struc
                      char *path, size_t pn, char *msg, size_t n);
 
 /*
+ * hb_preset_open_named that also hands back the preset's text as read (the
+ * file is read once: a pipe or a FIFO works), for a front end that reads
+ * more than the scene from it (sweep's "; sweep: --vary" lines).  On 0,
+ * *text is the caller's to free(); on an error it is left alone.
+ */
+int
+hb_preset_open_text(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
+                    char *path, size_t pn, char **text, char *msg, size_t n);
+
+/*
  * Writes the scene as a preset that reproduces it exactly (%.17g values),
  * to a temporary name in the same folder and renamed.  Returns 0, or HB_EIO
  * with "PATH: strerror" in msg; an existing file is left intact on failure.

@@ -57,6 +57,19 @@ void
 hb_sweep_free(struct hb_sweep *sw);
 
 /*
+ * The work a sweep may ask for: a sweep accepts at most
+ * HB_SWEEP_MAX_POINTS points unless the caller allows more (or fewer) with
+ * hb_sweep_set_max_points, before its axes: a larger product is refused
+ * by hb_sweep_vary (HB_EINVAL, before any value is made) with a message
+ * naming the count and the limit, then `more` (how to ask for more, e.g.
+ * "--max-points N allows more"; may be NULL).  Up to 10^9.
+ */
+#define HB_SWEEP_MAX_POINTS 1000000L
+
+void
+hb_sweep_set_max_points(struct hb_sweep *sw, long max, const char *more);
+
+/*
  * Adds an axis from "KEY=SPEC".  A key already varied is replaced (so a
  * command line's --vary overrides a preset's "; sweep:" line).  Each value
  * is checked against the key alone here; HB_EINVAL with a message naming
@@ -140,6 +153,14 @@ struct hb_sweep_options {
 	 * hb_sweep_run returns HB_EDONE ("stopped with N of M points done").
 	 */
 	volatile sig_atomic_t *cancel;
+	/*
+	 * May be NULL.  A comment line (outputs.h: hb_outputs_provenance)
+	 * written at the end of a new sweep.preset: the program and command
+	 * that made the folder.  Such lines are left out when a folder's
+	 * sweep.preset is compared with the sweep, so that another command
+	 * line (--jobs, --quiet) resumes it.
+	 */
+	const char *provenance;
 };
 
 /*
@@ -150,6 +171,11 @@ struct hb_sweep_options {
  */
 int
 hb_sweep_prepare_dir(const struct hb_sweep *sw, const char *dir, char *msg, size_t n);
+
+/* The same, with a provenance line for a new sweep.preset (NULL: none). */
+int
+hb_sweep_prepare_dir_with(const struct hb_sweep *sw, const char *dir, const char *provenance,
+                          char *msg, size_t n);
 
 /*
  * Computes the points of the shard that its journal
@@ -181,8 +207,12 @@ hb_sweep_merge(const char *dir, char *msg, size_t n);
  *     hb_sweep_curve_free(c);   // cancels: workers stop within one slice
  *
  * The points are those of the sweep with that one axis (the same scenes,
- * the same runs: bit-identical to --batch), taken in order.
+ * the same runs: bit-identical to --batch), taken in order.  A curve has
+ * at most HB_SWEEP_CURVE_MAX_POINTS points: a longer range is refused
+ * (HB_EINVAL, nothing started) with a message naming the limit.
  */
+#define HB_SWEEP_CURVE_MAX_POINTS 10000L
+
 enum hb_sweep_observable {
 	HB_CURVE_E = 0,      /* e of collision i (i among all: NAN if thinned out) */
 	HB_CURVE_VI,         /* v_i of collision i, m/s */

@@ -47,6 +47,7 @@
 #include "hybounce/csv.h"
 #include "hybounce/law.h"
 #include "hybounce/observables.h"
+#include "hybounce/outputs.h"
 #include "hybounce/preset.h"
 #include "hybounce/scene.h"
 #include "hybounce/sim.h"
@@ -54,6 +55,7 @@
 #include "hybounce/units.h"
 
 #include "batch.h"
+#include "signals.h"
 #include "clock.h"
 
 #define PROG "hybounce"
@@ -163,19 +165,14 @@ check_export_path(const char *opt, const char *path)
 	return 0;
 }
 
-/* "wrote PATH", and how when it was not a plain new file. */
+/* "wrote PATH", and how when it was not a plain new file (outputs.h). */
 static void
 print_wrote(const char *path, const struct hb_atomic_target *t)
 {
-	fprintf(stderr, "wrote %s", path);
-	if (t->how == HB_ATOMIC_IN_PLACE)
-		fprintf(stderr, " (written in place)");
-	else if (t->via_link)
-		fprintf(stderr, " (through the link, to %s%s)", t->real,
-		        t->how == HB_ATOMIC_REPLACE ? ", replacing it" : "");
-	else if (t->how == HB_ATOMIC_REPLACE)
-		fprintf(stderr, " (replaced the existing file)");
-	fprintf(stderr, "\n");
+	char how[4200];
+
+	hb_outputs_how(t, how, sizeof how);
+	fprintf(stderr, "wrote %s%s\n", path, how);
 }
 
 /* ------------------------------------------------------------------ */
@@ -566,7 +563,7 @@ print_summary(FILE *out, const struct hb_sim *s, int sig)
 	fprintf(out, "summary\n");
 	if (sig != 0)
 		fprintf(out, "  ended       interrupted by %s at t = %s, j = %ld (run.T = %s)\n",
-		        sig == SIGINT ? "SIGINT" : "SIGTERM",
+		        cli_signal_name(sig),
 		        fmt(last != NULL ? last->t : 0, hb_unit_time, b1, sizeof b1),
 		        last != NULL ? last->j : 0L, fmt(sc->run.T, hb_unit_time, b2, sizeof b2));
 	else
@@ -626,30 +623,6 @@ print_summary(FILE *out, const struct hb_sim *s, int sig)
 /* ------------------------------------------------------------------ */
 /* The run: signals and progress                                       */
 
-static volatile sig_atomic_t got_signal;
-
-static void
-on_signal(int sig)
-{
-	got_signal = sig;
-}
-
-/* Catches sig once, unless it was ignored on entry; *old to restore. */
-static void
-watch_signal(int sig, struct sigaction *old)
-{
-	struct sigaction sa;
-
-	memset(&sa, 0, sizeof sa);
-	sigaction(sig, NULL, old);
-	if (old->sa_handler == SIG_IGN)
-		return;
-	sa.sa_handler = on_signal;
-	sa.sa_flags = SA_RESETHAND;
-	sigemptyset(&sa.sa_mask);
-	sigaction(sig, &sa, NULL);
-}
-
 /*
  * Runs s in slices of 0.1 s to its end or to a caught signal (*sig).
  * Past one second, standard error a terminal, a progress line there,
@@ -663,8 +636,7 @@ run_watched(struct hb_sim *s, int *sig)
 	double start = clock_seconds(CLOCK_MONOTONIC), shown = 0;
 	int rc = HB_OK;
 
-	got_signal = 0;
-	while (got_signal == 0) {
+	while (cli_signal == 0) {
 		double now;
 
 		rc = hb_sim_advance(s, 0, 0.1);
@@ -686,7 +658,7 @@ run_watched(struct hb_sim *s, int *sig)
 	}
 	if (shown > 0)
 		fprintf(stderr, "\r\033[K");
-	*sig = got_signal;
+	*sig = cli_signal;
 	return rc;
 }
 
@@ -699,7 +671,7 @@ batch_run(const struct batch_options *o)
 	char path[1024], msg[4096]; /* the resolver names a refused preset whole */
 	struct hb_collision live;
 	struct hb_sim *s;
-	struct sigaction old_term, old_int;
+	struct hb_csv_export_opts eo = { 0 };
 	int status = 0, have_live, rc, sig = 0;
 	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
 	/* The files to export; "-" goes to stdout after them. */
@@ -729,27 +701,28 @@ batch_run(const struct batch_options *o)
 		        "expected two different paths\n", trace_file);
 		return 2;
 	}
+	/* The output policy (outputs.h): never the preset run, a shipped preset ... */
+	eo.trace = trace_file;
+	eo.coll = coll_file;
+	eo.run_preset = path;
+	eo.provenance = cli_provenance();
 	msg[0] = '\0';
 	if ((trace_file != NULL || coll_file != NULL) &&
-	    hb_csv_export_check(trace_file, coll_file, path, msg, sizeof msg) != HB_OK) {
+	    hb_csv_export_check_with(&eo, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": export: %s\n", msg);
 		return 2;
 	}
 
 	/*
-	 * SIGTERM and SIGINT end the run, and what was computed is reported
-	 * and written, as after a numerical failure; a second one ends the
-	 * process (SA_RESETHAND).  A signal ignored on entry (nohup, a
-	 * background job of a script) stays ignored.
+	 * SIGINT, SIGTERM and SIGHUP end the run, and what was computed is
+	 * reported and written, as after a numerical failure (signals.h).
 	 */
-	watch_signal(SIGTERM, &old_term);
-	watch_signal(SIGINT, &old_int);
+	cli_signals_watch();
 	msg[0] = '\0';
 	s = hb_sim_new(&sc, msg, sizeof msg);
 	if (s == NULL) {
 		fprintf(stderr, PROG ": %s: %s\n", path, msg[0] ? msg : "cannot start the run");
-		sigaction(SIGTERM, &old_term, NULL);
-		sigaction(SIGINT, &old_int, NULL);
+		cli_signals_restore();
 		return 2;
 	}
 	rc = run_watched(s, &sig);
@@ -824,7 +797,7 @@ batch_run(const struct batch_options *o)
 	/* After the report, so that it is the last thing a terminal shows. */
 	if (sig != 0)
 		fprintf(stderr, PROG ": interrupted by %s: what was computed is reported "
-		        "and written\n", sig == SIGINT ? "SIGINT" : "SIGTERM");
+		        "and written\n", cli_signal_name(sig));
 	else if (status == 1 && hb_sim_end(s) == HB_SIM_END_FAIL)
 		fprintf(stderr, PROG ": the run failed: %s\n",
 		        hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_status_str(rc));
@@ -839,8 +812,7 @@ batch_run(const struct batch_options *o)
 		struct hb_csv_export_report rep;
 
 		msg[0] = '\0';
-		if (hb_csv_export_files(s, trace_file, coll_file, path, &rep, msg,
-		                     sizeof msg) != HB_OK) {
+		if (hb_csv_export_with(s, &eo, &rep, msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": export failed: %s\n", msg);
 			status = 2;
 		} else {
@@ -867,12 +839,11 @@ batch_run(const struct batch_options *o)
 		clearerr(stdout);   /* said here (or quiet on EPIPE): not again in main */
 	}
 	hb_sim_free(s);
-	sigaction(SIGTERM, &old_term, NULL);
-	sigaction(SIGINT, &old_int, NULL);
 	if (sig == 0)
-		sig = got_signal;   /* caught while reporting: the report is whole */
+		sig = cli_signal;   /* caught while reporting: the report is whole */
+	cli_signals_restore();
 	/* An interrupted run: 128 + the signal, as a shell reports a kill. */
-	return sig != 0 ? 128 + sig : status;
+	return sig != 0 ? cli_signal_status(sig) : status;
 }
 
 int

@@ -14,15 +14,19 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "hybounce/atomic.h"
 #include "hybounce/fit.h"
+#include "hybounce/input.h"
 #include "hybounce/onset.h"
+#include "hybounce/outputs.h"
 #include "hybounce/preset.h"
 #include "hybounce/scene.h"
 #include "hybounce/status.h"
 #include "fit_cmd.h"
+#include "signals.h"
 
 #define PROG "hybounce"
 
@@ -76,7 +80,8 @@ usage(FILE *f)
 "  -q, --quiet             no progress lines on stderr, no residual table\n"
 "\n"
 "Exit status: 0 converged, 1 stopped without converging (iteration cap, no\n"
-"progress, parameters not identifiable), 2 bad input.  See hybounce(1).\n");
+"progress, parameters not identifiable), 2 bad input, 128+N stopped by signal\n"
+"N (SIGINT, SIGTERM, SIGHUP: the best point so far is written).  See hybounce(1).\n");
 }
 
 static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -121,44 +126,20 @@ parse_pos(const char *opt, const char *s, double *out)
 	return 0;
 }
 
-/* 1 if path is a recording: a .wav name or a RIFF header. */
+/* 1 if path names a recording by its extension (.wav). */
 static int
-is_recording(const char *path)
+wav_name(const char *path)
 {
-	size_t len = strlen(path);
-	char head[4] = { 0 };
-	FILE *f;
+	size_t l = strlen(path);
 
-	if (len > 4 && strcasecmp(path + len - 4, ".wav") == 0)
-		return 1;
-	if ((f = fopen(path, "rb")) == NULL)
-		return 0;
-	if (fread(head, 1, 4, f) != 4)
-		head[0] = 0;
-	fclose(f);
-	return memcmp(head, "RIFF", 4) == 0;
+	return l > 4 && strcasecmp(path + l - 4, ".wav") == 0;
 }
 
-/*
- * 0 if a file can be created at path (its folder exists and is writable),
- * checked before the fit so that a long fit does not end in a bad --out.
- */
+/* 1 if the data is a recording: a .wav name, or a RIFF header (text read once). */
 static int
-check_out(const char *opt, const char *path)
+is_recording(const char *path, const char *text, size_t len)
 {
-	char dir[4096];
-	const char *slash = strrchr(path, '/');
-
-	if (slash == NULL)
-		snprintf(dir, sizeof dir, ".");
-	else if (slash == path)
-		snprintf(dir, sizeof dir, "/");
-	else
-		snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
-	if (access(dir, W_OK) != 0)
-		return bad("%s %s: %s: %s; accepted: a file in a writable folder", opt, path, dir,
-		    strerror(errno));
-	return 0;
+	return wav_name(path) || (text != NULL && len >= 4 && memcmp(text, "RIFF", 4) == 0);
 }
 
 /* The default output: the data file's base name without extension + -fit.preset. */
@@ -220,15 +201,52 @@ fill_residuals(FILE *f, const void *ctx)
 	}
 }
 
+/* "wrote PATH" with how (outputs.h): every overwrite is named. */
+static void
+print_wrote(const char *path, const struct hb_atomic_target *t)
+{
+	char how[4200];
+
+	hb_outputs_how(t, how, sizeof how);
+	fprintf(stderr, "wrote %s%s\n", path, how);
+}
+
 /* Writes the points as CSV, atomically (hybounce/atomic.h). */
 static int
-write_residuals(const char *path, const struct hb_fit_result *r)
+write_residuals(const char *path, const struct hb_fit_result *r,
+                const struct hb_atomic_target *t)
 {
 	char m[512];
 
 	if (hb_atomic_write_with(path, fill_residuals, r, m, sizeof m) != HB_OK)
 		return bad("--residuals %s", m);
-	fprintf(stderr, "wrote %s\n", path);
+	print_wrote(path, t);
+	return 0;
+}
+
+/* The fitted scene as a preset, then the provenance line, atomically. */
+static int
+write_fitted(const char *path, const struct hb_scene *sc, const struct hb_atomic_target *t)
+{
+	size_t len = hb_preset_format(sc, NULL, 0);
+	const char *prov = cli_provenance();
+	size_t pl = strlen(prov);
+	char *buf = malloc(len + pl + 2), m[512];
+	int st;
+
+	if (buf == NULL)
+		return bad("--out %s: out of memory", path);
+	hb_preset_format(sc, buf, len + 1);
+	if (pl > 0) {
+		memcpy(buf + len, prov, pl);
+		buf[len + pl] = '\n';
+		len += pl + 1;
+	}
+	st = hb_atomic_write_file(path, buf, len, m, sizeof m);
+	free(buf);
+	if (st != HB_OK)
+		return bad("--out %s", m);
+	print_wrote(path, t);
 	return 0;
 }
 
@@ -292,8 +310,11 @@ fit_main(int argc, char **argv)
 	struct hb_fit_data d = { 0 };
 	struct hb_fit_result r = { 0 };
 	struct hb_scene sc;
-	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2;
-	size_t freelen = 0;
+	struct hb_outputs pol;
+	struct hb_fit *fit = NULL;
+	char *text = NULL;
+	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2, sig = 0, k_out, k_resid = -1;
+	size_t freelen = 0, textlen = 0;
 
 	if ((sets = calloc((size_t)argc + 1, sizeof *sets)) == NULL)
 		return bad("out of memory");
@@ -390,15 +411,47 @@ fit_main(int argc, char **argv)
 		default_out(data, outbuf, sizeof outbuf);
 		out = outbuf;
 	}
-	if (check_out("--out", out) != 0
-	    || (resid_path != NULL && check_out("--residuals", resid_path) != 0))
+	/*
+	 * The output policy (outputs.h), before the fit: never the data or the
+	 * preset being fitted, never a shipped preset, never one file twice.
+	 */
+	hb_outputs_init(&pol);
+	hb_outputs_input(&pol, data, "the data file (--data)");
+	hb_outputs_input(&pol, path, "the preset being fitted");
+	msg[0] = '\0';
+	if (hb_outputs_add(&pol, out, "--out", msg, sizeof msg) != HB_OK) {
+		status = bad("%s%s", strncmp(msg, "--out ", 6) == 0 ? "" : "--out ", msg);
 		goto out;
+	}
+	k_out = pol.nout - 1;
+	if (resid_path != NULL) {
+		if (hb_outputs_add(&pol, resid_path, "--residuals", msg, sizeof msg) != HB_OK) {
+			status = bad("%s%s", strncmp(msg, "--residuals ", 12) == 0 ? "" : "--residuals ",
+			             msg);
+			goto out;
+		}
+		k_resid = pol.nout - 1;
+	}
+	/* The data, read once (a pipe or a FIFO works) and bounded (input.h);
+	 * a .wav recording is left to aubio, which reads it by name. */
+	if (!wav_name(data) &&
+	    hb_input_read(data, HB_INPUT_DATA_MAX, &text, &textlen, msg, sizeof msg) != HB_OK) {
+		status = bad("--data %s", msg);
+		goto out;
+	}
 
 	printf("hybounce %s fit\n", HYBOUNCE_VERSION);
 	printf("preset      %s (%s)\n", preset, path);
-	if (is_recording(data)) {
+	if (is_recording(data, text, textlen)) {
 		struct hb_onset_result on;
+		struct stat st;
 
+		/* aubio opens the recording by name: it must be a file. */
+		if (stat(data, &st) != 0 || !S_ISREG(st.st_mode)) {
+			status = bad("--data %s: a recording is read by name; accepted: a .wav "
+			             "file (not a pipe or a device)", data);
+			goto out;
+		}
 		if (hb_onset_detect(data, &oo, &on, msg, sizeof msg) != HB_OK) {
 			hb_onset_result_free(&on);
 			status = bad("--data %s", msg);
@@ -411,10 +464,12 @@ fit_main(int argc, char **argv)
 			goto out;
 		}
 		hb_onset_result_free(&on);
-	} else if (hb_fit_data_load(data, &d, msg, sizeof msg) != HB_OK) {
+	} else if (hb_fit_data_parse(text, textlen, data, &d, msg, sizeof msg) != HB_OK) {
 		status = bad("--data %s", msg);
 		goto out;
 	}
+	free(text);
+	text = NULL;
 	printf("data        %s: %s, %zu row%s, %zu points, %s\n", data,
 	    d.kind == HB_FIT_SEQUENCE ? "one bouncing sequence (t_e; the first aligns the clocks)"
 	                           : "separate drops (one run per row from contact at v_i)",
@@ -430,10 +485,35 @@ fit_main(int argc, char **argv)
 	fo.keys = keys;
 	fo.nkeys = nkeys;
 	fo.progress = quiet ? NULL : progress;
-	if (hb_fit_run(&sc, &d, &fo, &r, msg, sizeof msg) != HB_OK) {
+	/*
+	 * SIGINT, SIGTERM, SIGHUP (signals.h): the fit stops after the
+	 * iteration in hand, and the best point so far is reported and written,
+	 * marked as interrupted; exit 128 + N.
+	 */
+	cli_signals_watch();
+	msg[0] = '\0';
+	if ((fit = hb_fit_new(&sc, &d, &fo, msg, sizeof msg)) == NULL) {
+		cli_signals_restore();
+		if (cli_signal != 0) {
+			status = cli_signal_status(cli_signal);
+			fprintf(stderr, PROG " fit: interrupted by %s before the start was computed: "
+			        "nothing written\n", cli_signal_name(cli_signal));
+			goto out;
+		}
 		status = bad("%s", msg);
 		goto out;
 	}
+	while (cli_signal == 0 && !hb_fit_iterate(fit))
+		;
+	sig = cli_signal;
+	if (hb_fit_result_get(fit, &r, msg, sizeof msg) != HB_OK) {
+		cli_signals_restore();
+		status = bad("%s", msg);
+		goto out;
+	}
+	if (sig != 0)
+		snprintf(r.why, sizeof r.why, "interrupted by %s (the best point so far)",
+		         cli_signal_name(sig));
 	report(&r, &d, quiet);
 
 	/* The fitted scene: named after the data, reproducing the best fit. */
@@ -448,20 +528,35 @@ fit_main(int argc, char **argv)
 			snprintf(desc + len, sizeof desc - len, " %s = %.9g", r.key[i], r.value[i]);
 		}
 		len = strlen(desc);
-		snprintf(desc + len, sizeof desc - len, " (%.60s).", hb_fit_reason_str(r.reason));
+		if (sig != 0)
+			snprintf(desc + len, sizeof desc - len, " (interrupted by %s after %d "
+			         "iteration%s: the best point so far, not converged).",
+			         cli_signal_name(sig), r.iter, r.iter == 1 ? "" : "s");
+		else
+			snprintf(desc + len, sizeof desc - len, " (%.60s).",
+			         hb_fit_reason_str(r.reason));
 		memcpy(r.fitted.name, name, sizeof name);
 		memcpy(r.fitted.description, desc, sizeof desc);
 	}
-	if (hb_preset_save(out, &r.fitted, msg, sizeof msg) != HB_OK) {
-		status = bad("--out %s", msg);
-		goto out;
-	}
 	fflush(stdout);
-	fprintf(stderr, "wrote %s\n", out);
-	if (resid_path != NULL && write_residuals(resid_path, &r) != 0)
+	if (write_fitted(out, &r.fitted, &pol.out[k_out].target) != 0)
 		goto out;
-	status = r.reason <= HB_FIT_CONVERGED_COST ? 0 : 1;
+	if (resid_path != NULL &&
+	    write_residuals(resid_path, &r, &pol.out[k_resid].target) != 0)
+		goto out;
+	if (sig == 0)
+		sig = cli_signal;   /* caught while writing: the files are whole */
+	if (sig != 0) {
+		fprintf(stderr, PROG " fit: interrupted by %s: the best point so far is "
+		        "reported and written\n", cli_signal_name(sig));
+		status = cli_signal_status(sig);
+	} else {
+		status = r.reason <= HB_FIT_CONVERGED_COST ? 0 : 1;
+	}
 out:
+	cli_signals_restore();
+	hb_fit_free(fit);
+	free(text);
 	hb_fit_result_free(&r);
 	hb_fit_data_free(&d);
 	free(freebuf);

@@ -31,6 +31,7 @@
 #include "batch.h"
 #include "sweep_cli.h"
 #include "fit_cmd.h"
+#include "signals.h"
 
 #define PROG "hybounce"
 #define DEFAULT_PRESET "steel-on-bitumen"
@@ -156,6 +157,7 @@ main(int argc, char **argv)
 	 * engine's return codes, as GSL advises for a program that checks them.
 	 */
 	gsl_set_error_handler_off();
+	cli_provenance_init(argc, argv);   /* before getopt or the subcommands touch argv */
 	int status = hybounce_main(argc, argv);
 
 	/* Output that could not all be written is exit 2 (batch.h). */
@@ -287,6 +289,7 @@ hybounce_main(int argc, char **argv)
 	ao.ascii = ascii;
 	ao.script = script;
 	ao.data = data;
+	ao.provenance = cli_provenance();
 	msg[0] = '\0';
 	status = app_run(&ao, msg, sizeof msg);
 	if (msg[0] != '\0')

@@ -25,26 +25,21 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "hybounce/atomic.h"
+#include "hybounce/input.h"
+#include "hybounce/outputs.h"
 #include "hybounce/preset.h"
 #include "hybounce/scene.h"
 #include "hybounce/status.h"
 #include "hybounce/sweep.h"
 
 #include "sweep_cli.h"
+#include "signals.h"
 #include "clock.h"
 
 #define PROG "hybounce sweep"
 
-/* Set by SIGINT, SIGTERM and SIGHUP: the sweep stops after the points in hand. */
-static volatile sig_atomic_t stop_signal;
-
-static void
-on_stop_signal(int sig)
-{
-	stop_signal = sig;
-}
-
-enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS };
+enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS, OPT_MAX_POINTS };
 
 static const struct option sweep_options_long[] = {
 	{ "set",      required_argument, NULL, 's' },
@@ -58,6 +53,7 @@ static const struct option sweep_options_long[] = {
 	{ "sshlogin", required_argument, NULL, OPT_SSHLOGIN },
 	{ "merge",    required_argument, NULL, OPT_MERGE },
 	{ "progress", required_argument, NULL, OPT_PROGRESS },
+	{ "max-points", required_argument, NULL, OPT_MAX_POINTS },
 	{ "help",     no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
 };
@@ -88,6 +84,8 @@ sweep_usage(FILE *f)
 "  -q, --quiet             no progress\n"
 "      --progress PCT      without a terminal, a progress line every PCT %%\n"
 "                          of the points (default 10)\n"
+"      --max-points N      allow a sweep of up to N points (default 1000000,\n"
+"                          at most 1000000000); a larger sweep is refused\n"
 "      --emit slurm        print a script that submits the shards as a Slurm\n"
 "                          job array and a dependent merge job (sh FILE)\n"
 "      --emit parallel     print a GNU parallel command line for the shards\n"
@@ -146,6 +144,7 @@ online_cpus(void)
 /* Progress                                                            */
 
 struct progress {
+	long resumed, total;   /* points found done at the start, points of the shard */
 	int tty, quiet;
 	double step;       /* fraction between lines without a terminal */
 	double next;       /* next fraction to report */
@@ -175,6 +174,10 @@ on_progress(void *ctx, const struct hb_sweep_progress *p)
 	double eta = rate > 0 ? (double)(p->total - p->done) / rate : -1;
 	char e[32];
 
+	if (computed == 0) {
+		g->resumed = p->resumed;
+		g->total = p->total;
+	}
 	if (g->quiet)
 		return;
 	if (computed == 0) {
@@ -207,61 +210,80 @@ on_progress(void *ctx, const struct hb_sweep_progress *p)
 }
 
 /* ------------------------------------------------------------------ */
-/* Input                                                               */
+/* Output                                                              */
 
-static char *
-read_text(const char *path)
+/* How DIR/runs.csv and DIR/collisions.csv will be written (before). */
+struct dir_targets {
+	char path[2][4200];
+	struct hb_atomic_target t[2];
+};
+
+static void
+probe_dir(const char *dir, struct dir_targets *d)
 {
-	FILE *f = fopen(path, "r");
-	char *buf = NULL;
-	size_t len = 0;
-	FILE *m;
-	int c;
+	char m[256];
 
-	if (f == NULL)
-		return NULL;
-	m = open_memstream(&buf, &len);
-	if (m == NULL) {
-		fclose(f);
-		return NULL;
+	for (int k = 0; k < 2; k++) {
+		snprintf(d->path[k], sizeof d->path[k], "%s/%s", dir, k ? "collisions.csv" : "runs.csv");
+		if (hb_atomic_probe(d->path[k], &d->t[k], m, sizeof m) != HB_OK)
+			memset(&d->t[k], 0, sizeof d->t[k]);
 	}
-	while ((c = getc(f)) != EOF)
-		putc(c, m);
-	fclose(f);
-	if (fclose(m) != 0) {
-		free(buf);
-		return NULL;
-	}
-	return buf;
 }
+
+/*
+ * "wrote DIR/runs.csv (replaced the existing file)" ... (outputs.h); a
+ * sweep found complete writes nothing: "kept DIR/runs.csv ...".
+ */
+static void
+print_wrote_dir(const struct dir_targets *d, int unchanged)
+{
+	char how[4200];
+
+	for (int k = 0; k < 2; k++) {
+		if (unchanged) {
+			fprintf(stderr, "kept %s (the sweep was complete)\n", d->path[k]);
+			continue;
+		}
+		hb_outputs_how(&d->t[k], how, sizeof how);
+		fprintf(stderr, "wrote %s%s\n", d->path[k], how);
+	}
+}
+
+/* ------------------------------------------------------------------ */
+/* Input                                                               */
 
 /* The preset, the --set values and the axes; NULL after printing why (exit 2). */
 static struct hb_sweep *
 build(const char *preset, const char *const *sets, int nsets,
-      const char *const *varies, int nvaries)
+      const char *const *varies, int nvaries, const char *out, long max_points)
 {
-	char path[4096], msg[4096];
+	char path[4096], spec[4200], msg[4096], more[128];
 	struct hb_scene sc;
 	struct hb_sweep *sw;
-	char *text;
+	char *text = NULL;
 
 	msg[0] = '\0';
-	if (hb_preset_open_named(preset, sets, nsets, &sc, path, sizeof path, msg,
-	                         sizeof msg) != HB_OK) {
+	/* Read once (a pipe or FIFO works), bounded; the scene and the axes come from it. */
+	if (hb_preset_open_text(preset, sets, nsets, &sc, path, sizeof path, &text, msg,
+	                        sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": %s\n", msg[0] ? msg : preset);
 		return NULL;
 	}
 	sw = hb_sweep_new(&sc, msg, sizeof msg);
 	if (sw == NULL) {
 		fprintf(stderr, PROG ": %s\n", msg);
+		free(text);
 		return NULL;
 	}
-	text = read_text(path);
-	if (text == NULL) {
-		fprintf(stderr, PROG ": %s: %s\n", path, strerror(errno));
-		hb_sweep_free(sw);
-		return NULL;
-	}
+	/*
+	 * Work bounded: at most max_points unless asked for.  The folder's own
+	 * sweep.preset (a shard of --emit, a resume) was allowed when it was made.
+	 */
+	snprintf(spec, sizeof spec, "%s/sweep.preset", out);
+	if (max_points == 0 && hb_outputs_same_file(path, spec))
+		max_points = 1000000000L;
+	snprintf(more, sizeof more, "--max-points N allows up to N (at most 1000000000)");
+	hb_sweep_set_max_points(sw, max_points ? max_points : HB_SWEEP_MAX_POINTS, more);
 	msg[0] = '\0';
 	if (hb_sweep_vary_from_preset(sw, text, path, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": %s\n", msg);
@@ -298,7 +320,7 @@ sweep_main(int argc, char **argv)
 {
 	const char **sets, **varies;
 	int nsets = 0, nvaries = 0, quiet = 0, c, status = 2;
-	long jobs = 0, shard_k = 0, shard_n = 1, shards = 0, pct = 10;
+	long jobs = 0, shard_k = 0, shard_n = 1, shards = 0, pct = 10, max_points = 0;
 	const char *out = NULL, *emit = NULL, *sshlogin = NULL, *merge = NULL;
 	struct hb_sweep *sw = NULL;
 	char msg[2048];
@@ -360,6 +382,13 @@ sweep_main(int argc, char **argv)
 				goto done;
 			}
 			break;
+		case OPT_MAX_POINTS:
+			if (parse_long(optarg, 1, 1000000000L, &max_points) != 0) {
+				status = bad("--max-points '%s': accepted: an integer from 1 to "
+				             "1000000000", optarg);
+				goto done;
+			}
+			break;
 		case 'h':
 			sweep_usage(stdout);
 			status = 0;
@@ -375,6 +404,9 @@ sweep_main(int argc, char **argv)
 			status = bad("--merge DIR takes no preset and no other option");
 			goto done;
 		}
+		struct dir_targets dt;
+
+		probe_dir(merge, &dt);
 		msg[0] = '\0';
 		if (hb_sweep_merge(merge, msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": merge: %s\n", msg);
@@ -382,7 +414,7 @@ sweep_main(int argc, char **argv)
 			goto done;
 		}
 		if (!quiet)
-			fprintf(stderr, "wrote %s/runs.csv\nwrote %s/collisions.csv\n", merge, merge);
+			print_wrote_dir(&dt, 0);
 		status = 0;
 		goto done;
 	}
@@ -409,7 +441,7 @@ sweep_main(int argc, char **argv)
 		             : "--sshlogin goes with --emit parallel");
 		goto done;
 	}
-	sw = build(argv[optind], sets, nsets, varies, nvaries);
+	sw = build(argv[optind], sets, nsets, varies, nvaries, out, max_points);
 	if (sw == NULL)
 		goto done;      /* exit 2: build said why */
 
@@ -417,6 +449,13 @@ sweep_main(int argc, char **argv)
 		if (shards == 0)
 			shards = online_cpus();
 		msg[0] = '\0';
+		/* sweep.preset with its provenance line first; sweep_emit finds it in place. */
+		status = hb_sweep_prepare_dir_with(sw, out, cli_provenance(), msg, sizeof msg);
+		if (status != HB_OK) {
+			fprintf(stderr, PROG ": %s\n", msg);
+			status = status == HB_EINVAL ? 2 : 1;
+			goto done;
+		}
 		status = sweep_emit(sw, out, emit, shards, sshlogin, msg, sizeof msg);
 		if (status != 0)
 			fprintf(stderr, PROG ": %s\n", msg);
@@ -426,6 +465,7 @@ sweep_main(int argc, char **argv)
 	{
 		struct progress g = { 0 };
 		struct hb_sweep_options o = { 0 };
+		struct dir_targets dt;
 
 		g.tty = isatty(STDERR_FILENO);
 		g.quiet = quiet;
@@ -437,25 +477,21 @@ sweep_main(int argc, char **argv)
 		o.shard_n = shard_n;
 		o.progress = on_progress;
 		o.ctx = &g;
-		o.cancel = &stop_signal;
-		{
-			struct sigaction sa;
-
-			memset(&sa, 0, sizeof sa);
-			sa.sa_handler = on_stop_signal;
-			sigemptyset(&sa.sa_mask);
-			sigaction(SIGINT, &sa, NULL);
-			sigaction(SIGTERM, &sa, NULL);
-			sigaction(SIGHUP, &sa, NULL);
-		}
+		o.provenance = cli_provenance();
+		/* SIGINT, SIGTERM, SIGHUP (those not ignored): the points done are
+		 * journaled, exit 128 + N (signals.h). */
+		cli_signals_watch();
+		o.cancel = &cli_signal;
+		probe_dir(out, &dt);
 		msg[0] = '\0';
 		status = hb_sweep_run(sw, &o, msg, sizeof msg);
+		cli_signals_restore();
 		if (status == HB_EDONE) {
 			/* Interrupted: what was done is journaled; exit as the signal would. */
 			if (g.tty && !quiet)
 				fputc('\n', stderr);
 			fprintf(stderr, PROG ": %s\n", msg);
-			status = 128 + (int)stop_signal;
+			status = cli_signal_status((int)cli_signal);
 		} else if (status == HB_EINVAL) {
 			fprintf(stderr, PROG ": %s\n", msg);
 			status = 2;
@@ -467,7 +503,7 @@ sweep_main(int argc, char **argv)
 				fprintf(stderr, "sweep: shard %ld of %ld done in %s; merge the shards "
 				        "with: hybounce sweep --merge %s\n", shard_k, shard_n, out, out);
 			else
-				fprintf(stderr, "wrote %s/runs.csv\nwrote %s/collisions.csv\n", out, out);
+				print_wrote_dir(&dt, g.total > 0 && g.resumed == g.total);
 		}
 	}
 done:

@@ -31,7 +31,7 @@
 #include "hybounce/atomic.h"
 #include "hybounce/status.h"
 
-#define TMP_TAG ".hbtmp-"
+#define TMP_TAG HB_ATOMIC_TMP_TAG
 
 /* The folder of path into dir ("." when it has none). */
 static void
@@ -158,6 +158,43 @@ hb_atomic_begin(struct hb_atomic_set *set)
 	snprintf(set->id, sizeof set->id, "%s.%09ldZ", when, set->stamp.tv_nsec);
 }
 
+int
+hb_atomic_is_temp(const char *name, const char *target, long *pid)
+{
+	const char *tag = strstr(name, TMP_TAG), *p;
+	char *end;
+	long v;
+
+	if (target != NULL) {
+		size_t bl = strlen(target);
+
+		if (strncmp(name, target, bl) != 0 || strncmp(name + bl, TMP_TAG, strlen(TMP_TAG)) != 0)
+			return 0;
+		tag = name + bl;
+	}
+	if (tag == NULL || tag == name)
+		return 0;
+	p = tag + strlen(TMP_TAG);
+	errno = 0;
+	v = strtol(p, &end, 10);
+	if (end == p || *end != '-' || v <= 0 || errno != 0)
+		return 0;
+	if (pid != NULL)
+		*pid = v;
+	return 1;
+}
+
+int
+hb_atomic_temp_stale(const char *dir, const char *name)
+{
+	long pid;
+
+	(void)dir;
+	if (!hb_atomic_is_temp(name, NULL, &pid) || pid == (long)getpid())
+		return 0;
+	return kill((pid_t)pid, 0) != 0 && errno == ESRCH;
+}
+
 /*
  * Removes TARGET.hbtmp-PID-* beside real whose PID is not running: what a
  * killed writer left.
@@ -168,7 +205,6 @@ clean_stale(const char *real)
 	char dir[4096], full[8300];
 	const char *slash = strrchr(real, '/');
 	const char *base = slash != NULL ? slash + 1 : real;
-	size_t bl = strlen(base);
 	DIR *d;
 	struct dirent *de;
 
@@ -177,19 +213,10 @@ clean_stale(const char *real)
 	if (d == NULL)
 		return;
 	while ((de = readdir(d)) != NULL) {
-		const char *p = de->d_name;
-		char *end;
-		long pid;
-
-		if (strncmp(p, base, bl) != 0 || strncmp(p + bl, TMP_TAG, strlen(TMP_TAG)) != 0)
+		if (!hb_atomic_is_temp(de->d_name, base, NULL) ||
+		    !hb_atomic_temp_stale(dir, de->d_name))
 			continue;
-		pid = strtol(p + bl + strlen(TMP_TAG), &end, 10);
-		if (end == p + bl + strlen(TMP_TAG) || *end != '-' || pid <= 0 ||
-		    pid == (long)getpid())
-			continue;
-		if (kill((pid_t)pid, 0) == 0 || errno != ESRCH)
-			continue;
-		snprintf(full, sizeof full, "%s/%s", dir, p);
+		snprintf(full, sizeof full, "%s/%s", dir, de->d_name);
 		unlink(full);
 	}
 	closedir(d);

@@ -31,6 +31,7 @@
 #include "hybounce/atomic.h"
 #include "hybounce/columns.h"
 #include "hybounce/csv.h"
+#include "hybounce/outputs.h"
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
 #include "csv_impl.h"
@@ -245,113 +246,100 @@ scene_path(const char *path, char *out, size_t n)
 	return 0;
 }
 
-/* 1 if a and b are the same existing file. */
-static int
-same_file(const char *a, const char *b)
-{
-	struct stat sa, sb;
-
-	return a != NULL && b != NULL && stat(a, &sa) == 0 && stat(b, &sb) == 0 &&
-	       sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
-}
-
-/* 1 if path is an existing .preset file in one of the preset folders. */
-static int
-is_shipped_preset(const char *path)
-{
-	char dir[4096], rdir[4096], rp[4096];
-	const char *slash;
-	size_t l = strlen(path);
-	struct stat st;
-
-	if (l < 7 || strcmp(path + l - 7, ".preset") != 0 || stat(path, &st) != 0 ||
-	    realpath(path, rp) == NULL)
-		return 0;
-	slash = strrchr(rp, '/');
-	if (slash == NULL)
-		return 0;
-	snprintf(dir, sizeof dir, "%.*s", (int)(slash - rp), rp);
-	for (const char *const *d = hb_preset_dirs(); d != NULL && *d != NULL; d++)
-		if (realpath(*d, rdir) != NULL && strcmp(rdir, dir) == 0)
-			return 1;
-	return 0;
-}
-
-/* Refuses a target that is the preset being run or a shipped preset. */
-static int
-protect(const char *path, const char *what, const char *run_preset, char *msg, size_t n)
-{
-	if (same_file(path, run_preset))
-		return hb_status_set(msg, n, HB_EINVAL,
-		    "%s%s is the preset being run; an export never overwrites it: name the "
-		    "CSV file otherwise (e.g. run.csv)", path, what);
-	if (is_shipped_preset(path))
-		return hb_status_set(msg, n, HB_EINVAL,
-		    "%s%s is a shipped preset; an export never overwrites it: put the CSV "
-		    "file in another folder or name it otherwise", path, what);
-	return HB_OK;
-}
-
 /*
- * Where each file of an export goes: p[0] trace, p[1] collisions, p[2] the
- * scene (NULL when none).  Every check that can be made before writing.
+ * Where each file of an export goes: r->target[0] trace, [1] collisions,
+ * [2] the scene (r->scene "" when none), checked by the output policy
+ * (outputs.h) against the command's inputs (the preset being run, and
+ * those of o->outputs) and its other outputs.  Every check that can be
+ * made before writing.
  */
 static int
-plan(const char *trace, const char *coll, const char *scene, const char *run_preset,
-     struct hb_csv_export_report *r, char *msg, size_t n)
+plan(const struct hb_csv_export_opts *o, struct hb_csv_export_report *r, char *msg, size_t n)
 {
-	const char *csv[2] = { trace, coll };
+	const char *csv[2] = { o->trace, o->coll };
+	static const char *const csv_what[2] = { "the trace", "the collisions" };
+	struct hb_outputs *pol = malloc(sizeof *pol);
 	char what[4200];
-	int st;
+	int st = HB_OK;
 
 	memset(r, 0, sizeof *r);
 	r->scene_of = -1;
-	if (trace == NULL && coll == NULL)
-		return hb_status_set(msg, n, HB_EINVAL, "nothing to export: no file named");
-	if (trace != NULL && coll != NULL &&
-	    (strcmp(trace, coll) == 0 || same_file(trace, coll)))
-		return hb_status_set(msg, n, HB_EINVAL,
-		    "%s: the trace and the collisions need two different files", trace);
+	if (pol == NULL)
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+	if (o->outputs != NULL)
+		*pol = *o->outputs;
+	else
+		hb_outputs_init(pol);
+	if (o->trace == NULL && o->coll == NULL) {
+		st = hb_status_set(msg, n, HB_EINVAL, "nothing to export: no file named");
+		goto out;
+	}
+	if (o->trace != NULL && o->coll != NULL && hb_outputs_same_file(o->trace, o->coll)) {
+		st = hb_status_set(msg, n, HB_EINVAL,
+		    "%s: the trace and the collisions need two different files", o->trace);
+		goto out;
+	}
+	if (hb_outputs_input(pol, o->run_preset, "the preset being run") != HB_OK) {
+		st = hb_status_set(msg, n, HB_EINVAL, "too many inputs");
+		goto out;
+	}
 	for (int k = 0; k < 2; k++) {
 		if (csv[k] == NULL)
 			continue;
-		if ((st = hb_atomic_probe(csv[k], &r->target[k], msg, n)) != HB_OK)
-			return st;
-		if ((st = protect(csv[k], "", run_preset, msg, n)) != HB_OK)
-			return st;
+		if ((st = hb_outputs_add(pol, csv[k], csv_what[k], msg, n)) != HB_OK)
+			goto out;
+		r->target[k] = pol->out[pol->nout - 1].target;
 		/* The scene goes beside the first CSV that is a file. */
 		if (r->scene_of < 0 && r->target[k].how != HB_ATOMIC_IN_PLACE) {
-			if (scene != NULL) {
-				if (strlen(scene) >= sizeof r->scene)
-					return hb_status_set(msg, n, HB_EIO, "%s: %s", scene,
-					                  strerror(ENAMETOOLONG));
-				snprintf(r->scene, sizeof r->scene, "%s", scene);
-			} else if (scene_path(csv[k], r->scene, sizeof r->scene) != 0)
-				return hb_status_set(msg, n, HB_EIO, "%s: %s", csv[k],
-				                  strerror(ENAMETOOLONG));
+			if (o->scene != NULL) {
+				if (strlen(o->scene) >= sizeof r->scene) {
+					st = hb_status_set(msg, n, HB_EIO, "%s: %s", o->scene,
+					                   strerror(ENAMETOOLONG));
+					goto out;
+				}
+				snprintf(r->scene, sizeof r->scene, "%s", o->scene);
+			} else if (scene_path(csv[k], r->scene, sizeof r->scene) != 0) {
+				st = hb_status_set(msg, n, HB_EIO, "%s: %s", csv[k],
+				                   strerror(ENAMETOOLONG));
+				goto out;
+			}
 			r->scene_of = k;
 		}
 	}
 	if (r->scene[0] == '\0')
-		return HB_OK;
-	snprintf(what, sizeof what, " (the scene saved beside %s)", csv[r->scene_of]);
-	for (int k = 0; k < 2; k++)
-		if (csv[k] != NULL && (strcmp(r->scene, csv[k]) == 0 || same_file(r->scene, csv[k])))
-			return hb_status_set(msg, n, HB_EINVAL,
-			    "%s%s would overwrite this export; name the CSV file otherwise "
-			    "(e.g. run.csv)", r->scene, what);
-	if ((st = protect(r->scene, what, run_preset, msg, n)) != HB_OK)
-		return st;
-	return hb_atomic_probe(r->scene, &r->target[2], msg, n);
+		goto out;
+	snprintf(what, sizeof what, "the scene saved beside %s", csv[r->scene_of]);
+	if ((st = hb_outputs_add(pol, r->scene, what, msg, n)) != HB_OK)
+		goto out;
+	r->target[2] = pol->out[pol->nout - 1].target;
+out:
+	free(pol);
+	return st;
 }
 
 int
 hb_csv_export_check(const char *trace, const char *coll, const char *run_preset,
                  char *msg, size_t n)
 {
-	struct hb_csv_export_report r;
+	struct hb_csv_export_opts o = { 0 };
 
-	return plan(trace, coll, NULL, run_preset, &r, msg, n);
+	o.trace = trace;
+	o.coll = coll;
+	o.run_preset = run_preset;
+	return hb_csv_export_check_with(&o, msg, n);
+}
+
+int
+hb_csv_export_check_with(const struct hb_csv_export_opts *o, char *msg, size_t n)
+{
+	struct hb_csv_export_report *r = malloc(sizeof *r);
+	int st;
+
+	if (r == NULL)
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+	st = plan(o, r, msg, n);
+	free(r);
+	return st;
 }
 
 /* ", the trace PATH (cksum CRC LENGTH)": one CSV of the export, file k of set. */
@@ -372,7 +360,7 @@ name_csv(FILE *f, struct hb_atomic_set *set, int k, const char *what, const char
  * renames shows (each file of set is index k_trace, k_coll or -1).
  */
 static int
-write_scene(FILE *f, const struct hb_sim *s, struct hb_atomic_set *set,
+write_scene(FILE *f, const struct hb_sim *s, struct hb_atomic_set *set, const char *prov,
             const char *trace, int k_trace, const char *coll, int k_coll)
 {
 	size_t len = hb_preset_format(hb_sim_scene(s), NULL, 0);
@@ -383,6 +371,8 @@ write_scene(FILE *f, const struct hb_sim *s, struct hb_atomic_set *set,
 	hb_preset_format(hb_sim_scene(s), buf, len + 1);
 	fwrite(buf, 1, len, f);
 	free(buf);
+	if (prov != NULL && prov[0] != '\0')
+		fprintf(f, "\n%s", prov);
 	fprintf(f, "\n; export %s: this scene", set->id);
 	if (trace != NULL)
 		name_csv(f, set, k_trace, "trace", trace);
@@ -404,14 +394,27 @@ hb_csv_export_files_scene(const struct hb_sim *s, const char *trace, const char 
                        const char *scene, const char *run_preset,
                        struct hb_csv_export_report *r, char *msg, size_t n)
 {
+	struct hb_csv_export_opts o = { 0 };
+
+	o.trace = trace;
+	o.coll = coll;
+	o.scene = scene;
+	o.run_preset = run_preset;
+	return hb_csv_export_with(s, &o, r, msg, n);
+}
+
+int
+hb_csv_export_with(const struct hb_sim *s, const struct hb_csv_export_opts *o,
+                   struct hb_csv_export_report *r, char *msg, size_t n)
+{
 	struct hb_atomic_set set;
 	const char *paths[3];
 	int st, index[2] = { -1, -1 };   /* trace, collisions: their file in set */
 
-	if ((st = plan(trace, coll, scene, run_preset, r, msg, n)) != HB_OK)
+	if ((st = plan(o, r, msg, n)) != HB_OK)
 		return st;
-	paths[0] = trace;
-	paths[1] = coll;
+	paths[0] = o->trace;
+	paths[1] = o->coll;
 	paths[2] = r->scene[0] ? r->scene : NULL;
 	hb_atomic_begin(&set);
 	snprintf(r->id, sizeof r->id, "%s", set.id);
@@ -431,7 +434,8 @@ hb_csv_export_files_scene(const struct hb_sim *s, const char *trace, const char 
 			index[k] = set.n - 1;
 		errno = 0;
 		e = k == 0 ? write_arc(f, s) : k == 1 ? write_collisions(f, s)
-		           : write_scene(f, s, &set, trace, index[0], coll, index[1]);
+		           : write_scene(f, s, &set, o->provenance, o->trace, index[0], o->coll,
+		                         index[1]);
 		if (e == ENOMEM) {
 			hb_atomic_abort(&set);
 			return hb_status_set(msg, n, HB_ENOMEM, "%s: out of memory", paths[k]);

@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "hybounce/fit.h"
+#include "hybounce/input.h"
 #include "hybounce/status.h"
 #include "cnum.h"
 
@@ -165,13 +166,33 @@ struct colmap {
 int
 hb_fit_data_load(const char *path, struct hb_fit_data *d, char *msg, size_t mn)
 {
+	char *text = NULL;
+	size_t len = 0;
+	int st;
+
+	memset(d, 0, sizeof *d);
+	/* Read once, bounded: a pipe or a FIFO works, /dev/zero is refused. */
+	if ((st = hb_input_read(path, HB_INPUT_DATA_MAX, &text, &len, msg, mn)) != HB_OK)
+		return st;
+	st = hb_fit_data_parse(text, len, path, d, msg, mn);
+	free(text);
+	return st;
+}
+
+int
+hb_fit_data_parse(const char *text, size_t len, const char *name, struct hb_fit_data *d,
+                  char *msg, size_t mn)
+{
 	FILE *f;
 	int st;
 
 	memset(d, 0, sizeof *d);
-	if ((f = fopen(path, "r")) == NULL)
-		return hb_status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(errno));
-	st = hb_fit_data_read(f, path, d, msg, mn);
+	if (len == 0)
+		return hb_status_set(msg, mn, HB_EINVAL, "%s: empty file; accepted: a CSV file "
+		    "with a header row (t_e, or v_i and e ...)", name);
+	if ((f = fmemopen((void *)text, len, "r")) == NULL)
+		return hb_status_set(msg, mn, HB_ENOMEM, "%s: out of memory", name);
+	st = hb_fit_data_read(f, name, d, msg, mn);
 	fclose(f);
 	return st;
 }
@@ -199,6 +220,21 @@ hb_fit_data_read(FILE *f, const char *path, struct hb_fit_data *d, char *msg, si
 		int nf;
 
 		lineno++;
+		if (strlen(line) != (size_t)len) {
+			/* A NUL byte would end the row there: refused, not truncated. */
+			int c = 0;
+
+			for (const char *q = line; *q != '\0'; q++)
+				c += *q == ',';
+			if (have_hdr && c < ncol)
+				st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: data row %zu, column %d "
+				    "(%s): a NUL byte; accepted: text (a CSV file of numbers)", path,
+				    lineno, d->n + 1, c + 1, hname[c]);
+			else
+				st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: header row, column %d: a "
+				    "NUL byte; accepted: text (a CSV file of numbers)", path, lineno, c + 1);
+			goto out;
+		}
 		while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r'))
 			line[--len] = '\0';
 		while (isspace((unsigned char)*p))

@@ -36,6 +36,7 @@
 #include <ini.h>
 
 #include "hybounce/atomic.h"
+#include "hybounce/input.h"
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
 #include "hybounce/units.h"
@@ -454,41 +455,16 @@ hb_preset_load_string(const char *text, const char *name, struct hb_scene *sc, c
 	return st;
 }
 
-/* Reads a whole file into a malloc'd string. */
+/* Reads a whole file into a malloc'd string, once, bounded (input.h). */
 static int
 read_file(const char *path, char **out, char *msg, size_t n)
 {
-	FILE *f = fopen(path, "rb");
 	char *buf = NULL;
-	size_t len = 0, cap = 0;
+	size_t len = 0;
+	int st = hb_input_read(path, HB_INPUT_PRESET_MAX, &buf, &len, msg, n);
 
-	if (f == NULL)
-		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
-	for (;;) {
-		size_t got;
-		if (cap - len < 4096) {
-			char *nb = realloc(buf, cap + 65536);
-			if (nb == NULL) {
-				free(buf);
-				fclose(f);
-				return hb_status_set(msg, n, HB_ENOMEM, "%s: out of memory", path);
-			}
-			buf = nb;
-			cap += 65536;
-		}
-		got = fread(buf + len, 1, cap - len - 1, f);
-		len += got;
-		if (got == 0)
-			break;
-	}
-	if (ferror(f)) {
-		int e = errno;
-		free(buf);
-		fclose(f);
-		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(e ? e : EIO));
-	}
-	fclose(f);
-	buf[len] = '\0';
+	if (st != HB_OK)
+		return st;
 	if (strlen(buf) != len) {
 		free(buf);
 		return hb_status_set(msg, n, HB_EINVAL, "%s: not a text file (contains NUL bytes); "
@@ -541,23 +517,44 @@ apply_set(struct hb_scene *sc, const char *arg, char *msg, size_t n)
 	return HB_OK;
 }
 
-int
-hb_preset_open(const char *path, const char *const *sets, int nsets, struct hb_scene *sc,
-            char *msg, size_t n)
+/* Loads path (read once), applies sets, validates; the text read goes to *text when asked. */
+static int
+open_text(const char *path, const char *const *sets, int nsets, struct hb_scene *sc,
+          char **text, char *msg, size_t n)
 {
-	char m[512];
-	int st = hb_preset_load(path, sc, msg, n);
+	char m[512], *buf = NULL;
+	int st = read_file(path, &buf, msg, n);
 
+	if (st == HB_OK)
+		st = hb_preset_load_string(buf, path, sc, msg, n);
 	for (int i = 0; st == HB_OK && i < nsets; i++)
 		st = apply_set(sc, sets[i], msg, n);
 	if (st == HB_OK && (st = hb_scene_validate(sc, m, sizeof m)) != HB_OK)
 		hb_status_set(msg, n, st, "%s: %s", path, m);
+	if (st == HB_OK && text != NULL)
+		*text = buf;
+	else
+		free(buf);
 	return st;
+}
+
+int
+hb_preset_open(const char *path, const char *const *sets, int nsets, struct hb_scene *sc,
+            char *msg, size_t n)
+{
+	return open_text(path, sets, nsets, sc, NULL, msg, n);
 }
 
 int
 hb_preset_open_named(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
                      char *path, size_t pn, char *msg, size_t n)
+{
+	return hb_preset_open_text(name, sets, nsets, sc, path, pn, NULL, msg, n);
+}
+
+int
+hb_preset_open_text(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
+                    char *path, size_t pn, char **text, char *msg, size_t n)
 {
 	char m[4096];
 	int st;
@@ -567,7 +564,7 @@ hb_preset_open_named(const char *name, const char *const *sets, int nsets, struc
 	if ((st = hb_preset_resolve(name, path, pn, m, sizeof m)) != HB_OK)
 		return hb_status_set(msg, n, st, "preset '%.*s%s': %s", strlen(name) > 72 ? 60 : 72,
 		    name, strlen(name) > 72 ? "..." : "", m[0] ? m : "not found");
-	return hb_preset_open(path, sets, nsets, sc, msg, n);
+	return open_text(path, sets, nsets, sc, text, msg, n);
 }
 
 /* ---------------------------------------------------------------- */

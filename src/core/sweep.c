@@ -41,6 +41,8 @@ struct axis {
 
 struct hb_sweep {
 	struct hb_scene base;
+	long max_points;          /* the largest product accepted (hb_sweep_set_max_points) */
+	char more[128];           /* how to ask for more, for the refusal */
 	int naxes;
 	struct axis ax[SWEEP_MAX_AXES];
 };
@@ -64,7 +66,15 @@ hb_sweep_new(const struct hb_scene *base, char *msg, size_t n)
 		return NULL;
 	}
 	sw->base = *base;
+	sw->max_points = HB_SWEEP_MAX_POINTS;
 	return sw;
+}
+
+void
+hb_sweep_set_max_points(struct hb_sweep *sw, long max, const char *more)
+{
+	sw->max_points = max < 1 ? 1 : max > SWEEP_MAX_POINTS ? SWEEP_MAX_POINTS : max;
+	snprintf(sw->more, sizeof sw->more, "%s", more != NULL ? more : "");
 }
 
 void
@@ -189,7 +199,8 @@ parse_count(const char *t, long *out)
 
 /* A range FROM:TO:N[:log] into a->val. */
 static int
-parse_range(struct axis *a, const struct hb_scene *sc, char *msg, size_t n)
+parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw,
+            char *msg, size_t n)
 {
 	char *part[5] = { 0 }, num[64];
 	const char *p = a->spec, *c;
@@ -218,6 +229,13 @@ parse_range(struct axis *a, const struct hb_scene *sc, char *msg, size_t n)
 		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: N '%s' is not a count; "
 		                "accepted: an integer from 1 to %ld", a->key, a->spec, part[2],
 		                SWEEP_MAX_POINTS);
+		goto out;
+	}
+	if (a->n > sw->max_points) {
+		/* Refused before a value is made: 10^9 would take minutes and gigabytes. */
+		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: %ld points, more than the "
+		                "limit of %ld points%s%s", a->key, a->spec, a->n, sw->max_points,
+		                sw->more[0] ? "; " : "", sw->more);
 		goto out;
 	}
 	if ((rc = canonical(sc, a->key, part[0], num, sizeof num, msg, n)) != HB_OK)
@@ -317,7 +335,6 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 	struct hb_scene sc;
 	char *key;
 	int k, rc;
-	long total;
 
 	memset(&a, 0, sizeof a);
 	if (eq == NULL)
@@ -348,23 +365,27 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 		                  "most %d", a.key, SWEEP_MAX_AXES);
 	check_scene(sw, k, &sc);
 	if (strchr(a.spec, ':') != NULL)
-		rc = parse_range(&a, &sc, msg, n);
+		rc = parse_range(&a, &sc, sw, msg, n);
 	else
 		rc = parse_list(&a, &sc, msg, n);
 	if (rc != HB_OK) {
 		axis_free(&a);
 		return rc;
 	}
-	total = a.n;
-	for (int i = 0; i < sw->naxes; i++)
-		if (i != k) {
-			if (total > SWEEP_MAX_POINTS / sw->ax[i].n) {
-				axis_free(&a);
-				return hb_status_set(msg, n, HB_EINVAL, "--vary %s: the sweep would have "
-				                  "more than %ld points", a.key, SWEEP_MAX_POINTS);
-			}
-			total *= sw->ax[i].n;
+	{
+		double prod = (double)a.n;   /* no overflow: a double for the message */
+
+		for (int i = 0; i < sw->naxes; i++)
+			if (i != k)
+				prod *= (double)sw->ax[i].n;
+		if (prod > (double)sw->max_points) {
+			rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s: the sweep would have %.0f "
+			                   "points, more than the limit of %ld points%s%s", a.key, prod,
+			                   sw->max_points, sw->more[0] ? "; " : "", sw->more);
+			axis_free(&a);
+			return rc;
 		}
+	}
 	if (k < sw->naxes)
 		axis_free(&sw->ax[k]);
 	else

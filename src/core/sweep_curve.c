@@ -178,6 +178,10 @@ hb_sweep_curve_start(const struct hb_scene *base, const char *key, const char *s
 	c->obs = obs;
 	c->coll_i = coll_i;
 	snprintf(arg, sizeof arg, "%s=%s", key, spec);
+	/* A view needs a few thousand points at most: a range of 10^9 would
+	 * freeze the caller while its values are made. */
+	hb_sweep_set_max_points(c->sw, HB_SWEEP_CURVE_MAX_POINTS, "a curve shows at most that "
+	                        "many: choose a smaller N");
 	if (hb_sweep_vary(c->sw, arg, msg, n) != HB_OK || hb_sweep_check(c->sw, msg, n) != HB_OK) {
 		hb_sweep_curve_free(c);
 		return NULL;

@@ -39,6 +39,7 @@
 
 #include "hybounce/atomic.h"
 #include "hybounce/csv.h"
+#include "hybounce/input.h"
 #include "hybounce/preset.h"
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
@@ -47,44 +48,62 @@
 
 #define SPEC_NAME "sweep.preset"
 
-/* The whole of a file into a malloc'd string (*len bytes).  NULL and errno on failure. */
+/* The whole of a file into a malloc'd string (*len bytes), read once and
+ * bounded (input.h).  NULL with msg on failure; errno ENOENT when absent. */
 static char *
-slurp(const char *path, size_t *len)
+slurp(const char *path, size_t *len, char *msg, size_t n)
 {
-	FILE *f = fopen(path, "r");
 	char *buf = NULL;
-	size_t cap = 0, n = 0, r;
 
-	if (f == NULL)
+	errno = 0;
+	if (access(path, F_OK) != 0 && errno == ENOENT)
 		return NULL;
-	do {
-		if (n + 4096 + 1 > cap) {
-			char *nb = realloc(buf, cap = 2 * cap + 8192);
-
-			if (nb == NULL) {
-				free(buf);
-				fclose(f);
-				errno = ENOMEM;
-				return NULL;
-			}
-			buf = nb;
-		}
-		r = fread(buf + n, 1, 4096, f);
-		n += r;
-	} while (r > 0);
-	if (ferror(f)) {
-		int e = errno;
-
-		free(buf);
-		fclose(f);
-		errno = e ? e : EIO;
+	if (hb_input_read(path, HB_INPUT_PRESET_MAX, &buf, len, msg, n) != HB_OK) {
+		errno = EIO;
 		return NULL;
 	}
-	fclose(f);
-	buf[n] = '\0';
-	if (len)
-		*len = n;
 	return buf;
+}
+
+/*
+ * 1 for a provenance comment (outputs.h: "; hybounce V (commit C): ..."):
+ * it says which command wrote the file, not what the sweep is, and is left
+ * out when a folder's sweep.preset is compared with a command's sweep.
+ */
+static int
+provenance_line(const char *p, const char *end)
+{
+	const char *colon;
+
+	if ((size_t)(end - p) < 12 || strncmp(p, "; hybounce ", 11) != 0)
+		return 0;
+	colon = memchr(p, ':', (size_t)(end - p));
+	if (colon == NULL)
+		return 0;
+	for (const char *q = p; q + 8 <= colon; q++)
+		if (memcmp(q, "(commit ", 8) == 0)
+			return 1;
+	return 0;
+}
+
+/* Removes the provenance lines of text (len bytes) in place; the new length. */
+static size_t
+strip_provenance(char *text, size_t len)
+{
+	size_t w = 0;
+
+	for (size_t r = 0; r < len; ) {
+		const char *nl = memchr(text + r, '\n', len - r);
+		size_t l = nl != NULL ? (size_t)(nl - (text + r)) + 1 : len - r;
+
+		if (!provenance_line(text + r, text + r + l)) {
+			memmove(text + w, text + r, l);
+			w += l;
+		}
+		r += l;
+	}
+	text[w] = '\0';
+	return w;
 }
 
 static int
@@ -116,19 +135,30 @@ spec_text(const struct hb_sweep *sw, size_t *len)
 	return t;
 }
 
-/* 1 for the files a sweep folder may hold before its sweep.preset exists. */
+/*
+ * 1 for the files a sweep folder may hold before its sweep.preset exists:
+ * journals, and the atomic writer's temporary files of sweep.preset (those
+ * of a process that is gone are removed when sweep.preset is written).
+ */
 static int
 ours(const char *name)
 {
 	size_t l = strlen(name);
 
 	return strcmp(name, ".") == 0 || strcmp(name, "..") == 0 ||
-	       strncmp(name, SPEC_NAME ".tmp", strlen(SPEC_NAME ".tmp")) == 0 ||
+	       hb_atomic_is_temp(name, SPEC_NAME, NULL) ||
 	       (l > 8 && strcmp(name + l - 8, ".journal") == 0);
 }
 
 int
 hb_sweep_prepare_dir(const struct hb_sweep *sw, const char *dir, char *msg, size_t n)
+{
+	return hb_sweep_prepare_dir_with(sw, dir, NULL, msg, n);
+}
+
+int
+hb_sweep_prepare_dir_with(const struct hb_sweep *sw, const char *dir, const char *provenance,
+                          char *msg, size_t n)
 {
 	char path[4096];
 	struct stat st;
@@ -152,8 +182,9 @@ hb_sweep_prepare_dir(const struct hb_sweep *sw, const char *dir, char *msg, size
 	if (want == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	snprintf(path, sizeof path, "%s/" SPEC_NAME, dir);
-	have = slurp(path, &have_len);
+	have = slurp(path, &have_len, msg, n);
 	if (have != NULL) {
+		have_len = strip_provenance(have, have_len);
 		rc = have_len == len && memcmp(have, want, len) == 0 ? HB_OK
 		   : hb_status_set(msg, n, HB_EINVAL, "--out %s: the folder holds a different "
 		                "sweep (%s differs from this one's); expected a new folder, "
@@ -164,7 +195,7 @@ hb_sweep_prepare_dir(const struct hb_sweep *sw, const char *dir, char *msg, size
 	}
 	if (errno != ENOENT) {
 		free(want);
-		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+		return HB_EIO;   /* slurp said why */
 	}
 	{
 		DIR *d = opendir(dir);
@@ -184,6 +215,20 @@ hb_sweep_prepare_dir(const struct hb_sweep *sw, const char *dir, char *msg, size
 				return HB_EINVAL;
 			}
 		closedir(d);
+	}
+	if (provenance != NULL && provenance[0] != '\0') {
+		/* The spec, then the line saying which command wrote it. */
+		size_t pl = strlen(provenance);
+		char *nb = realloc(want, len + pl + 2);
+
+		if (nb == NULL) {
+			free(want);
+			return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+		}
+		want = nb;
+		memcpy(want + len, provenance, pl);
+		want[len + pl] = '\n';
+		len += pl + 1;
 	}
 	rc = hb_atomic_write_file(path, want, len, msg, n);
 	free(want);
@@ -370,7 +415,7 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 	if (k < 0 || k >= ns)
 		return hb_status_set(msg, n, HB_EINVAL, "--shard %ld/%ld: accepted: K/N with "
 		                  "0 <= K < N", k, ns);
-	if ((rc = hb_sweep_prepare_dir(sw, o->dir, msg, n)) != HB_OK)
+	if ((rc = hb_sweep_prepare_dir_with(sw, o->dir, o->provenance, msg, n)) != HB_OK)
 		return rc;
 	journal_name(jpath, sizeof jpath, o->dir, k, ns);
 	if (ns == 1 && access(jpath, F_OK) != 0 && errno == ENOENT) {
@@ -585,10 +630,13 @@ load_spec(const char *dir, struct hb_scene *sc, char *msg, size_t n)
 	char *text;
 
 	snprintf(path, sizeof path, "%s/" SPEC_NAME, dir);
-	text = slurp(path, NULL);
+	m[0] = '\0';
+	text = slurp(path, NULL, m, sizeof m);
+	if (text == NULL && m[0] == '\0')
+		snprintf(m, sizeof m, "%.900s: %s", path, strerror(ENOENT));
 	if (text == NULL) {
-		hb_status_set(msg, n, HB_EINVAL, "%s: %s; expected a sweep folder (--out DIR of "
-		           "hybounce sweep)", path, strerror(errno));
+		hb_status_set(msg, n, HB_EINVAL, "%s; expected a sweep folder (--out DIR of "
+		           "hybounce sweep)", m[0] ? m : path);
 		return NULL;
 	}
 	m[0] = '\0';
@@ -598,6 +646,9 @@ load_spec(const char *dir, struct hb_scene *sc, char *msg, size_t n)
 		return NULL;
 	}
 	sw = hb_sweep_new(sc, msg, n);
+	/* The folder's sweep was accepted (and its size allowed) when it was made. */
+	if (sw != NULL)
+		hb_sweep_set_max_points(sw, 1000000000L, NULL);
 	if (sw != NULL && hb_sweep_vary_from_preset(sw, text, path, msg, n) != HB_OK) {
 		hb_sweep_free(sw);
 		sw = NULL;

@@ -14,6 +14,8 @@ struct app_options {
 	int ascii;                 /* 1: plain ASCII plots even in a UTF-8 locale (--ascii) */
 	const char *script;        /* --script FILE: play keystrokes from a file; NULL: interactive */
 	const char *data;          /* --data FILE: measured data shown over the scene (overlay_fit.c) */
+	/* the provenance comment line of exported scenes (outputs.h); NULL: none */
+	const char *provenance;
 };
 
 /*

@@ -9,6 +9,7 @@
  * whenever the current scene changes (app_label_runs).
  */
 #include <limits.h>
+#include <sys/stat.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,6 +17,7 @@
 #include <unistd.h>
 
 #include "csv.h"
+#include "outputs.h"
 #include "term.h"
 #include "status.h"
 #include "tui.h"
@@ -307,29 +309,85 @@ how_written(const struct hb_atomic_target *t)
 	return t->how == HB_ATOMIC_REPLACE ? " (replaced the existing file)" : "";
 }
 
+/* 1 if a file (or a link, even dangling) is at path: an export must not replace it unasked. */
+static int
+taken(const char *path)
+{
+	struct stat st;
+
+	return lstat(path, &st) == 0 && !S_ISCHR(st.st_mode) && !S_ISFIFO(st.st_mode);
+}
+
+int
+tui_unused_name(const char *path, char *out, size_t n)
+{
+	const char *slash = strrchr(path, '/');
+	const char *dot = strrchr(slash != NULL ? slash + 1 : path, '.');
+	int stem = dot != NULL && dot != (slash != NULL ? slash + 1 : path)
+	           ? (int)(dot - path) : (int)strlen(path);
+
+	if (!taken(path)) {
+		snprintf(out, n, "%s", path);
+		return 0;
+	}
+	for (int k = 2; k < 1000; k++) {
+		if ((size_t)snprintf(out, n, "%.*s-%d%s", stem, path, k, path + stem) >= n)
+			return -1;
+		if (!taken(out))
+			return 1;
+	}
+	return -1;
+}
+
 /*
  * Writes BASE-trace.csv, BASE-collisions.csv and the scene as BASE.preset
- * through hb_csv_export_files(): all or nothing, never over the preset being
- * run or a shipped preset, every overwrite named in the message.
+ * through hb_csv_export_with(): all or nothing, never over the preset being
+ * run or a shipped preset.  A second export never replaces the first: when
+ * one of the three files is there, BASE-2 (BASE-3, ...) is used instead,
+ * and the message says where it wrote.
  */
 void
-export_do(struct app *a, const char *base)
+export_do(struct app *a, const char *base0)
 {
-	char trace[600], coll[600], scene[600], emsg[512], note[256] = "";
+	char trace[600], coll[600], scene[600], emsg[512], note[256] = "", base[560];
 	struct hb_csv_export_report *rep;
+	struct hb_csv_export_opts eo = { 0 };
+	struct hb_outputs inputs;
+	int renamed = 0;
 
-	if (base[0] == 0) {
+	if (base0[0] == 0) {
 		app_msg(a, 1, "export cancelled: empty name");
 		return;
 	}
-	snprintf(trace, sizeof trace, "%s-trace.csv", base);
-	snprintf(coll, sizeof coll, "%s-collisions.csv", base);
-	snprintf(scene, sizeof scene, "%s.preset", base);
+	snprintf(base, sizeof base, "%s", base0);
+	for (int k = 2; ; k++) {
+		snprintf(trace, sizeof trace, "%s-trace.csv", base);
+		snprintf(coll, sizeof coll, "%s-collisions.csv", base);
+		snprintf(scene, sizeof scene, "%s.preset", base);
+		if (!taken(trace) && !taken(coll) && !taken(scene))
+			break;
+		if (k >= 1000) {
+			app_msg(a, 1, "export failed, nothing written: %.100s-2 ... -999 are all taken; "
+			        "type another name", base0);
+			return;
+		}
+		snprintf(base, sizeof base, "%.500s-%d", base0, k);
+		renamed = 1;
+	}
 	rep = calloc(1, sizeof *rep);
 	if (rep == NULL)
 		term_oom();
-	if (hb_csv_export_files_scene(a->sim, trace, coll, scene, a->preset_path, rep, emsg,
-	        sizeof emsg) != HB_OK) {
+	eo.trace = trace;
+	eo.coll = coll;
+	eo.scene = scene;
+	eo.run_preset = a->preset_path;
+	eo.provenance = a->opt != NULL ? a->opt->provenance : NULL;
+	/* the measured data shown (--data) is an input too (outputs.h) */
+	hb_outputs_init(&inputs);
+	if (a->opt != NULL)
+		hb_outputs_input(&inputs, a->opt->data, "the data file (--data)");
+	eo.outputs = &inputs;
+	if (hb_csv_export_with(a->sim, &eo, rep, emsg, sizeof emsg) != HB_OK) {
 		app_msg(a, 1, "export failed, nothing written: %s", emsg);
 		free(rep);
 		return;
@@ -341,7 +399,12 @@ export_do(struct app *a, const char *base)
 		         "; NOTE: this run was branched at t = %s, j = %ld: the scene file holds the values after the branch and does NOT reproduce it (r, then export, gives a reproducible run)",
 		         tb, a->branch_j);
 	}
-	app_msg(a, a->branch_t >= 0, "wrote %s%s, %s%s and %s%s (%zu samples, %zu collisions)%s", trace,
+	if (renamed) {
+		size_t l = strlen(note);
+
+		snprintf(note + l, sizeof note - l, "; %.100s-* is an earlier export, kept", base0);
+	}
+	app_msg(a, a->branch_t >= 0 || renamed, "wrote %s%s, %s%s and %s%s (%zu samples, %zu collisions)%s", trace,
 	        how_written(&rep->target[0]), coll, how_written(&rep->target[1]),
 	        rep->scene[0] ? rep->scene : "no scene", rep->scene[0] ? how_written(&rep->target[2]) : "",
 	        hb_arc_len(hb_sim_arc(a->sim)), hb_sim_ncollisions(a->sim), note);

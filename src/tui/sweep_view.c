@@ -200,6 +200,7 @@ sweep_prompt_done(struct app *a, const char *text, int cancelled)
 {
 	struct sweep_view *v = a->sv;
 	char path[600], msg[512];
+	int renamed;
 
 	if (v == NULL)
 		return;
@@ -223,17 +224,24 @@ sweep_prompt_done(struct app *a, const char *text, int cancelled)
 		app_msg(a, 1, "export cancelled: empty name");
 		return;
 	}
-	snprintf(path, sizeof path, "%s", text);
 	if (v->cur.c == NULL) {
 		app_msg(a, 1, "export: no curve (p pinned it; L or r computes a new one)");
+		return;
+	}
+	/* A second export never replaces the first: NAME-2.csv ... instead. */
+	renamed = tui_unused_name(text, path, sizeof path);
+	if (renamed < 0) {
+		app_msg(a, 1, "export failed, nothing written: %.200s and its -2 ... -999 names are "
+		        "taken; type another name", text);
 		return;
 	}
 	if (hb_sweep_curve_write_csv(v->cur.c, path, msg, sizeof msg) != HB_OK) {
 		app_msg(a, 1, "export failed, nothing written: %s", msg);
 		return;
 	}
-	app_msg(a, 0, "wrote %s (%ld of %ld points%s)", path, v->cur.done, v->cur.n,
-	        v->cur.done < v->cur.n ? ", still computing" : "");
+	app_msg(a, renamed, "wrote %s (%ld of %ld points%s)%s%s%s", path, v->cur.done, v->cur.n,
+	        v->cur.done < v->cur.n ? ", still computing" : "",
+	        renamed ? "; " : "", renamed ? text : "", renamed ? " is an earlier export, kept" : "");
 }
 
 /* Changes the observable, collision or law and recomputes. */

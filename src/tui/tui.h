@@ -131,6 +131,12 @@ void app_adopt(struct app *a, struct hb_sim *s, const char *path);
 void app_label_runs(struct app *a);               /* legend labels from what differs */
 void pins_clear(struct app *a);
 void export_do(struct app *a, const char *base);
+/*
+ * path itself into out when nothing is there (0), else the first of
+ * STEM-2.EXT, STEM-3.EXT ... that is free (1): an export never replaces an
+ * earlier one unasked.  -1 when none is (up to -999) or out is too small.
+ */
+int tui_unused_name(const char *path, char *out, size_t n);
 
 /* prompt.c */
 void prompt_open(struct app *a, int kind, const char *text, const char *fmt, ...)

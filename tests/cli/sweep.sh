@@ -213,8 +213,9 @@ if [ -s "$T/plot" ] && cmp -s "$T/plot" "$T/readme.plot"; then
 else notok "README's restitution plot is plot.sh's output for the example sweeps" "$T/plot"; diff "$T/plot" "$T/readme.plot" | head -5 | sed 's/^/# /'; fi
 
 # 14. SIGINT (and SIGTERM): the points in hand are finished and kept, exit
-# 128+N, and the same command resumes.
-"$BIN" sweep $P --vary "$VK" --jobs 2 --out "$T/int" 2>"$T/int.err" &
+# 128+N, and the same command resumes.  (env --default-signal: a background
+# job of a script inherits SIGINT ignored, and an ignored signal stays so.)
+env --default-signal=INT "$BIN" sweep $P --vary "$VK" --jobs 2 --out "$T/int" 2>"$T/int.err" &
 pid=$!
 i=0
 while [ $i -lt 400 ]; do

@@ -1,8 +1,9 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The explorer's export in tmux: the prompt names the folder the files go
-# to; a second export to the same name says which files it replaced; an
-# export refused (a missing folder) writes nothing and says why.
+# to; a second export to the same name does not replace the first: it goes
+# to NAME-2 and says so; an export refused (a missing folder) writes
+# nothing and says why.
 . "$(dirname "$0")/common.inc"
 # logtext SESSION: the screen as one line, box borders and runs of blanks removed
 logtext() { screen "$1" | sed 's/│//g' | tr '\n' ' ' | tr -s ' '; }
@@ -33,14 +34,23 @@ keys a e
 wait_for a 'BASE: ' 30
 keys a C-u
 keys a -l "out/x"
+cksum "$TMP/out/x-trace.csv" "$TMP/out/x-collisions.csv" "$TMP/out/x.preset" >"$TMP/first.sum"
 keys a Enter
-wait_for a '^wrote out/x-trace' 50
+wait_for a '^wrote out/x-2-trace' 50
 keys a m
 if wait_for a 'messages, oldest first' 30 \
-   && logtext a | grep -q 'wrote out/x-trace\.csv (replaced the existing file), out/x-collisions\.csv (replaced the existing file) and out/x\.preset (replaced the existing file)'; then
-	ok "a second export to the same name says it replaced the files"
+   && logtext a | grep -q 'wrote out/x-2-trace\.csv, out/x-2-collisions\.csv and out/x-2\.preset (.*); out/x-\* is an earlier export, kept' \
+   && cksum "$TMP/out/x-trace.csv" "$TMP/out/x-collisions.csv" "$TMP/out/x.preset" | cmp -s - "$TMP/first.sum" \
+   && [ -s "$TMP/out/x-2-trace.csv" ] && [ -s "$TMP/out/x-2.preset" ]; then
+	ok "a second export to the same name keeps the first and writes out/x-2-*, saying so"
 else
-	notok "a second export says it replaced the files" a
+	notok "a second export to the same name keeps the first and writes out/x-2-*, saying so" a
+fi
+if grep -q '^; hybounce .* (commit [^)]*): ' "$TMP/out/x-2.preset"; then
+	ok "the exported scene records the version, the commit and the command line"
+else
+	notok "the exported scene records the version, the commit and the command line"
+	show "$TMP/out/x-2.preset"
 fi
 keys a q
 wait_exit a 50

@@ -72,6 +72,26 @@ else
 	notok "e exports the curve as CSV" a
 	head -3 "$TMP/steel-on-bitumen-initial.v0-e.csv" | sed 's/^/# /'
 fi
+# a second export to the same name keeps the first: NAME-2.csv, said so
+cp "$TMP/steel-on-bitumen-initial.v0-e.csv" "$TMP/first.csv"
+keys a e
+wait_for a '^export the curve as CSV to: steel-on-bitumen-initial\.v0-e\.csv_$' 30
+keys a Enter
+if wait_for a '^wrote steel-on-bitumen-initial\.v0-e-2\.csv \(9 of 9 points\); steel-on' 30 \
+   && cmp -s "$TMP/first.csv" "$TMP/steel-on-bitumen-initial.v0-e.csv" \
+   && [ -s "$TMP/steel-on-bitumen-initial.v0-e-2.csv" ]; then
+	ok "a second curve export keeps the first and writes NAME-2.csv, saying so"
+else
+	notok "a second curve export keeps the first and writes NAME-2.csv, saying so" a
+fi
+# a range of 10^9 points is refused at once, the explorer stays responsive
+keys a r ; keys a C-u ; keys a -l -- "-1 mm/s:-10 m/s:1000000000:log" ; keys a Enter
+if wait_for a '^sweep not started: --vary initial\.v0=-1 mm/s:-10 m/s:1000000000:log' 30 \
+   && wait_for a '^sweep: e of collision 1 against initial\.v0 = -0\.2 m/s:-1 m/s:9 +9/9 done$' 30; then
+	ok "a range of 10^9 points is refused at once, the curve kept"
+else
+	notok "a range of 10^9 points is refused at once, the curve kept" a
+fi
 keys a q
 wait_gone a '^sweep: e of' 30
 keys a / ; keys a -l scene.law ; keys a Enter
