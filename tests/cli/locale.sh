@@ -52,10 +52,11 @@ run_set() {
 	    rm "$T/$1/co.preset"
 }
 run_sweep() {
-	mkdir -p "$T/$1" &&
+	# --out relative: the provenance line of sweep.preset names the command
+	mkdir -p "$T/$1" && (cd "$T/$1" &&
 	    inenv "$2" "$BIN" sweep permanent-contact-shccl --vary 'initial.x0=10um:40um:3' \
-	        --vary 'law.c=1e9,4.3e9' --set 'body1.nu=0.31' --jobs 2 --out "$T/$1/sw" \
-	        >/dev/null 2>"$T/$1/err" || return 1
+	        --vary 'law.c=1e9,4.3e9' --set 'body1.nu=0.31' --jobs 2 --out sw \
+	        >/dev/null 2>err) || return 1
 	nocpu "$T/$1/sw/runs.csv" >"$T/$1/runs" && mv "$T/$1/sw/collisions.csv" "$T/$1/collisions" &&
 	    mv "$T/$1/sw/sweep.preset" "$T/$1/sweep.preset" && rm -r "$T/$1/sw"
 }
