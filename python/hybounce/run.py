@@ -13,16 +13,18 @@ library's memory (struct hb_arc_sample and struct hb_collision arrays,
 strided: no copy), read-only, and keep the run's sim alive.  A Run never
 advances a sim it has handed out: run() again makes a new sim, so views
 of an earlier run stay valid and unchanged.  Copies happen where the
-library's layout does not allow a view: Arc.z_c for a law with fewer
-internal states than the struct has room for is a view of the first
-columns (still no copy), but collisions_frame() and Arc.frame() copy into
-pandas, and the fit's points are copied because the library frees them
-with its result.
+memory is the library's to free or another library wants its own:
+collisions_frame() and Arc.frame() copy into pandas (a DataFrame holds
+its own columns), a sweep's tables are read from its CSV files, and a
+fit's points are copied before the library frees its result.  (Arc.z_c,
+the law's internal states, is a view of the first n_z of the struct's
+HB_LAW_MAX_Z columns: still no copy.)
 
 Threads.  A Run is one scene and one sim: like the library's, it must not
 be used by two threads at once, and any number of Runs may run at once,
 each in its own thread: cffi releases the GIL during every call into the
-library, so they run in parallel.  Nothing global is touched.
+library, so they run in parallel.  Nothing global is touched (but at the
+import, which turns GSL's error handler off: _lib.py).
 """
 import math
 import os
@@ -259,7 +261,8 @@ class Run:
 
     def text(self, key):
         """The value of a key as a text that reads back exactly ("20 mm")."""
-        return text(self._info(key).edit) or text(self._info(key).value)
+        info = self._info(key)
+        return text(info.edit) or text(info.value)
 
     def unit(self, key):
         """The SI unit of a number key ("N s m^-5/2"; "" for a pure number)."""

@@ -46,3 +46,12 @@ def test_a_bad_sweep_or_fit_raises_with_the_message():
 def test_reading_before_a_run_is_an_error():
     with pytest.raises(hybounce.HybounceError, match="run()"):
         hybounce.Run("steel-on-bitumen").collisions
+
+
+def test_a_numerical_failure_raises_and_keeps_what_was_computed():
+    run = hybounce.Run("steel-on-bitumen", {"run.h_max": "1e-300"})
+    with pytest.raises(hybounce.NumericError) as e:
+        run.run()
+    p = cli("--batch", "steel-on-bitumen", "--set", "run.h_max=1e-300", check=False)
+    assert p.returncode == 1 and str(e.value) in p.stderr and "t = " in str(e.value)
+    assert run.failed and len(run.arc) >= 2 and "failed" in repr(run)
