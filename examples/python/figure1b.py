@@ -14,10 +14,10 @@ import sys
 
 import hybounce
 
-# (CSV column, label, unit) as the paper's panels
+# (CSV column, label in matplotlib's mathtext, unit) as the paper's panels
 PANELS = [("t_d", "t_d", "s"), ("t_f", "t_f", "s"), ("v_i", "v_i", "m/s"), ("e", "e", ""),
-          ("x_c_max", "x_c^max", "m"), ("x_c_r", "x_c^r", "m"), ("F_c_max", "F_c^max", "N"),
-          ("W", "W", "J"), ("Lambda", "Lambda", "")]
+          ("x_c_max", "x_c^{max}", "m"), ("x_c_r", "x_c^r", "m"), ("F_c_max", "F_c^{max}", "N"),
+          ("W", "W", "J"), ("Lambda", "\\Lambda", "")]
 
 
 def main(prefix="figure1b"):
@@ -40,7 +40,7 @@ def main(prefix="figure1b"):
     fig, axes = plt.subplots(3, 3, figsize=(7.0, 5.5), sharex=True, constrained_layout=True)
     for ax, (col, label, unit) in zip(axes.flat, PANELS):
         ax.plot(c["i"], c[col], "o-", ms=3, lw=1, color="black")
-        ax.set_ylabel("$%s$%s" % (label.replace("Lambda", "\\Lambda"), " [%s]" % unit if unit else ""))
+        ax.set_ylabel("$%s$%s" % (label, " [%s]" % unit if unit else ""))
         ax.grid(True, lw=0.3)
     for ax in axes[-1]:
         ax.set_xlabel("collision i")
