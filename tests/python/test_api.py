@@ -23,6 +23,13 @@ def test_get_set_and_the_preset_text():
     assert "[law]" in run.preset()
 
 
+def test_a_preset_opens_by_path_as_by_name():
+    path = os.path.join(ROOT, "presets", "ptfe-pom.preset")
+    by_path, by_name = hybounce.Run(path), hybounce.open("ptfe-pom")
+    assert by_path.path == path and by_path.preset() == by_name.preset()
+    assert by_path.run().collisions.tobytes() == by_name.run().collisions.tobytes()
+
+
 def test_repr_says_what_and_how_it_ended():
     run = hybounce.Run("steel-on-bitumen")
     assert repr(run).endswith("law bwmcl, not run>")
