@@ -8,9 +8,12 @@
 #   make check-asan the unit tests under AddressSanitizer + UBSan
 #   make bench      the work-precision benchmark (report in build/bench/)
 #   make golden     rewrite tests/golden/*.csv (the collision tables the tests compare with)
-#   make install / uninstall   honour PREFIX, DESTDIR, MANPREFIX, LIBDIR, INCLUDEDIR
+#   make python     the Python package in build/python/hybounce (over build/'s libhybounce.so)
+#   make bench-python  a 1,000-point sweep from Python side by side with hybounce sweep
+#   make install / uninstall   honour PREFIX, DESTDIR, MANPREFIX, LIBDIR, INCLUDEDIR, PYTHONDIR
 #                   (the binary, man page, presets, and libhybounce: shared, static,
-#                   headers under include/hybounce/, pkg-config file hybounce.pc)
+#                   headers under include/hybounce/, pkg-config file hybounce.pc;
+#                   the Python package hybounce)
 #   make SAN=address,undefined   any target with sanitizers
 #   make debug      -O0 -g3
 
@@ -32,7 +35,8 @@ PKG_CONFIG ?= pkg-config
 # Debian packages the build and the tests use (apt-get names).
 APT_PACKAGES := libgsl-dev libncurses-dev libinih-dev libcriterion-dev pkg-config tmux mandoc \
                 clang libclang-rt-14-dev strace parallel slurm-wlm munge \
-                libaubio-dev aubio-tools sox locales python3-pandas
+                libaubio-dev aubio-tools sox locales python3-pandas \
+                python3-cffi python3-numpy python3-pytest
 # Locales the tests run under (decimal commas, a Turkish case fold): `make
 # deps` generates those `locale -a` lacks with localedef (about 2 MB each,
 # where locales-all would take 220 MB).
@@ -130,9 +134,10 @@ STATIC_OBJ := $(BUILD)/libhybounce.o
 pc_rel      = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
 .PHONY: fuzz fuzzers fuzz-smoke
 
+.PHONY: python bench-python
 .PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man lib FORCE golden bench-docs
 
-all: $(BIN) lib
+all: $(BIN) lib python
 
 lib: $(STATIC_LIB) $(SHLIB) $(PCFILE)
 
@@ -208,6 +213,33 @@ $(UNIT): $(TEST_OBJ) $(TUI_LIB) $(CORE_LIB)
 
 $(BENCHBIN): $(BENCH_OBJ) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(BENCH_OBJ) $(CORE_LIB) $(CORE_LIBS)
+
+# The Python package (python/hybounce: cffi's ABI mode over libhybounce.so).
+# Its declarations (_cdef.py) are generated from the public headers by
+# python/gen_cdef.py, with where to find the library: the build tree's
+# libhybounce.so for $(BUILD)/python (PYTHONPATH=$(BUILD)/python), the
+# soname then LIBDIR for the installed package; and the soname of the
+# libgsl the library links (the package turns GSL's error handler off).
+# Installed in PYTHONDIR: Debian's python3 finds /usr/lib/python3/dist-packages
+# and /usr/local/lib/python3.X/dist-packages.
+PYTHON    ?= /usr/bin/python3
+PY_VER     = $(shell $(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])')
+PYTHONDIR ?= $(if $(filter /usr,$(PREFIX)),/usr/lib/python3/dist-packages,$(PREFIX)/lib/python$(PY_VER)/dist-packages)
+PY_SRC    := $(sort $(wildcard python/hybounce/*.py))
+PY_PKG    := $(BUILD)/python/hybounce
+GSL_NEEDED = $$(objdump -p $(SHLIB) | sed -n 's/^ *NEEDED *\(libgsl\.so[.0-9]*\)$$/\1/p')
+python: $(PY_PKG)/_cdef.py
+$(PY_PKG)/_cdef.py: python/gen_cdef.py $(PY_SRC) $(PUBLIC_H) $(SHLIB)
+	@rm -rf $(PY_PKG) && mkdir -p $(PY_PKG) && cp $(PY_SRC) $(PY_PKG)/
+	$(PYTHON) python/gen_cdef.py $@ --lib $(abspath $(SHLIB)) --gsl "$(GSL_NEEDED)" \
+	    --soversion $(SOVERSION) -- $(PUBLIC_H)
+
+# A 1,000-point sweep from Python and the same sweep from hybounce sweep,
+# alternated in one run (report in build/bench/python.txt).
+bench-python: deps
+	@$(MAKE) --no-print-directory all
+	@mkdir -p $(BUILD)/bench
+	@PYTHONPATH=$(BUILD)/python $(PYTHON) tests/bench/python_sweep.py $(BIN) | tee $(BUILD)/bench/python.txt
 
 # The generated parts of the man page and the README (tools/gendoc.c):
 # `make docs` rewrites them; tests/cli/docs.sh fails when they are stale.
@@ -337,6 +369,10 @@ install: $(BIN) lib
 	install -m 644 $(STATIC_LIB) $(DESTDIR)$(LIBDIR)/libhybounce.a
 	install -m 644 $(PUBLIC_H) $(DESTDIR)$(INCLUDEDIR)/hybounce/
 	install -m 644 $(PCFILE) $(DESTDIR)$(PKGCONFIGDIR)/hybounce.pc
+	install -d $(DESTDIR)$(PYTHONDIR)/hybounce
+	install -m 644 $(PY_SRC) $(DESTDIR)$(PYTHONDIR)/hybounce/
+	$(PYTHON) python/gen_cdef.py $(DESTDIR)$(PYTHONDIR)/hybounce/_cdef.py --lib $(SHLIB_SO) \
+	    --lib $(LIBDIR)/$(SHLIB_SO) --gsl "$(GSL_NEEDED)" --soversion $(SOVERSION) -- $(PUBLIC_H)
 	@if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ] && command -v ldconfig >/dev/null; then ldconfig; fi
 
 uninstall:
@@ -348,6 +384,9 @@ uninstall:
 	      $(DESTDIR)$(PKGCONFIGDIR)/hybounce.pc
 	rm -f $(addprefix $(DESTDIR)$(INCLUDEDIR)/hybounce/,$(notdir $(PUBLIC_H)))
 	-rmdir $(DESTDIR)$(INCLUDEDIR)/hybounce
+	rm -f $(addprefix $(DESTDIR)$(PYTHONDIR)/hybounce/,$(notdir $(PY_SRC)) _cdef.py)
+	rm -rf $(DESTDIR)$(PYTHONDIR)/hybounce/__pycache__
+	-rmdir $(DESTDIR)$(PYTHONDIR)/hybounce
 
 clean:
 	rm -rf build build-asan build-debug

@@ -150,6 +150,29 @@ objdump -t "$BUILD"/src/core/*.o |
 if [ ! -s "$T/statics" ]; then ok "the core keeps no mutable static state"
 else notok "the core keeps no mutable static state (found: $(tr '\n' ' ' <"$T/statics"))"; fi
 
+# The Python package: installed where Debian's python3 looks (PYTHONDIR,
+# under the DESTDIR here), its declarations naming the installed soname;
+# it imports over the installed library (HYBOUNCE_LIB: the DESTDIR is not
+# on the loader's path) and runs a preset.  Under a sanitizer build the
+# library's runtime is preloaded, as tests/cli/python.sh does.
+cdef=$(find "$DEST" -path '*/dist-packages/hybounce/_cdef.py' | head -n 1)
+pre=
+for rt in libasan libubsan; do
+	pre="$pre $(ldd "$LIB/libhybounce.so.1" 2>/dev/null | sed -n "s/.*$rt\.so[^ ]* => \([^ ]*\).*/\1/p" | head -n 1)"
+done
+pre=$(echo $pre)
+if [ -n "$cdef" ] && grep -q "^LIBRARIES = \['libhybounce.so.1', '$PREFIX/lib/libhybounce.so.1'\]" "$cdef" &&
+    env ${pre:+LD_PRELOAD="$pre"} ASAN_OPTIONS=detect_leaks=0 PYTHONPATH="$(dirname "$(dirname "$cdef")")" \
+    HYBOUNCE_LIB="$LIB/libhybounce.so.1" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 -c '
+import hybounce
+r = hybounce.Run("steel-on-bitumen").run()
+assert hybounce.__version__ == hybounce.LIBRARY_VERSION and len(r.collisions) > 0
+print(hybounce.__version__, len(r.collisions))' >"$T/py.out" 2>&1; then
+	ok "the installed Python package runs over the installed library ($(cat "$T/py.out"), ${cdef#"$DEST"})"
+else
+	notok "the installed Python package runs over the installed library (${cdef:-no _cdef.py})" "$T/py.out"
+fi
+
 MAKEFLAGS= MAKELEVEL= make -s BUILD="$BUILD" DESTDIR="$DEST" uninstall >"$T/uninstall.log" 2>&1
 left=$(find "$DEST" ! -type d | sed "s|^$DEST||")
 if [ -z "$left" ]; then ok "make uninstall removes every installed file"
