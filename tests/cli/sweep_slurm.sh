@@ -16,6 +16,9 @@ set -u
 BIN=${HYBOUNCE_BIN:-build/hybounce}
 : "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
 export HYBOUNCE_PRESETS
+# noprov FILE: FILE but for its provenance line "; hybounce V (commit C): COMMAND",
+# which names the command that wrote it
+noprov() { grep -v '^; hybounce .*(commit .*): ' "$1"; }
 ok() { echo "ok - $1"; }
 notok() {
 	echo "not ok - $1"
@@ -176,7 +179,7 @@ while [ $i -lt "$hostile_count" ]; do
 	if [ "$state" = COMPLETED ] && [ -f "$T/h$i/$name/runs.csv" ] &&
 	    nocpu "$T/h$i/one/runs.csv" >"$T/a" && nocpu "$T/h$i/$name/runs.csv" >"$T/b" &&
 	    cmp -s "$T/a" "$T/b" && cmp -s "$T/h$i/one/collisions.csv" "$T/h$i/$name/collisions.csv" &&
-	    cmp -s "$T/h$i/one/sweep.preset" "$T/h$i/$name/sweep.preset"; then
+	    [ "$(noprov "$T/h$i/one/sweep.preset")" = "$(noprov "$T/h$i/$name/sweep.preset")" ]; then
 		ok "--emit slurm, folder $(hostile_show "$name"): Slurm ran it, same files as one machine"
 	else
 		notok "--emit slurm, folder $(hostile_show "$name") (merge job ${merge:-none}: ${state:-unknown})" "$T/h$i/job.sh"
