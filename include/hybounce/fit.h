@@ -92,7 +92,8 @@ hb_fit_obs_name(int obs);
  * *d holds nothing to free.  A CSV file is read once, whole (a pipe or a
  * FIFO works), up to HB_INPUT_DATA_MAX bytes (input.h); a UTF-8
  * byte-order mark at its start is skipped; a NUL byte in a row is an
- * error naming row and column.
+ * error naming row and column.  Concurrent calls are safe for CSV files,
+ * not for recordings (see hb_fit_data_open).
  */
 int
 hb_fit_data_load(const char *path, struct hb_fit_data *d, char *msg, size_t n);
@@ -105,7 +106,8 @@ struct hb_onset_result;
  * defaults) and, when on is not NULL, the onsets found (on->n = 0 for a
  * CSV file; filled as far as detection went even when the onsets make no
  * sequence; hb_onset_result_free(on) in every case).  The one loader of
- * every front end.
+ * every front end.  A recording is read through aubio, whose log hook is
+ * global: not for concurrent calls with a recording (onset.h).
  */
 int
 hb_fit_data_open(const char *path, const struct hb_onset_options *oo, struct hb_fit_data *d,
