@@ -459,6 +459,21 @@ Test(fit_data, files_are_recognised_by_their_columns)
 
 	cr_assert_eq(hb_fit_data_load("/nonexistent/x.csv", &d, msg, sizeof msg), HB_EIO);
 	cr_assert_not_null(strstr(msg, "/nonexistent/x.csv"), "%s", msg);
+	cr_assert_not_null(strstr(msg, "; accepted: "), "%s", msg);
+
+	/* a spreadsheet's UTF-8 byte-order mark before the header is skipped */
+	p = tmpfile_with("\xEF\xBB\xBFt_e\n0.1\n0.3\n");
+	cr_assert_eq(hb_fit_data_load(p, &d, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(d.kind, HB_FIT_SEQUENCE);
+	cr_assert_eq(d.n, 2);
+	hb_fit_data_free(&d);
+	unlink(p);
+
+	/* a long field is cut in the message, so that what is accepted stays in it */
+	p = tmpfile_with("t_e\n0.1\n0.2xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx\n");
+	cr_assert_eq(hb_fit_data_load(p, &d, msg, sizeof msg), HB_EINVAL);
+	cr_assert_not_null(strstr(msg, "...'; accepted: a finite number"), "%s", msg);
+	unlink(p);
 }
 
 /* Writes a 16-bit mono WAV: decaying 3 kHz clicks at t[i], amplitudes amp[i], noise. */

@@ -84,14 +84,34 @@ const char *
 hb_fit_obs_name(int obs);
 
 /*
- * Reads a data file (see the top of this header).  Returns 0, or HB_EINVAL /
- * HB_EIO / HB_ENOMEM with "FILE:LINE: ..." in msg naming the column or value
- * and what is accepted.  On error *d holds nothing to free.  The file is
- * read once, whole (a pipe or a FIFO works), up to HB_INPUT_DATA_MAX
- * bytes (input.h); a NUL byte in a row is an error naming row and column.
+ * Reads a data file (see the top of this header): a CSV file, or a
+ * recording of a bouncing sequence (a .wav name or a RIFF header; a
+ * regular file) whose onsets (onset.h, default options) are the impact
+ * times.  Returns 0, or HB_EINVAL / HB_EIO / HB_ENOMEM with "FILE:LINE:
+ * ..." in msg naming the column or value and what is accepted.  On error
+ * *d holds nothing to free.  A CSV file is read once, whole (a pipe or a
+ * FIFO works), up to HB_INPUT_DATA_MAX bytes (input.h); a UTF-8
+ * byte-order mark at its start is skipped; a NUL byte in a row is an
+ * error naming row and column.  Concurrent calls are safe for CSV files,
+ * not for recordings (see hb_fit_data_open).
  */
 int
 hb_fit_data_load(const char *path, struct hb_fit_data *d, char *msg, size_t n);
+
+struct hb_onset_options;
+struct hb_onset_result;
+
+/*
+ * hb_fit_data_load with the onset options of a recording (NULL: the
+ * defaults) and, when on is not NULL, the onsets found (on->n = 0 for a
+ * CSV file; filled as far as detection went even when the onsets make no
+ * sequence; hb_onset_result_free(on) in every case).  The one loader of
+ * every front end.  A recording is read through aubio, whose log hook is
+ * global: not for concurrent calls with a recording (onset.h).
+ */
+int
+hb_fit_data_open(const char *path, const struct hb_onset_options *oo, struct hb_fit_data *d,
+                 struct hb_onset_result *on, char *msg, size_t n);
 
 /*
  * The same from text already in memory (len bytes; a front end that read

@@ -62,12 +62,24 @@ hb_outputs_input(struct hb_outputs *o, const char *path, const char *what);
  * anything is written, and records it.  Returns HB_OK; HB_EINVAL with a
  * message naming path, `what` and the rule (an input, a shipped preset,
  * another output of the command); HB_EINVAL or HB_EIO with "PATH: reason"
- * from hb_atomic_probe when it cannot be written (a folder, a missing or
- * read-only folder).  The target (how it will be written) is
+ * and what is accepted (hb_outputs_probe) when it cannot be written (an
+ * empty name, a folder, a missing or read-only folder).  The target (how it will be written) is
  * o->out[o->nout - 1].target once accepted.
  */
 int
 hb_outputs_add(struct hb_outputs *o, const char *path, const char *what, char *msg, size_t n);
+
+/* What an output may be, for a refusal's "accepted: ..." (every front end). */
+#define HB_OUTPUTS_ACCEPTED "a file in a writable folder"
+
+/*
+ * hb_atomic_probe with the policy's words for a refusal: HB_EINVAL
+ * "empty file name; accepted: ..." for "", else the writer's
+ * "PATH: reason" followed by "; accepted: " HB_OUTPUTS_ACCEPTED (unless the
+ * reason already says what is expected).
+ */
+int
+hb_outputs_probe(const char *path, struct hb_atomic_target *t, char *msg, size_t n);
 
 /* 1 if a and b name one file: the same existing file, or the same new name. */
 int

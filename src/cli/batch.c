@@ -142,8 +142,8 @@ check_export_path(const char *opt, const char *path)
 	char msg[1024];
 
 	if (path[0] == '\0') {
-		fprintf(stderr, PROG ": %s: empty file name; expected a path such as "
-		        "run.csv\n", opt);
+		fprintf(stderr, PROG ": %s: empty file name; accepted: %s, e.g. run.csv\n", opt,
+		        HB_OUTPUTS_ACCEPTED);
 		return 2;
 	}
 	if (ends_with(path, ".preset")) {
@@ -153,13 +153,9 @@ check_export_path(const char *opt, const char *path)
 		return 2;
 	}
 	msg[0] = '\0';
-	if (hb_atomic_probe(path, &t, msg, sizeof msg) != HB_OK) {
-		size_t pl = strlen(path);
-		/* "PATH: reason": the path is already named */
-		const char *why = strncmp(msg, path, pl) == 0 && msg[pl] == ':' ? msg + pl + 2 : msg;
-
-		fprintf(stderr, PROG ": %s %s: cannot write there: %s; expected a file "
-		        "path in an existing, writable folder\n", opt, path, why);
+	/* the output policy's words (outputs.h): "PATH: reason; accepted: ..." */
+	if (hb_outputs_probe(path, &t, msg, sizeof msg) != HB_OK) {
+		fprintf(stderr, PROG ": %s %s\n", opt, msg);
 		return 2;
 	}
 	return 0;

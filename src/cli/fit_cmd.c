@@ -75,7 +75,8 @@ usage(FILE *f)
 "      --max-iter N        iteration cap (default 100)\n"
 "      --onset-method M    aubio onset method for a recording (default hfc)\n"
 "      --onset-threshold X aubio's peak-picking threshold (default 0.3)\n"
-"      --onset-level X     a click starts where it reaches X of its peak (0.3)\n"
+"      --onset-level X     a click starts where it reaches X (0 < X <= 1) of its\n"
+"                          peak (default 0.3)\n"
 "      --min-interval T    shortest interval between clicks (default 2 ms)\n"
 "  -q, --quiet             no progress lines on stderr, no residual table\n"
 "\n"
@@ -85,6 +86,7 @@ usage(FILE *f)
 }
 
 static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static int bad_usage(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 static int
 bad(const char *fmt, ...)
@@ -96,6 +98,20 @@ bad(const char *fmt, ...)
 	vfprintf(stderr, fmt, ap);
 	va_end(ap);
 	fprintf(stderr, "\n");
+	return 2;
+}
+
+/* A refusal of the command line: the message, then where usage is. */
+static int
+bad_usage(const char *fmt, ...)
+{
+	va_list ap;
+
+	fprintf(stderr, PROG " fit: ");
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "\nTry 'hybounce fit --help'.\n");
 	return 2;
 }
 
@@ -114,6 +130,19 @@ parse_int(const char *opt, const char *s, int *out)
 	return 0;
 }
 
+/* Parses a fraction in (0, 1] for an option. */
+static int
+parse_fraction(const char *opt, const char *s, double *out)
+{
+	char *end;
+	double v = strtod(s, &end);
+
+	if (*s == '\0' || *end != '\0' || !(v > 0) || !(v <= 1))
+		return bad("%s '%s': accepted: a fraction > 0 and <= 1", opt, s);
+	*out = v;
+	return 0;
+}
+
 static int
 parse_pos(const char *opt, const char *s, double *out)
 {
@@ -124,22 +153,6 @@ parse_pos(const char *opt, const char *s, double *out)
 		return bad("%s '%s': accepted: a number > 0", opt, s);
 	*out = v;
 	return 0;
-}
-
-/* 1 if path names a recording by its extension (.wav). */
-static int
-wav_name(const char *path)
-{
-	size_t l = strlen(path);
-
-	return l > 4 && strcasecmp(path + l - 4, ".wav") == 0;
-}
-
-/* 1 if the data is a recording: a .wav name, or a RIFF header (text read once). */
-static int
-is_recording(const char *path, const char *text, size_t len)
-{
-	return wav_name(path) || (text != NULL && len >= 4 && memcmp(text, "RIFF", 4) == 0);
 }
 
 /* The default output: the data file's base name without extension + -fit.preset. */
@@ -211,43 +224,57 @@ print_wrote(const char *path, const struct hb_atomic_target *t)
 	fprintf(stderr, "wrote %s%s\n", path, how);
 }
 
-/* Writes the points as CSV, atomically (hybounce/atomic.h). */
+/*
+ * The fitted scene as a preset (then the provenance line) and the residuals
+ * as CSV, as one atomic set (atomic.h): should either fail, neither is
+ * written nor changed.
+ */
 static int
-write_residuals(const char *path, const struct hb_fit_result *r,
-                const struct hb_atomic_target *t)
+write_outputs(const char *out, const struct hb_scene *sc, const char *resid_path,
+              const struct hb_fit_result *r, const struct hb_outputs *pol, int k_out,
+              int k_resid)
 {
-	char m[512];
-
-	if (hb_atomic_write_with(path, fill_residuals, r, m, sizeof m) != HB_OK)
-		return bad("--residuals %s", m);
-	print_wrote(path, t);
-	return 0;
-}
-
-/* The fitted scene as a preset, then the provenance line, atomically. */
-static int
-write_fitted(const char *path, const struct hb_scene *sc, const struct hb_atomic_target *t)
-{
+	struct hb_atomic_set set;
 	size_t len = hb_preset_format(sc, NULL, 0);
 	const char *prov = cli_provenance();
-	size_t pl = strlen(prov);
-	char *buf = malloc(len + pl + 2), m[512];
+	char *buf = malloc(len + 1), m[4400];
+	FILE *f;
 	int st;
 
 	if (buf == NULL)
-		return bad("--out %s: out of memory", path);
+		return bad("--out %s: out of memory; nothing written", out);
 	hb_preset_format(sc, buf, len + 1);
-	if (pl > 0) {
-		memcpy(buf + len, prov, pl);
-		buf[len + pl] = '\n';
-		len += pl + 1;
+	hb_atomic_begin(&set);
+	if ((f = hb_atomic_add(&set, out, m, sizeof m)) == NULL)
+		goto fail;
+	fwrite(buf, 1, len, f);
+	if (prov[0] != '\0')
+		fprintf(f, "%s\n", prov);
+	if (resid_path != NULL) {
+		if ((f = hb_atomic_add(&set, resid_path, m, sizeof m)) == NULL)
+			goto fail;
+		fill_residuals(f, r);
 	}
-	st = hb_atomic_write_file(path, buf, len, m, sizeof m);
 	free(buf);
-	if (st != HB_OK)
-		return bad("--out %s", m);
-	print_wrote(path, t);
+	buf = NULL;
+	if ((st = hb_atomic_commit(&set, m, sizeof m)) != HB_OK)
+		goto failed;
+	print_wrote(out, &pol->out[k_out].target);
+	if (resid_path != NULL)
+		print_wrote(resid_path, &pol->out[k_resid].target);
 	return 0;
+fail:
+	hb_atomic_abort(&set);
+failed:
+	free(buf);
+	{
+		/* "PATH: reason" from the writer: the option that named PATH first */
+		size_t rl = resid_path != NULL ? strlen(resid_path) : 0;
+		int is_resid = resid_path != NULL && strncmp(m, resid_path, rl) == 0 &&
+		               m[rl] == ':' && strcmp(resid_path, out) != 0;
+
+		return bad("%s %s; nothing written", is_resid ? "--residuals" : "--out", m);
+	}
 }
 
 static void
@@ -312,9 +339,8 @@ fit_main(int argc, char **argv)
 	struct hb_scene sc;
 	struct hb_outputs pol;
 	struct hb_fit *fit = NULL;
-	char *text = NULL;
 	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2, sig = 0, k_out, k_resid = -1;
-	size_t freelen = 0, textlen = 0;
+	size_t freelen = 0;
 
 	if ((sets = calloc((size_t)argc + 1, sizeof *sets)) == NULL)
 		return bad("out of memory");
@@ -354,7 +380,7 @@ fit_main(int argc, char **argv)
 				goto out;
 			break;
 		case OPT_ONSET_LEVEL:
-			if (parse_pos("--onset-level", optarg, &oo.level))
+			if (parse_fraction("--onset-level", optarg, &oo.level))
 				goto out;
 			break;
 		case OPT_MIN_INTERVAL:
@@ -372,16 +398,19 @@ fit_main(int argc, char **argv)
 		}
 	}
 	if (optind >= argc) {
-		status = bad("no preset; usage: hybounce fit PRESET --data FILE --free KEY,...");
+		status = bad_usage("no preset given; expected: hybounce fit PRESET --data FILE "
+		                   "--free KEY,...");
 		goto out;
 	}
 	if (argc - optind > 1) {
-		status = bad("more than one preset given ('%s' ...)", argv[optind + 1]);
+		status = bad_usage("more than one preset given ('%s' ...); expected one PRESET",
+		                   argv[optind + 1]);
 		goto out;
 	}
 	preset = argv[optind];
 	if (data == NULL) {
-		status = bad("--data FILE is required (a CSV of measurements or a .wav recording)");
+		status = bad_usage("--data FILE is required; accepted: a CSV file of measurements "
+		                   "or a .wav recording");
 		goto out;
 	}
 	if (freebuf == NULL) {
@@ -391,7 +420,8 @@ fit_main(int argc, char **argv)
 	for (char *save = NULL, *k = strtok_r(freebuf, ", \t", &save); k != NULL;
 	     k = strtok_r(NULL, ", \t", &save)) {
 		if (nkeys == HB_FIT_MAX_FREE) {
-			status = bad("--free: more than %d keys", HB_FIT_MAX_FREE);
+			status = bad("--free: more than %d keys; accepted: at most %d",
+			             HB_FIT_MAX_FREE, HB_FIT_MAX_FREE);
 			goto out;
 		}
 		keys[nkeys++] = k;
@@ -432,44 +462,25 @@ fit_main(int argc, char **argv)
 		}
 		k_resid = pol.nout - 1;
 	}
-	/* The data, read once (a pipe or a FIFO works) and bounded (input.h);
-	 * a .wav recording is left to aubio, which reads it by name. */
-	if (!wav_name(data) &&
-	    hb_input_read(data, HB_INPUT_DATA_MAX, &text, &textlen, msg, sizeof msg) != HB_OK) {
-		status = bad("--data %s", msg);
-		goto out;
-	}
-
 	printf("hybounce %s fit\n", HYBOUNCE_VERSION);
 	printf("preset      %s (%s)\n", preset, path);
-	if (is_recording(data, text, textlen)) {
+	/*
+	 * The data, through the one loader (fit.h: a CSV read once and bounded,
+	 * or a recording whose onsets are shown first, even when they make no
+	 * sequence).
+	 */
+	{
 		struct hb_onset_result on;
-		struct stat st;
+		int st = hb_fit_data_open(data, &oo, &d, &on, msg, sizeof msg);
 
-		/* aubio opens the recording by name: it must be a file. */
-		if (stat(data, &st) != 0 || !S_ISREG(st.st_mode)) {
-			status = bad("--data %s: a recording is read by name; accepted: a .wav "
-			             "file (not a pipe or a device)", data);
-			goto out;
-		}
-		if (hb_onset_detect(data, &oo, &on, msg, sizeof msg) != HB_OK) {
-			hb_onset_result_free(&on);
-			status = bad("--data %s", msg);
-			goto out;
-		}
-		print_onsets(data, &on);
-		if (hb_fit_data_from_times(on.t, NULL, on.n, data, &d, msg, sizeof msg) != HB_OK) {
-			hb_onset_result_free(&on);
-			status = bad("--data %s", msg);
-			goto out;
-		}
+		if (on.n > 0)
+			print_onsets(data, &on);
 		hb_onset_result_free(&on);
-	} else if (hb_fit_data_parse(text, textlen, data, &d, msg, sizeof msg) != HB_OK) {
-		status = bad("--data %s", msg);
-		goto out;
+		if (st != HB_OK) {
+			status = bad("--data %s", msg);
+			goto out;
+		}
 	}
-	free(text);
-	text = NULL;
 	printf("data        %s: %s, %zu row%s, %zu points, %s\n", data,
 	    d.kind == HB_FIT_SEQUENCE ? "one bouncing sequence (t_e; the first aligns the clocks)"
 	                           : "separate drops (one run per row from contact at v_i)",
@@ -539,10 +550,7 @@ fit_main(int argc, char **argv)
 		memcpy(r.fitted.description, desc, sizeof desc);
 	}
 	fflush(stdout);
-	if (write_fitted(out, &r.fitted, &pol.out[k_out].target) != 0)
-		goto out;
-	if (resid_path != NULL &&
-	    write_residuals(resid_path, &r, &pol.out[k_resid].target) != 0)
+	if (write_outputs(out, &r.fitted, resid_path, &r, &pol, k_out, k_resid) != 0)
 		goto out;
 	if (sig == 0)
 		sig = cli_signal;   /* caught while writing: the files are whole */
@@ -556,7 +564,6 @@ fit_main(int argc, char **argv)
 out:
 	cli_signals_restore();
 	hb_fit_free(fit);
-	free(text);
 	hb_fit_result_free(&r);
 	hb_fit_data_free(&d);
 	free(freebuf);

@@ -13,7 +13,7 @@
  *
  * Exit status: 0 the sweep is complete (points that failed numerically are
  * rows with their message); 1 it could not be completed (I/O, memory, an
- * incomplete merge); 2 bad input.
+ * incomplete merge); 2 bad input (also --merge of a folder without a sweep).
  */
 #include <errno.h>
 #include <signal.h>
@@ -22,6 +22,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -409,8 +410,13 @@ sweep_main(int argc, char **argv)
 		probe_dir(merge, &dt);
 		msg[0] = '\0';
 		if (hb_sweep_merge(merge, msg, sizeof msg) != HB_OK) {
+			char spec[4200];
+			struct stat sb;
+
 			fprintf(stderr, PROG ": merge: %s\n", msg);
-			status = 1;
+			/* a folder that holds no sweep is bad input; an incomplete one is not */
+			snprintf(spec, sizeof spec, "%s/sweep.preset", merge);
+			status = stat(spec, &sb) == 0 && S_ISREG(sb.st_mode) ? 1 : 2;
 			goto done;
 		}
 		if (!quiet)

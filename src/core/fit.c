@@ -309,7 +309,8 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 			goto fail;
 		for (int j = 0; j < i; j++)
 			if (strcmp(o->keys[i], o->keys[j]) == 0) {
-				hb_status_set(msg, n, HB_EINVAL, "--free: %s given twice", o->keys[i]);
+				hb_status_set(msg, n, HB_EINVAL, "--free: %s given twice; accepted: each "
+				              "key once", o->keys[i]);
 				goto fail;
 			}
 		snprintf(r->key[i], sizeof r->key[i], "%s", o->keys[i]);
@@ -376,8 +377,8 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 			goto fail;
 		}
 		if (c->fail[0]) {
-			hb_status_set(msg, n, HB_EINVAL, "at the start: %s; choose another start with "
-			    "--set", m);
+			hb_status_set(msg, n, HB_EINVAL, "at the start: %s; accepted: a start whose "
+			    "run reproduces the data's collisions (choose it with --set)", m);
 			goto fail;
 		}
 		for (size_t k = 0; k < npts; k++) {

@@ -96,7 +96,8 @@ static int
 check_data(struct hb_fit_data *d, char *msg, size_t mn)
 {
 	if (d->n == 0)
-		return hb_status_set(msg, mn, HB_EINVAL, "%s: no data rows", d->source);
+		return hb_status_set(msg, mn, HB_EINVAL, "%s: no data rows; accepted: a "
+		    "header row, then a row of numbers per measurement", d->source);
 	for (int k = 0; k < HB_FIT_OBS_COUNT; k++)
 		for (size_t i = 0; d->sd[k] != NULL && i < d->n; i++)
 			if (!(d->sd[k][i] > 0))
@@ -106,7 +107,8 @@ check_data(struct hb_fit_data *d, char *msg, size_t mn)
 	if (d->kind == HB_FIT_SEQUENCE) {
 		if (d->n < 2)
 			return hb_status_set(msg, mn, HB_EINVAL, "%s: a sequence needs at least 2 "
-			    "impact times (the first one only aligns the clocks)", d->source);
+			    "impact times (the first one only aligns the clocks); accepted: 2 or "
+			    "more rows of t_e", d->source);
 		for (size_t i = 1; i < d->n; i++)
 			if (!(d->col[HB_FIT_OBS_TE][i] > d->col[HB_FIT_OBS_TE][i - 1]))
 				return hb_status_set(msg, mn, HB_EINVAL, "%s: row %zu: t_e = %.9g is "
@@ -164,22 +166,6 @@ struct colmap {
 };
 
 int
-hb_fit_data_load(const char *path, struct hb_fit_data *d, char *msg, size_t mn)
-{
-	char *text = NULL;
-	size_t len = 0;
-	int st;
-
-	memset(d, 0, sizeof *d);
-	/* Read once, bounded: a pipe or a FIFO works, /dev/zero is refused. */
-	if ((st = hb_input_read(path, HB_INPUT_DATA_MAX, &text, &len, msg, mn)) != HB_OK)
-		return st;
-	st = hb_fit_data_parse(text, len, path, d, msg, mn);
-	free(text);
-	return st;
-}
-
-int
 hb_fit_data_parse(const char *text, size_t len, const char *name, struct hb_fit_data *d,
                   char *msg, size_t mn)
 {
@@ -235,6 +221,9 @@ hb_fit_data_read(FILE *f, const char *path, struct hb_fit_data *d, char *msg, si
 				    "NUL byte; accepted: text (a CSV file of numbers)", path, lineno, c + 1);
 			goto out;
 		}
+		/* A UTF-8 byte-order mark (a spreadsheet's CSV) is no part of the header. */
+		if (lineno == 1 && len >= 3 && memcmp(p, "\xEF\xBB\xBF", 3) == 0)
+			p += 3;
 		while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r'))
 			line[--len] = '\0';
 		while (isspace((unsigned char)*p))
@@ -242,8 +231,8 @@ hb_fit_data_read(FILE *f, const char *path, struct hb_fit_data *d, char *msg, si
 		if (*p == '\0' || *p == '#')
 			continue;
 		if ((nf = split(p, fld, MAX_COLS)) < 0) {
-			st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: more than %d columns", path,
-			    lineno, MAX_COLS);
+			st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: more than %d columns; "
+			    "accepted: at most %d", path, lineno, MAX_COLS, MAX_COLS);
 			goto out;
 		}
 		if (!have_hdr) { /* the header decides what the file is */
@@ -286,8 +275,9 @@ hb_fit_data_read(FILE *f, const char *path, struct hb_fit_data *d, char *msg, si
 			continue;
 		}
 		if (nf != ncol) {
-			st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: %d fields, the header has %d",
-			    path, lineno, nf, ncol);
+			st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: %d fields, the header has %d; "
+			    "accepted: one field per column of the header, separated by commas "
+			    "(numbers with a decimal point)", path, lineno, nf, ncol);
 			goto out;
 		}
 		for (int c = 0; c < nf; c++) {
@@ -299,8 +289,9 @@ hb_fit_data_read(FILE *f, const char *path, struct hb_fit_data *d, char *msg, si
 			errno = 0;
 			v = cnum_strtod(fld[c], &end);
 			if (fld[c][0] == '\0' || *end != '\0' || !isfinite(v)) {
-				st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: column %s: '%s'; accepted: "
-				    "a finite number in SI units", path, lineno, hname[c], fld[c]);
+				st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: column %s: '%.40s%s'; "
+				    "accepted: a finite number in SI units", path, lineno, hname[c],
+				    fld[c], strlen(fld[c]) > 40 ? "..." : "");
 				goto out;
 			}
 			if (push(map[c].dst, d->n, &map[c].cap, v) != 0) {

@@ -216,8 +216,9 @@ hb_onset_detect(const char *path, const struct hb_onset_options *o, struct hb_on
 	}
 	if (r->n == 0)
 		st = hb_status_set(msg, n, HB_EINVAL, "%s: no onsets found in %.3g s of sound "
-		    "(noise rms %.2g of full scale); lower --onset-threshold or check the "
-		    "recording", path, r->duration, r->noise);
+		    "(noise rms %.2g of full scale); accepted: a recording of clicks above the "
+		    "noise (a lower --onset-threshold finds fainter ones)", path, r->duration,
+		    r->noise);
 out:
 	if (od != NULL)
 		A->del_aubio_onset(od);

@@ -103,6 +103,24 @@ hb_outputs_is_shipped_preset(const char *path)
 }
 
 int
+hb_outputs_probe(const char *path, struct hb_atomic_target *t, char *msg, size_t n)
+{
+	int st;
+	size_t l;
+
+	if (path[0] == '\0')
+		return hb_status_set(msg, n, HB_EINVAL, "empty file name; accepted: %s",
+		                     HB_OUTPUTS_ACCEPTED);
+	if ((st = hb_atomic_probe(path, t, msg, n)) == HB_OK)
+		return HB_OK;
+	/* "PATH: reason", as the writer says it, then what is accepted */
+	l = strlen(msg);
+	if (strstr(msg, "expected") == NULL && l < n)
+		snprintf(msg + l, n - l, "; accepted: %s", HB_OUTPUTS_ACCEPTED);
+	return st;
+}
+
+int
 hb_outputs_add(struct hb_outputs *o, const char *path, const char *what, char *msg, size_t n)
 {
 	struct hb_atomic_target t;
@@ -113,17 +131,17 @@ hb_outputs_add(struct hb_outputs *o, const char *path, const char *what, char *m
 	if (o->nout >= HB_OUTPUTS_MAX)
 		return hb_status_set(msg, n, HB_EINVAL, "%s %s: too many outputs in one command",
 		                     what, path);
-	if ((st = hb_atomic_probe(path, &t, msg, n)) != HB_OK)
-		return st;   /* "PATH: reason", as the writer says it */
+	if ((st = hb_outputs_probe(path, &t, msg, n)) != HB_OK)
+		return st;
 	for (int k = 0; k < o->nin; k++)
 		if (hb_outputs_same_file(path, o->in[k].path))
 			return hb_status_set(msg, n, HB_EINVAL, "%s %s is %s; an output never "
-			    "overwrites an input of its command: name another file", what, path,
+			    "overwrites an input of its command; accepted: another file", what, path,
 			    o->in[k].what);
 	if (t.how != HB_ATOMIC_IN_PLACE && hb_outputs_is_shipped_preset(path))
 		return hb_status_set(msg, n, HB_EINVAL, "%s %s is a shipped preset; an output "
-		    "never overwrites it: put the file in another folder or name it otherwise",
-		    what, path);
+		    "never overwrites it; accepted: a file outside the preset folders (or named "
+		    "otherwise)", what, path);
 	for (int k = 0; k < o->nout; k++) {
 		/* Two devices written in place (/dev/null twice) are no conflict. */
 		if (t.how == HB_ATOMIC_IN_PLACE && o->out[k].target.how == HB_ATOMIC_IN_PLACE)

@@ -197,10 +197,13 @@ parse_count(const char *t, long *out)
 #define RANGE_HELP "expected KEY=FROM:TO:N, KEY=FROM:TO:N:log or KEY=V1,V2,... " \
 	"(e.g. --vary law.c=1e8:1e10:50:log, --vary initial.x0='10 um,40 um')"
 
-/* A range FROM:TO:N[:log] into a->val. */
+/*
+ * A range FROM:TO:N[:log] into a->val; others: the points of the other
+ * axes, so that a sweep over the limit is refused before a value is made.
+ */
 static int
 parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw,
-            char *msg, size_t n)
+            double others, char *msg, size_t n)
 {
 	char *part[5] = { 0 }, num[64];
 	const char *p = a->spec, *c;
@@ -234,8 +237,16 @@ parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw
 	if (a->n > sw->max_points) {
 		/* Refused before a value is made: 10^9 would take minutes and gigabytes. */
 		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: %ld points, more than the "
-		                "limit of %ld points%s%s", a->key, a->spec, a->n, sw->max_points,
+		                "limit of %ld points; accepted: at most %ld points%s%s", a->key,
+		                a->spec, a->n, sw->max_points, sw->max_points,
 		                sw->more[0] ? "; " : "", sw->more);
+		goto out;
+	}
+	if ((double)a->n * others > (double)sw->max_points) {
+		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s: the sweep would have %.0f "
+		                   "points, more than the limit of %ld points; accepted: at most "
+		                   "%ld points in all%s%s", a->key, (double)a->n * others,
+		                   sw->max_points, sw->max_points, sw->more[0] ? "; " : "", sw->more);
 		goto out;
 	}
 	if ((rc = canonical(sc, a->key, part[0], num, sizeof num, msg, n)) != HB_OK)
@@ -256,7 +267,8 @@ parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw
 	}
 	if (lg && (from == 0 || to == 0 || (from < 0) != (to < 0))) {
 		rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s=%s: a log range needs FROM and TO "
-		                "of the same sign, not 0", a->key, a->spec);
+		                "of the same sign, not 0; accepted: FROM and TO both > 0 or both "
+		                "< 0", a->key, a->spec);
 		goto out;
 	}
 	a->val = calloc((size_t)a->n, sizeof *a->val);
@@ -335,6 +347,7 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 	struct hb_scene sc;
 	char *key;
 	int k, rc;
+	double others;
 
 	memset(&a, 0, sizeof a);
 	if (eq == NULL)
@@ -353,7 +366,8 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	if (strlen(key) >= sizeof a.spec) {
 		free(key);
-		return hb_status_set(msg, n, HB_EINVAL, "--vary %s: value too long", a.key);
+		return hb_status_set(msg, n, HB_EINVAL, "--vary %s: value too long; accepted: up "
+		                     "to %zu characters", a.key, sizeof a.spec - 1);
 	}
 	strcpy(a.spec, key);
 	free(key);
@@ -364,8 +378,12 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 		return hb_status_set(msg, n, HB_EINVAL, "--vary %s: too many axes; accepted: at "
 		                  "most %d", a.key, SWEEP_MAX_AXES);
 	check_scene(sw, k, &sc);
+	others = 1;
+	for (int i = 0; i < sw->naxes; i++)
+		if (i != k)
+			others *= (double)sw->ax[i].n;
 	if (strchr(a.spec, ':') != NULL)
-		rc = parse_range(&a, &sc, sw, msg, n);
+		rc = parse_range(&a, &sc, sw, others, msg, n);
 	else
 		rc = parse_list(&a, &sc, msg, n);
 	if (rc != HB_OK) {
@@ -373,14 +391,12 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 		return rc;
 	}
 	{
-		double prod = (double)a.n;   /* no overflow: a double for the message */
+		double prod = (double)a.n * others;   /* no overflow: a double for the message */
 
-		for (int i = 0; i < sw->naxes; i++)
-			if (i != k)
-				prod *= (double)sw->ax[i].n;
 		if (prod > (double)sw->max_points) {
 			rc = hb_status_set(msg, n, HB_EINVAL, "--vary %s: the sweep would have %.0f "
-			                   "points, more than the limit of %ld points%s%s", a.key, prod,
+			                   "points, more than the limit of %ld points; accepted: at most "
+			                   "%ld points in all%s%s", a.key, prod, sw->max_points,
 			                   sw->max_points, sw->more[0] ? "; " : "", sw->more);
 			axis_free(&a);
 			return rc;

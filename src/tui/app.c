@@ -174,14 +174,6 @@ app_run(const struct app_options *o, char *msg, size_t n)
 	             sizeof path, msg, n);
 	if (s == NULL)
 		return 2;
-	if (o->script == NULL && (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO))) {
-		snprintf(msg, n, "the explorer needs a terminal: standard %s is not one; expected a "
-		         "terminal there, or --batch PRESET for a report, or --script FILE to play keys "
-		         "without a terminal",
-		         !isatty(STDIN_FILENO) ? "input" : "output");
-		hb_sim_free(s);
-		return 2;
-	}
 	a = calloc(1, sizeof *a);
 	if (a == NULL) {
 		hb_sim_free(s);
@@ -195,15 +187,25 @@ app_run(const struct app_options *o, char *msg, size_t n)
 	a->slowmo = 1;
 	a->focus = FOCUS_TABLE;
 
+	/*
+	 * Every input of the command line (preset and --set above, --data here,
+	 * --script as it is played) before a terminal is required: bad input is
+	 * reported as such, with or without a terminal.
+	 */
 	if (o->data != NULL && fitov_load(a, o->data, msg, n) != 0) {
-		status = 2; /* bad input, before the terminal is taken */
+		status = 2;
 	} else if (o->script != NULL) {
 		status = script_run(a, o->script, msg, n);
+	} else if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
+		snprintf(msg, n, "the explorer needs a terminal: standard %s is not one; expected a "
+		         "terminal there, or --batch PRESET for a report, or --script FILE to play keys "
+		         "without a terminal",
+		         !isatty(STDIN_FILENO) ? "input" : "output");
+		status = 2;
 	} else {
 		if (term_begin(msg, n) != 0) { /* an unknown TERM is bad input */
-			hb_sim_free(a->sim);
-			free(a);
-			return 2;
+			status = 2;
+			goto done;
 		}
 		a->braille = term_utf8() && !o->ascii;
 		a->colour = term_colour();
@@ -217,6 +219,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 			status = 128 + term_signalled();
 		}
 	}
+done:
 	fitov_free(a);
 	sweep_view_free(a);
 	pins_clear(a);

@@ -42,6 +42,10 @@
 #include <unistd.h>
 #include <wchar.h>
 
+#include "hybounce/atomic.h"
+#include "hybounce/outputs.h"
+#include "hybounce/status.h"
+
 #include "clock.h"
 #include "keys.h"
 #include "term.h"
@@ -55,15 +59,32 @@ nap(void)
 	nanosleep(&ts, NULL);
 }
 
-int
-script_dump(const char *path)
+/* Writes the dump through the atomic writer; -1 with "PATH: reason; accepted: ..." */
+static int
+write_dump(const char *path, const char *text, size_t len, char *msg, size_t n)
 {
-	FILE *f = fopen(path, "w");
-	char row[4096], mb[MB_LEN_MAX + 1];
-	mbstate_t st;
+	struct hb_atomic_target t;
 
-	if (f == NULL)
+	if (hb_outputs_probe(path, &t, msg, n) != HB_OK)
 		return -1;
+	if (hb_atomic_write_file(path, text, len, msg, n) != HB_OK)
+		return -1;
+	return 0;
+}
+
+int
+script_dump(const char *path, char *msg, size_t n)
+{
+	char row[4096], mb[MB_LEN_MAX + 1], *text = NULL;
+	size_t tlen = 0;
+	mbstate_t st;
+	FILE *f = open_memstream(&text, &tlen);
+	int rc;
+
+	if (f == NULL) {
+		snprintf(msg, n, "%s: out of memory", path);
+		return -1;
+	}
 	for (int y = 0; y < LINES; y++) {
 		size_t len = 0, keep = 0;
 		for (int x = 0; x < COLS; x++) {
@@ -91,9 +112,15 @@ script_dump(const char *path)
 		row[keep] = 0;
 		fprintf(f, "%s\n", row);
 	}
-	if (fclose(f) != 0)
+	if (fclose(f) != 0 || text == NULL) {
+		free(text);
+		snprintf(msg, n, "%s: out of memory", path);
 		return -1;
-	return 0;
+	}
+	/* the output policy (outputs.h): written atomically, what is accepted said */
+	rc = write_dump(path, text, tlen, msg, n);
+	free(text);
+	return rc;
 }
 
 static int live;   /* playing on the real screen */
@@ -211,9 +238,12 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 			wait_ms(a, ms);
 		} else if (strncmp(line, "dump ", 5) == 0) {
 			app_draw(a);
-			if (script_dump(line + 5) != 0) {
-				snprintf(msg, n, "%s:%d: dump %s: %s", path, lineno, line + 5, strerror(errno));
-				status = 1;
+			char why[1024];
+
+			if (script_dump(line + 5, why, sizeof why) != 0) {
+				/* an output the script names that cannot be written: bad input */
+				snprintf(msg, n, "%s:%d: dump %s", path, lineno, why);
+				status = 2;
 				break;
 			}
 		} else if (sscanf(line, "size %dx%d", &cols, &lines) == 2) {

@@ -219,9 +219,10 @@ pickers_key(struct app *a, int ch);
 int
 script_run(struct app *a, const char *path, char *msg, size_t n);
 
-/* Writes the current screen as text (UTF-8) to path.  Returns 0 or -1. */
+/* Writes the current screen as text (UTF-8) to path, atomically (outputs.h).
+ * Returns 0, or -1 with "PATH: reason; accepted: ..." in msg. */
 int
-script_dump(const char *path);
+script_dump(const char *path, char *msg, size_t n);
 
 /* overlay_fit.c: measured data over the scene, and the fit (D, M, F; --data). */
 struct canvas;

@@ -119,6 +119,16 @@ if command -v sox >/dev/null 2>&1; then
 		notok "the recording fits (exit $rc)"
 		grep -E 'stopped|law\.' "$T/rec.out" | sed 's/^/# /'
 	fi
+	# the explorer's --data reads the same recording through the same loader
+	printf 'M\ndump %s\nq\n' "$T/rec.screen" >"$T/rec.keys"
+	"$BIN" steel-on-bitumen --data "$T/rec.wav" --script "$T/rec.keys" >/dev/null 2>"$T/rec.xerr"
+	rc=$?
+	if [ "$rc" -eq 0 ] && grep -q 'rec.wav: one bouncing sequence, 8 impacts' "$T/rec.screen"; then
+		ok "the explorer's --data takes the recording as fit does (8 impacts)"
+	else
+		notok "the explorer's --data takes the recording as fit does (exit $rc)" "$T/rec.xerr"
+		sed 's/^/# /' "$T/rec.screen" 2>/dev/null | head -12
+	fi
 else
 	notok "sox is installed (make deps installs it)"
 fi

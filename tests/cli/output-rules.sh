@@ -138,7 +138,7 @@ fi
 # Work bounded: 10^9 points refused at once, naming the count, the limit and --max-points.
 (cd "$W" && timeout 20 "$BIN" sweep steel-on-bitumen --vary law.c=1:2:1000000000 --out big 2>"$T/err")
 rc=$?
-if [ "$rc" -eq 2 ] && grep -q '1000000000 points, more than the limit of 1000000 points; --max-points N' "$T/err" &&
+if [ "$rc" -eq 2 ] && grep -q '1000000000 points, more than the limit of 1000000 points; accepted: at most 1000000 points; --max-points N' "$T/err" &&
     [ ! -e "$W/big" ]; then
 	ok "a sweep of 10^9 points is refused at once, naming the limit and --max-points"
 else

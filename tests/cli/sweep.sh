@@ -172,8 +172,8 @@ if [ $? -eq 0 ] && same_sweep "$T/one" "$T/sh"; then
 	ok "--shard 0/3, 1/3, 2/3 then --merge: the files of the one-machine run"
 else notok "--shard then --merge equals the one-machine run" "$T/err"; fi
 "$BIN" sweep --merge "$T/nothing" 2>"$T/err"
-[ $? -eq 1 ] && grep -q 'expected a sweep folder' "$T/err" && ok "--merge of a folder without a sweep: exit 1" ||
-	notok "--merge of a folder without a sweep: exit 1" "$T/err"
+[ $? -eq 2 ] && grep -q 'expected a sweep folder' "$T/err" && ok "--merge of a folder without a sweep: exit 2 (bad input)" ||
+	notok "--merge of a folder without a sweep: exit 2 (bad input)" "$T/err"
 
 # 11. The classic maps of examples/sweeps: each is a valid preset (batch
 # --check) and its sweep runs: every point ok, e in (0, 1] where a
