@@ -449,3 +449,13 @@ figures: $(BIN)
 	done
 	@HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) plot steel-on-bitumen --kind loop --collisions 0,1,2,4 \
 	    --dpi 150 --out $(FIGURES)/steel-on-bitumen-loop.png
+
+# The pgfplots source of hybounce plot compiled with pdflatex
+# (tests/tex/check.sh): not part of make check, TeX Live being heavy;
+# make deps-tex installs texlive-pictures (pgfplots) and texlive-latex-base.
+.PHONY: check-tex deps-tex
+check-tex: $(BIN)
+	@HYBOUNCE_BIN=$(CURDIR)/$(BIN) HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/tex/check.sh
+
+deps-tex:
+	@$(MAKE) --no-print-directory deps APT_PACKAGES='texlive-pictures texlive-latex-base'

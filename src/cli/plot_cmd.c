@@ -2,7 +2,7 @@
 /*
  * plot_cmd.c - `hybounce plot PRESET --out FILE.{png,pdf,svg}`: runs the
  * preset and draws one figure of the run (plot_figures.c builds the
- * model, plot_cairo.c draws it).
+ * model, plot_cairo.c draws it, plot_tex.c writes it as pgfplots source).
  *
  * Exit status as batch mode's: 0, 1 the run failed numerically (the figure
  * of what was computed is written), 2 bad input or an output that could
@@ -23,6 +23,7 @@
 #include "cnum.h"
 #include "plot_cairo.h"
 #include "plot_cmd.h"
+#include "plot_tex.h"
 #include "signals.h"
 
 #define PROG "hybounce plot"
@@ -38,7 +39,8 @@ usage(FILE *f)
 "Runs PRESET to its end and draws one figure of the run.\n"
 "\n"
 "  -o, --out FILE          the figure: FILE.png, FILE.pdf or FILE.svg (by its\n"
-"                          extension)\n"
+"                          extension), or FILE.tex: pgfplots source for pdflatex,\n"
+"                          its data in FILE.dat beside it\n"
 "  -k, --kind KIND         state (default): x, v, x_c, F_c, z_c (and F_e where it\n"
 "                          acts) against t in stacked panels, contacts shaded;\n"
 "                          observables: t_d, t_f, v_i, e, x_c^max, x_c^r,\n"
@@ -194,7 +196,8 @@ plot_main(int argc, char **argv)
 	enum plot_kind kind;
 	enum plot_format fmt;
 	double dpi = 300, w = 252, h = -1;
-	char path[1024], msg[4096];
+	char path[1024], msg[4096], datpath[4096];
+	const char *datname = NULL;
 	struct hb_scene sc;
 	struct hb_outputs pol;
 	struct hb_sim *s = NULL;
@@ -237,7 +240,7 @@ plot_main(int argc, char **argv)
 	preset = argv[optind];
 	if (out == NULL) {
 		free(sets);
-		return bad("no --out FILE; expected a file ending in .png, .pdf or .svg");
+		return bad("no --out FILE; expected a file ending in .png, .pdf, .svg or .tex");
 	}
 	if (ends_with(out, ".png"))
 		fmt = PLOT_PNG;
@@ -245,10 +248,24 @@ plot_main(int argc, char **argv)
 		fmt = PLOT_PDF;
 	else if (ends_with(out, ".svg"))
 		fmt = PLOT_SVG;
+	else if (ends_with(out, ".tex") && strlen(out) > 4 && out[strlen(out) - 5] != '/')
+		fmt = PLOT_TEX;
 	else {
 		free(sets);
-		return bad("--out %s: unknown format; expected a file ending in .png, .pdf or .svg",
-		           out);
+		return bad("--out %s: unknown format; expected a file ending in .png, .pdf, .svg "
+		           "or .tex", out);
+	}
+	if (fmt == PLOT_TEX) {
+		/* FILE.tex reads FILE.dat, beside it */
+		size_t l = strlen(out) - 4;
+
+		if (l + 5 > sizeof datpath) {
+			free(sets);
+			return bad("--out %s: the name is too long", out);
+		}
+		memcpy(datpath, out, l);
+		memcpy(datpath + l, ".dat", 5);
+		datname = strrchr(datpath, '/') != NULL ? strrchr(datpath, '/') + 1 : datpath;
 	}
 	if (strcmp(kind_s, "state") == 0)
 		kind = PLOT_STATE;
@@ -317,6 +334,9 @@ plot_main(int argc, char **argv)
 	msg[0] = '\0';
 	if (hb_outputs_add(&pol, out, "--out", msg, sizeof msg) != HB_OK)
 		return bad("%s%s", strncmp(msg, "--out ", 6) == 0 ? "" : "--out ", msg);
+	if (fmt == PLOT_TEX && hb_outputs_add(&pol, datpath, "the data file of --out", msg,
+	                                      sizeof msg) != HB_OK)
+		return bad("%s", msg);
 
 	cli_signals_watch();
 	msg[0] = '\0';
@@ -360,7 +380,19 @@ plot_main(int argc, char **argv)
 		status = bad("--out %s", msg);
 		goto done;
 	}
-	if (plot_cairo_write(fig, fmt, dpi, f, msg, sizeof msg) != 0) {
+	if (fmt == PLOT_TEX) {
+		FILE *d = hb_atomic_add(&set, datpath, msg, sizeof msg);
+
+		if (d == NULL) {
+			hb_atomic_abort(&set);
+			status = bad("--out %s", msg);
+			goto done;
+		}
+		rc = plot_tex_write(fig, f, d, datname, cli_provenance(), msg, sizeof msg);
+	} else {
+		rc = plot_cairo_write(fig, fmt, dpi, f, msg, sizeof msg);
+	}
+	if (rc != 0) {
 		hb_atomic_abort(&set);
 		status = bad("--out %s: %s", out, msg);
 		goto done;
@@ -369,7 +401,9 @@ plot_main(int argc, char **argv)
 		status = bad("--out %s", msg);
 		goto done;
 	}
-	print_wrote(out, &pol.out[pol.nout - 1].target);
+	print_wrote(out, &pol.out[0].target);
+	if (fmt == PLOT_TEX)
+		print_wrote(datpath, &pol.out[1].target);
 done:
 	if (fig != NULL) {
 		plot_figure_free(fig);

@@ -6,7 +6,8 @@
 # observables; one loop); the contact shading over the columns of the
 # collisions of the same run's CSV (batch --collisions) and clear over
 # the flights; the legend above the frames, in the palette's colours;
-# PDF and SVG well formed; --size in pixels gives that PNG, under 300 kB;
+# PDF and SVG well formed; FILE.tex with FILE.dat (one axis per panel,
+# the shading, the columns it reads; tests/tex/check.sh compiles it); --size in pixels gives that PNG, under 300 kB;
 # bad input exits 2 and writes nothing; --help names every option the man
 # page documents.
 . "$(dirname "$0")/common.inc"
@@ -124,6 +125,42 @@ else
 	notok "plot --size 1600x1200: $wh, $size bytes" "$T/err"
 fi
 
+# --- pgfplots source: FILE.tex and FILE.dat (make check-tex compiles them) --
+"$BIN" plot hertz-elastic --out "$T/fig.tex" 2>"$T/err"
+rc=$?
+if [ $rc -eq 0 ] && grep -q "^wrote $T/fig.tex\$" "$T/err" && grep -q "^wrote $T/fig.dat\$" "$T/err"; then
+	ok "plot FILE.tex: writes FILE.tex and FILE.dat"
+else
+	notok "plot FILE.tex: exit $rc" "$T/err"
+fi
+# one axis per panel, one shaded rectangle per collision, every curve a
+# pair of columns of the data file, every environment closed
+"$BIN" --batch hertz-elastic -q --collisions "$T/h.csv" >/dev/null 2>&1
+if [ "$(grep -c '^\\begin{axis}' "$T/fig.tex")" = 4 ] && [ "$(grep -c '^\\end{axis}' "$T/fig.tex")" = 4 ] &&
+   [ "$(grep -c '^\\fill\[hbshade\]' "$T/fig.tex")" = "$((4 * $(grep -c '^[0-9]' "$T/h.csv")))" ] &&
+   grep -q '^\\end{document}$' "$T/fig.tex"; then
+	ok "plot FILE.tex: 4 axes, each collision shaded in each"
+else
+	notok "plot FILE.tex: axes or shading" "$T/fig.tex"
+fi
+missing=
+for c in $(grep -o 'table\[x=x[0-9]*, y=y[0-9]*\] {fig.dat}' "$T/fig.tex" | sed 's/.*x=\(x[0-9]*\), y=\(y[0-9]*\).*/\1 \2/'); do
+	grep -v '^#' "$T/fig.dat" | head -n 1 | tr ' ' '\n' | grep -qx "$c" || missing="$missing $c"
+done
+cols=$(grep -v '^#' "$T/fig.dat" | head -n 1 | wc -w)
+if [ -z "$missing" ] && [ "$cols" = 8 ] &&
+   [ "$(grep -v '^#' "$T/fig.dat" | awk '{ print NF }' | sort -u)" = 8 ]; then
+	ok "plot FILE.tex: the data file has the 8 columns the .tex reads, on every row"
+else
+	notok "plot FILE.tex: data columns ($cols; missing:$missing)" "$T/fig.dat"
+fi
+if LC_ALL=de_DE.UTF-8 "$BIN" plot hertz-elastic --out "$T/de.tex" 2>/dev/null &&
+   ! grep -v '^#' "$T/de.dat" | grep -q '[0-9],[0-9]'; then
+	ok "plot FILE.tex: numbers with a decimal point under de_DE"
+else
+	notok "plot FILE.tex: de_DE numbers" "$T/de.dat"
+fi
+
 # --- bad input: exit 2, a message naming what is accepted, nothing written --
 bad() {
 	name=$1 pattern=$2
@@ -136,7 +173,7 @@ bad() {
 		notok "plot $name: exit $rc" "$T/err"
 	fi
 }
-bad 'unknown format' 'expected a file ending in .png, .pdf or .svg' hertz-elastic --out "$T/bad.gif"
+bad 'unknown format' 'expected a file ending in .png, .pdf, .svg or .tex' hertz-elastic --out "$T/bad.gif"
 bad 'no --out' 'no --out FILE' hertz-elastic
 bad 'unknown kind' 'expected state, observables or loop' hertz-elastic --kind heat --out "$T/bad.png"
 bad 'bad --width' 'expected a length such as 3.5in' hertz-elastic --width 3.5 --out "$T/bad.png"
