@@ -6,6 +6,7 @@
 # observables; one loop); the contact shading over the columns of the
 # collisions of the same run's CSV (batch --collisions) and clear over
 # the flights; the legend above the frames, in the palette's colours;
+# SIGTERM writes the figure of what was computed and exits 143;
 # PDF and SVG well formed; FILE.tex with FILE.dat (one axis per panel,
 # the shading, the columns it reads; tests/tex/check.sh compiles it); --size in pixels gives that PNG, under 300 kB;
 # bad input exits 2 and writes nothing; --help names every option the man
@@ -159,6 +160,24 @@ if LC_ALL=de_DE.UTF-8 "$BIN" plot hertz-elastic --out "$T/de.tex" 2>/dev/null &&
 	ok "plot FILE.tex: numbers with a decimal point under de_DE"
 else
 	notok "plot FILE.tex: de_DE numbers" "$T/de.dat"
+fi
+
+# --- a signal: the figure of what was computed, then 128 + N (signals.c) ----
+"$BIN" plot hertz-elastic --set run.T=1e5 --set run.J=1e12 --dpi 72 --out "$T/sig.png" 2>"$T/err" &
+pid=$!
+i=0
+# until the run has had 0.3 s of CPU (utime + stime, in ticks)
+while [ "$(awk '{ print $14 + $15 }' "/proc/$pid/stat" 2>/dev/null || echo 0)" -lt 30 ] && [ "$i" -lt 400 ]; do
+	sleep 0.05; i=$((i + 1))
+done
+kill -TERM "$pid"
+wait "$pid"
+rc=$?
+if [ "$rc" -eq 143 ] && grep -q '^hybounce plot: SIGTERM: the run stopped; the figure shows what was computed$' "$T/err" &&
+   grep -q "^wrote $T/sig.png\$" "$T/err"; then
+	png "plot, SIGTERM: the figure of what was computed, exit 143" "$T/sig.png"
+else
+	notok "plot, SIGTERM: exit $rc" "$T/err"
 fi
 
 # --- bad input: exit 2, a message naming what is accepted, nothing written --
