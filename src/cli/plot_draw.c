@@ -130,9 +130,32 @@ draw_series(const struct plot_figure *f, const struct plot_panel *p,
 				            1.6 * f->lw);
 }
 
+/*
+ * The size of the y titles: the text size, or smaller (down to 0.6 of it)
+ * where a title is longer than its panel is high (a slide of many short
+ * panels), the same for every panel.
+ */
+static double
+ytitle_size(const struct plot_figure *f, const struct plot_backend *b)
+{
+	double size = f->font;
+	char lab[96];
+
+	for (int k = 0; k < f->npanels; k++) {
+		const struct plot_panel *p = &f->p[k];
+		double tw;
+
+		plot_axis_label(&p->ya, lab, sizeof lab);
+		tw = plot_text_width(lab, f->font, b->text_width, b->ctx);
+		if (tw > p->fh)
+			size = fmin(size, fmax(f->font * p->fh / tw, 0.6 * f->font));
+	}
+	return size;
+}
+
 static void
 draw_panel(const struct plot_figure *f, const struct plot_panel *p,
-           const struct plot_backend *b)
+           const struct plot_backend *b, double ysize)
 {
 	const double fs = f->font, tl = 0.35 * fs, frame = 0.5 * f->lw;
 	char lab[96];
@@ -202,7 +225,7 @@ draw_panel(const struct plot_figure *f, const struct plot_panel *p,
 
 		for (int k = 0; k < p->ya.nticks; k++)
 			wmax = fmax(wmax, plot_text_width(p->ya.ticklabel[k], fs, b->text_width, b->ctx));
-		draw_text(b, p->fx - 0.4 * fs - wmax - 0.5 * fs, p->fy + p->fh / 2, M_PI / 2, fs,
+		draw_text(b, p->fx - 0.4 * fs - wmax - 0.5 * fs, p->fy + p->fh / 2, M_PI / 2, ysize,
 		          lab, 0.5, 0);
 	}
 	if (p->xlabels) {
@@ -258,6 +281,8 @@ draw_legend(const struct plot_figure *f, const struct plot_backend *b)
 void
 plot_draw(const struct plot_figure *f, const struct plot_backend *b)
 {
+	const double ysize = ytitle_size(f, b);
+
 	b->colour(b->ctx, 1, 1, 1);
 	b->fill_rect(b->ctx, 0, 0, f->w, f->h);
 	if (f->title[0] != '\0') {
@@ -265,7 +290,7 @@ plot_draw(const struct plot_figure *f, const struct plot_backend *b)
 		draw_text(b, f->w / 2, 0.5 * f->font, 0, f->font, f->title, 0.5, 1);
 	}
 	for (int k = 0; k < f->npanels; k++)
-		draw_panel(f, &f->p[k], b);
+		draw_panel(f, &f->p[k], b, ysize);
 	if (f->nlegend > 0)
 		draw_legend(f, b);
 }
