@@ -36,7 +36,8 @@ PKG_CONFIG ?= pkg-config
 APT_PACKAGES := libgsl-dev libncurses-dev libinih-dev libcriterion-dev pkg-config tmux mandoc \
                 clang libclang-rt-14-dev strace parallel slurm-wlm munge \
                 libaubio-dev aubio-tools sox locales python3-pandas \
-                python3-cffi python3-numpy python3-pytest
+                python3-cffi python3-numpy python3-pytest \
+                libcairo2-dev libpng-dev poppler-utils
 # Locales the tests run under (decimal commas, a Turkish case fold): `make
 # deps` generates those `locale -a` lacks with localedef (about 2 MB each,
 # where locales-all would take 220 MB).
@@ -74,6 +75,16 @@ AUBIO_CFLAGS := $(shell $(PKG_CONFIG) --cflags aubio 2>/dev/null)
 AUBIO_SONAME := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir aubio 2>/dev/null)/libaubio.so" \
                   2>/dev/null | sed -n 's/^ *SONAME *//p')
 AUBIO_LIBS   := -ldl
+# cairo (the figures of `hybounce plot`): its headers for plot_cairo.o (as
+# system headers: -isystem), the library opened with dlopen when a figure
+# is first drawn (src/cli/plot_cairo.c says why), under the soname of the
+# libcairo pkg-config finds.
+# libpng likewise (a PNG is written with it: plot_cairo.c says why).
+CAIRO_CFLAGS := $(patsubst -I%,-isystem %,$(shell $(PKG_CONFIG) --cflags cairo libpng 2>/dev/null))
+CAIRO_SONAME := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir cairo 2>/dev/null)/libcairo.so" \
+                  2>/dev/null | sed -n 's/^ *SONAME *//p')
+PNG_SONAME   := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir libpng 2>/dev/null)/libpng.so" \
+                  2>/dev/null | sed -n 's/^ *SONAME *//p')
 # The hybounce executable links GSL, inih and ncursesw from their static
 # archives (shipped by the same -dev packages): resolving libgsl's dynamic
 # relocations took 0.8M of the 1.3M instructions of a batch run that does
@@ -135,7 +146,7 @@ pc_rel      = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
 .PHONY: fuzz fuzzers fuzz-smoke
 
 .PHONY: python bench-python
-.PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man lib FORCE golden bench-docs
+.PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man lib FORCE golden bench-docs figures
 
 all: $(BIN) lib python
 
@@ -160,6 +171,9 @@ $(BUILD)/tests/%.o: tests/%.c
 $(BUILD)/src/core/onset.o: CORE_CFLAGS += $(AUBIO_CFLAGS)
 $(BUILD)/src/core/onset_aubio.o: CORE_CFLAGS += $(AUBIO_CFLAGS) \
     $(if $(AUBIO_SONAME),-DAUBIO_SONAME='"$(AUBIO_SONAME)"')
+$(BUILD)/src/cli/plot_cairo.o: CPPFLAGS += $(CAIRO_CFLAGS) \
+    $(if $(CAIRO_SONAME),-DCAIRO_SONAME='"$(CAIRO_SONAME)"') \
+    $(if $(PNG_SONAME),-DPNG_SONAME='"$(PNG_SONAME)"')
 
 $(CORE_LIB): $(CORE_OBJ)
 	@mkdir -p $(@D)
@@ -208,8 +222,10 @@ $(TUI_LIB): $(TUI_OBJ)
 $(BIN): $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(BIN_LIBS) $(AUBIO_LIBS)
 
-$(UNIT): $(TEST_OBJ) $(TUI_LIB) $(CORE_LIB)
-	$(CC) $(LDFLAGS) -o $@ $(TEST_OBJ) $(TUI_LIB) $(CORE_LIB) $(TEST_LIBS) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
+# The figure model of hybounce plot (no plotting library) is unit-tested too.
+UNIT_CLI_OBJ := $(BUILD)/src/cli/plot_model.o
+$(UNIT): $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
+	$(CC) $(LDFLAGS) -o $@ $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(TEST_LIBS) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
 
 $(BENCHBIN): $(BENCH_OBJ) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(BENCH_OBJ) $(CORE_LIB) $(CORE_LIBS)
@@ -457,3 +473,28 @@ readme-examples: $(BIN)
 	. tests/tui/readme.inc && readme_screen $(abspath $(BIN)) | readme_splice README.md SCREEN \
 	    && readme_batch $(abspath $(BIN)) | readme_splice README.md BATCH
 docs: readme-examples
+
+# The README's figures (docs/figures/*.png), drawn by hybounce plot from the
+# paper's three studies: the state against t and the observables per
+# collision of each, the hysteresis loops of the first; 150 dpi at a
+# journal column's width.
+FIGURES := docs/figures
+figures: $(BIN)
+	@mkdir -p $(FIGURES)
+	@for p in steel-on-bitumen ptfe-pom permanent-contact-bwmcl; do \
+	    HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) plot $$p --dpi 150 --out $(FIGURES)/$$p-state.png && \
+	    HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) plot $$p --kind observables --dpi 150 \
+	        --out $(FIGURES)/$$p-observables.png || exit 1; \
+	done
+	@HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) plot steel-on-bitumen --kind loop --collisions 0,1,2,4 \
+	    --dpi 150 --out $(FIGURES)/steel-on-bitumen-loop.png
+
+# The pgfplots source of hybounce plot compiled with pdflatex
+# (tests/tex/check.sh): not part of make check, TeX Live being heavy;
+# make deps-tex installs texlive-pictures (pgfplots) and texlive-latex-base.
+.PHONY: check-tex deps-tex
+check-tex: $(BIN)
+	@HYBOUNCE_BIN=$(CURDIR)/$(BIN) HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/tex/check.sh
+
+deps-tex:
+	@$(MAKE) --no-print-directory deps APT_PACKAGES='texlive-pictures texlive-latex-base'

@@ -7,6 +7,7 @@
  *     hybounce --batch PRESET [OPTIONS]    batch mode (batch.c)
  *     hybounce --list-presets | --list-laws | --help | --version
  *     hybounce fit PRESET --data FILE --free KEY,...   (fit_cmd.c)
+ *     hybounce plot PRESET --out FILE.png              (plot_cmd.c)
  *
  * Exit status: 0 success; 1 the run failed numerically; 2 bad input
  * (unknown option, bad preset, bad --set, unwritable export path) or
@@ -31,6 +32,7 @@
 #include "batch.h"
 #include "sweep_cli.h"
 #include "fit_cmd.h"
+#include "plot_cmd.h"
 #include "signals.h"
 
 #define PROG "hybounce"
@@ -76,6 +78,8 @@ DEFAULT_PRESET ")\n"
 "       hybounce sweep PRESET --vary KEY=SPEC... --out DIR   (see hybounce sweep --help)\n"
 "       hybounce fit PRESET --data FILE --free KEY[,KEY...] [OPTIONS]\n"
 "                               fit parameters to measurements (hybounce fit --help)\n"
+"       hybounce plot PRESET --out FILE.{png,pdf,svg} [--kind state|observables|loop]\n"
+"                               draw a figure of a run (hybounce plot --help)\n"
 "\n"
 "Repeated impacts of two bodies under incremental contact laws, as a hybrid\n"
 "system (flows and jumps over hybrid time (t, j)).\n"
@@ -176,6 +180,12 @@ hybounce_main(int argc, char **argv)
 
 	if (argc > 1 && strcmp(argv[1], "sweep") == 0)
 		return sweep_main(argc - 1, argv + 1);   /* hybounce sweep ... (sweep.c) */
+	if (argc > 1 && strcmp(argv[1], "plot") == 0) {
+		static char plotprog[] = PROG " plot";
+
+		argv[1] = plotprog;
+		return plot_main(argc - 1, argv + 1);   /* hybounce plot ... (plot_cmd.c) */
+	}
 	if (argc > 1 && strcmp(argv[1], "fit") == 0) {
 		static char fitprog[] = PROG " fit";
 

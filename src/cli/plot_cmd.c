@@ -1,0 +1,417 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/*
+ * plot_cmd.c - `hybounce plot PRESET --out FILE.{png,pdf,svg}`: runs the
+ * preset and draws one figure of the run (plot_figures.c builds the
+ * model, plot_cairo.c draws it, plot_tex.c writes it as pgfplots source).
+ *
+ * Exit status as batch mode's: 0, 1 the run failed numerically (the figure
+ * of what was computed is written), 2 bad input or an output that could
+ * not be written, 128+n a signal (the figure of what was computed first).
+ */
+#include <getopt.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hybounce/atomic.h"
+#include "hybounce/outputs.h"
+#include "hybounce/preset.h"
+#include "hybounce/sim.h"
+#include "hybounce/status.h"
+#include "cnum.h"
+#include "plot_cairo.h"
+#include "plot_cmd.h"
+#include "plot_tex.h"
+#include "signals.h"
+
+#define PROG "hybounce plot"
+
+static void
+usage(FILE *f)
+{
+	fprintf(f,
+"usage: hybounce plot PRESET --out FILE [--kind state|observables|loop]\n"
+"                     [--set KEY=VALUE]... [--collisions I[,J...]]\n"
+"                     [--width LENGTH | --size WxH] [--dpi N] [--title TEXT]\n"
+"\n"
+"Runs PRESET to its end and draws one figure of the run.\n"
+"\n"
+"  -o, --out FILE          the figure: FILE.png, FILE.pdf or FILE.svg (by its\n"
+"                          extension), or FILE.tex: pgfplots source for pdflatex,\n"
+"                          its data in FILE.dat beside it\n"
+"  -k, --kind KIND         state (default): x, v, x_c, F_c, z_c (and F_e where it\n"
+"                          acts) against t in stacked panels, contacts shaded;\n"
+"                          observables: t_d, t_f, v_i, e, x_c^max, x_c^r,\n"
+"                          F_c^max, W and Lambda against the collision index i;\n"
+"                          loop: F_c against x_c over chosen collisions\n"
+"  -s, --set KEY=VALUE     override one value of the preset (repeatable)\n"
+"  -c, --collisions I,J    (loop) the collisions drawn, by index i (default: the\n"
+"                          first three)\n"
+"  -w, --width LENGTH      the figure's width: 3.5in (default, a journal column),\n"
+"                          7in, 8.9cm, 252pt; the height follows the kind\n"
+"      --size WxH          width and height: 1600x1200 (pixels at --dpi), 5x4in,\n"
+"                          12x9cm, 400x300pt\n"
+"      --dpi N             pixels per inch of a PNG (default 300)\n"
+"      --title TEXT        a title above the figure (default none)\n"
+"  -h, --help              show this help\n"
+"\n"
+"Exit status: 0 success, 1 the run failed numerically (the figure of what was\n"
+"computed is written), 2 bad input or output that could not be written.\n"
+"See hybounce(1).\n");
+}
+
+static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+static int
+bad(const char *fmt, ...)
+{
+	va_list ap;
+
+	fprintf(stderr, PROG ": ");
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "\n");
+	return 2;
+}
+
+/* A length: NUMBER with in, cm, mm or pt (px: pixels at dpi, where allowed)
+ * into points; -1 when malformed. */
+static double
+parse_length(const char *s, size_t len, double dpi, int px_ok)
+{
+	char buf[64], *end;
+	double v;
+
+	if (len == 0 || len >= sizeof buf)
+		return -1;
+	memcpy(buf, s, len);
+	buf[len] = '\0';
+	v = cnum_strtod(buf, &end);
+	if (end == buf || !(v > 0) || !isfinite(v))
+		return -1;
+	if (strcmp(end, "in") == 0)
+		return v * 72;
+	if (strcmp(end, "cm") == 0)
+		return v * 72 / 2.54;
+	if (strcmp(end, "mm") == 0)
+		return v * 72 / 25.4;
+	if (strcmp(end, "pt") == 0)
+		return v;
+	if (px_ok && (strcmp(end, "px") == 0 || *end == '\0'))
+		return v * 72 / dpi;
+	return -1;
+}
+
+/* "1600x1200", "5x4in": a unit after the height applies to both. */
+static int
+parse_size(const char *s, double dpi, double *w, double *h)
+{
+	const char *x = strchr(s, 'x');
+	const char *unit;
+	char wb[64];
+	size_t wl;
+
+	if (x == NULL)
+		return -1;
+	unit = x + 1 + strspn(x + 1, "0123456789.eE+-");
+	wl = (size_t)(x - s);
+	if (wl + strlen(unit) >= sizeof wb)
+		return -1;
+	memcpy(wb, s, wl);
+	/* the width takes the height's unit unless it has its own */
+	if (wl > 0 && strchr("0123456789.", s[wl - 1]) != NULL)
+		strcpy(wb + wl, unit), wl += strlen(unit);
+	*w = parse_length(wb, wl, dpi, 1);
+	*h = parse_length(x + 1, strlen(x + 1), dpi, 1);
+	return *w > 0 && *h > 0 ? 0 : -1;
+}
+
+static int
+ends_with(const char *s, const char *suffix)
+{
+	size_t a = strlen(s), b = strlen(suffix);
+
+	return a >= b && cnum_casecmp(s + a - b, suffix) == 0;
+}
+
+/* "0,2,5" into idx (at most max); -1 when malformed. */
+static int
+parse_indices(const char *s, long *idx, int max)
+{
+	int n = 0;
+
+	while (*s != '\0') {
+		char *end;
+		long v;
+
+		if (!cnum_isdigit((unsigned char)*s))
+			return -1;
+		v = strtol(s, &end, 10);
+		if (v < 0 || n >= max)
+			return -1;
+		idx[n++] = v;
+		s = end;
+		if (*s == ',')
+			s++;
+		else if (*s != '\0')
+			return -1;
+	}
+	return n > 0 ? n : -1;
+}
+
+static const struct option long_options[] = {
+	{ "out",        required_argument, NULL, 'o' },
+	{ "kind",       required_argument, NULL, 'k' },
+	{ "set",        required_argument, NULL, 's' },
+	{ "collisions", required_argument, NULL, 'c' },
+	{ "width",      required_argument, NULL, 'w' },
+	{ "size",       required_argument, NULL, 'S' },
+	{ "dpi",        required_argument, NULL, 'D' },
+	{ "title",      required_argument, NULL, 'T' },
+	{ "help",       no_argument,       NULL, 'h' },
+	{ NULL, 0, NULL, 0 },
+};
+
+/* "wrote PATH" with how (outputs.h). */
+static void
+print_wrote(const char *path, const struct hb_atomic_target *t)
+{
+	char how[4200];
+
+	hb_outputs_how(t, how, sizeof how);
+	fprintf(stderr, "wrote %s%s\n", path, how);
+}
+
+int
+plot_main(int argc, char **argv)
+{
+	const char *out = NULL, *kind_s = "state", *width_s = NULL, *size_s = NULL, *title = NULL;
+	const char *coll_s = NULL, *dpi_s = NULL, *preset;
+	const char **sets = calloc((size_t)argc + 1, sizeof *sets);
+	int nsets = 0, c, status = 0, sig = 0, rc, ncoll = 0;
+	long coll[PLOT_MAX_LEGEND];
+	enum plot_kind kind;
+	enum plot_format fmt;
+	double dpi = 300, w = 252, h = -1;
+	char path[1024], msg[4096], datpath[4096];
+	const char *datname = NULL;
+	struct hb_scene sc;
+	struct hb_outputs pol;
+	struct hb_sim *s = NULL;
+	struct plot_figure *fig = NULL;
+	struct hb_atomic_set set;
+	FILE *f;
+
+	if (sets == NULL)
+		return bad("out of memory");
+	opterr = 1;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "o:k:s:c:w:h", long_options, NULL)) != -1) {
+		switch (c) {
+		case 'o': out = optarg; break;
+		case 'k': kind_s = optarg; break;
+		case 's': sets[nsets++] = optarg; break;
+		case 'c': coll_s = optarg; break;
+		case 'w': width_s = optarg; break;
+		case 'S': size_s = optarg; break;
+		case 'D': dpi_s = optarg; break;
+		case 'T': title = optarg; break;
+		case 'h':
+			usage(stdout);
+			free(sets);
+			return 0;
+		default:
+			fprintf(stderr, "Try 'hybounce plot --help'.\n");
+			free(sets);
+			return 2;
+		}
+	}
+	if (optind >= argc) {
+		free(sets);
+		return bad("no preset given; expected hybounce plot PRESET --out FILE.png");
+	}
+	if (argc - optind > 1) {
+		free(sets);
+		return bad("more than one preset given ('%s' ...)", argv[optind + 1]);
+	}
+	preset = argv[optind];
+	if (out == NULL) {
+		free(sets);
+		return bad("no --out FILE; expected a file ending in .png, .pdf, .svg or .tex");
+	}
+	if (ends_with(out, ".png"))
+		fmt = PLOT_PNG;
+	else if (ends_with(out, ".pdf"))
+		fmt = PLOT_PDF;
+	else if (ends_with(out, ".svg"))
+		fmt = PLOT_SVG;
+	else if (ends_with(out, ".tex") && strlen(out) > 4 && out[strlen(out) - 5] != '/')
+		fmt = PLOT_TEX;
+	else {
+		free(sets);
+		return bad("--out %s: unknown format; expected a file ending in .png, .pdf, .svg "
+		           "or .tex", out);
+	}
+	if (fmt == PLOT_TEX) {
+		/* FILE.tex reads FILE.dat, beside it */
+		size_t l = strlen(out) - 4;
+
+		if (l + 5 > sizeof datpath) {
+			free(sets);
+			return bad("--out %s: the name is too long", out);
+		}
+		memcpy(datpath, out, l);
+		memcpy(datpath + l, ".dat", 5);
+		datname = strrchr(datpath, '/') != NULL ? strrchr(datpath, '/') + 1 : datpath;
+	}
+	if (strcmp(kind_s, "state") == 0)
+		kind = PLOT_STATE;
+	else if (strcmp(kind_s, "observables") == 0)
+		kind = PLOT_OBSERVABLES;
+	else if (strcmp(kind_s, "loop") == 0)
+		kind = PLOT_LOOP;
+	else {
+		free(sets);
+		return bad("--kind %s: unknown; expected state, observables or loop", kind_s);
+	}
+	if (dpi_s != NULL) {
+		char *end;
+
+		dpi = cnum_strtod(dpi_s, &end);
+		if (end == dpi_s || *end != '\0' || !(dpi >= 36 && dpi <= 2400)) {
+			free(sets);
+			return bad("--dpi %s: expected a number of pixels per inch from 36 to 2400",
+			           dpi_s);
+		}
+	}
+	if (width_s != NULL && size_s != NULL) {
+		free(sets);
+		return bad("--width and --size both given; expected one of them");
+	}
+	if (width_s != NULL && (w = parse_length(width_s, strlen(width_s), dpi, 0)) < 0) {
+		free(sets);
+		return bad("--width %s: expected a length such as 3.5in, 8.9cm, 90mm or 252pt",
+		           width_s);
+	}
+	if (size_s != NULL && parse_size(size_s, dpi, &w, &h) != 0) {
+		free(sets);
+		return bad("--size %s: expected WIDTHxHEIGHT such as 1600x1200 (pixels), 5x4in, "
+		           "12x9cm or 400x300pt", size_s);
+	}
+	if (w < 72 || w > 72 * 100 || (h > 0 && (h < 72 || h > 72 * 100))) {
+		free(sets);
+		return bad("%s %s: the figure would be %.3g x %.3g in; expected 1 to 100 in a side",
+		           size_s != NULL ? "--size" : "--width", size_s != NULL ? size_s : width_s,
+		           w / 72, h > 0 ? h / 72 : w / 72);
+	}
+	if (coll_s != NULL) {
+		if (kind != PLOT_LOOP) {
+			free(sets);
+			return bad("--collisions %s: only --kind loop draws chosen collisions", coll_s);
+		}
+		ncoll = parse_indices(coll_s, coll, PLOT_MAX_LEGEND);
+		if (ncoll < 0) {
+			free(sets);
+			return bad("--collisions %s: expected collision indices i (from 0) separated "
+			           "by commas, at most %d, e.g. 0,1,4", coll_s, PLOT_MAX_LEGEND);
+		}
+	}
+
+	msg[0] = '\0';
+	if (hb_preset_open_named(preset, sets, nsets, &sc, path, sizeof path, msg,
+	                         sizeof msg) != HB_OK) {
+		free(sets);
+		return bad("%s", msg[0] ? msg : preset);
+	}
+	free(sets);
+	/* The output policy (outputs.h): never the preset run, never a shipped
+	 * preset, a folder or an unwritable place. */
+	hb_outputs_init(&pol);
+	hb_outputs_input(&pol, path, "the preset being run");
+	msg[0] = '\0';
+	if (hb_outputs_add(&pol, out, "--out", msg, sizeof msg) != HB_OK)
+		return bad("%s%s", strncmp(msg, "--out ", 6) == 0 ? "" : "--out ", msg);
+	if (fmt == PLOT_TEX && hb_outputs_add(&pol, datpath, "the data file of --out", msg,
+	                                      sizeof msg) != HB_OK)
+		return bad("%s", msg);
+
+	cli_signals_watch();
+	msg[0] = '\0';
+	s = hb_sim_new(&sc, msg, sizeof msg);
+	if (s == NULL) {
+		cli_signals_restore();
+		return bad("%s: %s", path, msg[0] ? msg : "cannot start the run");
+	}
+	rc = HB_OK;
+	while (cli_signal == 0) {
+		rc = hb_sim_advance(s, 0, 0.1);
+		if (rc != HB_OK || hb_sim_end(s) != HB_SIM_RUNNING)
+			break;
+	}
+	sig = cli_signal;
+	if (hb_sim_end(s) == HB_SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE)) {
+		status = 1;
+		fprintf(stderr, PROG ": the run failed: %s; the figure shows what was computed\n",
+		        hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_status_str(rc));
+	} else if (sig != 0) {
+		fprintf(stderr, PROG ": %s: the run stopped; the figure shows what was computed\n",
+		        cli_signal_name(sig));
+	}
+
+	fig = malloc(sizeof *fig);
+	if (fig == NULL) {
+		status = bad("out of memory");
+		goto done;
+	}
+	msg[0] = '\0';
+	if (plot_build(fig, kind, s, w, h, coll, ncoll, msg, sizeof msg) != 0) {
+		status = bad("%s", msg);
+		goto done;
+	}
+	if (title != NULL)
+		cnum_snprintf(fig->title, sizeof fig->title, "%s", title);
+	hb_atomic_begin(&set);
+	msg[0] = '\0';
+	f = hb_atomic_add(&set, out, msg, sizeof msg);
+	if (f == NULL) {
+		status = bad("--out %s", msg);
+		goto done;
+	}
+	if (fmt == PLOT_TEX) {
+		FILE *d = hb_atomic_add(&set, datpath, msg, sizeof msg);
+
+		if (d == NULL) {
+			hb_atomic_abort(&set);
+			status = bad("--out %s", msg);
+			goto done;
+		}
+		rc = plot_tex_write(fig, f, d, datname, cli_provenance(), msg, sizeof msg);
+	} else {
+		rc = plot_cairo_write(fig, fmt, dpi, f, msg, sizeof msg);
+	}
+	if (rc != 0) {
+		hb_atomic_abort(&set);
+		status = bad("--out %s: %s", out, msg);
+		goto done;
+	}
+	if (hb_atomic_commit(&set, msg, sizeof msg) != HB_OK) {
+		status = bad("--out %s", msg);
+		goto done;
+	}
+	print_wrote(out, &pol.out[0].target);
+	if (fmt == PLOT_TEX)
+		print_wrote(datpath, &pol.out[1].target);
+done:
+	if (fig != NULL) {
+		plot_figure_free(fig);
+		free(fig);
+	}
+	hb_sim_free(s);
+	if (sig == 0)
+		sig = cli_signal;
+	cli_signals_restore();
+	return sig != 0 ? cli_signal_status(sig) : status;
+}
