@@ -31,7 +31,7 @@
 #define PROG "hybounce"
 
 enum { OPT_ONSET_METHOD = 256, OPT_ONSET_THRESHOLD, OPT_ONSET_LEVEL, OPT_MIN_INTERVAL,
-       OPT_MAX_ITER, OPT_RESIDUALS };
+       OPT_MAX_ITER, OPT_RESIDUALS, OPT_ONSETS_OUT };
 
 static const struct option long_options[] = {
 	{ "data",            required_argument, NULL, 'd' },
@@ -45,6 +45,7 @@ static const struct option long_options[] = {
 	{ "onset-threshold", required_argument, NULL, OPT_ONSET_THRESHOLD },
 	{ "onset-level",     required_argument, NULL, OPT_ONSET_LEVEL },
 	{ "min-interval",    required_argument, NULL, OPT_MIN_INTERVAL },
+	{ "onsets-out",      required_argument, NULL, OPT_ONSETS_OUT },
 	{ "quiet",           no_argument,       NULL, 'q' },
 	{ "help",            no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
@@ -57,7 +58,7 @@ usage(FILE *f)
 "usage: hybounce fit PRESET --data FILE --free KEY[,KEY...] [--set KEY=VALUE]...\n"
 "                [--out FILE] [--residuals FILE] [--jobs N] [--max-iter N]\n"
 "                [--onset-method M] [--onset-threshold X] [--onset-level X]\n"
-"                [--min-interval T] [--quiet]\n"
+"                [--min-interval T] [--onsets-out FILE] [--quiet]\n"
 "\n"
 "Fits the free keys of PRESET so that its runs reproduce the measured\n"
 "collisions (nonlinear least squares, GSL trust region), and writes the\n"
@@ -77,6 +78,8 @@ usage(FILE *f)
 "      --onset-threshold X aubio's peak-picking threshold (default 0.3)\n"
 "      --onset-level X     a click starts where it reaches X of its peak (0.3)\n"
 "      --min-interval T    shortest interval between clicks (default 2 ms)\n"
+"      --onsets-out FILE   write a recording's impact times as a t_e CSV (to\n"
+"                          correct by hand and fit with --data)\n"
 "  -q, --quiet             no progress lines on stderr, no residual table\n"
 "\n"
 "Exit status: 0 converged, 1 stopped without converging (iteration cap, no\n"
@@ -184,6 +187,37 @@ print_onsets(const char *path, const struct hb_onset_result *on)
 	}
 	printf("            (e of collision i-1 ~ interval i / interval i-1, neglecting the "
 	       "contact's duration)\n");
+	if (on->ndrop > 0)
+		printf("dropped     %zu of %zu clicks found, not impacts of the sequence:\n",
+		       on->ndrop, on->ndrop + on->n);
+	for (size_t i = 0; i < on->ndrop; i++)
+		printf("     %10.6f  peak %6.3f  %s\n", on->drop[i].t, on->drop[i].peak,
+		       on->drop[i].why);
+}
+
+/*
+ * The onsets as the t_e CSV that --data reads, for correcting by hand: the
+ * impacts kept, and the clicks dropped as comments with the reason, in
+ * time order (uncommenting one makes it an impact).
+ */
+static void
+fill_onsets(FILE *f, const void *ctx)
+{
+	const struct hb_onset_result *on = ctx;
+	const char *prov = cli_provenance();
+	size_t i = 0, k = 0;
+
+	if (prov[0] == ';')     /* the preset comment, as a CSV comment */
+		fprintf(f, "#%s\n", prov + 1);
+	fprintf(f, "t_e\n");
+	while (i < on->n || k < on->ndrop) {
+		if (k < on->ndrop && (i == on->n || on->drop[k].t < on->t[i])) {
+			fprintf(f, "#%.9f  (dropped: %s)\n", on->drop[k].t, on->drop[k].why);
+			k++;
+		} else {
+			fprintf(f, "%.9f\n", on->t[i++]);
+		}
+	}
 }
 
 /* The residuals CSV: a row per data point. */
@@ -302,7 +336,7 @@ report(const struct hb_fit_result *r, const struct hb_fit_data *d, int quiet)
 int
 fit_main(int argc, char **argv)
 {
-	const char *data = NULL, *out = NULL, *resid_path = NULL, *preset;
+	const char *data = NULL, *out = NULL, *resid_path = NULL, *preset, *onsets_path = NULL;
 	const char **sets = NULL, *keys[HB_FIT_MAX_FREE];
 	char *freebuf = NULL, path[1024], outbuf[1024], msg[4096];
 	struct hb_onset_options oo = { 0 };
@@ -313,7 +347,7 @@ fit_main(int argc, char **argv)
 	struct hb_outputs pol;
 	struct hb_fit *fit = NULL;
 	char *text = NULL;
-	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2, sig = 0, k_out, k_resid = -1;
+	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2, sig = 0, k_out, k_resid = -1, k_ons = -1;
 	size_t freelen = 0, textlen = 0;
 
 	if ((sets = calloc((size_t)argc + 1, sizeof *sets)) == NULL)
@@ -361,6 +395,7 @@ fit_main(int argc, char **argv)
 			if (parse_pos("--min-interval", optarg, &oo.min_interval))
 				goto out;
 			break;
+		case OPT_ONSETS_OUT: onsets_path = optarg; break;
 		case 'q': quiet = 1; break;
 		case 'h':
 			usage(stdout);
@@ -432,6 +467,14 @@ fit_main(int argc, char **argv)
 		}
 		k_resid = pol.nout - 1;
 	}
+	if (onsets_path != NULL) {
+		if (hb_outputs_add(&pol, onsets_path, "--onsets-out", msg, sizeof msg) != HB_OK) {
+			status = bad("%s%s", strncmp(msg, "--onsets-out ", 13) == 0 ? ""
+			             : "--onsets-out ", msg);
+			goto out;
+		}
+		k_ons = pol.nout - 1;
+	}
 	/* The data, read once (a pipe or a FIFO works) and bounded (input.h);
 	 * a .wav recording is left to aubio, which reads it by name. */
 	if (!wav_name(data) &&
@@ -452,18 +495,37 @@ fit_main(int argc, char **argv)
 			             "file (not a pipe or a device)", data);
 			goto out;
 		}
-		if (hb_onset_detect(data, &oo, &on, msg, sizeof msg) != HB_OK) {
+		c = hb_onset_detect(data, &oo, &on, msg, sizeof msg);
+		if (on.n + on.ndrop > 0)
+			print_onsets(data, &on);
+		fflush(stdout);
+		/* the clicks found, also of a refused take: to correct by hand */
+		if (onsets_path != NULL && on.n + on.ndrop > 0 && (c == HB_OK || c == HB_EINVAL)) {
+			char m[512];
+
+			if (hb_atomic_write_with(onsets_path, fill_onsets, &on, m, sizeof m)
+			    != HB_OK) {
+				hb_onset_result_free(&on);
+				status = bad("--onsets-out %s", m);
+				goto out;
+			}
+			print_wrote(onsets_path, &pol.out[k_ons].target);
+		}
+		if (c != HB_OK) {
 			hb_onset_result_free(&on);
 			status = bad("--data %s", msg);
 			goto out;
 		}
-		print_onsets(data, &on);
 		if (hb_fit_data_from_times(on.t, NULL, on.n, data, &d, msg, sizeof msg) != HB_OK) {
 			hb_onset_result_free(&on);
 			status = bad("--data %s", msg);
 			goto out;
 		}
 		hb_onset_result_free(&on);
+	} else if (onsets_path != NULL) {
+		status = bad("--onsets-out %s: --data %s is no recording; the option writes a "
+		             "recording's impact times", onsets_path, data);
+		goto out;
 	} else if (hb_fit_data_parse(text, textlen, data, &d, msg, sizeof msg) != HB_OK) {
 		status = bad("--data %s", msg);
 		goto out;
