@@ -32,7 +32,7 @@ PKG_CONFIG ?= pkg-config
 # Debian packages the build and the tests use (apt-get names).
 APT_PACKAGES := libgsl-dev libncurses-dev libinih-dev libcriterion-dev pkg-config tmux mandoc \
                 clang libclang-rt-14-dev strace parallel slurm-wlm munge \
-                libaubio-dev aubio-tools sox locales python3-pandas python3-numpy
+                libaubio-dev aubio-tools sox libsox-fmt-mp3 locales python3-pandas python3-numpy
 # Locales the tests run under (decimal commas, a Turkish case fold): `make
 # deps` generates those `locale -a` lacks with localedef (about 2 MB each,
 # where locales-all would take 220 MB).

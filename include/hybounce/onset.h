@@ -72,6 +72,16 @@ hb_onset_detect(const char *path, const struct hb_onset_options *o, struct hb_on
 void
 hb_onset_result_free(struct hb_onset_result *r);
 
+/*
+ * The sound format of a file from its first n bytes (16 or more; 40 tell
+ * an Ogg stream's codec): "WAV", "Wave64", "FLAC", "Ogg Vorbis", "Ogg
+ * Opus", "Ogg FLAC", "Ogg", "MP4/M4A", "AIFF", "CAF", "MP3", "MP3 (ID3)",
+ * "AAC (ADTS)"; or NULL when they are no sound header (text, say).  A
+ * recording is recognised by its content, not its name.
+ */
+const char *
+hb_audio_format(const void *head, size_t n);
+
 HB_END_DECLS
 
 #endif

@@ -67,7 +67,8 @@ usage(FILE *f)
 "  -d, --data FILE         the measurements: a CSV file with a column t_e (impact\n"
 "                          times of one bouncing sequence), or v_i with e, x_c_r\n"
 "                          and/or t_d (separate drops), each optionally with\n"
-"                          sd_NAME; or a recording (.wav) of a bouncing sequence\n"
+"                          sd_NAME; or a recording of a bouncing sequence (WAV,\n"
+"                          FLAC, Ogg, MP3, M4A, AIFF: known by its content)\n"
 "  -f, --free KEY,...      the keys to fit, e.g. law.c,law.alpha (repeatable)\n"
 "  -s, --set KEY=VALUE     change the preset first, e.g. a start (repeatable)\n"
 "  -o, --out FILE          the fitted preset (default: DATA's name + -fit.preset)\n"
@@ -129,20 +130,34 @@ parse_pos(const char *opt, const char *s, double *out)
 	return 0;
 }
 
-/* 1 if path names a recording by its extension (.wav). */
-static int
-wav_name(const char *path)
+/* The sound format of a regular file, from its first bytes; NULL: none. */
+static const char *
+audio_format_of(const char *path)
 {
-	size_t l = strlen(path);
+	unsigned char head[64];
+	struct stat st;
+	size_t got;
+	FILE *f;
 
-	return l > 4 && strcasecmp(path + l - 4, ".wav") == 0;
+	if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || (f = fopen(path, "rb")) == NULL)
+		return NULL;
+	got = fread(head, 1, sizeof head, f);
+	fclose(f);
+	return hb_audio_format(head, got);
 }
 
-/* 1 if the data is a recording: a .wav name, or a RIFF header (text read once). */
+/* 1 if path is named as a recording is (.wav, .flac, ...): for the message. */
 static int
-is_recording(const char *path, const char *text, size_t len)
+audio_name(const char *path)
 {
-	return wav_name(path) || (text != NULL && len >= 4 && memcmp(text, "RIFF", 4) == 0);
+	static const char *const ext[] = { ".wav", ".flac", ".ogg", ".oga", ".mp3", ".m4a",
+	                                   ".aac", ".aif", ".aiff", ".opus", ".w64", ".caf" };
+	const char *dot = strrchr(path, '.');
+
+	for (size_t i = 0; dot != NULL && i < sizeof ext / sizeof ext[0]; i++)
+		if (strcasecmp(dot, ext[i]) == 0)
+			return 1;
+	return 0;
 }
 
 /* The default output: the data file's base name without extension + -fit.preset. */
@@ -347,6 +362,7 @@ fit_main(int argc, char **argv)
 	struct hb_outputs pol;
 	struct hb_fit *fit = NULL;
 	char *text = NULL;
+	const char *fmt;
 	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2, sig = 0, k_out, k_resid = -1, k_ons = -1;
 	size_t freelen = 0, textlen = 0;
 
@@ -416,7 +432,7 @@ fit_main(int argc, char **argv)
 	}
 	preset = argv[optind];
 	if (data == NULL) {
-		status = bad("--data FILE is required (a CSV of measurements or a .wav recording)");
+		status = bad("--data FILE is required (a CSV of measurements or a recording)");
 		goto out;
 	}
 	if (freebuf == NULL) {
@@ -475,26 +491,40 @@ fit_main(int argc, char **argv)
 		}
 		k_ons = pol.nout - 1;
 	}
-	/* The data, read once (a pipe or a FIFO works) and bounded (input.h);
-	 * a .wav recording is left to aubio, which reads it by name. */
-	if (!wav_name(data) &&
+	/*
+	 * A recording is known by its content (its first bytes), not its name,
+	 * and read by aubio by name; any other data is read once (a pipe or a
+	 * FIFO works) and bounded (input.h).
+	 */
+	fmt = audio_format_of(data);
+	if (fmt == NULL && audio_name(data)) {
+		struct stat st;
+
+		if (stat(data, &st) == 0 && !S_ISREG(st.st_mode))
+			status = bad("--data %s: a recording is read by name; accepted: a file (not "
+			             "a pipe or a device)", data);
+		else
+			status = bad("--data %s: cannot be read as a recording: its first bytes are "
+			             "no sound header; accepted: WAV, FLAC, Ogg Vorbis or Opus, MP3, "
+			             "M4A/AAC, AIFF (recognised by content), or a CSV file", data);
+		goto out;
+	}
+	if (fmt == NULL &&
 	    hb_input_read(data, HB_INPUT_DATA_MAX, &text, &textlen, msg, sizeof msg) != HB_OK) {
 		status = bad("--data %s", msg);
+		goto out;
+	}
+	if (fmt == NULL && hb_audio_format(text, textlen) != NULL) {
+		status = bad("--data %s: a recording (%s) is read by name; accepted: a file (not a "
+		             "pipe or a device)", data, hb_audio_format(text, textlen));
 		goto out;
 	}
 
 	printf("hybounce %s fit\n", HYBOUNCE_VERSION);
 	printf("preset      %s (%s)\n", preset, path);
-	if (is_recording(data, text, textlen)) {
+	if (fmt != NULL) {
 		struct hb_onset_result on;
-		struct stat st;
 
-		/* aubio opens the recording by name: it must be a file. */
-		if (stat(data, &st) != 0 || !S_ISREG(st.st_mode)) {
-			status = bad("--data %s: a recording is read by name; accepted: a .wav "
-			             "file (not a pipe or a device)", data);
-			goto out;
-		}
 		c = hb_onset_detect(data, &oo, &on, msg, sizeof msg);
 		if (on.n + on.ndrop > 0)
 			print_onsets(data, &on);

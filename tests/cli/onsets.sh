@@ -4,13 +4,16 @@
 # (tests/cli/onsets_rec.py: each impact a few damped modes, its loudness from
 # its speed; pink noise, reverberation, handling knocks, a noise blip,
 # 48 kHz stereo, a long ring, silence before and after; clicks 3 ms or more
-# apart; WAV of several sample formats): the onset times of every click at
+# apart; WAV of several sample formats, FLAC, Ogg Vorbis, MP3, and a FLAC
+# named without extension): the onset times of every click at
 # 20 dB SNR or better (its peak over the rms of the noise and of the ring
 # of the clicks before) lie within 0.1 ms of the truth and no impact is
 # invented (each within 2 ms of a true one); each recording is either fitted within 3 standard errors of the
 # truth with a relative standard error under 10%, or refused with exit 2,
 # never answered wrong with exit 0; what is dropped is listed with its
-# reason; --onsets-out writes the t_e CSV that --data reads and fits.
+# reason; --onsets-out writes the t_e CSV that --data reads and fits; a
+# recording is known by its content (a .wav holding text is refused, a WAV
+# through a pipe is named); FFmpeg's log stays off stderr.
 # The table of verdicts is README's (between ONSETS-TABLE markers);
 #
 #     sh tests/cli/onsets.sh --update-readme   rewrites it
@@ -44,8 +47,19 @@ rec() {
 	done
 	$PY "$ROOT/tests/cli/onsets_rec.py" "$T/$name.f32" "$T/$name.truth" "$@" <"$T/col.csv"
 	# shellcheck disable=SC2086
-	sox -t f32 -r "$sr" -c "$ch" "$T/$name.f32" $fmt "$T/$name.wav" 2>/dev/null
-	echo "$name|$desc" >>"$T/list"
+	sox -R -t f32 -r "$sr" -c "$ch" "$T/$name.f32" $fmt "$T/$name.wav" 2>/dev/null
+	echo "$name|$desc|$name.wav|$name|0" >>"$T/list"
+}
+
+# enc NAME DESCRIPTION FROM FILE [ALIGN]: FROM's recording encoded by sox as
+# FILE (its format from its extension, then renamed to FILE without one
+# where FILE has none); ALIGN 1: the codec delays the sound (MP3's encoder
+# delay), so the onsets are compared after aligning the first
+enc() {
+	out=$2
+	case $4 in *.*) sox -R "$T/$3.wav" "$T/$4" 2>/dev/null ;;
+	*) sox -R "$T/$3.wav" "$T/$4.flac" 2>/dev/null && mv "$T/$4.flac" "$T/$4" ;; esac
+	echo "$1|$out|$4|$3|${5:-0}" >>"$T/list"
 }
 
 rec clean  "clean, 16-bit WAV"                     -b 16 -- seed=1
@@ -59,12 +73,16 @@ rec ring   "a 0.3 s ring, 1 s of silence before, 2 s after, 32-bit WAV" -b 32 --
 rec quiet  "a quiet take: pink noise 20 dB below the first impact" -b 16 -- snr=20 seed=6
 rec drown  "pink noise as loud as the first impact" -b 16 -- snr=0 seed=7
 rec even   "8 clicks at even intervals, as loud: no bouncing" -b 16 -- even=8 seed=8
+enc flac   "the pink-noise take as FLAC" pink30 pink30.flac
+enc ogg    "the stereo room take as Ogg Vorbis" room room.ogg
+enc mp3    "the knocks take as MP3 (128 kb/s)" knocks knocks.mp3 1
+enc noext  "the ring take as FLAC named without extension" ring ring-take
 
 : >"$T/table"
 nfit=0 nrec=0
-while IFS='|' read -r name desc; do
+while IFS='|' read -r name desc file truth align; do
 	nrec=$((nrec + 1))
-	"$BIN" fit steel-on-bitumen --data "$T/$name.wav" --free law.c,law.alpha -q \
+	"$BIN" fit steel-on-bitumen --data "$T/$file" --free law.c,law.alpha -q \
 		--out "$T/$name.preset" --onsets-out "$T/$name.csv" >"$T/$name.out" 2>"$T/$name.err"
 	rc=$?
 	# onset times: every click at 20 dB SNR or better within 0.1 ms; none invented
@@ -74,9 +92,10 @@ while IFS='|' read -r name desc; do
 		sed -n '/^   i      t \[s\]/,/^            (e of/p' "$T/$name.out" | sed '1d;$d' |
 			awk '{print $2}' >"$T/$name.det"
 	fi
-	if awk 'NR == FNR { t[NR] = $1; s[NR] = $2; n = NR; next }
+	if awk -v align="$align" 'NR == FNR { t[NR] = $1; s[NR] = $2; n = NR; next }
 		{ d[FNR] = $1; m = FNR }
 		END {
+			if (align) for (k = m; k >= 1; k--) d[k] += t[1] - d[1]
 			for (i = 1; i <= n; i++) {
 				if (s[i] != "inf" && s[i] + 0 < 20) continue
 				hit = 0
@@ -89,7 +108,7 @@ while IFS='|' read -r name desc; do
 				if (!hit) { printf "# invented %s\n", d[k]; bad = 1 }
 			}
 			exit bad
-		}' "$T/$name.truth" "$T/$name.det" >"$T/$name.cmp"; then
+		}' "$T/$truth.truth" "$T/$name.det" >"$T/$name.cmp"; then
 		ok "$name: onsets within 0.1 ms of the truth (clicks at 20 dB SNR or better), none invented"
 	else
 		notok "$name: onsets within 0.1 ms of the truth, none invented" "$T/$name.cmp"
@@ -171,6 +190,33 @@ if [ "$rc" -eq 2 ] && grep -q 'is no recording' "$T/x.err" && [ ! -e "$T/x.csv" 
 	ok "--onsets-out with CSV data is refused"
 else
 	notok "--onsets-out with CSV data is refused (exit $rc)" "$T/x.err"
+fi
+
+# --- recognised by content -----------------------------------------------------
+printf 't_e\n0.1\n' >"$T/text.wav"
+"$BIN" fit steel-on-bitumen --data "$T/text.wav" --free law.c -q --out "$T/t.preset" \
+	>/dev/null 2>"$T/t.err"
+rc=$?
+if [ "$rc" -eq 2 ] && grep -q 'no sound header; accepted: WAV, FLAC, Ogg' "$T/t.err"; then
+	ok "a .wav holding text is refused: its first bytes are no sound header"
+else
+	notok "a .wav holding text is refused (exit $rc)" "$T/t.err"
+fi
+mkfifo "$T/fifo"
+cat "$T/clean.wav" >"$T/fifo" &
+"$BIN" fit steel-on-bitumen --data "$T/fifo" --free law.c -q --out "$T/p.preset" \
+	>/dev/null 2>"$T/p.err"
+rc=$?
+wait
+if [ "$rc" -eq 2 ] && grep -q 'a recording (WAV) is read by name' "$T/p.err"; then
+	ok "a recording through a pipe is recognised and refused, naming its format"
+else
+	notok "a recording through a pipe is refused (exit $rc)" "$T/p.err"
+fi
+if grep -q 'vorbis\|@ 0x' "$T/ogg.err"; then
+	notok "FFmpeg's log stays off stderr" "$T/ogg.err"
+else
+	ok "FFmpeg's log stays off stderr"
 fi
 
 if [ "$nfit" -ge $((nrec - 2)) ]; then
