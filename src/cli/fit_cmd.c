@@ -31,7 +31,7 @@
 #define PROG "hybounce"
 
 enum { OPT_ONSET_METHOD = 256, OPT_ONSET_THRESHOLD, OPT_ONSET_LEVEL, OPT_MIN_INTERVAL,
-       OPT_MAX_ITER, OPT_RESIDUALS, OPT_ONSETS_OUT };
+       OPT_MAX_ITER, OPT_RESIDUALS, OPT_ONSETS_OUT, OPT_MAX_RSE };
 
 static const struct option long_options[] = {
 	{ "data",            required_argument, NULL, 'd' },
@@ -46,6 +46,7 @@ static const struct option long_options[] = {
 	{ "onset-level",     required_argument, NULL, OPT_ONSET_LEVEL },
 	{ "min-interval",    required_argument, NULL, OPT_MIN_INTERVAL },
 	{ "onsets-out",      required_argument, NULL, OPT_ONSETS_OUT },
+	{ "max-relative-se", required_argument, NULL, OPT_MAX_RSE },
 	{ "quiet",           no_argument,       NULL, 'q' },
 	{ "help",            no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
@@ -58,7 +59,8 @@ usage(FILE *f)
 "usage: hybounce fit PRESET --data FILE --free KEY[,KEY...] [--set KEY=VALUE]...\n"
 "                [--out FILE] [--residuals FILE] [--jobs N] [--max-iter N]\n"
 "                [--onset-method M] [--onset-threshold X] [--onset-level X]\n"
-"                [--min-interval T] [--onsets-out FILE] [--quiet]\n"
+"                [--min-interval T] [--onsets-out FILE] [--max-relative-se X]\n"
+"                [--quiet]\n"
 "\n"
 "Fits the free keys of PRESET so that its runs reproduce the measured\n"
 "collisions (nonlinear least squares, GSL trust region), and writes the\n"
@@ -75,6 +77,8 @@ usage(FILE *f)
 "      --residuals FILE    write the points as CSV: measured, simulated, sd ...\n"
 "  -j, --jobs N            runs in parallel (default: every core)\n"
 "      --max-iter N        iteration cap (default 100)\n"
+"      --max-relative-se X a credible estimate's standard error is at most X\n"
+"                          of its value (default 0.1), else exit 1\n"
 "      --onset-method M    aubio onset method for a recording (default hfc)\n"
 "      --onset-threshold X aubio's peak-picking threshold (default 0.3)\n"
 "      --onset-level X     a click starts where it reaches X of its peak (0.3)\n"
@@ -83,8 +87,10 @@ usage(FILE *f)
 "                          correct by hand and fit with --data)\n"
 "  -q, --quiet             no progress lines on stderr, no residual table\n"
 "\n"
-"Exit status: 0 converged, 1 stopped without converging (iteration cap, no\n"
-"progress, parameters not identifiable), 2 bad input, 128+N stopped by signal\n"
+"Exit status: 0 converged to credible estimates, 1 stopped without converging\n"
+"(iteration cap, no progress, parameters not identifiable) or an estimate's\n"
+"relative standard error above --max-relative-se, 2 bad input (a recording\n"
+"that is no bouncing sequence too), 128+N stopped by signal\n"
 "N (SIGINT, SIGTERM, SIGHUP: the best point so far is written).  See hybounce(1).\n");
 }
 
@@ -355,6 +361,7 @@ fit_main(int argc, char **argv)
 	const char **sets = NULL, *keys[HB_FIT_MAX_FREE];
 	char *freebuf = NULL, path[1024], outbuf[1024], msg[4096];
 	struct hb_onset_options oo = { 0 };
+	double max_rse = 0.1;
 	struct hb_fit_options fo = { 0 };
 	struct hb_fit_data d = { 0 };
 	struct hb_fit_result r = { 0 };
@@ -412,6 +419,10 @@ fit_main(int argc, char **argv)
 				goto out;
 			break;
 		case OPT_ONSETS_OUT: onsets_path = optarg; break;
+		case OPT_MAX_RSE:
+			if (parse_pos("--max-relative-se", optarg, &max_rse))
+				goto out;
+			break;
 		case 'q': quiet = 1; break;
 		case 'h':
 			usage(stdout);
@@ -644,6 +655,18 @@ fit_main(int argc, char **argv)
 		status = cli_signal_status(sig);
 	} else {
 		status = r.reason <= HB_FIT_CONVERGED_COST ? 0 : 1;
+		/* converged is not credible: every estimate within max_rse */
+		for (int i = 0; status == 0 && i < r.np; i++) {
+			double rel = r.se[i] / fabs(r.value[i]);
+
+			if (!(rel <= max_rse)) {
+				fprintf(stderr, PROG " fit: not credible: the standard error of %s is "
+				        "%.3g of its value, above %g (--max-relative-se): the data do not "
+				        "determine it; the estimates are reported and written\n",
+				        r.key[i], rel, max_rse);
+				status = 1;
+			}
+		}
 	}
 out:
 	cli_signals_restore();

@@ -461,10 +461,11 @@ hb_onset_detect(const char *path, const struct hb_onset_options *o, struct hb_on
 		    "fired nowhere; lower --onset-threshold (e.g. 0.1), or try --onset-method "
 		    "energy", path, r->duration, r->noise, method, thr);
 	else if (nabove == 0)
-		st = hb_status_set(msg, n, HB_EINVAL, "%s: none of the %zu clicks found rises above "
-		    "%g x the noise (rms %.2g of full scale, the quietest 10 ms): the take is too "
-		    "noisy to time impacts; record closer to the impact or in a quieter place "
-		    "(a lower --onset-threshold only finds more noise)", path, nr, GATE, r->noise);
+		st = hb_status_set(msg, n, HB_EINVAL, "%s: no click rises above %g x the noise "
+		    "(%zu found, the noise rms %.2g of full scale over the quietest 10 ms): the "
+		    "take is too noisy to time impacts; record closer to the impact or in a "
+		    "quieter place (a lower --onset-threshold only finds more noise)", path, GATE,
+		    nc, r->noise);
 	else if (why[0])
 		st = hb_status_set(msg, n, HB_EINVAL, "%s: %s; not fitted (the clicks found are "
 		    "listed above: --onsets-out FILE writes them, to correct by hand and fit "
