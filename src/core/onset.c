@@ -455,7 +455,13 @@ hb_onset_detect(const char *path, const struct hb_onset_options *o, struct hb_on
 			r->ndrop++;
 		}
 	}
-	if (nr == 0)
+	if (!(loud > GATE * r->noise))
+		st = hb_status_set(msg, n, HB_EINVAL, "%s: nothing in its %.3g s rises above %g x "
+		    "the noise (the loudest sample %.2g, the noise rms %.2g of full scale): a silent "
+		    "take, or one too noisy to time impacts (record closer to the impact or in a "
+		    "quieter place: a lower --onset-threshold only finds more noise); accepted: a "
+		    "recording of a bouncing sequence", path, r->duration, GATE, loud, r->noise);
+	else if (nr == 0)
 		st = hb_status_set(msg, n, HB_EINVAL, "%s: no onsets found in %.3g s of sound "
 		    "(noise rms %.2g of full scale): aubio's detector (method %s, threshold %g) "
 		    "fired nowhere; lower --onset-threshold (e.g. 0.1), or try --onset-method "

@@ -158,6 +158,16 @@ if grep -q 'too noisy to time impacts' "$T/drown.err" &&
 else
 	notok "a take drowned in noise says so" "$T/drown.err"
 fi
+sox -R -n -r 44100 -b 16 "$T/silent.wav" trim 0 0.5 2>/dev/null
+"$BIN" fit steel-on-bitumen --data "$T/silent.wav" --free law.c -q --out "$T/s.preset" \
+	>/dev/null 2>"$T/silent.err"
+rc=$?
+if [ "$rc" -eq 2 ] && grep -q 'nothing in its 0.5 s rises above 5 x the noise' "$T/silent.err" &&
+	grep -q 'accepted: a recording of a bouncing sequence' "$T/silent.err"; then
+	ok "a silent take says that nothing rises above the noise, and what is accepted"
+else
+	notok "a silent take says that nothing rises above the noise (exit $rc)" "$T/silent.err"
+fi
 
 # --- --onsets-out: the t_e CSV that --data reads ---------------------------------
 if [ "onsets      $(grep -c '^[0-9]' "$T/knocks.csv") in" = \
