@@ -136,36 +136,6 @@ parse_pos(const char *opt, const char *s, double *out)
 	return 0;
 }
 
-/* The sound format of a regular file, from its first bytes; NULL: none. */
-static const char *
-audio_format_of(const char *path)
-{
-	unsigned char head[64];
-	struct stat st;
-	size_t got;
-	FILE *f;
-
-	if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || (f = fopen(path, "rb")) == NULL)
-		return NULL;
-	got = fread(head, 1, sizeof head, f);
-	fclose(f);
-	return hb_audio_format(head, got);
-}
-
-/* 1 if path is named as a recording is (.wav, .flac, ...): for the message. */
-static int
-audio_name(const char *path)
-{
-	static const char *const ext[] = { ".wav", ".flac", ".ogg", ".oga", ".mp3", ".m4a",
-	                                   ".aac", ".aif", ".aiff", ".opus", ".w64", ".caf" };
-	const char *dot = strrchr(path, '.');
-
-	for (size_t i = 0; dot != NULL && i < sizeof ext / sizeof ext[0]; i++)
-		if (strcasecmp(dot, ext[i]) == 0)
-			return 1;
-	return 0;
-}
-
 /* The default output: the data file's base name without extension + -fit.preset. */
 static void
 default_out(const char *data, char *out, size_t n)
@@ -185,60 +155,6 @@ progress(void *ctx, int iter, double cost, long runs)
 {
 	(void)ctx;
 	fprintf(stderr, PROG " fit: iteration %d: cost %.6g (%ld runs)\n", iter, cost, runs);
-}
-
-/* Shows the onsets found in a recording and the restitution they imply. */
-static void
-print_onsets(const char *path, const struct hb_onset_result *on)
-{
-	printf("onsets      %zu in %s (%.0f Hz, %.3f s, noise rms %.2g of full scale)\n",
-	    on->n, path, on->samplerate, on->duration, on->noise);
-	printf("   i      t [s]    interval [ms]   e ~ ratio of intervals   peak\n");
-	for (size_t i = 0; i < on->n; i++) {
-		printf("%4zu %10.6f", i, on->t[i]);
-		if (i > 0)
-			printf(" %16.3f", 1e3 * (on->t[i] - on->t[i - 1]));
-		else
-			printf(" %16s", "-");
-		if (i > 1)
-			printf(" %24.4f", (on->t[i] - on->t[i - 1]) / (on->t[i - 1] - on->t[i - 2]));
-		else
-			printf(" %24s", "-");
-		printf(" %6.3f\n", on->peak[i]);
-	}
-	printf("            (e of collision i-1 ~ interval i / interval i-1, neglecting the "
-	       "contact's duration)\n");
-	if (on->ndrop > 0)
-		printf("dropped     %zu of %zu clicks found, not impacts of the sequence:\n",
-		       on->ndrop, on->ndrop + on->n);
-	for (size_t i = 0; i < on->ndrop; i++)
-		printf("     %10.6f  peak %6.3f  %s\n", on->drop[i].t, on->drop[i].peak,
-		       on->drop[i].why);
-}
-
-/*
- * The onsets as the t_e CSV that --data reads, for correcting by hand: the
- * impacts kept, and the clicks dropped as comments with the reason, in
- * time order (uncommenting one makes it an impact).
- */
-static void
-fill_onsets(FILE *f, const void *ctx)
-{
-	const struct hb_onset_result *on = ctx;
-	const char *prov = cli_provenance();
-	size_t i = 0, k = 0;
-
-	if (prov[0] == ';')     /* the preset comment, as a CSV comment */
-		fprintf(f, "#%s\n", prov + 1);
-	fprintf(f, "t_e\n");
-	while (i < on->n || k < on->ndrop) {
-		if (k < on->ndrop && (i == on->n || on->drop[k].t < on->t[i])) {
-			fprintf(f, "#%.9f  (dropped: %s)\n", on->drop[k].t, on->drop[k].why);
-			k++;
-		} else {
-			fprintf(f, "%.9f\n", on->t[i++]);
-		}
-	}
 }
 
 /* The residuals CSV: a row per data point. */
@@ -507,8 +423,8 @@ fit_main(int argc, char **argv)
 	 * and read by aubio by name; any other data is read once (a pipe or a
 	 * FIFO works) and bounded (input.h).
 	 */
-	fmt = audio_format_of(data);
-	if (fmt == NULL && audio_name(data)) {
+	fmt = fit_audio_format_of(data);
+	if (fmt == NULL && fit_audio_name(data)) {
 		struct stat st;
 
 		if (stat(data, &st) == 0 && !S_ISREG(st.st_mode))
@@ -538,13 +454,13 @@ fit_main(int argc, char **argv)
 
 		c = hb_onset_detect(data, &oo, &on, msg, sizeof msg);
 		if (on.n + on.ndrop > 0)
-			print_onsets(data, &on);
+			fit_print_onsets(data, &on);
 		fflush(stdout);
 		/* the clicks found, also of a refused take: to correct by hand */
 		if (onsets_path != NULL && on.n + on.ndrop > 0 && (c == HB_OK || c == HB_EINVAL)) {
 			char m[512];
 
-			if (hb_atomic_write_with(onsets_path, fill_onsets, &on, m, sizeof m)
+			if (hb_atomic_write_with(onsets_path, fit_fill_onsets, &on, m, sizeof m)
 			    != HB_OK) {
 				hb_onset_result_free(&on);
 				status = bad("--onsets-out %s", m);
