@@ -36,7 +36,7 @@ enum { HOP = 64, WIN = 512 };
 #define QUIET 0.0005 /* a gap this long below the threshold ends a click's sound, s */
 #define REACH 0.010  /* farthest a click lies from aubio's time for it, s */
 #define GATE 5.0     /* an impact rises GATE x (14 dB) above the noise rms */
-#define MAX_CAND 2000 /* candidates weighed for the sequence (O(n^3)) */
+#define MAX_CAND 400  /* candidates weighed for the sequence (O(n^3) time, O(n^2) memory) */
 
 void
 hb_onset_result_free(struct hb_onset_result *r)
@@ -433,9 +433,9 @@ hb_onset_detect(const char *path, const struct hb_onset_options *o, struct hb_on
 	for (size_t k = 0; k < nc; k++)
 		nabove += c[k].peak >= gate;
 	if (nabove > MAX_CAND) {
-		st = hb_status_set(msg, n, HB_EINVAL, "%s: %zu clicks above the noise in %.3g s: "
-		    "no recording of one bouncing sequence; cut it to the bounces", path, nabove,
-		    r->duration);
+		st = hb_status_set(msg, n, HB_EINVAL, "%s: %zu clicks above the noise in %.3g s, "
+		    "more than the %d weighed: no recording of one bouncing sequence; accepted: a "
+		    "take cut to the bounces", path, nabove, r->duration, MAX_CAND);
 		goto out;
 	}
 	why[0] = '\0';
