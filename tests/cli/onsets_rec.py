@@ -12,7 +12,9 @@
 # RT60; 0 none), ring (s: a long-ringing low mode), knock (s, a handling
 # knock at that time after the first impact, repeatable as knock2), blip
 # (a faint blip, s before the first impact), gap (shortest interval kept,
-# s), even (N clicks at even intervals instead: no bouncing sequence), seed.  Each impact: three damped modes, its loudness from its speed.
+# s), even (N clicks at even intervals instead: no bouncing sequence),
+# geom=T0,e (instead: intervals from T0 s shrinking by e down to gap),
+# damp (a factor on the modes' decay times), seed.  Each impact: three damped modes, its loudness from its speed.
 import sys
 import numpy as np
 
@@ -35,12 +37,20 @@ def main():
             break
         t.append(a)
         v.append(b)
+    if 'geom' in kv:  # intervals from T0 shrinking by e, down to gap
+        T0, e = (float(a) for a in kv['geom'].split(','))
+        t, v, T = [0.0], [1.0], T0
+        while T >= gap:
+            t.append(t[-1] + T)
+            v.append(v[-1] * e)
+            T *= e
     if 'even' in kv:  # no bouncing: clicks at even intervals, all as loud
         t, v = [0.25 * i for i in range(int(kv['even']))], [1.0] * int(kv['even'])
     t = np.array(t) - t[0] + pre
     n = int((t[-1] + post + 0.05 + float(kv.get('ring', 0))) * sr)
     x = np.zeros(n)
-    modes = [(2300.0, 0.004, 0.5), (3900.0, 0.002, 0.3), (6100.0, 0.001, 0.2)]
+    d = float(kv.get('damp', 1))  # scales the modes' decay times
+    modes = [(2300.0, 0.004 * d, 0.5), (3900.0, 0.002 * d, 0.3), (6100.0, 0.001 * d, 0.2)]
     if 'ring' in kv:
         modes.append((900.0, float(kv['ring']), 0.05))
     for ti, vv in zip(t, v):
