@@ -35,7 +35,7 @@ PKG_CONFIG ?= pkg-config
 # Debian packages the build and the tests use (apt-get names).
 APT_PACKAGES := libgsl-dev libncurses-dev libinih-dev libcriterion-dev pkg-config tmux mandoc \
                 clang libclang-rt-14-dev strace parallel slurm-wlm munge \
-                libaubio-dev aubio-tools sox locales python3-pandas \
+                libaubio-dev aubio-tools sox libsox-fmt-mp3 locales python3-pandas \
                 python3-cffi python3-numpy python3-pytest \
                 libcairo2-dev libpng-dev poppler-utils
 # Locales the tests run under (decimal commas, a Turkish case fold): `make

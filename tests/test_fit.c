@@ -594,7 +594,9 @@ Test(onset, errors_name_the_file)
 	write_wav(w, t, amp, 0, 0.3, 0.001, 3);
 	cr_assert_eq(hb_onset_detect(w, NULL, &r, msg, sizeof msg),
 	    HB_EINVAL);
-	cr_assert_not_null(strstr(msg, "no onsets"), "%s", msg);
+	/* noise alone: aubio fires nowhere, or on noise no louder than the noise */
+	cr_assert(strstr(msg, "no onsets") != NULL || strstr(msg, "rises above") != NULL,
+	    "%s", msg);
 	hb_onset_result_free(&r);
 	unlink(w);
 }

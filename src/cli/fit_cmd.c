@@ -31,7 +31,7 @@
 #define PROG "hybounce"
 
 enum { OPT_ONSET_METHOD = 256, OPT_ONSET_THRESHOLD, OPT_ONSET_LEVEL, OPT_MIN_INTERVAL,
-       OPT_MAX_ITER, OPT_RESIDUALS };
+       OPT_MAX_ITER, OPT_RESIDUALS, OPT_ONSETS_OUT, OPT_MAX_RSE };
 
 static const struct option long_options[] = {
 	{ "data",            required_argument, NULL, 'd' },
@@ -45,6 +45,8 @@ static const struct option long_options[] = {
 	{ "onset-threshold", required_argument, NULL, OPT_ONSET_THRESHOLD },
 	{ "onset-level",     required_argument, NULL, OPT_ONSET_LEVEL },
 	{ "min-interval",    required_argument, NULL, OPT_MIN_INTERVAL },
+	{ "onsets-out",      required_argument, NULL, OPT_ONSETS_OUT },
+	{ "max-relative-se", required_argument, NULL, OPT_MAX_RSE },
 	{ "quiet",           no_argument,       NULL, 'q' },
 	{ "help",            no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
@@ -57,7 +59,8 @@ usage(FILE *f)
 "usage: hybounce fit PRESET --data FILE --free KEY[,KEY...] [--set KEY=VALUE]...\n"
 "                [--out FILE] [--residuals FILE] [--jobs N] [--max-iter N]\n"
 "                [--onset-method M] [--onset-threshold X] [--onset-level X]\n"
-"                [--min-interval T] [--quiet]\n"
+"                [--min-interval T] [--onsets-out FILE] [--max-relative-se X]\n"
+"                [--quiet]\n"
 "\n"
 "Fits the free keys of PRESET so that its runs reproduce the measured\n"
 "collisions (nonlinear least squares, GSL trust region), and writes the\n"
@@ -66,22 +69,29 @@ usage(FILE *f)
 "  -d, --data FILE         the measurements: a CSV file with a column t_e (impact\n"
 "                          times of one bouncing sequence), or v_i with e, x_c_r\n"
 "                          and/or t_d (separate drops), each optionally with\n"
-"                          sd_NAME; or a recording (.wav) of a bouncing sequence\n"
+"                          sd_NAME; or a recording of a bouncing sequence (WAV,\n"
+"                          FLAC, Ogg, MP3, M4A, AIFF: known by its content)\n"
 "  -f, --free KEY,...      the keys to fit, e.g. law.c,law.alpha (repeatable)\n"
 "  -s, --set KEY=VALUE     change the preset first, e.g. a start (repeatable)\n"
 "  -o, --out FILE          the fitted preset (default: DATA's name + -fit.preset)\n"
 "      --residuals FILE    write the points as CSV: measured, simulated, sd ...\n"
 "  -j, --jobs N            runs in parallel (default: every core)\n"
 "      --max-iter N        iteration cap (default 100)\n"
+"      --max-relative-se X a credible estimate's standard error is at most X\n"
+"                          of its value (default 0.1), else exit 1\n"
 "      --onset-method M    aubio onset method for a recording (default hfc)\n"
 "      --onset-threshold X aubio's peak-picking threshold (default 0.3)\n"
 "      --onset-level X     a click starts where it reaches X (0 < X <= 1) of its\n"
 "                          peak (default 0.3)\n"
 "      --min-interval T    shortest interval between clicks (default 2 ms)\n"
+"      --onsets-out FILE   write a recording's impact times as a t_e CSV (to\n"
+"                          correct by hand and fit with --data)\n"
 "  -q, --quiet             no progress lines on stderr, no residual table\n"
 "\n"
-"Exit status: 0 converged, 1 stopped without converging (iteration cap, no\n"
-"progress, parameters not identifiable), 2 bad input, 128+N stopped by signal\n"
+"Exit status: 0 converged to credible estimates, 1 stopped without converging\n"
+"(iteration cap, no progress, parameters not identifiable) or an estimate's\n"
+"relative standard error above --max-relative-se, 2 bad input (a recording\n"
+"that is no bouncing sequence too), 128+N stopped by signal\n"
 "N (SIGINT, SIGTERM, SIGHUP: the best point so far is written).  See hybounce(1).\n");
 }
 
@@ -174,29 +184,6 @@ progress(void *ctx, int iter, double cost, long runs)
 {
 	(void)ctx;
 	fprintf(stderr, PROG " fit: iteration %d: cost %.6g (%ld runs)\n", iter, cost, runs);
-}
-
-/* Shows the onsets found in a recording and the restitution they imply. */
-static void
-print_onsets(const char *path, const struct hb_onset_result *on)
-{
-	printf("onsets      %zu in %s (%.0f Hz, %.3f s, noise rms %.2g of full scale)\n",
-	    on->n, path, on->samplerate, on->duration, on->noise);
-	printf("   i      t [s]    interval [ms]   e ~ ratio of intervals   peak\n");
-	for (size_t i = 0; i < on->n; i++) {
-		printf("%4zu %10.6f", i, on->t[i]);
-		if (i > 0)
-			printf(" %16.3f", 1e3 * (on->t[i] - on->t[i - 1]));
-		else
-			printf(" %16s", "-");
-		if (i > 1)
-			printf(" %24.4f", (on->t[i] - on->t[i - 1]) / (on->t[i - 1] - on->t[i - 2]));
-		else
-			printf(" %24s", "-");
-		printf(" %6.3f\n", on->peak[i]);
-	}
-	printf("            (e of collision i-1 ~ interval i / interval i-1, neglecting the "
-	       "contact's duration)\n");
 }
 
 /* The residuals CSV: a row per data point. */
@@ -329,17 +316,18 @@ report(const struct hb_fit_result *r, const struct hb_fit_data *d, int quiet)
 int
 fit_main(int argc, char **argv)
 {
-	const char *data = NULL, *out = NULL, *resid_path = NULL, *preset;
+	const char *data = NULL, *out = NULL, *resid_path = NULL, *preset, *onsets_path = NULL;
 	const char **sets = NULL, *keys[HB_FIT_MAX_FREE];
 	char *freebuf = NULL, path[1024], outbuf[1024], msg[4096];
 	struct hb_onset_options oo = { 0 };
+	double max_rse = 0.1;
 	struct hb_fit_options fo = { 0 };
 	struct hb_fit_data d = { 0 };
 	struct hb_fit_result r = { 0 };
 	struct hb_scene sc;
 	struct hb_outputs pol;
 	struct hb_fit *fit = NULL;
-	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2, sig = 0, k_out, k_resid = -1;
+	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2, sig = 0, k_out, k_resid = -1, k_ons = -1;
 	size_t freelen = 0;
 
 	if ((sets = calloc((size_t)argc + 1, sizeof *sets)) == NULL)
@@ -385,6 +373,11 @@ fit_main(int argc, char **argv)
 			break;
 		case OPT_MIN_INTERVAL:
 			if (parse_pos("--min-interval", optarg, &oo.min_interval))
+				goto out;
+			break;
+		case OPT_ONSETS_OUT: onsets_path = optarg; break;
+		case OPT_MAX_RSE:
+			if (parse_pos("--max-relative-se", optarg, &max_rse))
 				goto out;
 			break;
 		case 'q': quiet = 1; break;
@@ -462,22 +455,50 @@ fit_main(int argc, char **argv)
 		}
 		k_resid = pol.nout - 1;
 	}
+	if (onsets_path != NULL) {
+		if (hb_outputs_add(&pol, onsets_path, "--onsets-out", msg, sizeof msg) != HB_OK) {
+			status = bad("%s%s", strncmp(msg, "--onsets-out ", 13) == 0 ? ""
+			             : "--onsets-out ", msg);
+			goto out;
+		}
+		k_ons = pol.nout - 1;
+	}
 	printf("hybounce %s fit\n", HYBOUNCE_VERSION);
 	printf("preset      %s (%s)\n", preset, path);
 	/*
-	 * The data, through the one loader (fit.h: a CSV read once and bounded,
-	 * or a recording whose onsets are shown first, even when they make no
-	 * sequence).
+	 * The data, through the one loader (fit.h: a recording known by its
+	 * content, whose onsets are shown first, even when they make no
+	 * sequence; any other file a CSV read once and bounded).
 	 */
 	{
 		struct hb_onset_result on;
 		int st = hb_fit_data_open(data, &oo, &d, &on, msg, sizeof msg);
+		const int recording = on.samplerate > 0;
 
-		if (on.n > 0)
-			print_onsets(data, &on);
+		if (on.n + on.ndrop > 0)
+			fit_print_onsets(data, &on);
+		fflush(stdout);
+		/* the clicks found, also of a refused take: to correct by hand */
+		if (onsets_path != NULL && on.n + on.ndrop > 0 && (st == HB_OK || st == HB_EINVAL)) {
+			char m[512];
+
+			if (hb_atomic_write_with(onsets_path, fit_fill_onsets, &on, m, sizeof m)
+			    != HB_OK) {
+				hb_onset_result_free(&on);
+				status = bad("--onsets-out %s", m);
+				goto out;
+			}
+			print_wrote(onsets_path, &pol.out[k_ons].target);
+		}
 		hb_onset_result_free(&on);
 		if (st != HB_OK) {
 			status = bad("--data %s", msg);
+			goto out;
+		}
+		if (onsets_path != NULL && !recording) {
+			status = bad("--onsets-out %s: --data %s is no recording; accepted: --onsets-out "
+			             "with a recording (it writes the recording's impact times)",
+			             onsets_path, data);
 			goto out;
 		}
 	}
@@ -560,6 +581,18 @@ fit_main(int argc, char **argv)
 		status = cli_signal_status(sig);
 	} else {
 		status = r.reason <= HB_FIT_CONVERGED_COST ? 0 : 1;
+		/* converged is not credible: every estimate within max_rse */
+		for (int i = 0; status == 0 && i < r.np; i++) {
+			double rel = r.se[i] / fabs(r.value[i]);
+
+			if (!(rel <= max_rse)) {
+				fprintf(stderr, PROG " fit: not credible: the standard error of %s is "
+				        "%.3g of its value, above %g (--max-relative-se): the data do not "
+				        "determine it; the estimates are reported and written\n",
+				        r.key[i], rel, max_rse);
+				status = 1;
+			}
+		}
 	}
 out:
 	cli_signals_restore();

@@ -5,9 +5,11 @@
  *
  * Exit status: 0 the fit converged; 1 it stopped without converging
  * (iteration cap, no progress, parameters not identifiable, runs failing):
- * the best point is still reported and written; 2 bad input (options,
- * preset, --set, data file, a start at which the runs fail, an unwritable
- * output): nothing is written.
+ * or an estimate's relative standard error above --max-relative-se: the
+ * best point is still reported and written; 2 bad input (options, preset,
+ * --set, data file, a recording that is no bouncing sequence, a start at
+ * which the runs fail, an unwritable output): nothing is written (but
+ * --onsets-out).
  */
 #ifndef HYBOUNCE_CLI_FIT_H
 #define HYBOUNCE_CLI_FIT_H
@@ -18,6 +20,17 @@
 /* argv[0] is "fit".  Returns the exit status. */
 int
 fit_main(int argc, char **argv);
+
+struct hb_onset_result;
+
+/* The onsets of a recording, then the clicks dropped with their reason. */
+void
+fit_print_onsets(const char *path, const struct hb_onset_result *on);
+
+/* hb_atomic_write_with's filler for --onsets-out: the t_e CSV, dropped
+ * clicks as comments; ctx is the struct hb_onset_result. */
+void
+fit_fill_onsets(FILE *f, const void *ctx);
 
 /* The text plot of measured against simulated values (fit_plot.c). */
 void

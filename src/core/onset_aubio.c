@@ -65,6 +65,20 @@ load(void)
 	LOAD(h, aubio_onset_set_minioi_s);
 	LOAD(h, aubio_log_set_level_function);
 	LOAD(h, aubio_log_reset);
+	/*
+	 * aubio reads through FFmpeg (libavformat), whose log goes to stderr
+	 * ("[vorbis @ 0x...] Could not update timestamps ..."): the engine
+	 * never prints, so it is silenced (AV_LOG_QUIET) where aubio links it.
+	 */
+	{
+		void *p = dlsym(h, "av_log_set_level");
+		void (*set_level)(int);
+
+		if (p != NULL) {
+			memcpy(&set_level, &p, sizeof p);
+			set_level(-8);
+		}
+	}
 	aubio_loaded = 1; /* the handle stays open for the life of the process */
 }
 
