@@ -32,6 +32,9 @@ fi
 
 if ! /usr/bin/python3 -c 'import scipy.integrate' >/dev/null 2>&1; then
 	ok "bench-scipy smoke # SKIP no python3-scipy"
+elif ! command -v hyperfine >/dev/null 2>&1; then
+	# make deps-scipy installs both; python3-scipy may come alone (another package's need)
+	ok "bench-scipy smoke # SKIP no hyperfine (make deps-scipy)"
 elif sh tests/bench/scipy.sh --smoke "$BIN" "$T/out" >"$T/smoke" 2>&1 &&
     grep -q '^| 3, BWMCL | [0-9.]* | [0-9.-]* | [0-9-]*x | ' "$T/out/scipy.md" &&
     grep -q '^Same model: ' "$T/out/scipy.md"; then
