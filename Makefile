@@ -446,7 +446,7 @@ bench-scipy: deps
 	@sh tests/bench/scipy.sh $(BIN) $(BUILD)/bench
 
 deps-scipy:
-	@$(MAKE) --no-print-directory deps APT_PACKAGES='python3-scipy python3-numpy'
+	@$(MAKE) --no-print-directory deps APT_PACKAGES='python3-scipy python3-numpy hyperfine'
 
 # The explorer's key list in the man page and the README, generated from the
 # key table (src/tui/keys.c) between the KEYS-BEGIN and KEYS-END markers;
