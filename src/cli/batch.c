@@ -55,6 +55,7 @@
 #include "hybounce/units.h"
 
 #include "batch.h"
+#include "report.h"
 #include "signals.h"
 #include "clock.h"
 
@@ -159,16 +160,6 @@ check_export_path(const char *opt, const char *path)
 		return 2;
 	}
 	return 0;
-}
-
-/* "wrote PATH", and how when it was not a plain new file (outputs.h). */
-static void
-print_wrote(const char *path, const struct hb_atomic_target *t)
-{
-	char how[4200];
-
-	hb_outputs_how(t, how, sizeof how);
-	fprintf(stderr, "wrote %s%s\n", path, how);
 }
 
 /* ------------------------------------------------------------------ */
@@ -813,11 +804,11 @@ batch_run(const struct batch_options *o)
 			status = 2;
 		} else {
 			if (trace_file != NULL)
-				print_wrote(trace_file, &rep.target[0]);
+				cli_print_wrote(trace_file, &rep.target[0]);
 			if (coll_file != NULL)
-				print_wrote(coll_file, &rep.target[1]);
+				cli_print_wrote(coll_file, &rep.target[1]);
 			if (rep.scene[0])
-				print_wrote(rep.scene, &rep.target[2]);
+				cli_print_wrote(rep.scene, &rep.target[2]);
 		}
 	}
 	if (trace_out || coll_out) {

@@ -26,6 +26,7 @@
 #include "hybounce/scene.h"
 #include "hybounce/status.h"
 #include "fit_cmd.h"
+#include "report.h"
 #include "signals.h"
 
 #define PROG "hybounce"
@@ -201,16 +202,6 @@ fill_residuals(FILE *f, const void *ctx)
 	}
 }
 
-/* "wrote PATH" with how (outputs.h): every overwrite is named. */
-static void
-print_wrote(const char *path, const struct hb_atomic_target *t)
-{
-	char how[4200];
-
-	hb_outputs_how(t, how, sizeof how);
-	fprintf(stderr, "wrote %s%s\n", path, how);
-}
-
 /*
  * The fitted scene as a preset (then the provenance line) and the residuals
  * as CSV, as one atomic set (atomic.h): should either fail, neither is
@@ -246,9 +237,9 @@ write_outputs(const char *out, const struct hb_scene *sc, const char *resid_path
 	buf = NULL;
 	if ((st = hb_atomic_commit(&set, m, sizeof m)) != HB_OK)
 		goto failed;
-	print_wrote(out, &pol->out[k_out].target);
+	cli_print_wrote(out, &pol->out[k_out].target);
 	if (resid_path != NULL)
-		print_wrote(resid_path, &pol->out[k_resid].target);
+		cli_print_wrote(resid_path, &pol->out[k_resid].target);
 	return 0;
 fail:
 	hb_atomic_abort(&set);
@@ -488,7 +479,7 @@ fit_main(int argc, char **argv)
 				status = bad("--onsets-out %s", m);
 				goto out;
 			}
-			print_wrote(onsets_path, &pol.out[k_ons].target);
+			cli_print_wrote(onsets_path, &pol.out[k_ons].target);
 		}
 		hb_onset_result_free(&on);
 		if (st != HB_OK) {

@@ -11,6 +11,7 @@
 
 #include "hybounce/onset.h"
 #include "fit_cmd.h"
+#include "report.h"
 #include "signals.h"
 
 /* Shows the onsets found in a recording and the restitution they imply. */

@@ -33,6 +33,7 @@
 #include "sweep_cli.h"
 #include "fit_cmd.h"
 #include "plot_cmd.h"
+#include "report.h"
 #include "signals.h"
 
 #define PROG "hybounce"

@@ -24,6 +24,7 @@
 #include "plot_cairo.h"
 #include "plot_cmd.h"
 #include "plot_tex.h"
+#include "report.h"
 #include "signals.h"
 
 #define PROG "hybounce plot"
@@ -174,16 +175,6 @@ static const struct option long_options[] = {
 	{ "help",       no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
 };
-
-/* "wrote PATH" with how (outputs.h). */
-static void
-print_wrote(const char *path, const struct hb_atomic_target *t)
-{
-	char how[4200];
-
-	hb_outputs_how(t, how, sizeof how);
-	fprintf(stderr, "wrote %s%s\n", path, how);
-}
 
 int
 plot_main(int argc, char **argv)
@@ -401,9 +392,9 @@ plot_main(int argc, char **argv)
 		status = bad("--out %s", msg);
 		goto done;
 	}
-	print_wrote(out, &pol.out[0].target);
+	cli_print_wrote(out, &pol.out[0].target);
 	if (fmt == PLOT_TEX)
-		print_wrote(datpath, &pol.out[1].target);
+		cli_print_wrote(datpath, &pol.out[1].target);
 done:
 	if (fig != NULL) {
 		plot_figure_free(fig);

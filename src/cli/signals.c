@@ -8,8 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "hybounce/outputs.h"
-#include "hybounce/version.h"
 #include "signals.h"
 
 volatile sig_atomic_t cli_signal;
@@ -73,25 +71,4 @@ int
 cli_signal_status(int sig)
 {
 	return 128 + sig;
-}
-
-static char *provenance;
-
-void
-cli_provenance_init(int argc, char **argv)
-{
-	size_t len = hb_outputs_provenance(NULL, 0, hb_version(), hb_version_commit(), argc,
-	                                   (const char *const *)argv);
-
-	free(provenance);
-	provenance = malloc(len + 1);
-	if (provenance != NULL)
-		hb_outputs_provenance(provenance, len + 1, hb_version(), hb_version_commit(), argc,
-		                      (const char *const *)argv);
-}
-
-const char *
-cli_provenance(void)
-{
-	return provenance != NULL ? provenance : "";
 }

@@ -35,14 +35,4 @@ cli_signal_name(int sig);
 int
 cli_signal_status(int sig);
 
-/*
- * The provenance line of this process's outputs (outputs.h): version,
- * commit and the command line as main() received it (cli_provenance_init).
- */
-void
-cli_provenance_init(int argc, char **argv);
-
-const char *
-cli_provenance(void);
-
 #endif

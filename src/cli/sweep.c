@@ -35,6 +35,7 @@
 #include "hybounce/sweep.h"
 
 #include "sweep_cli.h"
+#include "report.h"
 #include "signals.h"
 #include "clock.h"
 
@@ -238,15 +239,12 @@ probe_dir(const char *dir, struct dir_targets *d)
 static void
 print_wrote_dir(const struct dir_targets *d, int unchanged)
 {
-	char how[4200];
-
 	for (int k = 0; k < 2; k++) {
 		if (unchanged) {
 			fprintf(stderr, "kept %s (the sweep was complete)\n", d->path[k]);
 			continue;
 		}
-		hb_outputs_how(&d->t[k], how, sizeof how);
-		fprintf(stderr, "wrote %s%s\n", d->path[k], how);
+		cli_print_wrote(d->path[k], &d->t[k]);
 	}
 }
 
