@@ -6,8 +6,26 @@
 #define HYBOUNCE_SWEEP_IMPL_H
 
 #include <stddef.h>
+#include <sys/types.h>
 #include "hybounce/sim.h"
 
 struct hb_sweep;
+
+#define SWEEP_SPEC_NAME "sweep.preset"
+
+/* The whole of a file into a malloc'd string (*len bytes), read once and
+ * bounded (input.h).  NULL with msg on failure; errno ENOENT when absent. */
+char *
+sweep_slurp(const char *path, size_t *len, char *msg, size_t n);
+
+/*
+ * Reads a journal: calls seen(ctx, id, off, len) for each complete block
+ * and cuts a partial block off the end when trunc is set.  Returns HB_OK
+ * (also for a journal that is not there), HB_EIO, or HB_EINVAL for a
+ * damaged journal.
+ */
+int
+sweep_journal_scan(const char *path, long npoints, int trunc,
+                   int (*seen)(void *, long, off_t, size_t), void *ctx, char *msg, size_t n);
 
 #endif

@@ -122,19 +122,33 @@ done
 [ $o = 1 ] && set -- "$@" --out fit.preset' 'fit "$@" --quiet'
 H=$ROOT/fe/hybounce
 # A stand-in for Slurm's sbatch (rows that run what --emit slurm printed):
-# runs the job script from standard input at once, each task of --array,
-# in the current folder, and prints a job id.
+# runs the job (--wrap=TEXT, else standard input) at once in its --chdir
+# folder, each index of --array (N, N-M and lists of them), and prints a
+# job id.
 mkdir "$ROOT/slurm"
 cat >"$ROOT/slurm/sbatch" <<'EOF'
 #!/bin/sh
-n=0
-for a in "$@"; do case $a in --array=*) r=${a#--array=}; n=${r#*-} ;; esac; done
-job=$(cat)
-i=0
-while [ "$i" -le "$n" ]; do
-	SLURM_ARRAY_TASK_ID=$i sh -c "$job" >/dev/null 2>&1
-	i=$((i + 1))
+arr= job= dir=. wrap=0
+for a in "$@"; do
+	case $a in
+	--array=*) arr=${a#--array=} ;;
+	--wrap=*) job=${a#--wrap=}; wrap=1 ;;
+	--chdir=*) dir=${a#--chdir=} ;;
+	esac
 done
+[ $wrap = 1 ] || job=$(cat)
+run() { (cd "$dir" && SLURM_ARRAY_TASK_ID=$1 SLURM_JOB_ID=4242 sh -c "$job") >/dev/null 2>&1; }
+if [ -z "$arr" ]; then
+	run 0
+else
+	for r in $(echo "$arr" | tr ',' ' '); do
+		i=${r%-*}
+		while [ "$i" -le "${r#*-}" ]; do
+			run "$i"
+			i=$((i + 1))
+		done
+	done
+fi
 echo 4242
 EOF
 chmod 755 "$ROOT/slurm/sbatch"

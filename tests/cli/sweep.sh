@@ -161,9 +161,9 @@ for k in 0 1 2; do
 	if [ $k -eq 1 ]; then
 		"$BIN" sweep --merge "$T/sh" 2>"$T/err"
 		rc=$?
-		if [ $rc -eq 1 ] && grep -q '2 of 6 points are missing (the first is point 2)' "$T/err" &&
+		if [ $rc -eq 1 ] && grep -q '1 of 3 shards incomplete: shard 2 (not started); 2 of 6 points missing' "$T/err" &&
 		    [ ! -f "$T/sh/runs.csv" ]; then
-			ok "--merge before every shard has finished: exit 1, names the missing points, writes nothing"
+			ok "--merge before every shard has finished: exit 1, names the missing shard, writes nothing"
 		else notok "--merge of incomplete shards (exit $rc)" "$T/err"; fi
 	fi
 done
