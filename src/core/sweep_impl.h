@@ -7,6 +7,7 @@
 
 #include <stddef.h>
 #include <sys/types.h>
+#include "hybounce/scene.h"
 #include "hybounce/sim.h"
 
 struct hb_sweep;
@@ -27,5 +28,16 @@ sweep_slurp(const char *path, size_t *len, char *msg, size_t n);
 int
 sweep_journal_scan(const char *path, long npoints, int trunc,
                    int (*seen)(void *, long, off_t, size_t), void *ctx, char *msg, size_t n);
+
+/* The base scene of a sweep (the preset and --set, before any axis). */
+const struct hb_scene *
+sweep_base(const struct hb_sweep *sw);
+
+/*
+ * hb_sweep_merge_shards for a sweep in hand, which DIR/sweep.preset holds
+ * (hb_sweep_prepare_dir checked it): its values are not made again.
+ */
+int
+sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char *msg, size_t n);
 
 #endif

@@ -250,6 +250,19 @@ hb_sweep_merge_shards(const char *dir, long nshards, char *msg, size_t n)
 {
 	struct hb_scene sc;
 	struct hb_sweep *sw = load_spec(dir, &sc, msg, n);
+	int rc;
+
+	if (sw == NULL)
+		return HB_EINVAL;
+	rc = sweep_merge_into(sw, dir, nshards, msg, n);
+	hb_sweep_free(sw);
+	return rc;
+}
+
+int
+sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char *msg, size_t n)
+{
+	const struct hb_scene *sc = sweep_base(sw);
 	struct index x = { 0 };
 	char **names = NULL, hdr[4096], path[4200];
 	int nnames = 0, *fds = NULL, rc = HB_OK;
@@ -258,11 +271,8 @@ hb_sweep_merge_shards(const char *dir, long nshards, char *msg, size_t n)
 	int set_open = 0;
 	char *blk = NULL;
 	size_t cap = 0;
-	long np;
+	long np = hb_sweep_npoints(sw);
 
-	if (sw == NULL)
-		return HB_EINVAL;
-	np = hb_sweep_npoints(sw);
 	x.off = malloc((size_t)np * sizeof *x.off);
 	x.len = malloc((size_t)np * sizeof *x.len);
 	x.file = malloc((size_t)np * sizeof *x.file);
@@ -322,7 +332,7 @@ hb_sweep_merge_shards(const char *dir, long nshards, char *msg, size_t n)
 	}
 	hb_sweep_runs_header(sw, hdr, sizeof hdr);
 	fprintf(runs, "%s\n", hdr);
-	if ((rc = collisions_header(&sc, hdr, sizeof hdr, msg, n)) != HB_OK)
+	if ((rc = collisions_header(sc, hdr, sizeof hdr, msg, n)) != HB_OK)
 		goto out;
 	fprintf(coll, "id,%s\n", hdr);
 	for (long id = 0; id < np && rc == HB_OK; id++) {
@@ -367,7 +377,6 @@ out:
 	free(x.off);
 	free(x.len);
 	free(x.file);
-	hb_sweep_free(sw);
 	return rc;
 }
 

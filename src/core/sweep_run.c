@@ -11,8 +11,9 @@
  * calling thread.  A block counts once its runs row is complete (ends in a
  * newline); a SIGKILL can leave at most one partial block at the end, which
  * the next start cuts off before it appends.  Nothing is cached in memory
- * but one bit per point, and the merge keeps one offset per point, so
- * memory stays flat in the number of points computed.
+ * but one bit per point (the workers take the next id not in the journal
+ * from those bits), and the merge keeps 14 bytes per point, so memory
+ * stays flat in the number of points computed.
  *
  * Threads.  Workers take the next id under a mutex, run the point on their
  * own scene and sim (hb_sweep_point_block), and queue the block; the calling
@@ -336,8 +337,9 @@ struct pool {
 	const struct hb_sweep *sw;
 	pthread_mutex_t mu;
 	pthread_cond_t cv;
-	const long *pending;
-	long npending, next;
+	const unsigned char *done;  /* the journal's points: one bit each */
+	long npending;              /* points of the shard to compute */
+	long next, step, np;        /* the next id to look at, the shard count, the points */
 	int stop;
 	struct result *head, *tail;
 };
@@ -353,11 +355,14 @@ worker(void *arg)
 		double c0;
 
 		pthread_mutex_lock(&p->mu);
-		if (p->stop || p->next >= p->npending) {
+		while (p->next < p->np && (p->done[p->next / 8] & (1u << (p->next % 8))))
+			p->next += p->step;   /* in the journal already */
+		if (p->stop || p->next >= p->np) {
 			pthread_mutex_unlock(&p->mu);
 			return NULL;
 		}
-		id = p->pending[p->next++];
+		id = p->next;
+		p->next += p->step;
 		pthread_mutex_unlock(&p->mu);
 
 		r = calloc(1, sizeof *r);
@@ -391,7 +396,7 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 	struct doneset ds = { 0 };
 	struct pool p;
 	pthread_t *th = NULL;
-	long *pending = NULL, got = 0, nth = 0;
+	long got = 0, nth = 0;
 	char jpath[4200];
 	int fd = -1, rc, cancelled = 0;
 	double t0 = clock_seconds(CLOCK_MONOTONIC);
@@ -428,14 +433,8 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 	/* The shard's points that the journal does not hold. */
 	for (long id = k; id < np; id += ns)
 		pr.total++;
-	pending = malloc((size_t)(pr.total - ds.count + 1) * sizeof *pending);
-	if (pending == NULL) {
-		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-		goto out;
-	}
 	for (long id = k; id < np; id += ns)
-		if (!(ds.bits[id / 8] & (1u << (id % 8))))
-			pending[p.npending++] = id;
+		p.npending += !(ds.bits[id / 8] & (1u << (id % 8)));
 	pr.resumed = pr.done = pr.total - p.npending;
 	if (o->progress)
 		o->progress(o->ctx, &pr);
@@ -447,7 +446,10 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 			goto out;
 		}
 		p.sw = sw;
-		p.pending = pending;
+		p.done = ds.bits;
+		p.next = k;
+		p.step = ns;
+		p.np = np;
 		pthread_mutex_init(&p.mu, NULL);
 		pthread_cond_init(&p.cv, NULL);
 		nth = o->jobs < 1 ? 1 : o->jobs;
@@ -549,12 +551,11 @@ threads_done:
 			goto out;
 	}
 	if (ns == 1) {
-		if ((rc = hb_sweep_merge(o->dir, msg, n)) == HB_OK && unlink(jpath) != 0 &&
+		if ((rc = sweep_merge_into(sw, o->dir, 0, msg, n)) == HB_OK && unlink(jpath) != 0 &&
 		    errno != ENOENT)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 	}
 out:
-	free(pending);
 	free(ds.bits);
 	return rc;
 }
