@@ -182,7 +182,9 @@ hb_sweep_prepare_dir_with(const struct hb_sweep *sw, const char *dir, const char
  * (DIR/shard-K-of-N.journal, or DIR/points.journal for 0/1) does not hold
  * yet, on o->jobs threads, appending each to the journal as it completes.
  * A one-shard sweep then writes runs.csv and collisions.csv (hb_sweep_merge)
- * and removes its journal.  Returns HB_OK (failed points included),
+ * and removes its journal.  The journal is locked (flock) while the shard
+ * runs: a second run of the same shard gets HB_EIO ("another process is
+ * computing these points") and leaves it alone.  Returns HB_OK (failed points included),
  * HB_EDONE (cancelled, see sweep_options), HB_EINVAL (bad DIR), HB_EIO or
  * HB_ENOMEM.
  */

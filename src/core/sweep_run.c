@@ -31,6 +31,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -309,6 +310,24 @@ struct doneset {
 	long count, failed;
 };
 
+/*
+ * An exclusive lock on the journal open as fd (flock: a second process on
+ * the same shard, here or on another node of a shared file system, is
+ * refused instead of appending beside it).  A file system without locks is
+ * taken as it is.  fd < 0: the open's errno.
+ */
+static int
+journal_lock(int fd, const char *path, char *msg, size_t n)
+{
+	if (fd < 0)
+		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+	if (flock(fd, LOCK_EX | LOCK_NB) == 0 || errno != EWOULDBLOCK)
+		return HB_OK;
+	return hb_status_set(msg, n, HB_EIO, "%s: another process is computing these points "
+	                     "(the journal is locked); expected one run of a shard at a time",
+	                     path);
+}
+
 static int
 mark_done(void *ctx, long id, off_t off, size_t len)
 {
@@ -435,6 +454,10 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 	ds.bits = calloc((size_t)np / 8 + 1, 1);
 	if (ds.bits == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+	/* One process a journal: locked before its torn end is cut off. */
+	fd = open(jpath, O_WRONLY | O_APPEND | O_CLOEXEC);
+	if (fd >= 0 && (rc = journal_lock(fd, jpath, msg, n)) != HB_OK)
+		goto out;
 	if ((rc = sweep_journal_scan(jpath, np, 1, mark_done, &ds, msg, n)) != HB_OK)
 		goto out;
 	/* The shard's points that the journal does not hold. */
@@ -447,9 +470,10 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 		o->progress(o->ctx, &pr);
 
 	if (p.npending > 0) {
-		fd = open(jpath, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-		if (fd < 0) {
-			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+		if (fd < 0 && ((fd = open(jpath, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644)) < 0 ||
+		               (rc = journal_lock(fd, jpath, msg, n)) != HB_OK)) {
+			if (fd < 0)
+				rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 			goto out;
 		}
 		p.sw = sw;
@@ -554,8 +578,13 @@ threads_done:
 		pthread_mutex_destroy(&p.mu);
 		if (close(fd) != 0 && rc == HB_OK)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+		fd = -1;
 		if (rc != HB_OK)
 			goto out;
+	}
+	if (fd >= 0) {
+		close(fd);   /* nothing was appended */
+		fd = -1;
 	}
 	if (ns == 1) {
 		if ((rc = sweep_merge_into(sw, o->dir, 0, msg, n)) == HB_OK && unlink(jpath) != 0 &&
@@ -563,6 +592,8 @@ threads_done:
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 	}
 out:
+	if (fd >= 0)
+		close(fd);
 	free(ds.bits);
 	return rc;
 }
