@@ -8,8 +8,8 @@
  * set of the atomic writer (atomic.h): a reader never sees half a file and
  * a failed merge leaves the old ones.  An incomplete folder is refused with
  * the shards that are missing or incomplete, by number, so that only those
- * are computed again.  The merge keeps 14 bytes per point (an offset, a
- * length and a journal number), never the points' text.
+ * are computed again.  The merge keeps 8 bytes per point (an offset and a
+ * journal number), never the points' text.
  */
 #include <dirent.h>
 #include <errno.h>
@@ -144,10 +144,16 @@ shards_missing_msg(const char *dir, long np, long ns, int (*have)(const void *, 
 	                     missing, np);
 }
 
+/*
+ * Where each point's block is: its offset in its journal (48 bits, 256 TB)
+ * and the journal's number (16 bits) in 8 bytes; its end is found when it
+ * is read (the block ends with its "r," line).
+ */
+#define INDEX_NONE UINT64_MAX
+#define INDEX_MAX_OFF ((uint64_t)1 << 48)
+
 struct index {
-	int64_t *off;     /* -1: not seen */
-	uint32_t *len;
-	uint16_t *file;
+	uint64_t *at;     /* (offset << 16) | journal, INDEX_NONE: not seen */
 	int cur;
 	long count;
 };
@@ -157,11 +163,12 @@ index_add(void *ctx, long id, off_t off, size_t len)
 {
 	struct index *x = ctx;
 
-	if (x->off[id] >= 0)
+	(void)len;
+	if (x->at[id] != INDEX_NONE)
 		return HB_OK;  /* the first copy wins */
-	x->off[id] = off;
-	x->len[id] = (uint32_t)len;
-	x->file[id] = (uint16_t)x->cur;
+	if ((uint64_t)off >= INDEX_MAX_OFF)
+		return HB_ENOMEM;  /* a journal of 256 TB */
+	x->at[id] = (uint64_t)off << 16 | (uint64_t)x->cur;
 	x->count++;
 	return HB_OK;
 }
@@ -169,7 +176,49 @@ index_add(void *ctx, long id, off_t off, size_t len)
 static int
 index_has(const void *ctx, long id)
 {
-	return ((const struct index *)ctx)->off[id] >= 0;
+	return ((const struct index *)ctx)->at[id] != INDEX_NONE;
+}
+
+/*
+ * Reads the block at off of fd into *buf (grown as needed, *cap bytes):
+ * from off up to the end of its "r," line.  Returns its length, or 0 for
+ * a short read.
+ */
+static size_t
+read_block(int fd, off_t off, char **buf, size_t *cap)
+{
+	size_t have = 0, scan = 0, want = 2048;
+
+	for (;;) {
+		ssize_t got;
+
+		if (have + want + 1 > *cap) {
+			char *nb = realloc(*buf, have + want + 1);
+
+			if (nb == NULL)
+				return 0;
+			*buf = nb;
+			*cap = have + want + 1;
+		}
+		got = pread(fd, *buf + have, want, off + (off_t)have);
+		if (got <= 0)
+			return 0;
+		have += (size_t)got;
+		while (scan < have) {
+			char *nl = memchr(*buf + scan, '\n', have - scan);
+
+			if (nl == NULL)
+				break;
+			if ((*buf)[scan] == 'r') {
+				size_t end = (size_t)(nl - *buf) + 1;
+
+				(*buf)[end] = '\0';
+				return end;
+			}
+			scan = (size_t)(nl - *buf) + 1;
+		}
+		want *= 2;
+	}
 }
 
 /* The collisions header of --collisions (from an empty run's CSV). */
@@ -273,15 +322,13 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char 
 	size_t cap = 0;
 	long np = hb_sweep_npoints(sw);
 
-	x.off = malloc((size_t)np * sizeof *x.off);
-	x.len = malloc((size_t)np * sizeof *x.len);
-	x.file = malloc((size_t)np * sizeof *x.file);
-	if (x.off == NULL || x.len == NULL || x.file == NULL) {
+	x.at = malloc((size_t)np * sizeof *x.at);
+	if (x.at == NULL) {
 		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
 	}
 	for (long i = 0; i < np; i++)
-		x.off[i] = -1;
+		x.at[i] = INDEX_NONE;
 	if ((rc = journals_list(dir, &names, &nnames, msg, n)) != HB_OK)
 		goto out;
 	fds = malloc((size_t)(nnames + 1) * sizeof *fds);
@@ -295,6 +342,8 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char 
 		snprintf(path, sizeof path, "%s/%s", dir, names[i]);
 		x.cur = i;
 		rc = sweep_journal_scan(path, np, 0, index_add, &x, msg, n);
+		if (rc == HB_ENOMEM)
+			rc = hb_status_set(msg, n, HB_ENOMEM, "%s: a journal of 256 TB or more", path);
 		/* A journal that is not there (a dangling link, one removed since) holds nothing. */
 		if (rc == HB_OK && (fds[i] = open(path, O_RDONLY | O_CLOEXEC)) < 0 && errno != ENOENT)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
@@ -310,7 +359,7 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char 
 			rc = shards_missing_msg(dir, np, nshards, index_has, &x, np - x.count, msg, n);
 			goto out;
 		}
-		while (first < np && x.off[first] >= 0)
+		while (first < np && x.at[first] != INDEX_NONE)
 			first++;
 		rc = hb_status_set(msg, n, HB_EINVAL, "%s: %ld of %ld points are missing (the "
 		                "first is point %ld); expected every shard to have finished "
@@ -336,23 +385,13 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char 
 		goto out;
 	fprintf(coll, "id,%s\n", hdr);
 	for (long id = 0; id < np && rc == HB_OK; id++) {
-		size_t len = x.len[id];
+		int fi = (int)(x.at[id] & 0xffff);
 		const char *p;
 
-		if (len + 1 > cap) {
-			char *nb = realloc(blk, cap = len + 1);
-
-			if (nb == NULL) {
-				rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-				break;
-			}
-			blk = nb;
-		}
-		if (pread(fds[x.file[id]], blk, len, (off_t)x.off[id]) != (ssize_t)len) {
-			rc = hb_status_set(msg, n, HB_EIO, "%s/%s: short read", dir, names[x.file[id]]);
+		if (read_block(fds[fi], (off_t)(x.at[id] >> 16), &blk, &cap) == 0) {
+			rc = hb_status_set(msg, n, HB_EIO, "%s/%s: short read", dir, names[fi]);
 			break;
 		}
-		blk[len] = '\0';
 		for (p = blk; *p; ) {
 			const char *end = strchr(p, '\n');
 			size_t l = (size_t)(end - p) + 1;
@@ -374,9 +413,7 @@ out:
 	free(fds);
 	names_free(names, nnames);
 	free(blk);
-	free(x.off);
-	free(x.len);
-	free(x.file);
+	free(x.at);
 	return rc;
 }
 

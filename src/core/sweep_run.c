@@ -12,7 +12,7 @@
  * newline); a SIGKILL can leave at most one partial block at the end, which
  * the next start cuts off before it appends.  Nothing is cached in memory
  * but one bit per point (the workers take the next id not in the journal
- * from those bits), and the merge keeps 14 bytes per point, so memory
+ * from those bits), and the merge keeps 8 bytes per point, so memory
  * stays flat in the number of points computed.
  *
  * Threads.  Workers take the next id under a mutex, run the point on their
