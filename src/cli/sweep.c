@@ -154,61 +154,6 @@ parse_long(const char *t, long lo, long hi, long *out)
 	return 0;
 }
 
-/* Slurm's time limit: M, M:S, H:M:S, D-H, D-H:M, D-H:M:S, or UNLIMITED. */
-static int
-slurm_time_ok(const char *t)
-{
-	const char *p = t;
-	int fields = 0, day = 0;
-
-	if (strcmp(t, "UNLIMITED") == 0 || strcmp(t, "INFINITE") == 0)
-		return 1;
-	for (;;) {
-		if (*p < '0' || *p > '9')
-			return 0;
-		while (*p >= '0' && *p <= '9')
-			p++;
-		fields++;
-		if (*p == '-' && !day && fields == 1) {
-			day = 1;
-			fields = 0;
-			p++;
-		} else if (*p == ':' && fields < 3 - day) {
-			p++;
-		} else {
-			return *p == '\0';
-		}
-	}
-}
-
-/* Slurm's memory size: digits, then K, M, G or T (megabytes without). */
-static int
-slurm_mem_ok(const char *t)
-{
-	const char *p = t;
-
-	while (*p >= '0' && *p <= '9')
-		p++;
-	if (p == t)
-		return 0;
-	if (*p != '\0' && strchr("KMGTkmgt", *p) != NULL)
-		p++;
-	return *p == '\0';
-}
-
-/* A partition, account or QOS name (or a comma list of them). */
-static int
-slurm_name_ok(const char *t)
-{
-	if (*t == '\0')
-		return 0;
-	for (; *t; t++)
-		if (!((*t >= 'a' && *t <= 'z') || (*t >= 'A' && *t <= 'Z') ||
-		      (*t >= '0' && *t <= '9') || strchr("_-.,+", *t) != NULL))
-			return 0;
-	return 1;
-}
-
 static long
 online_cpus(void)
 {

@@ -34,4 +34,14 @@ int
 sweep_emit(const struct hb_sweep *sw, const char *dir, const struct sweep_emit_opts *e,
            char *msg, size_t n);
 
+/* 1 for values sbatch takes: --time (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S,
+ * UNLIMITED), --mem (digits, then K, M, G or T), a partition, account or
+ * QOS name (letters, digits, _ - . , +). */
+int
+slurm_time_ok(const char *t);
+int
+slurm_mem_ok(const char *t);
+int
+slurm_name_ok(const char *t);
+
 #endif

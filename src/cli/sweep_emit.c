@@ -120,6 +120,61 @@ put_wrap(FILE *f, const char *out, const char *self, const char *dir, const char
 	return 0;
 }
 
+/* Slurm's time limit: M, M:S, H:M:S, D-H, D-H:M, D-H:M:S, or UNLIMITED. */
+int
+slurm_time_ok(const char *t)
+{
+	const char *p = t;
+	int fields = 0, day = 0;
+
+	if (strcmp(t, "UNLIMITED") == 0 || strcmp(t, "INFINITE") == 0)
+		return 1;
+	for (;;) {
+		if (*p < '0' || *p > '9')
+			return 0;
+		while (*p >= '0' && *p <= '9')
+			p++;
+		fields++;
+		if (*p == '-' && !day && fields == 1) {
+			day = 1;
+			fields = 0;
+			p++;
+		} else if (*p == ':' && fields < 3 - day) {
+			p++;
+		} else {
+			return *p == '\0';
+		}
+	}
+}
+
+/* Slurm's memory size: digits, then K, M, G or T (megabytes without). */
+int
+slurm_mem_ok(const char *t)
+{
+	const char *p = t;
+
+	while (*p >= '0' && *p <= '9')
+		p++;
+	if (p == t)
+		return 0;
+	if (*p != '\0' && strchr("KMGTkmgt", *p) != NULL)
+		p++;
+	return *p == '\0';
+}
+
+/* A partition, account or QOS name (or a comma list of them). */
+int
+slurm_name_ok(const char *t)
+{
+	if (*t == '\0')
+		return 0;
+	for (; *t; t++)
+		if (!((*t >= 'a' && *t <= 'z') || (*t >= 'A' && *t <= 'Z') ||
+		      (*t >= '0' && *t <= '9') || strchr("_-.,+", *t) != NULL))
+			return 0;
+	return 1;
+}
+
 /*
  * The cluster's MaxArraySize from "scontrol show config" (a fixed command
  * line, no user text in it), or 0 when scontrol does not answer.
