@@ -37,7 +37,7 @@ APT_PACKAGES := libgsl-dev libncurses-dev libinih-dev libcriterion-dev pkg-confi
                 clang libclang-rt-14-dev strace parallel slurm-wlm munge \
                 libaubio-dev aubio-tools sox libsox-fmt-mp3 locales python3-pandas \
                 python3-cffi python3-numpy python3-pytest \
-                libcairo2-dev libpng-dev poppler-utils
+                libcairo2-dev libpng-dev poppler-utils valgrind
 # Locales the tests run under (decimal commas, a Turkish case fold): `make
 # deps` generates those `locale -a` lacks with localedef (about 2 MB each,
 # where locales-all would take 220 MB).
@@ -429,8 +429,10 @@ check-tsan: deps
 	    tee -a build-tsan/tsan.log; \
 	    ! grep -q '^not ok' build-tsan/tsan.log
 
-# The sweep's speed targets: rate on 2 cores, overhead per point, memory of a
-# 100,000-point sweep (report in build/bench/sweep.txt; about a minute).
+# The sweep's speed targets: efficiency at 1, 2, 4 ... jobs up to the online
+# processors beside as many independent processes, overhead per point in
+# instructions (valgrind's callgrind), memory per point of a 100,000-point
+# sweep (report in build/bench/sweep.txt; a few minutes).
 .PHONY: bench-sweep
 bench-sweep: deps
 	@$(MAKE) --no-print-directory all

@@ -312,8 +312,19 @@ Test(sweep, threads_journal_resume_and_merge)
 	for (o.shard_k = 0; o.shard_k < 2; o.shard_k++) {
 		cr_assert_eq(hb_sweep_run(sw, &o, msg, sizeof msg), HB_OK, "%s", msg);
 		if (o.shard_k == 0) {
+			unsigned char done[4] = { 9, 9, 9, 9 };
+
 			cr_assert_eq(hb_sweep_merge(d3, msg, sizeof msg), HB_EINVAL);
-			cr_assert(strstr(msg, "3 of 7 points are missing (the first is point 1)"), "%s", msg);
+			cr_assert(strstr(msg, "1 of 2 shards incomplete: shard 1 (not started); 3 of "
+			                 "7 points missing"), "%s", msg);
+			cr_assert_eq(hb_sweep_shards_done(sw, d3, 2, done, msg, sizeof msg), 1, "%s", msg);
+			cr_assert(done[0] == 1 && done[1] == 0);
+			/* Counted in 4 shards: 0 (ids 0, 4) and 2 (ids 2, 6) are done. */
+			cr_assert_eq(hb_sweep_shards_done(sw, d3, 4, done, msg, sizeof msg), 2, "%s", msg);
+			cr_assert(done[0] == 1 && done[1] == 0 && done[2] == 1 && done[3] == 0);
+			cr_assert_eq(hb_sweep_merge_shards(d3, 7, msg, sizeof msg), HB_EINVAL);
+			cr_assert(strstr(msg, "3 of 7 shards incomplete: shard 1 (not started), shard 3 "
+			                 "(not started), shard 5 (not started)"), "%s", msg);
 		}
 	}
 	cr_assert_eq(hb_sweep_merge(d3, msg, sizeof msg), HB_OK, "%s", msg);

@@ -182,7 +182,9 @@ hb_sweep_prepare_dir_with(const struct hb_sweep *sw, const char *dir, const char
  * (DIR/shard-K-of-N.journal, or DIR/points.journal for 0/1) does not hold
  * yet, on o->jobs threads, appending each to the journal as it completes.
  * A one-shard sweep then writes runs.csv and collisions.csv (hb_sweep_merge)
- * and removes its journal.  Returns HB_OK (failed points included),
+ * and removes its journal.  The journal is locked (flock) while the shard
+ * runs: a second run of the same shard gets HB_EIO ("another process is
+ * computing these points") and leaves it alone.  Returns HB_OK (failed points included),
  * HB_EDONE (cancelled, see sweep_options), HB_EINVAL (bad DIR), HB_EIO or
  * HB_ENOMEM.
  */
@@ -192,10 +194,29 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 /*
  * Merges the journals in DIR (all shards of one count N, or the one-shard
  * journal) into runs.csv and collisions.csv sorted by id, atomically.
- * HB_EINVAL with the missing points or shards when incomplete.
+ * HB_EINVAL when incomplete, naming the shards that are not started or
+ * incomplete ("2 of 4 shards incomplete: shard 1 (not started), shard 3
+ * (3 of 5 points); ..."), with N from the journals' names when they all
+ * name one; else the missing points.
  */
 int
 hb_sweep_merge(const char *dir, char *msg, size_t n);
+
+/* The same for a sweep run as nshards shards (0: from the journals' names). */
+int
+hb_sweep_merge_shards(const char *dir, long nshards, char *msg, size_t n);
+
+/*
+ * Which of nshards shards the folder DIR holds done: done[k] = 1 when
+ * every point of shard k (ids k, k + nshards, ...) is in one of its
+ * journals, whatever shards computed it, or when DIR holds the merged
+ * runs.csv and collisions.csv.  Returns the number done, or -1 with msg
+ * (a damaged journal, I/O, memory).  DIR must hold this sweep (see
+ * hb_sweep_prepare_dir).
+ */
+long
+hb_sweep_shards_done(const struct hb_sweep *sw, const char *dir, long nshards,
+                     unsigned char *done, char *msg, size_t n);
 
 /*
  * Curves for the explorer: one parameter, one observable, computed by

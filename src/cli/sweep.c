@@ -8,8 +8,9 @@
  *     hybounce sweep PRESET [--set KEY=VALUE]... [--vary KEY=SPEC]...
  *                    [--jobs N] [--shard K/N] [--quiet] --out DIR
  *     hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]
- *                    [--sshlogin HOSTS]
- *     hybounce sweep --merge DIR
+ *                    [--sshlogin HOSTS] [--time T] [--partition P] [--account A]
+ *                    [--qos Q] [--mem M] [--max-array N]
+ *     hybounce sweep --merge DIR [--shards N]
  *
  * Exit status: 0 the sweep is complete (points that failed numerically are
  * rows with their message); 1 it could not be completed (I/O, memory, an
@@ -41,7 +42,8 @@
 
 #define PROG "hybounce sweep"
 
-enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS, OPT_MAX_POINTS };
+enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS, OPT_MAX_POINTS,
+       OPT_TIME, OPT_PARTITION, OPT_ACCOUNT, OPT_QOS, OPT_MEM, OPT_MAX_ARRAY };
 
 static const struct option sweep_options_long[] = {
 	{ "set",      required_argument, NULL, 's' },
@@ -56,6 +58,12 @@ static const struct option sweep_options_long[] = {
 	{ "merge",    required_argument, NULL, OPT_MERGE },
 	{ "progress", required_argument, NULL, OPT_PROGRESS },
 	{ "max-points", required_argument, NULL, OPT_MAX_POINTS },
+	{ "time",      required_argument, NULL, OPT_TIME },
+	{ "partition", required_argument, NULL, OPT_PARTITION },
+	{ "account",   required_argument, NULL, OPT_ACCOUNT },
+	{ "qos",       required_argument, NULL, OPT_QOS },
+	{ "mem",       required_argument, NULL, OPT_MEM },
+	{ "max-array", required_argument, NULL, OPT_MAX_ARRAY },
 	{ "help",     no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
 };
@@ -67,8 +75,9 @@ sweep_usage(FILE *f)
 "usage: hybounce sweep PRESET [--set KEY=VALUE]... --vary KEY=SPEC [--vary ...]\n"
 "                      [--jobs N] [--shard K/N] [--quiet] --out DIR\n"
 "       hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]\n"
-"                      [--sshlogin HOSTS]\n"
-"       hybounce sweep --merge DIR\n"
+"                      [--sshlogin HOSTS] [--time T] [--partition P]\n"
+"                      [--account A] [--qos Q] [--mem M] [--max-array N]\n"
+"       hybounce sweep --merge DIR [--shards N]\n"
 "\n"
 "Runs the Cartesian product of the varied values (the last --vary varies\n"
 "fastest); every other value comes from PRESET and --set.\n"
@@ -88,14 +97,27 @@ sweep_usage(FILE *f)
 "                          of the points (default 10)\n"
 "      --max-points N      allow a sweep of up to N points (default 1000000,\n"
 "                          at most 1000000000); a larger sweep is refused\n"
-"      --emit slurm        print a script that submits the shards as a Slurm\n"
-"                          job array and a dependent merge job (sh FILE)\n"
+"      --emit slurm        print a script that submits the shards as Slurm job\n"
+"                          arrays and a merge job that runs after them\n"
+"                          whatever their fate (sh FILE; logs in DIR/logs)\n"
 "      --emit parallel     print a GNU parallel command line for the shards\n"
+"                          and the merge\n"
+"                          (both leave out the shards DIR holds done)\n"
 "      --shards N          shards of --emit (default: the online processors)\n"
 "      --sshlogin HOSTS    (--emit parallel) hosts for parallel --sshlogin;\n"
 "                          DIR and the binary must be on a shared file system\n"
+"      --time T            (--emit slurm) sbatch --time of every job, e.g. 2:00:00\n"
+"      --partition P       (--emit slurm) sbatch --partition\n"
+"      --account A         (--emit slurm) sbatch --account\n"
+"      --qos Q             (--emit slurm) sbatch --qos\n"
+"      --mem M             (--emit slurm) sbatch --mem of every job, e.g. 2G\n"
+"      --max-array N       (--emit slurm) the cluster's MaxArraySize when\n"
+"                          scontrol cannot tell it (default: scontrol's, else\n"
+"                          1001); more shards go in several arrays\n"
+"                          (other sbatch options: its SBATCH_* variables)\n"
 "      --merge DIR         merge the shards' journals in DIR into runs.csv and\n"
-"                          collisions.csv\n"
+"                          collisions.csv; with --shards N, name the shards\n"
+"                          of N that did not finish\n"
 "  -h, --help              show this help\n"
 "\n"
 "Exit status: 0 complete (numerically failed points are rows with their\n"
@@ -320,7 +342,8 @@ sweep_main(int argc, char **argv)
 	const char **sets, **varies;
 	int nsets = 0, nvaries = 0, quiet = 0, c, status = 2;
 	long jobs = 0, shard_k = 0, shard_n = 1, shards = 0, pct = 10, max_points = 0;
-	const char *out = NULL, *emit = NULL, *sshlogin = NULL, *merge = NULL;
+	const char *out = NULL, *emit = NULL, *sshlogin = NULL, *merge = NULL, *slurm_opt = NULL;
+	struct sweep_emit_opts eo = { 0 };
 	struct hb_sweep *sw = NULL;
 	char msg[2048];
 
@@ -388,6 +411,50 @@ sweep_main(int argc, char **argv)
 				goto done;
 			}
 			break;
+		case OPT_TIME:
+			if (!slurm_time_ok(optarg)) {
+				status = bad("--time '%s': accepted: Slurm's time limit, MINUTES, "
+				             "MINUTES:SECONDS, HOURS:MINUTES:SECONDS, DAYS-HOURS, "
+				             "DAYS-HOURS:MINUTES[:SECONDS] or UNLIMITED (e.g. 2:00:00)",
+				             optarg);
+				goto done;
+			}
+			eo.time = optarg;
+			slurm_opt = "--time";
+			break;
+		case OPT_PARTITION:
+		case OPT_ACCOUNT:
+		case OPT_QOS: {
+			const char *what = c == OPT_PARTITION ? "--partition"
+			                 : c == OPT_ACCOUNT ? "--account" : "--qos";
+
+			if (!slurm_name_ok(optarg)) {
+				status = bad("%s '%s': accepted: a name of letters, digits and _ - . "
+				             "(a comma list for several)", what, optarg);
+				goto done;
+			}
+			*(c == OPT_PARTITION ? &eo.partition : c == OPT_ACCOUNT ? &eo.account
+			  : &eo.qos) = optarg;
+			slurm_opt = what;
+			break;
+		}
+		case OPT_MEM:
+			if (!slurm_mem_ok(optarg)) {
+				status = bad("--mem '%s': accepted: Slurm's memory size, megabytes or a "
+				             "number with K, M, G or T (e.g. 2G)", optarg);
+				goto done;
+			}
+			eo.mem = optarg;
+			slurm_opt = "--mem";
+			break;
+		case OPT_MAX_ARRAY:
+			if (parse_long(optarg, 1, 4000001, &eo.max_array) != 0) {
+				status = bad("--max-array '%s': accepted: the cluster's MaxArraySize, "
+				             "an integer from 1 to 4000001", optarg);
+				goto done;
+			}
+			slurm_opt = "--max-array";
+			break;
 		case 'h':
 			sweep_usage(stdout);
 			status = 0;
@@ -399,19 +466,28 @@ sweep_main(int argc, char **argv)
 	}
 
 	if (merge != NULL) {
-		if (optind < argc || nvaries || nsets || out || emit) {
-			status = bad("--merge DIR takes no preset and no other option");
+		if (optind < argc || nvaries || nsets || out || emit || sshlogin || slurm_opt) {
+			status = bad("--merge DIR takes no preset and no other option but "
+			             "--shards N and --quiet");
 			goto done;
 		}
 		struct dir_targets dt;
 
 		probe_dir(merge, &dt);
 		msg[0] = '\0';
-		if (hb_sweep_merge(merge, msg, sizeof msg) != HB_OK) {
+		char shards_txt[24] = "N";
+
+		if (shards > 0)
+			snprintf(shards_txt, sizeof shards_txt, "%ld", shards);
+		if (hb_sweep_merge_shards(merge, shards, msg, sizeof msg) != HB_OK) {
 			char spec[4200];
 			struct stat sb;
 
 			fprintf(stderr, PROG ": merge: %s\n", msg);
+			if (strstr(msg, " shards incomplete: ") || strstr(msg, " shard incomplete: "))
+				fprintf(stderr, PROG ": the same --emit command (e.g. hybounce sweep "
+				        "%s/sweep.preset --out %s --emit slurm --shards %s) computes "
+				        "only those, then merges\n", merge, merge, shards_txt);
 			/* a folder that holds no sweep is bad input; an incomplete one is not */
 			snprintf(spec, sizeof spec, "%s/sweep.preset", merge);
 			status = stat(spec, &sb) == 0 && S_ISREG(sb.st_mode) ? 1 : 2;
@@ -435,8 +511,13 @@ sweep_main(int argc, char **argv)
 		status = bad("no output folder; expected --out DIR");
 		goto done;
 	}
-	if (emit == NULL && (shards || sshlogin)) {
-		status = bad("%s is an option of --emit", shards ? "--shards" : "--sshlogin");
+	if (emit == NULL && (shards || sshlogin || slurm_opt)) {
+		status = bad("%s is an option of --emit", shards ? "--shards"
+		             : sshlogin ? "--sshlogin" : slurm_opt);
+		goto done;
+	}
+	if (emit != NULL && slurm_opt != NULL && strcmp(emit, "slurm") != 0) {
+		status = bad("--emit %s: %s goes with --emit slurm", emit, slurm_opt);
 		goto done;
 	}
 	if (emit != NULL && (shard_n > 1 || (sshlogin && strcmp(emit, "slurm") == 0))) {
@@ -460,7 +541,10 @@ sweep_main(int argc, char **argv)
 			status = status == HB_EINVAL ? 2 : 1;
 			goto done;
 		}
-		status = sweep_emit(sw, out, emit, shards, sshlogin, msg, sizeof msg);
+		eo.kind = emit;
+		eo.shards = shards;
+		eo.sshlogin = sshlogin;
+		status = sweep_emit(sw, out, &eo, msg, sizeof msg);
 		if (status != 0)
 			fprintf(stderr, PROG ": %s\n", msg);
 		goto done;

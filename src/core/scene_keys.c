@@ -554,6 +554,48 @@ scene_key_resolve(const struct hb_scene *sc, const char *key, const struct scene
 }
 
 int
+scene_key_value(const struct hb_scene *sc, const char *key, double *num, const char **word)
+{
+	const struct scene_keydef *kd;
+	const char *base = (const char *)sc;
+	int li, ro;
+
+	if (scene_key_resolve(sc, key, &kd, &li, &ro, NULL) != HB_OK || ro)
+		return -1;
+	if (kd == NULL) {
+		*num = sc->par[li];
+		return HB_SCENE_KEY_NUMBER;
+	}
+	switch (kd->store) {
+	case ST_STRING:
+		return -1;
+	case ST_LONG:
+	case ST_INT:
+		*num = kd->store == ST_LONG ? (double)*(const long *)(base + kd->off)
+		                            : (double)*(const int *)(base + kd->off);
+		return HB_SCENE_KEY_WHOLE;
+	case ST_DOUBLE:
+		*num = *(const double *)(base + kd->off);
+		/* as info_keydef: no material, or no density */
+		if (scene_keydef_body(kd) >= 0 && !scene_keydef_present(sc, kd) &&
+		    kd->special != SP_MASS)
+			*num = NAN;
+		return HB_SCENE_KEY_NUMBER;
+	default: {
+		const char *cur = scene_keydef_choice(sc, kd), *ch[16];
+		int nc = scene_keydef_choices(kd, ch, 16);
+
+		for (int i = 0; i < nc && i < 16; i++)
+			if (strcmp(ch[i], cur) == 0) {
+				*word = ch[i];
+				return HB_SCENE_KEY_CHOICE;
+			}
+		return -1;
+	}
+	}
+}
+
+int
 hb_scene_get(const struct hb_scene *sc, const char *key, struct hb_scene_keyinfo *out,
           struct hb_scene_error *err)
 {

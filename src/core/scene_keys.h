@@ -75,6 +75,16 @@ int
 scene_key_resolve(const struct hb_scene *sc, const char *key, const struct scene_keydef **kd,
                   int *li, int *readonly, struct hb_scene_error *err);
 
+/*
+ * The value of a key as hb_scene_get gives it (its number for a number or
+ * a whole number, its choice's text for a choice), without formatting any
+ * text: the sweep reads each of its values back this way.  Returns
+ * HB_SCENE_KEY_NUMBER, _WHOLE or _CHOICE, or -1 for an unknown, derived
+ * (read-only) or free-text key.
+ */
+int
+scene_key_value(const struct hb_scene *sc, const char *key, double *num, const char **word);
+
 /* The row of a key, or NULL. */
 const struct scene_keydef *
 scene_keydef_find(const char *key);

@@ -4,11 +4,13 @@
  * point, the spec file, and one point run into its journal block (see
  * sweep.h).  The threads, the journal and the merge are in sweep_run.c.
  *
- * Values.  Every axis value is kept as canonical text: the value read
- * back from the preset writer after hb_scene_set (a %.17g SI number, or a
- * word such as a law name).  A point's scene applies exactly those texts,
- * and runs.csv shows exactly those texts, so "--batch --set KEY=VALUE" with
- * a row's values reproduces the point to the bit.
+ * Values.  Every axis value is canonical: the value read back from the
+ * scene after hb_scene_set, as text a %.17g SI number or a word such as a
+ * law name.  A point's scene applies exactly those texts, and runs.csv shows
+ * exactly those texts, so "--batch --set KEY=VALUE" with a row's values
+ * reproduces the point to the bit.  A range keeps its values as the doubles
+ * read back (8 bytes a value; %.17g gives the text again, the same
+ * characters), a list as their texts.
  */
 #include <errno.h>
 #include <math.h>
@@ -27,6 +29,7 @@
 #include "clock.h"
 #include "csv_impl.h"
 #include "sweep_impl.h"
+#include "scene_keys.h"
 #include "cnum.h"
 
 #define SWEEP_MAX_POINTS 1000000000L
@@ -36,8 +39,19 @@ struct axis {
 	char key[48];
 	char spec[256];   /* as given, after '=' */
 	long n;
-	char **val;       /* n canonical texts */
+	char **val;       /* a list's n canonical texts, or NULL */
+	double *num;      /* a range's n canonical values, or NULL */
 };
+
+/* The canonical text of value i of axis a (in buf for a range's number). */
+static const char *
+axis_text(const struct axis *a, long i, char *buf, size_t n)
+{
+	if (a->num == NULL)
+		return a->val[i];
+	cnum_snprintf(buf, n, "%.17g", a->num[i]);
+	return buf;
+}
 
 struct hb_sweep {
 	struct hb_scene base;
@@ -53,6 +67,7 @@ axis_free(struct axis *a)
 	for (long i = 0; a->val != NULL && i < a->n; i++)
 		free(a->val[i]);
 	free(a->val);
+	free(a->num);
 	memset(a, 0, sizeof *a);
 }
 
@@ -113,21 +128,22 @@ hb_sweep_npoints(const struct hb_sweep *sw)
 static int
 key_value(const struct hb_scene *sc, const char *key, char *buf, size_t n)
 {
-	struct hb_scene_keyinfo ki;
+	const char *word = NULL;
+	double v = NAN;
 
-	if (hb_scene_get(sc, key, &ki, NULL) != HB_OK || ki.readonly)
-		return -1;
-	switch (ki.kind) {
+	/* hb_scene_get's value without its display texts (which cost ~100k
+	 * instructions a number: hb_units_format_exact tries up to 12 widths). */
+	switch (scene_key_value(sc, key, &v, &word)) {
 	case HB_SCENE_KEY_NUMBER:
 	case HB_SCENE_KEY_WHOLE:
-		if (isnan(ki.number))
+		if (isnan(v))
 			return -1;
-		cnum_snprintf(buf, n, "%.17g", ki.number);
+		cnum_snprintf(buf, n, "%.17g", v);
 		return 0;
 	case HB_SCENE_KEY_CHOICE:
-		if (ki.choice < 0 || ki.choice >= ki.nchoices || strlen(ki.choices[ki.choice]) >= n)
+		if (strlen(word) >= n)
 			return -1;
-		snprintf(buf, n, "%s", ki.choices[ki.choice]);
+		snprintf(buf, n, "%s", word);
 		return 0;
 	default:
 		return -1;
@@ -138,11 +154,12 @@ key_value(const struct hb_scene *sc, const char *key, char *buf, size_t n)
 static void
 check_scene(const struct hb_sweep *sw, int k, struct hb_scene *sc)
 {
-	char m[256];
+	char m[256], t[64];
 
 	*sc = sw->base;
 	for (int i = 0; i < k; i++)
-		(void)hb_scene_set(sc, sw->ax[i].key, sw->ax[i].val[0], m, sizeof m);
+		(void)hb_scene_set(sc, sw->ax[i].key, axis_text(&sw->ax[i], 0, t, sizeof t), m,
+		                   sizeof m);
 }
 
 /* Applies text to key on a copy of sc and reads the canonical value back. */
@@ -271,8 +288,8 @@ parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw
 		                "< 0", a->key, a->spec);
 		goto out;
 	}
-	a->val = calloc((size_t)a->n, sizeof *a->val);
-	if (a->val == NULL) {
+	a->num = malloc((size_t)a->n * sizeof *a->num);
+	if (a->num == NULL) {
 		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
 	}
@@ -291,10 +308,8 @@ parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw
 		cnum_snprintf(t, sizeof t, "%.17g", v);
 		if ((rc = canonical(sc, a->key, t, num, sizeof num, msg, n)) != HB_OK)
 			goto out;
-		if ((a->val[i] = strdup(num)) == NULL) {
-			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-			goto out;
-		}
+		/* %.17g reads back to the same double, which %.17g writes as num again */
+		a->num[i] = cnum_strtod(num, NULL);
 	}
 out:
 	for (int i = 0; i < 5; i++)
@@ -448,22 +463,24 @@ axis_index(const struct hb_sweep *sw, long id, int k)
 int
 hb_sweep_point_value(const struct hb_sweep *sw, long id, int k, char *buf, size_t n)
 {
+	char t[64];
+
 	if (k < 0 || k >= sw->naxes || id < 0 || id >= hb_sweep_npoints(sw))
 		return HB_EINVAL;
-	snprintf(buf, n, "%s", sw->ax[k].val[axis_index(sw, id, k)]);
+	snprintf(buf, n, "%s", axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t));
 	return HB_OK;
 }
 
 int
 hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n)
 {
-	char m[512];
+	char m[512], t[64];
 
 	if (id < 0 || id >= hb_sweep_npoints(sw))
 		return hb_status_set(msg, n, HB_EINVAL, "point %ld: no such point", id);
 	*out = sw->base;
 	for (int k = 0; k < sw->naxes; k++) {
-		const char *v = sw->ax[k].val[axis_index(sw, id, k)];
+		const char *v = axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t);
 
 		m[0] = '\0';
 		if (hb_scene_set(out, sw->ax[k].key, v, m, sizeof m) != HB_OK)
@@ -477,7 +494,8 @@ hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, c
 
 		for (int k = 0; k < sw->naxes && l < sizeof vals; k++)
 			l += (size_t)snprintf(vals + l, sizeof vals - l, "%s%s=%s", k ? " " : "",
-			                      sw->ax[k].key, sw->ax[k].val[axis_index(sw, id, k)]);
+			                      sw->ax[k].key,
+			                      axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t));
 		return hb_status_set(msg, n, HB_EINVAL, "point %ld (%s): %s", id, vals, m);
 	}
 	return HB_OK;
@@ -534,11 +552,12 @@ static void
 runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s, double cpu)
 {
 	int failed = hb_sim_end(s) == HB_SIM_END_FAIL;
+	char t[64];
 
 	fprintf(f, "r,%ld", id);
 	for (int k = 0; k < sw->naxes; k++) {
 		fputc(',', f);
-		csv_put_field(f, sw->ax[k].val[axis_index(sw, id, k)]);
+		csv_put_field(f, axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t));
 	}
 	fprintf(f, ",%s,", failed ? "failed" : "ok");
 	csv_put_field(f, failed && hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_sim_end_str(s));
@@ -616,4 +635,10 @@ hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed
 	}
 	*out = blk;
 	return HB_OK;
+}
+
+const struct hb_scene *
+sweep_base(const struct hb_sweep *sw)
+{
+	return &sw->base;
 }

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sweep_run.c - running a sweep into a folder: the folder's identity
- * (sweep.preset), the journal that makes it resumable, the worker threads,
- * and the merge into runs.csv and collisions.csv (see sweep.h).
+ * (sweep.preset), the journal that makes it resumable and the worker
+ * threads (see sweep.h); the merge is in sweep_merge.c.
  *
  * Journal.  Each shard appends to its own journal (points.journal for a
  * one-machine sweep, shard-K-of-N.journal otherwise) one block per point,
@@ -11,17 +11,15 @@
  * calling thread.  A block counts once its runs row is complete (ends in a
  * newline); a SIGKILL can leave at most one partial block at the end, which
  * the next start cuts off before it appends.  Nothing is cached in memory
- * but one bit per point, and the merge keeps one offset per point, so
- * memory stays flat in the number of points computed.
- *
- * Merge.  The union of the journals in the folder (by point id; the first
- * copy wins) is written in id order to runs.csv and collisions.csv as one
- * set of the atomic writer (atomic.h): a reader never sees half a file and
- * a failed merge leaves the old ones.
+ * but one bit per point (the workers take the next id not in the journal
+ * from those bits), and the merge keeps 8 bytes per point, so memory
+ * stays flat in the number of points computed.
  *
  * Threads.  Workers take the next id under a mutex, run the point on their
- * own scene and sim (hb_sweep_point_block), and queue the block; the calling
- * thread writes blocks and reports progress.  The results do not depend on
+ * own scene and sim (hb_sweep_point_block), and queue the block (the queue
+ * is unbounded: a worker never waits for the writer); the calling thread
+ * writes blocks and reports progress.  The mutex is held for a few
+ * instructions per point and the writer is signalled after it is released.  The results do not depend on
  * the number of threads or the order of completion: each point's bytes come
  * from its own run alone, and the files are sorted by id.
  */
@@ -33,6 +31,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -45,13 +44,11 @@
 #include "hybounce/status.h"
 #include "hybounce/sweep.h"
 #include "clock.h"
+#include "sweep_impl.h"
 
-#define SPEC_NAME "sweep.preset"
-
-/* The whole of a file into a malloc'd string (*len bytes), read once and
- * bounded (input.h).  NULL with msg on failure; errno ENOENT when absent. */
-static char *
-slurp(const char *path, size_t *len, char *msg, size_t n)
+/* See sweep_impl.h. */
+char *
+sweep_slurp(const char *path, size_t *len, char *msg, size_t n)
 {
 	char *buf = NULL;
 
@@ -146,7 +143,7 @@ ours(const char *name)
 	size_t l = strlen(name);
 
 	return strcmp(name, ".") == 0 || strcmp(name, "..") == 0 ||
-	       hb_atomic_is_temp(name, SPEC_NAME, NULL) ||
+	       hb_atomic_is_temp(name, SWEEP_SPEC_NAME, NULL) ||
 	       (l > 8 && strcmp(name + l - 8, ".journal") == 0);
 }
 
@@ -181,8 +178,8 @@ hb_sweep_prepare_dir_with(const struct hb_sweep *sw, const char *dir, const char
 	want = spec_text(sw, &len);
 	if (want == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-	snprintf(path, sizeof path, "%s/" SPEC_NAME, dir);
-	have = slurp(path, &have_len, msg, n);
+	snprintf(path, sizeof path, "%s/" SWEEP_SPEC_NAME, dir);
+	have = sweep_slurp(path, &have_len, msg, n);
 	if (have != NULL) {
 		have_len = strip_provenance(have, have_len);
 		rc = have_len == len && memcmp(have, want, len) == 0 ? HB_OK
@@ -195,7 +192,7 @@ hb_sweep_prepare_dir_with(const struct hb_sweep *sw, const char *dir, const char
 	}
 	if (errno != ENOENT) {
 		free(want);
-		return HB_EIO;   /* slurp said why */
+		return HB_EIO;   /* sweep_slurp said why */
 	}
 	{
 		DIR *d = opendir(dir);
@@ -253,13 +250,9 @@ journal_line(const char *line, size_t len, long *id)
 	return line[0];
 }
 
-/*
- * Reads a journal: calls seen(ctx, id, off, len) for each complete block
- * and cuts a partial block off the end when trunc is set.  Returns HB_OK,
- * HB_EIO, or HB_EINVAL for a damaged journal.
- */
-static int
-journal_scan(const char *path, long npoints, int trunc,
+/* See sweep_impl.h. */
+int
+sweep_journal_scan(const char *path, long npoints, int trunc,
              int (*seen)(void *, long, off_t, size_t), void *ctx, char *msg, size_t n)
 {
 	FILE *f = fopen(path, "r");
@@ -317,6 +310,24 @@ struct doneset {
 	long count, failed;
 };
 
+/*
+ * An exclusive lock on the journal open as fd (flock: a second process on
+ * the same shard, here or on another node of a shared file system, is
+ * refused instead of appending beside it).  A file system without locks is
+ * taken as it is.  fd < 0: the open's errno.
+ */
+static int
+journal_lock(int fd, const char *path, char *msg, size_t n)
+{
+	if (fd < 0)
+		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+	if (flock(fd, LOCK_EX | LOCK_NB) == 0 || errno != EWOULDBLOCK)
+		return HB_OK;
+	return hb_status_set(msg, n, HB_EIO, "%s: another process is computing these points "
+	                     "(the journal is locked); expected one run of a shard at a time",
+	                     path);
+}
+
 static int
 mark_done(void *ctx, long id, off_t off, size_t len)
 {
@@ -347,8 +358,9 @@ struct pool {
 	const struct hb_sweep *sw;
 	pthread_mutex_t mu;
 	pthread_cond_t cv;
-	const long *pending;
-	long npending, next;
+	const unsigned char *done;  /* the journal's points: one bit each */
+	long npending;              /* points of the shard to compute */
+	long next, step, np;        /* the next id to look at, the shard count, the points */
 	int stop;
 	struct result *head, *tail;
 };
@@ -364,11 +376,14 @@ worker(void *arg)
 		double c0;
 
 		pthread_mutex_lock(&p->mu);
-		if (p->stop || p->next >= p->npending) {
+		while (p->next < p->np && (p->done[p->next / 8] & (1u << (p->next % 8))))
+			p->next += p->step;   /* in the journal already */
+		if (p->stop || p->next >= p->np) {
 			pthread_mutex_unlock(&p->mu);
 			return NULL;
 		}
-		id = p->pending[p->next++];
+		id = p->next;
+		p->next += p->step;
 		pthread_mutex_unlock(&p->mu);
 
 		r = calloc(1, sizeof *r);
@@ -389,8 +404,13 @@ worker(void *arg)
 				p->head = r;
 			p->tail = r;
 		}
-		pthread_cond_signal(&p->cv);
 		pthread_mutex_unlock(&p->mu);
+		/*
+		 * After the unlock: signalled under the mutex, the woken writer
+		 * would block at once on the mutex this thread still holds (half
+		 * of its sleeps, measured with perf sched).
+		 */
+		pthread_cond_signal(&p->cv);
 	}
 }
 
@@ -402,7 +422,7 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 	struct doneset ds = { 0 };
 	struct pool p;
 	pthread_t *th = NULL;
-	long *pending = NULL, got = 0, nth = 0;
+	long got = 0, nth = 0;
 	char jpath[4200];
 	int fd = -1, rc, cancelled = 0;
 	double t0 = clock_seconds(CLOCK_MONOTONIC);
@@ -434,31 +454,33 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 	ds.bits = calloc((size_t)np / 8 + 1, 1);
 	if (ds.bits == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-	if ((rc = journal_scan(jpath, np, 1, mark_done, &ds, msg, n)) != HB_OK)
+	/* One process a journal: locked before its torn end is cut off. */
+	fd = open(jpath, O_WRONLY | O_APPEND | O_CLOEXEC);
+	if (fd >= 0 && (rc = journal_lock(fd, jpath, msg, n)) != HB_OK)
+		goto out;
+	if ((rc = sweep_journal_scan(jpath, np, 1, mark_done, &ds, msg, n)) != HB_OK)
 		goto out;
 	/* The shard's points that the journal does not hold. */
 	for (long id = k; id < np; id += ns)
 		pr.total++;
-	pending = malloc((size_t)(pr.total - ds.count + 1) * sizeof *pending);
-	if (pending == NULL) {
-		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-		goto out;
-	}
 	for (long id = k; id < np; id += ns)
-		if (!(ds.bits[id / 8] & (1u << (id % 8))))
-			pending[p.npending++] = id;
+		p.npending += !(ds.bits[id / 8] & (1u << (id % 8)));
 	pr.resumed = pr.done = pr.total - p.npending;
 	if (o->progress)
 		o->progress(o->ctx, &pr);
 
 	if (p.npending > 0) {
-		fd = open(jpath, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-		if (fd < 0) {
-			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+		if (fd < 0 && ((fd = open(jpath, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644)) < 0 ||
+		               (rc = journal_lock(fd, jpath, msg, n)) != HB_OK)) {
+			if (fd < 0)
+				rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 			goto out;
 		}
 		p.sw = sw;
-		p.pending = pending;
+		p.done = ds.bits;
+		p.next = k;
+		p.step = ns;
+		p.np = np;
 		pthread_mutex_init(&p.mu, NULL);
 		pthread_cond_init(&p.cv, NULL);
 		nth = o->jobs < 1 ? 1 : o->jobs;
@@ -556,254 +578,22 @@ threads_done:
 		pthread_mutex_destroy(&p.mu);
 		if (close(fd) != 0 && rc == HB_OK)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
+		fd = -1;
 		if (rc != HB_OK)
 			goto out;
 	}
+	if (fd >= 0) {
+		close(fd);   /* nothing was appended */
+		fd = -1;
+	}
 	if (ns == 1) {
-		if ((rc = hb_sweep_merge(o->dir, msg, n)) == HB_OK && unlink(jpath) != 0 &&
+		if ((rc = sweep_merge_into(sw, o->dir, 0, msg, n)) == HB_OK && unlink(jpath) != 0 &&
 		    errno != ENOENT)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 	}
 out:
-	free(pending);
+	if (fd >= 0)
+		close(fd);
 	free(ds.bits);
-	return rc;
-}
-
-/* ------------------------------------------------------------------ */
-/* Merge                                                               */
-
-struct index {
-	int64_t *off;     /* -1: not seen */
-	uint32_t *len;
-	uint16_t *file;
-	int cur;
-	long count;
-};
-
-static int
-index_add(void *ctx, long id, off_t off, size_t len)
-{
-	struct index *x = ctx;
-
-	if (x->off[id] >= 0)
-		return HB_OK;  /* the first copy wins */
-	x->off[id] = off;
-	x->len[id] = (uint32_t)len;
-	x->file[id] = (uint16_t)x->cur;
-	x->count++;
-	return HB_OK;
-}
-
-/* The collisions header of --collisions (from an empty run's CSV). */
-static int
-collisions_header(const struct hb_scene *sc, char *buf, size_t n, char *msg, size_t mn)
-{
-	struct hb_sim *s = hb_sim_new(sc, msg, mn);
-	char *t = NULL;
-	size_t tl = 0;
-	FILE *f;
-	int rc;
-
-	if (s == NULL)
-		return HB_EINVAL;
-	f = open_memstream(&t, &tl);
-	if (f == NULL) {
-		hb_sim_free(s);
-		return hb_status_set(msg, mn, HB_ENOMEM, "out of memory");
-	}
-	rc = hb_csv_stream_collisions(f, s, msg, mn);
-	fclose(f);
-	hb_sim_free(s);
-	if (rc == HB_OK && t != NULL)
-		snprintf(buf, n, "%.*s", (int)strcspn(t, "\n"), t);
-	free(t);
-	return rc;
-}
-
-/* Loads DIR/sweep.preset into a sweep. */
-static struct hb_sweep *
-load_spec(const char *dir, struct hb_scene *sc, char *msg, size_t n)
-{
-	char path[4096], m[1024];
-	struct hb_sweep *sw;
-	char *text;
-
-	snprintf(path, sizeof path, "%s/" SPEC_NAME, dir);
-	m[0] = '\0';
-	text = slurp(path, NULL, m, sizeof m);
-	if (text == NULL && m[0] == '\0')
-		snprintf(m, sizeof m, "%.900s: %s", path, strerror(ENOENT));
-	if (text == NULL) {
-		hb_status_set(msg, n, HB_EINVAL, "%s; expected a sweep folder (--out DIR of "
-		           "hybounce sweep)", m[0] ? m : path);
-		return NULL;
-	}
-	m[0] = '\0';
-	if (hb_preset_load_string(text, path, sc, m, sizeof m) != HB_OK) {
-		hb_status_set(msg, n, HB_EINVAL, "%s", m);
-		free(text);
-		return NULL;
-	}
-	sw = hb_sweep_new(sc, msg, n);
-	/* The folder's sweep was accepted (and its size allowed) when it was made. */
-	if (sw != NULL)
-		hb_sweep_set_max_points(sw, 1000000000L, NULL);
-	if (sw != NULL && hb_sweep_vary_from_preset(sw, text, path, msg, n) != HB_OK) {
-		hb_sweep_free(sw);
-		sw = NULL;
-	}
-	if (sw != NULL && hb_sweep_npoints(sw) == 0) {
-		hb_status_set(msg, n, HB_EINVAL, "%s: no '; sweep: --vary' line", path);
-		hb_sweep_free(sw);
-		sw = NULL;
-	}
-	free(text);
-	return sw;
-}
-
-int
-hb_sweep_merge(const char *dir, char *msg, size_t n)
-{
-	struct hb_scene sc;
-	struct hb_sweep *sw = load_spec(dir, &sc, msg, n);
-	struct index x = { 0 };
-	char **names = NULL, hdr[4096], path[4200];
-	int nnames = 0, *fds = NULL, rc = HB_OK;
-	struct hb_atomic_set set;
-	FILE *runs = NULL, *coll = NULL;
-	int set_open = 0;
-	char *blk = NULL;
-	size_t cap = 0;
-	long np;
-	DIR *d;
-	struct dirent *e;
-
-	if (sw == NULL)
-		return HB_EINVAL;
-	np = hb_sweep_npoints(sw);
-	x.off = malloc((size_t)np * sizeof *x.off);
-	x.len = malloc((size_t)np * sizeof *x.len);
-	x.file = malloc((size_t)np * sizeof *x.file);
-	if (x.off == NULL || x.len == NULL || x.file == NULL) {
-		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-		goto out;
-	}
-	for (long i = 0; i < np; i++)
-		x.off[i] = -1;
-	d = opendir(dir);
-	if (d == NULL) {
-		rc = hb_status_set(msg, n, HB_EIO, "%s: %s", dir, strerror(errno));
-		goto out;
-	}
-	while ((e = readdir(d)) != NULL) {
-		size_t l = strlen(e->d_name);
-		char **nn;
-
-		if (l <= 8 || strcmp(e->d_name + l - 8, ".journal") != 0)
-			continue;
-		if (nnames == 65535 || (nn = realloc(names, (size_t)(nnames + 1) * sizeof *names)) == NULL) {
-			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-			break;
-		}
-		names = nn;
-		if ((names[nnames] = strdup(e->d_name)) == NULL) {
-			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-			break;
-		}
-		nnames++;
-	}
-	closedir(d);
-	if (rc != HB_OK)
-		goto out;
-	fds = malloc((size_t)(nnames + 1) * sizeof *fds);
-	if (fds == NULL) {
-		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-		goto out;
-	}
-	for (int i = 0; i < nnames; i++)
-		fds[i] = -1;
-	for (int i = 0; i < nnames && rc == HB_OK; i++) {
-		snprintf(path, sizeof path, "%s/%s", dir, names[i]);
-		x.cur = i;
-		rc = journal_scan(path, np, 0, index_add, &x, msg, n);
-		if (rc == HB_OK && (fds[i] = open(path, O_RDONLY | O_CLOEXEC)) < 0)
-			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
-	}
-	if (rc != HB_OK)
-		goto out;
-	if (x.count < np) {
-		long first = 0;
-
-		while (first < np && x.off[first] >= 0)
-			first++;
-		rc = hb_status_set(msg, n, HB_EINVAL, "%s: %ld of %ld points are missing (the "
-		                "first is point %ld); expected every shard to have finished "
-		                "(%d journal%s found)", dir, np - x.count, np, first, nnames,
-		                nnames == 1 ? "" : "s");
-		goto out;
-	}
-	hb_atomic_begin(&set);
-	set_open = 1;
-	snprintf(path, sizeof path, "%s/runs.csv", dir);
-	if ((runs = hb_atomic_add(&set, path, msg, n)) == NULL) {
-		rc = HB_EIO;
-		goto out;
-	}
-	snprintf(path, sizeof path, "%s/collisions.csv", dir);
-	if ((coll = hb_atomic_add(&set, path, msg, n)) == NULL) {
-		rc = HB_EIO;
-		goto out;
-	}
-	hb_sweep_runs_header(sw, hdr, sizeof hdr);
-	fprintf(runs, "%s\n", hdr);
-	if ((rc = collisions_header(&sc, hdr, sizeof hdr, msg, n)) != HB_OK)
-		goto out;
-	fprintf(coll, "id,%s\n", hdr);
-	for (long id = 0; id < np && rc == HB_OK; id++) {
-		size_t len = x.len[id];
-		const char *p;
-
-		if (len + 1 > cap) {
-			char *nb = realloc(blk, cap = len + 1);
-
-			if (nb == NULL) {
-				rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-				break;
-			}
-			blk = nb;
-		}
-		if (pread(fds[x.file[id]], blk, len, (off_t)x.off[id]) != (ssize_t)len) {
-			rc = hb_status_set(msg, n, HB_EIO, "%s/%s: short read", dir, names[x.file[id]]);
-			break;
-		}
-		blk[len] = '\0';
-		for (p = blk; *p; ) {
-			const char *end = strchr(p, '\n');
-			size_t l = (size_t)(end - p) + 1;
-
-			fwrite(p + 2, 1, l - 2, p[0] == 'r' ? runs : coll);
-			p += l;
-		}
-	}
-out:
-	if (set_open) {
-		if (rc == HB_OK)
-			rc = hb_atomic_commit(&set, msg, n);   /* both files, or neither */
-		else
-			hb_atomic_abort(&set);
-	}
-	for (int i = 0; i < nnames; i++) {
-		if (fds && fds[i] >= 0)
-			close(fds[i]);
-		free(names[i]);
-	}
-	free(fds);
-	free(names);
-	free(blk);
-	free(x.off);
-	free(x.len);
-	free(x.file);
-	hb_sweep_free(sw);
 	return rc;
 }

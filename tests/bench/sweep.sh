@@ -1,15 +1,25 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The sweep's speed targets (make bench-sweep; a benchmark, not a test):
-#  1. rate: the third study's SHCCL preset (permanent-contact-shccl) over
-#     N points (initial.x0 from 5 um to 60 um) with --jobs 1 and --jobs 2;
-#     target on 2 cores: jobs 2 >= 1.8 x the rate of jobs 1 (wall clock, so
-#     a loaded machine shows less: the load average is reported beside it);
-#  2. overhead: the CPU time of the whole command (user + sys: start-up,
-#     validation of every point, threads, journal, merge) beyond the sum of
-#     the points' own CPU time (cpu_s of runs.csv); target < 10 %;
+#  1. scaling: the third study's SHCCL preset (permanent-contact-shccl) over
+#     N points (initial.x0 from 5 um to 60 um) with --jobs J for J = 1, 2,
+#     4, ... up to the online processors, beside the control: J independent
+#     processes (one shard each, --jobs 1, folders of their own) sharing
+#     nothing; the rate of each and its efficiency (rate / (J x the rate of
+#     one)).  Targets: >= 85 % at 16 jobs and within 10 % of the control,
+#     >= 1.95 x on 2 free cores (wall clock, so a loaded machine shows less:
+#     the load average is reported beside it);
+#  2. overhead, counted in instructions (valgrind's callgrind, where
+#     installed): a sweep of N identical points (the preset's own x0) against
+#     N x the engine's instructions of one batch run of the preset that
+#     writes the same collisions (hb_sim_new, hb_sim_advance, hb_sim_free,
+#     hb_csv_stream_collisions); the whole command, and per point beyond the
+#     first N/6 (start-up left out); target < 3 %.  Beside it the CPU time
+#     of the whole command beyond the points' own cpu_s (timings: noisy on a
+#     loaded machine);
 #  3. memory: the peak resident set of sweeps of M/10 and M points of the
-#     one-collision restitution example; flat: the same to within a few MB.
+#     one-collision restitution example, and the bytes per point between them
+#     (the files are streamed: what is kept per point).
 #
 #   sh tests/bench/sweep.sh [--smoke] [BIN] [OUTDIR]
 #
@@ -22,7 +32,7 @@ BIN=${1:-build/hybounce}
 OUT=${2:-build/bench}
 : "${HYBOUNCE_PRESETS:=$(pwd)/presets}"
 export HYBOUNCE_PRESETS
-if [ $smoke = 1 ]; then N=40; M=200; else N=${SWEEP_BENCH_POINTS:-2000}; M=${SWEEP_BENCH_MEMORY_POINTS:-100000}; fi
+if [ $smoke = 1 ]; then N=40; M=200; NI=6; else N=${SWEEP_BENCH_POINTS:-2000}; M=${SWEEP_BENCH_MEMORY_POINTS:-100000}; NI=${SWEEP_BENCH_INSTR_POINTS:-60}; fi
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 mkdir -p "$OUT"
@@ -43,21 +53,80 @@ run() {
 {
 echo "hybounce sweep benchmark ($(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) online processors, load average $(cut -d' ' -f1-3 /proc/loadavg))"
 echo
-r1=$(run j1 permanent-contact-shccl --vary "initial.x0=5um:60um:$N" --jobs 1)
-r2=$(run j2 permanent-contact-shccl --vary "initial.x0=5um:60um:$N" --jobs 2)
-echo "$r1 $r2" | awk -v n="$N" '{
-	rate1 = n / $1; rate2 = n / $7
-	printf "1. rate, permanent-contact-shccl, %d points\n", n
-	printf "   --jobs 1: %.2f s wall, %.1f points/s\n", $1, rate1
-	printf "   --jobs 2: %.2f s wall, %.1f points/s\n", $7, rate2
-	printf "   speed-up %.2f x (target >= 1.8 x on 2 free cores)\n\n", rate2 / rate1
+# control J: the wall time of J independent single-threaded processes, one
+# shard each, in folders of their own (nothing shared but the machine).
+control() {
+	t0=$(date +%s.%N)
+	k=0
+	while [ $k -lt "$1" ]; do
+		"$BIN" sweep permanent-contact-shccl --vary "initial.x0=5um:60um:$N" --jobs 1 --quiet \
+		    --shard "$k/$1" --out "$T/c$1-$k" &
+		k=$((k + 1))
+	done
+	wait
+	t1=$(date +%s.%N)
+	echo "$t0 $t1" | awk '{ printf "%.3f", $2 - $1 }'
+}
+cores=$(nproc)
+js=1
+j=2
+while [ $j -lt "$cores" ]; do js="$js $j"; j=$((j * 2)); done
+[ "$cores" -gt 1 ] && js="$js $cores"
+echo "1. scaling, permanent-contact-shccl, $N points: --jobs J against J independent processes"
+printf '   %5s %10s %12s %10s %12s %12s %10s\n' J "sweep s" "points/s" "eff." "control s" "points/s" "eff."
+for j in $js; do
+	r=$(run "j$j" permanent-contact-shccl --vary "initial.x0=5um:60um:$N" --jobs "$j")
+	[ "$j" = 1 ] && r1=$r
+	c=$(control "$j")
+	[ "$j" = 1 ] && c1=$c
+	echo "$j $r $c $r1 $c1" | awk -v n="$N" '{
+		j = $1; w = $2; c = $8; w1 = $9; c1 = $15
+		printf "   %5d %10.2f %12.1f %9.0f%% %12.2f %12.1f %9.0f%%\n", j, w, n / w, 100 * w1 / (j * w), \
+		    c, n / c, 100 * c1 / (j * c)
+	}'
+	[ "$j" = 2 ] && echo "$r $r1" | awk '{ printf "   speed-up %.2f x at --jobs 2 (target >= 1.95 x on 2 free cores)\n", $7 / $1 }' >"$T/speedup"
+done
+cat "$T/speedup" 2>/dev/null
+echo
+# instr ARGS...: the instructions callgrind counts in hybounce ARGS (all, or
+# those of the functions named in $TOGGLE).
+instr() {
+	# shellcheck disable=SC2086
+	valgrind --tool=callgrind --callgrind-out-file=/dev/null $TOGGLE "$BIN" "$@" 2>&1 >/dev/null |
+	    sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
+}
+if grep -a -q -e __asan_init -e __tsan_init "$BIN" 2>/dev/null; then
+	echo "2. overhead in instructions: not measured (a sanitizer build does not run under valgrind)"
+elif command -v valgrind >/dev/null 2>&1; then
+	P=permanent-contact-shccl
+	x0=$(sed -n 's/^x0 *= *//p' "$HYBOUNCE_PRESETS/$P.preset" | head -n 1)
+	n1=$((NI / 6))
+	TOGGLE="--toggle-collect=hb_sim_new --toggle-collect=hb_sim_advance --toggle-collect=hb_sim_free --toggle-collect=hb_csv_stream_collisions"
+	e=$(instr -b $P -c -)
+	own=$(instr sweep $P --vary "initial.x0=$x0:$x0:$NI" --jobs 1 --quiet --out "$T/i0")
+	TOGGLE="--toggle-collect=hb_sim_advance"
+	s=$(instr -b $P)
+	TOGGLE=
+	w1=$(instr sweep $P --vary "initial.x0=$x0:$x0:$n1" --jobs 1 --quiet --out "$T/i1")
+	w=$(instr sweep $P --vary "initial.x0=$x0:$x0:$NI" --jobs 1 --quiet --out "$T/i2")
+	echo "$e $own $s $w1 $w" | awk -v n="$NI" -v n1="$n1" -v p="$P" -v x0="$x0" '{
+		e = $1; own = $2; s = $3; w1 = $4; w = $5
+		printf "2. overhead in instructions (callgrind), %s, %d points of x0 = %s, --jobs 1\n", p, n, x0
+		printf "   one batch run (-b -c -): %d engine instructions (%d in hb_sim_advance alone)\n", e, s
+		printf "   the sweep: %d instructions; its points own %d (%.4f x %d batch runs)\n", w, own, own / (n * e), n
+		printf "   overhead %.2f %% of the points own (%.0f instructions a point, start-up included)\n", \
+		    100 * (w - n * e) / (n * e), (w - n * e) / n
+		per = (w - w1) / (n - n1) - e
+		printf "   per point beyond start-up: %.0f instructions, overhead %.2f %% (%.2f %% of hb_sim_advance alone) (target < 3 %%)\n", \
+		    per, 100 * per / e, 100 * (per + e - s) / s
+	}'
+else
+	echo "2. overhead in instructions: valgrind is not installed (make deps installs it)"
+fi
+echo "$r1" | awk -v n="$N" '{
 	cpu = $2 + $3; own = $5
-	printf "2. overhead per point (--jobs 1): command CPU %.3f s, points own CPU %.3f s\n", cpu, own
-	printf "   overhead %.1f %% of the points own time, %.1f us per point (target < 10 %%)\n", \
-	    100 * (cpu - own) / own, 1e6 * (cpu - own) / n
-	cpu = $8 + $9; own = $11
-	printf "   --jobs 2: command CPU %.3f s, points own CPU %.3f s, overhead %.1f %%\n\n", \
-	    cpu, own, 100 * (cpu - own) / own
+	printf "   CPU time (--jobs 1, %d points): command %.3f s, points own %.3f s, overhead %.1f %% (timings)\n\n", \
+	    n, cpu, own, 100 * (cpu - own) / own
 }'
 m1=$((M / 10))
 a=$(run m1 examples/sweeps/restitution-shccl.preset --vary "initial.v0=-1mm/s:-1m/s:$m1:log" --jobs 2)
@@ -66,6 +135,7 @@ echo "$a $b" | awk '{
 	printf "3. memory, examples/sweeps/restitution-shccl, --jobs 2\n"
 	printf "   %7d points: peak RSS %6.1f MB (%.1f s wall)\n", $6, $4 / 1024, $1
 	printf "   %7d points: peak RSS %6.1f MB (%.1f s wall)\n", $12, $10 / 1024, $7
-	printf "   growth %.1f MB for %.0f x the points\n", ($10 - $4) / 1024, $12 / $6
+	printf "   growth %.1f MB for %.0f x the points: %.1f bytes per point\n", ($10 - $4) / 1024, \
+	    $12 / $6, ($10 - $4) * 1024 / ($12 - $6)
 }'
 } | tee "$REPORT"

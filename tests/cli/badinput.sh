@@ -123,27 +123,28 @@ done
 H=$ROOT/fe/hybounce
 # A stand-in for Slurm's sbatch (rows that run what --emit slurm printed):
 # takes the options the emitted script uses (--wrap, --chdir, --output,
-# --array, --dependency=afterok:..., --parsable, --job-name, --ntasks,
-# --cpus-per-task) and refuses any other, runs the job at once (each task
-# of --array, in the --chdir folder, with Slurm's variables set, its output
-# to --output with %j %A %a replaced), skips a job whose afterok
-# dependency failed, and prints the job's id.
+# --array with N, N-M and lists of them, --dependency=afterok:... or
+# afterany:..., --parsable, --job-name, --ntasks, --cpus-per-task, --time,
+# --mem, --partition, --account, --qos) and refuses any other, runs the job
+# at once (each task of --array, in the --chdir folder, with Slurm's
+# variables set, its output to --output with %j %A %a replaced), skips a
+# job whose afterok dependency failed, and prints the job's id.
 mkdir "$ROOT/slurm"
 cat >"$ROOT/slurm/sbatch" <<'EOF'
 #!/bin/sh
 state=${0%/*}/state
 mkdir -p "$state" || exit 1
-first=0 last=0 array=0 chdir=. output=slurm-%j.out wrap= haswrap=0 dep= cpus= parsable=0 script=
+arr=0 array=0 chdir=. output=slurm-%j.out wrap= haswrap=0 dep= cpus= parsable=0 script=
 for a in "$@"; do
 	case $a in
-	--array=*) r=${a#--array=}; first=${r%%-*}; last=${r#*-}; array=1 ;;
+	--array=*) arr=${a#--array=}; array=1 ;;
 	--chdir=*) chdir=${a#--chdir=} ;;
 	--output=*) output=${a#--output=} ;;
 	--wrap=*) wrap=${a#--wrap=}; haswrap=1 ;;
 	--dependency=*) dep=${a#--dependency=} ;;
 	--cpus-per-task=*) cpus=${a#--cpus-per-task=} ;;
 	--parsable) parsable=1 ;;
-	--job-name=* | --ntasks=*) ;;
+	--job-name=* | --ntasks=* | --time=* | --mem=* | --partition=* | --account=* | --qos=*) ;;
 	-*) echo "sbatch (stand-in): option not supported: $a" >&2; exit 1 ;;
 	*) [ -z "$script" ] || { echo "sbatch (stand-in): two scripts" >&2; exit 1; }; script=$a ;;
 	esac
@@ -160,21 +161,25 @@ afterok:*)
 	for d in $(echo "${dep#afterok:}" | tr ':' ' '); do
 		[ -e "$state/ok-$d" ] || run=0
 	done ;;
+afterany:*) ;;   # the jobs before ran already, whatever their fate
 *) echo "sbatch (stand-in): dependency not supported: $dep" >&2; exit 1 ;;
 esac
 if [ "$run" = 1 ]; then
-	fail=0 i=$first
-	while [ "$i" -le "$last" ]; do
-		o=$output
-		case $o in *%*) o=$(printf '%s' "$o" | sed "s/%j/$id/g; s/%A/$id/g; s/%a/$i/g") ;; esac
-		if [ "$array" = 1 ]; then
-			(cd "$chdir" && SLURM_JOB_ID=$id SLURM_ARRAY_JOB_ID=$id SLURM_ARRAY_TASK_ID=$i \
-				SLURM_CPUS_PER_TASK=$cpus sh -c "$wrap" >"$o" 2>&1) || fail=1
-		else
-			(cd "$chdir" && SLURM_JOB_ID=$id SLURM_CPUS_PER_TASK=$cpus \
-				sh -c "$wrap" >"$o" 2>&1) || fail=1
-		fi
-		i=$((i + 1))
+	fail=0
+	for r in $(echo "$arr" | tr ',' ' '); do
+		i=${r%-*}
+		while [ "$i" -le "${r#*-}" ]; do
+			o=$output
+			case $o in *%*) o=$(printf '%s' "$o" | sed "s/%j/$id/g; s/%A/$id/g; s/%a/$i/g") ;; esac
+			if [ "$array" = 1 ]; then
+				(cd "$chdir" && SLURM_JOB_ID=$id SLURM_ARRAY_JOB_ID=$id SLURM_ARRAY_TASK_ID=$i \
+					SLURM_CPUS_PER_TASK=$cpus sh -c "$wrap" >"$o" 2>&1) || fail=1
+			else
+				(cd "$chdir" && SLURM_JOB_ID=$id SLURM_CPUS_PER_TASK=$cpus \
+					sh -c "$wrap" >"$o" 2>&1) || fail=1
+			fi
+			i=$((i + 1))
+		done
 	done
 	[ "$fail" = 1 ] || : >"$state/ok-$id"
 fi

@@ -161,9 +161,9 @@ for k in 0 1 2; do
 	if [ $k -eq 1 ]; then
 		"$BIN" sweep --merge "$T/sh" 2>"$T/err"
 		rc=$?
-		if [ $rc -eq 1 ] && grep -q '2 of 6 points are missing (the first is point 2)' "$T/err" &&
+		if [ $rc -eq 1 ] && grep -q '1 of 3 shards incomplete: shard 2 (not started); 2 of 6 points missing' "$T/err" &&
 		    [ ! -f "$T/sh/runs.csv" ]; then
-			ok "--merge before every shard has finished: exit 1, names the missing points, writes nothing"
+			ok "--merge before every shard has finished: exit 1, names the missing shard, writes nothing"
 		else notok "--merge of incomplete shards (exit $rc)" "$T/err"; fi
 	fi
 done
@@ -235,5 +235,25 @@ else notok "SIGINT: exit 130 and the points done journaled (exit $rc, $n points)
 "$BIN" sweep $P --vary "$VK" --jobs 2 --quiet --out "$T/int" 2>"$T/err"
 if [ $? -eq 0 ] && same_sweep "$T/full" "$T/int"; then ok "after SIGINT the same command completes the sweep"
 else notok "after SIGINT the same command completes the sweep" "$T/err"; fi
+
+# One process a shard: while another holds its journal (flock, as a second
+# run of the shard would), a run of the same shard is refused and leaves the
+# journal as it was; once it is free, the run completes.
+"$BIN" sweep $P --vary "initial.x0=5um:60um:6" --out "$T/lock" --shard 1/2 --quiet 2>"$T/err" ||
+    notok "shard 1/2 runs" "$T/err"
+: >"$T/lock/shard-0-of-2.journal"
+flock "$T/lock/shard-0-of-2.journal" "$BIN" sweep "$T/lock/sweep.preset" --out "$T/lock" \
+    --shard 0/2 --quiet 2>"$T/err"
+rc=$?
+if [ $rc -eq 1 ] && [ ! -s "$T/lock/shard-0-of-2.journal" ] &&
+    grep -q 'shard-0-of-2.journal: another process is computing these points (the journal is locked)' "$T/err"; then
+	ok "a second run of a shard whose journal is locked is refused (exit 1), the journal untouched"
+else notok "a run of a locked shard is refused (exit $rc)" "$T/err"; fi
+"$BIN" sweep "$T/lock/sweep.preset" --out "$T/lock" --shard 0/2 --quiet 2>"$T/err" &&
+    "$BIN" sweep --merge "$T/lock" --quiet 2>>"$T/err"
+rc=$?
+if [ $rc -eq 0 ] && [ "$(grep -c '^r,' "$T/lock/shard-0-of-2.journal")" -eq 3 ] && [ -f "$T/lock/runs.csv" ]; then
+	ok "the lock released, the shard runs and merges"
+else notok "the lock released, the shard runs and merges (exit $rc)" "$T/err"; fi
 
 exit 0

@@ -1,13 +1,25 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # A bounded smoke of make bench-sweep: the sweep benchmark runs (40 and 200
-# points) and reports the rate, the overhead and the memory.
+# points) and reports the scaling beside independent processes, the overhead
+# in instructions and the memory per point.
 # Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
 . "$(dirname "$0")/common.inc"
+# The overhead in instructions: callgrind's count (not in a sanitizer build).
+instr='^   overhead -*[0-9.]* % of the points own'
+perpoint='^   per point beyond start-up: -*[0-9]* instructions, overhead -*[0-9.]* %'
+if grep -a -q -e __asan_init -e __tsan_init "$BIN"; then
+	instr='^2. overhead in instructions: not measured'
+	perpoint=$instr
+fi
+# The scaling table: a row per J up to the online processors (1, 2, ...).
+two='^   speed-up [0-9.]* x at --jobs 2'
+[ "$(nproc)" -lt 2 ] && two='^ *1 .*%$'
 if sh tests/bench/sweep.sh --smoke "$BIN" "$T" >"$T/out" 2>&1 &&
-    grep -q '^   speed-up [0-9.]* x' "$T/sweep.txt" && grep -q '^   overhead -*[0-9.]* %' "$T/sweep.txt" &&
+    grep -q '^ *1  *[0-9.]*  *[0-9.]*  *100%  *[0-9.]*  *[0-9.]*  *100%$' "$T/sweep.txt" &&
+    grep -q "$two" "$T/sweep.txt" && grep -q "$instr" "$T/sweep.txt" && grep -q "$perpoint" "$T/sweep.txt" &&
     grep -q '^       200 points: peak RSS  *[0-9.]* MB' "$T/sweep.txt"; then
-	echo "ok - the sweep benchmark (make bench-sweep) runs: rate, overhead, memory"
+	echo "ok - the sweep benchmark (make bench-sweep) runs: scaling, overhead, memory"
 else
 	echo "not ok - the sweep benchmark (make bench-sweep) runs"
 	sed 's/^/# /' "$T/out"

@@ -5,6 +5,8 @@
 # merged files equal the one-machine sweep's, also for folders, presets and
 # --set values whose names hold what a shell would read: blanks, quotes,
 # $(...), backquotes, newlines, parallel's {} (no command in them runs).
+# A shard that fails is named by the merge (the line exits non-zero), and
+# the same --emit then runs only that shard.
 # Run from the repository root with $HYBOUNCE_BIN (see tests/run.sh).
 . "$(dirname "$0")/common.inc"
 if ! command -v parallel >/dev/null 2>&1; then
@@ -21,7 +23,7 @@ set -- --vary "initial.x0=5um:60um:12" --vary "law.c=1e9,4.3e9"
 
 "$BIN" sweep $P "$@" --out "$T/par" --emit parallel --shards 5 >"$T/cmd" 2>"$T/err"
 rc=$?
-if [ $rc -eq 0 ] && [ "$(wc -l <"$T/cmd")" -eq 1 ] && grep -q '^HB_SWEEP_BIN=.* HB_SWEEP_DIR=.* parallel .* --shard {}/5'"'"' ::: 0 1 2 3 4 && .* sweep --quiet --merge ' "$T/cmd" &&
+if [ $rc -eq 0 ] && [ "$(wc -l <"$T/cmd")" -eq 1 ] && grep -q '^HB_SWEEP_BIN=.* HB_SWEEP_DIR=.* parallel .* --shard {}/5'"'"' ::: 0 1 2 3 4; .* sweep --quiet --merge .* --shards 5$' "$T/cmd" &&
     [ -f "$T/par/sweep.preset" ] && [ ! -f "$T/par/runs.csv" ]; then
 	ok "--emit parallel prints one command line (5 shards, then --merge) and writes sweep.preset"
 else notok "--emit parallel prints one command line (exit $rc)" "$T/cmd"; fi
@@ -32,10 +34,35 @@ if [ $rc -eq 0 ] && same_sweep "$T/one" "$T/par" && [ -f "$T/par/shard-4-of-5.jo
 else notok "GNU parallel runs the shards and the merge (exit $rc)" "$T/out"; fi
 
 "$BIN" sweep $P "$@" --out "$T/ssh" --emit parallel --shards 3 --sshlogin ':' >"$T/cmd" 2>"$T/err"
-if grep -q " parallel --halt now,fail=1 --sshlogin ':' --env HB_SWEEP_BIN --env HB_SWEEP_DIR " "$T/cmd" &&
+if grep -q " parallel --sshlogin ':' --env HB_SWEEP_BIN --env HB_SWEEP_DIR " "$T/cmd" &&
     timeout 120 sh -c "$(cat "$T/cmd")" >"$T/out" 2>&1 && same_sweep "$T/one" "$T/ssh"; then
 	ok "--emit parallel --sshlogin ':' (this machine as an ssh login) gives the same files"
 else notok "--emit parallel --sshlogin ':' gives the same files" "$T/out"; cat "$T/cmd" | sed 's/^/# /'; fi
+# A shard that fails: its journal cannot be written (a link into a folder
+# that is not there), so shard 2 exits 1 while the others finish; the merge
+# names it and the line exits 1.  Once the fault is gone, the same --emit
+# runs shard 2 alone and the files equal the one-machine sweep's.
+"$BIN" sweep $P --vary "initial.x0=5um:60um:12" --vary "law.c=1e9,4.3e9" --out "$T/fail" \
+    --emit parallel --shards 5 >"$T/cmd" 2>"$T/err"
+ln -s "$T/no such folder/x" "$T/fail/shard-2-of-5.journal"
+timeout 120 sh -c "$(cat "$T/cmd")" >"$T/out" 2>&1
+rc=$?
+if [ $rc -eq 1 ] && [ ! -f "$T/fail/runs.csv" ] && [ -s "$T/fail/shard-4-of-5.journal" ] &&
+    grep -q 'merge: .*: 1 of 5 shards incomplete: shard 2 (not started); 5 of 24 points missing' "$T/out"; then
+	ok "a shard fails: the others finish, the merge names shard 2, the line exits 1"
+else notok "a shard fails: the merge names it (exit $rc)" "$T/out"; fi
+rm -f "$T/fail/shard-2-of-5.journal"
+"$BIN" sweep "$T/fail/sweep.preset" --out "$T/fail" --emit parallel --shards 5 >"$T/cmd" 2>"$T/err"
+rc=$?
+if [ $rc -eq 0 ] && grep -q "{}/5' ::: 2; " "$T/cmd" && grep -q '4 of 5 shards already done' "$T/err"; then
+	ok "--emit parallel again on the folder: only shard 2 (::: 2)"
+else notok "--emit parallel again: only shard 2 (exit $rc)" "$T/cmd"; show "$T/err"; fi
+timeout 120 sh -c "$(cat "$T/cmd")" >"$T/out" 2>&1
+rc=$?
+if [ $rc -eq 0 ] && same_sweep "$T/one" "$T/fail"; then
+	ok "shard 2 run again and merged: the files equal the one-machine sweep"
+else notok "shard 2 run again and merged (exit $rc)" "$T/out"; fi
+
 # Hostile names: each is the folder (and the preset file's name, and part of
 # a --set value) of a sweep emitted for parallel and run for real; a command
 # in a name would touch a canary in $T (the scripts run there).

@@ -1,0 +1,470 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/*
+ * sweep_merge.c - a sweep folder's journals put together: the merge into
+ * runs.csv and collisions.csv, and which shards are done (see sweep.h).
+ *
+ * Merge.  The union of the journals in the folder (by point id; the first
+ * copy wins) is written in id order to runs.csv and collisions.csv as one
+ * set of the atomic writer (atomic.h): a reader never sees half a file and
+ * a failed merge leaves the old ones.  An incomplete folder is refused with
+ * the shards that are missing or incomplete, by number, so that only those
+ * are computed again.  The merge keeps 8 bytes per point (an offset and a
+ * journal number), never the points' text.
+ */
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "hybounce/atomic.h"
+#include "hybounce/csv.h"
+#include "hybounce/preset.h"
+#include "hybounce/sim.h"
+#include "hybounce/status.h"
+#include "hybounce/sweep.h"
+#include "sweep_impl.h"
+
+/* The names of the journals in dir (malloc'd, *count of them). */
+static int
+journals_list(const char *dir, char ***names, int *count, char *msg, size_t n)
+{
+	struct dirent *e;
+	int rc = HB_OK;
+	DIR *d;
+
+	*names = NULL;
+	*count = 0;
+	if ((d = opendir(dir)) == NULL)
+		return hb_status_set(msg, n, HB_EIO, "%s: %s", dir, strerror(errno));
+	while ((e = readdir(d)) != NULL) {
+		size_t l = strlen(e->d_name);
+		char **nn;
+
+		if (l <= 8 || strcmp(e->d_name + l - 8, ".journal") != 0)
+			continue;
+		if (*count == 65535 ||
+		    (nn = realloc(*names, (size_t)(*count + 1) * sizeof **names)) == NULL) {
+			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+			break;
+		}
+		*names = nn;
+		if (((*names)[*count] = strdup(e->d_name)) == NULL) {
+			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+			break;
+		}
+		(*count)++;
+	}
+	closedir(d);
+	return rc;
+}
+
+static void
+names_free(char **names, int count)
+{
+	for (int i = 0; i < count; i++)
+		free(names[i]);
+	free(names);
+}
+
+/* N of "shard-K-of-N.journal", 0 for another name. */
+static long
+shards_of_name(const char *name)
+{
+	long k, ns;
+	int end = 0;
+
+	if (sscanf(name, "shard-%ld-of-%ld.journal%n", &k, &ns, &end) == 2 &&
+	    name[end] == '\0' && k >= 0 && ns > k)
+		return ns;
+	return 0;
+}
+
+/* The shard count of the journals when they all name the same one, else 0. */
+static long
+shards_of_names(char *const *names, int count)
+{
+	long ns = 0;
+
+	for (int i = 0; i < count; i++) {
+		long m = shards_of_name(names[i]);
+
+		if (m == 0 || (ns != 0 && m != ns))
+			return 0;
+		ns = m;
+	}
+	return ns;
+}
+
+/* Points of shard k of ns in a sweep of np points. */
+static long
+shard_points(long np, long k, long ns)
+{
+	return k < np ? (np - k + ns - 1) / ns : 0;
+}
+
+/*
+ * "2 of 4 shards incomplete: shard 1 (not started), shard 3 (3 of 5
+ * points); 8 of 20 points missing" into msg, from have(ctx, id).
+ */
+static int
+shards_missing_msg(const char *dir, long np, long ns, int (*have)(const void *, long),
+                   const void *ctx, long missing, char *msg, size_t n)
+{
+	char list[1400];
+	size_t used = 0;
+	long bad = 0, shown = 0;
+
+	list[0] = '\0';
+	for (long k = 0; k < ns; k++) {
+		long pts = shard_points(np, k, ns), got = 0;
+
+		for (long id = k; id < np; id += ns)
+			got += have(ctx, id);
+		if (got == pts)
+			continue;
+		bad++;
+		if (shown < 12 && used < sizeof list - 64) {
+			int w = got == 0
+			    ? snprintf(list + used, sizeof list - used, "%sshard %ld (not started)",
+			               shown ? ", " : "", k)
+			    : snprintf(list + used, sizeof list - used, "%sshard %ld (%ld of %ld "
+			               "points)", shown ? ", " : "", k, got, pts);
+			used += (size_t)w;
+			shown++;
+		}
+	}
+	if (bad > shown)
+		snprintf(list + used, sizeof list - used, ", and %ld more", bad - shown);
+	return hb_status_set(msg, n, HB_EINVAL, "%s: %ld of %ld shard%s incomplete: %s; %ld of "
+	                     "%ld points missing", dir, bad, ns, ns == 1 ? "" : "s", list,
+	                     missing, np);
+}
+
+/*
+ * Where each point's block is: its offset in its journal (48 bits, 256 TB)
+ * and the journal's number (16 bits) in 8 bytes; its end is found when it
+ * is read (the block ends with its "r," line).
+ */
+#define INDEX_NONE UINT64_MAX
+#define INDEX_MAX_OFF ((uint64_t)1 << 48)
+
+struct index {
+	uint64_t *at;     /* (offset << 16) | journal, INDEX_NONE: not seen */
+	int cur;
+	long count;
+};
+
+static int
+index_add(void *ctx, long id, off_t off, size_t len)
+{
+	struct index *x = ctx;
+
+	(void)len;
+	if (x->at[id] != INDEX_NONE)
+		return HB_OK;  /* the first copy wins */
+	if ((uint64_t)off >= INDEX_MAX_OFF)
+		return HB_ENOMEM;  /* a journal of 256 TB */
+	x->at[id] = (uint64_t)off << 16 | (uint64_t)x->cur;
+	x->count++;
+	return HB_OK;
+}
+
+static int
+index_has(const void *ctx, long id)
+{
+	return ((const struct index *)ctx)->at[id] != INDEX_NONE;
+}
+
+/*
+ * Reads the block at off of fd into *buf (grown as needed, *cap bytes):
+ * from off up to the end of its "r," line.  Returns its length, or 0 for
+ * a short read.
+ */
+static size_t
+read_block(int fd, off_t off, char **buf, size_t *cap)
+{
+	size_t have = 0, scan = 0, want = 2048;
+
+	for (;;) {
+		ssize_t got;
+
+		if (have + want + 1 > *cap) {
+			char *nb = realloc(*buf, have + want + 1);
+
+			if (nb == NULL)
+				return 0;
+			*buf = nb;
+			*cap = have + want + 1;
+		}
+		got = pread(fd, *buf + have, want, off + (off_t)have);
+		if (got <= 0)
+			return 0;
+		have += (size_t)got;
+		while (scan < have) {
+			char *nl = memchr(*buf + scan, '\n', have - scan);
+
+			if (nl == NULL)
+				break;
+			if ((*buf)[scan] == 'r') {
+				size_t end = (size_t)(nl - *buf) + 1;
+
+				(*buf)[end] = '\0';
+				return end;
+			}
+			scan = (size_t)(nl - *buf) + 1;
+		}
+		want *= 2;
+	}
+}
+
+/* The collisions header of --collisions (from an empty run's CSV). */
+static int
+collisions_header(const struct hb_scene *sc, char *buf, size_t n, char *msg, size_t mn)
+{
+	struct hb_sim *s = hb_sim_new(sc, msg, mn);
+	char *t = NULL;
+	size_t tl = 0;
+	FILE *f;
+	int rc;
+
+	if (s == NULL)
+		return HB_EINVAL;
+	f = open_memstream(&t, &tl);
+	if (f == NULL) {
+		hb_sim_free(s);
+		return hb_status_set(msg, mn, HB_ENOMEM, "out of memory");
+	}
+	rc = hb_csv_stream_collisions(f, s, msg, mn);
+	fclose(f);
+	hb_sim_free(s);
+	if (rc == HB_OK && t != NULL)
+		snprintf(buf, n, "%.*s", (int)strcspn(t, "\n"), t);
+	free(t);
+	return rc;
+}
+
+/* Loads DIR/sweep.preset into a sweep. */
+static struct hb_sweep *
+load_spec(const char *dir, struct hb_scene *sc, char *msg, size_t n)
+{
+	char path[4096], m[1024];
+	struct hb_sweep *sw;
+	char *text;
+
+	snprintf(path, sizeof path, "%s/" SWEEP_SPEC_NAME, dir);
+	m[0] = '\0';
+	text = sweep_slurp(path, NULL, m, sizeof m);
+	if (text == NULL && m[0] == '\0')
+		snprintf(m, sizeof m, "%.900s: %s", path, strerror(ENOENT));
+	if (text == NULL) {
+		hb_status_set(msg, n, HB_EINVAL, "%s; expected a sweep folder (--out DIR of "
+		           "hybounce sweep)", m[0] ? m : path);
+		return NULL;
+	}
+	m[0] = '\0';
+	if (hb_preset_load_string(text, path, sc, m, sizeof m) != HB_OK) {
+		hb_status_set(msg, n, HB_EINVAL, "%s", m);
+		free(text);
+		return NULL;
+	}
+	sw = hb_sweep_new(sc, msg, n);
+	/* The folder's sweep was accepted (and its size allowed) when it was made. */
+	if (sw != NULL)
+		hb_sweep_set_max_points(sw, 1000000000L, NULL);
+	if (sw != NULL && hb_sweep_vary_from_preset(sw, text, path, msg, n) != HB_OK) {
+		hb_sweep_free(sw);
+		sw = NULL;
+	}
+	if (sw != NULL && hb_sweep_npoints(sw) == 0) {
+		hb_status_set(msg, n, HB_EINVAL, "%s: no '; sweep: --vary' line", path);
+		hb_sweep_free(sw);
+		sw = NULL;
+	}
+	free(text);
+	return sw;
+}
+
+int
+hb_sweep_merge(const char *dir, char *msg, size_t n)
+{
+	return hb_sweep_merge_shards(dir, 0, msg, n);
+}
+
+int
+hb_sweep_merge_shards(const char *dir, long nshards, char *msg, size_t n)
+{
+	struct hb_scene sc;
+	struct hb_sweep *sw = load_spec(dir, &sc, msg, n);
+	int rc;
+
+	if (sw == NULL)
+		return HB_EINVAL;
+	rc = sweep_merge_into(sw, dir, nshards, msg, n);
+	hb_sweep_free(sw);
+	return rc;
+}
+
+int
+sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char *msg, size_t n)
+{
+	const struct hb_scene *sc = sweep_base(sw);
+	struct index x = { 0 };
+	char **names = NULL, hdr[4096], path[4200];
+	int nnames = 0, *fds = NULL, rc = HB_OK;
+	struct hb_atomic_set set;
+	FILE *runs = NULL, *coll = NULL;
+	int set_open = 0;
+	char *blk = NULL;
+	size_t cap = 0;
+	long np = hb_sweep_npoints(sw);
+
+	x.at = malloc((size_t)np * sizeof *x.at);
+	if (x.at == NULL) {
+		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto out;
+	}
+	for (long i = 0; i < np; i++)
+		x.at[i] = INDEX_NONE;
+	if ((rc = journals_list(dir, &names, &nnames, msg, n)) != HB_OK)
+		goto out;
+	fds = malloc((size_t)(nnames + 1) * sizeof *fds);
+	if (fds == NULL) {
+		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto out;
+	}
+	for (int i = 0; i < nnames; i++)
+		fds[i] = -1;
+	for (int i = 0; i < nnames && rc == HB_OK; i++) {
+		snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+		x.cur = i;
+		rc = sweep_journal_scan(path, np, 0, index_add, &x, msg, n);
+		if (rc == HB_ENOMEM)
+			rc = hb_status_set(msg, n, HB_ENOMEM, "%s: a journal of 256 TB or more", path);
+		/* A journal that is not there (a dangling link, one removed since) holds nothing. */
+		if (rc == HB_OK && (fds[i] = open(path, O_RDONLY | O_CLOEXEC)) < 0 && errno != ENOENT)
+			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+	}
+	if (rc != HB_OK)
+		goto out;
+	if (x.count < np) {
+		long first = 0;
+
+		if (nshards <= 0)
+			nshards = shards_of_names(names, nnames);
+		if (nshards > 0) {
+			rc = shards_missing_msg(dir, np, nshards, index_has, &x, np - x.count, msg, n);
+			goto out;
+		}
+		while (first < np && x.at[first] != INDEX_NONE)
+			first++;
+		rc = hb_status_set(msg, n, HB_EINVAL, "%s: %ld of %ld points are missing (the "
+		                "first is point %ld); expected every shard to have finished "
+		                "(%d journal%s found)", dir, np - x.count, np, first, nnames,
+		                nnames == 1 ? "" : "s");
+		goto out;
+	}
+	hb_atomic_begin(&set);
+	set_open = 1;
+	snprintf(path, sizeof path, "%s/runs.csv", dir);
+	if ((runs = hb_atomic_add(&set, path, msg, n)) == NULL) {
+		rc = HB_EIO;
+		goto out;
+	}
+	snprintf(path, sizeof path, "%s/collisions.csv", dir);
+	if ((coll = hb_atomic_add(&set, path, msg, n)) == NULL) {
+		rc = HB_EIO;
+		goto out;
+	}
+	hb_sweep_runs_header(sw, hdr, sizeof hdr);
+	fprintf(runs, "%s\n", hdr);
+	if ((rc = collisions_header(sc, hdr, sizeof hdr, msg, n)) != HB_OK)
+		goto out;
+	fprintf(coll, "id,%s\n", hdr);
+	for (long id = 0; id < np && rc == HB_OK; id++) {
+		int fi = (int)(x.at[id] & 0xffff);
+		const char *p;
+
+		if (read_block(fds[fi], (off_t)(x.at[id] >> 16), &blk, &cap) == 0) {
+			rc = hb_status_set(msg, n, HB_EIO, "%s/%s: short read", dir, names[fi]);
+			break;
+		}
+		for (p = blk; *p; ) {
+			const char *end = strchr(p, '\n');
+			size_t l = (size_t)(end - p) + 1;
+
+			fwrite(p + 2, 1, l - 2, p[0] == 'r' ? runs : coll);
+			p += l;
+		}
+	}
+out:
+	if (set_open) {
+		if (rc == HB_OK)
+			rc = hb_atomic_commit(&set, msg, n);   /* both files, or neither */
+		else
+			hb_atomic_abort(&set);
+	}
+	for (int i = 0; i < nnames; i++)
+		if (fds && fds[i] >= 0)
+			close(fds[i]);
+	free(fds);
+	names_free(names, nnames);
+	free(blk);
+	free(x.at);
+	return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* Shards done                                                         */
+
+static int
+bit_add(void *ctx, long id, off_t off, size_t len)
+{
+	unsigned char *bits = ctx;
+
+	(void)off;
+	(void)len;
+	bits[id / 8] |= (unsigned char)(1u << (id % 8));
+	return HB_OK;
+}
+
+long
+hb_sweep_shards_done(const struct hb_sweep *sw, const char *dir, long nshards,
+                     unsigned char *done, char *msg, size_t n)
+{
+	long np = hb_sweep_npoints(sw), count = 0;
+	char path[4200], c[4200], **names = NULL;
+	unsigned char *bits;
+	int nnames = 0, rc;
+
+	snprintf(path, sizeof path, "%s/runs.csv", dir);
+	snprintf(c, sizeof c, "%s/collisions.csv", dir);
+	if (access(path, F_OK) == 0 && access(c, F_OK) == 0) {
+		/* Merged: runs.csv is only ever written complete. */
+		memset(done, 1, (size_t)nshards);
+		return nshards;
+	}
+	if ((bits = calloc((size_t)np / 8 + 1, 1)) == NULL) {
+		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+		return -1;
+	}
+	rc = journals_list(dir, &names, &nnames, msg, n);
+	for (int i = 0; i < nnames && rc == HB_OK; i++) {
+		snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+		rc = sweep_journal_scan(path, np, 0, bit_add, bits, msg, n);
+	}
+	names_free(names, nnames);
+	for (long k = 0; k < nshards && rc == HB_OK; k++) {
+		long id = k;
+
+		while (id < np && (bits[id / 8] & (1u << (id % 8))))
+			id += nshards;
+		done[k] = id >= np;
+		count += done[k];
+	}
+	free(bits);
+	return rc == HB_OK ? count : -1;
+}
