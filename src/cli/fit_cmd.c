@@ -29,9 +29,12 @@
 #include "signals.h"
 
 #define PROG "hybounce"
+/* The level of the chi-square test of stated noise (two-sided). */
+#define FIT_NOISE_LEVEL 0.05
 
 enum { OPT_ONSET_METHOD = 256, OPT_ONSET_THRESHOLD, OPT_ONSET_LEVEL, OPT_MIN_INTERVAL,
-       OPT_MAX_ITER, OPT_RESIDUALS, OPT_ONSETS_OUT, OPT_MAX_RSE };
+       OPT_MAX_ITER, OPT_RESIDUALS, OPT_ONSETS_OUT, OPT_MAX_RSE,
+       OPT_REPORT };
 
 static const struct option long_options[] = {
 	{ "data",            required_argument, NULL, 'd' },
@@ -47,6 +50,7 @@ static const struct option long_options[] = {
 	{ "min-interval",    required_argument, NULL, OPT_MIN_INTERVAL },
 	{ "onsets-out",      required_argument, NULL, OPT_ONSETS_OUT },
 	{ "max-relative-se", required_argument, NULL, OPT_MAX_RSE },
+	{ "report",          required_argument, NULL, OPT_REPORT },
 	{ "quiet",           no_argument,       NULL, 'q' },
 	{ "help",            no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
@@ -60,7 +64,7 @@ usage(FILE *f)
 "                [--out FILE] [--residuals FILE] [--jobs N] [--max-iter N]\n"
 "                [--onset-method M] [--onset-threshold X] [--onset-level X]\n"
 "                [--min-interval T] [--onsets-out FILE] [--max-relative-se X]\n"
-"                [--quiet]\n"
+"                [--report FILE.json] [--quiet]\n"
 "\n"
 "Fits the free keys of PRESET so that its runs reproduce the measured\n"
 "collisions (nonlinear least squares, GSL trust region), and writes the\n"
@@ -75,6 +79,9 @@ usage(FILE *f)
 "  -s, --set KEY=VALUE     change the preset first, e.g. a start (repeatable)\n"
 "  -o, --out FILE          the fitted preset (default: DATA's name + -fit.preset)\n"
 "      --residuals FILE    write the points as CSV: measured, simulated, sd ...\n"
+"      --report FILE.json  write the report as JSON: dof, cost, reduced chi-square,\n"
+"                          the noise test, AIC, BIC, estimates, 95%% intervals,\n"
+"                          correlations, the verdict and the residuals\n"
 "  -j, --jobs N            runs in parallel (default: every core)\n"
 "      --max-iter N        iteration cap (default 100)\n"
 "      --max-relative-se X a credible estimate's standard error is at most X\n"
@@ -88,10 +95,12 @@ usage(FILE *f)
 "                          correct by hand and fit with --data)\n"
 "  -q, --quiet             no progress lines on stderr, no residual table\n"
 "\n"
-"Exit status: 0 converged to credible estimates, 1 stopped without converging\n"
-"(iteration cap, no progress, parameters not identifiable) or an estimate's\n"
-"relative standard error above --max-relative-se, 2 bad input (a recording\n"
-"that is no bouncing sequence too), 128+N stopped by signal\n"
+"Exit status: 0 converged to credible estimates, 1 not credible (stopped\n"
+"without converging: iteration cap, no progress, parameters not identifiable;\n"
+"an estimate's relative standard error above --max-relative-se; with sd\n"
+"columns, residuals inconsistent with them: a two-sided chi-square test at\n"
+"5%%): the reasons on stderr, the estimates still reported and written,\n"
+"2 bad input (a recording that is no bouncing sequence too), 128+N stopped by signal\n"
 "N (SIGINT, SIGTERM, SIGHUP: the best point so far is written).  See hybounce(1).\n");
 }
 
@@ -219,7 +228,8 @@ print_wrote(const char *path, const struct hb_atomic_target *t)
 static int
 write_outputs(const char *out, const struct hb_scene *sc, const char *resid_path,
               const struct hb_fit_result *r, const struct hb_outputs *pol, int k_out,
-              int k_resid)
+              int k_resid, const char *report_path, const struct fit_report_ctx *rc,
+              int k_report)
 {
 	struct hb_atomic_set set;
 	size_t len = hb_preset_format(sc, NULL, 0);
@@ -242,6 +252,11 @@ write_outputs(const char *out, const struct hb_scene *sc, const char *resid_path
 			goto fail;
 		fill_residuals(f, r);
 	}
+	if (report_path != NULL) {
+		if ((f = hb_atomic_add(&set, report_path, m, sizeof m)) == NULL)
+			goto fail;
+		fit_report_json(f, rc);
+	}
 	free(buf);
 	buf = NULL;
 	if ((st = hb_atomic_commit(&set, m, sizeof m)) != HB_OK)
@@ -249,6 +264,8 @@ write_outputs(const char *out, const struct hb_scene *sc, const char *resid_path
 	print_wrote(out, &pol->out[k_out].target);
 	if (resid_path != NULL)
 		print_wrote(resid_path, &pol->out[k_resid].target);
+	if (report_path != NULL)
+		print_wrote(report_path, &pol->out[k_report].target);
 	return 0;
 fail:
 	hb_atomic_abort(&set);
@@ -257,66 +274,22 @@ failed:
 	{
 		/* "PATH: reason" from the writer: the option that named PATH first */
 		size_t rl = resid_path != NULL ? strlen(resid_path) : 0;
+		size_t pl = report_path != NULL ? strlen(report_path) : 0;
 		int is_resid = resid_path != NULL && strncmp(m, resid_path, rl) == 0 &&
 		               m[rl] == ':' && strcmp(resid_path, out) != 0;
+		int is_report = !is_resid && report_path != NULL && strncmp(m, report_path, pl) == 0
+		                && m[pl] == ':' && strcmp(report_path, out) != 0;
 
-		return bad("%s %s; nothing written", is_resid ? "--residuals" : "--out", m);
+		return bad("%s %s; nothing written", is_resid ? "--residuals" : is_report
+		           ? "--report" : "--out", m);
 	}
-}
-
-static void
-report(const struct hb_fit_result *r, const struct hb_fit_data *d, int quiet)
-{
-	int p = r->np;
-
-	printf("stopped     %s after %d iteration%s, %ld runs\n", r->why, r->iter,
-	    r->iter == 1 ? "" : "s", r->runs);
-	printf("cost        %.6g at the start, %.6g at the estimates (sum of squared "
-	       "residuals / sd, %zu points)\n", r->cost0, r->cost, r->npoints);
-	printf("\nestimates   (SI units; standard errors %s)\n", r->sd_scaled
-	    ? "scaled by the residual variance cost/(N-P): the data carry no sd"
-	    : "from the data's standard deviations");
-	printf("  %-14s %14s %16s %12s %9s  %s\n", "key", "start", "estimate", "std error",
-	    "relative", "unit");
-	for (int i = 0; i < p; i++) {
-		struct hb_scene_keyinfo ki;
-
-		if (hb_scene_get(&r->fitted, r->key[i], &ki, NULL) != HB_OK)
-			ki.unit[0] = '\0';
-		printf("  %-14s %14.6g %16.9g %12.3g %9.2g  %s\n", r->key[i], r->start[i],
-		    r->value[i], r->se[i], r->se[i] / fabs(r->value[i]), ki.unit);
-	}
-	if (p > 1) {
-		printf("\ncorrelation\n  %-14s", "");
-		for (int j = 0; j < p; j++)
-			printf(" %10.10s", r->key[j]);
-		printf("\n");
-		for (int i = 0; i < p; i++) {
-			printf("  %-14s", r->key[i]);
-			for (int j = 0; j < p; j++)
-				printf(" %10.4f", r->corr[i * HB_FIT_MAX_FREE + j]);
-			printf("\n");
-		}
-	}
-	if (quiet)
-		return;
-	printf("\nresiduals   (%s)\n", d->kind == HB_FIT_SEQUENCE
-	    ? "t_e: time since the first impact" : "one run per drop");
-	printf("  %4s %4s %-6s %16s %16s %12s %10s\n", "pt", "row", "obs", "measured",
-	    "simulated", "sd", "resid/sd");
-	for (size_t k = 0; k < r->npoints; k++) {
-		const struct hb_fit_point *pt = &r->point[k];
-
-		printf("  %4zu %4zu %-6s %16.9g %16.9g %12.3g %10.3g\n", k, pt->row + 1,
-		    hb_fit_obs_name(pt->obs), pt->measured, pt->simulated, pt->sd, pt->resid);
-	}
-	fit_plot(stdout, r, d);
 }
 
 int
 fit_main(int argc, char **argv)
 {
 	const char *data = NULL, *out = NULL, *resid_path = NULL, *preset, *onsets_path = NULL;
+	const char *report_path = NULL;
 	const char **sets = NULL, *keys[HB_FIT_MAX_FREE];
 	char *freebuf = NULL, path[1024], outbuf[1024], msg[4096];
 	struct hb_onset_options oo = { 0 };
@@ -328,6 +301,10 @@ fit_main(int argc, char **argv)
 	struct hb_outputs pol;
 	struct hb_fit *fit = NULL;
 	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2, sig = 0, k_out, k_resid = -1, k_ons = -1;
+	int k_report = -1;
+	struct hb_fit_stats fst;
+	struct fit_verdict v;
+	struct fit_report_ctx rc;
 	size_t freelen = 0;
 
 	if ((sets = calloc((size_t)argc + 1, sizeof *sets)) == NULL)
@@ -376,6 +353,7 @@ fit_main(int argc, char **argv)
 				goto out;
 			break;
 		case OPT_ONSETS_OUT: onsets_path = optarg; break;
+		case OPT_REPORT: report_path = optarg; break;
 		case OPT_MAX_RSE:
 			if (parse_pos("--max-relative-se", optarg, &max_rse))
 				goto out;
@@ -463,6 +441,13 @@ fit_main(int argc, char **argv)
 		}
 		k_ons = pol.nout - 1;
 	}
+	if (report_path != NULL) {
+		if (hb_outputs_add(&pol, report_path, "--report", msg, sizeof msg) != HB_OK) {
+			status = bad("%s%s", strncmp(msg, "--report ", 9) == 0 ? "" : "--report ", msg);
+			goto out;
+		}
+		k_report = pol.nout - 1;
+	}
 	printf("hybounce %s fit\n", HYBOUNCE_VERSION);
 	printf("preset      %s (%s)\n", preset, path);
 	/*
@@ -546,7 +531,16 @@ fit_main(int argc, char **argv)
 	if (sig != 0)
 		snprintf(r.why, sizeof r.why, "interrupted by %s (the best point so far)",
 		         cli_signal_name(sig));
-	report(&r, &d, quiet);
+	hb_fit_stats(&r, FIT_NOISE_LEVEL, &fst);
+	fit_report_print(&r, &d, &fst, quiet);
+	fit_verdict(&r, &fst, max_rse, &v);
+	if (sig != 0) {
+		v.status = cli_signal_status(sig);
+		snprintf(v.reason[0], sizeof v.reason[0], "%.500s", r.why);
+		v.n = 1;
+	}
+	rc = (struct fit_report_ctx){ .preset = preset, .data = data, .d = &d, .r = &r, .st = &fst,
+	                              .v = &v, .status = v.status, .sig = sig };
 
 	/* The fitted scene: named after the data, reproducing the best fit. */
 	{
@@ -571,7 +565,8 @@ fit_main(int argc, char **argv)
 		memcpy(r.fitted.description, desc, sizeof desc);
 	}
 	fflush(stdout);
-	if (write_outputs(out, &r.fitted, resid_path, &r, &pol, k_out, k_resid) != 0)
+	if (write_outputs(out, &r.fitted, resid_path, &r, &pol, k_out, k_resid, report_path, &rc,
+	                  k_report) != 0)
 		goto out;
 	if (sig == 0)
 		sig = cli_signal;   /* caught while writing: the files are whole */
@@ -580,19 +575,11 @@ fit_main(int argc, char **argv)
 		        "reported and written\n", cli_signal_name(sig));
 		status = cli_signal_status(sig);
 	} else {
-		status = r.reason <= HB_FIT_CONVERGED_COST ? 0 : 1;
-		/* converged is not credible: every estimate within max_rse */
-		for (int i = 0; status == 0 && i < r.np; i++) {
-			double rel = r.se[i] / fabs(r.value[i]);
-
-			if (!(rel <= max_rse)) {
-				fprintf(stderr, PROG " fit: not credible: the standard error of %s is "
-				        "%.3g of its value, above %g (--max-relative-se): the data do not "
-				        "determine it; the estimates are reported and written\n",
-				        r.key[i], rel, max_rse);
-				status = 1;
-			}
-		}
+		status = v.status;
+		for (int i = 0; i < v.n; i++)
+			fprintf(stderr, PROG " fit: not credible: %s\n", v.reason[i]);
+		if (v.n > 0)
+			fprintf(stderr, PROG " fit: the estimates are reported and written\n");
 	}
 out:
 	cli_signals_restore();
