@@ -34,7 +34,7 @@
 
 enum { OPT_ONSET_METHOD = 256, OPT_ONSET_THRESHOLD, OPT_ONSET_LEVEL, OPT_MIN_INTERVAL,
        OPT_MAX_ITER, OPT_RESIDUALS, OPT_ONSETS_OUT, OPT_MAX_RSE,
-       OPT_REPORT };
+       OPT_REPORT, OPT_LAWS };
 
 static const struct option long_options[] = {
 	{ "data",            required_argument, NULL, 'd' },
@@ -51,6 +51,7 @@ static const struct option long_options[] = {
 	{ "onsets-out",      required_argument, NULL, OPT_ONSETS_OUT },
 	{ "max-relative-se", required_argument, NULL, OPT_MAX_RSE },
 	{ "report",          required_argument, NULL, OPT_REPORT },
+	{ "laws",            required_argument, NULL, OPT_LAWS },
 	{ "quiet",           no_argument,       NULL, 'q' },
 	{ "help",            no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
@@ -64,7 +65,7 @@ usage(FILE *f)
 "                [--out FILE] [--residuals FILE] [--jobs N] [--max-iter N]\n"
 "                [--onset-method M] [--onset-threshold X] [--onset-level X]\n"
 "                [--min-interval T] [--onsets-out FILE] [--max-relative-se X]\n"
-"                [--report FILE.json] [--quiet]\n"
+"                [--report FILE.json] [--laws LAW,LAW...] [--quiet]\n"
 "\n"
 "Fits the free keys of PRESET so that its runs reproduce the measured\n"
 "collisions (nonlinear least squares, GSL trust region), and writes the\n"
@@ -86,6 +87,12 @@ usage(FILE *f)
 "      --max-iter N        iteration cap (default 100)\n"
 "      --max-relative-se X a credible estimate's standard error is at most X\n"
 "                          of its value (default 0.1), else exit 1\n"
+"      --laws LAW,...      fit each law to the same data and rank them by AIC\n"
+"                          (e.g. shccl,bwshccl,bwmcl); free keys per law: --free\n"
+"                          LAW:KEY, else --free KEY, else the law's default (shccl:\n"
+"                          law.c; bwshccl, bwmcl: law.c,law.alpha); starts per law:\n"
+"                          --set LAW:KEY=VALUE; --out, --residuals: the best law;\n"
+"                          exit status: the best law's\n"
 "      --onset-method M    aubio onset method for a recording (default hfc)\n"
 "      --onset-threshold X aubio's peak-picking threshold (default 0.3)\n"
 "      --onset-level X     a click starts where it reaches X (0 < X <= 1) of its\n"
@@ -195,102 +202,12 @@ progress(void *ctx, int iter, double cost, long runs)
 	fprintf(stderr, PROG " fit: iteration %d: cost %.6g (%ld runs)\n", iter, cost, runs);
 }
 
-/* The residuals CSV: a row per data point. */
-static void
-fill_residuals(FILE *f, const void *ctx)
-{
-	const struct hb_fit_result *r = ctx;
-
-	fprintf(f, "point,row,observable,measured,simulated,sd,resid,start\n");
-	for (size_t k = 0; k < r->npoints; k++) {
-		const struct hb_fit_point *p = &r->point[k];
-
-		fprintf(f, "%zu,%zu,%s,%.17g,%.17g,%.17g,%.17g,%.17g\n", k, p->row,
-		    hb_fit_obs_name(p->obs), p->measured, p->simulated, p->sd, p->resid, p->start);
-	}
-}
-
-/* "wrote PATH" with how (outputs.h): every overwrite is named. */
-static void
-print_wrote(const char *path, const struct hb_atomic_target *t)
-{
-	char how[4200];
-
-	hb_outputs_how(t, how, sizeof how);
-	fprintf(stderr, "wrote %s%s\n", path, how);
-}
-
-/*
- * The fitted scene as a preset (then the provenance line) and the residuals
- * as CSV, as one atomic set (atomic.h): should either fail, neither is
- * written nor changed.
- */
-static int
-write_outputs(const char *out, const struct hb_scene *sc, const char *resid_path,
-              const struct hb_fit_result *r, const struct hb_outputs *pol, int k_out,
-              int k_resid, const char *report_path, const struct fit_report_ctx *rc,
-              int k_report)
-{
-	struct hb_atomic_set set;
-	size_t len = hb_preset_format(sc, NULL, 0);
-	const char *prov = cli_provenance();
-	char *buf = malloc(len + 1), m[4400];
-	FILE *f;
-	int st;
-
-	if (buf == NULL)
-		return bad("--out %s: out of memory; nothing written", out);
-	hb_preset_format(sc, buf, len + 1);
-	hb_atomic_begin(&set);
-	if ((f = hb_atomic_add(&set, out, m, sizeof m)) == NULL)
-		goto fail;
-	fwrite(buf, 1, len, f);
-	if (prov[0] != '\0')
-		fprintf(f, "%s\n", prov);
-	if (resid_path != NULL) {
-		if ((f = hb_atomic_add(&set, resid_path, m, sizeof m)) == NULL)
-			goto fail;
-		fill_residuals(f, r);
-	}
-	if (report_path != NULL) {
-		if ((f = hb_atomic_add(&set, report_path, m, sizeof m)) == NULL)
-			goto fail;
-		fit_report_json(f, rc);
-	}
-	free(buf);
-	buf = NULL;
-	if ((st = hb_atomic_commit(&set, m, sizeof m)) != HB_OK)
-		goto failed;
-	print_wrote(out, &pol->out[k_out].target);
-	if (resid_path != NULL)
-		print_wrote(resid_path, &pol->out[k_resid].target);
-	if (report_path != NULL)
-		print_wrote(report_path, &pol->out[k_report].target);
-	return 0;
-fail:
-	hb_atomic_abort(&set);
-failed:
-	free(buf);
-	{
-		/* "PATH: reason" from the writer: the option that named PATH first */
-		size_t rl = resid_path != NULL ? strlen(resid_path) : 0;
-		size_t pl = report_path != NULL ? strlen(report_path) : 0;
-		int is_resid = resid_path != NULL && strncmp(m, resid_path, rl) == 0 &&
-		               m[rl] == ':' && strcmp(resid_path, out) != 0;
-		int is_report = !is_resid && report_path != NULL && strncmp(m, report_path, pl) == 0
-		                && m[pl] == ':' && strcmp(report_path, out) != 0;
-
-		return bad("%s %s; nothing written", is_resid ? "--residuals" : is_report
-		           ? "--report" : "--out", m);
-	}
-}
-
 int
 fit_main(int argc, char **argv)
 {
 	const char *data = NULL, *out = NULL, *resid_path = NULL, *preset, *onsets_path = NULL;
-	const char *report_path = NULL;
-	const char **sets = NULL, *keys[HB_FIT_MAX_FREE];
+	const char *report_path = NULL, *laws = NULL;
+	const char **sets = NULL, **nonlaw_sets = NULL, *keys[HB_FIT_MAX_FREE];
 	char *freebuf = NULL, path[1024], outbuf[1024], msg[4096];
 	struct hb_onset_options oo = { 0 };
 	double max_rse = 0.1;
@@ -301,7 +218,7 @@ fit_main(int argc, char **argv)
 	struct hb_outputs pol;
 	struct hb_fit *fit = NULL;
 	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2, sig = 0, k_out, k_resid = -1, k_ons = -1;
-	int k_report = -1;
+	int k_report = -1, nnonlaw = 0;
 	struct hb_fit_stats fst;
 	struct fit_verdict v;
 	struct fit_report_ctx rc;
@@ -309,6 +226,10 @@ fit_main(int argc, char **argv)
 
 	if ((sets = calloc((size_t)argc + 1, sizeof *sets)) == NULL)
 		return bad("out of memory");
+	if ((nonlaw_sets = calloc((size_t)argc + 1, sizeof *sets)) == NULL) {
+		free(sets);
+		return bad("out of memory");
+	}
 	optind = 1;
 	while ((c = getopt_long(argc, argv, "d:f:s:o:j:qh", long_options, NULL)) != -1) {
 		switch (c) {
@@ -354,6 +275,7 @@ fit_main(int argc, char **argv)
 			break;
 		case OPT_ONSETS_OUT: onsets_path = optarg; break;
 		case OPT_REPORT: report_path = optarg; break;
+		case OPT_LAWS: laws = optarg; break;
 		case OPT_MAX_RSE:
 			if (parse_pos("--max-relative-se", optarg, &max_rse))
 				goto out;
@@ -384,11 +306,12 @@ fit_main(int argc, char **argv)
 		                   "or a .wav recording");
 		goto out;
 	}
-	if (freebuf == NULL) {
+	if (freebuf == NULL && laws == NULL) {
 		status = bad("--free KEY[,KEY...] is required, e.g. --free law.c,law.alpha");
 		goto out;
 	}
-	for (char *save = NULL, *k = strtok_r(freebuf, ", \t", &save); k != NULL;
+	for (char *save = NULL, *k = freebuf != NULL ? strtok_r(freebuf, ", \t", &save) : NULL;
+	     k != NULL;
 	     k = strtok_r(NULL, ", \t", &save)) {
 		if (nkeys == HB_FIT_MAX_FREE) {
 			status = bad("--free: more than %d keys; accepted: at most %d",
@@ -397,13 +320,17 @@ fit_main(int argc, char **argv)
 		}
 		keys[nkeys++] = k;
 	}
-	if (nkeys == 0) {
+	if (nkeys == 0 && laws == NULL) {
 		status = bad("--free: no key given, e.g. --free law.c,law.alpha");
 		goto out;
 	}
 
 	msg[0] = '\0';
-	if (hb_preset_open_named(preset, sets, nsets, &sc, path, sizeof path, msg,
+	/* with --laws, a --set LAW:KEY=VALUE is for that law's fit only (fit_laws.c) */
+	for (int i = 0; i < nsets; i++)
+		if (laws == NULL || fit_laws_prefix(sets[i], NULL) == 0)
+			nonlaw_sets[nnonlaw++] = sets[i];
+	if (hb_preset_open_named(preset, nonlaw_sets, nnonlaw, &sc, path, sizeof path, msg,
 	                         sizeof msg) != HB_OK) {
 		status = bad("%s", msg[0] ? msg : preset);
 		goto out;
@@ -473,7 +400,7 @@ fit_main(int argc, char **argv)
 				status = bad("--onsets-out %s", m);
 				goto out;
 			}
-			print_wrote(onsets_path, &pol.out[k_ons].target);
+			fit_print_wrote(onsets_path, &pol.out[k_ons].target);
 		}
 		hb_onset_result_free(&on);
 		if (st != HB_OK) {
@@ -493,6 +420,18 @@ fit_main(int argc, char **argv)
 	    d.n, d.n == 1 ? "" : "s", hb_fit_npoints(&d),
 	    d.sd[d.kind == HB_FIT_SEQUENCE ? HB_FIT_OBS_TE : HB_FIT_OBS_E] != NULL
 	    ? "weighted by sd" : "no standard deviations");
+	if (laws != NULL) {
+		struct fit_laws_args la = {
+			.laws = laws, .preset = preset, .data = data, .sets = sets, .nsets = nsets,
+			.keys = keys, .nkeys = nkeys, .d = &d, .fo = &fo, .max_rse = max_rse,
+			.quiet = quiet, .out = out, .resid_path = resid_path,
+			.report_path = report_path, .pol = &pol, .k_out = k_out, .k_resid = k_resid,
+			.k_report = k_report,
+		};
+
+		status = fit_laws(&la);
+		goto out;
+	}
 	printf("free        ");
 	for (int i = 0; i < nkeys; i++)
 		printf("%s%s", i ? ", " : "", keys[i]);
@@ -565,8 +504,8 @@ fit_main(int argc, char **argv)
 		memcpy(r.fitted.description, desc, sizeof desc);
 	}
 	fflush(stdout);
-	if (write_outputs(out, &r.fitted, resid_path, &r, &pol, k_out, k_resid, report_path, &rc,
-	                  k_report) != 0)
+	if (fit_write_outputs(out, &r.fitted, resid_path, &r, &pol, k_out, k_resid, report_path,
+	                      fit_report_json, &rc, k_report) != 0)
 		goto out;
 	if (sig == 0)
 		sig = cli_signal;   /* caught while writing: the files are whole */
@@ -588,5 +527,6 @@ out:
 	hb_fit_data_free(&d);
 	free(freebuf);
 	free(sets);
+	free(nonlaw_sets);
 	return status;
 }

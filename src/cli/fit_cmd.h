@@ -63,6 +63,7 @@ fit_report_print(const struct hb_fit_result *r, const struct hb_fit_data *d,
 /* hb_atomic's filler for --report: the same as JSON; ctx is a struct fit_report_ctx. */
 struct fit_report_ctx {
 	const char *preset, *data;
+	const char *law;            /* --laws: the law's name, else NULL */
 	const struct hb_fit_data *d;
 	const struct hb_fit_result *r;
 	const struct hb_fit_stats *st;
@@ -73,5 +74,50 @@ struct fit_report_ctx {
 
 void
 fit_report_json(FILE *f, const void *ctx);
+
+/* fit_output.c: the fitted preset, the residuals and the report (fill(f, rc)) as one atomic set. */
+struct hb_outputs;
+struct hb_atomic_target;
+
+/* "wrote PATH" with how (outputs.h): every overwrite is named. */
+void
+fit_print_wrote(const char *path, const struct hb_atomic_target *t);
+
+int
+fit_write_outputs(const char *out, const struct hb_scene *sc, const char *resid_path,
+                  const struct hb_fit_result *r, const struct hb_outputs *pol, int k_out,
+                  int k_resid, const char *report_path, void (*fill)(FILE *, const void *),
+                  const void *rc, int k_report);
+
+/* One report as a JSON object (no newline after it): fit_report_json's body. */
+void
+fit_report_json_object(FILE *f, const struct fit_report_ctx *c);
+
+/* --laws (fit_laws.c): every law fitted to the same data, ranked by AIC. */
+struct fit_laws_args {
+	const char *laws, *preset, *data;
+	const char *const *sets;    /* every --set, LAW:KEY=VALUE ones too */
+	int nsets;
+	const char *const *keys;    /* every --free key, LAW:KEY ones too */
+	int nkeys;
+	const struct hb_fit_data *d;
+	const struct hb_fit_options *fo; /* jobs, max_iter */
+	double max_rse;
+	int quiet;
+	const char *out, *resid_path, *report_path;
+	const struct hb_outputs *pol;
+	int k_out, k_resid, k_report;
+};
+
+/* Returns the exit status: the best law's verdict, 2 for bad input. */
+int
+fit_laws(const struct fit_laws_args *a);
+
+/*
+ * 1 when s is "LAW:REST" (a law's name, then a colon before any '.' or
+ * '='), with *rest = REST when rest is not NULL; else 0.
+ */
+int
+fit_laws_prefix(const char *s, const char **rest);
 
 #endif

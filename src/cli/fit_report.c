@@ -159,7 +159,13 @@ jstr(FILE *f, const char *s)
 void
 fit_report_json(FILE *f, const void *ctx)
 {
-	const struct fit_report_ctx *c = ctx;
+	fit_report_json_object(f, ctx);
+	fputc('\n', f);
+}
+
+void
+fit_report_json_object(FILE *f, const struct fit_report_ctx *c)
+{
 	const struct hb_fit_result *r = c->r;
 	const struct hb_fit_stats *st = c->st;
 	int p = r->np;
@@ -168,6 +174,10 @@ fit_report_json(FILE *f, const void *ctx)
 	jstr(f, HYBOUNCE_VERSION);
 	fprintf(f, ",\n  \"preset\": ");
 	jstr(f, c->preset);
+	if (c->law != NULL) {
+		fprintf(f, ",\n  \"law\": ");
+		jstr(f, c->law);
+	}
 	fprintf(f, ",\n  \"data\": ");
 	jstr(f, c->data);
 	fprintf(f, ",\n  \"kind\": \"%s\",\n", c->d->kind == HB_FIT_SEQUENCE ? "sequence" : "drops");
@@ -256,5 +266,5 @@ fit_report_json(FILE *f, const void *ctx)
 		jnum(f, pt->resid);
 		fprintf(f, "}%s\n", k + 1 < r->npoints ? "," : "");
 	}
-	fprintf(f, "  ]\n}\n");
+	fprintf(f, "  ]\n}");
 }
