@@ -139,11 +139,19 @@ keys_of(const struct fit_laws_args *a, struct law_fit *lf, char *kbuf, size_t kn
 		     k = strtok_r(NULL, ",", &save))
 			lf->keys[lf->nkeys++] = k;
 	}
-	if (lf->nkeys > 0)
+	if (lf->nkeys > 0) {
+		char msg[1024];
+		double v;
+
+		/* every key is one of this law's scene: refused now, not after the others' fits */
+		for (int i = 0; i < lf->nkeys; i++)
+			if (hb_fit_key_get(&lf->sc, lf->keys[i], &v, msg, sizeof msg) != HB_OK)
+				return bad("--laws %s: --free %s", lf->name, msg);
 		return 0;
+	}
 	defaults_str(dflt, sizeof dflt);
-	return bad("--laws %s: no free keys: give them as --free %s:KEY[,%s:KEY...]; the laws "
-	           "with a default set: %s", lf->name, lf->name, lf->name, dflt);
+	return bad("--laws %s: no free keys; accepted: --free %s:KEY[,%s:KEY...], or a law "
+	           "with a default set (%s)", lf->name, lf->name, lf->name, dflt);
 }
 
 /* Opens the preset with the law (and its --set); 0, or 2 for bad input. */

@@ -93,7 +93,7 @@ refused() { # NAME EXPECTED-MESSAGE ARGS...
 	fi
 }
 refused "a law given twice" "--laws shccl,shccl: shccl given twice; accepted: each law once" --laws shccl,shccl
-refused "a law without default keys and no --free" "--laws hertz: no free keys: give them as --free hertz:KEY" --laws shccl,hertz
+refused "a law without default keys and no --free" "--laws hertz: no free keys; accepted: --free hertz:KEY" --laws shccl,hertz
 refused "an unknown law" "--laws nosuch: " --laws shccl,nosuch
 refused "--set for a law not in --laws" "--set bwmcl:law.c=1: the law before ':' is not one of --laws" --laws shccl --set bwmcl:law.c=1
 refused "--free for a law not in --laws" "--free bwmcl:law.c: the law before ':' is not one of --laws" --laws shccl --free bwmcl:law.c
