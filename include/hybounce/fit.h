@@ -257,6 +257,55 @@ void
 hb_fit_result_free(struct hb_fit_result *r);
 
 /*
+ * What a reviewer asks of a fit, from its result (hb_fit_stats):
+ *  - dof = N - P; chi2_red = cost / dof (NAN when dof < 1).
+ *  - With stated noise (the data carry sd for every point: !sd_scaled),
+ *    cost is a chi-square with dof degrees of freedom if the model is right
+ *    and the sd are the noise: p_below = P(chi2 <= cost), p_above =
+ *    P(chi2 >= cost); the noise is HB_FIT_NOISE_CONSISTENT unless a tail is
+ *    below level / 2 (a two-sided test at `level`, e.g. 0.05).
+ *  - AIC and BIC of least squares: with stated noise (known variance)
+ *    aic = cost + 2P, bic = cost + P ln N (-2 ln L up to a constant of the
+ *    data); without (unknown variance, estimated as cost / N)
+ *    aic = N ln(cost / N) + 2P, bic = N ln(cost / N) + P ln N.  Either way
+ *    the values compare models fitted to the same data, not across data.
+ *  - t95: Student's t quantile 0.975 with dof degrees; the 95% interval of
+ *    parameter i is value +- t95 se (NAN when dof < 1 or se is NAN).
+ *  - at_bound[i]: -1 (+1) when the estimate reached the lower (upper)
+ *    bound of its key's range: within 1e-6 of the start's distance to it.
+ */
+enum hb_fit_noise {
+	HB_FIT_NOISE_UNSTATED = 0,  /* the data carry no sd (or dof < 1) */
+	HB_FIT_NOISE_CONSISTENT,    /* the residuals are consistent with the sd */
+	HB_FIT_NOISE_ABOVE,         /* larger: the model or the sd is wrong */
+	HB_FIT_NOISE_BELOW,         /* smaller: the sd overstate the noise */
+};
+
+struct hb_fit_stats {
+	size_t n;                 /* points */
+	int p;                    /* free parameters */
+	long dof;                 /* n - p */
+	double cost, chi2_red;
+	int noise_stated;         /* 1: weighted by the data's sd */
+	double level;             /* of the chi-square test */
+	double p_below, p_above;  /* the chi-square's tails at cost (NAN unstated) */
+	int noise;                /* enum hb_fit_noise */
+	double aic, bic;
+	double t95;
+	double lo95[HB_FIT_MAX_FREE], hi95[HB_FIT_MAX_FREE];
+	double rel_se[HB_FIT_MAX_FREE]; /* se / |value| */
+	int at_bound[HB_FIT_MAX_FREE];
+};
+
+/* Fills *s from r; returns 0, or HB_EINVAL for a level outside (0, 1) or np < 1. */
+int
+hb_fit_stats(const struct hb_fit_result *r, double level, struct hb_fit_stats *s);
+
+/* "consistent", "residuals larger than the stated noise", ... */
+const char *
+hb_fit_noise_str(int noise);
+
+/*
  * Value of a numeric scene key (the free keys of a fit).  Returns 0, or
  * HB_EINVAL naming the key and the keys accepted.
  */

@@ -30,9 +30,12 @@
 #include "signals.h"
 
 #define PROG "hybounce"
+/* The level of the chi-square test of stated noise (two-sided). */
+#define FIT_NOISE_LEVEL 0.05
 
 enum { OPT_ONSET_METHOD = 256, OPT_ONSET_THRESHOLD, OPT_ONSET_LEVEL, OPT_MIN_INTERVAL,
-       OPT_MAX_ITER, OPT_RESIDUALS, OPT_ONSETS_OUT, OPT_MAX_RSE };
+       OPT_MAX_ITER, OPT_RESIDUALS, OPT_ONSETS_OUT, OPT_MAX_RSE,
+       OPT_REPORT, OPT_LAWS };
 
 static const struct option long_options[] = {
 	{ "data",            required_argument, NULL, 'd' },
@@ -48,6 +51,8 @@ static const struct option long_options[] = {
 	{ "min-interval",    required_argument, NULL, OPT_MIN_INTERVAL },
 	{ "onsets-out",      required_argument, NULL, OPT_ONSETS_OUT },
 	{ "max-relative-se", required_argument, NULL, OPT_MAX_RSE },
+	{ "report",          required_argument, NULL, OPT_REPORT },
+	{ "laws",            required_argument, NULL, OPT_LAWS },
 	{ "quiet",           no_argument,       NULL, 'q' },
 	{ "help",            no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
@@ -61,7 +66,7 @@ usage(FILE *f)
 "                [--out FILE] [--residuals FILE] [--jobs N] [--max-iter N]\n"
 "                [--onset-method M] [--onset-threshold X] [--onset-level X]\n"
 "                [--min-interval T] [--onsets-out FILE] [--max-relative-se X]\n"
-"                [--quiet]\n"
+"                [--report FILE.json] [--laws LAW,LAW...] [--quiet]\n"
 "\n"
 "Fits the free keys of PRESET so that its runs reproduce the measured\n"
 "collisions (nonlinear least squares, GSL trust region), and writes the\n"
@@ -76,10 +81,19 @@ usage(FILE *f)
 "  -s, --set KEY=VALUE     change the preset first, e.g. a start (repeatable)\n"
 "  -o, --out FILE          the fitted preset (default: DATA's name + -fit.preset)\n"
 "      --residuals FILE    write the points as CSV: measured, simulated, sd ...\n"
+"      --report FILE.json  write the report as JSON: dof, cost, reduced chi-square,\n"
+"                          the noise test, AIC, BIC, estimates, 95%% intervals,\n"
+"                          correlations, the verdict and the residuals\n"
 "  -j, --jobs N            runs in parallel (default: every core)\n"
 "      --max-iter N        iteration cap (default 100)\n"
 "      --max-relative-se X a credible estimate's standard error is at most X\n"
 "                          of its value (default 0.1), else exit 1\n"
+"      --laws LAW,...      fit each law to the same data and rank them by AIC\n"
+"                          (e.g. shccl,bwshccl,bwmcl); free keys per law: --free\n"
+"                          LAW:KEY, else --free KEY, else the law's default (shccl:\n"
+"                          law.c; bwshccl, bwmcl: law.c,law.alpha); starts per law:\n"
+"                          --set LAW:KEY=VALUE; --out, --residuals: the best law;\n"
+"                          exit status: the best law's\n"
 "      --onset-method M    aubio onset method for a recording (default hfc)\n"
 "      --onset-threshold X aubio's peak-picking threshold (default 0.3)\n"
 "      --onset-level X     a click starts where it reaches X (0 < X <= 1) of its\n"
@@ -89,10 +103,12 @@ usage(FILE *f)
 "                          correct by hand and fit with --data)\n"
 "  -q, --quiet             no progress lines on stderr, no residual table\n"
 "\n"
-"Exit status: 0 converged to credible estimates, 1 stopped without converging\n"
-"(iteration cap, no progress, parameters not identifiable) or an estimate's\n"
-"relative standard error above --max-relative-se, 2 bad input (a recording\n"
-"that is no bouncing sequence too), 128+N stopped by signal\n"
+"Exit status: 0 converged to credible estimates, 1 not credible (stopped\n"
+"without converging: iteration cap, no progress, parameters not identifiable;\n"
+"an estimate's relative standard error above --max-relative-se; with sd\n"
+"columns, residuals inconsistent with them: a two-sided chi-square test at\n"
+"5%%): the reasons on stderr, the estimates still reported and written,\n"
+"2 bad input (a recording that is no bouncing sequence too), 128+N stopped by signal\n"
 "N (SIGINT, SIGTERM, SIGHUP: the best point so far is written).  See hybounce(1).\n");
 }
 
@@ -187,128 +203,12 @@ progress(void *ctx, int iter, double cost, long runs)
 	fprintf(stderr, PROG " fit: iteration %d: cost %.6g (%ld runs)\n", iter, cost, runs);
 }
 
-/* The residuals CSV: a row per data point. */
-static void
-fill_residuals(FILE *f, const void *ctx)
-{
-	const struct hb_fit_result *r = ctx;
-
-	fprintf(f, "point,row,observable,measured,simulated,sd,resid,start\n");
-	for (size_t k = 0; k < r->npoints; k++) {
-		const struct hb_fit_point *p = &r->point[k];
-
-		fprintf(f, "%zu,%zu,%s,%.17g,%.17g,%.17g,%.17g,%.17g\n", k, p->row,
-		    hb_fit_obs_name(p->obs), p->measured, p->simulated, p->sd, p->resid, p->start);
-	}
-}
-
-/*
- * The fitted scene as a preset (then the provenance line) and the residuals
- * as CSV, as one atomic set (atomic.h): should either fail, neither is
- * written nor changed.
- */
-static int
-write_outputs(const char *out, const struct hb_scene *sc, const char *resid_path,
-              const struct hb_fit_result *r, const struct hb_outputs *pol, int k_out,
-              int k_resid)
-{
-	struct hb_atomic_set set;
-	size_t len = hb_preset_format(sc, NULL, 0);
-	const char *prov = cli_provenance();
-	char *buf = malloc(len + 1), m[4400];
-	FILE *f;
-	int st;
-
-	if (buf == NULL)
-		return bad("--out %s: out of memory; nothing written", out);
-	hb_preset_format(sc, buf, len + 1);
-	hb_atomic_begin(&set);
-	if ((f = hb_atomic_add(&set, out, m, sizeof m)) == NULL)
-		goto fail;
-	fwrite(buf, 1, len, f);
-	if (prov[0] != '\0')
-		fprintf(f, "%s\n", prov);
-	if (resid_path != NULL) {
-		if ((f = hb_atomic_add(&set, resid_path, m, sizeof m)) == NULL)
-			goto fail;
-		fill_residuals(f, r);
-	}
-	free(buf);
-	buf = NULL;
-	if ((st = hb_atomic_commit(&set, m, sizeof m)) != HB_OK)
-		goto failed;
-	cli_print_wrote(out, &pol->out[k_out].target);
-	if (resid_path != NULL)
-		cli_print_wrote(resid_path, &pol->out[k_resid].target);
-	return 0;
-fail:
-	hb_atomic_abort(&set);
-failed:
-	free(buf);
-	{
-		/* "PATH: reason" from the writer: the option that named PATH first */
-		size_t rl = resid_path != NULL ? strlen(resid_path) : 0;
-		int is_resid = resid_path != NULL && strncmp(m, resid_path, rl) == 0 &&
-		               m[rl] == ':' && strcmp(resid_path, out) != 0;
-
-		return bad("%s %s; nothing written", is_resid ? "--residuals" : "--out", m);
-	}
-}
-
-static void
-report(const struct hb_fit_result *r, const struct hb_fit_data *d, int quiet)
-{
-	int p = r->np;
-
-	printf("stopped     %s after %d iteration%s, %ld runs\n", r->why, r->iter,
-	    r->iter == 1 ? "" : "s", r->runs);
-	printf("cost        %.6g at the start, %.6g at the estimates (sum of squared "
-	       "residuals / sd, %zu points)\n", r->cost0, r->cost, r->npoints);
-	printf("\nestimates   (SI units; standard errors %s)\n", r->sd_scaled
-	    ? "scaled by the residual variance cost/(N-P): the data carry no sd"
-	    : "from the data's standard deviations");
-	printf("  %-14s %14s %16s %12s %9s  %s\n", "key", "start", "estimate", "std error",
-	    "relative", "unit");
-	for (int i = 0; i < p; i++) {
-		struct hb_scene_keyinfo ki;
-
-		if (hb_scene_get(&r->fitted, r->key[i], &ki, NULL) != HB_OK)
-			ki.unit[0] = '\0';
-		printf("  %-14s %14.6g %16.9g %12.3g %9.2g  %s\n", r->key[i], r->start[i],
-		    r->value[i], r->se[i], r->se[i] / fabs(r->value[i]), ki.unit);
-	}
-	if (p > 1) {
-		printf("\ncorrelation\n  %-14s", "");
-		for (int j = 0; j < p; j++)
-			printf(" %10.10s", r->key[j]);
-		printf("\n");
-		for (int i = 0; i < p; i++) {
-			printf("  %-14s", r->key[i]);
-			for (int j = 0; j < p; j++)
-				printf(" %10.4f", r->corr[i * HB_FIT_MAX_FREE + j]);
-			printf("\n");
-		}
-	}
-	if (quiet)
-		return;
-	printf("\nresiduals   (%s)\n", d->kind == HB_FIT_SEQUENCE
-	    ? "t_e: time since the first impact" : "one run per drop");
-	printf("  %4s %4s %-6s %16s %16s %12s %10s\n", "pt", "row", "obs", "measured",
-	    "simulated", "sd", "resid/sd");
-	for (size_t k = 0; k < r->npoints; k++) {
-		const struct hb_fit_point *pt = &r->point[k];
-
-		printf("  %4zu %4zu %-6s %16.9g %16.9g %12.3g %10.3g\n", k, pt->row + 1,
-		    hb_fit_obs_name(pt->obs), pt->measured, pt->simulated, pt->sd, pt->resid);
-	}
-	fit_plot(stdout, r, d);
-}
-
 int
 fit_main(int argc, char **argv)
 {
 	const char *data = NULL, *out = NULL, *resid_path = NULL, *preset, *onsets_path = NULL;
-	const char **sets = NULL, *keys[HB_FIT_MAX_FREE];
+	const char *report_path = NULL, *laws = NULL;
+	const char **sets = NULL, **nonlaw_sets = NULL, *keys[HB_FIT_MAX_FREE];
 	char *freebuf = NULL, path[1024], outbuf[1024], msg[4096];
 	struct hb_onset_options oo = { 0 };
 	double max_rse = 0.1;
@@ -319,10 +219,18 @@ fit_main(int argc, char **argv)
 	struct hb_outputs pol;
 	struct hb_fit *fit = NULL;
 	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2, sig = 0, k_out, k_resid = -1, k_ons = -1;
+	int k_report = -1, nnonlaw = 0;
+	struct hb_fit_stats fst;
+	struct fit_verdict v;
+	struct fit_report_ctx rc;
 	size_t freelen = 0;
 
 	if ((sets = calloc((size_t)argc + 1, sizeof *sets)) == NULL)
 		return bad("out of memory");
+	if ((nonlaw_sets = calloc((size_t)argc + 1, sizeof *sets)) == NULL) {
+		free(sets);
+		return bad("out of memory");
+	}
 	optind = 1;
 	while ((c = getopt_long(argc, argv, "d:f:s:o:j:qh", long_options, NULL)) != -1) {
 		switch (c) {
@@ -367,6 +275,8 @@ fit_main(int argc, char **argv)
 				goto out;
 			break;
 		case OPT_ONSETS_OUT: onsets_path = optarg; break;
+		case OPT_REPORT: report_path = optarg; break;
+		case OPT_LAWS: laws = optarg; break;
 		case OPT_MAX_RSE:
 			if (parse_pos("--max-relative-se", optarg, &max_rse))
 				goto out;
@@ -397,11 +307,12 @@ fit_main(int argc, char **argv)
 		                   "or a .wav recording");
 		goto out;
 	}
-	if (freebuf == NULL) {
+	if (freebuf == NULL && laws == NULL) {
 		status = bad("--free KEY[,KEY...] is required, e.g. --free law.c,law.alpha");
 		goto out;
 	}
-	for (char *save = NULL, *k = strtok_r(freebuf, ", \t", &save); k != NULL;
+	for (char *save = NULL, *k = freebuf != NULL ? strtok_r(freebuf, ", \t", &save) : NULL;
+	     k != NULL;
 	     k = strtok_r(NULL, ", \t", &save)) {
 		if (nkeys == HB_FIT_MAX_FREE) {
 			status = bad("--free: more than %d keys; accepted: at most %d",
@@ -410,13 +321,17 @@ fit_main(int argc, char **argv)
 		}
 		keys[nkeys++] = k;
 	}
-	if (nkeys == 0) {
+	if (nkeys == 0 && laws == NULL) {
 		status = bad("--free: no key given, e.g. --free law.c,law.alpha");
 		goto out;
 	}
 
 	msg[0] = '\0';
-	if (hb_preset_open_named(preset, sets, nsets, &sc, path, sizeof path, msg,
+	/* with --laws, a --set LAW:KEY=VALUE is for that law's fit only (fit_laws.c) */
+	for (int i = 0; i < nsets; i++)
+		if (laws == NULL || fit_laws_prefix(sets[i], NULL) == 0)
+			nonlaw_sets[nnonlaw++] = sets[i];
+	if (hb_preset_open_named(preset, nonlaw_sets, nnonlaw, &sc, path, sizeof path, msg,
 	                         sizeof msg) != HB_OK) {
 		status = bad("%s", msg[0] ? msg : preset);
 		goto out;
@@ -453,6 +368,13 @@ fit_main(int argc, char **argv)
 			goto out;
 		}
 		k_ons = pol.nout - 1;
+	}
+	if (report_path != NULL) {
+		if (hb_outputs_add(&pol, report_path, "--report", msg, sizeof msg) != HB_OK) {
+			status = bad("%s%s", strncmp(msg, "--report ", 9) == 0 ? "" : "--report ", msg);
+			goto out;
+		}
+		k_report = pol.nout - 1;
 	}
 	printf("hybounce %s fit\n", HYBOUNCE_VERSION);
 	printf("preset      %s (%s)\n", preset, path);
@@ -499,6 +421,18 @@ fit_main(int argc, char **argv)
 	    d.n, d.n == 1 ? "" : "s", hb_fit_npoints(&d),
 	    d.sd[d.kind == HB_FIT_SEQUENCE ? HB_FIT_OBS_TE : HB_FIT_OBS_E] != NULL
 	    ? "weighted by sd" : "no standard deviations");
+	if (laws != NULL) {
+		struct fit_laws_args la = {
+			.laws = laws, .preset = preset, .data = data, .sets = sets, .nsets = nsets,
+			.keys = keys, .nkeys = nkeys, .d = &d, .fo = &fo, .max_rse = max_rse,
+			.quiet = quiet, .out = out, .resid_path = resid_path,
+			.report_path = report_path, .pol = &pol, .k_out = k_out, .k_resid = k_resid,
+			.k_report = k_report,
+		};
+
+		status = fit_laws(&la);
+		goto out;
+	}
 	printf("free        ");
 	for (int i = 0; i < nkeys; i++)
 		printf("%s%s", i ? ", " : "", keys[i]);
@@ -537,7 +471,16 @@ fit_main(int argc, char **argv)
 	if (sig != 0)
 		snprintf(r.why, sizeof r.why, "interrupted by %s (the best point so far)",
 		         cli_signal_name(sig));
-	report(&r, &d, quiet);
+	hb_fit_stats(&r, FIT_NOISE_LEVEL, &fst);
+	fit_report_print(&r, &d, &fst, quiet);
+	fit_verdict(&r, &fst, max_rse, &v);
+	if (sig != 0) {
+		v.status = cli_signal_status(sig);
+		snprintf(v.reason[0], sizeof v.reason[0], "%.500s", r.why);
+		v.n = 1;
+	}
+	rc = (struct fit_report_ctx){ .preset = preset, .data = data, .d = &d, .r = &r, .st = &fst,
+	                              .v = &v, .status = v.status, .sig = sig };
 
 	/* The fitted scene: named after the data, reproducing the best fit. */
 	{
@@ -562,7 +505,8 @@ fit_main(int argc, char **argv)
 		memcpy(r.fitted.description, desc, sizeof desc);
 	}
 	fflush(stdout);
-	if (write_outputs(out, &r.fitted, resid_path, &r, &pol, k_out, k_resid) != 0)
+	if (fit_write_outputs(out, &r.fitted, resid_path, &r, &pol, k_out, k_resid, report_path,
+	                      fit_report_json, &rc, k_report) != 0)
 		goto out;
 	if (sig == 0)
 		sig = cli_signal;   /* caught while writing: the files are whole */
@@ -571,19 +515,11 @@ fit_main(int argc, char **argv)
 		        "reported and written\n", cli_signal_name(sig));
 		status = cli_signal_status(sig);
 	} else {
-		status = r.reason <= HB_FIT_CONVERGED_COST ? 0 : 1;
-		/* converged is not credible: every estimate within max_rse */
-		for (int i = 0; status == 0 && i < r.np; i++) {
-			double rel = r.se[i] / fabs(r.value[i]);
-
-			if (!(rel <= max_rse)) {
-				fprintf(stderr, PROG " fit: not credible: the standard error of %s is "
-				        "%.3g of its value, above %g (--max-relative-se): the data do not "
-				        "determine it; the estimates are reported and written\n",
-				        r.key[i], rel, max_rse);
-				status = 1;
-			}
-		}
+		status = v.status;
+		for (int i = 0; i < v.n; i++)
+			fprintf(stderr, PROG " fit: not credible: %s\n", v.reason[i]);
+		if (v.n > 0)
+			fprintf(stderr, PROG " fit: the estimates are reported and written\n");
 	}
 out:
 	cli_signals_restore();
@@ -592,5 +528,6 @@ out:
 	hb_fit_data_free(&d);
 	free(freebuf);
 	free(sets);
+	free(nonlaw_sets);
 	return status;
 }
