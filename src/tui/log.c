@@ -160,7 +160,7 @@ help_lines(const struct app *a, struct wctx *c)
 	}
 	static const char *legend[] = {
 		"",
-		"Status line: the preset, law, t, j, q_c, the number of collisions, the playback speed (x0.02: simulated seconds per second), slow (in slow motion), playing/paused, and computing/finished/failed for the run.",
+		"Status line: the preset, law, t, j, q_c, the number of collisions, the playback speed (x0.02: simulated seconds per second), slow (in slow motion), playing/paused, and computing/finished/failed for the run; \"fails N checks\" when the ended run breaks the physics checks that --batch runs (m names each check and collision; the table marks an impossible value with \"!\").",
 		"Readout: the sample at the cursor (#index), its t, j, q_c, x, v, x_c, F_c and z_c, with units.",
 		"Contact strip under the plots: # a contact in progress, [] a short contact, [===] a longer contact, ^ the cursor.",
 		"Legend: each pinned run is labelled by what differs from the current one, in its own colour and marker.",

@@ -41,13 +41,26 @@ tui_puts(int y, int x, int maxw, const char *s, int attr)
 }
 
 static const char *
-state_name(const struct app *a)
+state_name(const struct app *a, char *buf, size_t n)
 {
+	const char *s;
+
 	switch (hb_sim_end(a->sim)) {
 	case HB_SIM_RUNNING: return "computing";
-	case HB_SIM_END_FAIL: return "failed";
-	default: return "finished";
+	case HB_SIM_END_FAIL: s = "failed"; break;
+	default: s = "finished"; break;
 	}
+	if (a->phys.valid && a->phys.failed > 0) {
+		/* the physics checks (physics.c): what batch warns of */
+		if (hb_sim_end(a->sim) == HB_SIM_END_FAIL)
+			snprintf(buf, n, "%s, %d check%s", s, a->phys.failed,
+			         a->phys.failed == 1 ? " fails" : "s fail");
+		else
+			snprintf(buf, n, "fails %d check%s", a->phys.failed,
+			         a->phys.failed == 1 ? "" : "s");
+		return buf;
+	}
+	return s;
 }
 
 /*
@@ -138,12 +151,12 @@ pane_status_draw(const struct app *a)
 		snprintf(tb, sizeof tb, "-");
 	hb_units_format(a->speed, hb_unit_none, 2, sp, sizeof sp);
 	{
-		char tail[256];
+		char tail[256], st[48];
 		int room;
 		snprintf(tail, sizeof tail, " %s t=%s j=%ld q_c=%d coll %zu x%s%s %s %s",
 		         hb_sim_scene(a->sim)->law->name, tb, s ? s->j : 0L, s ? s->q : 0,
 		         hb_sim_ncollisions(a->sim), sp, a->in_slow ? " slow" : "",
-		         a->playing ? "playing" : "paused", state_name(a));
+		         a->playing ? "playing" : "paused", state_name(a, st, sizeof st));
 		room = r->w - (int)strlen(tail) - 1;
 		if (room < 8)
 			room = 0; /* a narrow terminal: the run's state before the preset's name */

@@ -36,6 +36,15 @@ struct pin {
 	int branched;               /* the run contains a "branch here" */
 };
 
+/* physics.c: the physics checks of the current run, once it has ended. */
+struct app_physics {
+	int valid;                  /* checked, for the run as it stands */
+	int failed;                 /* checks failed (0..3) */
+	size_t nbad;                /* collisions that break what the law allows */
+	unsigned char *flags;       /* per collision: HB_CHECK_BAD_W | HB_CHECK_BAD_E */
+	size_t nflags;
+};
+
 struct app {
 	const struct app_options *opt;
 	struct hb_sim *sim;
@@ -90,6 +99,7 @@ struct app {
 	unsigned long frames;
 	struct fitov *fitov;        /* measured data and the fit (overlay_fit.c), or NULL */
 	struct sweep_view *sv;      /* the sweep view (sweep_view.c), NULL until S */
+	struct app_physics phys;    /* physics.c */
 };
 
 /* An action of the key table (actions.c). */
@@ -150,6 +160,11 @@ const char *log_get(const struct app *a, int i);  /* i-th message, oldest first 
 void pane_log_draw(const struct app *a);
 /* An overlay box with a border on all four sides, cleared inside; returns the inner rect. */
 struct rect box_draw(int y, int x, int h, int w, const char *title);
+
+/* physics.c: checks the ended run; failures to the message line and the log. */
+void physics_run(struct app *a);
+void physics_forget(struct app *a);
+unsigned physics_flag(const struct app *a, long i);   /* HB_CHECK_BAD_* of collision i */
 
 /* mouse.c */
 void mouse_event(struct app *a);
