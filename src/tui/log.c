@@ -165,6 +165,7 @@ help_lines(const struct app *a, struct wctx *c)
 		"Contact strip under the plots: # a contact in progress, [] a short contact, [===] a longer contact, ^ the cursor.",
 		"Legend: each pinned run is labelled by what differs from the current one, in its own colour and marker.",
 		"Edits restart the run from t = 0 and keep the cursor's t; b makes the next edit continue from the cursor (branch here).",
+		"In a prompt: the value shown is replaced by the first key typed; Left/Right/Home/End (C-b C-f C-a C-e) keep it to edit; BSpace, C-d, C-k delete; C-u clears; Enter accepts, Esc cancels.",
 	};
 	for (size_t i = 0; i < sizeof legend / sizeof legend[0]; i++)
 		total += wrap(legend[i][0] ? legend[i] : " ", w, 2, c ? put_line : NULL, c);

@@ -170,21 +170,46 @@ pane_status_draw(const struct app *a)
 	/* message or prompt */
 	r = &a->L.msg;
 	if (a->overlay == OV_PROMPT) {
-		/* too long for the line: the end, where the typing is, stays in view */
-		int cols = 0, skip;
+		/*
+		 * Too long for the line: the caret stays in view.  A text as
+		 * given (the first printable key replaces it) is shown reversed;
+		 * else the character under the caret is.
+		 */
+		int cols = 0, pre = 0, caret, vcols = 0, skip, x0 = 0;
+		size_t l = strlen(a->prompt_buf), pos = a->prompt_pos > l ? l : a->prompt_pos;
 		const char *p;
 		snprintf(line, sizeof line, "%s: %s_", a->prompt_title, a->prompt_buf);
 		for (p = line; *p; p++)
 			cols += ((unsigned char)*p & 0xC0) != 0x80;
-		skip = cols - (r->w - 1);
+		for (p = a->prompt_title; *p; p++)
+			pre += ((unsigned char)*p & 0xC0) != 0x80;
+		pre += 2;
+		for (size_t i = 0; i < l; i++)
+			if (((unsigned char)a->prompt_buf[i] & 0xC0) != 0x80) {
+				vcols++;
+			}
+		caret = pre;
+		for (size_t i = 0; i < pos; i++)
+			caret += ((unsigned char)a->prompt_buf[i] & 0xC0) != 0x80;
+		skip = (pos == l ? cols : caret + 1) - (r->w - 1);
 		p = line;
 		if (skip > 0) {
-			for (skip += 3; *p && skip > 0; p++)
-				skip -= ((unsigned char)p[1] & 0xC0) != 0x80;
+			int drop = skip + 3;
+			for (; *p && drop > 0; p++)
+				drop -= ((unsigned char)p[1] & 0xC0) != 0x80;
 			tui_puts(r->y, 0, 3, "...", A_BOLD);
 			tui_puts(r->y, 3, r->w - 3, p, A_BOLD);
+			x0 = 3 - (skip + 3);
 		} else {
 			tui_puts(r->y, 0, r->w, line, A_BOLD);
+		}
+		if (a->prompt_fresh && vcols > 0) {
+			int from = pre + x0 < 3 && skip > 0 ? 3 : pre + x0;
+			int to = pre + vcols + x0;
+			if (to > from && from < r->w)
+				mvchgat(r->y, from, (to < r->w ? to : r->w) - from, A_BOLD | A_REVERSE, 0, NULL);
+		} else if (caret + x0 >= 0 && caret + x0 < r->w) {
+			mvchgat(r->y, caret + x0, 1, A_BOLD | A_REVERSE, 0, NULL);
 		}
 	} else {
 		int mattr = a->msg_error ? (a->colour ? COLOR_PAIR(PAIR_ERROR) | A_BOLD : A_BOLD) : 0;
