@@ -338,6 +338,54 @@ Test(check, a_run_that_creates_energy_is_caught)
 	cr_assert_gt(r.e_at, 1.0);
 }
 
+/*
+ * The per-collision verdicts (what the explorer marks in its table) agree
+ * with hb_check_physics: the worst e and the worst W are flagged, and a run
+ * that passes flags nothing.  The summary line is the one batch prints.
+ */
+Test(check, the_collisions_that_break_the_law_are_flagged)
+{
+	struct hb_scene sc;
+	struct hb_sim *s;
+	struct hb_check_physics r;
+	unsigned char flags[256];
+	char msg[2048], line[256];
+	size_t nbad, n;
+
+	scene_preset("hard-bouc-wen-beta", &sc);
+	sc.run.stepper = HB_STEPPER_BSIMP;
+	sc.run.rtol = sc.run.atol = 1e-3;
+	s = hb_sim_new(&sc, msg, sizeof msg);
+	cr_assert_not_null(s, "%s", msg);
+	hb_sim_run(s);
+	cr_assert_eq(hb_check_physics(hb_sim_scene(s), hb_sim_arc(s), &r, msg, sizeof msg), HB_EINVAL);
+	n = hb_sim_ncollisions(s);
+	cr_assert_lt(n, sizeof flags);
+	memset(flags, 0xff, sizeof flags);
+	nbad = hb_check_physics_flags(hb_sim_scene(s), hb_sim_arc(s), &r, flags, n);
+	cr_assert_geq(nbad, 2);
+	cr_assert(flags[r.emax_at] & HB_CHECK_BAD_E, "collision %ld", r.emax_at);
+	cr_assert(flags[r.wmin_at] & HB_CHECK_BAD_W, "collision %ld", r.wmin_at);
+	for (size_t i = 0; i < n; i++) {
+		const struct hb_collision *c = hb_sim_collision(s, i);
+		cr_assert_eq(flags[i] & ~(HB_CHECK_BAD_E | HB_CHECK_BAD_W), 0);
+		/* an e below 1 is within bwshccl's bound (no applied force here) */
+		if (c->e < 1.0)
+			cr_assert_eq(flags[i] & HB_CHECK_BAD_E, 0, "collision %zu e %g", i, c->e);
+	}
+	hb_check_physics_summary(&r, line, sizeof line);
+	cr_assert(strstr(line, "the computed run fails 3 physics checks; a tighter run.rtol") == line,
+	          "%s", line);
+	hb_sim_free(s);
+
+	s = real_run("hard-bouc-wen-beta");
+	cr_assert_eq(hb_check_physics(hb_sim_scene(s), hb_sim_arc(s), &r, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(hb_check_physics_flags(hb_sim_scene(s), hb_sim_arc(s), &r, flags, sizeof flags), 0);
+	for (size_t i = 0; i < sizeof flags; i++)
+		cr_assert_eq(flags[i], 0);
+	hb_sim_free(s);
+}
+
 /* Issue 10 item 7: on the elastic Hertz law, bsimp's error in e was ~540 x the tolerance. */
 Test(check, an_elastic_contact_off_by_more_than_the_tolerance_is_caught)
 {

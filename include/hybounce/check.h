@@ -81,11 +81,34 @@ struct hb_check_physics {
 
 /*
  * Fills *r; returns 0 when every check passes, or HB_EINVAL with one line
- * per failure ("; "-separated) in msg.
+ * per failure ("; "-separated; no line holds "; " itself) in msg.
  */
 int
 hb_check_physics(const struct hb_scene *sc, const struct hb_arc *a, struct hb_check_physics *r,
               char *msg, size_t n);
+
+/*
+ * The collisions that break what the law allows, by the same measure and
+ * margin as hb_check_physics (r is its result for this scene and arc):
+ * flags[i] gets HB_CHECK_BAD_W when completed collision i returns energy
+ * (or, for an elastic law, absorbs some), HB_CHECK_BAD_E when its e is
+ * above the bound (elastic: off the exact value), 0 otherwise, for
+ * i < nflags.  Returns how many collisions in the arc fail (those thinned
+ * out of a long run are not there and not counted).
+ */
+#define HB_CHECK_BAD_W 1u
+#define HB_CHECK_BAD_E 2u
+size_t
+hb_check_physics_flags(const struct hb_scene *sc, const struct hb_arc *arc,
+                       const struct hb_check_physics *r, unsigned char *flags, size_t nflags);
+
+/*
+ * One line for a person: "the computed run fails N physics checks; a
+ * tighter run.rtol and run.atol, or another run.stepper, should fix it"
+ * (or that it passes).  The batch report and the explorer both say it.
+ */
+void
+hb_check_physics_summary(const struct hb_check_physics *r, char *buf, size_t n);
 
 HB_END_DECLS
 

@@ -758,12 +758,13 @@ batch_run(const struct batch_options *o)
 		} else {
 			fprintf(out, "  %-11s physics: %s: %s\n", o->check ? "check" : "warning",
 			        o->check ? "FAILED" : "the run breaks what it must obey", msg);
-			if (out != stderr)
-				fprintf(stderr, PROG ": %s: the computed run fails %d physics "
-				        "check%s (see 'physics' in the report); a tighter run.rtol and "
-				        "run.atol, or another run.stepper, should fix it\n",
-				        o->check ? "check failed" : "warning", ph.failed,
-				        ph.failed == 1 ? "" : "s");
+			if (out != stderr) {
+				char line[256];
+
+				hb_check_physics_summary(&ph, line, sizeof line);
+				fprintf(stderr, PROG ": %s: %s (see 'physics' in the report)\n",
+				        o->check ? "check failed" : "warning", line);
+			}
 			if (o->check && status == 0)
 				status = 1;
 		}

@@ -263,6 +263,60 @@ append_msg(char *msg, size_t n, const char *fmt_, ...)
 	}
 }
 
+/*
+ * One completed contact, interval k of the arc: its collision index, W
+ * relative to its impact energy (elastic laws: -|W|), e and its bound.
+ * Needs r's tol, escale, elastic.  Returns 0 when interval k is not a
+ * completed contact.
+ */
+struct contact {
+	long ci;
+	double W, w, vi, e, ebound, dev;
+	int have_w, have_e;
+};
+
+static int
+contact_eval(const struct hb_scene *sc, const struct hb_arc *arc, size_t k,
+             const struct hb_check_physics *r, struct contact *c)
+{
+	const struct hb_arc_interval *iv = hb_arc_interval_at(arc, k);
+	const struct hb_arc_sample *a0, *a1;
+	double m = sc->d.m, Ei, Eec, eref;
+
+	if (iv->q != 1)
+		return 0;
+	a0 = hb_arc_at(arc, iv->first);
+	a1 = hb_arc_at(arc, iv->last);
+	if (a1->kind != HB_ARC_PRE_JUMP)
+		return 0;
+	memset(c, 0, sizeof *c);
+	c->ci = (iv->j - 1) / 2;
+	c->W = a1->W;
+	c->vi = a0->v;
+	Ei = 0.5 * m * a0->v * a0->v;
+	Eec = a1->Ee - a0->Ee;
+	eref = fmax(Ei, fabs(Eec));
+	if (!(eref > 0.0))
+		eref = r->escale;
+	if (eref > 0.0) {
+		/* dissipative: W / E_i, smallest; elastic: -|W| / E_i */
+		c->w = r->elastic ? -fabs(a1->W) / eref : a1->W / eref;
+		c->have_w = 1;
+	}
+	/*
+	 * An impact energy below what the run resolves (v_i = 0, or a
+	 * round-off v_i like -1e-285 m/s): e = -v(t_s)/v_i says nothing.
+	 */
+	if (a0->v < 0.0 && Ei > r->tol * r->escale) {
+		c->e = -a1->v / a0->v;
+		c->ebound = sqrt(1.0 + fmax(Eec, 0.0) / Ei);
+		/* elastic: e = ebound exactly, so an e below it is an error too */
+		c->dev = r->elastic ? fabs(c->e - c->ebound) : c->e - c->ebound;
+		c->have_e = 1;
+	}
+	return 1;
+}
+
 int
 hb_check_physics(const struct hb_scene *sc, const struct hb_arc *arc, struct hb_check_physics *r,
               char *msg, size_t n)
@@ -329,51 +383,28 @@ hb_check_physics(const struct hb_scene *sc, const struct hb_arc *arc, struct hb_
 	 * thinned out of a long run are simply not there.
 	 */
 	for (k = 0; k < nint; k++) {
-		const struct hb_arc_interval *iv = hb_arc_interval_at(arc, k);
-		const struct hb_arc_sample *a0, *a1;
-		double Ei, Eec, eref, w, e, ebound, dev;
+		struct contact c;
 
-		if (iv->q != 1)
+		if (!contact_eval(sc, arc, k, r, &c))
 			continue;
-		a0 = hb_arc_at(arc, iv->first);
-		a1 = hb_arc_at(arc, iv->last);
-		if (a1->kind != HB_ARC_PRE_JUMP)
-			continue;
-		ci = (iv->j - 1) / 2;
-		Ei = 0.5 * m * a0->v * a0->v;
-		Eec = a1->Ee - a0->Ee;
-		eref = fmax(Ei, fabs(Eec));
-		if (!(eref > 0.0))
-			eref = escale;
+		ci = c.ci;
 		r->ncontacts++;
-		if (r->passive && eref > 0.0) {
-			/* dissipative: W / E_i, smallest; elastic: -|W| / E_i */
-			w = r->elastic ? -fabs(a1->W) / eref : a1->W / eref;
-			if (!(w >= r->wmin)) {
-				r->wmin = isnan(w) ? -INFINITY : w;
-				r->wmin_at = ci;
-				r->W_at = a1->W;
-			}
+		if (r->passive && c.have_w && !(c.w >= r->wmin)) {
+			r->wmin = isnan(c.w) ? -INFINITY : c.w;
+			r->wmin_at = ci;
+			r->W_at = c.W;
 		}
-		/*
-		 * An impact energy below what the run resolves (v_i = 0, or a
-		 * round-off v_i like -1e-285 m/s): e = -v(t_s)/v_i says nothing.
-		 */
-		if (a0->v < 0.0 && Ei > r->tol * escale) {
-			e = -a1->v / a0->v;
-			ebound = sqrt(1.0 + fmax(Eec, 0.0) / Ei);
-			/* elastic: e = ebound exactly, so an e below it is an error too */
-			dev = r->elastic ? fabs(e - ebound) : e - ebound;
-			if (r->passive && !(dev <= r->emax)) {
-				r->emax = isnan(dev) ? INFINITY : dev;
+		if (c.have_e) {
+			if (r->passive && !(c.dev <= r->emax)) {
+				r->emax = isnan(c.dev) ? INFINITY : c.dev;
 				r->emax_at = ci;
-				r->e_at = e;
-				r->e_bound = ebound;
+				r->e_at = c.e;
+				r->e_bound = c.ebound;
 			}
 		} else {
 			if (r->nzero++ == 0) {
 				r->zero_at = ci;
-				r->vi_zero = a0->v;
+				r->vi_zero = c.vi;
 			}
 		}
 	}
@@ -400,9 +431,52 @@ hb_check_physics(const struct hb_scene *sc, const struct hb_arc *arc, struct hb_
 			           sc->law->name, r->e_bound, r->emax / r->tol, r->tol, K);
 		else
 			append_msg(msg, n, "restitution: collision %ld has e = %.9g, above the %.9g "
-			           "that %s allows (it cannot give energy back; the applied force's "
-			           "work over the contact included), beyond %g x the tolerance %.3g",
+			           "that %s allows (it cannot give energy back, counting the applied "
+			           "force's work over the contact), beyond %g x the tolerance %.3g",
 			           r->emax_at, r->e_at, r->e_bound, sc->law->name, K, r->tol);
 	}
 	return r->failed ? HB_EINVAL : 0;
+}
+
+size_t
+hb_check_physics_flags(const struct hb_scene *sc, const struct hb_arc *arc,
+                       const struct hb_check_physics *r, unsigned char *flags, size_t nflags)
+{
+	const double K = HB_CHECK_PHYS_FACTOR;
+	size_t k, nint = hb_arc_nintervals(arc), nbad = 0;
+
+	if (flags != NULL && nflags > 0)
+		memset(flags, 0, nflags);
+	if (!r->passive || !(sc->d.m > 0.0) || !isfinite(sc->d.m))
+		return 0;
+	for (k = 0; k < nint; k++) {
+		struct contact c;
+		unsigned char f = 0;
+
+		if (!contact_eval(sc, arc, k, r, &c) || c.ci < 0)
+			continue;
+		if (c.have_w && !(c.w >= -K * r->tol))
+			f |= HB_CHECK_BAD_W;
+		if (c.have_e && !(c.dev <= K * r->tol))
+			f |= HB_CHECK_BAD_E;
+		if (f == 0)
+			continue;
+		nbad++;
+		if (flags != NULL && (size_t)c.ci < nflags)
+			flags[c.ci] = f;
+	}
+	return nbad;
+}
+
+void
+hb_check_physics_summary(const struct hb_check_physics *r, char *buf, size_t n)
+{
+	if (buf == NULL || n == 0)
+		return;
+	if (r->failed == 0)
+		snprintf(buf, n, "the computed run passes the physics checks");
+	else
+		snprintf(buf, n, "the computed run fails %d physics check%s; a tighter run.rtol "
+		         "and run.atol, or another run.stepper, should fix it", r->failed,
+		         r->failed == 1 ? "" : "s");
 }

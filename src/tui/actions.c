@@ -41,6 +41,8 @@ static action_fn *const actions[ACT_COUNT] = {
 	[ACT_LOG] = act_log, [ACT_PRESENT] = act_present, [ACT_COMPARE] = act_compare,
 	[ACT_DATA] = act_data, [ACT_DATA_TABLE] = act_data_table, [ACT_FIT] = act_fit,
 	[ACT_SWEEP] = act_sweep,
+	[ACT_SEARCH_NEXT] = act_search_next, [ACT_SEARCH_PREV] = act_search_prev,
+	[ACT_UNDO] = act_undo, [ACT_RESET] = act_reset,
 };
 
 action_fn *

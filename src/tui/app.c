@@ -85,6 +85,7 @@ app_tick(struct app *a)
 	if (dt > 0.25)
 		dt = 0.25;
 	if (hb_sim_end(a->sim) == HB_SIM_RUNNING) {
+		physics_forget(a);
 		rc = hb_sim_advance(a->sim, 0, a->budget);
 		if (rc != HB_OK && rc != HB_EDONE) {
 			app_msg(a, 1, "run failed: %s (everything before is kept)", hb_sim_errmsg(a->sim));
@@ -93,6 +94,8 @@ app_tick(struct app *a)
 
 			app_msg(a, 0, "run computed%s", stiff_note(a, note, sizeof note));
 		}
+		if (hb_sim_end(a->sim) != HB_SIM_RUNNING)
+			physics_run(a);
 		busy = 1;
 	}
 	for (int i = 0; i < a->npins; i++)
@@ -222,6 +225,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 done:
 	fitov_free(a);
 	sweep_view_free(a);
+	physics_forget(a);
 	pins_clear(a);
 	hb_sim_free(a->sim);
 	log_free(a);

@@ -10,7 +10,9 @@
  * goes on with the new values.  A run that contains such a branch records
  * it (a->branch_t, a->branch_j): its scene alone no longer reproduces it,
  * and an export says so.  The scene is validated first, so a refused edit
- * loses nothing.
+ * loses nothing.  Each edit keeps the scene before it (up to
+ * APP_UNDO_MAX): u goes back to it as an edit would; U resets the selected
+ * value to the scene as opened (the preset and its --set).
  */
 #include <curses.h>
 #include <math.h>
@@ -22,11 +24,28 @@
 #include "tui.h"
 #include "units.h"
 
-/* Applies a changed scene: from t = 0 (the default), or at the cursor after b. */
+/* Keeps the scene before an edit for u (the oldest is forgotten when full). */
 static void
-apply_scene(struct app *a, const struct hb_scene *sc_in, const char *what)
+undo_push(struct app *a, const struct hb_scene *before, const char *what)
 {
-	struct hb_scene sc = *sc_in;
+	if (a->nundo == APP_UNDO_MAX) {
+		memmove(&a->undo[0], &a->undo[1], (APP_UNDO_MAX - 1) * sizeof a->undo[0]);
+		memmove(&a->undo_what[0], &a->undo_what[1], (APP_UNDO_MAX - 1) * sizeof a->undo_what[0]);
+		a->nundo--;
+	}
+	a->undo[a->nundo] = *before;
+	snprintf(a->undo_what[a->nundo], sizeof a->undo_what[0], "%s", what);
+	a->nundo++;
+}
+
+/*
+ * Applies a changed scene: from t = 0 (the default), or at the cursor
+ * after b.  An applied edit is kept for u unless undoing (undo 1).
+ */
+static void
+apply_scene_how(struct app *a, const struct hb_scene *sc_in, const char *what, int undo)
+{
+	struct hb_scene sc = *sc_in, before = *hb_sim_scene(a->sim);
 	char emsg[512], tb[32];
 	int restarted = 0, rc, branch = a->branch_armed;
 
@@ -52,6 +71,8 @@ apply_scene(struct app *a, const struct hb_scene *sc_in, const char *what)
 			return;
 		}
 		app_label_runs(a);
+		if (!undo)
+			undo_push(a, &before, what);
 		if (restarted) {
 			a->branch_t = -1;
 			cursor_set(a, 0);
@@ -77,6 +98,8 @@ apply_scene(struct app *a, const struct hb_scene *sc_in, const char *what)
 			return;
 		}
 		app_label_runs(a);
+		if (!undo)
+			undo_push(a, &before, what);
 		a->branch_t = -1;
 		a->nbranches = 0;
 		a->want_t = a->tcur;
@@ -88,6 +111,12 @@ apply_scene(struct app *a, const struct hb_scene *sc_in, const char *what)
 	cursor_clamp(a);
 	if (a->table_sel >= app_ncollisions(a))
 		a->table_sel = app_ncollisions(a) > 0 ? app_ncollisions(a) - 1 : 0;
+}
+
+static void
+apply_scene(struct app *a, const struct hb_scene *sc, const char *what)
+{
+	apply_scene_how(a, sc, what, 0);
 }
 
 void
@@ -245,4 +274,56 @@ act_law(struct app *a)
 	for (int i = 0; l[i]; i++)
 		if (l[i] == hb_sim_scene(a->sim)->law)
 			a->pick_sel = i;
+}
+
+/* u: back to the scene before the last edit. */
+void
+act_undo(struct app *a)
+{
+	char what[200];
+	int k;
+
+	if (a->nundo == 0) {
+		app_msg(a, 1, "nothing to undo: no edit since the run was opened");
+		return;
+	}
+	k = --a->nundo;
+	snprintf(what, sizeof what, "undid %s", a->undo_what[k]);
+	apply_scene_how(a, &a->undo[k], what, 1);
+}
+
+/* U: the selected value back to the scene as opened. */
+void
+act_reset(struct app *a)
+{
+	struct hb_scene_keyinfo ki, oi;
+	struct hb_scene sc = *hb_sim_scene(a->sim);
+	struct hb_scene_error err;
+	char emsg[512], what[160];
+	int k = param_key_index(a), found = 0;
+
+	if (k < 0 || hb_scene_key(hb_sim_scene(a->sim), k, &ki) != 0)
+		return;
+	if (ki.readonly) {
+		app_msg(a, 1, "%s is derived: computed from the bodies, never typed", ki.label);
+		return;
+	}
+	for (int i = 0; i < hb_scene_nkeys(&a->origin) && !found; i++)
+		found = hb_scene_key(&a->origin, i, &oi) == 0 && strcmp(oi.key, ki.key) == 0;
+	if (!found) {
+		app_msg(a, 1, "%s was not in the scene as opened (law %s): u undoes the change of law",
+		        ki.key, a->origin.law->name);
+		return;
+	}
+	if (strcmp(oi.edit, ki.edit) == 0) {
+		app_msg(a, 0, "%s is already as opened: %s", ki.key, oi.value);
+		return;
+	}
+	if (hb_scene_set_text(&sc, ki.key, oi.edit, &err) != HB_OK) {
+		a->branch_armed = 0;
+		app_msg(a, 1, "refused (old value kept): %s", hb_scene_error_str(&err, emsg, sizeof emsg));
+		return;
+	}
+	snprintf(what, sizeof what, "%s reset to %s (as opened)", ki.key, oi.edit);
+	apply_scene(a, &sc, what);
 }

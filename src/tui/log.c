@@ -160,11 +160,12 @@ help_lines(const struct app *a, struct wctx *c)
 	}
 	static const char *legend[] = {
 		"",
-		"Status line: the preset, law, t, j, q_c, the number of collisions, the playback speed (x0.02: simulated seconds per second), slow (in slow motion), playing/paused, and computing/finished/failed for the run.",
+		"Status line: the preset, law, t, j, q_c, the number of collisions, the playback speed (x0.02: simulated seconds per second), slow (in slow motion), playing/paused, and computing/finished/failed for the run; \"fails N checks\" when the ended run breaks the physics checks that --batch runs (m names each check and collision; the table marks an impossible value with \"!\").",
 		"Readout: the sample at the cursor (#index), its t, j, q_c, x, v, x_c, F_c and z_c, with units.",
 		"Contact strip under the plots: # a contact in progress, [] a short contact, [===] a longer contact, ^ the cursor.",
 		"Legend: each pinned run is labelled by what differs from the current one, in its own colour and marker.",
 		"Edits restart the run from t = 0 and keep the cursor's t; b makes the next edit continue from the cursor (branch here).",
+		"In a prompt: the value shown is replaced by the first key typed; Left/Right/Home/End (C-b C-f C-a C-e) keep it to edit; BSpace, C-d, C-k delete; C-u clears; Enter accepts, Esc cancels.",
 	};
 	for (size_t i = 0; i < sizeof legend / sizeof legend[0]; i++)
 		total += wrap(legend[i][0] ? legend[i] : " ", w, 2, c ? put_line : NULL, c);

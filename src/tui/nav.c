@@ -302,23 +302,89 @@ contains(const char *hay, const char *needle)
 	return 0;
 }
 
-void
-search_do(struct app *a, const char *text, int final)
+/* 1 if s begins with needle (ASCII case fold). */
+static int
+begins(const char *s, const char *needle)
+{
+	return cnum_ncasecmp(s, needle, strlen(needle)) == 0;
+}
+
+/*
+ * How well a parameter matches a search (lower is better, -1: not at all):
+ * its name (the key's last part, "c" of law.c), key or label equal to the
+ * text, then beginning with it, then holding it; a derived value, never
+ * typed, after every parameter.
+ */
+static int
+match_rank(const struct hb_scene_keyinfo *ki, const char *text)
+{
+	const char *dot = strrchr(ki->key, '.'), *name = dot ? dot + 1 : ki->key;
+	int r;
+
+	if (cnum_casecmp(name, text) == 0 || cnum_casecmp(ki->key, text) == 0
+	    || cnum_casecmp(ki->label, text) == 0)
+		r = 0;
+	else if (begins(name, text) || begins(ki->key, text) || begins(ki->label, text))
+		r = 1;
+	else if (contains(ki->key, text) || contains(ki->label, text))
+		r = 2;
+	else
+		return -1;
+	return ki->readonly ? r + 3 : r;
+}
+
+/* The panel rows that match text, best first (ties in panel order); returns how many. */
+static int
+search_matches(const struct app *a, const char *text, int *out, int max)
 {
 	struct param_row rows[256];
 	const struct hb_scene *sc = hb_sim_scene(a->sim);
-	int n = params_rows(sc, rows, 256);
+	int n = params_rows(sc, rows, 256), m = 0;
 
-	for (int i = 0; i < n; i++) {
-		struct hb_scene_keyinfo ki;
-		if (rows[i].key < 0 || hb_scene_key(sc, rows[i].key, &ki) != 0)
-			continue;
-		if (contains(ki.key, text) || contains(ki.label, text)) {
-			a->param_sel = i;
-			if (final)
-				app_msg(a, 0, "%s: Enter edits, +/- nudge, / searches again", ki.key);
-			return;
+	for (int rank = 0; rank < 6; rank++)
+		for (int i = 0; i < n && m < max; i++) {
+			struct hb_scene_keyinfo ki;
+			if (rows[i].key < 0 || hb_scene_key(sc, rows[i].key, &ki) != 0)
+				continue;
+			if (match_rank(&ki, text) == rank)
+				out[m++] = i;
 		}
+	return m;
+}
+
+/* Selects match i of the last search and says which it is. */
+static void
+search_show(struct app *a, const int *m, int n, int i)
+{
+	struct param_row rows[256];
+	struct hb_scene_keyinfo ki;
+	const struct hb_scene *sc = hb_sim_scene(a->sim);
+
+	params_rows(sc, rows, 256);
+	a->search_i = i;
+	a->param_sel = m[i];
+	if (hb_scene_key(sc, rows[m[i]].key, &ki) != 0)
+		return;
+	if (n > 1)
+		app_msg(a, 0, "%s: match %d of %d for '%s' (n/N: next/previous); Enter edits, +/- nudge",
+		        ki.key, i + 1, n, a->search_text);
+	else
+		app_msg(a, 0, "%s: the one match for '%s'; Enter edits, +/- nudge", ki.key,
+		        a->search_text);
+}
+
+void
+search_do(struct app *a, const char *text, int final)
+{
+	int m[256], n = search_matches(a, text, m, 256);
+
+	if (n > 0) {
+		a->param_sel = m[0];
+		if (final) {
+			snprintf(a->search_text, sizeof a->search_text, "%s", text);
+			search_show(a, m, n, 0);
+		}
+		return;
 	}
 	if (final) {
 		a->param_sel = a->search_from;
@@ -326,6 +392,31 @@ search_do(struct app *a, const char *text, int final)
 		        text);
 	}
 }
+
+/* The next (dir > 0) or previous match of the last search. */
+static void
+search_again(struct app *a, int dir)
+{
+	int m[256], n;
+
+	if (a->search_text[0] == 0) {
+		app_msg(a, 1, "no search yet: / searches the parameters by name");
+		return;
+	}
+	n = search_matches(a, a->search_text, m, 256);
+	if (n == 0) {
+		app_msg(a, 1, "no parameter matches '%s' now", a->search_text);
+		return;
+	}
+	if (a->focus != FOCUS_PARAMS) {
+		a->focus = FOCUS_PARAMS;
+		app_relayout(a);
+	}
+	search_show(a, m, n, ((a->search_i + dir) % n + n) % n);
+}
+
+void act_search_next(struct app *a) { search_again(a, 1); }
+void act_search_prev(struct app *a) { search_again(a, -1); }
 
 void
 act_search(struct app *a)

@@ -41,13 +41,26 @@ tui_puts(int y, int x, int maxw, const char *s, int attr)
 }
 
 static const char *
-state_name(const struct app *a)
+state_name(const struct app *a, char *buf, size_t n)
 {
+	const char *s;
+
 	switch (hb_sim_end(a->sim)) {
 	case HB_SIM_RUNNING: return "computing";
-	case HB_SIM_END_FAIL: return "failed";
-	default: return "finished";
+	case HB_SIM_END_FAIL: s = "failed"; break;
+	default: s = "finished"; break;
 	}
+	if (a->phys.valid && a->phys.failed > 0) {
+		/* the physics checks (physics.c): what batch warns of */
+		if (hb_sim_end(a->sim) == HB_SIM_END_FAIL)
+			snprintf(buf, n, "%s, %d check%s", s, a->phys.failed,
+			         a->phys.failed == 1 ? " fails" : "s fail");
+		else
+			snprintf(buf, n, "fails %d check%s", a->phys.failed,
+			         a->phys.failed == 1 ? "" : "s");
+		return buf;
+	}
+	return s;
 }
 
 /*
@@ -138,12 +151,12 @@ pane_status_draw(const struct app *a)
 		snprintf(tb, sizeof tb, "-");
 	hb_units_format(a->speed, hb_unit_none, 2, sp, sizeof sp);
 	{
-		char tail[256];
+		char tail[256], st[48];
 		int room;
 		snprintf(tail, sizeof tail, " %s t=%s j=%ld q_c=%d coll %zu x%s%s %s %s",
 		         hb_sim_scene(a->sim)->law->name, tb, s ? s->j : 0L, s ? s->q : 0,
 		         hb_sim_ncollisions(a->sim), sp, a->in_slow ? " slow" : "",
-		         a->playing ? "playing" : "paused", state_name(a));
+		         a->playing ? "playing" : "paused", state_name(a, st, sizeof st));
 		room = r->w - (int)strlen(tail) - 1;
 		if (room < 8)
 			room = 0; /* a narrow terminal: the run's state before the preset's name */
@@ -157,21 +170,46 @@ pane_status_draw(const struct app *a)
 	/* message or prompt */
 	r = &a->L.msg;
 	if (a->overlay == OV_PROMPT) {
-		/* too long for the line: the end, where the typing is, stays in view */
-		int cols = 0, skip;
+		/*
+		 * Too long for the line: the caret stays in view.  A text as
+		 * given (the first printable key replaces it) is shown reversed;
+		 * else the character under the caret is.
+		 */
+		int cols = 0, pre = 0, caret, vcols = 0, skip, x0 = 0;
+		size_t l = strlen(a->prompt_buf), pos = a->prompt_pos > l ? l : a->prompt_pos;
 		const char *p;
 		snprintf(line, sizeof line, "%s: %s_", a->prompt_title, a->prompt_buf);
 		for (p = line; *p; p++)
 			cols += ((unsigned char)*p & 0xC0) != 0x80;
-		skip = cols - (r->w - 1);
+		for (p = a->prompt_title; *p; p++)
+			pre += ((unsigned char)*p & 0xC0) != 0x80;
+		pre += 2;
+		for (size_t i = 0; i < l; i++)
+			if (((unsigned char)a->prompt_buf[i] & 0xC0) != 0x80) {
+				vcols++;
+			}
+		caret = pre;
+		for (size_t i = 0; i < pos; i++)
+			caret += ((unsigned char)a->prompt_buf[i] & 0xC0) != 0x80;
+		skip = (pos == l ? cols : caret + 1) - (r->w - 1);
 		p = line;
 		if (skip > 0) {
-			for (skip += 3; *p && skip > 0; p++)
-				skip -= ((unsigned char)p[1] & 0xC0) != 0x80;
+			int drop = skip + 3;
+			for (; *p && drop > 0; p++)
+				drop -= ((unsigned char)p[1] & 0xC0) != 0x80;
 			tui_puts(r->y, 0, 3, "...", A_BOLD);
 			tui_puts(r->y, 3, r->w - 3, p, A_BOLD);
+			x0 = 3 - (skip + 3);
 		} else {
 			tui_puts(r->y, 0, r->w, line, A_BOLD);
+		}
+		if (a->prompt_fresh && vcols > 0) {
+			int from = pre + x0 < 3 && skip > 0 ? 3 : pre + x0;
+			int to = pre + vcols + x0;
+			if (to > from && from < r->w)
+				mvchgat(r->y, from, (to < r->w ? to : r->w) - from, A_BOLD | A_REVERSE, 0, NULL);
+		} else if (caret + x0 >= 0 && caret + x0 < r->w) {
+			mvchgat(r->y, caret + x0, 1, A_BOLD | A_REVERSE, 0, NULL);
 		}
 	} else {
 		int mattr = a->msg_error ? (a->colour ? COLOR_PAIR(PAIR_ERROR) | A_BOLD : A_BOLD) : 0;

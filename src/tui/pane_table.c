@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "check.h"
 #include "term.h"
 #include "tui.h"
 #include "columns.h"
@@ -155,8 +156,10 @@ pane_table_draw(const struct app *a)
 	for (i = top; i < n && i < top + rows; i++) {
 		const struct hb_collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
 		int attr = 0;
+		unsigned flag;
 		if (c == NULL)
 			continue;
+		flag = c->complete ? physics_flag(a, i) : 0;
 		line[0] = 0;
 		for (k = 0; k < ncol; k++) {
 			double v = value(c, p, cols[k], delta[k]);
@@ -170,12 +173,21 @@ pane_table_draw(const struct app *a)
 			else if (!isfinite(v))
 				snprintf(cell, sizeof cell, "-");
 			else {
-				/* a cell leaves a space before it: fewer digits where they would fill it */
+				/*
+				 * a cell leaves a space before it: fewer digits where they
+				 * would fill it; "!" after a value the law cannot give
+				 * (physics.c), in its own column of the cell
+				 */
+				int bad = !delta[k] && ((strcmp(nm, "e") == 0 && (flag & HB_CHECK_BAD_E))
+				                        || (strcmp(nm, "W") == 0 && (flag & HB_CHECK_BAD_W)));
+				int room = width[k] - bad;
 				snprintf(cell, sizeof cell, "%.4g", v / scale[k]);
-				if ((int)strlen(cell) >= width[k])
+				if ((int)strlen(cell) >= room)
 					snprintf(cell, sizeof cell, "%.1e", v / scale[k]);
-				if ((int)strlen(cell) >= width[k])
+				if ((int)strlen(cell) >= room)
 					snprintf(cell, sizeof cell, "%.0e", v / scale[k]);
+				if (bad)
+					strncat(cell, "!", sizeof cell - strlen(cell) - 1);
 			}
 			char w[64];
 			snprintf(w, sizeof w, "%*s", width[k], cell);
@@ -183,10 +195,17 @@ pane_table_draw(const struct app *a)
 		}
 		if (!c->complete)
 			strncat(line, "  live (in contact)", sizeof line - strlen(line) - 1);
+		else if (flag)
+			strncat(line, (flag & HB_CHECK_BAD_E) && (flag & HB_CHECK_BAD_W)
+			        ? "  ! e, W: impossible for the law" : (flag & HB_CHECK_BAD_E)
+			        ? "  ! e: impossible for the law" : "  ! W: impossible for the law",
+			        sizeof line - strlen(line) - 1);
 		else
 			fitov_table_note(a, i, line, sizeof line);
 		if (i == sel)
 			attr = focused ? A_REVERSE : A_BOLD;
+		if (flag && i != sel)
+			attr |= a->colour ? COLOR_PAIR(PAIR_ERROR) : A_BOLD;
 		if (!c->complete && a->colour)
 			attr |= COLOR_PAIR(PAIR_CONTACT);
 		tui_puts(r->y + 1 + (int)(i - top), r->x, r->w, line, attr);

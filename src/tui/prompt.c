@@ -2,7 +2,7 @@
 /*
  * prompt.c - the one-line prompt on the message line: a value to type, an
  * export name, a parameter to search for.  Keys typed into it are text
- * (UTF-8 as it arrives), not bindings.
+ * (UTF-8 as it arrives) and line editing, not bindings.
  */
 #include <curses.h>
 #include <stdarg.h>
@@ -22,27 +22,89 @@ prompt_open(struct app *a, int kind, const char *text, const char *fmt, ...)
 	a->overlay = OV_PROMPT;
 	a->prompt_kind = kind;
 	snprintf(a->prompt_buf, sizeof a->prompt_buf, "%s", text);
+	a->prompt_pos = strlen(a->prompt_buf);
+	a->prompt_fresh = a->prompt_buf[0] != 0;
 }
 
-/* Removes the last UTF-8 character of s. */
-static void
-drop_char(char *s)
+/* The byte offset of the UTF-8 character before (dir < 0) or after offset i of s. */
+static size_t
+char_step(const char *s, size_t i, int dir)
 {
 	size_t l = strlen(s);
 
-	while (l > 0) {
-		l--;
-		if (((unsigned char)s[l] & 0xC0) != 0x80)
-			break;
+	if (dir < 0) {
+		while (i > 0) {
+			i--;
+			if (((unsigned char)s[i] & 0xC0) != 0x80)
+				break;
+		}
+		return i;
 	}
-	s[l] = 0;
+	if (i < l)
+		for (i++; i < l && ((unsigned char)s[i] & 0xC0) == 0x80; i++)
+			;
+	return i;
+}
+
+/* Removes bytes [from, to) of s. */
+static void
+cut(char *s, size_t from, size_t to)
+{
+	memmove(s + from, s + to, strlen(s + to) + 1);
+}
+
+#define CTRL(c) ((c) & 0x1f)
+
+/*
+ * Line editing, as a shell's: a pre-filled text is replaced by the first
+ * printable key, or kept and edited once the caret moves (Left, Right,
+ * Home, End, C-a, C-e) or a character is deleted.
+ */
+static void
+edit_key(struct app *a, int ch)
+{
+	char *b = a->prompt_buf;
+	size_t l = strlen(b), pos = a->prompt_pos > l ? l : a->prompt_pos;
+
+	if (ch == KEY_LEFT || ch == CTRL('b'))
+		pos = char_step(b, pos, -1);
+	else if (ch == KEY_RIGHT || ch == CTRL('f'))
+		pos = char_step(b, pos, 1);
+	else if (ch == KEY_HOME || ch == CTRL('a'))
+		pos = 0;
+	else if (ch == KEY_END || ch == CTRL('e'))
+		pos = l;
+	else if (ch == KEY_BACKSPACE || ch == 127 || ch == 8) {
+		size_t from = char_step(b, pos, -1);
+		cut(b, from, pos);
+		pos = from;
+	} else if (ch == KEY_DC || ch == CTRL('d')) {
+		cut(b, pos, char_step(b, pos, 1));
+	} else if (ch == CTRL('u')) {
+		b[0] = 0;
+		pos = 0;
+	} else if (ch == CTRL('k')) {
+		b[pos] = 0;
+	} else if (ch >= 32 && ch < 256 && ch != 127) {
+		/* bytes >= 0x80 are parts of a UTF-8 character, kept as they come */
+		if (a->prompt_fresh) {
+			b[0] = 0;
+			pos = l = 0;
+		}
+		if (l + 1 < sizeof a->prompt_buf) {
+			memmove(b + pos + 1, b + pos, l - pos + 1);
+			b[pos++] = (char)ch;
+		}
+	} else {
+		return; /* not an editing key: the text stays as it is */
+	}
+	a->prompt_fresh = 0;
+	a->prompt_pos = pos;
 }
 
 void
 prompt_key(struct app *a, int ch)
 {
-	size_t l = strlen(a->prompt_buf);
-
 	if (ch == 27) {
 		a->overlay = OV_NONE;
 		if (a->prompt_kind == PROMPT_EDIT)
@@ -64,14 +126,8 @@ prompt_key(struct app *a, int ch)
 			sweep_prompt_done(a, buf, 0);
 		else
 			export_do(a, buf);
-	} else if (ch == KEY_BACKSPACE || ch == 127 || ch == 8) {
-		drop_char(a->prompt_buf);
-	} else if (ch == 21) { /* C-u */
-		a->prompt_buf[0] = 0;
-	} else if (ch >= 32 && ch < 256 && ch != 127 && l + 1 < sizeof a->prompt_buf) {
-		/* bytes >= 0x80 are parts of a UTF-8 character, kept as they come */
-		a->prompt_buf[l] = (char)ch;
-		a->prompt_buf[l + 1] = 0;
+	} else {
+		edit_key(a, ch);
 	}
 	if (a->overlay == OV_PROMPT && a->prompt_kind == PROMPT_SEARCH)
 		search_do(a, a->prompt_buf, 0);

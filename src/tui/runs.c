@@ -135,6 +135,8 @@ adopt_sim(struct app *a, struct hb_sim *s, const char *path)
 	a->param_top = 0;
 	a->speed = speed_default(hb_sim_scene(s)->run.T);
 	a->zoom_i = 0;
+	a->origin = *hb_sim_scene(s);
+	a->nundo = 0;
 }
 
 void
@@ -287,15 +289,15 @@ act_export(struct app *a)
 {
 	time_t t = time(NULL);
 	struct tm tm;
-	char stamp[32], cwd[PATH_MAX];
+	char stamp[32], cwd[PATH_MAX], base[96];
 
 	localtime_r(&t, &tm);
 	strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
 	if (getcwd(cwd, sizeof cwd) == NULL)
 		snprintf(cwd, sizeof cwd, ".");
-	prompt_open(a, PROMPT_EXPORT, "", "export to %.60s/BASE-trace.csv, -collisions.csv, .preset; BASE",
+	snprintf(base, sizeof base, "%.40s-%s", a->preset, stamp);
+	prompt_open(a, PROMPT_EXPORT, base, "export to %.60s/BASE-trace.csv, -collisions.csv, .preset; BASE",
 	            cwd);
-	snprintf(a->prompt_buf, sizeof a->prompt_buf, "%.40s-%s", a->preset, stamp);
 }
 
 /* " (replaced)" and the like: how a target of the export was written, for the message. */

@@ -21,7 +21,7 @@
 #include "preset.h"
 #include "sim.h"
 
-enum { APP_MAX_PINS = 3, APP_LOG_MAX = 64 };
+enum { APP_MAX_PINS = 3, APP_LOG_MAX = 64, APP_UNDO_MAX = 32 };
 
 enum view { VIEW_WHOLE = 0, VIEW_FOLLOW, VIEW_ZOOM, VIEW_LOOP, VIEW_J, VIEW_COUNT };
 enum focus { FOCUS_TABLE = 0, FOCUS_PARAMS };
@@ -34,6 +34,15 @@ struct pin {
 	struct hb_sim *sim;
 	char label[96];             /* what differs from the current run */
 	int branched;               /* the run contains a "branch here" */
+};
+
+/* physics.c: the physics checks of the current run, once it has ended. */
+struct app_physics {
+	int valid;                  /* checked, for the run as it stands */
+	int failed;                 /* checks failed (0..3) */
+	size_t nbad;                /* collisions that break what the law allows */
+	unsigned char *flags;       /* per collision: HB_CHECK_BAD_W | HB_CHECK_BAD_E */
+	size_t nflags;
 };
 
 struct app {
@@ -75,12 +84,21 @@ struct app {
 	char prompt_key[48];
 	char prompt_title[96];
 	char prompt_buf[256];
+	size_t prompt_pos;          /* the caret: a byte offset into prompt_buf */
+	int prompt_fresh;           /* the text is as given: the first printable key replaces it */
 
 	char msg[512];
 	int msg_error;              /* the message reports a failure */
 	char *log[APP_LOG_MAX];     /* every message, oldest first (a ring) */
 	int log_n, log_head, log_top;
 	int search_from;            /* panel row when the search began */
+	char search_text[64];       /* the last search (n/N) */
+	int search_i;               /* which of its matches is selected */
+
+	struct hb_scene origin;     /* the scene as opened (U resets a value to it) */
+	struct hb_scene undo[APP_UNDO_MAX];   /* the scenes before the last edits (u), oldest first */
+	char undo_what[APP_UNDO_MAX][160];    /* what each edit was */
+	int nundo;
 
 	int braille, colour;
 	struct layout L;
@@ -90,6 +108,7 @@ struct app {
 	unsigned long frames;
 	struct fitov *fitov;        /* measured data and the fit (overlay_fit.c), or NULL */
 	struct sweep_view *sv;      /* the sweep view (sweep_view.c), NULL until S */
+	struct app_physics phys;    /* physics.c */
 };
 
 /* An action of the key table (actions.c). */
@@ -102,7 +121,8 @@ action_fn act_play, act_step_fwd, act_step_back, act_prev_jump, act_next_jump,
 	act_focus, act_up, act_down, act_pgup, act_pgdn, act_top, act_bottom,
 	act_prev_section, act_next_section, act_search, act_enter,
 	act_nudge_up, act_nudge_down, act_branch, act_law, act_preset, act_restart,
-	act_pin, act_unpin, act_compare, act_study3, act_export, act_log, act_present;
+	act_pin, act_unpin, act_compare, act_study3, act_export, act_log, act_present,
+	act_search_next, act_search_prev, act_undo, act_reset;
 
 /* nav.c: the cursor and the selections. */
 void cursor_set(struct app *a, size_t i);
@@ -150,6 +170,11 @@ const char *log_get(const struct app *a, int i);  /* i-th message, oldest first 
 void pane_log_draw(const struct app *a);
 /* An overlay box with a border on all four sides, cleared inside; returns the inner rect. */
 struct rect box_draw(int y, int x, int h, int w, const char *title);
+
+/* physics.c: checks the ended run; failures to the message line and the log. */
+void physics_run(struct app *a);
+void physics_forget(struct app *a);
+unsigned physics_flag(const struct app *a, long i);   /* HB_CHECK_BAD_* of collision i */
 
 /* mouse.c */
 void mouse_event(struct app *a);
