@@ -398,7 +398,7 @@ Test(sweep, curve_matches_the_sweep_and_exports, .timeout = 60)
 	cr_assert_eq(hb_sweep_curve_write_csv(c, path, msg, sizeof msg), HB_OK, "%s", msg);
 	csv = slurp_file(path);
 	{
-		const char *head = "initial.v0,e\n-0.0050000000000000001,";
+		const char *head = "initial.v0,i,e\n-0.0050000000000000001,0,";
 
 		cr_assert(strncmp(csv, head, strlen(head)) == 0, "%s", csv);
 	}

@@ -254,7 +254,13 @@ fill_curve(FILE *f, const void *ctx)
 {
 	const struct curve_rows *r = ctx;
 
-	fprintf(f, "%s,%s\n", r->c->key, obs_names[r->c->obs]);
+	/* an observable of collision i carries i, numbered from 0 as everywhere */
+	const int per_coll = r->c->obs < HB_CURVE_RUN;
+
+	if (per_coll)
+		fprintf(f, "%s,i,%s\n", r->c->key, hb_sweep_observable_name(r->c->obs));
+	else
+		fprintf(f, "%s,%s\n", r->c->key, hb_sweep_observable_name(r->c->obs));
 	for (long i = 0; i < r->c->np; i++) {
 		char v[64];
 
@@ -262,6 +268,8 @@ fill_curve(FILE *f, const void *ctx)
 			continue;
 		hb_sweep_point_value(r->c->sw, i, 0, v, sizeof v);
 		fputs(v, f);
+		if (per_coll)
+			fprintf(f, ",%ld", r->c->coll_i);
 		csv_put_num(f, r->y[i]);
 		fputc('\n', f);
 	}

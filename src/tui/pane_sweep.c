@@ -163,7 +163,7 @@ pane_sweep_draw(const struct app *a)
 
 	/* title: what is plotted and how far it is */
 	if (v->obs == HB_CURVE_E || v->obs == HB_CURVE_VI || v->obs == HB_CURVE_XCR)
-		snprintf(vy, sizeof vy, "%s of collision %ld", on, v->coll + 1);
+		snprintf(vy, sizeof vy, "%s of collision %ld", on, v->coll);
 	else
 		snprintf(vy, sizeof vy, "%s", on);
 	if (cur->c != NULL)

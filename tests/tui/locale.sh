@@ -144,7 +144,7 @@ for a in LANG=de_DE.UTF-8 LC_ALL=fr_FR.UTF-8 LANG=tr_TR.UTF-8; do
 	wait_for $s 'nudge\) initial\.v0:' 30 && keys $s S
 	wait_for $s '^sweep initial\.v0 over ' 30
 	keys $s C-u ; keys $s -l -- "-0.25 m/s:-1.25 m/s:5" ; keys $s Enter
-	if wait_for $s '^sweep: e of collision 1 against initial\.v0 = -0\.25 m/s:-1\.25 m/s:5 +5/5 done$' 300 &&
+	if wait_for $s '^sweep: e of collision 0 against initial\.v0 = -0\.25 m/s:-1\.25 m/s:5 +5/5 done$' 300 &&
 	    wait_for $s '^\* now .*, e = [0-9]\.[0-9]' 30 &&
 	    ! screen $s | grep -v '^sweep' | grep -q '[0-9],[0-9]'; then
 		ok "$a: the sweep view takes -0.25 m/s:-1.25 m/s:5 and shows decimal dots"

@@ -18,7 +18,7 @@ else
 	notok "S proposes a range for the selected parameter" a
 fi
 keys a C-u ; keys a -l -- "-0.2 m/s:-1 m/s:9" ; keys a Enter
-if wait_for a '^sweep: e of collision 1 against initial\.v0 = -0\.2 m/s:-1 m/s:9 +9/9 done$' 300 \
+if wait_for a '^sweep: e of collision 0 against initial\.v0 = -0\.2 m/s:-1 m/s:9 +9/9 done$' 300 \
    && screen a | grep -q '^\* now bwmcl  @ scene: v0 = 0 m/s, e = 0\.59' \
    && screen a | grep -q '^v0 -> ' && [ "$(screen a | grep -c '\*')" -ge 5 ]; then
 	ok "the curve of e against v0 fills in, the legend gives the current scene's value"
@@ -38,17 +38,17 @@ else
 	notok "the current scene is marked @ on the curve" a
 fi
 keys a o
-if wait_for a '^sweep: v_i of collision 1 against initial\.v0 .* 9/9 done$' 300 \
+if wait_for a '^sweep: v_i of collision 0 against initial\.v0 .* 9/9 done$' 300 \
    && screen a | grep -q '^v_i\[m*m/s\]'; then
-	ok "o: the next observable (v_i of collision 1)"
+	ok "o: the next observable (v_i of collision 0)"
 else
 	notok "o: the next observable" a
 fi
 keys a O
-wait_for a '^sweep: e of collision 1 .* 9/9 done$' 300
+wait_for a '^sweep: e of collision 0 .* 9/9 done$' 300
 keys a p
 if wait_for a '^pinned bwmcl as 1' 30 && keys a L \
-   && wait_for a '^sweep: e of collision 1 .* 9/9 done$' 300 \
+   && wait_for a '^sweep: e of collision 0 .* 9/9 done$' 300 \
    && screen a | grep -q '^\.1 bwmcl (9/9)  \* now hertz'; then
 	ok "p pins the curve, L computes another law next to it"
 else
@@ -64,9 +64,9 @@ keys a e
 wait_for a '^export the curve as CSV to: steel-on-bitumen-initial\.v0-e\.csv_$' 30
 keys a Enter
 if wait_for a '^wrote steel-on-bitumen-initial\.v0-e\.csv \(9 of 9 points\)' 30 \
-   && [ "$(head -1 "$TMP/steel-on-bitumen-initial.v0-e.csv")" = "initial.v0,e" ] \
+   && [ "$(head -1 "$TMP/steel-on-bitumen-initial.v0-e.csv")" = "initial.v0,i,e" ] \
    && [ "$(wc -l < "$TMP/steel-on-bitumen-initial.v0-e.csv")" -eq 10 ] \
-   && sed -n 2p "$TMP/steel-on-bitumen-initial.v0-e.csv" | grep -q '^-0\.2,1$\|^-0\.20*[0-9]*,0\.99'; then
+   && sed -n 2p "$TMP/steel-on-bitumen-initial.v0-e.csv" | grep -q '^-0\.2,0,1$\|^-0\.20*[0-9]*,0,0\.99'; then
 	ok "e exports the curve as CSV (header, one row per point)"
 else
 	notok "e exports the curve as CSV" a
@@ -87,7 +87,7 @@ fi
 # a range of 10^9 points is refused at once, the explorer stays responsive
 keys a r ; keys a C-u ; keys a -l -- "-1 mm/s:-10 m/s:1000000000:log" ; keys a Enter
 if wait_for a '^sweep not started: --vary initial\.v0=-1 mm/s:-10 m/s:1000000000:log' 30 \
-   && wait_for a '^sweep: e of collision 1 against initial\.v0 = -0\.2 m/s:-1 m/s:9 +9/9 done$' 30; then
+   && wait_for a '^sweep: e of collision 0 against initial\.v0 = -0\.2 m/s:-1 m/s:9 +9/9 done$' 30; then
 	ok "a range of 10^9 points is refused at once, the curve kept"
 else
 	notok "a range of 10^9 points is refused at once, the curve kept" a
@@ -108,7 +108,7 @@ wait_for a 'nudge\) initial\.v0:' 30
 keys a S
 wait_for a '^sweep: e of' 30
 keys a r ; keys a C-u ; keys a -l -- "-1 mm/s:-10 m/s:400:log" ; keys a Enter
-wait_for a '^sweep: e of collision 1 .*/400 done, computing$' 100
+wait_for a '^sweep: e of collision 0 .*/400 done, computing$' 100
 keys a F10
 if wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ]; then
 	ok "quitting during a long sweep cancels it and exits 0"
