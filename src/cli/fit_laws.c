@@ -194,13 +194,13 @@ fit_one(const struct fit_laws_args *a, struct law_fit *lf)
 	fo.progress = NULL;
 	msg[0] = '\0';
 	if ((fit = hb_fit_new(&lf->sc, a->d, &fo, msg, sizeof msg)) == NULL) {
-		snprintf(lf->why, sizeof lf->why, "%s", msg);
+		snprintf(lf->why, sizeof lf->why, "%.*s", (int)sizeof lf->why - 1, msg);
 		return;
 	}
 	while (cli_signal == 0 && !hb_fit_iterate(fit))
 		;
 	if (hb_fit_result_get(fit, &lf->r, msg, sizeof msg) != HB_OK) {
-		snprintf(lf->why, sizeof lf->why, "%s", msg);
+		snprintf(lf->why, sizeof lf->why, "%.*s", (int)sizeof lf->why - 1, msg);
 		hb_fit_free(fit);
 		return;
 	}
