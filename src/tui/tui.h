@@ -82,7 +82,7 @@ struct app {
 	int npresets;
 	int prompt_kind;
 	char prompt_key[48];
-	char prompt_title[96];
+	char prompt_title[640];
 	char prompt_buf[256];
 	size_t prompt_pos;          /* the caret: a byte offset into prompt_buf */
 	int prompt_fresh;           /* the text is as given: the first printable key replaces it */
@@ -179,9 +179,17 @@ unsigned physics_flag(const struct app *a, long i);   /* HB_CHECK_BAD_* of colli
 /* mouse.c */
 void mouse_event(struct app *a);
 
-/* Cells of text drawing with clipping (pane_status.c). */
+/* Cells of text drawing with clipping (pane_status.c): a cut text ends in tui_cut_mark(). */
 void
 tui_puts(int y, int x, int maxw, const char *s, int attr);
+const char *tui_cut_mark(void);
+/*
+ * Draws s word-wrapped into rows of w columns from (y, x), at most maxrows
+ * (log.c); a text that needs more ends in the cut mark.  Returns the rows
+ * drawn.  tui_wrap_rows: the rows s needs at width w.
+ */
+int tui_wrap_draw(int y, int x, int w, int maxrows, const char *s, int attr);
+int tui_wrap_rows(const char *s, int w);
 
 /* Drawing (pane_*.c): read the state, draw into stdscr. */
 void pane_plot_draw(const struct app *a);
