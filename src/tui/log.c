@@ -42,6 +42,17 @@ app_msg(struct app *a, int error, const char *fmt, ...)
 	a->log[slot] = copy;
 }
 
+void
+app_caption(struct app *a, const char *text, int large)
+{
+	snprintf(a->caption, sizeof a->caption, "%s", text);
+	a->caption_large = large && text[0];
+	if (text[0])
+		app_msg(a, 0, "%s", text);   /* in the log too, and on the message line */
+	else
+		a->msg[0] = 0;
+}
+
 const char *
 log_get(const struct app *a, int i)
 {

@@ -161,6 +161,34 @@ readout_draw(const struct app *a)
 	tui_puts(r->y + row, r->x, r->w, line, 0);
 }
 
+/*
+ * A script's caption shown large: a box in the middle of the plots, the
+ * text wrapped inside with a blank row and two blank columns around it,
+ * in bold (reversed on a colour terminal, for the back of a lecture hall).
+ */
+static void
+caption_large_draw(const struct app *a)
+{
+	const struct rect *p = &a->L.plots;
+	int w = a->L.cols - 8, rows, h, y, x;
+	struct rect in;
+
+	if (w > 72)
+		w = 72;
+	if (w < 20)
+		w = a->L.cols;
+	rows = tui_wrap_rows(a->caption, w - 8);
+	h = rows + 4;
+	if (h > a->L.lines - 2)
+		h = a->L.lines - 2;
+	y = p->y + (p->h - h) / 2;
+	if (y < 1)
+		y = 1;
+	x = (a->L.cols - w) / 2;
+	in = box_draw(y, x, h, w, "");
+	tui_wrap_draw(in.y + 1, in.x + 2, in.w - 4, in.h - 2, a->caption, A_BOLD);
+}
+
 void
 pane_status_draw(const struct app *a)
 {
@@ -286,6 +314,17 @@ pane_status_draw(const struct app *a)
 		} else if (caret + x0 >= 0 && caret + x0 < r->w) {
 			mvchgat(r->y, caret + x0, 1, A_BOLD | A_REVERSE, 0, NULL);
 		}
+	} else if (a->caption[0] && a->caption_large && strcmp(a->msg, a->caption) == 0) {
+		/* shown large over the plots (caption_large_draw) */
+	} else if (a->caption[0] && !a->caption_large && strcmp(a->msg, a->caption) == 0) {
+		/* a script's caption: whole, wrapped over the rows above the line (at most 4) */
+		int rows = tui_wrap_rows(a->caption, r->w - 1), top;
+		if (rows > 4)
+			rows = 4;
+		top = r->y - rows + 1 < 0 ? 0 : r->y - rows + 1;
+		for (int y = top; y <= r->y; y++)
+			mvhline(y, 0, ' ', r->w);
+		tui_wrap_draw(top, 0, r->w - 1, r->y - top + 1, a->caption, A_BOLD);
 	} else {
 		int mattr = a->msg_error ? (a->colour ? COLOR_PAIR(PAIR_ERROR) | A_BOLD : A_BOLD) : 0;
 		static const char more[] = "... m: whole";
@@ -299,8 +338,15 @@ pane_status_draw(const struct app *a)
 	}
 
 	r = &a->L.footer;
-	keys_footer(foot, sizeof foot, r->w - 1);
-	tui_puts(r->y, 0, r->w, foot, A_DIM);
+	if (a->demo_hint != NULL) {
+		/* a demo on the real screen: what the viewer's keys do now */
+		tui_puts(r->y, 0, r->w, a->demo_hint, A_BOLD);
+	} else {
+		keys_footer(foot, sizeof foot, r->w - 1);
+		tui_puts(r->y, 0, r->w, foot, A_DIM);
+	}
+	if (a->caption[0] && a->caption_large && strcmp(a->msg, a->caption) == 0)
+		caption_large_draw(a);
 }
 
 void

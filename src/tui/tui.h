@@ -64,6 +64,9 @@ struct app {
 	int nbranches;
 	int compare;                /* table differences against pin compare-1 (0: off) */
 	int present;                /* presentation mode (T) */
+	const char *demo_hint;      /* a --script demo on the real screen: the footer's text */
+	char caption[512];          /* a script's caption (wrapped over the message line) */
+	int caption_large;          /* ... shown large, in a box over the plots */
 	int playing;
 	double speed;               /* playback: simulated s per wall s */
 	int slowmo;                 /* slow motion through contacts enabled */
@@ -178,6 +181,9 @@ unsigned physics_flag(const struct app *a, long i);   /* HB_CHECK_BAD_* of colli
 
 /* mouse.c */
 void mouse_event(struct app *a);
+
+/* A script's caption (log.c): on the message line wrapped, or large in a box; "" clears. */
+void app_caption(struct app *a, const char *text, int large);
 
 /* Cells of text drawing with clipping (pane_status.c): a cut text ends in tui_cut_mark(). */
 void
