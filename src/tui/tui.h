@@ -63,7 +63,19 @@ struct app {
 	long branch_j;
 	int nbranches;
 	int compare;                /* table differences against pin compare-1 (0: off) */
-	int present;                /* presentation mode (T) */
+	int present;                /* presentation mode (T): 1 dark, 2 light theme */
+	int present_view, present_slowmo;   /* what T puts back */
+	double slow_t0, slow_td;    /* in slow motion: the contact's start and the duration it is timed by */
+	/*
+	 * Presentation: each quantity's range (x, x_c, F_c) over every sample
+	 * seen so far of the runs drawn, so that an axis holds its scale.
+	 */
+	struct {
+		const struct hb_sim *sim[APP_MAX_PINS + 1];
+		size_t seen[APP_MAX_PINS + 1];
+		int n;
+		double lo[3], hi[3];
+	} hold;
 	const char *demo_hint;      /* a --script demo on the real screen: the footer's text */
 	char caption[512];          /* a script's caption (wrapped over the message line) */
 	int caption_large;          /* ... shown large, in a box over the plots */
