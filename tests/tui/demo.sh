@@ -6,6 +6,10 @@
 # of the demo waits, the explorer then the viewer's until q.  tmux at
 # 80x23: send-keys, then poll capture-pane.
 # Needs HYBOUNCE_BIN and HYBOUNCE_PRESETS, as set by tests/run.sh.
+# the box borders matched below are UTF-8's; set before the tmux server starts
+if locale -a 2>/dev/null | grep -qi '^c\.utf-\?8$'; then
+	export LC_ALL=C.UTF-8
+fi
 . "$(dirname "$0")/common.inc"
 
 # ---- checked before playback ------------------------------------------------------

@@ -6,13 +6,14 @@
 # zooms on it, the curve drawn only up to the cursor), and T again gives
 # the light theme (black on white).  tmux: send-keys, poll capture-pane.
 # Needs HYBOUNCE_BIN and HYBOUNCE_PRESETS, as set by tests/run.sh.
-. "$(dirname "$0")/common.inc"
 command -v perl >/dev/null || { echo "ok - # SKIP perl is not installed"; exit 0; }
 if ! locale -a 2>/dev/null | grep -qi '^c\.utf-\?8$'; then
 	echo "ok - # SKIP no C.UTF-8 locale for the Braille screen"
 	exit 0
 fi
+# before the tmux server starts (common.inc): the explorer draws Braille
 export LC_ALL=C.UTF-8
+. "$(dirname "$0")/common.inc"
 
 # margins SCREEN: the plots' tick labels and names (rows 3-17, columns 1-8)
 margins() { sed -n '3,17p' "$1" | perl -CS -ne 'print substr($_, 0, 8), "\n"'; }

@@ -8,6 +8,11 @@
 # passes when every screen line it shows is on the screen (`...` in a
 # line stands for anything).  Changing the README's tour changes this test.
 # Needs HYBOUNCE_BIN; run from the top folder.
+# a new user's terminal speaks UTF-8 (the screens below show its ellipsis);
+# set before the tmux server starts (common.inc)
+if locale -a 2>/dev/null | grep -qi '^c\.utf-\?8$'; then
+	export LC_ALL=C.UTF-8
+fi
 . "$(dirname "$0")/common.inc"
 TOP=$(pwd)
 
