@@ -439,8 +439,14 @@ the_end(struct app *a)
 	timeout(40);
 	while (!term_signalled() && !a->quit) {
 		app_draw(a);
-		if ((ch = getch()) != ERR)
+		if ((ch = getch()) != ERR) {
+			if (ch != KEY_RESIZE && ch != KEY_MOUSE && a->demo_hint != NULL) {
+				/* the viewer's first key: the footer's keys again, the last caption gone */
+				a->demo_hint = NULL;
+				a->caption[0] = 0;
+			}
 			app_key(a, ch);
+		}
 		app_tick(a);
 	}
 }

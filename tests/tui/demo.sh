@@ -86,7 +86,13 @@ if wait_for a 'hybounce keys' 30; then
 else
 	notok "after the demo the explorer takes keys (? opens the help)" a
 fi
-keys a Escape q
+keys a Escape
+if wait_for a '^\?:help q:quit' 30; then
+	ok "after the viewer's first key the footer lists the explorer's keys again"
+else
+	notok "after the viewer's first key the footer lists the explorer's keys again" a
+fi
+keys a q
 if wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ]; then
 	ok "q quits after the demo (status 0)"
 else
