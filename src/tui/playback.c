@@ -9,6 +9,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "term.h"
 #include "tui.h"
@@ -70,7 +71,8 @@ stiff_note(const struct app *a, char *buf, size_t n)
 /*
  * Presentation: widens each quantity's held range with the samples not
  * seen yet of the runs drawn (the pins, then the current run); a change
- * of those runs (an edit, a pin) starts again from their first samples.
+ * of those runs (a pin, or an edit: the current run's scene changed)
+ * starts again from their first samples.
  */
 static void
 hold_update(struct app *a)
@@ -81,11 +83,13 @@ hold_update(struct app *a)
 	for (int i = 0; i < a->npins; i++)
 		s[n++] = a->pin[i].sim;
 	s[n++] = a->sim;
-	same = n == a->hold.n;
+	same = n == a->hold.n
+	       && memcmp(&a->hold.scene, hb_sim_scene(a->sim), sizeof a->hold.scene) == 0;
 	for (int k = 0; same && k < n; k++)
 		same = s[k] == a->hold.sim[k] && a->hold.seen[k] <= hb_arc_len(hb_sim_arc(s[k]));
 	if (!same) {
 		a->hold.n = n;
+		memcpy(&a->hold.scene, hb_sim_scene(a->sim), sizeof a->hold.scene);
 		for (int k = 0; k < n; k++) {
 			a->hold.sim[k] = s[k];
 			a->hold.seen[k] = 0;

@@ -74,6 +74,7 @@ struct app {
 		const struct hb_sim *sim[APP_MAX_PINS + 1];
 		size_t seen[APP_MAX_PINS + 1];
 		int n;
+		struct hb_scene scene;  /* the current run's, as last seen: an edit restarts the same run */
 		double lo[3], hi[3];
 	} hold;
 	const char *demo_hint;      /* a --script demo on the real screen: the footer's text */
