@@ -55,7 +55,7 @@ else
 	notok "help: the bottom border says more rows follow" a
 fi
 keys a PgDn PgDn PgDn PgDn PgDn PgDn PgDn PgDn
-if wait_for a 'more above \(Up\)' 30 && ! screen a | grep -q 'more below' &&
+if wait_gone a 'more below' 50 && wait_for a 'more above \(Up\)' 30 &&
    wait_joined a "every column is in the exported CSV."; then
 	ok "help: its last row is reached, and the cut mark is explained there"
 else
