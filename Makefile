@@ -358,9 +358,9 @@ bench: deps
 	@mkdir -p $(BUILD)/bench
 	./$(BENCHBIN) --out $(BUILD)/bench
 	@sh tests/bench/study-table.sh $(BUILD)/bench/work-precision.csv >$(BUILD)/bench/study-table.md
-	@echo "per-study table (README Speed and accuracy): $(BUILD)/bench/study-table.md"
+	@echo "per-study table (docs/speed-and-accuracy.md): $(BUILD)/bench/study-table.md"
 
-# After make bench: the per-study table into README.md, and tests/bench/REPORT.md.
+# After make bench: the per-study table into docs/speed-and-accuracy.md, and tests/bench/REPORT.md.
 bench-docs:
 	@sh tests/bench/report.sh $(BUILD)/bench
 

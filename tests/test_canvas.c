@@ -236,3 +236,25 @@ Test(canvas, ticks_huge_values_stay_short)
 	cr_assert(strstr(line, "e+") != NULL, "'%s'", line);
 	cr_assert(strlen(line) <= 70);
 }
+
+/* Presentation's thick lines: a Braille pixel is 2 x 2, a thin one 1 x 1. */
+Test(canvas, thick_line_is_two_pixels_high)
+{
+	struct canvas *thin = canvas_new(10, 2, 1), *thick = canvas_new(10, 2, 1);
+	char cell[8];
+
+	cr_assert_not_null(thin);
+	cr_assert_not_null(thick);
+	thick->thick = 1;
+	canvas_range(thin, 0, 1, 0, 1);
+	canvas_range(thick, 0, 1, 0, 1);
+	/* a horizontal line on pixel row 0 of 8 (y = 1: the top) */
+	canvas_line(thin, 0, 1, 1, 1, 1);
+	canvas_line(thick, 0, 1, 1, 1, 1);
+	canvas_cell(thin, 4, 0, cell);
+	cr_assert_str_eq(cell, "\xe2\xa0\x89");   /* U+2809: dots 1 and 4, the top row */
+	canvas_cell(thick, 4, 0, cell);
+	cr_assert_str_eq(cell, "\xe2\xa0\x9b");   /* U+281B: dots 1, 2, 4, 5, two rows */
+	canvas_free(thin);
+	canvas_free(thick);
+}

@@ -129,9 +129,22 @@ canvas_col(const struct canvas *c, double x)
 	return c->braille ? (int)p / 2 : (int)p;
 }
 
-/* Sets pixel (px, py) if inside. */
+static void setpx1(struct canvas *c, long px, long py, int ink);
+
+/* Sets pixel (px, py) if inside; a thick line's pixel is 2 x 2. */
 static void
 setpx(struct canvas *c, long px, long py, int ink)
+{
+	setpx1(c, px, py, ink);
+	if (c->thick && c->braille) {
+		setpx1(c, px + 1, py, ink);
+		setpx1(c, px, py + 1, ink);
+		setpx1(c, px + 1, py + 1, ink);
+	}
+}
+
+static void
+setpx1(struct canvas *c, long px, long py, int ink)
 {
 	static const unsigned char bit[4][2] = {
 		{ 0x01, 0x08 }, { 0x02, 0x10 }, { 0x04, 0x20 }, { 0x40, 0x80 }

@@ -30,6 +30,7 @@ struct canvas {
 	char *mark;             /* w*h marks, 0 where none */
 	unsigned char *mark_ink;
 	double x0, x1, y0, y1;  /* data range */
+	int thick;              /* Braille: each pixel also sets the ones below and to its right */
 };
 
 /* A w x h canvas (w, h >= 1), cleared, range [0,1] x [0,1]. NULL on no memory. */

@@ -74,7 +74,7 @@ static const struct key_binding table[] = {
 	  "sweep view: the selected parameter over a range against e, v_i, x_c^r, collisions or t_pc, computed in the background", NULL },
 	{ 'm', 0, CTX_ANY, ACT_LOG, "m", "the message log: every message, whole", "log" },
 	{ 'T', 0, CTX_ANY, ACT_PRESENT, "T",
-	  "presentation: no table, large plots, each contact followed in slow motion, looping", NULL },
+	  "presentation: no table, large plots with thick lines and held scales, each contact formed in slow motion, looping; T again: the light theme, then off", NULL },
 	{ 'D', 0, CTX_ANY, ACT_DATA, "D",
 	  "open measured data (as hybounce fit --data): impacts shown as o on the x plot and in the table", NULL },
 	{ 'M', 0, CTX_ANY, ACT_DATA_TABLE, "M", "every data point: measured against simulated now", NULL },

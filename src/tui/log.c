@@ -42,6 +42,17 @@ app_msg(struct app *a, int error, const char *fmt, ...)
 	a->log[slot] = copy;
 }
 
+void
+app_caption(struct app *a, const char *text, int large)
+{
+	snprintf(a->caption, sizeof a->caption, "%s", text);
+	a->caption_large = large && text[0];
+	if (text[0])
+		app_msg(a, 0, "%s", text);   /* in the log too, and on the message line */
+	else
+		a->msg[0] = 0;
+}
+
 const char *
 log_get(const struct app *a, int i)
 {
@@ -115,6 +126,46 @@ wrap(const char *s, int w, int indent, void (*out)(void *, int, const char *), v
 
 /* ---- drawing ----------------------------------------------------------- */
 
+struct bctx {
+	int y, x, w, maxrows;
+	int attr;
+	int total;
+};
+
+static void
+put_bounded(void *p, int k, const char *line)
+{
+	struct bctx *c = p;
+	char buf[1100];
+
+	if (k < c->maxrows - 1 || (k == c->maxrows - 1 && c->total <= c->maxrows)) {
+		tui_puts(c->y + k, c->x, c->w, line, c->attr);
+	} else if (k == c->maxrows - 1) {
+		/* the last row there is room for, with more to come: the mark says so */
+		snprintf(buf, sizeof buf, "%s%*s", line, c->w, "");
+		tui_puts(c->y + k, c->x, c->w, buf, c->attr);
+		mvaddstr(c->y + k, c->x + c->w - 1, tui_cut_mark());
+	}
+}
+
+int
+tui_wrap_rows(const char *s, int w)
+{
+	return wrap(s, w, 0, NULL, NULL);
+}
+
+int
+tui_wrap_draw(int y, int x, int w, int maxrows, const char *s, int attr)
+{
+	struct bctx c = { y, x, w, maxrows, attr, 0 };
+
+	if (maxrows < 1 || w < 1)
+		return 0;
+	c.total = wrap(s, w, 0, NULL, NULL);
+	wrap(s, w, 0, put_bounded, &c);
+	return c.total < maxrows ? c.total : maxrows;
+}
+
 struct wctx {
 	int y0, x0, w, top, rows, row;
 };
@@ -162,9 +213,10 @@ help_lines(const struct app *a, struct wctx *c)
 		"",
 		"Status line: the preset, law, t, j, q_c, the number of collisions, the playback speed (x0.02: simulated seconds per second), slow (in slow motion), playing/paused, and computing/finished/failed for the run; \"fails N checks\" when the ended run breaks the physics checks that --batch runs (m names each check and collision; the table marks an impossible value with \"!\").",
 		"Readout: the sample at the cursor (#index), its t, j, q_c, x, v, x_c, F_c and z_c, with units.",
-		"Contact strip under the plots: # a contact in progress, [] a short contact, [===] a longer contact, ^ the cursor.",
+		"Contact strip under the plots: # a contact narrower than a column, [] a contact two columns wide, [===] a longer contact from t_e to t_s, ^ the cursor.",
 		"Legend: each pinned run is labelled by what differs from the current one, in its own colour and marker.",
 		"Edits restart the run from t = 0 and keep the cursor's t; b makes the next edit continue from the cursor (branch here).",
+		"A line that ends in an ellipsis (> without UTF-8) goes on: a message is whole in the log (m); the table's columns past the screen's edge are in the status line (coll N), M (the data) and the log (the physics notes); a picker shows its selected entry whole under its list; Enter on a parameter shows its description whole; a long prompt has its title on the rows above it; every column is in the exported CSV.",
 		"In a prompt: the value shown is replaced by the first key typed; Left/Right/Home/End (C-b C-f C-a C-e) keep it to edit; BSpace, C-d, C-k delete; C-u clears; Enter accepts, Esc cancels.",
 	};
 	for (size_t i = 0; i < sizeof legend / sizeof legend[0]; i++)
@@ -194,6 +246,20 @@ clamp_top(int top, int total, int rows)
 	return top < 0 ? 0 : top;
 }
 
+/* On the box's bottom border: what lies above and below the rows shown. */
+static void
+scroll_marks(const struct rect *r, int top, int total, int rows)
+{
+	char m[64];
+
+	if (top <= 0 && top + rows >= total)
+		return;
+	snprintf(m, sizeof m, " %s%s%s ", top > 0 ? "more above (Up)" : "",
+	         top > 0 && top + rows < total ? ", " : "",
+	         top + rows < total ? "more below (Down)" : "");
+	tui_puts(r->y + r->h - 1, r->x + r->w - 2 - (int)strlen(m), (int)strlen(m), m, A_BOLD);
+}
+
 void
 pane_help_draw(const struct app *a)
 {
@@ -201,8 +267,11 @@ pane_help_draw(const struct app *a)
 	struct rect in = box_draw(r.y, r.x, r.h, r.w, " hybounce keys (Up/Down PgUp/PgDn scroll, any other key closes) ");
 	struct wctx c = { in.y, in.x, in.w, 0, in.h, 0 };
 
-	c.top = clamp_top(a->help_top, help_lines(a, NULL), in.h);
+	int total = help_lines(a, NULL);
+
+	c.top = clamp_top(a->help_top, total, in.h);
 	help_lines(a, &c);
+	scroll_marks(&r, c.top, total, in.h);
 }
 
 void
@@ -216,6 +285,7 @@ pane_log_draw(const struct app *a)
 	/* log_top < 0: the end of the log (the newest messages) */
 	c.top = clamp_top(a->log_top < 0 ? total : a->log_top, total, in.h);
 	log_lines(a, &c);
+	scroll_marks(&r, c.top, total, in.h);
 }
 
 void

@@ -89,7 +89,11 @@ view_range(const struct app *a, double *lo, double *hi)
 	}
 	*lo = 0;
 	*hi = end > 0 ? end : 1;
-	if (a->view == VIEW_FOLLOW && hb_arc_len(arc) > 0) {
+	if (a->present && a->view == VIEW_FOLLOW && a->in_slow && a->slow_td > 0) {
+		/* presentation, slow motion: the view on the contact as it forms */
+		*lo = a->slow_t0 - 0.5 * a->slow_td;
+		*hi = a->slow_t0 + 3.5 * a->slow_td;
+	} else if (a->view == VIEW_FOLLOW && hb_arc_len(arc) > 0) {
 		double w = *hi / 10, t = hb_arc_at(arc, a->cursor)->t;
 		*lo = t - 0.7 * w;
 		if (*lo < 0)
@@ -375,14 +379,24 @@ pane_plot_draw(const struct app *a)
 		struct axis ay;
 		struct canvas *c;
 
-		value_range(a, s, n, q, t0, t1, &lo, &hi);
+		if (a->present && a->hold.n > 0) {
+			/* presentation: the scale over the run, held */
+			lo = a->hold.lo[q];
+			hi = a->hold.hi[q];
+		} else {
+			value_range(a, s, n, q, t0, t1, &lo, &hi);
+		}
 		canvas_axis(lo, hi, hs[q] / 2 + 2, qbase[q], &ay);
 		c = canvas_or_die(cw, hs[q], a->braille);
+		c->thick = a->present;
 		canvas_range(c, t0, t1, ay.lo, ay.hi);
 		for (int k = 0; k < n; k++) {
 			const struct hb_arc *ak = hb_sim_arc(s[k]);
 			size_t i0, i1;
 			sample_span(a, ak, t0, t1, &i0, &i1);
+			/* presentation: the current run drawn up to the cursor, forming */
+			if (a->present && s[k] == a->sim && i1 > a->cursor + 1)
+				i1 = a->cursor + 1;
 			for (size_t i = i0; i < i1; i++) {
 				const struct hb_arc_sample *p = hb_arc_at(ak, i);
 				if (i > i0) {

@@ -10,33 +10,52 @@
 #include <string.h>
 
 #include "keys.h"
+#include "scene.h"
 #include "layout.h"
 #include "term.h"
 #include "tui.h"
 #include "units.h"
 
+/* The mark at the end of a text cut to its room: an ellipsis, or > without UTF-8. */
+const char *
+tui_cut_mark(void)
+{
+	return term_utf8() ? "\xe2\x80\xa6" : ">";
+}
+
 /*
  * Writes UTF-8 text at (y, x), at most maxw columns (one column per
  * character: our texts are ASCII plus Braille, which is one column wide).
+ * Text cut to fit (more than blanks left over) ends in the cut mark in
+ * its last column: nothing is cut without a mark.
  */
 void
 tui_puts(int y, int x, int maxw, const char *s, int attr)
 {
 	int cols = 0;
-	const unsigned char *p = (const unsigned char *)s, *start = p;
+	const unsigned char *p = (const unsigned char *)s, *start = p, *last = p, *rest;
 
 	if (y < 0 || y >= LINES || x >= COLS || maxw <= 0)
 		return;
 	if (x + maxw > COLS)
 		maxw = COLS - x;
 	while (*p && cols < maxw) {
+		last = p;
 		p++;
 		while ((*p & 0xC0) == 0x80)
 			p++;
 		cols++;
 	}
+	for (rest = p; *rest == ' '; rest++)
+		;
 	attron(attr);
-	mvaddnstr(y, x, (const char *)start, (int)(p - start));
+	if (*rest != 0 && cols > 0) {
+		/* cut: the last column shows the mark instead of its character */
+		mvaddnstr(y, x, (const char *)start, (int)(last - start));
+		mvaddstr(y, x + cols - 1, tui_cut_mark());
+	} else {
+		mvaddnstr(y, x, (const char *)start, (int)(p - start));
+	}
 	attroff(attr);
 }
 
@@ -121,9 +140,15 @@ readout_draw(const struct app *a)
 	for (int i = 0; i < nf; i++) {
 		int w = (int)strlen(f[i]) + (col ? 1 : 0);
 		if (col + w > r->w) {
-			tui_puts(r->y + row, r->x, r->w, line, 0);
-			if (++row >= r->h)
+			if (row + 1 >= r->h) {
+				/* no row left for the rest: the mark says it is left out */
+				snprintf(line + strlen(line), sizeof line - strlen(line), "%*s", r->w, "");
+				tui_puts(r->y + row, r->x, r->w, line, 0);
+				mvaddstr(r->y + row, r->x + r->w - 1, tui_cut_mark());
 				return;
+			}
+			tui_puts(r->y + row, r->x, r->w, line, 0);
+			row++;
 			line[0] = 0;
 			col = 0;
 			w = (int)strlen(f[i]);
@@ -136,12 +161,40 @@ readout_draw(const struct app *a)
 	tui_puts(r->y + row, r->x, r->w, line, 0);
 }
 
+/*
+ * A script's caption shown large: a box in the middle of the plots, the
+ * text wrapped inside with a blank row and two blank columns around it,
+ * in bold (reversed on a colour terminal, for the back of a lecture hall).
+ */
+static void
+caption_large_draw(const struct app *a)
+{
+	const struct rect *p = &a->L.plots;
+	int w = a->L.cols - 8, rows, h, y, x;
+	struct rect in;
+
+	if (w > 72)
+		w = 72;
+	if (w < 20)
+		w = a->L.cols;
+	rows = tui_wrap_rows(a->caption, w - 8);
+	h = rows + 4;
+	if (h > a->L.lines - 2)
+		h = a->L.lines - 2;
+	y = p->y + (p->h - h) / 2;
+	if (y < 1)
+		y = 1;
+	x = (a->L.cols - w) / 2;
+	in = box_draw(y, x, h, w, "");
+	tui_wrap_draw(in.y + 1, in.x + 2, in.w - 4, in.h - 2, a->caption, A_BOLD);
+}
+
 void
 pane_status_draw(const struct app *a)
 {
 	const struct hb_arc *arc = hb_sim_arc(a->sim);
 	const struct hb_arc_sample *s = hb_arc_len(arc) ? hb_arc_at(arc, a->cursor) : NULL;
-	char line[512], tb[32], sp[32], foot[512];
+	char line[1024], tb[32], sp[32], foot[512];
 	int attr = a->colour ? COLOR_PAIR(PAIR_STATUS) : A_REVERSE;
 	const struct rect *r = &a->L.status;
 
@@ -160,12 +213,18 @@ pane_status_draw(const struct app *a)
 		room = r->w - (int)strlen(tail) - 1;
 		if (room < 8)
 			room = 0; /* a narrow terminal: the run's state before the preset's name */
-		snprintf(line, sizeof line, "%s%.*s%s", room ? " " : "", room, a->preset, tail);
+		if ((int)strlen(a->preset) > room && room > 0)
+			/* the name cut, marked: the log's first message and o show it whole */
+			snprintf(line, sizeof line, " %.*s%s%s", room - 1, a->preset, tui_cut_mark(), tail);
+		else
+			snprintf(line, sizeof line, "%s%.*s%s", room ? " " : "", room, a->preset, tail);
 	}
 	attron(attr);
 	mvhline(r->y, 0, ' ', r->w);
 	attroff(attr);
 	tui_puts(r->y, 0, r->w, line, attr);
+	/* the readout first: a long prompt's title goes over it */
+	readout_draw(a);
 
 	/* message or prompt */
 	r = &a->L.msg;
@@ -175,15 +234,59 @@ pane_status_draw(const struct app *a)
 		 * given (the first printable key replaces it) is shown reversed;
 		 * else the character under the caret is.
 		 */
-		int cols = 0, pre = 0, caret, vcols = 0, skip, x0 = 0;
+		int cols = 0, pre = 0, caret, vcols = 0, skip, x0 = 0, tcols = 0, vtext = 0;
 		size_t l = strlen(a->prompt_buf), pos = a->prompt_pos > l ? l : a->prompt_pos;
-		const char *p;
-		snprintf(line, sizeof line, "%s: %s_", a->prompt_title, a->prompt_buf);
+		const char *p, *title = a->prompt_title;
+		for (p = title; *p; p++)
+			tcols += ((unsigned char)*p & 0xC0) != 0x80;
+		for (p = a->prompt_buf; *p; p++)
+			vtext += ((unsigned char)*p & 0xC0) != 0x80;
+		if (a->prompt_kind == PROMPT_EDIT && tcols + 2 + vtext + 1 <= r->w && r->y > 0) {
+			/*
+			 * Editing a value: its description whole on the rows above
+			 * (the panel's header may have cut it), at most 2.
+			 */
+			const struct hb_scene *sc = hb_sim_scene(a->sim);
+			struct hb_scene_keyinfo ki;
+			for (int k = 0; k < hb_scene_nkeys(sc); k++) {
+				if (hb_scene_key(sc, k, &ki) != 0 || strcmp(ki.key, a->prompt_key) != 0)
+					continue;
+				char d[512];
+				snprintf(d, sizeof d, "%s: %s", ki.key, ki.help);
+				int rows = tui_wrap_rows(d, r->w - 1), top;
+				if (rows > 2)
+					rows = 2;
+				top = r->y - rows < 0 ? 0 : r->y - rows;
+				for (int y = top; y < r->y; y++)
+					mvhline(y, 0, ' ', r->w);
+				tui_wrap_draw(top, 0, r->w - 1, r->y - top, d, A_DIM);
+				break;
+			}
+		} else if (tcols + 2 + vtext + 1 > r->w && r->y > 0) {
+			/*
+			 * Title and text do not fit one line: the title whole on
+			 * the rows above (over the readout, at most 3), the text
+			 * alone on the line.
+			 */
+			int rows = tui_wrap_rows(title, r->w - 2), top;
+			if (rows > 3)
+				rows = 3;
+			top = r->y - rows < 0 ? 0 : r->y - rows;
+			for (int y = top; y < r->y; y++)
+				mvhline(y, 0, ' ', r->w);
+			/* the line keeps the title's last part after "; " as its label */
+			const char *label = strrchr(title, ';');
+			char t[sizeof a->prompt_title + 2];
+			snprintf(t, sizeof t, "%s%s", title, label ? "" : ":");
+			tui_wrap_draw(top, 0, r->w - 1, r->y - top, t, A_BOLD);
+			title = label ? label + 1 + (label[1] == ' ') : "";
+		}
+		snprintf(line, sizeof line, "%s%s%s_", title, *title ? ": " : "", a->prompt_buf);
 		for (p = line; *p; p++)
 			cols += ((unsigned char)*p & 0xC0) != 0x80;
-		for (p = a->prompt_title; *p; p++)
+		for (p = title; *p; p++)
 			pre += ((unsigned char)*p & 0xC0) != 0x80;
-		pre += 2;
+		pre += *title ? 2 : 0;
 		for (size_t i = 0; i < l; i++)
 			if (((unsigned char)a->prompt_buf[i] & 0xC0) != 0x80) {
 				vcols++;
@@ -211,6 +314,17 @@ pane_status_draw(const struct app *a)
 		} else if (caret + x0 >= 0 && caret + x0 < r->w) {
 			mvchgat(r->y, caret + x0, 1, A_BOLD | A_REVERSE, 0, NULL);
 		}
+	} else if (a->caption[0] && a->caption_large && strcmp(a->msg, a->caption) == 0) {
+		/* shown large over the plots (caption_large_draw) */
+	} else if (a->caption[0] && !a->caption_large && strcmp(a->msg, a->caption) == 0) {
+		/* a script's caption: whole, wrapped over the rows above the line (at most 4) */
+		int rows = tui_wrap_rows(a->caption, r->w - 1), top;
+		if (rows > 4)
+			rows = 4;
+		top = r->y - rows + 1 < 0 ? 0 : r->y - rows + 1;
+		for (int y = top; y <= r->y; y++)
+			mvhline(y, 0, ' ', r->w);
+		tui_wrap_draw(top, 0, r->w - 1, r->y - top + 1, a->caption, A_BOLD);
 	} else {
 		int mattr = a->msg_error ? (a->colour ? COLOR_PAIR(PAIR_ERROR) | A_BOLD : A_BOLD) : 0;
 		static const char more[] = "... m: whole";
@@ -222,11 +336,17 @@ pane_status_draw(const struct app *a)
 			tui_puts(r->y, 0, r->w, a->msg, mattr);
 		}
 	}
-	readout_draw(a);
 
 	r = &a->L.footer;
-	keys_footer(foot, sizeof foot, r->w - 1);
-	tui_puts(r->y, 0, r->w, foot, A_DIM);
+	if (a->demo_hint != NULL) {
+		/* a demo on the real screen: what the viewer's keys do now */
+		tui_puts(r->y, 0, r->w, a->demo_hint, A_BOLD);
+	} else {
+		keys_footer(foot, sizeof foot, r->w - 1);
+		tui_puts(r->y, 0, r->w, foot, A_DIM);
+	}
+	if (a->caption[0] && a->caption_large && strcmp(a->msg, a->caption) == 0)
+		caption_large_draw(a);
 }
 
 void

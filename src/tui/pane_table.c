@@ -92,6 +92,50 @@ value(const struct hb_collision *c, const struct hb_collision *p, const struct h
 	return hb_collision_value(c, col) - hb_collision_value(p, col);
 }
 
+/*
+ * A row wider than the pane loses whole cells, not digits.  Notes after
+ * the cells (the data column, a physics note, "collisions: N") are cut
+ * where the room ends, with the mark; when the cells fill the room
+ * exactly, the rows keep their cells and the header ends in the cut mark
+ * (its last label moved a column left into its padding).  Otherwise the row is cut at the last cell boundary
+ * (ends[0..n-1], in columns) that leaves a column for the mark.  The rest
+ * is read whole elsewhere: the data column in M, a physics note in the
+ * log (m), every column in the exported collisions CSV.
+ */
+static void
+fit_row(char *line, size_t size, const int *ends, int n, int w, int header)
+{
+	int len = (int)strlen(line), keep = 0;
+
+	if (len <= w || w < 2 || n < 1)
+		return;
+	if (ends[n - 1] < w) {
+		/* the notes cut where the room ends, marked (tui_puts) */
+		return;
+	}
+	if (ends[n - 1] == w) {
+		keep = ends[n - 1];
+		line[keep] = 0;
+		if (!header)
+			return;
+		/* the last label one column left, into the blank before it */
+		int b = keep - 1;
+		while (b > 0 && line[b] != ' ')
+			b--;
+		if (line[b] == ' ') {
+			memmove(line + b, line + b + 1, (size_t)(keep - b - 1));
+			snprintf(line + keep - 1, size - (size_t)keep + 1, "%s", tui_cut_mark());
+		}
+		return;
+	}
+	for (int k = 0; k < n; k++)
+		if (ends[k] <= w - 1 && ends[k] > keep)
+			keep = ends[k];
+	if (keep == 0)
+		keep = w - 1;
+	snprintf(line + keep, size - (size_t)keep, "%*s%s", w - 1 - keep, "", tui_cut_mark());
+}
+
 void
 pane_table_draw(const struct app *a)
 {
@@ -102,6 +146,7 @@ pane_table_draw(const struct app *a)
 	int width[NCOL_MAX], delta[NCOL_MAX], ncol = columns(ps != NULL, cols, width, delta);
 	double scale[NCOL_MAX], mag[NCOL_MAX];
 	char unit[NCOL_MAX][16], line[512], cell[64];
+	int ends[NCOL_MAX + 1];
 	int k, focused = a->focus == FOCUS_TABLE;
 	long at = -1;
 	const struct hb_arc *arc = hb_sim_arc(a->sim);
@@ -139,6 +184,7 @@ pane_table_draw(const struct app *a)
 		}
 		snprintf(cell, sizeof cell, "%*s", width[k], h);
 		strncat(line, cell, sizeof line - strlen(line) - 1);
+		ends[k] = (int)strlen(line);
 	}
 	fitov_table_note(a, -1, line, sizeof line);
 	if (ps)
@@ -147,6 +193,7 @@ pane_table_draw(const struct app *a)
 		snprintf(cell, sizeof cell, "  collisions: %zu%s", hb_sim_ncollisions(a->sim),
 		         n > (long)hb_sim_ncollisions(a->sim) ? " + live" : "");
 	strncat(line, cell, sizeof line - strlen(line) - 1);
+	fit_row(line, sizeof line, ends, ncol, r->w, 1);
 	tui_puts(r->y, r->x, r->w, line, A_BOLD | (focused ? A_UNDERLINE : 0));
 
 	/* scroll so the selection is visible */
@@ -192,6 +239,7 @@ pane_table_draw(const struct app *a)
 			char w[64];
 			snprintf(w, sizeof w, "%*s", width[k], cell);
 			strncat(line, w, sizeof line - strlen(line) - 1);
+			ends[k] = (int)strlen(line);
 		}
 		if (!c->complete)
 			strncat(line, "  live (in contact)", sizeof line - strlen(line) - 1);
@@ -208,6 +256,7 @@ pane_table_draw(const struct app *a)
 			attr |= a->colour ? COLOR_PAIR(PAIR_ERROR) : A_BOLD;
 		if (!c->complete && a->colour)
 			attr |= COLOR_PAIR(PAIR_CONTACT);
+		fit_row(line, sizeof line, ends, ncol, r->w, 0);
 		tui_puts(r->y + 1 + (int)(i - top), r->x, r->w, line, attr);
 	}
 	if (n == 0)

@@ -25,13 +25,66 @@ count(const struct app *a)
 	return n;
 }
 
+/* The selected entry whole: name and title, description, then path or parameters. */
+static void
+details(const struct app *a, char *out, size_t n)
+{
+	int sel = a->pick_sel;
+
+	out[0] = 0;
+	if (sel < 0 || sel >= count(a))
+		return;
+	if (a->overlay == OV_PRESET) {
+		const struct hb_preset_info *p = &a->presets[sel];
+		snprintf(out, n, "%s: %s. %s (%s)", p->name, p->title, p->description, p->path);
+	} else {
+		const struct hb_law_type *l = hb_law_list()[sel];
+		size_t len;
+		snprintf(out, n, "%s: %s. %s n_z = %d; parameters:", l->name, l->title, l->description, l->n_z);
+		for (int k = 0; k < l->n_params; k++) {
+			len = strlen(out);
+			snprintf(out + len, n - len, " %s", l->params[k].name);
+		}
+	}
+}
+
+/*
+ * The box's geometry: h rows from y0 = 1, w columns; inside,
+ * the list's rows, a blank row, then the selected entry's details wrapped
+ * (at most half the inside, a cut ending in the mark).
+ */
+static void
+geometry(const struct app *a, int *h, int *w, int *list, int *drows)
+{
+	char d[2048];
+	int in;
+
+	*h = a->L.lines - 4;   /* as the help and the log: over the plots and the bottom pane */
+	if (*h < 8)
+		*h = a->L.plots.h + 1;
+	*w = a->L.cols - 6;
+	if (*w > 110)
+		*w = 110;
+	in = *h - 2;
+	details(a, d, sizeof d);
+	*drows = tui_wrap_rows(d, *w - 3);
+	if (*drows > in / 2)
+		*drows = in / 2;
+	if (*drows < 1)
+		*drows = 1;
+	*list = in - 1 - *drows;
+	if (*list < 1)
+		*list = 1;
+}
+
 /* Rows of the picker's list (as pickers_draw lays it out). */
 static int
 page(const struct app *a)
 {
-	int rows = a->L.plots.h + 1 - 5;
+	int h, w, list, drows;
 
-	return rows > 1 ? rows : 1;
+	geometry(a, &h, &w, &list, &drows);
+	return list;
 }
 
 void
@@ -97,19 +150,15 @@ pickers_key(struct app *a, int ch)
 void
 pickers_draw(const struct app *a)
 {
-	int n = count(a), w = a->L.cols - 6, h = a->L.plots.h + 1, x0 = 3, y0 = 1;
-	int rows = h - 5, top = 0, i;
-	char line[512];
+	int n = count(a), h, w, rows, drows, x0 = 3, y0 = 1, top = 0, i;
+	char line[512], d[2048];
 
-	if (w > 110)
-		w = 110;
-	if (rows < 1)
-		rows = 1;
+	geometry(a, &h, &w, &rows, &drows);
 	if (a->pick_sel >= rows)
 		top = a->pick_sel - rows + 1;
 	box_draw(y0, x0, h, w, a->overlay == OV_PRESET ? " open a preset (Enter opens, Esc closes) "
 	                                               : " contact law (Enter chooses, Esc closes) ");
-	/* the text inside the border */
+	/* the text inside the border; a cut entry is whole in the details below */
 	x0++;
 	w -= 2;
 	for (i = top; i < n && i < top + rows; i++) {
@@ -121,24 +170,7 @@ pickers_draw(const struct app *a)
 			         hb_law_list()[i] == hb_sim_scene(a->sim)->law ? "  (current)" : "");
 		tui_puts(y0 + 1 + i - top, x0, w, line, attr);
 	}
-	/* the description of the selected entry, on the last rows of the box */
-	if (a->pick_sel >= 0 && a->pick_sel < n) {
-		if (a->overlay == OV_PRESET) {
-			snprintf(line, sizeof line, " %s", a->presets[a->pick_sel].description);
-			tui_puts(y0 + h - 3, x0, w, line, A_DIM);
-			snprintf(line, sizeof line, " %.500s", a->presets[a->pick_sel].path);
-			tui_puts(y0 + h - 2, x0, w, line, A_DIM);
-		} else {
-			const struct hb_law_type *l = hb_law_list()[a->pick_sel];
-			size_t len;
-			snprintf(line, sizeof line, " %s", l->description);
-			tui_puts(y0 + h - 3, x0, w, line, A_DIM);
-			snprintf(line, sizeof line, " n_z = %d; parameters:", l->n_z);
-			for (int k = 0; k < l->n_params; k++) {
-				len = strlen(line);
-				snprintf(line + len, sizeof line - len, " %s", l->params[k].name);
-			}
-			tui_puts(y0 + h - 2, x0, w, line, A_DIM);
-		}
-	}
+	/* the selected entry whole, wrapped on the last rows of the box */
+	details(a, d, sizeof d);
+	tui_wrap_draw(y0 + h - 1 - drows, x0 + 1, w - 1, drows, d, A_DIM);
 }

@@ -9,7 +9,9 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
+#include "term.h"
 #include "tui.h"
 #include "units.h"
 
@@ -66,6 +68,51 @@ stiff_note(const struct app *a, char *buf, size_t n)
 	return buf;
 }
 
+/*
+ * Presentation: widens each quantity's held range with the samples not
+ * seen yet of the runs drawn (the pins, then the current run); a change
+ * of those runs (a pin, or an edit: the current run's scene changed)
+ * starts again from their first samples.
+ */
+static void
+hold_update(struct app *a)
+{
+	const struct hb_sim *s[APP_MAX_PINS + 1];
+	int n = 0, same;
+
+	for (int i = 0; i < a->npins; i++)
+		s[n++] = a->pin[i].sim;
+	s[n++] = a->sim;
+	same = n == a->hold.n
+	       && memcmp(&a->hold.scene, hb_sim_scene(a->sim), sizeof a->hold.scene) == 0;
+	for (int k = 0; same && k < n; k++)
+		same = s[k] == a->hold.sim[k] && a->hold.seen[k] <= hb_arc_len(hb_sim_arc(s[k]));
+	if (!same) {
+		a->hold.n = n;
+		memcpy(&a->hold.scene, hb_sim_scene(a->sim), sizeof a->hold.scene);
+		for (int k = 0; k < n; k++) {
+			a->hold.sim[k] = s[k];
+			a->hold.seen[k] = 0;
+		}
+		for (int q = 0; q < 3; q++)
+			a->hold.lo[q] = a->hold.hi[q] = 0;
+	}
+	for (int k = 0; k < n; k++) {
+		const struct hb_arc *arc = hb_sim_arc(s[k]);
+		size_t len = hb_arc_len(arc);
+		for (size_t i = a->hold.seen[k]; i < len; i++) {
+			const struct hb_arc_sample *p = hb_arc_at(arc, i);
+			double v[3] = { p->x, p->xc, p->Fc };
+			for (int q = 0; q < 3; q++)
+				if (isfinite(v[q])) {
+					a->hold.lo[q] = fmin(a->hold.lo[q], v[q]);
+					a->hold.hi[q] = fmax(a->hold.hi[q], v[q]);
+				}
+		}
+		a->hold.seen[k] = len;
+	}
+}
+
 int
 playback_tick(struct app *a, double dt)
 {
@@ -74,6 +121,8 @@ playback_tick(struct app *a, double dt)
 	double sp = a->speed, tnew;
 	size_t k;
 
+	if (a->present)
+		hold_update(a);
 	a->in_slow = 0;
 	if (!a->playing || hb_arc_len(arc) == 0)
 		return 0;
@@ -93,6 +142,8 @@ playback_tick(struct app *a, double dt)
 			if (sp > td / SLOW_WALL)
 				sp = td / SLOW_WALL;
 			a->in_slow = 1;
+			a->slow_t0 = iv->t0;
+			a->slow_td = td;
 		}
 	}
 	tnew = a->tcur + sp * dt;
@@ -163,26 +214,37 @@ void act_jview(struct app *a) { a->view = a->view == VIEW_J ? VIEW_WHOLE : VIEW_
 /*
  * T: presentation mode for teaching: no table nor panel, the plots take
  * their rows, the view follows the cursor, each contact is played in slow
- * motion, and the run loops.  T again restores what was before.
+ * motion with the view on the contact as it forms, each axis holds its
+ * scale over the run, lines are thick, and the run loops.  T again: the
+ * same on the light theme (with colours); T a third time restores what
+ * was before.
  */
 void
 act_present(struct app *a)
 {
-	static int saved_view, saved_slowmo;
-
-	a->present = !a->present;
-	if (a->present) {
-		saved_view = a->view;
-		saved_slowmo = a->slowmo;
+	if (!a->present) {
+		a->present = 1;
+		a->present_view = a->view;
+		a->present_slowmo = a->slowmo;
 		a->view = VIEW_FOLLOW;
 		a->slowmo = 1;
 		a->playing = 1;
+		a->hold.n = 0;
+		hold_update(a);
 		if (hb_sim_end(a->sim) != HB_SIM_RUNNING && a->cursor + 1 >= hb_arc_len(hb_sim_arc(a->sim)))
 			cursor_set(a, 0);
-		app_msg(a, 0, "presentation: contacts in slow motion, looping (T: back)");
+		app_msg(a, 0, "presentation: contacts in slow motion, looping (T: %s)",
+		        a->colour ? "light theme" : "back");
+	} else if (a->present == 1 && a->colour) {
+		a->present = 2;
+		term_light(1);
+		app_msg(a, 0, "presentation on the light theme (T: back)");
 	} else {
-		a->view = saved_view;
-		a->slowmo = saved_slowmo;
+		if (a->present == 2)
+			term_light(0);
+		a->present = 0;
+		a->view = a->present_view;
+		a->slowmo = a->present_slowmo;
 		app_msg(a, 0, "presentation off");
 	}
 	app_relayout(a);

@@ -296,7 +296,7 @@ act_export(struct app *a)
 	if (getcwd(cwd, sizeof cwd) == NULL)
 		snprintf(cwd, sizeof cwd, ".");
 	snprintf(base, sizeof base, "%.40s-%s", a->preset, stamp);
-	prompt_open(a, PROMPT_EXPORT, base, "export to %.60s/BASE-trace.csv, -collisions.csv, .preset; BASE",
+	prompt_open(a, PROMPT_EXPORT, base, "export to %s/BASE-trace.csv, -collisions.csv, .preset; BASE",
 	            cwd);
 }
 

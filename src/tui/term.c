@@ -64,6 +64,33 @@ locale_setup(void)
 	utf8 = cs != NULL && (cnum_casecmp(cs, "UTF-8") == 0 || cnum_casecmp(cs, "utf8") == 0);
 }
 
+/*
+ * The colour pairs of the dark theme (the terminal's own background) or of
+ * the light one (dark inks on white, for a projector); nothing without
+ * colours.
+ */
+void
+term_light(int on)
+{
+	short bg = on ? COLOR_WHITE : -1;
+
+	if (!colour)
+		return;
+	init_pair(PAIR_INK1, on ? COLOR_BLUE : COLOR_CYAN, bg);
+	init_pair(PAIR_INK1 + 1, on ? COLOR_RED : COLOR_YELLOW, bg);
+	init_pair(PAIR_INK1 + 2, COLOR_MAGENTA, bg);
+	init_pair(PAIR_INK1 + 3, COLOR_GREEN, bg);
+	init_pair(PAIR_INK1 + 4, on ? COLOR_BLACK : COLOR_RED, bg);
+	init_pair(PAIR_INK1 + 5, on ? COLOR_CYAN : COLOR_BLUE, bg);
+	init_pair(PAIR_CONTACT, COLOR_RED, bg);
+	init_pair(PAIR_STATUS, on ? COLOR_WHITE : COLOR_BLACK, on ? COLOR_BLUE : COLOR_CYAN);
+	init_pair(PAIR_ERROR, COLOR_RED, bg);
+	init_pair(PAIR_CURSOR, COLOR_WHITE, COLOR_BLUE);
+	init_pair(PAIR_TITLE, on ? COLOR_BLUE : COLOR_YELLOW, bg);
+	init_pair(PAIR_PAPER, on ? COLOR_BLACK : -1, bg);
+	bkgd(on ? COLOR_PAIR(PAIR_PAPER) : 0);
+}
+
 static void
 colours_setup(void)
 {
@@ -75,17 +102,8 @@ colours_setup(void)
 	if (start_color() != OK)
 		return;
 	use_default_colors();
-	init_pair(PAIR_INK1, COLOR_CYAN, -1);
-	init_pair(PAIR_INK1 + 1, COLOR_YELLOW, -1);
-	init_pair(PAIR_INK1 + 2, COLOR_MAGENTA, -1);
-	init_pair(PAIR_INK1 + 3, COLOR_GREEN, -1);
-	init_pair(PAIR_INK1 + 4, COLOR_RED, -1);
-	init_pair(PAIR_INK1 + 5, COLOR_BLUE, -1);
-	init_pair(PAIR_CONTACT, COLOR_RED, -1);
-	init_pair(PAIR_STATUS, COLOR_BLACK, COLOR_CYAN);
-	init_pair(PAIR_ERROR, COLOR_RED, -1);
-	init_pair(PAIR_CURSOR, COLOR_WHITE, COLOR_BLUE);
-	init_pair(PAIR_TITLE, COLOR_YELLOW, -1);
+	colour = 1;
+	term_light(0);
 	colour = 1;
 }
 

@@ -18,7 +18,12 @@ enum {
 	PAIR_ERROR = 11,   /* messages that say something failed */
 	PAIR_CURSOR = 12,  /* the cursor column */
 	PAIR_TITLE = 13,
+	PAIR_PAPER = 14,   /* plain text: black on white in the light theme */
 };
+
+/* The light theme (dark inks on white, for a projector) or the dark one; needs colours. */
+void
+term_light(int on);
 
 /*
  * Interactive setup: setlocale, initscr, cbreak, noecho, keypad,

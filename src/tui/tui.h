@@ -63,7 +63,23 @@ struct app {
 	long branch_j;
 	int nbranches;
 	int compare;                /* table differences against pin compare-1 (0: off) */
-	int present;                /* presentation mode (T) */
+	int present;                /* presentation mode (T): 1 dark, 2 light theme */
+	int present_view, present_slowmo;   /* what T puts back */
+	double slow_t0, slow_td;    /* in slow motion: the contact's start and the duration it is timed by */
+	/*
+	 * Presentation: each quantity's range (x, x_c, F_c) over every sample
+	 * seen so far of the runs drawn, so that an axis holds its scale.
+	 */
+	struct {
+		const struct hb_sim *sim[APP_MAX_PINS + 1];
+		size_t seen[APP_MAX_PINS + 1];
+		int n;
+		struct hb_scene scene;  /* the current run's, as last seen: an edit restarts the same run */
+		double lo[3], hi[3];
+	} hold;
+	const char *demo_hint;      /* a --script demo on the real screen: the footer's text */
+	char caption[512];          /* a script's caption (wrapped over the message line) */
+	int caption_large;          /* ... shown large, in a box over the plots */
 	int playing;
 	double speed;               /* playback: simulated s per wall s */
 	int slowmo;                 /* slow motion through contacts enabled */
@@ -82,7 +98,7 @@ struct app {
 	int npresets;
 	int prompt_kind;
 	char prompt_key[48];
-	char prompt_title[96];
+	char prompt_title[640];
 	char prompt_buf[256];
 	size_t prompt_pos;          /* the caret: a byte offset into prompt_buf */
 	int prompt_fresh;           /* the text is as given: the first printable key replaces it */
@@ -179,9 +195,20 @@ unsigned physics_flag(const struct app *a, long i);   /* HB_CHECK_BAD_* of colli
 /* mouse.c */
 void mouse_event(struct app *a);
 
-/* Cells of text drawing with clipping (pane_status.c). */
+/* A script's caption (log.c): on the message line wrapped, or large in a box; "" clears. */
+void app_caption(struct app *a, const char *text, int large);
+
+/* Cells of text drawing with clipping (pane_status.c): a cut text ends in tui_cut_mark(). */
 void
 tui_puts(int y, int x, int maxw, const char *s, int attr);
+const char *tui_cut_mark(void);
+/*
+ * Draws s word-wrapped into rows of w columns from (y, x), at most maxrows
+ * (log.c); a text that needs more ends in the cut mark.  Returns the rows
+ * drawn.  tui_wrap_rows: the rows s needs at width w.
+ */
+int tui_wrap_draw(int y, int x, int w, int maxrows, const char *s, int attr);
+int tui_wrap_rows(const char *s, int w);
 
 /* Drawing (pane_*.c): read the state, draw into stdscr. */
 void pane_plot_draw(const struct app *a);

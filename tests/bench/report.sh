@@ -1,9 +1,9 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # report.sh [DIR]: after `make bench` (DIR, default build/bench), splices the
-# per-study table (DIR/study-table.md) into README.md between the
+# per-study table (DIR/study-table.md) into docs/speed-and-accuracy.md between the
 # STUDY-TABLE markers, and writes tests/bench/REPORT.md: a header, the
-# README's engine summary (between the ENGINE-V2 markers) and the bench's
+# engine summary of docs/speed-and-accuracy.md (between the ENGINE-V2 markers) and the bench's
 # own report (DIR/report.md).  Run from the top of the tree (make bench-docs).
 dir=${1:-build/bench}
 here=$(dirname "$0")
@@ -11,7 +11,8 @@ for f in "$dir/study-table.md" "$dir/report.md"; do
 	[ -r "$f" ] || { echo "report.sh: cannot read $f (run make bench first)" >&2; exit 2; }
 done
 . tests/tui/readme.inc
-{ echo; cat "$dir/study-table.md"; echo; } | readme_splice README.md STUDY-TABLE || exit 1
+doc=docs/speed-and-accuracy.md
+{ echo; cat "$dir/study-table.md"; echo; } | readme_splice "$doc" STUDY-TABLE || exit 1
 out="$here/REPORT.md"
 {
 	cat <<'HEAD'
@@ -20,18 +21,18 @@ out="$here/REPORT.md"
 This file is written by `make bench-docs` from the latest `make bench`
 (tests/bench/bench.c, which writes build/bench/report.md and
 build/bench/work-precision.csv, the full run): first the engine-v2 summary
-the README carries, then the bench's report. Steps, rejected steps, rhs
+docs/speed-and-accuracy.md carries, then the bench's report. Steps, rejected steps, rhs
 counts and errors do not depend on the machine's load; times do (the
 summary's side-by-side times were measured with hyperfine, the bench's
 in-process).
 
-## Engine v2 (as in the README)
+## Engine v2 (as in docs/speed-and-accuracy.md)
 
 HEAD
-	readme_block README.md ENGINE-V2 | grep -v -e '^<!-- STUDY-TABLE-BEGIN -->$' -e '^<!-- STUDY-TABLE-END -->$'
+	readme_block "$doc" ENGINE-V2 | grep -v -e '^<!-- STUDY-TABLE-BEGIN -->$' -e '^<!-- STUDY-TABLE-END -->$'
 	echo
 	echo 'The report below is the new run (`make bench`), with the dop853 rows among the extra settings of each study.'
 	echo
 	cat "$dir/report.md"
 } >"$out.new" && mv "$out.new" "$out"
-echo "README.md (STUDY-TABLE) and $out written"
+echo "$doc (STUDY-TABLE) and $out written"

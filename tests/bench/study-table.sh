@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
-# study-table.sh [CSV]: the per-study table of README "Speed and accuracy"
+# study-table.sh [CSV]: the per-study table of docs/speed-and-accuracy.md
 # and tests/bench/REPORT.md, from a `make bench` run (default
 # build/bench/work-precision.csv) and the run before issue 8
 # (tests/bench/before-issue-8.csv: rk8pd at rtol 1e-12, atol 1e-14, the

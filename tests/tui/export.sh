@@ -12,7 +12,8 @@ start a 80 24
 wait_for a ' finished$' 150
 mkdir -p "$TMP/out"
 keys a e
-if wait_for a "^\\.\\.\\..*BASE: steel-on-bitumen-[0-9]{8}-[0-9]{6}_\$" 30 && keys a C-u \
+if wait_for a "^BASE: steel-on-bitumen-[0-9]{8}-[0-9]{6}_\$" 30 \
+   && wait_for a "^export to $TMP/BASE-trace\\.csv, -collisions\\.csv, \\.preset; BASE\$" 30 && keys a C-u \
    && wait_for a "^export to $TMP/BASE-trace\\.csv, -collisions\\.csv, \\.preset; BASE: _" 30; then
 	ok "the export prompt names the folder ($TMP) and proposes a name from the preset"
 else

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # --script on a real terminal plays on the real screen, for teaching: the
 # captions appear on the message line while the run plays, waits take real
-# time, and a key pressed by the viewer ends it.  A folder given as the
+# time, a key pressed by the viewer pauses and resumes it, q quits.  A folder given as the
 # script is refused.  tmux: send-keys, then poll capture-pane.
 . "$(dirname "$0")/common.inc"
 
@@ -37,10 +37,22 @@ else
 	notok "the script edits c and switches to the presentation mode" a
 fi
 keys a x
-if wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ]; then
-	ok "a key pressed by the viewer ends the presentation (status 0)"
+if wait_for a '^demo paused: any key resumes, q quits' 50 && wait_for a ' paused ' 10; then
+	ok "a key pressed by the viewer pauses the demo (the cursor stops)"
 else
-	notok "a key ends the presentation (rc $(cat "$TMP/a.rc" 2>/dev/null))" a
+	notok "a key pressed by the viewer pauses the demo" a
+fi
+keys a x
+if wait_for a '^demo: any key pauses, q quits' 50 && wait_for a ' playing ' 30; then
+	ok "another key resumes it"
+else
+	notok "another key resumes it" a
+fi
+keys a q
+if wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ]; then
+	ok "q quits the demo (status 0)"
+else
+	notok "q quits the demo (rc $(cat "$TMP/a.rc" 2>/dev/null))" a
 fi
 
 mkdir -p "$TMP/adir"
