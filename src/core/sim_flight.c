@@ -61,10 +61,11 @@ flight_event(double x, double v, double a)
 int
 hbs_flight_closed(struct hb_sim *s)
 {
+	struct iface *I = s->I;
 	const double T = s->sc.run.T;
-	const double t0 = s->t, x0 = s->x, v0 = s->v;
-	const double a = hb_scene_Fer(&s->sc, t0) / s->sc.d.m;
-	const double Ee0 = s->Ee;
+	const double t0 = s->t, x0 = I->x, v0 = I->v;
+	const double a = iface_Fer(s, I, t0) / I->m;
+	const double Ee0 = I->Ee;
 	double tau = flight_event(x0, v0, a), tend, tapex = INFINITY;
 	int i, rc, it = 0;
 
@@ -88,16 +89,16 @@ hbs_flight_closed(struct hb_sim *s)
 		if (tk <= 0.0)
 			continue;
 		s->t = t0 + tk;
-		flight_at(x0, v0, a, s->t - t0, &s->x, &s->v);
-		s->Ee = Ee0 + a * s->sc.d.m * (s->x - x0);
+		flight_at(x0, v0, a, s->t - t0, &I->x, &I->v);
+		I->Ee = Ee0 + a * I->m * (I->x - x0);
 		hbs_set_com(s);
 		if ((rc = hbs_push_sample(s, kind)))
 			return rc;
 	}
 	if (tau > T - t0) {
 		s->t = T;
-		flight_at(x0, v0, a, T - t0, &s->x, &s->v);
-		s->Ee = Ee0 + a * s->sc.d.m * (s->x - x0);
+		flight_at(x0, v0, a, T - t0, &I->x, &I->v);
+		I->Ee = Ee0 + a * I->m * (I->x - x0);
 		hbs_set_com(s);
 		if ((rc = hbs_push_sample(s, HB_ARC_END)))
 			return rc;
@@ -110,20 +111,20 @@ hbs_flight_closed(struct hb_sim *s)
 
 		if (tau == 0.0)
 			te = t0;
-		flight_at(x0, v0, a, te - t0, &s->x, &s->v);
-		while (!(s->x <= 0.0 && s->v <= 0.0) && it < 1000) {
+		flight_at(x0, v0, a, te - t0, &I->x, &I->v);
+		while (!(I->x <= 0.0 && I->v <= 0.0) && it < 1000) {
 			te = nextafter(te, INFINITY);
-			flight_at(x0, v0, a, te - t0, &s->x, &s->v);
+			flight_at(x0, v0, a, te - t0, &I->x, &I->v);
 			it++;
 		}
-		if (!(s->x <= 0.0 && s->v <= 0.0))
+		if (!(I->x <= 0.0 && I->v <= 0.0))
 			return hbs_fail(s, HB_ENUMERIC, "flight event could not be placed in D");
 		tprev = te > t0 ? nextafter(te, -INFINITY) : te;
 		flight_at(x0, v0, a, tprev - t0, &xp, &vp);
 		s->t = te;
-		s->Ee = Ee0 + a * s->sc.d.m * (s->x - x0);
+		I->Ee = Ee0 + a * I->m * (I->x - x0);
 		hbs_set_com(s);
 		return hbs_jump(s, tau == 0.0 ? HB_LOCATE_START : HB_LOCATE_CLOSED_FORM, it, te - tprev,
-		            fmax(xp, vp), fmax(s->x, s->v));
+		            fmax(xp, vp), fmax(I->x, I->v));
 	}
 }

@@ -64,8 +64,48 @@ struct cached {
 	double u[MAXDIM];
 };
 
+/*
+ * The chain (docs/chains.md section 1): bodies 1..N from the bottom up
+ * (body[0] is body 1) and the interfaces between them, interface 0 on the
+ * floor when there is one.  Today's scenes are N = 2 without a floor (the
+ * full system: chain body 1 is the scene's body 2, the lower one) and N = 1
+ * on the floor (the reduced system).  One cluster, of the chain's single
+ * interface, is integrated at a time, in the interface's coordinates
+ * (docs/chains.md section 8); the bodies' positions and velocities follow
+ * from those and the centre of mass where a sample is recorded.
+ */
+enum { MAXBODY = 2, MAXIFACE = 1 };
+
+struct body {
+	double m;               /* kg */
+	double l;               /* half-length along the axis (radius), m; 0 when unknown */
+	double y, u;            /* position and velocity of the centre of mass (derived) */
+	double Fe;              /* applied force at t (derived) */
+};
+
+struct iface {
+	const struct hb_law_type *law;
+	const double *par;      /* the law's parameters */
+	int ext;                /* rule R1 continuation */
+	int lo, hi;             /* the bodies below and above (index into body[]; lo = -1: the floor) */
+	double m;               /* effective mass m_lo m_hi / (m_lo + m_hi) (m_hi on the floor) */
+
+	/* its state at (t, j) */
+	int q;
+	double x, v, xc, z[HB_LAW_MAX_Z];
+	double W, JFc, JFe, xcmax, Fcmax;
+	double Ee, Wc;          /* works of its F_er and F_c since t = 0 */
+	double Wc0;             /* Wc at the commencement of the contact in progress */
+	double xe;              /* x at the commencement of the contact in progress */
+	double te, vi;          /* commencement time and approach velocity */
+};
+
 struct hb_sim {
 	struct hb_scene sc;
+	int nbody, k0, nif;     /* N, the first interface's number (0: a floor), N - k0 */
+	struct body body[MAXBODY];
+	struct iface ifc[MAXIFACE]; /* ifc[i] is interface k0 + i */
+	struct iface *I;        /* the interface of the flow interval (the cluster in contact, or in flight) */
 	struct hb_arc *arc;
 	struct hb_collision *col;
 	size_t ncol, colcap;
@@ -75,16 +115,10 @@ struct hb_sim {
 	char endmsg[700];
 	struct hb_sim_stats st;
 
-	/* canonical state at (t, j) */
+	/* canonical state at (t, j): the interfaces' (above) and the centre of mass of the cluster */
 	double t;
 	long j;
-	int q;
-	double x, v, xc, z[HB_LAW_MAX_Z], xm, vm;
-	double W, JFc, JFe, xcmax, Fcmax;
-	double Ee, Wc;      /* works of F_er and F_c since t = 0 */
-	double Wc0;         /* Wc at the commencement of the contact in progress */
-	double xe;          /* x at the commencement of the contact in progress */
-	double te, vi;      /* commencement time and approach velocity */
+	double xm, vm;
 	double t_instant;   /* time of the last jump, and jumps at it */
 	int n_instant;
 
@@ -139,8 +173,27 @@ struct hb_sim {
 static inline double
 phi_at(const struct hb_sim *s, double xc, const double *z, double v)
 {
-	return s->sc.law->phi(s->sc.par, s->sc.ext, xc, z, v);
+	return s->I->law->phi(s->I->par, s->I->ext, xc, z, v);
 }
+
+/*
+ * The interface's reduced applied force F_e,r at t (the paper's, for its
+ * pair; the scene's loads in the reduced and the full system).
+ */
+static inline double
+iface_Fer(const struct hb_sim *s, const struct iface *I, double t)
+{
+	(void)I;
+	return hb_scene_Fer(&s->sc, t);
+}
+
+/* sim.c: the chain of the scene (bodies, interfaces bound to the scene's law) */
+void
+hbs_chain_bind(struct hb_sim *s);
+
+/* ... the bodies' positions, velocities and loads at the current state */
+void
+hbs_bodies_sync(struct hb_sim *s);
 
 /* sim_flow.c */
 int

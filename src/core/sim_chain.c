@@ -1,0 +1,70 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/*
+ * sim_chain.c - the chain a scene describes (docs/chains.md section 1):
+ * its bodies, from the bottom up, and its interfaces, each bound to its law
+ * and with its effective mass; the bodies' positions, velocities and loads
+ * at the current state.
+ *
+ * Today's scenes are two chains:
+ *  - the full system H_f: N = 2 bodies, no floor, interface 1 between them;
+ *    chain body 1 (below) is the scene's body 2, chain body 2 (above) the
+ *    scene's body 1 (the paper's body 1 is the upper one);
+ *  - the reduced system H_r: N = 1 body on the floor, interface 0.
+ * Their positions are measured so that the gap is their difference (the
+ * half-lengths are taken into the positions: l = 0), as the paper's x and
+ * x_m are.
+ */
+#include "sim_impl.h"
+
+void
+hbs_chain_bind(struct hb_sim *s)
+{
+	const struct hb_scene *sc = &s->sc;
+	struct iface *I = &s->ifc[0];
+
+	memset(s->body, 0, sizeof s->body);
+	if (sc->d.system == HB_SCENE_FULL) {
+		s->nbody = 2;
+		s->k0 = 1;
+		s->body[0].m = sc->d.m2;
+		s->body[1].m = sc->d.m1;
+		I->lo = 0;
+		I->hi = 1;
+	} else {
+		s->nbody = 1;
+		s->k0 = 0;
+		s->body[0].m = sc->d.m1;
+		I->lo = -1;
+		I->hi = 0;
+	}
+	s->nif = s->nbody - s->k0;
+	I->law = sc->law;
+	I->par = sc->par;
+	I->ext = sc->ext;
+	I->m = sc->d.m; /* m_lo m_hi / (m_lo + m_hi), as the scene derived it (m_hi on the floor) */
+	s->I = I;
+}
+
+void
+hbs_bodies_sync(struct hb_sim *s)
+{
+	const struct hb_scene *sc = &s->sc;
+	const struct iface *I = &s->ifc[0];
+	double F1, F2;
+
+	hb_scene_loads_at(sc, s->t, &F1, &F2);
+	if (s->nbody == 2) {
+		struct body *lo = &s->body[I->lo], *hi = &s->body[I->hi];
+
+		hi->y = s->xm + sc->d.etac * I->x;
+		hi->u = s->vm + sc->d.etac * I->v;
+		lo->y = s->xm - sc->d.eta * I->x;
+		lo->u = s->vm - sc->d.eta * I->v;
+		hi->Fe = F1;
+		lo->Fe = F2;
+	} else {
+		s->body[0].y = I->x;
+		s->body[0].u = I->v;
+		s->body[0].Fe = F1;
+	}
+}
