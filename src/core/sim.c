@@ -318,7 +318,8 @@ build(struct hb_sim *s, char *msg, size_t n)
 {
 	int q;
 
-	hbs_chain_bind(s);
+	if (hbs_chain_bind(s))
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory for the chain");
 	for (q = 0; q < 2; q++)
 		s->stepper[q] = s->sc.run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : s->sc.run.stepper;
 	for (q = 0; q < 2; q++)
@@ -394,6 +395,7 @@ hb_sim_free(struct hb_sim *s)
 	if (s->lambda)
 		gsl_vector_complex_free(s->lambda);
 	arc_free(s->arc);
+	hbs_chain_free(s);
 	free(s->col);
 	free(s);
 }
@@ -622,7 +624,7 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 			hbs_phase_free(&s->ph[0]);
 			hbs_phase_free(&s->ph[1]);
 			s->sc = old;
-			hbs_chain_bind(s);
+			hbs_chain_bind(s); /* no larger than the arrays it had: cannot fail */
 			memcpy(s->ph, oldph, sizeof s->ph);
 			memcpy(s->stepper, oldstepper, sizeof s->stepper);
 			memcpy(s->built, oldbuilt, sizeof s->built);

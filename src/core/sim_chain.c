@@ -16,33 +16,65 @@
  */
 #include "sim_impl.h"
 
-void
+/* Grows *p (of *cap elements of size sz) to n elements, zeroing the new ones. */
+static int
+grow(void **p, int *cap, int n, size_t sz)
+{
+	void *q;
+
+	if (n <= *cap)
+		return 0;
+	q = realloc(*p, (size_t)n * sz);
+	if (q == NULL)
+		return HB_ENOMEM;
+	memset((char *)q + (size_t)*cap * sz, 0, (size_t)(n - *cap) * sz);
+	*p = q;
+	*cap = n;
+	return 0;
+}
+
+int
 hbs_chain_bind(struct hb_sim *s)
 {
 	const struct hb_scene *sc = &s->sc;
-	struct iface *I = &s->ifc[0];
+	int full = sc->d.system == HB_SCENE_FULL;
+	int nbody = full ? 2 : 1, k0 = full ? 1 : 0;
+	struct iface *I;
 
-	memset(s->body, 0, sizeof s->body);
-	if (sc->d.system == HB_SCENE_FULL) {
-		s->nbody = 2;
-		s->k0 = 1;
+	if (grow((void **)&s->body, &s->capbody, nbody, sizeof *s->body) ||
+	    grow((void **)&s->ifc, &s->capif, nbody - k0, sizeof *s->ifc))
+		return HB_ENOMEM;
+	s->nbody = nbody;
+	s->k0 = k0;
+	s->nif = nbody - k0;
+	memset(s->body, 0, (size_t)nbody * sizeof *s->body);
+	I = &s->ifc[0];
+	if (full) {
 		s->body[0].m = sc->d.m2;
 		s->body[1].m = sc->d.m1;
 		I->lo = 0;
 		I->hi = 1;
 	} else {
-		s->nbody = 1;
-		s->k0 = 0;
 		s->body[0].m = sc->d.m1;
 		I->lo = -1;
 		I->hi = 0;
 	}
-	s->nif = s->nbody - s->k0;
 	I->law = sc->law;
 	I->par = sc->par;
 	I->ext = sc->ext;
 	I->m = sc->d.m; /* m_lo m_hi / (m_lo + m_hi), as the scene derived it (m_hi on the floor) */
 	s->I = I;
+	return 0;
+}
+
+void
+hbs_chain_free(struct hb_sim *s)
+{
+	free(s->body);
+	free(s->ifc);
+	s->body = NULL;
+	s->ifc = NULL;
+	s->capbody = s->capif = 0;
 }
 
 void

@@ -74,8 +74,6 @@ struct cached {
  * (docs/chains.md section 8); the bodies' positions and velocities follow
  * from those and the centre of mass where a sample is recorded.
  */
-enum { MAXBODY = 2, MAXIFACE = 1 };
-
 struct body {
 	double m;               /* kg */
 	double l;               /* half-length along the axis (radius), m; 0 when unknown */
@@ -103,8 +101,9 @@ struct iface {
 struct hb_sim {
 	struct hb_scene sc;
 	int nbody, k0, nif;     /* N, the first interface's number (0: a floor), N - k0 */
-	struct body body[MAXBODY];
-	struct iface ifc[MAXIFACE]; /* ifc[i] is interface k0 + i */
+	struct body *body;      /* body[i] is body i + 1 */
+	struct iface *ifc;      /* ifc[i] is interface k0 + i */
+	int capbody, capif;     /* their allocated lengths */
 	struct iface *I;        /* the interface of the flow interval (the cluster in contact, or in flight) */
 	struct hb_arc *arc;
 	struct hb_collision *col;
@@ -187,9 +186,17 @@ iface_Fer(const struct hb_sim *s, const struct iface *I, double t)
 	return hb_scene_Fer(&s->sc, t);
 }
 
-/* sim.c: the chain of the scene (bodies, interfaces bound to the scene's law) */
-void
+/*
+ * sim_chain.c: the chain of the scene (bodies, interfaces bound to the
+ * scene's law); the interfaces' states are kept where the chain keeps its
+ * shape.  HB_ENOMEM (the simulator as it was) when its arrays cannot grow.
+ */
+int
 hbs_chain_bind(struct hb_sim *s);
+
+/* ... their arrays freed */
+void
+hbs_chain_free(struct hb_sim *s);
 
 /* ... the bodies' positions, velocities and loads at the current state */
 void
