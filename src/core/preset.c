@@ -144,8 +144,8 @@ collect_free(struct collect *c)
 }
 
 /* The sections, in the order a preset is written. */
-static const char *const sections[] = { "scene", "body1", "body2", "law", "loads", "initial",
-	"run" };
+static const char *const sections[] = { "scene", "body1", "body2", "law", "chain", "striker",
+	"loads", "initial", "run" };
 #define NSECTIONS (sizeof sections / sizeof sections[0])
 
 static int
@@ -275,7 +275,7 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, char *msg
 		if (section_index(e->section) < 0)
 			return hb_status_set(msg, n, HB_EINVAL,
 			    "%s:%d: [%s] %s: unknown section; known sections: scene, body1, body2, "
-			    "law, loads, initial, run", file, e->line, e->section, e->name);
+			    "law, chain, striker, loads, initial, run", file, e->line, e->section, e->name);
 		for (int j = 0; j < i; j++)
 			if (strcmp(c->e[j].section, e->section) == 0 &&
 			    strcmp(c->e[j].name, e->name) == 0)
@@ -340,8 +340,8 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, char *msg
 			if ((st = apply(sc, e, file, msg, n)) != HB_OK)
 				return st;
 		}
-	static const char *const rest[] = { "loads", "initial", "run" };
-	for (size_t s = 0; s < 3; s++)
+	static const char *const rest[] = { "chain", "striker", "loads", "initial", "run" };
+	for (size_t s = 0; s < sizeof rest / sizeof rest[0]; s++)
 		for (int i = 0; i < c->n; i++)
 			if (strcmp(c->e[i].section, rest[s]) == 0 &&
 			    (st = apply(sc, &c->e[i], file, msg, n)) != HB_OK)
@@ -595,6 +595,13 @@ hb_preset_format(const struct hb_scene *sc, char *buf, size_t n)
 	textbuf_printf(&o, "; hybounce preset: SI values that reproduce the scene exactly\n");
 #endif
 	for (size_t s = 0; s < NSECTIONS; s++) {
+		int any = strcmp(sections[s], "law") == 0;
+
+		for (int k = 0; k < scene_nkeydefs && !any; k++) /* a section with no key is left out */
+			any = strcmp(scene_keydef_section(&scene_keydefs[k], sec, sizeof sec), sections[s]) == 0 &&
+			      scene_keydef_present(sc, &scene_keydefs[k]);
+		if (!any)
+			continue;
 		textbuf_printf(&o, "\n[%s]\n", sections[s]);
 		if (strcmp(sections[s], "law") == 0) {
 			for (int i = 0; sc->law != NULL && i < sc->law->n_params; i++) {

@@ -111,9 +111,9 @@ setup_interval(struct hb_sim *s)
 	s->msign = s->mforce = 0;
 	memset(s->gmax, 0, sizeof s->gmax);
 	s->vmax = fabs(I->v);
-	s->closed = !I->q && (sc->run.reduce & HB_REDUCE_FLIGHT) &&
+	s->closed = !I->q && (s->chain || ((sc->run.reduce & HB_REDUCE_FLIGHT) &&
 	            hb_scene_Fer_constant(sc, s->t, sc->run.T) &&
-	            (sc->d.system == HB_SCENE_REDUCED || (sc->run.reduce & HB_REDUCE_COM));
+	            (sc->d.system == HB_SCENE_REDUCED || (sc->run.reduce & HB_REDUCE_COM))));
 	if (s->closed) {
 		s->resume = 0;
 		return 0;
@@ -295,6 +295,9 @@ reset_state(struct hb_sim *s)
 	I->W = I->JFc = I->JFe = I->xcmax = I->Fcmax = 0.0;
 	I->Ee = I->Wc = I->Wc0 = 0.0;
 	I->xe = I->te = I->vi = 0.0;
+	if (s->chain) {
+		hbs_chain_reset(s);
+	}
 	s->n_instant = 0;
 	s->setup = 1;
 	s->resume = 0;
@@ -421,7 +424,7 @@ hb_sim_advance(struct hb_sim *s, long max_steps, double max_seconds)
 		}
 		s->work++;
 		if (s->closed)
-			rc = hbs_flight_closed(s);
+			rc = s->chain ? hbs_chain_flight(s) : hbs_flight_closed(s);
 		else
 			rc = numeric_step(s);
 		if (rc)
@@ -526,6 +529,10 @@ hb_sim_seek(struct hb_sim *s, size_t i)
 	const struct hb_arc_sample *a;
 	const struct hb_arc_interval *iv;
 
+	if (s->chain) { /* a chain's arc does not hold its bodies yet */
+		snprintf(s->err, sizeof s->err, "a chain's run cannot be continued from an earlier sample");
+		return HB_EINVAL;
+	}
 	if (i >= hb_arc_len(s->arc))
 		return HB_EINVAL;
 	/*
@@ -607,7 +614,7 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 		*restarted = 0;
 	if ((rc = hb_scene_validate(&nsc, msg, n)) != 0)
 		return rc;
-	restart = nsc.d.system != s->sc.d.system ||
+	restart = nsc.d.system != s->sc.d.system || s->chain || nsc.chain.n > 0 ||
 	          memcmp(&nsc.init, &s->sc.init, sizeof nsc.init) != 0 ||
 	          (s->I->q && (nsc.law != s->sc.law || nsc.ext != s->sc.ext || !same_bodies(&nsc, &s->sc)));
 	{

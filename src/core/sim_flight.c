@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim_flight.c - flight in closed form: the parabola, its event by a quadratic, the
- * pre-jump state placed in D ulp by ulp (see sim.c for the method).
+ * pre-jump state placed in D ulp by ulp (see sim.c for the method); a
+ * chain's flight, every body on its parabola and the earliest of its
+ * interfaces' events.
  */
 #include "sim_impl.h"
 
@@ -127,4 +129,121 @@ hbs_flight_closed(struct hb_sim *s)
 		return hbs_jump(s, tau == 0.0 ? HB_LOCATE_START : HB_LOCATE_CLOSED_FORM, it, te - tprev,
 		            fmax(xp, vp), fmax(I->x, I->v));
 	}
+}
+
+/* A chain's bodies at t0 + tau from (y0, u0) at t0, into s->body, and the time they are of. */
+static void
+chain_bodies_at(struct hb_sim *s, const double *y0, const double *u0, double t0, double tau)
+{
+	int i;
+
+	for (i = 0; i < s->nbody; i++)
+		flight_at(y0[i], u0[i], s->body[i].a, tau, &s->body[i].y, &s->body[i].u);
+	s->tb = t0 + tau;
+	s->t = t0 + tau;
+}
+
+/* The interface of the flight's event at the bodies' state, with its work and centre of mass. */
+static void
+chain_iface_now(struct hb_sim *s, double x0, double Ee0)
+{
+	struct iface *I = s->I;
+
+	hbs_chain_gap(s, s->ia, &I->x, &I->v);
+	I->Ee = Ee0 + I->Fer * (I->x - x0);
+	hbs_chain_pair_com(s);
+}
+
+/*
+ * A flight of a chain (no interface in contact, constant loads): every
+ * body on its parabola; the event is the earliest of the interfaces'
+ * (the lowest one of those at the same instant), each found by flight_event
+ * on its gap, whose acceleration is the difference of its bodies'.  The
+ * interface of the event is the one the interval records.
+ */
+int
+hbs_chain_flight(struct hb_sim *s)
+{
+	const double T = s->sc.run.T, t0 = s->t;
+	double *y0 = NULL, *u0 = NULL, best = INFINITY, x0, Ee0, tend;
+	int i, k = -1, rc = 0, it = 0;
+
+	y0 = malloc(2 * (size_t)s->nbody * sizeof *y0);
+	if (y0 == NULL)
+		return hbs_fail(s, HB_ENOMEM, "out of memory for the chain's flight");
+	u0 = y0 + s->nbody;
+	if ((rc = hbs_bodies_sync(s)))
+		goto out;
+	for (i = 0; i < s->nbody; i++) {
+		y0[i] = s->body[i].y;
+		u0[i] = s->body[i].u;
+	}
+	for (i = 0; i < s->nif; i++) {
+		const struct iface *J = &s->ifc[i];
+		double x, v, a = s->body[J->hi].a - (J->lo >= 0 ? s->body[J->lo].a : 0.0), tau;
+
+		hbs_chain_gap(s, i, &x, &v);
+		if (!isfinite(v * v) || !isfinite(x + v * (T - t0))) {
+			rc = hbs_fail(s, HB_ENUMERIC, "the flight overflows a double: v^2 and x + v T must be finite");
+			goto out;
+		}
+		tau = flight_event(x, v, a);
+		if (tau < best) {
+			best = tau;
+			k = i;
+		}
+	}
+	if (k >= 0)
+		hbs_chain_activate(s, k);
+	hbs_chain_gap(s, s->ia, &x0, &tend);
+	Ee0 = s->I->Ee;
+	s->st.flights_closed++;
+	tend = fmin(best, T - t0);
+	for (i = 1; i < FLIGHT_SAMPLES; i++) {
+		double tk = tend * i / FLIGHT_SAMPLES;
+
+		if (tk <= 0.0)
+			continue;
+		chain_bodies_at(s, y0, u0, t0, tk);
+		chain_iface_now(s, x0, Ee0);
+		if ((rc = hbs_push_sample(s, HB_ARC_STEP)))
+			goto out;
+	}
+	if (best > T - t0) {
+		chain_bodies_at(s, y0, u0, t0, T - t0);
+		s->t = T;
+		chain_iface_now(s, x0, Ee0);
+		if ((rc = hbs_push_sample(s, HB_ARC_END)))
+			goto out;
+		hbs_finish_T(s);
+		goto out;
+	}
+	/* the event: the state placed in D by the checker's test, ulp by ulp */
+	{
+		struct iface *I = s->I;
+		double te = t0 + best, tprev, xp, vp;
+
+		chain_bodies_at(s, y0, u0, t0, te - t0);
+		hbs_chain_gap(s, s->ia, &I->x, &I->v);
+		while (!(I->x <= 0.0 && I->v <= 0.0) && it < 1000) {
+			te = nextafter(te, INFINITY);
+			chain_bodies_at(s, y0, u0, t0, te - t0);
+			hbs_chain_gap(s, s->ia, &I->x, &I->v);
+			it++;
+		}
+		if (!(I->x <= 0.0 && I->v <= 0.0)) {
+			rc = hbs_fail(s, HB_ENUMERIC, "flight event could not be placed in D");
+			goto out;
+		}
+		tprev = te > t0 ? nextafter(te, -INFINITY) : te;
+		chain_bodies_at(s, y0, u0, t0, tprev - t0);
+		hbs_chain_gap(s, s->ia, &xp, &vp);
+		chain_bodies_at(s, y0, u0, t0, te - t0);
+		chain_iface_now(s, x0, Ee0);
+		rc = hbs_jump(s, best == 0.0 ? HB_LOCATE_START : HB_LOCATE_CLOSED_FORM, it, te - tprev,
+		              fmax(xp, vp), fmax(I->x, I->v));
+	}
+out:
+	free(y0);
+	return rc;
 }

@@ -230,7 +230,9 @@ hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
 void
 hbs_set_com(struct hb_sim *s)
 {
-	if (s->sc.d.system == HB_SCENE_FULL)
+	if (s->chain)
+		hbs_chain_com(s);
+	else if (s->sc.d.system == HB_SCENE_FULL)
 		hb_scene_com(&s->sc, s->t, &s->xm, &s->vm);
 	else
 		s->xm = s->vm = 0.0;

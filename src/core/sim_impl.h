@@ -67,18 +67,20 @@ struct cached {
 /*
  * The chain (docs/chains.md section 1): bodies 1..N from the bottom up
  * (body[0] is body 1) and the interfaces between them, interface 0 on the
- * floor when there is one.  Today's scenes are N = 2 without a floor (the
- * full system: chain body 1 is the scene's body 2, the lower one) and N = 1
- * on the floor (the reduced system).  One cluster, of the chain's single
- * interface, is integrated at a time, in the interface's coordinates
- * (docs/chains.md section 8); the bodies' positions and velocities follow
- * from those and the centre of mass where a sample is recorded.
+ * floor when there is one.  The two-body scenes are N = 2 without a floor
+ * (the full system: chain body 1 is the scene's body 2, the lower one) and
+ * N = 1 on the floor (the reduced system); a [chain] scene has chain.n
+ * bodies.  One interface at a time is in contact, integrated in its own
+ * coordinates (docs/chains.md section 8, a cluster of one contact); see
+ * sim_chain.c for how the bodies follow.
  */
 struct body {
 	double m;               /* kg */
 	double l;               /* half-length along the axis (radius), m; 0 when unknown */
-	double y, u;            /* position and velocity of the centre of mass (derived) */
-	double Fe;              /* applied force at t (derived) */
+	double y, u;            /* a chain's: position and velocity of its centre at time tb
+	                           (the two-body scenes': from their interface, hbs_body_at) */
+	double a;               /* a chain's: its constant acceleration */
+	double Fe;              /* a chain's: its applied force, constant */
 };
 
 struct iface {
@@ -87,6 +89,9 @@ struct iface {
 	int ext;                /* rule R1 continuation */
 	int lo, hi;             /* the bodies below and above (index into body[]; lo = -1: the floor) */
 	double m;               /* effective mass m_lo m_hi / (m_lo + m_hi) (m_hi on the floor) */
+	double wlo, whi;        /* a chain's: m_lo / (m_lo + m_hi), m_hi / (m_lo + m_hi) */
+	double Fer;             /* a chain's: F_e,r = (m_lo F_hi - m_hi F_lo) / (m_lo + m_hi), constant */
+	double (*Fer_at)(const struct hb_sim *s, const struct iface *I, double t); /* F_e,r at t */
 
 	/* its state at (t, j) */
 	int q;
@@ -100,7 +105,11 @@ struct iface {
 
 struct hb_sim {
 	struct hb_scene sc;
+	int chain;              /* 1: a chain scene (sc.chain.n >= 1) */
 	int nbody, k0, nif;     /* N, the first interface's number (0: a floor), N - k0 */
+	int ia;                 /* I - ifc */
+	double tb;              /* a chain's: the time its bodies' (y, u) are of */
+	double cm_t0, cm_y0, cm_u0, cm_a; /* a chain's: the pair in contact's centre of mass */
 	struct body *body;      /* body[i] is body i + 1 */
 	struct iface *ifc;      /* ifc[i] is interface k0 + i */
 	int capbody, capif;     /* their allocated lengths */
@@ -182,8 +191,7 @@ phi_at(const struct hb_sim *s, double xc, const double *z, double v)
 static inline double
 iface_Fer(const struct hb_sim *s, const struct iface *I, double t)
 {
-	(void)I;
-	return hb_scene_Fer(&s->sc, t);
+	return I->Fer_at(s, I, t);
 }
 
 /*
@@ -198,9 +206,32 @@ hbs_chain_bind(struct hb_sim *s);
 void
 hbs_chain_free(struct hb_sim *s);
 
-/* ... the bodies' positions, velocities and loads at the current state */
-void
+/*
+ * ... a chain's bodies' positions and velocities at the current state
+ * (HB_ENUMERIC when two of its interfaces are in contact at once); the
+ * two-body scenes' bodies follow from their interface and centre of mass
+ * on request (hbs_body_at).
+ */
+int
 hbs_bodies_sync(struct hb_sim *s);
+void
+hbs_body_at(const struct hb_sim *s, int i, double *y, double *u);
+void
+hbs_chain_activate(struct hb_sim *s, int i);
+void
+hbs_chain_reset(struct hb_sim *s);
+void
+hbs_chain_jumped(struct hb_sim *s);
+void
+hbs_chain_com(struct hb_sim *s);
+void
+hbs_chain_pair_com(struct hb_sim *s);
+void
+hbs_chain_gap(const struct hb_sim *s, int i, double *x, double *v);
+
+/* sim_flight.c: a chain's flight, every body in closed form */
+int
+hbs_chain_flight(struct hb_sim *s);
 
 /* sim_flow.c */
 int

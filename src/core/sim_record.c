@@ -24,7 +24,10 @@ hbs_push_sample(struct hb_sim *s, int kind)
 	struct hb_arc_sample a;
 	double phi = 0.0;
 
-	hbs_bodies_sync(s);
+	int rc;
+
+	if (s->chain && (rc = hbs_bodies_sync(s)))
+		return rc;
 	memset(&a, 0, sizeof a);
 	a.t = s->t;
 	a.j = s->j;
@@ -165,6 +168,8 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 		if (s->ncol > 0 && isnan(s->col[s->ncol - 1].tf))
 			s->col[s->ncol - 1].tf = s->t - s->col[s->ncol - 1].ts;
 	}
+	if (s->chain)
+		hbs_chain_jumped(s);
 	s->st.jumps++;
 	if ((rc = hbs_push_sample(s, HB_ARC_POST_JUMP)))
 		return rc;
