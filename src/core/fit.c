@@ -77,49 +77,6 @@ hb_fit_result_free(struct hb_fit_result *r)
 	r->npoints = 0;
 }
 
-/* Fills the measured values and their sd, point by point (see fit_eval). */
-static void
-points_of(const struct hb_fit_data *d, double *meas, double *sd, int *row, int *obs, int *scaled)
-{
-	size_t k = 0;
-
-	*scaled = 0;
-	if (d->kind == HB_FIT_SEQUENCE) {
-		double m = 0;
-
-		for (size_t i = 1; i < d->n; i++)
-			m = fmax(m, fabs(d->col[HB_FIT_OBS_TE][i] - d->col[HB_FIT_OBS_TE][0]));
-		for (size_t i = 1; i < d->n; i++, k++) {
-			meas[k] = d->col[HB_FIT_OBS_TE][i] - d->col[HB_FIT_OBS_TE][0];
-			/* the difference of two times: the variances add */
-			sd[k] = d->sd[HB_FIT_OBS_TE] != NULL
-			    ? hypot(d->sd[HB_FIT_OBS_TE][i], d->sd[HB_FIT_OBS_TE][0]) : m;
-			row[k] = (int)i;
-			obs[k] = HB_FIT_OBS_TE;
-		}
-		*scaled = d->sd[HB_FIT_OBS_TE] == NULL;
-		return;
-	}
-	for (int ob = HB_FIT_OBS_E; ob < HB_FIT_OBS_COUNT; ob++) {
-		double m = 0;
-
-		if (d->col[ob] == NULL)
-			continue;
-		for (size_t i = 0; i < d->n; i++)
-			m = fmax(m, fabs(d->col[ob][i]));
-		if (!(m > 0))
-			m = 1;
-		if (d->sd[ob] == NULL)
-			*scaled = 1;
-		for (size_t i = 0; i < d->n; i++, k++) {
-			meas[k] = d->col[ob][i];
-			sd[k] = d->sd[ob] != NULL ? d->sd[ob][i] : m;
-			row[k] = (int)i;
-			obs[k] = ob;
-		}
-	}
-}
-
 /* Simulates the scenes for parameter vectors u[0..ns-1] into c->y. */
 static int
 eval_many(struct ctx *c, const double *const *u, int ns, char *msg, size_t n)
@@ -289,7 +246,7 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 	struct hb_fit_result *r;
 	struct ctx *c;
 	double u[HB_FIT_MAX_FREE];
-	int np = o->nkeys, *row = NULL, *obs = NULL;
+	int np = o->nkeys;
 	size_t npts = hb_fit_npoints(d);
 	gsl_vector_view xv;
 
@@ -321,6 +278,16 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 		hb_status_set(msg, n, HB_EINVAL, "%s: %zu data point%s cannot determine %d "
 		    "parameters; accepted: at least as many points as free keys", d->source, npts,
 		    npts == 1 ? "" : "s", np);
+		goto fail;
+	}
+	/* a height is (e v_i)^2 / (2 g): free flight under gravity alone */
+	if (d->kind == HB_FIT_HEIGHTS && (!(sc->loads.g > 0) || sc->loads.F1 != 0
+	                                  || sc->loads.F2 != 0 || sc->loads.ramp)) {
+		cnum_snprintf(msg, n, "%s: rebound heights need a flight under gravity alone (the "
+		    "apex is v^2 / (2 g)); the scene has loads.g = %g m/s^2%s; accepted: loads.g > "
+		    "0 and no other load (--set loads.g=9.81)", d->source, sc->loads.g,
+		    sc->loads.F1 != 0 || sc->loads.F2 != 0 || sc->loads.ramp
+		    ? " and another load" : "");
 		goto fail;
 	}
 	f->xtol = o->xtol > 0 ? o->xtol : 1e-8;
@@ -356,15 +323,16 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 	c->scs = malloc((size_t)(np + 1) * sizeof *c->scs);
 	c->y = malloc((size_t)(np + 1) * npts * sizeof(double));
 	c->fail = malloc((size_t)(np + 1) * sizeof(int));
-	row = malloc(npts * sizeof(int));
-	obs = malloc(npts * sizeof(int));
 	if (r->point == NULL || c->meas == NULL || c->sd == NULL || c->last_u == NULL
-	    || c->last_r == NULL || c->scs == NULL || c->y == NULL || c->fail == NULL
-	    || row == NULL || obs == NULL) {
+	    || c->last_r == NULL || c->scs == NULL || c->y == NULL || c->fail == NULL) {
 		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto fail;
 	}
-	points_of(d, c->meas, c->sd, row, obs, &r->sd_scaled);
+	fit_points(d, r->point, NULL, &r->sd_scaled);
+	for (size_t k = 0; k < npts; k++) {
+		c->meas[k] = r->point[k].measured;
+		c->sd[k] = r->point[k].sd;
+	}
 
 	/* The start: every run must succeed, or the fit has nothing to go on. */
 	{
@@ -382,18 +350,10 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 			goto fail;
 		}
 		for (size_t k = 0; k < npts; k++) {
-			r->point[k].row = (size_t)row[k];
-			r->point[k].obs = obs[k];
-			r->point[k].measured = c->meas[k];
-			r->point[k].sd = c->sd[k];
 			r->point[k].start = c->y[k];
 			r->cost0 += pow((c->y[k] - c->meas[k]) / c->sd[k], 2);
 		}
 	}
-	free(row);
-	free(obs);
-	row = obs = NULL;
-
 	f->fdf.f = f_cb;
 	f->fdf.df = df_cb;
 	f->fdf.fvv = NULL;
@@ -418,8 +378,6 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 	}
 	return f;
 fail:
-	free(row);
-	free(obs);
 	hb_fit_free(f);
 	return NULL;
 }

@@ -22,6 +22,22 @@ struct fit_param {
 	double k;       /* (lo, hi): the logistic's rate, 1 or less (see fit.h) */
 };
 
+/*
+ * fit_data.c.  fit_data_check: the invariant of fit_data.c (0, or
+ * HB_EINVAL with "SOURCE: ..." in msg).  fit_data_one_trial: d->n rows as
+ * one trial (trial_row, file_row allocated; HB_ENOMEM).  fit_points: the
+ * data points in the order of fit_result.point and of fit_eval's output
+ * (pt may be NULL: measured, sd, row, obs, trial, index), pidx[ob * d->n +
+ * row] the point of each value (SIZE_MAX for none; may be NULL), *scaled 1
+ * when a column has no sd (may be NULL); returns the number of points.
+ */
+int
+fit_data_check(struct hb_fit_data *d, char *msg, size_t n);
+int
+fit_data_one_trial(struct hb_fit_data *d);
+size_t
+fit_points(const struct hb_fit_data *d, struct hb_fit_point *pt, size_t *pidx, int *scaled);
+
 int
 fit_param_init(const struct hb_scene *sc, const char *key, struct fit_param *fp,
                char *msg, size_t n);
