@@ -68,7 +68,9 @@
  *
  * Solver: GSL gsl_multifit_nlinear, trust region with Levenberg-Marquardt
  * steps and More's scaling; the Jacobian by forward differences over
- * runs, computed on `jobs` threads (each run has its own sim).
+ * runs, computed on `jobs` threads (each run has its own sim), P mod jobs
+ * of its columns beside each trial point (ready when the step is
+ * accepted).  The result does not depend on jobs, to the bit.
  *
  * Everything here is engine code: it never prints and never exits; the
  * progress callback is how a front end shows the iterations.
@@ -220,6 +222,16 @@ struct hb_fit_result {
 	int sd_scaled;              /* 1: standard errors scaled by cost / (N - P) */
 	int iter;
 	long runs;                  /* simulator runs used */
+	/*
+	 * Where the time went (measurements: they vary from run to run, the
+	 * rest of the result does not): run_cpu, the CPU seconds of every run
+	 * made, those run beside f that a rejected step wasted too; run_span,
+	 * the wall time the same runs would take were each of the `threads`
+	 * threads on a core of its own (run_cpu / run_span: the speed-up the
+	 * threads allow, whatever else the machine is doing).
+	 */
+	double run_cpu, run_span;
+	int threads;
 	int reason;                 /* enum hb_fit_reason */
 	double cond;                /* condition number of the scaled Jacobian */
 	char unident[256];          /* "law.c, law.alpha" when not identifiable, else "" */

@@ -496,6 +496,11 @@ fit_main(int argc, char **argv)
 		snprintf(r.why, sizeof r.why, "interrupted by %s (the best point so far)",
 		         cli_signal_name(sig));
 	hb_fit_stats(&r, FIT_NOISE_LEVEL, &fst);
+	/* where the time went: a measurement, so on stderr with the progress */
+	if (!quiet)
+		fprintf(stderr, PROG " fit: runs: %.3g s of CPU; %.3g s on %d thread%s with a core "
+		        "each (%.2fx)\n", r.run_cpu, r.run_span, r.threads, r.threads == 1 ? "" : "s",
+		        r.run_span > 0 ? r.run_cpu / r.run_span : 1.0);
 	fit_report_print(&r, &d, &fst, quiet);
 	fit_verdict(&r, &fst, max_rse, &v);
 	if (sig != 0) {

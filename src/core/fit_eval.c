@@ -21,6 +21,7 @@
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
 #include "fit_impl.h"
+#include "clock.h"
 #include "cnum.h"
 
 /*
@@ -35,6 +36,7 @@ struct task {
 	int s;           /* scene index */
 	size_t unit;     /* trial (sequences, heights) or drop row */
 	int fail;
+	double cpu;      /* CPU seconds of the run, on its thread */
 	char msg[384];
 };
 
@@ -226,16 +228,41 @@ worker(void *arg)
 		pthread_mutex_unlock(&pl->lock);
 		if (i >= pl->ntask)
 			return NULL;
+		double t0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
+
 		if (pl->d->kind != HB_FIT_DROPS)
 			run_trial(pl, &pl->t[i]);
 		else
 			run_drop(pl, &pl->t[i]);
+		pl->t[i].cpu = clock_seconds(CLOCK_THREAD_CPUTIME_ID) - t0;
 	}
+}
+
+/*
+ * The wall time of the runs had each thread a core of its own: threads
+ * take the tasks in order, each the next when it is free (as worker does).
+ */
+static double
+makespan(const struct task *t, size_t n, int nth)
+{
+	double free_at[64] = { 0 }, end = 0;
+
+	for (size_t i = 0; i < n; i++) {
+		int k = 0;
+
+		for (int j = 1; j < nth; j++)
+			if (free_at[j] < free_at[k])
+				k = j;
+		free_at[k] += t[i].cpu;
+		end = fmax(end, free_at[k]);
+	}
+	return end;
 }
 
 int
 fit_eval(const struct hb_scene *sc, int nsc, const struct hb_fit_data *d, int jobs,
-         double penalty, double *out, int *fail, long *runs, char *msg, size_t n)
+         double penalty, double *out, int *fail, long *runs, double *cpu, double *span,
+         char *msg, size_t n)
 {
 	struct pool pl;
 	size_t per = d->kind == HB_FIT_DROPS ? d->n : d->ntrials;
@@ -293,6 +320,10 @@ fit_eval(const struct hb_scene *sc, int nsc, const struct hb_fit_data *d, int jo
 	}
 	if (runs != NULL)
 		*runs += (long)pl.ntask;
+	for (size_t i = 0; cpu != NULL && i < pl.ntask; i++)
+		*cpu += pl.t[i].cpu;
+	if (span != NULL)
+		*span += makespan(pl.t, pl.ntask, nth > 0 ? nth : 1);
 	free(pl.t);
 	free(pidx);
 	return HB_OK;

@@ -52,11 +52,14 @@ fit_param_apply(struct hb_scene *sc, const struct fit_param *fp, int np, const d
  * fails, or a sequence with fewer collisions than the data, sets
  * fail[s] = 1 (may be NULL) and, for the first such scene, the message; its
  * missing values are filled with `penalty` (NAN for none).  Adds the runs
- * made to *runs.  Returns 0, or HB_ENOMEM.
+ * made to *runs, their CPU seconds to *cpu and the wall time they would
+ * take had each thread a core of its own to *span (each may be NULL).
+ * Returns 0, or HB_ENOMEM.
  */
 int
 fit_eval(const struct hb_scene *sc, int nsc, const struct hb_fit_data *d, int jobs,
-         double penalty, double *out, int *fail, long *runs, char *msg, size_t n);
+         double penalty, double *out, int *fail, long *runs, double *cpu, double *span,
+         char *msg, size_t n);
 
 /*
  * fit_lin.c: from the Jacobian J (n residuals x P free parameters) at the
