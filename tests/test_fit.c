@@ -576,7 +576,7 @@ Test(fit_data, missed_impacts_keep_their_indices)
 	cr_assert(isnan(d.col[HB_FIT_OBS_TE][0]) && isnan(d.col[HB_FIT_OBS_TE][2])
 	          && isnan(d.col[HB_FIT_OBS_TE][3]));
 	cr_assert_eq(hb_fit_npoints(&d), 2);
-	cr_assert_eq(fit_points(&d, pt, NULL, NULL), 2);
+	cr_assert_eq(hb_fit_data_points(&d, pt), 2);
 	/* the clocks align on impact 1; impacts 4 and 5 keep their indices */
 	cr_assert_eq(pt[0].index, 4);
 	cr_assert_eq(pt[1].index, 5);

@@ -302,6 +302,17 @@ hb_fit_simulate(const struct hb_scene *sc, const struct hb_fit_data *d, int jobs
 size_t
 hb_fit_npoints(const struct hb_fit_data *d);
 
+/*
+ * The data points in the order of fit_result.point and hb_fit_simulate's
+ * out: row, obs, trial, index, measured (for t_e the time since the
+ * trial's first given impact) and sd (the weight's) of each, the rest 0,
+ * into pt[0 .. hb_fit_npoints(d) - 1] (a front end that shows data beside
+ * a run: missed values and trials are left out or told apart as the fit
+ * does).  Returns the number of points.
+ */
+size_t
+hb_fit_data_points(const struct hb_fit_data *d, struct hb_fit_point *pt);
+
 void
 hb_fit_result_free(struct hb_fit_result *r);
 

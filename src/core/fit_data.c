@@ -300,3 +300,11 @@ hb_fit_npoints(const struct hb_fit_data *d)
 		return 0;
 	return fit_points(d, NULL, NULL, NULL);
 }
+
+size_t
+hb_fit_data_points(const struct hb_fit_data *d, struct hb_fit_point *pt)
+{
+	if (d->n == 0 || (d->kind != HB_FIT_DROPS && d->trial_row == NULL))
+		return 0;
+	return fit_points(d, pt, NULL, NULL);
+}
