@@ -26,7 +26,8 @@
  *  - drop and rebound heights: columns h_0, h_1, ... h_K, a row per drop:
  *    h_0 the height the ball is dropped from (at rest, x0 = h_0, v0 = 0),
  *    h_i the apex after impact i - 1.  The run's apex after impact i is
- *    (e_i v_i)^2 / (2 g) (free flight under loads.g > 0 alone), so that
+ *    (e_i v_i)^2 / (2 g) (free flight under loads.g > 0 alone: the rise
+ *    above the point of separation, a residual indentation apart), so that
  *    e_i = sqrt(h_{i+1} / h_i) and the flight after impact i lasts
  *    2 sqrt(2 h_{i+1} / g).  An optional sd_h gives the standard deviation
  *    of every height of its row.
