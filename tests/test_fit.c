@@ -444,7 +444,7 @@ Test(fit_data, files_are_recognised_by_their_columns)
 
 	p = tmpfile_with("t_e\n0.1\nzero\n");
 	cr_assert_eq(hb_fit_data_load(p, &d, msg, sizeof msg), HB_EINVAL);
-	cr_assert_not_null(strstr(msg, ":3: column t_e: 'zero'"), "%s", msg);
+	cr_assert_not_null(strstr(msg, ":3: data row 2, column t_e: 'zero'"), "%s", msg);
 	unlink(p);
 
 	p = tmpfile_with("t_e,sd_t_e\n0.1,0\n0.2,1e-5\n");
@@ -454,7 +454,7 @@ Test(fit_data, files_are_recognised_by_their_columns)
 
 	p = tmpfile_with("v_i,e\n0.1,0.5,7\n");
 	cr_assert_eq(hb_fit_data_load(p, &d, msg, sizeof msg), HB_EINVAL);
-	cr_assert_not_null(strstr(msg, ":2: 3 fields"), "%s", msg);
+	cr_assert_not_null(strstr(msg, ":2: data row 1: 3 fields"), "%s", msg);
 	unlink(p);
 
 	cr_assert_eq(hb_fit_data_load("/nonexistent/x.csv", &d, msg, sizeof msg), HB_EIO);
@@ -529,6 +529,106 @@ write_wav(const char *path, const double *t, const double *amp, size_t n, double
  * 0.85 down to 0.6, clicks fading with the impact speed, white noise 40 dB
  * below the first click.
  */
+/* Parses text as a data file: 0 or the status, msg filled. */
+static int
+parse(const char *text, struct hb_fit_data *d, char *msg, size_t n)
+{
+	return hb_fit_data_parse(text, strlen(text), "in.csv", d, msg, n);
+}
+
+Test(fit_data, units_in_the_header_are_converted_to_si)
+{
+	struct hb_fit_data d;
+	char msg[512];
+
+	cr_assert_eq(parse("\xEF\xBB\xBFt_e [ms],sd_t_e (\xC2\xB5s),other [furlongs]\n"
+	                   "63.5,30,1\n140.25,40,2\n", &d, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(d.kind, HB_FIT_SEQUENCE);
+	cr_assert_float_eq(d.col[HB_FIT_OBS_TE][0], 0.0635, 1e-17);
+	cr_assert_float_eq(d.col[HB_FIT_OBS_TE][1], 0.14025, 1e-17);
+	cr_assert_float_eq(d.sd[HB_FIT_OBS_TE][1], 40e-6, 1e-20);
+	hb_fit_data_free(&d);
+
+	cr_assert_eq(parse("v_i [mm/s],e [-],x_c_r (um),t_d [us]\n500,0.5,2,300\n", &d, msg,
+	                   sizeof msg), 0, "%s", msg);
+	cr_assert_float_eq(d.vi[0], -0.5, 1e-15);
+	cr_assert_eq(d.col[HB_FIT_OBS_E][0], 0.5);
+	cr_assert_float_eq(d.col[HB_FIT_OBS_XCR][0], 2e-6, 1e-21);
+	cr_assert_float_eq(d.col[HB_FIT_OBS_TD][0], 300e-6, 1e-19);
+	hb_fit_data_free(&d);
+
+	cr_assert_eq(parse("t_e [kg]\n1\n2\n", &d, msg, sizeof msg), HB_EINVAL);
+	cr_assert_not_null(strstr(msg, "in.csv:1: header row, column 1 (t_e [kg]): unit 'kg'"),
+	                   "%s", msg);
+	cr_assert_not_null(strstr(msg, "accepted: a unit of its quantity (s, ms, us)"), "%s", msg);
+	cr_assert_eq(parse("e [m]\n1\n", &d, msg, sizeof msg), HB_EINVAL);
+}
+
+Test(fit_data, missed_impacts_keep_their_indices)
+{
+	struct hb_fit_data d;
+	struct hb_fit_point pt[8];
+	char msg[512];
+
+	cr_assert_eq(parse("t_e,x\nNA,1\n0.1,1\n,1\nn/a,1\n0.4,1\n0.5,1\n", &d, msg,
+	                   sizeof msg), 0, "%s", msg);
+	cr_assert_eq(d.n, 6);
+	cr_assert(isnan(d.col[HB_FIT_OBS_TE][0]) && isnan(d.col[HB_FIT_OBS_TE][2])
+	          && isnan(d.col[HB_FIT_OBS_TE][3]));
+	cr_assert_eq(hb_fit_npoints(&d), 2);
+	cr_assert_eq(hb_fit_data_points(&d, pt), 2);
+	/* the clocks align on impact 1; impacts 4 and 5 keep their indices */
+	cr_assert_eq(pt[0].index, 4);
+	cr_assert_eq(pt[1].index, 5);
+	cr_assert_float_eq(pt[0].measured, 0.3, 1e-15);
+	cr_assert_eq(pt[1].row, 5);
+	hb_fit_data_free(&d);
+}
+
+Test(fit_data, trials_are_sequences_of_their_own)
+{
+	struct hb_fit_data d;
+	struct hb_fit_point pt[8];
+	char msg[512];
+
+	cr_assert_eq(parse("trial,t_e\nA,0.1\nA,0.3\nA,0.4\nB,2.1\nB,2.35\n", &d, msg,
+	                   sizeof msg), 0, "%s", msg);
+	cr_assert_eq(d.ntrials, 2);
+	cr_assert_eq(d.trial_row[0], 0);
+	cr_assert_eq(d.trial_row[1], 3);
+	cr_assert_eq(d.trial_row[2], 5);
+	cr_assert_eq(fit_points(&d, pt, NULL, NULL), 3);
+	cr_assert_eq(pt[2].trial, 1);
+	cr_assert_float_eq(pt[2].measured, 0.25, 1e-15);
+	hb_fit_data_free(&d);
+
+	cr_assert_eq(parse("trial,t_e\nA,0.1\nA,0.3\nB,0.1\nA,0.5\n", &d, msg, sizeof msg),
+	             HB_EINVAL);
+	cr_assert_not_null(strstr(msg, "in.csv:5: data row 4, column trial: 'A' again"), "%s", msg);
+}
+
+Test(fit_data, heights_a_drop_per_row)
+{
+	struct hb_fit_data d;
+	struct hb_fit_point pt[8];
+	char msg[512];
+
+	cr_assert_eq(parse("h_0 [mm],h_1 [mm],h_2 [mm],sd_h [mm]\n20,7,NA,0.02\n"
+	                   "10,3.5,1.5,0.01\n", &d, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_eq(d.kind, HB_FIT_HEIGHTS);
+	cr_assert_eq(d.ntrials, 2);
+	cr_assert_eq(d.n, 6);
+	cr_assert_eq(d.trial_row[1], 3);
+	cr_assert_float_eq(d.col[HB_FIT_OBS_H][3], 0.01, 1e-17);
+	cr_assert_eq(fit_points(&d, pt, NULL, NULL), 3);
+	cr_assert_eq(pt[0].index, 1);
+	cr_assert_eq(pt[1].trial, 1);
+	cr_assert_eq(pt[1].row, 1);
+	cr_assert_float_eq(pt[2].measured, 1.5e-3, 1e-18);
+	cr_assert_float_eq(pt[2].sd, 1e-5, 1e-20);
+	hb_fit_data_free(&d);
+}
+
 Test(onset, recording_gives_the_impact_times)
 {
 	double t[10], amp[10], e[10], flight = 0.30, v = 1;

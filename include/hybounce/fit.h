@@ -11,24 +11,46 @@
  *     hb_fit_result_free(&r);
  *     hb_fit_data_free(&d);
  *
- * Data (hb_fit_data_load), recognised by their columns (CSV, one header row,
- * SI values; blank lines and lines starting with '#' are skipped):
+ * Data (hb_fit_data_load), recognised by their columns (CSV, one header row;
+ * blank lines and lines starting with '#' are skipped):
  *  - a bouncing sequence: a column t_e, the commencement time of every
  *    collision in order.  The first one aligns the clocks: the observables
- *    are t_e^i - t_e^0 for i >= 1, against the same differences of the run.
+ *    are t_e^i - t_e^r for i > r, r the first impact with a time, against
+ *    the same differences of the run.
  *  - separate drops: columns v_i (the approach velocity, m/s; its sign is
  *    ignored) and e, optionally x_c_r and/or t_d.  Each row is its own run
  *    of the scene started at contact (x0 = 0, v0 = -|v_i|) and stopped after
  *    the first separation; the observables are e, x_c^r and t_d of that
  *    collision.  A drop that does not separate before run.T (or within
  *    5000 steps) has e = 0, and x_c^r and t_d where it stopped.
+ *  - drop and rebound heights: columns h_0, h_1, ... h_K, a row per drop:
+ *    h_0 the height the ball is dropped from (at rest, x0 = h_0, v0 = 0),
+ *    h_i the apex after impact i - 1.  The run's apex after impact i is
+ *    (e_i v_i)^2 / (2 g) (free flight under loads.g > 0 alone: the rise
+ *    above the point of separation, a residual indentation apart), so that
+ *    e_i = sqrt(h_{i+1} / h_i) and the flight after impact i lasts
+ *    2 sqrt(2 h_{i+1} / g).  An optional sd_h gives the standard deviation
+ *    of every height of its row.
  *    A sequence whose run ends in permanent contact has its missing
- *    impacts at that contact's commencement (continuous in the parameters).
- * A column sd_NAME (sd_t_e, sd_e, sd_x_c_r, sd_t_d) gives the standard
+ *    impacts at that contact's commencement (continuous in the parameters),
+ *    and a rebound height of 0 after it.
+ * Units: a bare value is SI; a header may give the column's unit in
+ * brackets or parentheses, "t_e [ms]", "t_e (s)", "h_0 [mm]", "v_i [m/s]"
+ * (units.h; "e [-]" or "e [1]" for the dimensionless), and every value of
+ * the column is converted to SI.  A missed value is "NA", "N/A" or an empty
+ * cell (in t_e, h_1 ..., e, x_c_r, t_d): the point is left out and the
+ * sequence keeps its indices (the third t_e is impact 2 whatever is
+ * missing before it).  Several trials in one file: a column "trial" (any
+ * label; the rows of a trial together) makes each trial its own sequence;
+ * a file of heights has a trial per row.  Every trial is fitted with the
+ * same parameters (jointly); each run starts from the scene's initial
+ * state (heights: from its h_0).
+ * A column sd_NAME (sd_t_e, sd_e, sd_x_c_r, sd_t_d, sd_h) gives the standard
  * deviation of each value of NAME; residuals are divided by it.  A column
  * without one is weighted by 1 / (largest |value| of the column), and the
  * standard errors are then scaled by the residual variance
  * (cost / (N - P)), as is usual when the measurement error is unknown.
+ * Columns of any other name are ignored.
  *
  * Parameters.  Any numeric scene key that is typed (law.*, body1.E ...,
  * body1.mass, loads.g, initial.x0 ...) can be free.  The solver works on
@@ -47,7 +69,9 @@
  *
  * Solver: GSL gsl_multifit_nlinear, trust region with Levenberg-Marquardt
  * steps and More's scaling; the Jacobian by forward differences over
- * runs, computed on `jobs` threads (each run has its own sim).
+ * runs, computed on `jobs` threads (each run has its own sim), P mod jobs
+ * of its columns beside each trial point (ready when the step is
+ * accepted).  The result does not depend on jobs, to the bit.
  *
  * Everything here is engine code: it never prints and never exits; the
  * progress callback is how a front end shows the iterations.
@@ -62,24 +86,38 @@
 
 HB_BEGIN_DECLS
 
-enum hb_fit_kind { HB_FIT_SEQUENCE = 0, HB_FIT_DROPS = 1 };
+enum hb_fit_kind { HB_FIT_SEQUENCE = 0, HB_FIT_DROPS = 1, HB_FIT_HEIGHTS = 2 };
 
-/* Observables of a data point. */
-enum hb_fit_obs { HB_FIT_OBS_TE = 0, HB_FIT_OBS_E, HB_FIT_OBS_XCR, HB_FIT_OBS_TD, HB_FIT_OBS_COUNT };
+/* Observables of a data point (h: a rebound's apex height). */
+enum hb_fit_obs {
+	HB_FIT_OBS_TE = 0, HB_FIT_OBS_E, HB_FIT_OBS_XCR, HB_FIT_OBS_TD, HB_FIT_OBS_H,
+	HB_FIT_OBS_COUNT
+};
 
 enum { HB_FIT_MAX_FREE = 12 };
 
-/* Measured data; every array has n entries (NULL when the column is absent). */
+/*
+ * Measured data, SI; every array has n entries (NULL when the column is
+ * absent); NAN marks a missed value (and its sd).
+ */
 struct hb_fit_data {
 	int kind;                 /* enum hb_fit_kind */
-	size_t n;                 /* rows: collisions of the sequence, or drops */
+	size_t n;                 /* rows: collisions of the sequences, drops, or heights */
 	double *vi;               /* drops: approach velocity (negative), m/s */
-	double *col[HB_FIT_OBS_COUNT]; /* t_e (sequence); e, x_c_r, t_d (drops) */
+	double *col[HB_FIT_OBS_COUNT]; /* t_e (sequence); e, x_c_r, t_d (drops); h (heights) */
 	double *sd[HB_FIT_OBS_COUNT];  /* their standard deviations, or NULL */
 	char source[256];         /* file name, for messages */
+	/*
+	 * Sequences and heights: trial k holds rows trial_row[k] ..
+	 * trial_row[k + 1] - 1 (ntrials + 1 entries); a trial of heights is
+	 * h_0, h_1 ... of one drop.  Drops: ntrials = 0, trial_row NULL.
+	 */
+	size_t ntrials;
+	size_t *trial_row;
+	size_t *file_row;         /* the data row of the file (0-based) of each row */
 };
 
-/* Column name of an observable ("t_e", "e", "x_c_r", "t_d"). */
+/* Column name of an observable ("t_e", "e", "x_c_r", "t_d", "h"). */
 const char *
 hb_fit_obs_name(int obs);
 
@@ -162,8 +200,10 @@ struct hb_fit_options {
 
 /* One data point and its fit. */
 struct hb_fit_point {
-	size_t row;              /* data row */
+	size_t row;              /* data row of the file (0-based) */
 	int obs;                 /* enum hb_fit_obs */
+	size_t trial;            /* trial (0-based; drops: the row) */
+	size_t index;            /* impact i of t_e, i of h_i (0 for drops) */
 	double measured, simulated; /* SI; for t_e: the time since the first collision */
 	double sd;               /* the weight's standard deviation */
 	double resid;            /* (simulated - measured) / sd */
@@ -183,6 +223,16 @@ struct hb_fit_result {
 	int sd_scaled;              /* 1: standard errors scaled by cost / (N - P) */
 	int iter;
 	long runs;                  /* simulator runs used */
+	/*
+	 * Where the time went (measurements: they vary from run to run, the
+	 * rest of the result does not): run_cpu, the CPU seconds of every run
+	 * made, those run beside f that a rejected step wasted too; run_span,
+	 * the wall time the same runs would take were each of the `threads`
+	 * threads on a core of its own (run_cpu / run_span: the speed-up the
+	 * threads allow, whatever else the machine is doing).
+	 */
+	double run_cpu, run_span;
+	int threads;
 	int reason;                 /* enum hb_fit_reason */
 	double cond;                /* condition number of the scaled Jacobian */
 	char unident[256];          /* "law.c, law.alpha" when not identifiable, else "" */
@@ -252,6 +302,17 @@ hb_fit_simulate(const struct hb_scene *sc, const struct hb_fit_data *d, int jobs
 /* Number of data points (residuals) of the data. */
 size_t
 hb_fit_npoints(const struct hb_fit_data *d);
+
+/*
+ * The data points in the order of fit_result.point and hb_fit_simulate's
+ * out: row, obs, trial, index, measured (for t_e the time since the
+ * trial's first given impact) and sd (the weight's) of each, the rest 0,
+ * into pt[0 .. hb_fit_npoints(d) - 1] (a front end that shows data beside
+ * a run: missed values and trials are left out or told apart as the fit
+ * does).  Returns the number of points.
+ */
+size_t
+hb_fit_data_points(const struct hb_fit_data *d, struct hb_fit_point *pt);
 
 void
 hb_fit_result_free(struct hb_fit_result *r);

@@ -73,10 +73,14 @@ usage(FILE *f)
 "fitted scene as a preset.\n"
 "\n"
 "  -d, --data FILE         the measurements: a CSV file with a column t_e (impact\n"
-"                          times of one bouncing sequence), or v_i with e, x_c_r\n"
-"                          and/or t_d (separate drops), each optionally with\n"
-"                          sd_NAME; or a recording of a bouncing sequence (WAV,\n"
-"                          FLAC, Ogg, MP3, M4A, AIFF: known by its content)\n"
+"                          times of a bouncing sequence; several with a column\n"
+"                          trial), h_0, h_1, ... (drop and rebound heights, a\n"
+"                          drop per row), or v_i with e, x_c_r and/or t_d\n"
+"                          (separate drops), each optionally with sd_NAME and a\n"
+"                          unit in the header (t_e [ms]); NA or an empty cell\n"
+"                          for a missed value; or a recording of a bouncing\n"
+"                          sequence (WAV, FLAC, Ogg, MP3, M4A, AIFF: known by\n"
+"                          its content)\n"
 "  -f, --free KEY,...      the keys to fit, e.g. law.c,law.alpha (repeatable)\n"
 "  -s, --set KEY=VALUE     change the preset first, e.g. a start (repeatable)\n"
 "  -o, --out FILE          the fitted preset (default: DATA's name + -fit.preset)\n"
@@ -415,12 +419,32 @@ fit_main(int argc, char **argv)
 			goto out;
 		}
 	}
-	printf("data        %s: %s, %zu row%s, %zu points, %s\n", data,
-	    d.kind == HB_FIT_SEQUENCE ? "one bouncing sequence (t_e; the first aligns the clocks)"
-	                           : "separate drops (one run per row from contact at v_i)",
-	    d.n, d.n == 1 ? "" : "s", hb_fit_npoints(&d),
-	    d.sd[d.kind == HB_FIT_SEQUENCE ? HB_FIT_OBS_TE : HB_FIT_OBS_E] != NULL
-	    ? "weighted by sd" : "no standard deviations");
+	{
+		const int ob = d.kind == HB_FIT_SEQUENCE ? HB_FIT_OBS_TE : d.kind == HB_FIT_HEIGHTS
+		             ? HB_FIT_OBS_H : HB_FIT_OBS_E;
+		size_t missed = 0, rows = d.kind == HB_FIT_HEIGHTS ? d.ntrials : d.n;
+		char what[160];
+
+		for (int k = 0; k < HB_FIT_OBS_COUNT; k++)
+			for (size_t i = 0; d.col[k] != NULL && i < d.n; i++)
+				missed += isnan(d.col[k][i]);
+		if (d.kind == HB_FIT_SEQUENCE && d.ntrials > 1)
+			snprintf(what, sizeof what, "%zu bouncing sequences (trials, fitted jointly; t_e, "
+			    "the first of each aligns its clocks)", d.ntrials);
+		else if (d.kind == HB_FIT_SEQUENCE)
+			snprintf(what, sizeof what, "one bouncing sequence (t_e; the first aligns the "
+			    "clocks)");
+		else if (d.kind == HB_FIT_HEIGHTS)
+			snprintf(what, sizeof what, "rebound heights of %zu drop%s (trials, fitted jointly; "
+			    "each from rest at its h_0)", d.ntrials, d.ntrials == 1 ? "" : "s");
+		else
+			snprintf(what, sizeof what, "separate drops (one run per row from contact at v_i)");
+		printf("data        %s: %s, %zu row%s, %zu points", data, what, rows,
+		    rows == 1 ? "" : "s", hb_fit_npoints(&d));
+		if (missed > 0)
+			printf(", %zu missed (NA)", missed);
+		printf(", %s\n", d.sd[ob] != NULL ? "weighted by sd" : "no standard deviations");
+	}
 	if (laws != NULL) {
 		struct fit_laws_args la = {
 			.laws = laws, .preset = preset, .data = data, .sets = sets, .nsets = nsets,
@@ -472,6 +496,11 @@ fit_main(int argc, char **argv)
 		snprintf(r.why, sizeof r.why, "interrupted by %s (the best point so far)",
 		         cli_signal_name(sig));
 	hb_fit_stats(&r, FIT_NOISE_LEVEL, &fst);
+	/* where the time went: a measurement, so on stderr with the progress */
+	if (!quiet)
+		fprintf(stderr, PROG " fit: runs: %.3g s of CPU; %.3g s on %d thread%s with a core "
+		        "each (%.2fx)\n", r.run_cpu, r.run_span, r.threads, r.threads == 1 ? "" : "s",
+		        r.run_span > 0 ? r.run_cpu / r.run_span : 1.0);
 	fit_report_print(&r, &d, &fst, quiet);
 	fit_verdict(&r, &fst, max_rse, &v);
 	if (sig != 0) {

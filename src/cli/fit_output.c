@@ -33,12 +33,13 @@ fill_residuals(FILE *f, const void *ctx)
 {
 	const struct hb_fit_result *r = ctx;
 
-	fprintf(f, "point,row,observable,measured,simulated,sd,resid,start\n");
+	fprintf(f, "point,row,observable,measured,simulated,sd,resid,start,trial,index\n");
 	for (size_t k = 0; k < r->npoints; k++) {
 		const struct hb_fit_point *p = &r->point[k];
 
-		fprintf(f, "%zu,%zu,%s,%.17g,%.17g,%.17g,%.17g,%.17g\n", k, p->row,
-		    hb_fit_obs_name(p->obs), p->measured, p->simulated, p->sd, p->resid, p->start);
+		fprintf(f, "%zu,%zu,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%zu,%zu\n", k, p->row,
+		    hb_fit_obs_name(p->obs), p->measured, p->simulated, p->sd, p->resid, p->start,
+		    p->trial, p->index);
 	}
 }
 

@@ -84,6 +84,20 @@ fit_plot(FILE *f, const struct hb_fit_result *r, const struct hb_fit_data *d)
 	ym = x + n;
 	ys = ym + n;
 	y0s = ys + n;
+	if (d->kind != HB_FIT_DROPS && (d->kind == HB_FIT_HEIGHTS || d->ntrials > 1
+	                                || n + 1 != d->n)) {
+		/* several trials, a missed impact or heights: each point as it is */
+		for (size_t k = 0; k < n; k++) {
+			x[k] = (double)(k + 1);
+			ym[k] = r->point[k].measured;
+			ys[k] = r->point[k].simulated;
+			y0s[k] = r->point[k].start;
+		}
+		panel(f, d->kind == HB_FIT_HEIGHTS ? "rebound height (apex) [m]"
+		      : "time since the trial's first impact [s]", "point", x, ym, ys, y0s, n);
+		free(x);
+		return;
+	}
 	if (d->kind == HB_FIT_SEQUENCE) {
 		for (size_t k = 0; k < n; k++) {
 			x[k] = (double)(k + 1);

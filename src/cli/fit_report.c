@@ -115,15 +115,26 @@ fit_report_print(const struct hb_fit_result *r, const struct hb_fit_data *d,
 	}
 	if (quiet)
 		return;
-	printf("\nresiduals   (%s)\n", d->kind == HB_FIT_SEQUENCE
-	    ? "t_e: time since the first impact" : "one run per drop");
-	printf("  %4s %4s %-6s %16s %16s %12s %10s\n", "pt", "row", "obs", "measured",
-	    "simulated", "sd", "resid/sd");
+	printf("\nresiduals   (%s)\n", d->kind == HB_FIT_SEQUENCE ? d->ntrials > 1
+	    ? "t_e: time since the trial's first impact; i: the impact" : "t_e: time since the first impact"
+	    : d->kind == HB_FIT_HEIGHTS ? "h: the apex after impact i - 1, from rest at the row's h_0"
+	    : "one run per drop");
+	if (d->kind == HB_FIT_SEQUENCE && d->ntrials <= 1)
+		printf("  %4s %4s %-6s %16s %16s %12s %10s\n", "pt", "row", "obs", "measured",
+		    "simulated", "sd", "resid/sd");
+	else
+		printf("  %4s %4s %5s %3s %-6s %16s %16s %12s %10s\n", "pt", "row", "trial", "i",
+		    "obs", "measured", "simulated", "sd", "resid/sd");
 	for (size_t k = 0; k < r->npoints; k++) {
 		const struct hb_fit_point *pt = &r->point[k];
 
-		printf("  %4zu %4zu %-6s %16.9g %16.9g %12.3g %10.3g\n", k, pt->row + 1,
-		    hb_fit_obs_name(pt->obs), pt->measured, pt->simulated, pt->sd, pt->resid);
+		if (d->kind == HB_FIT_SEQUENCE && d->ntrials <= 1)
+			printf("  %4zu %4zu %-6s %16.9g %16.9g %12.3g %10.3g\n", k, pt->row + 1,
+			    hb_fit_obs_name(pt->obs), pt->measured, pt->simulated, pt->sd, pt->resid);
+		else
+			printf("  %4zu %4zu %5zu %3zu %-6s %16.9g %16.9g %12.3g %10.3g\n", k, pt->row + 1,
+			    pt->trial + 1, pt->index, hb_fit_obs_name(pt->obs), pt->measured,
+			    pt->simulated, pt->sd, pt->resid);
 	}
 	fit_plot(stdout, r, d);
 }
@@ -180,7 +191,9 @@ fit_report_json_object(FILE *f, const struct fit_report_ctx *c)
 	}
 	fprintf(f, ",\n  \"data\": ");
 	jstr(f, c->data);
-	fprintf(f, ",\n  \"kind\": \"%s\",\n", c->d->kind == HB_FIT_SEQUENCE ? "sequence" : "drops");
+	fprintf(f, ",\n  \"kind\": \"%s\",\n  \"trials\": %zu,\n", c->d->kind == HB_FIT_SEQUENCE
+	    ? "sequence" : c->d->kind == HB_FIT_HEIGHTS ? "heights" : "drops", c->d->kind
+	    == HB_FIT_DROPS ? c->d->n : c->d->ntrials);
 	fprintf(f, "  \"stopped\": ");
 	jstr(f, r->why);
 	fprintf(f, ",\n  \"converged\": %s,\n  \"iterations\": %d,\n  \"runs\": %ld,\n",
@@ -255,7 +268,8 @@ fit_report_json_object(FILE *f, const struct fit_report_ctx *c)
 	for (size_t k = 0; k < r->npoints; k++) {
 		const struct hb_fit_point *pt = &r->point[k];
 
-		fprintf(f, "    {\"row\": %zu, \"observable\": \"%s\", \"measured\": ", pt->row + 1,
+		fprintf(f, "    {\"row\": %zu, \"trial\": %zu, \"index\": %zu, \"observable\": "
+		    "\"%s\", \"measured\": ", pt->row + 1, pt->trial + 1, pt->index,
 		    hb_fit_obs_name(pt->obs));
 		jnum(f, pt->measured);
 		fprintf(f, ", \"simulated\": ");

@@ -19,6 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
@@ -48,6 +49,16 @@ struct ctx {
 	struct hb_scene *scs;    /* np + 1 scenes */
 	double *y;            /* (np + 1) * npts simulated values */
 	int *fail;
+	/*
+	 * Jacobian columns run beside an evaluation of f on cores that would
+	 * wait otherwise (see f_cb): columns 0 .. spec_n - 1 at spec_u.
+	 */
+	int cores;            /* threads the runs may use (jobs resolved) */
+	int spec_n;
+	double *spec_u, *spec_y;  /* np; np * npts */
+	int *spec_fail;           /* np */
+	long per;             /* runs per scene: trials, or drops */
+	double cpu, span;     /* CPU seconds of every run; their span on the threads */
 };
 
 static const char *const reasons[] = {
@@ -77,49 +88,6 @@ hb_fit_result_free(struct hb_fit_result *r)
 	r->npoints = 0;
 }
 
-/* Fills the measured values and their sd, point by point (see fit_eval). */
-static void
-points_of(const struct hb_fit_data *d, double *meas, double *sd, int *row, int *obs, int *scaled)
-{
-	size_t k = 0;
-
-	*scaled = 0;
-	if (d->kind == HB_FIT_SEQUENCE) {
-		double m = 0;
-
-		for (size_t i = 1; i < d->n; i++)
-			m = fmax(m, fabs(d->col[HB_FIT_OBS_TE][i] - d->col[HB_FIT_OBS_TE][0]));
-		for (size_t i = 1; i < d->n; i++, k++) {
-			meas[k] = d->col[HB_FIT_OBS_TE][i] - d->col[HB_FIT_OBS_TE][0];
-			/* the difference of two times: the variances add */
-			sd[k] = d->sd[HB_FIT_OBS_TE] != NULL
-			    ? hypot(d->sd[HB_FIT_OBS_TE][i], d->sd[HB_FIT_OBS_TE][0]) : m;
-			row[k] = (int)i;
-			obs[k] = HB_FIT_OBS_TE;
-		}
-		*scaled = d->sd[HB_FIT_OBS_TE] == NULL;
-		return;
-	}
-	for (int ob = HB_FIT_OBS_E; ob < HB_FIT_OBS_COUNT; ob++) {
-		double m = 0;
-
-		if (d->col[ob] == NULL)
-			continue;
-		for (size_t i = 0; i < d->n; i++)
-			m = fmax(m, fabs(d->col[ob][i]));
-		if (!(m > 0))
-			m = 1;
-		if (d->sd[ob] == NULL)
-			*scaled = 1;
-		for (size_t i = 0; i < d->n; i++, k++) {
-			meas[k] = d->col[ob][i];
-			sd[k] = d->sd[ob] != NULL ? d->sd[ob][i] : m;
-			row[k] = (int)i;
-			obs[k] = ob;
-		}
-	}
-}
-
 /* Simulates the scenes for parameter vectors u[0..ns-1] into c->y. */
 static int
 eval_many(struct ctx *c, const double *const *u, int ns, char *msg, size_t n)
@@ -131,7 +99,8 @@ eval_many(struct ctx *c, const double *const *u, int ns, char *msg, size_t n)
 		if (fit_param_apply(&c->scs[s], c->fp, c->np, u[s], th, NULL, msg, n) != HB_OK)
 			return HB_EINVAL;
 	}
-	return fit_eval(c->scs, ns, c->d, c->jobs, NAN, c->y, c->fail, &c->runs, msg, n);
+	return fit_eval(c->scs, ns, c->d, c->jobs, NAN, c->y, c->fail, &c->runs, &c->cpu,
+	                &c->span, msg, n);
 }
 
 /* Residuals of simulated values y (scene s) into r. */
@@ -142,20 +111,57 @@ resid_of(const struct ctx *c, const double *y, int failed, double *r)
 		r[k] = failed || !isfinite(y[k]) ? FIT_FAIL_RESID : (y[k] - c->meas[k]) / c->sd[k];
 }
 
+/* u0 moved by the difference step of column j into uj; returns the step as represented. */
+static double
+fd_point(const struct ctx *c, const double *u0, int j, double *uj)
+{
+	memcpy(uj, u0, (size_t)c->np * sizeof *uj);
+	uj[j] += c->h_rel * fmax(fabs(u0[j]), 1);
+	/* the step as represented, so the quotient uses the exact difference */
+	return uj[j] - u0[j];
+}
+
+/*
+ * f at x.  With more than one core, P mod cores Jacobian columns at x run
+ * beside it: GSL asks for the Jacobian at x next whenever it accepts the
+ * step, and then finds them done, so that the rest of the columns fill
+ * every core (P = 1 on 2 cores: f and the column together, one run's time
+ * for an accepted iteration instead of two).  More would not shorten the
+ * iteration and would cost CPU at every rejected step, whose columns are
+ * wasted (runs at a rejected point are often the slow ones).  The values
+ * are those df_cb would compute (each run is independent and
+ * deterministic), so the result does not depend on the cores, to the bit;
+ * runs counts the runs the fit used, not those wasted.
+ */
 static int
 f_cb(const gsl_vector *x, void *params, gsl_vector *f)
 {
 	struct ctx *c = params;
-	double u[HB_FIT_MAX_FREE];
-	const double *up = u;
+	double u[HB_FIT_MAX_FREE + 1][HB_FIT_MAX_FREE];
+	const double *up[HB_FIT_MAX_FREE + 1];
+	int ns = 1 + (c->cores > 1 ? c->np % c->cores : 0);
 	char m[256];
 
 	for (int j = 0; j < c->np; j++)
-		u[j] = gsl_vector_get(x, (size_t)j);
-	if (eval_many(c, &up, 1, m, sizeof m) != HB_OK)
-		c->fail[0] = 1;
+		u[0][j] = gsl_vector_get(x, (size_t)j);
+	up[0] = u[0];
+	for (int s = 1; s < ns; s++) {
+		fd_point(c, u[0], s - 1, u[s]);
+		up[s] = u[s];
+	}
+	c->spec_n = 0;
+	if (eval_many(c, up, ns, m, sizeof m) != HB_OK)
+		for (int s = 0; s < ns; s++)
+			c->fail[s] = 1;
+	c->runs -= (long)(ns - 1) * c->per; /* counted when used */
 	resid_of(c, c->y, c->fail[0], f->data);
-	memcpy(c->last_u, u, (size_t)c->np * sizeof *u);
+	if (ns > 1) {
+		memcpy(c->spec_u, u[0], (size_t)c->np * sizeof *c->spec_u);
+		memcpy(c->spec_y, c->y + c->npts, (size_t)(ns - 1) * c->npts * sizeof *c->spec_y);
+		memcpy(c->spec_fail, c->fail + 1, (size_t)(ns - 1) * sizeof *c->spec_fail);
+		c->spec_n = ns - 1;
+	}
+	memcpy(c->last_u, u[0], (size_t)c->np * sizeof u[0][0]);
 	memcpy(c->last_r, f->data, c->npts * sizeof *c->last_r);
 	c->have_last = 1;
 	return GSL_SUCCESS;
@@ -168,26 +174,30 @@ df_cb(const gsl_vector *x, void *params, gsl_matrix *J)
 	double u[HB_FIT_MAX_FREE + 1][HB_FIT_MAX_FREE], h[HB_FIT_MAX_FREE];
 	const double *up[HB_FIT_MAX_FREE + 1];
 	double *r0, *r1;
-	int base = 1, same = c->have_last;
+	int base, same = c->have_last, have = c->spec_n, ns = 0;
 	char m[256];
 
 	for (int j = 0; j < c->np; j++) {
 		u[0][j] = gsl_vector_get(x, (size_t)j);
 		same = same && c->last_u[j] == u[0][j];
 	}
+	for (int j = 0; j < c->np; j++)
+		if (c->spec_u[j] != u[0][j])
+			have = 0;
+	if (!same)
+		have = 0; /* the columns ran beside the f at last_u */
 	base = same ? 0 : 1; /* f at x is known when GSL evaluated it last */
-	for (int j = 0; j < c->np; j++) {
-		memcpy(u[j + 1], u[0], (size_t)c->np * sizeof u[0][0]);
-		h[j] = c->h_rel * fmax(fabs(u[0][j]), 1);
-		u[j + 1][j] += h[j];
-		/* the step as represented, so the quotient uses the exact difference */
-		h[j] = u[j + 1][j] - u[0][j];
-	}
-	for (int s = 0; s <= c->np; s++)
-		up[s] = u[s];
-	if (eval_many(c, up + 1 - base, c->np + base, m, sizeof m) != HB_OK)
-		for (int s = 0; s <= c->np; s++)
+	for (int j = 0; j < c->np; j++)
+		h[j] = fd_point(c, u[0], j, u[j + 1]);
+	/* the columns not run beside f, and f when it is not known */
+	if (base)
+		up[ns++] = u[0];
+	for (int j = have; j < c->np; j++)
+		up[ns++] = u[j + 1];
+	if (ns > 0 && eval_many(c, up, ns, m, sizeof m) != HB_OK)
+		for (int s = 0; s < ns; s++)
 			c->fail[s] = 1;
+	c->runs += (long)have * c->per;
 	r0 = malloc(2 * c->npts * sizeof *r0);
 	if (r0 == NULL)
 		return GSL_ENOMEM;
@@ -197,9 +207,13 @@ df_cb(const gsl_vector *x, void *params, gsl_matrix *J)
 	else
 		resid_of(c, c->y, c->fail[0], r0);
 	for (int j = 0; j < c->np; j++) {
-		int s = j + base;
+		if (j < have) {
+			resid_of(c, c->spec_y + (size_t)j * c->npts, c->spec_fail[j], r1);
+		} else {
+			int s = j - have + base;
 
-		resid_of(c, c->y + (size_t)s * c->npts, c->fail[s], r1);
+			resid_of(c, c->y + (size_t)s * c->npts, c->fail[s], r1);
+		}
 		for (size_t k = 0; k < c->npts; k++)
 			gsl_matrix_set(J, k, (size_t)j, (r1[k] - r0[k]) / h[j]);
 	}
@@ -276,6 +290,9 @@ hb_fit_free(struct hb_fit *f)
 	free(f->c.scs);
 	free(f->c.y);
 	free(f->c.fail);
+	free(f->c.spec_u);
+	free(f->c.spec_y);
+	free(f->c.spec_fail);
 	free(f->r.point);
 	free(f);
 }
@@ -289,7 +306,7 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 	struct hb_fit_result *r;
 	struct ctx *c;
 	double u[HB_FIT_MAX_FREE];
-	int np = o->nkeys, *row = NULL, *obs = NULL;
+	int np = o->nkeys;
 	size_t npts = hb_fit_npoints(d);
 	gsl_vector_view xv;
 
@@ -321,6 +338,16 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 		hb_status_set(msg, n, HB_EINVAL, "%s: %zu data point%s cannot determine %d "
 		    "parameters; accepted: at least as many points as free keys", d->source, npts,
 		    npts == 1 ? "" : "s", np);
+		goto fail;
+	}
+	/* a height is (e v_i)^2 / (2 g): free flight under gravity alone */
+	if (d->kind == HB_FIT_HEIGHTS && (!(sc->loads.g > 0) || sc->loads.F1 != 0
+	                                  || sc->loads.F2 != 0 || sc->loads.ramp)) {
+		cnum_snprintf(msg, n, "%s: rebound heights need a flight under gravity alone (the "
+		    "apex is v^2 / (2 g)); the scene has loads.g = %g m/s^2%s; accepted: loads.g > "
+		    "0 and no other load (--set loads.g=9.81)", d->source, sc->loads.g,
+		    sc->loads.F1 != 0 || sc->loads.F2 != 0 || sc->loads.ramp
+		    ? " and another load" : "");
 		goto fail;
 	}
 	f->xtol = o->xtol > 0 ? o->xtol : 1e-8;
@@ -356,15 +383,27 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 	c->scs = malloc((size_t)(np + 1) * sizeof *c->scs);
 	c->y = malloc((size_t)(np + 1) * npts * sizeof(double));
 	c->fail = malloc((size_t)(np + 1) * sizeof(int));
-	row = malloc(npts * sizeof(int));
-	obs = malloc(npts * sizeof(int));
+	c->spec_u = malloc((size_t)np * sizeof(double));
+	c->spec_y = malloc((size_t)np * npts * sizeof(double));
+	c->spec_fail = malloc((size_t)np * sizeof(int));
+	c->per = d->kind == HB_FIT_DROPS ? (long)d->n : (long)d->ntrials;
+	c->cores = o->jobs;
+	if (c->cores <= 0) {
+		long nc = sysconf(_SC_NPROCESSORS_ONLN);
+
+		c->cores = nc > 0 ? (int)nc : 1;
+	}
 	if (r->point == NULL || c->meas == NULL || c->sd == NULL || c->last_u == NULL
 	    || c->last_r == NULL || c->scs == NULL || c->y == NULL || c->fail == NULL
-	    || row == NULL || obs == NULL) {
+	    || c->spec_u == NULL || c->spec_y == NULL || c->spec_fail == NULL) {
 		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto fail;
 	}
-	points_of(d, c->meas, c->sd, row, obs, &r->sd_scaled);
+	fit_points(d, r->point, NULL, &r->sd_scaled);
+	for (size_t k = 0; k < npts; k++) {
+		c->meas[k] = r->point[k].measured;
+		c->sd[k] = r->point[k].sd;
+	}
 
 	/* The start: every run must succeed, or the fit has nothing to go on. */
 	{
@@ -382,18 +421,10 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 			goto fail;
 		}
 		for (size_t k = 0; k < npts; k++) {
-			r->point[k].row = (size_t)row[k];
-			r->point[k].obs = obs[k];
-			r->point[k].measured = c->meas[k];
-			r->point[k].sd = c->sd[k];
 			r->point[k].start = c->y[k];
 			r->cost0 += pow((c->y[k] - c->meas[k]) / c->sd[k], 2);
 		}
 	}
-	free(row);
-	free(obs);
-	row = obs = NULL;
-
 	f->fdf.f = f_cb;
 	f->fdf.df = df_cb;
 	f->fdf.fvv = NULL;
@@ -418,8 +449,6 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 	}
 	return f;
 fail:
-	free(row);
-	free(obs);
 	hb_fit_free(f);
 	return NULL;
 }
@@ -517,6 +546,9 @@ hb_fit_result_get(struct hb_fit *f, struct hb_fit_result *out, char *msg, size_t
 		snprintf(r->why, sizeof r->why, "%s", hb_fit_reason_str(r->reason));
 	}
 	r->runs = c->runs;
+	r->run_cpu = c->cpu;
+	r->run_span = c->span;
+	r->threads = c->cores;
 	return HB_OK;
 }
 
@@ -543,7 +575,7 @@ hb_fit_simulate(const struct hb_scene *sc, const struct hb_fit_data *d, int jobs
 {
 	int fail = 0;
 	long runs = 0;
-	int st = fit_eval(sc, 1, d, jobs, NAN, out, &fail, &runs, msg, n);
+	int st = fit_eval(sc, 1, d, jobs, NAN, out, &fail, &runs, NULL, NULL, msg, n);
 
 	if (st != HB_OK)
 		return st;

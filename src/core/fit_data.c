@@ -1,28 +1,29 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
- * fit_data.c - measured data for fit.c: CSV files recognised by their
- * columns (a bouncing sequence by t_e, separate drops by v_i and e), and
- * sequences from impact times.  See fit.h for the formats.
+ * fit_data.c - measured data for fit.c once read (fit_csv.c reads the CSV
+ * files): the invariant every loader ends with, sequences from impact
+ * times, and the data points in the one order that fit.c, fit_eval.c and
+ * the front ends share.  See fit.h for the formats.
  *
- * Invariant: a struct hb_fit_data returned with status 0 has n >= 1 rows, every
- * present column holds n finite values, every sd is > 0, and the t_e of a
- * sequence are strictly increasing.
+ * Invariant: a struct hb_fit_data returned with status 0 has n >= 1 rows
+ * and at least one data point; every value of a present column is finite
+ * or NAN (a missed value, whose sd is NAN too); every sd of a value is > 0;
+ * sequences and heights have ntrials >= 1 trials, each of its rows in
+ * trial_row; the present t_e of a trial are strictly increasing, at least
+ * 2; a trial of heights starts with its h_0 > 0 and has a rebound height
+ * >= 0; the v_i of drops are given and negative.
  */
-#include <ctype.h>
-#include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "hybounce/fit.h"
-#include "hybounce/input.h"
 #include "hybounce/status.h"
-#include "cnum.h"
+#include "fit_impl.h"
 
-enum { MAX_COLS = 64 };
-
-static const char *const obs_names[HB_FIT_OBS_COUNT] = { "t_e", "e", "x_c_r", "t_d" };
+static const char *const obs_names[HB_FIT_OBS_COUNT] = { "t_e", "e", "x_c_r", "t_d", "h" };
 
 const char *
 hb_fit_obs_name(int obs)
@@ -40,95 +41,121 @@ hb_fit_data_free(struct hb_fit_data *d)
 		free(d->col[k]);
 		free(d->sd[k]);
 	}
+	free(d->trial_row);
+	free(d->file_row);
 	memset(d, 0, sizeof *d);
 }
 
-/* Splits line in place at commas; trims blanks and one pair of quotes. */
-static int
-split(char *line, char **f, int max)
+/* "trial 2 (data rows 5-9): " for a file of several trials, else "". */
+static void
+trial_str(const struct hb_fit_data *d, size_t t, char *buf, size_t n)
 {
-	int nf = 0;
-	char *p = line;
-
-	for (;;) {
-		char *end = strchr(p, ',');
-		char *s = p, *e;
-
-		if (end != NULL)
-			*end = '\0';
-		while (isspace((unsigned char)*s))
-			s++;
-		e = s + strlen(s);
-		while (e > s && isspace((unsigned char)e[-1]))
-			*--e = '\0';
-		if (e - s >= 2 && *s == '"' && e[-1] == '"') {
-			e[-1] = '\0';
-			s++;
-		}
-		if (nf == max)
-			return -1;
-		f[nf++] = s;
-		if (end == NULL)
-			return nf;
-		p = end + 1;
-	}
+	if (d->ntrials < 2)
+		buf[0] = '\0';
+	else
+		snprintf(buf, n, "trial %zu (data rows %zu-%zu): ", t + 1,
+		    d->file_row[d->trial_row[t]] + 1, d->file_row[d->trial_row[t + 1] - 1] + 1);
 }
 
-/* Appends v to a growing array. */
-static int
-push(double **a, size_t n, size_t *cap, double v)
+int
+fit_data_check(struct hb_fit_data *d, char *msg, size_t mn)
 {
-	if (n == *cap) {
-		size_t nc = *cap ? 2 * *cap : 64;
-		double *t = realloc(*a, nc * sizeof *t);
+	char tr[96];
 
-		if (t == NULL)
-			return -1;
-		*a = t;
-		*cap = nc;
-	}
-	(*a)[n] = v;
-	return 0;
-}
-
-/* Checks the invariant of the header comment. */
-static int
-check_data(struct hb_fit_data *d, char *msg, size_t mn)
-{
 	if (d->n == 0)
 		return hb_status_set(msg, mn, HB_EINVAL, "%s: no data rows; accepted: a "
 		    "header row, then a row of numbers per measurement", d->source);
 	for (int k = 0; k < HB_FIT_OBS_COUNT; k++)
-		for (size_t i = 0; d->sd[k] != NULL && i < d->n; i++)
+		for (size_t i = 0; d->sd[k] != NULL && i < d->n; i++) {
+			if (d->col[k] == NULL || isnan(d->col[k][i])) {
+				d->sd[k][i] = NAN; /* the sd of a missed value means nothing */
+				continue;
+			}
 			if (!(d->sd[k][i] > 0))
-				return hb_status_set(msg, mn, HB_EINVAL, "%s: row %zu: sd_%s = %g; "
-				    "accepted: a standard deviation > 0", d->source, i + 1,
-				    obs_names[k], d->sd[k][i]);
+				return hb_status_set(msg, mn, HB_EINVAL, "%s: data row %zu: sd_%s = %g; "
+				    "accepted: a standard deviation > 0 where %s is given", d->source,
+				    d->file_row[i] + 1, obs_names[k], d->sd[k][i], obs_names[k]);
+		}
 	if (d->kind == HB_FIT_SEQUENCE) {
-		if (d->n < 2)
-			return hb_status_set(msg, mn, HB_EINVAL, "%s: a sequence needs at least 2 "
-			    "impact times (the first one only aligns the clocks); accepted: 2 or "
-			    "more rows of t_e", d->source);
-		for (size_t i = 1; i < d->n; i++)
-			if (!(d->col[HB_FIT_OBS_TE][i] > d->col[HB_FIT_OBS_TE][i - 1]))
-				return hb_status_set(msg, mn, HB_EINVAL, "%s: row %zu: t_e = %.9g is "
-				    "not after the previous one (%.9g); accepted: impact times in "
-				    "increasing order", d->source, i + 1, d->col[HB_FIT_OBS_TE][i],
-				    d->col[HB_FIT_OBS_TE][i - 1]);
+		const double *t = d->col[HB_FIT_OBS_TE];
+
+		for (size_t k = 0; k < d->ntrials; k++) {
+			size_t have = 0, prev = SIZE_MAX;
+
+			trial_str(d, k, tr, sizeof tr);
+			for (size_t i = d->trial_row[k]; i < d->trial_row[k + 1]; i++) {
+				if (isnan(t[i]))
+					continue;
+				if (prev != SIZE_MAX && !(t[i] > t[prev]))
+					return hb_status_set(msg, mn, HB_EINVAL, "%s: %sdata row %zu: t_e = "
+					    "%.9g is not after the previous one (%.9g); accepted: impact "
+					    "times in increasing order", d->source, tr, d->file_row[i] + 1,
+					    t[i], t[prev]);
+				prev = i;
+				have++;
+			}
+			if (have < 2)
+				return hb_status_set(msg, mn, HB_EINVAL, "%s: %sa sequence needs at least "
+				    "2 impact times (the first one only aligns the clocks), it has %zu; "
+				    "accepted: 2 or more rows of t_e%s", d->source, tr, have,
+				    d->ntrials > 1 ? " per trial" : "");
+		}
+	} else if (d->kind == HB_FIT_HEIGHTS) {
+		const double *h = d->col[HB_FIT_OBS_H];
+
+		for (size_t k = 0; k < d->ntrials; k++) {
+			size_t a = d->trial_row[k], have = 0;
+
+			if (!(h[a] > 0))
+				return hb_status_set(msg, mn, HB_EINVAL, "%s: data row %zu, column h_0: "
+				    "%g; accepted: the drop height, > 0", d->source, d->file_row[a] + 1,
+				    h[a]);
+			for (size_t i = a + 1; i < d->trial_row[k + 1]; i++) {
+				if (isnan(h[i]))
+					continue;
+				if (h[i] < 0)
+					return hb_status_set(msg, mn, HB_EINVAL, "%s: data row %zu, column "
+					    "h_%zu: %g; accepted: a rebound height >= 0", d->source,
+					    d->file_row[i] + 1, i - a, h[i]);
+				have++;
+			}
+			if (have == 0)
+				return hb_status_set(msg, mn, HB_EINVAL, "%s: data row %zu: no rebound "
+				    "height; accepted: h_1 (or a later h_i) given in every row",
+				    d->source, d->file_row[a] + 1);
+		}
 	} else {
 		for (size_t i = 0; i < d->n; i++) {
 			if (d->vi[i] == 0)
-				return hb_status_set(msg, mn, HB_EINVAL, "%s: row %zu: v_i = 0; accepted: "
-				    "an approach velocity other than 0", d->source, i + 1);
+				return hb_status_set(msg, mn, HB_EINVAL, "%s: data row %zu: v_i = 0; "
+				    "accepted: an approach velocity other than 0", d->source, i + 1);
 			d->vi[i] = -fabs(d->vi[i]);
 		}
 		if (d->col[HB_FIT_OBS_E] != NULL)
 			for (size_t i = 0; i < d->n; i++)
 				if (d->col[HB_FIT_OBS_E][i] < 0)
-					return hb_status_set(msg, mn, HB_EINVAL, "%s: row %zu: e = %g; "
+					return hb_status_set(msg, mn, HB_EINVAL, "%s: data row %zu: e = %g; "
 					    "accepted: a restitution >= 0", d->source, i + 1,
 					    d->col[HB_FIT_OBS_E][i]);
+		if (hb_fit_npoints(d) == 0)
+			return hb_status_set(msg, mn, HB_EINVAL, "%s: every value is missing (NA); "
+			    "accepted: at least one measured e, x_c_r or t_d", d->source);
 	}
+	return HB_OK;
+}
+
+int
+fit_data_one_trial(struct hb_fit_data *d)
+{
+	d->ntrials = 1;
+	d->trial_row = malloc(2 * sizeof *d->trial_row);
+	d->file_row = malloc((d->n ? d->n : 1) * sizeof *d->file_row);
+	if (d->trial_row == NULL || d->file_row == NULL)
+		return HB_ENOMEM;
+	d->trial_row[0] = 0;
+	d->trial_row[1] = d->n;
+	for (size_t i = 0; i < d->n; i++)
+		d->file_row[i] = i;
 	return HB_OK;
 }
 
@@ -145,188 +172,139 @@ hb_fit_data_from_times(const double *t, const double *sd, size_t n, const char *
 	d->col[HB_FIT_OBS_TE] = malloc((n ? n : 1) * sizeof(double));
 	if (sd != NULL)
 		d->sd[HB_FIT_OBS_TE] = malloc((n ? n : 1) * sizeof(double));
-	if (d->col[HB_FIT_OBS_TE] == NULL || (sd != NULL && d->sd[HB_FIT_OBS_TE] == NULL)) {
+	if (d->col[HB_FIT_OBS_TE] == NULL || (sd != NULL && d->sd[HB_FIT_OBS_TE] == NULL)
+	    || fit_data_one_trial(d) != HB_OK) {
 		hb_fit_data_free(d);
 		return hb_status_set(msg, mn, HB_ENOMEM, "out of memory");
 	}
 	for (size_t i = 0; i < n; i++) {
+		if (!isfinite(t[i])) {
+			hb_fit_data_free(d);
+			return hb_status_set(msg, mn, HB_EINVAL, "%s: impact %zu: t_e = %g; accepted: "
+			    "finite times", source, i, t[i]);
+		}
 		d->col[HB_FIT_OBS_TE][i] = t[i];
 		if (sd != NULL)
 			d->sd[HB_FIT_OBS_TE][i] = sd[i];
 	}
-	if ((st = check_data(d, msg, mn)) != HB_OK)
+	if ((st = fit_data_check(d, msg, mn)) != HB_OK)
 		hb_fit_data_free(d);
 	return st;
 }
 
-/* Which column of the file feeds which array: -1 ignored. */
-struct colmap {
-	double **dst;
-	size_t cap;
-};
-
-int
-hb_fit_data_parse(const char *text, size_t len, const char *name, struct hb_fit_data *d,
-                  char *msg, size_t mn)
+/* The first row of trial k with a value of column v (there is one: the invariant). */
+static size_t
+first_given(const struct hb_fit_data *d, const double *v, size_t k)
 {
-	FILE *f;
-	int st;
+	size_t i = d->trial_row[k];
 
-	memset(d, 0, sizeof *d);
-	if (len == 0)
-		return hb_status_set(msg, mn, HB_EINVAL, "%s: empty file; accepted: a CSV file "
-		    "with a header row (t_e, or v_i and e ...)", name);
-	if ((f = fmemopen((void *)text, len, "r")) == NULL)
-		return hb_status_set(msg, mn, HB_ENOMEM, "%s: out of memory", name);
-	st = hb_fit_data_read(f, name, d, msg, mn);
-	fclose(f);
-	return st;
+	while (i + 1 < d->trial_row[k + 1] && isnan(v[i]))
+		i++;
+	return i;
 }
 
-int
-hb_fit_data_read(FILE *f, const char *path, struct hb_fit_data *d, char *msg, size_t mn)
+size_t
+fit_points(const struct hb_fit_data *d, struct hb_fit_point *pt, size_t *pidx, int *scaled)
 {
-	char *line = NULL, *fld[MAX_COLS];
-	size_t lcap = 0;
-	ssize_t len;
-	long lineno = 0;
-	int ncol = 0, st = HB_OK, have_hdr = 0;
-	int idx_vi = -1, idx[HB_FIT_OBS_COUNT], idx_sd[HB_FIT_OBS_COUNT];
-	struct colmap map[MAX_COLS];
-	char hname[MAX_COLS][32];
+	size_t np = 0;
 
-	memset(d, 0, sizeof *d);
-	memset(map, 0, sizeof map);
-	snprintf(d->source, sizeof d->source, "%s", path);
-	for (int k = 0; k < HB_FIT_OBS_COUNT; k++)
-		idx[k] = idx_sd[k] = -1;
+	if (pidx != NULL)
+		for (size_t i = 0; i < (size_t)HB_FIT_OBS_COUNT * d->n; i++)
+			pidx[i] = SIZE_MAX;
+	if (scaled != NULL)
+		*scaled = 0;
+	if (d->kind == HB_FIT_SEQUENCE || d->kind == HB_FIT_HEIGHTS) {
+		int ob = d->kind == HB_FIT_SEQUENCE ? HB_FIT_OBS_TE : HB_FIT_OBS_H;
+		const double *v = d->col[ob], *sd = d->sd[ob];
+		double m = 0;
 
-	while ((len = getline(&line, &lcap, f)) != -1) {
-		char *p = line;
-		int nf;
+		/* the weight without sd: the largest |value| of the column */
+		for (size_t k = 0; k < d->ntrials; k++) {
+			size_t r = d->kind == HB_FIT_SEQUENCE ? first_given(d, v, k) : d->trial_row[k];
 
-		lineno++;
-		if (strlen(line) != (size_t)len) {
-			/* A NUL byte would end the row there: refused, not truncated. */
-			int c = 0;
-
-			for (const char *q = line; *q != '\0'; q++)
-				c += *q == ',';
-			if (have_hdr && c < ncol)
-				st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: data row %zu, column %d "
-				    "(%s): a NUL byte; accepted: text (a CSV file of numbers)", path,
-				    lineno, d->n + 1, c + 1, hname[c]);
-			else
-				st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: header row, column %d: a "
-				    "NUL byte; accepted: text (a CSV file of numbers)", path, lineno, c + 1);
-			goto out;
+			for (size_t i = r + 1; i < d->trial_row[k + 1]; i++)
+				if (!isnan(v[i]))
+					m = fmax(m, fabs(d->kind == HB_FIT_SEQUENCE ? v[i] - v[r] : v[i]));
 		}
-		/* A UTF-8 byte-order mark (a spreadsheet's CSV) is no part of the header. */
-		if (lineno == 1 && len >= 3 && memcmp(p, "\xEF\xBB\xBF", 3) == 0)
-			p += 3;
-		while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r'))
-			line[--len] = '\0';
-		while (isspace((unsigned char)*p))
-			p++;
-		if (*p == '\0' || *p == '#')
-			continue;
-		if ((nf = split(p, fld, MAX_COLS)) < 0) {
-			st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: more than %d columns; "
-			    "accepted: at most %d", path, lineno, MAX_COLS, MAX_COLS);
-			goto out;
-		}
-		if (!have_hdr) { /* the header decides what the file is */
-			have_hdr = 1;
-			ncol = nf;
-			for (int c = 0; c < nf; c++) {
-				snprintf(hname[c], sizeof hname[c], "%s", fld[c]);
-				for (int k = 0; k < HB_FIT_OBS_COUNT; k++) {
-					if (strcmp(fld[c], obs_names[k]) == 0)
-						idx[k] = c;
-					if (strncmp(fld[c], "sd_", 3) == 0
-					    && strcmp(fld[c] + 3, obs_names[k]) == 0)
-						idx_sd[k] = c;
+		if (!(m > 0))
+			m = 1;
+		if (scaled != NULL)
+			*scaled = sd == NULL;
+		for (size_t k = 0; k < d->ntrials; k++) {
+			size_t r = d->kind == HB_FIT_SEQUENCE ? first_given(d, v, k) : d->trial_row[k];
+
+			for (size_t i = r + 1; i < d->trial_row[k + 1]; i++) {
+				if (isnan(v[i]))
+					continue;
+				if (pt != NULL) {
+					struct hb_fit_point *p = &pt[np];
+
+					memset(p, 0, sizeof *p);
+					p->row = d->file_row[i];
+					p->obs = ob;
+					p->trial = k;
+					p->index = i - d->trial_row[k];
+					if (d->kind == HB_FIT_SEQUENCE) {
+						p->measured = v[i] - v[r];
+						/* the difference of two times: the variances add */
+						p->sd = sd != NULL ? hypot(sd[i], sd[r]) : m;
+					} else {
+						p->measured = v[i];
+						p->sd = sd != NULL ? sd[i] : m;
+					}
 				}
-				if (strcmp(fld[c], "v_i") == 0)
-					idx_vi = c;
+				if (pidx != NULL)
+					pidx[(size_t)ob * d->n + i] = np;
+				np++;
 			}
-			if (idx[HB_FIT_OBS_TE] >= 0) {
-				d->kind = HB_FIT_SEQUENCE;
-				map[idx[HB_FIT_OBS_TE]].dst = &d->col[HB_FIT_OBS_TE];
-				if (idx_sd[HB_FIT_OBS_TE] >= 0)
-					map[idx_sd[HB_FIT_OBS_TE]].dst = &d->sd[HB_FIT_OBS_TE];
-			} else if (idx_vi >= 0 && (idx[HB_FIT_OBS_E] >= 0 || idx[HB_FIT_OBS_XCR] >= 0
-			                           || idx[HB_FIT_OBS_TD] >= 0)) {
-				d->kind = HB_FIT_DROPS;
-				map[idx_vi].dst = &d->vi;
-				for (int k = HB_FIT_OBS_E; k < HB_FIT_OBS_COUNT; k++) {
-					if (idx[k] >= 0)
-						map[idx[k]].dst = &d->col[k];
-					if (idx[k] >= 0 && idx_sd[k] >= 0)
-						map[idx_sd[k]].dst = &d->sd[k];
-				}
-			} else {
-				st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: no data columns recognised; "
-				    "accepted: a column t_e (impact times of one bouncing sequence), or "
-				    "v_i with e, x_c_r and/or t_d (separate drops), each optionally with "
-				    "sd_NAME", path, lineno);
-				goto out;
-			}
-			continue;
 		}
-		if (nf != ncol) {
-			st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: %d fields, the header has %d; "
-			    "accepted: one field per column of the header, separated by commas "
-			    "(numbers with a decimal point)", path, lineno, nf, ncol);
-			goto out;
-		}
-		for (int c = 0; c < nf; c++) {
-			char *end;
-			double v;
+		return np;
+	}
+	for (int ob = HB_FIT_OBS_E; ob < HB_FIT_OBS_COUNT; ob++) {
+		double m = 0;
 
-			if (map[c].dst == NULL)
+		if (d->col[ob] == NULL)
+			continue;
+		for (size_t i = 0; i < d->n; i++)
+			if (!isnan(d->col[ob][i]))
+				m = fmax(m, fabs(d->col[ob][i]));
+		if (!(m > 0))
+			m = 1;
+		if (d->sd[ob] == NULL && scaled != NULL)
+			*scaled = 1;
+		for (size_t i = 0; i < d->n; i++) {
+			if (isnan(d->col[ob][i]))
 				continue;
-			errno = 0;
-			v = cnum_strtod(fld[c], &end);
-			if (fld[c][0] == '\0' || *end != '\0' || !isfinite(v)) {
-				st = hb_status_set(msg, mn, HB_EINVAL, "%s:%ld: column %s: '%.40s%s'; "
-				    "accepted: a finite number in SI units", path, lineno, hname[c],
-				    fld[c], strlen(fld[c]) > 40 ? "..." : "");
-				goto out;
+			if (pt != NULL) {
+				struct hb_fit_point *p = &pt[np];
+
+				memset(p, 0, sizeof *p);
+				p->row = i;
+				p->obs = ob;
+				p->trial = i;
+				p->measured = d->col[ob][i];
+				p->sd = d->sd[ob] != NULL ? d->sd[ob][i] : m;
 			}
-			if (push(map[c].dst, d->n, &map[c].cap, v) != 0) {
-				st = hb_status_set(msg, mn, HB_ENOMEM, "out of memory");
-				goto out;
-			}
+			if (pidx != NULL)
+				pidx[(size_t)ob * d->n + i] = np;
+			np++;
 		}
-		d->n++;
 	}
-	if (ferror(f)) {
-		st = hb_status_set(msg, mn, HB_EIO, "%s: %s", path, strerror(errno));
-		goto out;
-	}
-	if (!have_hdr) {
-		st = hb_status_set(msg, mn, HB_EINVAL, "%s: empty file; accepted: a CSV file with "
-		    "a header row (t_e, or v_i and e ...)", path);
-		goto out;
-	}
-	st = check_data(d, msg, mn);
-out:
-	free(line);
-	if (st != HB_OK)
-		hb_fit_data_free(d);
-	return st;
+	return np;
 }
 
 size_t
 hb_fit_npoints(const struct hb_fit_data *d)
 {
-	size_t np = 0;
+	if (d->n == 0 || (d->kind != HB_FIT_DROPS && d->trial_row == NULL))
+		return 0;
+	return fit_points(d, NULL, NULL, NULL);
+}
 
-	if (d->kind == HB_FIT_SEQUENCE)
-		return d->n > 0 ? d->n - 1 : 0;
-	for (int k = HB_FIT_OBS_E; k < HB_FIT_OBS_COUNT; k++)
-		if (d->col[k] != NULL)
-			np += d->n;
-	return np;
+size_t
+hb_fit_data_points(const struct hb_fit_data *d, struct hb_fit_point *pt)
+{
+	if (d->n == 0 || (d->kind != HB_FIT_DROPS && d->trial_row == NULL))
+		return 0;
+	return fit_points(d, pt, NULL, NULL);
 }

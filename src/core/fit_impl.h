@@ -22,6 +22,22 @@ struct fit_param {
 	double k;       /* (lo, hi): the logistic's rate, 1 or less (see fit.h) */
 };
 
+/*
+ * fit_data.c.  fit_data_check: the invariant of fit_data.c (0, or
+ * HB_EINVAL with "SOURCE: ..." in msg).  fit_data_one_trial: d->n rows as
+ * one trial (trial_row, file_row allocated; HB_ENOMEM).  fit_points: the
+ * data points in the order of fit_result.point and of fit_eval's output
+ * (pt may be NULL: measured, sd, row, obs, trial, index), pidx[ob * d->n +
+ * row] the point of each value (SIZE_MAX for none; may be NULL), *scaled 1
+ * when a column has no sd (may be NULL); returns the number of points.
+ */
+int
+fit_data_check(struct hb_fit_data *d, char *msg, size_t n);
+int
+fit_data_one_trial(struct hb_fit_data *d);
+size_t
+fit_points(const struct hb_fit_data *d, struct hb_fit_point *pt, size_t *pidx, int *scaled);
+
 int
 fit_param_init(const struct hb_scene *sc, const char *key, struct fit_param *fp,
                char *msg, size_t n);
@@ -36,11 +52,14 @@ fit_param_apply(struct hb_scene *sc, const struct fit_param *fp, int np, const d
  * fails, or a sequence with fewer collisions than the data, sets
  * fail[s] = 1 (may be NULL) and, for the first such scene, the message; its
  * missing values are filled with `penalty` (NAN for none).  Adds the runs
- * made to *runs.  Returns 0, or HB_ENOMEM.
+ * made to *runs, their CPU seconds to *cpu and the wall time they would
+ * take had each thread a core of its own to *span (each may be NULL).
+ * Returns 0, or HB_ENOMEM.
  */
 int
 fit_eval(const struct hb_scene *sc, int nsc, const struct hb_fit_data *d, int jobs,
-         double penalty, double *out, int *fail, long *runs, char *msg, size_t n);
+         double penalty, double *out, int *fail, long *runs, double *cpu, double *span,
+         char *msg, size_t n);
 
 /*
  * fit_lin.c: from the Jacobian J (n residuals x P free parameters) at the

@@ -62,7 +62,7 @@ fi
 rc=$?
 "$BIN" --batch "$T/f.preset" --collisions - 2>/dev/null | cut -d, -f2 | sed -n '2,11p' >"$T/te"
 # simulated t_e - t_e^0 of the fit against the fitted preset's own run
-if [ "$rc" -eq 0 ] && [ "$(head -1 "$T/res.csv")" = "point,row,observable,measured,simulated,sd,resid,start" ] &&
+if [ "$rc" -eq 0 ] && [ "$(head -1 "$T/res.csv")" = "point,row,observable,measured,simulated,sd,resid,start,trial,index" ] &&
 	awk -F, 'NR == FNR { t[FNR] = $1; next } FNR > 1 {
 		d = t[FNR] - t[1] - $5; if (d < 0) d = -d; if (d > 1e-9) bad = 1; n++ }
 		END { exit !(n == 9 && !bad) }' "$T/te" "$T/res.csv"; then

@@ -3,7 +3,8 @@
  * fuzz_fitdata.c - the data files of `hybounce fit` (hb_fit_data_read): any
  * input is read or refused with a message, never a crash, a leak or a
  * read out of bounds; what is read keeps the invariant of fit_data.c (n >=
- * 1 rows, finite values, sd > 0, a sequence's times increasing).
+ * 1 rows, values finite or NAN for a missed one, sd > 0 of every value
+ * given, each trial's times increasing, every drop's h_0 > 0).
  */
 #include <math.h>
 #include <stdio.h>
@@ -30,15 +31,30 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 			abort();
 		for (int k = 0; k < HB_FIT_OBS_COUNT; k++)
 			for (size_t i = 0; i < d.n; i++) {
-				if (d.col[k] != NULL && !isfinite(d.col[k][i]))
+				/* a value is finite, or NAN for a missed one */
+				if (d.col[k] != NULL && isinf(d.col[k][i]))
 					abort();
-				if (d.sd[k] != NULL && !(d.sd[k][i] > 0))
+				if (d.sd[k] != NULL && !isnan(d.col[k][i]) && !(d.sd[k][i] > 0))
 					abort();
 			}
-		if (d.kind == HB_FIT_SEQUENCE)
-			for (size_t i = 1; i < d.n; i++)
-				if (!(d.col[HB_FIT_OBS_TE][i] > d.col[HB_FIT_OBS_TE][i - 1]))
+		if (d.kind != HB_FIT_DROPS && (d.ntrials == 0 || d.trial_row[0] != 0
+		                               || d.trial_row[d.ntrials] != d.n))
+			abort();
+		for (size_t t = 0; d.kind == HB_FIT_SEQUENCE && t < d.ntrials; t++) {
+			double prev = NAN;
+
+			for (size_t i = d.trial_row[t]; i < d.trial_row[t + 1]; i++) {
+				double v = d.col[HB_FIT_OBS_TE][i];
+
+				if (!isnan(v) && !isnan(prev) && !(v > prev))
 					abort();
+				if (!isnan(v))
+					prev = v;
+			}
+		}
+		for (size_t t = 0; d.kind == HB_FIT_HEIGHTS && t < d.ntrials; t++)
+			if (!(d.col[HB_FIT_OBS_H][d.trial_row[t]] > 0))
+				abort();
 		hb_fit_data_free(&d);
 	} else if (msg[0] == '\0') {
 		abort(); /* a refusal always says why */
