@@ -16,13 +16,13 @@
  * on request.
  *
  * A [chain] scene has chain.n bodies of body 1's mass and radius, with the
- * scene's law at every interface.  Its bodies' (y, u) are canonical in
- * flight (parabolas from the time tb they are of, sim_flight.c); one
+ * scene's law at every interface.  Each body's (y, u) is kept at the time
+ * tb it is of and moves on its parabola from there (sim_flight.c), so
+ * that a flight or a step touches only the bodies it concerns; one
  * interface at a time is in contact, integrated as the two-body contact
  * (s->I, its effective mass and F_e,r) with its pair's centre of mass in
- * closed form from the commencement; the bodies are brought to the
- * current time at every sample, and another interface found overlapping
- * then stops the run.
+ * closed form from the commencement, its two bodies set from them at
+ * every sample; another interface closing meanwhile stops the run.
  */
 #include "sim_impl.h"
 
@@ -137,76 +137,99 @@ hbs_chain_free(struct hb_sim *s)
 	s->capbody = s->capif = 0;
 }
 
-/* Gap and relative velocity of interface I from the bodies' (y, u). */
+/* Body b's position and velocity at t: its parabola from the time tb its (y, u) are of. */
 static void
-gap_of(const struct hb_sim *s, const struct iface *I, double *x, double *v)
+body_now(const struct body *b, double t, double *y, double *u)
+{
+	double tau = t - b->tb;
+
+	*y = b->y + tau * (b->u + 0.5 * b->a * tau);
+	*u = b->u + b->a * tau;
+}
+
+/* Gap and relative velocity of interface I at t from the bodies' parabolas. */
+static void
+gap_at(const struct hb_sim *s, const struct iface *I, double t, double *x, double *v)
 {
 	const struct body *hi = &s->body[I->hi];
+	double yh, uh;
 
+	body_now(hi, t, &yh, &uh);
 	if (I->lo < 0) {
-		*x = hi->y - hi->l;
-		*v = hi->u;
+		*x = yh - hi->l;
+		*v = uh;
 	} else {
 		const struct body *lo = &s->body[I->lo];
+		double yl, ul;
 
-		*x = (hi->y - hi->l) - (lo->y + lo->l);
-		*v = hi->u - lo->u;
+		body_now(lo, t, &yl, &ul);
+		*x = (yh - hi->l) - (yl + lo->l);
+		*v = uh - ul;
 	}
 }
 
+/* Sets body b to (y, u) at t. */
+static void
+body_set(struct body *b, double t, double y, double u)
+{
+	b->y = y;
+	b->u = u;
+	b->tb = t;
+}
+
+/* The two-contacts message: interface i closed while s->I is in contact. */
+static int
+two_contacts(struct hb_sim *s, int i)
+{
+	const struct iface *J = &s->ifc[i];
+	char why[220];
+
+	snprintf(why, sizeof why, "interface %d (bodies %d and %d) closed while interface %d was in "
+	         "contact: a chain carries one contact at a time in this version",
+	         s->k0 + i, J->lo + 1, J->hi + 1, s->k0 + s->ia);
+	return hbs_fail(s, HB_ENUMERIC, why);
+}
+
 /*
- * A chain's bodies at s->t: the two of the interface in contact from its
- * gap and the centre of mass of the pair, every other one by its parabola
- * from the time tb its (y, u) are of; tb becomes s->t.  Another interface
- * overlapping while one is in contact is two contacts at once, which this
- * version does not carry: HB_ENUMERIC, naming them.
+ * A chain's bodies at s->t where a sample is recorded.  In flight every
+ * body is on its parabola: nothing to do.  In contact the two bodies of
+ * s->I are set from its gap and their centre of mass; the interfaces next
+ * to it are checked (their gaps move with the contact), and every other
+ * gap closes no earlier than cm_tother, found when the contact began (its
+ * bodies fly on parabolas): another interface closing while one is in
+ * contact is two contacts at once, which this version does not carry
+ * (HB_ENUMERIC, naming them).  The work is the same for any N.
  */
 static int
 chain_sync(struct hb_sim *s)
 {
 	const struct iface *I = s->I;
-	double tau = s->t - s->tb;
-	int i;
+	struct body *hi = &s->body[I->hi];
+	double x, v;
 
-	for (i = 0; i < s->nbody; i++) {
-		struct body *b = &s->body[i];
+	if (!I->q)
+		return 0;
+	if (I->lo < 0) {
+		body_set(hi, s->t, I->x + hi->l, I->v);
+	} else {
+		struct body *lo = &s->body[I->lo];
+		double d = I->x + hi->l + lo->l;
 
-		b->y = b->y + tau * (b->u + 0.5 * b->a * tau);
-		b->u = b->u + b->a * tau;
+		body_set(hi, s->t, s->xm + I->wlo * d, s->vm + I->wlo * I->v);
+		body_set(lo, s->t, s->xm - I->whi * d, s->vm - I->whi * I->v);
 	}
-	s->tb = s->t;
-	if (I->q) {
-		struct body *hi = &s->body[I->hi];
-
-		if (I->lo < 0) {
-			hi->y = I->x + hi->l;
-			hi->u = I->v;
-		} else {
-			struct body *lo = &s->body[I->lo];
-			double d = I->x + hi->l + lo->l;
-
-			hi->y = s->xm + I->wlo * d;
-			hi->u = s->vm + I->wlo * I->v;
-			lo->y = s->xm - I->whi * d;
-			lo->u = s->vm - I->whi * I->v;
-		}
-		for (i = 0; i < s->nif; i++) {
-			const struct iface *J = &s->ifc[i];
-			double x, v;
-
-			if (J == I)
-				continue;
-			gap_of(s, J, &x, &v);
-			if (x < 0) {
-				char why[200];
-
-				snprintf(why, sizeof why, "interface %d (bodies %d and %d) closed while interface "
-				         "%d was in contact: a chain carries one contact at a time in this version",
-				         s->k0 + i, J->lo + 1, J->hi + 1, s->k0 + s->ia);
-				return hbs_fail(s, HB_ENUMERIC, why);
-			}
-		}
+	if (s->ia > 0) {
+		gap_at(s, &s->ifc[s->ia - 1], s->t, &x, &v);
+		if (x < 0)
+			return two_contacts(s, s->ia - 1);
 	}
+	if (s->ia + 1 < s->nif) {
+		gap_at(s, &s->ifc[s->ia + 1], s->t, &x, &v);
+		if (x < 0)
+			return two_contacts(s, s->ia + 1);
+	}
+	if (s->t >= s->cm_tother)
+		return two_contacts(s, s->cm_iother);
 	return 0;
 }
 
@@ -222,10 +245,9 @@ hbs_body_at(const struct hb_sim *s, int i, double *y, double *u)
 	const struct hb_scene *sc = &s->sc;
 	const struct iface *I = &s->ifc[0];
 
-	if (s->chain) {
-		*y = s->body[i].y;
-		*u = s->body[i].u;
-	} else if (s->nbody == 1) {
+	if (s->chain)
+		body_now(&s->body[i], s->t, y, u);
+	else if (s->nbody == 1) {
 		*y = I->x;
 		*u = I->v;
 	} else if (i == I->hi) {
@@ -260,18 +282,18 @@ hbs_chain_reset(struct hb_sim *s)
 			y = sc->chain.floor ? b->l + sc->chain.spacing : 0.0;
 		else
 			y += s->body[i - 1].l + sc->chain.spacing + b->l;
-		b->y = y;
-		b->u = i == s->nbody - 1 ? sc->chain.v : 0.0;
+		body_set(b, 0.0, y, i == s->nbody - 1 ? sc->chain.v : 0.0);
 	}
-	s->tb = 0.0;
 	for (i = 0; i < s->nif; i++) {
 		struct iface *J = &s->ifc[i];
 
 		memset(&J->q, 0, sizeof *J - offsetof(struct iface, q));
-		gap_of(s, J, &J->x, &J->v);
+		gap_at(s, J, 0.0, &J->x, &J->v);
 	}
 	hbs_chain_activate(s, s->nif - 1);
 	s->xm = s->vm = 0.0;
+	s->cm_tother = INFINITY;
+	s->cm_iother = -1;
 }
 
 /*
@@ -282,6 +304,7 @@ void
 hbs_chain_jumped(struct hb_sim *s)
 {
 	const struct iface *I = s->I;
+	int i;
 
 	if (!I->q) /* a separation: x_m, v_m unchanged (g) */
 		return;
@@ -290,6 +313,23 @@ hbs_chain_jumped(struct hb_sim *s)
 	s->cm_y0 = s->xm;
 	s->cm_u0 = s->vm;
 	s->cm_a = I->lo < 0 ? 0.0 : I->wlo * s->body[I->lo].a + I->whi * s->body[I->hi].a;
+	/* the earliest closing of a gap whose bodies both fly through the contact */
+	s->cm_tother = INFINITY;
+	s->cm_iother = -1;
+	for (i = 0; i < s->nif; i++) {
+		const struct iface *J = &s->ifc[i];
+		double x, v, a, tau;
+
+		if (i >= s->ia - 1 && i <= s->ia + 1)
+			continue;
+		gap_at(s, J, s->t, &x, &v);
+		a = s->body[J->hi].a - (J->lo >= 0 ? s->body[J->lo].a : 0.0);
+		tau = hbs_flight_event(x, v, a);
+		if (s->t + tau < s->cm_tother) {
+			s->cm_tother = s->t + tau;
+			s->cm_iother = i;
+		}
+	}
 }
 
 /* x_m, v_m: the centre of mass of s->I's pair from the bodies (0 on the floor). */
@@ -298,12 +338,16 @@ hbs_chain_pair_com(struct hb_sim *s)
 {
 	const struct iface *I = s->I;
 
+	double yl, ul, yh, uh;
+
 	if (I->lo < 0) {
 		s->xm = s->vm = 0.0;
 		return;
 	}
-	s->xm = I->wlo * s->body[I->lo].y + I->whi * s->body[I->hi].y;
-	s->vm = I->wlo * s->body[I->lo].u + I->whi * s->body[I->hi].u;
+	body_now(&s->body[I->lo], s->t, &yl, &ul);
+	body_now(&s->body[I->hi], s->t, &yh, &uh);
+	s->xm = I->wlo * yl + I->whi * yh;
+	s->vm = I->wlo * ul + I->whi * uh;
 }
 
 /* The centre of mass of the pair in contact at s->t (closed form). */
@@ -318,11 +362,26 @@ hbs_chain_com(struct hb_sim *s)
 	s->vm = s->cm_u0 + s->cm_a * tau;
 }
 
-/* Gap and relative velocity of interface i, for the flight (sim_flight.c). */
+/* Gap and relative velocity of interface i at t, for the flight (sim_flight.c). */
 void
-hbs_chain_gap(const struct hb_sim *s, int i, double *x, double *v)
+hbs_chain_gap(const struct hb_sim *s, int i, double t, double *x, double *v)
 {
-	gap_of(s, &s->ifc[i], x, v);
+	gap_at(s, &s->ifc[i], t, x, v);
+}
+
+/* The bodies of interface i set to their state at t (where a flight's event places them). */
+void
+hbs_chain_settle(struct hb_sim *s, int i, double t)
+{
+	const struct iface *J = &s->ifc[i];
+	double y, u;
+
+	body_now(&s->body[J->hi], t, &y, &u);
+	body_set(&s->body[J->hi], t, y, u);
+	if (J->lo >= 0) {
+		body_now(&s->body[J->lo], t, &y, &u);
+		body_set(&s->body[J->lo], t, y, u);
+	}
 }
 
 int

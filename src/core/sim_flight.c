@@ -19,8 +19,8 @@ flight_at(double x, double v, double a, double tau, double *xo, double *vo)
  * The first tau >= 0 after which max(x, v) < 0 (the state leaves C), for
  * x(tau) = x + v tau + a tau^2 / 2; INFINITY if it never does.
  */
-static double
-flight_event(double x, double v, double a)
+double
+hbs_flight_event(double x, double v, double a)
 {
 	double best = INFINITY, r[2];
 	int nr = 0, i;
@@ -68,7 +68,7 @@ hbs_flight_closed(struct hb_sim *s)
 	const double t0 = s->t, x0 = I->x, v0 = I->v;
 	const double a = iface_Fer(s, I, t0) / I->m;
 	const double Ee0 = I->Ee;
-	double tau = flight_event(x0, v0, a), tend, tapex = INFINITY;
+	double tau = hbs_flight_event(x0, v0, a), tend, tapex = INFINITY;
 	int i, rc, it = 0;
 
 	if (!isfinite(v0 * v0) || !isfinite(a * x0) || !isfinite(x0 + v0 * (T - t0))) {
@@ -131,25 +131,14 @@ hbs_flight_closed(struct hb_sim *s)
 	}
 }
 
-/* A chain's bodies at t0 + tau from (y0, u0) at t0, into s->body, and the time they are of. */
+/* The event interface's gap at t, with its work since the flight began and its pair's centre of mass. */
 static void
-chain_bodies_at(struct hb_sim *s, const double *y0, const double *u0, double t0, double tau)
-{
-	int i;
-
-	for (i = 0; i < s->nbody; i++)
-		flight_at(y0[i], u0[i], s->body[i].a, tau, &s->body[i].y, &s->body[i].u);
-	s->tb = t0 + tau;
-	s->t = t0 + tau;
-}
-
-/* The interface of the flight's event at the bodies' state, with its work and centre of mass. */
-static void
-chain_iface_now(struct hb_sim *s, double x0, double Ee0)
+chain_iface_at(struct hb_sim *s, double t, double x0, double Ee0)
 {
 	struct iface *I = s->I;
 
-	hbs_chain_gap(s, s->ia, &I->x, &I->v);
+	s->t = t;
+	hbs_chain_gap(s, s->ia, t, &I->x, &I->v);
 	I->Ee = Ee0 + I->Fer * (I->x - x0);
 	hbs_chain_pair_com(s);
 }
@@ -157,37 +146,27 @@ chain_iface_now(struct hb_sim *s, double x0, double Ee0)
 /*
  * A flight of a chain (no interface in contact, constant loads): every
  * body on its parabola; the event is the earliest of the interfaces'
- * (the lowest one of those at the same instant), each found by flight_event
- * on its gap, whose acceleration is the difference of its bodies'.  The
- * interface of the event is the one the interval records.
+ * (the lowest one of those at the same instant), each found by
+ * hbs_flight_event on its gap, whose acceleration is the difference of its
+ * bodies'.  The interface of the event is the one the interval records;
+ * only its bodies are evaluated along the flight, and set where the event
+ * places them.
  */
 int
 hbs_chain_flight(struct hb_sim *s)
 {
 	const double T = s->sc.run.T, t0 = s->t;
-	double *y0 = NULL, *u0 = NULL, best = INFINITY, x0, Ee0, tend;
-	int i, k = -1, rc = 0, it = 0;
+	double best = INFINITY, x0, v0, Ee0, tend;
+	int i, k = -1, rc, it = 0;
 
-	y0 = malloc(2 * (size_t)s->nbody * sizeof *y0);
-	if (y0 == NULL)
-		return hbs_fail(s, HB_ENOMEM, "out of memory for the chain's flight");
-	u0 = y0 + s->nbody;
-	if ((rc = hbs_bodies_sync(s)))
-		goto out;
-	for (i = 0; i < s->nbody; i++) {
-		y0[i] = s->body[i].y;
-		u0[i] = s->body[i].u;
-	}
 	for (i = 0; i < s->nif; i++) {
 		const struct iface *J = &s->ifc[i];
 		double x, v, a = s->body[J->hi].a - (J->lo >= 0 ? s->body[J->lo].a : 0.0), tau;
 
-		hbs_chain_gap(s, i, &x, &v);
-		if (!isfinite(v * v) || !isfinite(x + v * (T - t0))) {
-			rc = hbs_fail(s, HB_ENUMERIC, "the flight overflows a double: v^2 and x + v T must be finite");
-			goto out;
-		}
-		tau = flight_event(x, v, a);
+		hbs_chain_gap(s, i, t0, &x, &v);
+		if (!isfinite(v * v) || !isfinite(x + v * (T - t0)))
+			return hbs_fail(s, HB_ENUMERIC, "the flight overflows a double: v^2 and x + v T must be finite");
+		tau = hbs_flight_event(x, v, a);
 		if (tau < best) {
 			best = tau;
 			k = i;
@@ -195,7 +174,7 @@ hbs_chain_flight(struct hb_sim *s)
 	}
 	if (k >= 0)
 		hbs_chain_activate(s, k);
-	hbs_chain_gap(s, s->ia, &x0, &tend);
+	hbs_chain_gap(s, s->ia, t0, &x0, &v0);
 	Ee0 = s->I->Ee;
 	s->st.flights_closed++;
 	tend = fmin(best, T - t0);
@@ -204,46 +183,35 @@ hbs_chain_flight(struct hb_sim *s)
 
 		if (tk <= 0.0)
 			continue;
-		chain_bodies_at(s, y0, u0, t0, tk);
-		chain_iface_now(s, x0, Ee0);
+		chain_iface_at(s, t0 + tk, x0, Ee0);
 		if ((rc = hbs_push_sample(s, HB_ARC_STEP)))
-			goto out;
+			return rc;
 	}
 	if (best > T - t0) {
-		chain_bodies_at(s, y0, u0, t0, T - t0);
-		s->t = T;
-		chain_iface_now(s, x0, Ee0);
+		chain_iface_at(s, T, x0, Ee0);
 		if ((rc = hbs_push_sample(s, HB_ARC_END)))
-			goto out;
+			return rc;
 		hbs_finish_T(s);
-		goto out;
+		return 0;
 	}
 	/* the event: the state placed in D by the checker's test, ulp by ulp */
 	{
 		struct iface *I = s->I;
 		double te = t0 + best, tprev, xp, vp;
 
-		chain_bodies_at(s, y0, u0, t0, te - t0);
-		hbs_chain_gap(s, s->ia, &I->x, &I->v);
+		hbs_chain_gap(s, s->ia, te, &I->x, &I->v);
 		while (!(I->x <= 0.0 && I->v <= 0.0) && it < 1000) {
 			te = nextafter(te, INFINITY);
-			chain_bodies_at(s, y0, u0, t0, te - t0);
-			hbs_chain_gap(s, s->ia, &I->x, &I->v);
+			hbs_chain_gap(s, s->ia, te, &I->x, &I->v);
 			it++;
 		}
-		if (!(I->x <= 0.0 && I->v <= 0.0)) {
-			rc = hbs_fail(s, HB_ENUMERIC, "flight event could not be placed in D");
-			goto out;
-		}
+		if (!(I->x <= 0.0 && I->v <= 0.0))
+			return hbs_fail(s, HB_ENUMERIC, "flight event could not be placed in D");
 		tprev = te > t0 ? nextafter(te, -INFINITY) : te;
-		chain_bodies_at(s, y0, u0, t0, tprev - t0);
-		hbs_chain_gap(s, s->ia, &xp, &vp);
-		chain_bodies_at(s, y0, u0, t0, te - t0);
-		chain_iface_now(s, x0, Ee0);
-		rc = hbs_jump(s, best == 0.0 ? HB_LOCATE_START : HB_LOCATE_CLOSED_FORM, it, te - tprev,
-		              fmax(xp, vp), fmax(I->x, I->v));
+		hbs_chain_gap(s, s->ia, tprev, &xp, &vp);
+		hbs_chain_settle(s, s->ia, te);
+		chain_iface_at(s, te, x0, Ee0);
+		return hbs_jump(s, best == 0.0 ? HB_LOCATE_START : HB_LOCATE_CLOSED_FORM, it, te - tprev,
+		                fmax(xp, vp), fmax(I->x, I->v));
 	}
-out:
-	free(y0);
-	return rc;
 }

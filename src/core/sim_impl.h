@@ -77,7 +77,7 @@ struct cached {
 struct body {
 	double m;               /* kg */
 	double l;               /* half-length along the axis (radius), m; 0 when unknown */
-	double y, u;            /* a chain's: position and velocity of its centre at time tb
+	double y, u, tb;        /* a chain's: position and velocity of its centre at time tb
 	                           (the two-body scenes': from their interface, hbs_body_at) */
 	double a;               /* a chain's: its constant acceleration */
 	double Fe;              /* a chain's: its applied force, constant */
@@ -108,8 +108,9 @@ struct hb_sim {
 	int chain;              /* 1: a chain scene (sc.chain.n >= 1) */
 	int nbody, k0, nif;     /* N, the first interface's number (0: a floor), N - k0 */
 	int ia;                 /* I - ifc */
-	double tb;              /* a chain's: the time its bodies' (y, u) are of */
 	double cm_t0, cm_y0, cm_u0, cm_a; /* a chain's: the pair in contact's centre of mass */
+	double cm_tother;       /* ... and the earliest closing of a gap away from it, */
+	int cm_iother;          /* and its interface (index) */
 	struct body *body;      /* body[i] is body i + 1 */
 	struct iface *ifc;      /* ifc[i] is interface k0 + i */
 	int capbody, capif;     /* their allocated lengths */
@@ -227,11 +228,16 @@ hbs_chain_com(struct hb_sim *s);
 void
 hbs_chain_pair_com(struct hb_sim *s);
 void
-hbs_chain_gap(const struct hb_sim *s, int i, double *x, double *v);
+hbs_chain_gap(const struct hb_sim *s, int i, double t, double *x, double *v);
+void
+hbs_chain_settle(struct hb_sim *s, int i, double t);
 
 /* sim_flight.c: a chain's flight, every body in closed form */
 int
 hbs_chain_flight(struct hb_sim *s);
+/* ... the first tau >= 0 after which a gap x + v tau + a tau^2 / 2 leaves C (INFINITY: never) */
+double
+hbs_flight_event(double x, double v, double a);
 
 /* sim_flow.c */
 int

@@ -4,7 +4,7 @@
 # body's velocity and kinetic energy and the chain's totals (Newton's cradle
 # of three: the bottom ball leaves with the striker's velocity), --set
 # reaches the chain keys, --check passes, and what a chain cannot run yet is
-# refused with the key named.
+# refused with the key named, or stops the run saying why.
 . "$(dirname "$0")/common.inc"
 
 cat >"$T/cradle.preset" <<'P'
@@ -63,6 +63,15 @@ if [ $rc -eq 2 ] && grep -q "loads.F1: a chain's load is gravity alone; accepted
 	ok "a chain with loads.F1 refused, exit 2"
 else
 	notok "a chain with loads.F1 refused, exit 2 (got $rc)" "$T/out"
+fi
+
+# 1 nm apart the struck ball reaches the next one while the first contact lasts
+"$BIN" --batch "$T/cradle.preset" --set chain.spacing=1nm --quiet >"$T/out" 2>&1
+rc=$?
+if [ $rc -eq 1 ] && grep -q 'interface 1 (bodies 1 and 2) closed while interface 2 was in contact: a chain carries one contact at a time' "$T/out"; then
+	ok "two contacts at once stop the run naming both, exit 1"
+else
+	notok "two contacts at once stop the run naming both, exit 1 (got $rc)" "$T/out"
 fi
 
 [ "$fails" -eq 0 ]
