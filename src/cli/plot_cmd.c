@@ -14,8 +14,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
-#include "hybounce/atomic.h"
 #include "hybounce/outputs.h"
 #include "hybounce/preset.h"
 #include "hybounce/sim.h"
@@ -23,7 +23,7 @@
 #include "cnum.h"
 #include "plot_cairo.h"
 #include "plot_cmd.h"
-#include "plot_tex.h"
+#include "plot_out.h"
 #include "report.h"
 #include "signals.h"
 
@@ -36,8 +36,11 @@ usage(FILE *f)
 "usage: hybounce plot PRESET --out FILE [--kind state|observables|loop]\n"
 "                     [--set KEY=VALUE]... [--collisions I[,J...]]\n"
 "                     [--width LENGTH | --size WxH] [--dpi N] [--title TEXT]\n"
+"       hybounce plot DIR --out FILE [--observable NAME] [--collisions I[,J...]]\n"
+"                     [--width LENGTH | --size WxH] [--dpi N] [--title TEXT]\n"
 "\n"
-"Runs PRESET to its end and draws one figure of the run.\n"
+"Runs PRESET to its end and draws one figure of the run; or draws the sweep\n"
+"in DIR (hybounce sweep --out DIR; or DIR/runs.csv), running nothing.\n"
 "\n"
 "  -o, --out FILE          the figure: FILE.png, FILE.pdf or FILE.svg (by its\n"
 "                          extension), or FILE.tex: pgfplots source for pdflatex,\n"
@@ -46,10 +49,17 @@ usage(FILE *f)
 "                          acts) against t in stacked panels, contacts shaded;\n"
 "                          observables: t_d, t_f, v_i, e, x_c^max, x_c^r,\n"
 "                          F_c^max, W and Lambda against the collision index i;\n"
-"                          loop: F_c against x_c over chosen collisions\n"
+"                          loop: F_c against x_c over chosen collisions;\n"
+"                          sweep (for DIR, the default): the observable against\n"
+"                          the varied key, a curve per collision i, or a heat\n"
+"                          map over two varied keys with its colour legend\n"
+"  -y, --observable NAME   (sweep) a collision's, a column of collisions.csv: e\n"
+"                          (default), v_i, t_d, x_c_max ...; or a run's, a column\n"
+"                          of runs.csv: e_first, t_pc, collisions ...\n"
 "  -s, --set KEY=VALUE     override one value of the preset (repeatable)\n"
 "  -c, --collisions I,J    (loop) the collisions drawn, by index i (default: the\n"
-"                          first three)\n"
+"                          first three); (sweep) the curves (default 0,1,2,3),\n"
+"                          or the one collision of a heat map (default 0)\n"
 "  -w, --width LENGTH      the figure's width: 3.5in (default, a journal column),\n"
 "                          7in, 8.9cm, 252pt; the height follows the kind\n"
 "      --size WxH          width and height: 1600x1200 (pixels at --dpi), 5x4in,\n"
@@ -130,14 +140,6 @@ parse_size(const char *s, double dpi, double *w, double *h)
 	return *w > 0 && *h > 0 ? 0 : -1;
 }
 
-static int
-ends_with(const char *s, const char *suffix)
-{
-	size_t a = strlen(s), b = strlen(suffix);
-
-	return a >= b && cnum_casecmp(s + a - b, suffix) == 0;
-}
-
 /* "0,2,5" into idx (at most max); -1 when malformed. */
 static int
 parse_indices(const char *s, long *idx, int max)
@@ -168,6 +170,7 @@ static const struct option long_options[] = {
 	{ "kind",       required_argument, NULL, 'k' },
 	{ "set",        required_argument, NULL, 's' },
 	{ "collisions", required_argument, NULL, 'c' },
+	{ "observable", required_argument, NULL, 'y' },
 	{ "width",      required_argument, NULL, 'w' },
 	{ "size",       required_argument, NULL, 'S' },
 	{ "dpi",        required_argument, NULL, 'D' },
@@ -176,36 +179,107 @@ static const struct option long_options[] = {
 	{ NULL, 0, NULL, 0 },
 };
 
+/* 1 if arg names a sweep: a folder, or a file ending in .csv. */
+static int
+is_sweep(const char *arg)
+{
+	struct stat sb;
+	size_t l = strlen(arg);
+
+	if (stat(arg, &sb) == 0 && S_ISDIR(sb.st_mode))
+		return 1;
+	return l > 4 && cnum_casecmp(arg + l - 4, ".csv") == 0;
+}
+
+int
+plot_size_parse(const char *width_s, const char *size_s, const char *dpi_s, double *w,
+                double *h, double *dpi, char *msg, size_t n)
+{
+	*w = 252;
+	*h = -1;
+	*dpi = 300;
+	if (dpi_s != NULL) {
+		char *end;
+
+		*dpi = cnum_strtod(dpi_s, &end);
+		if (end == dpi_s || *end != '\0' || !(*dpi >= 36 && *dpi <= 2400)) {
+			cnum_snprintf(msg, n, "--dpi %s: expected a number of pixels per inch from 36 "
+			              "to 2400", dpi_s);
+			return -1;
+		}
+	}
+	if (width_s != NULL && size_s != NULL) {
+		cnum_snprintf(msg, n, "--width and --size both given; expected one of them");
+		return -1;
+	}
+	if (width_s != NULL && (*w = parse_length(width_s, strlen(width_s), *dpi, 0)) < 0) {
+		cnum_snprintf(msg, n, "--width %s: expected a length such as 3.5in, 8.9cm, 90mm or "
+		              "252pt", width_s);
+		return -1;
+	}
+	if (size_s != NULL && parse_size(size_s, *dpi, w, h) != 0) {
+		cnum_snprintf(msg, n, "--size %s: expected WIDTHxHEIGHT such as 1600x1200 (pixels), "
+		              "5x4in, 12x9cm or 400x300pt", size_s);
+		return -1;
+	}
+	if (*w < 72 || *w > 72 * 100 || (*h > 0 && (*h < 72 || *h > 72 * 100))) {
+		cnum_snprintf(msg, n, "%s %s: the figure would be %.3g x %.3g in; expected 1 to 100 "
+		              "in a side", size_s != NULL ? "--size" : "--width",
+		              size_s != NULL ? size_s : width_s, *w / 72, *h > 0 ? *h / 72 : *w / 72);
+		return -1;
+	}
+	return 0;
+}
+
+int
+plot_write_run(struct plot_out *o, const struct hb_outputs *pol, enum plot_kind kind,
+               const struct hb_sim *s, char *msg, size_t n)
+{
+	struct plot_figure *fig = malloc(sizeof *fig);
+	int rc;
+
+	if (fig == NULL) {
+		cnum_snprintf(msg, n, "%s %s: out of memory", o->opt, o->path);
+		return -1;
+	}
+	if (plot_build(fig, kind, s, 252, -1, NULL, 0, msg, n) != 0) {
+		free(fig);
+		return -1;
+	}
+	rc = plot_out_write(o, pol, fig, msg, n);
+	plot_figure_free(fig);
+	free(fig);
+	return rc;
+}
+
 int
 plot_main(int argc, char **argv)
 {
-	const char *out = NULL, *kind_s = "state", *width_s = NULL, *size_s = NULL, *title = NULL;
-	const char *coll_s = NULL, *dpi_s = NULL, *preset;
+	const char *out = NULL, *kind_s = NULL, *width_s = NULL, *size_s = NULL, *title = NULL;
+	const char *coll_s = NULL, *dpi_s = NULL, *obs = NULL, *preset;
 	const char **sets = calloc((size_t)argc + 1, sizeof *sets);
-	int nsets = 0, c, status = 0, sig = 0, rc, ncoll = 0;
-	long coll[PLOT_MAX_LEGEND];
-	enum plot_kind kind;
-	enum plot_format fmt;
-	double dpi = 300, w = 252, h = -1;
-	char path[1024], msg[4096], datpath[4096];
-	const char *datname = NULL;
+	int nsets = 0, c, status = 0, sig = 0, rc, ncoll = 0, sweep;
+	long coll[PLOT_MAX_SERIES];
+	enum plot_kind kind = PLOT_STATE;
+	double dpi, w, h;
+	char path[1024], msg[4096];
 	struct hb_scene sc;
 	struct hb_outputs pol;
 	struct hb_sim *s = NULL;
 	struct plot_figure *fig = NULL;
-	struct hb_atomic_set set;
-	FILE *f;
+	struct plot_out po;
 
 	if (sets == NULL)
 		return bad("out of memory");
 	opterr = 1;
 	optind = 1;
-	while ((c = getopt_long(argc, argv, "o:k:s:c:w:h", long_options, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, "o:k:s:c:y:w:h", long_options, NULL)) != -1) {
 		switch (c) {
 		case 'o': out = optarg; break;
 		case 'k': kind_s = optarg; break;
 		case 's': sets[nsets++] = optarg; break;
 		case 'c': coll_s = optarg; break;
+		case 'y': obs = optarg; break;
 		case 'w': width_s = optarg; break;
 		case 'S': size_s = optarg; break;
 		case 'D': dpi_s = optarg; break;
@@ -229,86 +303,86 @@ plot_main(int argc, char **argv)
 		return bad("more than one preset given ('%s' ...)", argv[optind + 1]);
 	}
 	preset = argv[optind];
+	sweep = is_sweep(preset);
 	if (out == NULL) {
 		free(sets);
-		return bad("no --out FILE; expected a file ending in .png, .pdf, .svg or .tex");
+		return bad("no --out FILE; expected " PLOT_OUT_ACCEPTED);
 	}
-	if (ends_with(out, ".png"))
-		fmt = PLOT_PNG;
-	else if (ends_with(out, ".pdf"))
-		fmt = PLOT_PDF;
-	else if (ends_with(out, ".svg"))
-		fmt = PLOT_SVG;
-	else if (ends_with(out, ".tex") && strlen(out) > 4 && out[strlen(out) - 5] != '/')
-		fmt = PLOT_TEX;
-	else {
+	msg[0] = '\0';
+	if (plot_out_parse(&po, "--out", out, msg, sizeof msg) != 0) {
 		free(sets);
-		return bad("--out %s: unknown format; expected a file ending in .png, .pdf, .svg "
-		           "or .tex", out);
+		return bad("%s", msg);
 	}
-	if (fmt == PLOT_TEX) {
-		/* FILE.tex reads FILE.dat, beside it */
-		size_t l = strlen(out) - 4;
-
-		if (l + 5 > sizeof datpath) {
-			free(sets);
-			return bad("--out %s: the name is too long", out);
-		}
-		memcpy(datpath, out, l);
-		memcpy(datpath + l, ".dat", 5);
-		datname = strrchr(datpath, '/') != NULL ? strrchr(datpath, '/') + 1 : datpath;
-	}
+	if (kind_s == NULL)
+		kind_s = sweep ? "sweep" : "state";
 	if (strcmp(kind_s, "state") == 0)
 		kind = PLOT_STATE;
 	else if (strcmp(kind_s, "observables") == 0)
 		kind = PLOT_OBSERVABLES;
 	else if (strcmp(kind_s, "loop") == 0)
 		kind = PLOT_LOOP;
-	else {
+	else if (strcmp(kind_s, "sweep") != 0) {
 		free(sets);
-		return bad("--kind %s: unknown; expected state, observables or loop", kind_s);
+		return bad("--kind %s: unknown; expected state, observables, loop or sweep", kind_s);
 	}
-	if (dpi_s != NULL) {
-		char *end;
-
-		dpi = cnum_strtod(dpi_s, &end);
-		if (end == dpi_s || *end != '\0' || !(dpi >= 36 && dpi <= 2400)) {
-			free(sets);
-			return bad("--dpi %s: expected a number of pixels per inch from 36 to 2400",
-			           dpi_s);
-		}
-	}
-	if (width_s != NULL && size_s != NULL) {
+	if (sweep != (strcmp(kind_s, "sweep") == 0)) {
 		free(sets);
-		return bad("--width and --size both given; expected one of them");
+		return bad(sweep ? "%s is a sweep (a folder or its runs.csv); --kind %s draws a run "
+		           "of a preset" : "%s: --kind %s draws a sweep: expected its folder or its "
+		           "runs.csv", preset, kind_s);
 	}
-	if (width_s != NULL && (w = parse_length(width_s, strlen(width_s), dpi, 0)) < 0) {
+	if (sweep && nsets > 0) {
+		rc = bad("--set %s: a sweep's figure draws what the sweep computed; expected no "
+		         "--set", sets[0]);
 		free(sets);
-		return bad("--width %s: expected a length such as 3.5in, 8.9cm, 90mm or 252pt",
-		           width_s);
+		return rc;
 	}
-	if (size_s != NULL && parse_size(size_s, dpi, &w, &h) != 0) {
+	if (!sweep && obs != NULL) {
 		free(sets);
-		return bad("--size %s: expected WIDTHxHEIGHT such as 1600x1200 (pixels), 5x4in, "
-		           "12x9cm or 400x300pt", size_s);
+		return bad("--observable %s: only a sweep's figure takes an observable", obs);
 	}
-	if (w < 72 || w > 72 * 100 || (h > 0 && (h < 72 || h > 72 * 100))) {
+	msg[0] = '\0';
+	if (plot_size_parse(width_s, size_s, dpi_s, &w, &h, &dpi, msg, sizeof msg) != 0) {
 		free(sets);
-		return bad("%s %s: the figure would be %.3g x %.3g in; expected 1 to 100 in a side",
-		           size_s != NULL ? "--size" : "--width", size_s != NULL ? size_s : width_s,
-		           w / 72, h > 0 ? h / 72 : w / 72);
+		return bad("%s", msg);
 	}
+	po.dpi = dpi;
 	if (coll_s != NULL) {
-		if (kind != PLOT_LOOP) {
+		if (!sweep && kind != PLOT_LOOP) {
 			free(sets);
-			return bad("--collisions %s: only --kind loop draws chosen collisions", coll_s);
+			return bad("--collisions %s: only --kind loop and a sweep's figure draw chosen "
+			           "collisions", coll_s);
 		}
-		ncoll = parse_indices(coll_s, coll, PLOT_MAX_LEGEND);
+		ncoll = parse_indices(coll_s, coll, PLOT_MAX_SERIES);
 		if (ncoll < 0) {
 			free(sets);
 			return bad("--collisions %s: expected collision indices i (from 0) separated "
-			           "by commas, at most %d, e.g. 0,1,4", coll_s, PLOT_MAX_LEGEND);
+			           "by commas, at most %d, e.g. 0,1,4", coll_s, PLOT_MAX_SERIES);
 		}
+	}
+
+	if (sweep) {
+		free(sets);
+		hb_outputs_init(&pol);
+		fig = malloc(sizeof *fig);
+		if (fig == NULL)
+			return bad("out of memory");
+		msg[0] = '\0';
+		if (plot_build_sweep(fig, preset, obs, coll, ncoll, w, h, &pol, msg, sizeof msg)
+		    != 0) {
+			free(fig);
+			return bad("%s", msg);
+		}
+		if (title != NULL)
+			cnum_snprintf(fig->title, sizeof fig->title, "%s", title);
+		msg[0] = '\0';
+		if (plot_out_register(&po, &pol, msg, sizeof msg) != 0)
+			status = bad("%s", msg);
+		else if (plot_out_write(&po, &pol, fig, msg, sizeof msg) != 0)
+			status = bad("%s", msg);
+		plot_figure_free(fig);
+		free(fig);
+		return status;
 	}
 
 	msg[0] = '\0';
@@ -323,10 +397,7 @@ plot_main(int argc, char **argv)
 	hb_outputs_init(&pol);
 	hb_outputs_input(&pol, path, "the preset being run");
 	msg[0] = '\0';
-	if (hb_outputs_add(&pol, out, "--out", msg, sizeof msg) != HB_OK)
-		return bad("%s%s", strncmp(msg, "--out ", 6) == 0 ? "" : "--out ", msg);
-	if (fmt == PLOT_TEX && hb_outputs_add(&pol, datpath, "the data file of --out", msg,
-	                                      sizeof msg) != HB_OK)
+	if (plot_out_register(&po, &pol, msg, sizeof msg) != 0)
 		return bad("%s", msg);
 
 	cli_signals_watch();
@@ -359,42 +430,16 @@ plot_main(int argc, char **argv)
 	}
 	msg[0] = '\0';
 	if (plot_build(fig, kind, s, w, h, coll, ncoll, msg, sizeof msg) != 0) {
+		free(fig);
+		fig = NULL;
 		status = bad("%s", msg);
 		goto done;
 	}
 	if (title != NULL)
 		cnum_snprintf(fig->title, sizeof fig->title, "%s", title);
-	hb_atomic_begin(&set);
 	msg[0] = '\0';
-	f = hb_atomic_add(&set, out, msg, sizeof msg);
-	if (f == NULL) {
-		status = bad("--out %s", msg);
-		goto done;
-	}
-	if (fmt == PLOT_TEX) {
-		FILE *d = hb_atomic_add(&set, datpath, msg, sizeof msg);
-
-		if (d == NULL) {
-			hb_atomic_abort(&set);
-			status = bad("--out %s", msg);
-			goto done;
-		}
-		rc = plot_tex_write(fig, f, d, datname, cli_provenance(), msg, sizeof msg);
-	} else {
-		rc = plot_cairo_write(fig, fmt, dpi, f, msg, sizeof msg);
-	}
-	if (rc != 0) {
-		hb_atomic_abort(&set);
-		status = bad("--out %s: %s", out, msg);
-		goto done;
-	}
-	if (hb_atomic_commit(&set, msg, sizeof msg) != HB_OK) {
-		status = bad("--out %s", msg);
-		goto done;
-	}
-	cli_print_wrote(out, &pol.out[0].target);
-	if (fmt == PLOT_TEX)
-		cli_print_wrote(datpath, &pol.out[1].target);
+	if (plot_out_write(&po, &pol, fig, msg, sizeof msg) != 0)
+		status = bad("%s", msg);
 done:
 	if (fig != NULL) {
 		plot_figure_free(fig);
