@@ -481,7 +481,7 @@ docs: readme-examples
 # collision of each, the hysteresis loops of the first; 150 dpi at a
 # journal column's width.  Then the --plot of sweep (e against law.c; a
 # heat map over law.c and law.alpha) and fit (examples/fit/bounces.csv),
-# at their default 300 dpi.
+# at their default 300 dpi; two runs of the first study compared.
 FIGURES := docs/figures
 figures: $(BIN)
 	@mkdir -p $(FIGURES)
@@ -501,6 +501,8 @@ figures: $(BIN)
 	    HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) fit steel-on-bitumen --data examples/fit/bounces.csv \
 	        --free law.c,law.alpha -q --out $(BUILD)/figures/fit.preset \
 	        --plot $(FIGURES)/fit-bounces.png >/dev/null
+	@HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) plot steel-on-bitumen --variant law.c=2000 \
+	    --variant law.c=20000 --set run.T=0.3 --dpi 150 --out $(FIGURES)/compare-law-c.png
 
 # The pgfplots source of hybounce plot compiled with pdflatex
 # (tests/tex/check.sh): not part of make check, TeX Live being heavy;

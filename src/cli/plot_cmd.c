@@ -33,14 +33,17 @@ static void
 usage(FILE *f)
 {
 	fprintf(f,
-"usage: hybounce plot PRESET --out FILE [--kind state|observables|loop]\n"
+"usage: hybounce plot PRESET... --out FILE [--kind state|observables|loop]\n"
 "                     [--set KEY=VALUE]... [--collisions I[,J...]]\n"
+"                     [--variant KEY=VALUE[;KEY=VALUE...]]... [--laws LAW,...]\n"
 "                     [--width LENGTH | --size WxH] [--dpi N] [--title TEXT]\n"
 "       hybounce plot DIR --out FILE [--observable NAME] [--collisions I[,J...]]\n"
 "                     [--width LENGTH | --size WxH] [--dpi N] [--title TEXT]\n"
 "\n"
-"Runs PRESET to its end and draws one figure of the run; or draws the sweep\n"
-"in DIR (hybounce sweep --out DIR; or DIR/runs.csv), running nothing.\n"
+"Runs PRESET to its end and draws one figure of the run; several presets,\n"
+"--variant or --laws: several runs compared in one figure, a curve each, the\n"
+"legend saying what differs between them.  Or draws the sweep in DIR\n"
+"(hybounce sweep --out DIR; or DIR/runs.csv), running nothing.\n"
 "\n"
 "  -o, --out FILE          the figure: FILE.png, FILE.pdf or FILE.svg (by its\n"
 "                          extension), or FILE.tex: pgfplots source for pdflatex,\n"
@@ -57,8 +60,14 @@ usage(FILE *f)
 "                          (default), v_i, t_d, x_c_max ...; or a run's, a column\n"
 "                          of runs.csv: e_first, t_pc, collisions ...\n"
 "  -s, --set KEY=VALUE     override one value of the preset (repeatable)\n"
+"      --variant SETS      one run more with these values (KEY=VALUE, several\n"
+"                          separated by ';'), e.g. --variant law.c=2000\n"
+"                          --variant law.c=20000 (repeatable)\n"
+"      --laws LAW,...      one run per contact law (scene.law), e.g.\n"
+"                          shccl,bwshccl,bwmcl; at most 8 runs in all\n"
 "  -c, --collisions I,J    (loop) the collisions drawn, by index i (default: the\n"
-"                          first three); (sweep) the curves (default 0,1,2,3),\n"
+"                          first three; of several runs, one: default 0);\n"
+"                          (sweep) the curves (default 0,1,2,3),\n"
 "                          or the one collision of a heat map (default 0)\n"
 "  -w, --width LENGTH      the figure's width: 3.5in (default, a journal column),\n"
 "                          7in, 8.9cm, 252pt; the height follows the kind\n"
@@ -175,6 +184,8 @@ static const struct option long_options[] = {
 	{ "size",       required_argument, NULL, 'S' },
 	{ "dpi",        required_argument, NULL, 'D' },
 	{ "title",      required_argument, NULL, 'T' },
+	{ "variant",    required_argument, NULL, 'V' },
+	{ "laws",       required_argument, NULL, 'L' },
 	{ "help",       no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
 };
@@ -252,20 +263,199 @@ plot_write_run(struct plot_out *o, const struct hb_outputs *pol, enum plot_kind 
 	return rc;
 }
 
+enum { MAX_RUNS = PLOT_MAX_SERIES };
+
+/* One run of the comparison: its preset and the --set texts it adds. */
+struct run_spec {
+	const char *preset;
+	char extra[256];     /* "KEY=VALUE;KEY=VALUE" of a --variant or a law, "" none */
+	char name[160];      /* the preset's name, for a legend of presets */
+};
+
+/* Splits "a=1;b=2" (in place) into sets after the first n; the new count. */
+static int
+add_sets(char *text, const char **sets, int n, int max)
+{
+	for (char *save = NULL, *t = strtok_r(text, ";", &save); t != NULL && n < max;
+	     t = strtok_r(NULL, ";", &save))
+		sets[n++] = t;
+	return n;
+}
+
+/*
+ * The runs of presets (each, times each --variant, times each law of
+ * --laws), drawn in one figure: plot_build for one, plot_build_compare for
+ * several.  Returns the exit status.
+ */
+static int
+plot_runs(char **presets, int npresets, const char **sets, int nsets, const char **variants,
+          int nvariants, const char *laws_s, enum plot_kind kind, const long *coll, int ncoll,
+          double w, double h, const char *title, struct plot_out *po)
+{
+	struct run_spec run[MAX_RUNS];
+	struct hb_sim *s[MAX_RUNS] = { 0 };
+	struct hb_scene sc[MAX_RUNS];
+	const struct hb_scene *scp[MAX_RUNS];
+	char paths[MAX_RUNS][1024], labels[MAX_RUNS][64], msg[4096], lawbuf[256];
+	const char *names[MAX_RUNS], *lab[MAX_RUNS], *laws[MAX_RUNS];
+	const char **all = calloc((size_t)nsets + 16, sizeof *all);
+	int nlaws = 0, nruns = 0, status = 0, sig = 0, rc;
+	struct hb_outputs pol;
+	struct plot_figure *fig = NULL;
+
+	if (all == NULL)
+		return bad("out of memory");
+	if (laws_s != NULL) {
+		cnum_snprintf(lawbuf, sizeof lawbuf, "%s", laws_s);
+		for (char *save = NULL, *t = strtok_r(lawbuf, ",", &save); t != NULL;
+		     t = strtok_r(NULL, ",", &save)) {
+			if (nlaws == MAX_RUNS) {
+				free(all);
+				return bad("--laws %s: more than %d laws; expected at most %d", laws_s,
+				           MAX_RUNS, MAX_RUNS);
+			}
+			laws[nlaws++] = t;
+		}
+		if (nlaws == 0) {
+			free(all);
+			return bad("--laws '%s': no law; expected names such as shccl,bwshccl,bwmcl",
+			           laws_s);
+		}
+	}
+	if (nvariants > MAX_RUNS ||
+	    (long)npresets * (nvariants ? nvariants : 1) * (nlaws ? nlaws : 1) > MAX_RUNS) {
+		free(all);
+		return bad("%d preset%s x %d variant%s x %d law%s: more than %d runs in one figure; "
+		           "expected at most %d", npresets, npresets == 1 ? "" : "s",
+		           nvariants ? nvariants : 1, nvariants > 1 ? "s" : "", nlaws ? nlaws : 1,
+		           nlaws > 1 ? "s" : "", MAX_RUNS, MAX_RUNS);
+	}
+	if (ncoll > 1 && npresets * (nvariants ? nvariants : 1) * (nlaws ? nlaws : 1) > 1) {
+		free(all);
+		return bad("--collisions: a comparison of runs draws one collision's loop; expected "
+		           "one index i");
+	}
+	for (int p = 0; p < npresets; p++)
+		for (int v = 0; v < (nvariants ? nvariants : 1); v++)
+			for (int l = 0; l < (nlaws ? nlaws : 1); l++) {
+				struct run_spec *r = &run[nruns++];
+				const char *slash = strrchr(presets[p], '/');
+
+				r->preset = presets[p];
+				cnum_snprintf(r->name, sizeof r->name, "%s", slash ? slash + 1 : presets[p]);
+				if (strlen(r->name) > 7 && strcmp(r->name + strlen(r->name) - 7, ".preset") == 0)
+					r->name[strlen(r->name) - 7] = '\0';
+				cnum_snprintf(r->extra, sizeof r->extra, "%s%s%s%s",
+				              nlaws ? "scene.law=" : "", nlaws ? laws[l] : "",
+				              nlaws && nvariants ? ";" : "", nvariants ? variants[v] : "");
+			}
+	hb_outputs_init(&pol);
+	for (int r = 0; r < nruns; r++) {
+		int n = nsets;
+
+		memcpy(all, sets, (size_t)nsets * sizeof *all);
+		n = add_sets(run[r].extra, all, n, nsets + 16);
+		msg[0] = '\0';
+		if (hb_preset_open_named(run[r].preset, all, n, &sc[r], paths[r], sizeof paths[r], msg,
+		                         sizeof msg) != HB_OK) {
+			free(all);
+			return bad("%s", msg[0] ? msg : run[r].preset);
+		}
+		hb_outputs_input(&pol, paths[r], "the preset being run");
+		scp[r] = &sc[r];
+		names[r] = run[r].name;
+	}
+	free(all);
+	/* The output policy (outputs.h): never a preset run, never a shipped
+	 * preset, a folder or an unwritable place. */
+	msg[0] = '\0';
+	if (plot_out_register(po, &pol, msg, sizeof msg) != 0)
+		return bad("%s", msg);
+
+	cli_signals_watch();
+	for (int r = 0; r < nruns && cli_signal == 0; r++) {
+		msg[0] = '\0';
+		s[r] = hb_sim_new(&sc[r], msg, sizeof msg);
+		if (s[r] == NULL) {
+			status = bad("%s: %s", paths[r], msg[0] ? msg : "cannot start the run");
+			goto done;
+		}
+		rc = HB_OK;
+		while (cli_signal == 0) {
+			rc = hb_sim_advance(s[r], 0, 0.1);
+			if (rc != HB_OK || hb_sim_end(s[r]) != HB_SIM_RUNNING)
+				break;
+		}
+		if (hb_sim_end(s[r]) == HB_SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE)) {
+			status = 1;
+			fprintf(stderr, PROG ": the run%s%s failed: %s; the figure shows what was "
+			        "computed\n", nruns > 1 ? " of " : "", nruns > 1 ? names[r] : "",
+			        hb_sim_errmsg(s[r])[0] ? hb_sim_errmsg(s[r]) : hb_status_str(rc));
+		}
+	}
+	sig = cli_signal;
+	if (sig != 0) {
+		fprintf(stderr, PROG ": %s: the run stopped; the figure shows what was computed\n",
+		        cli_signal_name(sig));
+		while (nruns > 1 && s[nruns - 1] == NULL)
+			nruns--;   /* the runs not started are left out */
+		if (s[0] == NULL)
+			goto done;   /* nothing computed, nothing to draw */
+	}
+
+	fig = malloc(sizeof *fig);
+	if (fig == NULL) {
+		status = bad("out of memory");
+		goto done;
+	}
+	msg[0] = '\0';
+	if (nruns == 1) {
+		rc = plot_build(fig, kind, s[0], w, h, coll, ncoll, msg, sizeof msg);
+	} else {
+		plot_compare_labels(scp, names, nruns, labels);
+		for (int r = 0; r < nruns; r++)
+			lab[r] = labels[r];
+		rc = plot_build_compare(fig, kind, (const struct hb_sim *const *)s, lab, nruns, w, h,
+		                        ncoll > 0 ? coll[0] : 0, msg, sizeof msg);
+	}
+	if (rc != 0) {
+		free(fig);
+		fig = NULL;
+		status = bad("%s", msg);
+		goto done;
+	}
+	if (title != NULL)
+		cnum_snprintf(fig->title, sizeof fig->title, "%s", title);
+	msg[0] = '\0';
+	if (plot_out_write(po, &pol, fig, msg, sizeof msg) != 0)
+		status = bad("%s", msg);
+done:
+	if (fig != NULL) {
+		plot_figure_free(fig);
+		free(fig);
+	}
+	for (int r = 0; r < MAX_RUNS; r++)
+		hb_sim_free(s[r]);
+	if (sig == 0)
+		sig = cli_signal;
+	cli_signals_restore();
+	return sig != 0 ? cli_signal_status(sig) : status;
+}
+
 int
 plot_main(int argc, char **argv)
 {
 	const char *out = NULL, *kind_s = NULL, *width_s = NULL, *size_s = NULL, *title = NULL;
-	const char *coll_s = NULL, *dpi_s = NULL, *obs = NULL, *preset;
+	const char *coll_s = NULL, *dpi_s = NULL, *obs = NULL, *preset, *laws_s = NULL;
+	const char *variants[PLOT_MAX_SERIES];
+	int nvariants = 0, npresets;
 	const char **sets = calloc((size_t)argc + 1, sizeof *sets);
-	int nsets = 0, c, status = 0, sig = 0, rc, ncoll = 0, sweep;
+	int nsets = 0, c, status = 0, rc, ncoll = 0, sweep;
 	long coll[PLOT_MAX_SERIES];
 	enum plot_kind kind = PLOT_STATE;
 	double dpi, w, h;
-	char path[1024], msg[4096];
-	struct hb_scene sc;
+	char msg[4096];
 	struct hb_outputs pol;
-	struct hb_sim *s = NULL;
 	struct plot_figure *fig = NULL;
 	struct plot_out po;
 
@@ -284,6 +474,12 @@ plot_main(int argc, char **argv)
 		case 'S': size_s = optarg; break;
 		case 'D': dpi_s = optarg; break;
 		case 'T': title = optarg; break;
+		case 'V':
+			if (nvariants < PLOT_MAX_SERIES)
+				variants[nvariants] = optarg;
+			nvariants++;
+			break;
+		case 'L': laws_s = optarg; break;
 		case 'h':
 			usage(stdout);
 			free(sets);
@@ -298,12 +494,14 @@ plot_main(int argc, char **argv)
 		free(sets);
 		return bad("no preset given; expected hybounce plot PRESET --out FILE.png");
 	}
-	if (argc - optind > 1) {
-		free(sets);
-		return bad("more than one preset given ('%s' ...)", argv[optind + 1]);
-	}
+	npresets = argc - optind;
 	preset = argv[optind];
 	sweep = is_sweep(preset);
+	if (sweep && npresets > 1) {
+		free(sets);
+		return bad("more than one sweep or preset given ('%s' ...); a sweep's figure draws "
+		           "one sweep", argv[optind + 1]);
+	}
 	if (out == NULL) {
 		free(sets);
 		return bad("no --out FILE; expected " PLOT_OUT_ACCEPTED);
@@ -330,6 +528,11 @@ plot_main(int argc, char **argv)
 		return bad(sweep ? "%s is a sweep (a folder or its runs.csv); --kind %s draws a run "
 		           "of a preset" : "%s: --kind %s draws a sweep: expected its folder or its "
 		           "runs.csv", preset, kind_s);
+	}
+	if (sweep && (nvariants > 0 || laws_s != NULL)) {
+		free(sets);
+		return bad("%s: a sweep's figure draws what the sweep computed; --variant and --laws "
+		           "compare runs of presets", nvariants ? "--variant" : "--laws");
 	}
 	if (sweep && nsets > 0) {
 		rc = bad("--set %s: a sweep's figure draws what the sweep computed; expected no "
@@ -385,69 +588,8 @@ plot_main(int argc, char **argv)
 		return status;
 	}
 
-	msg[0] = '\0';
-	if (hb_preset_open_named(preset, sets, nsets, &sc, path, sizeof path, msg,
-	                         sizeof msg) != HB_OK) {
-		free(sets);
-		return bad("%s", msg[0] ? msg : preset);
-	}
+	status = plot_runs(argv + optind, npresets, sets, nsets, variants, nvariants, laws_s, kind,
+	                   coll, ncoll, w, h, title, &po);
 	free(sets);
-	/* The output policy (outputs.h): never the preset run, never a shipped
-	 * preset, a folder or an unwritable place. */
-	hb_outputs_init(&pol);
-	hb_outputs_input(&pol, path, "the preset being run");
-	msg[0] = '\0';
-	if (plot_out_register(&po, &pol, msg, sizeof msg) != 0)
-		return bad("%s", msg);
-
-	cli_signals_watch();
-	msg[0] = '\0';
-	s = hb_sim_new(&sc, msg, sizeof msg);
-	if (s == NULL) {
-		cli_signals_restore();
-		return bad("%s: %s", path, msg[0] ? msg : "cannot start the run");
-	}
-	rc = HB_OK;
-	while (cli_signal == 0) {
-		rc = hb_sim_advance(s, 0, 0.1);
-		if (rc != HB_OK || hb_sim_end(s) != HB_SIM_RUNNING)
-			break;
-	}
-	sig = cli_signal;
-	if (hb_sim_end(s) == HB_SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE)) {
-		status = 1;
-		fprintf(stderr, PROG ": the run failed: %s; the figure shows what was computed\n",
-		        hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_status_str(rc));
-	} else if (sig != 0) {
-		fprintf(stderr, PROG ": %s: the run stopped; the figure shows what was computed\n",
-		        cli_signal_name(sig));
-	}
-
-	fig = malloc(sizeof *fig);
-	if (fig == NULL) {
-		status = bad("out of memory");
-		goto done;
-	}
-	msg[0] = '\0';
-	if (plot_build(fig, kind, s, w, h, coll, ncoll, msg, sizeof msg) != 0) {
-		free(fig);
-		fig = NULL;
-		status = bad("%s", msg);
-		goto done;
-	}
-	if (title != NULL)
-		cnum_snprintf(fig->title, sizeof fig->title, "%s", title);
-	msg[0] = '\0';
-	if (plot_out_write(&po, &pol, fig, msg, sizeof msg) != 0)
-		status = bad("%s", msg);
-done:
-	if (fig != NULL) {
-		plot_figure_free(fig);
-		free(fig);
-	}
-	hb_sim_free(s);
-	if (sig == 0)
-		sig = cli_signal;
-	cli_signals_restore();
-	return sig != 0 ? cli_signal_status(sig) : status;
+	return status;
 }

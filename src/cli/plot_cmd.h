@@ -80,4 +80,28 @@ int
 plot_write_fit(struct plot_out *o, const struct hb_outputs *pol, const struct hb_fit_result *r,
                const struct hb_fit_data *d, char *msg, size_t n);
 
+/*
+ * Several runs in one figure (plot_compare.c): the figure of kind of each
+ * run s[0 .. n-1] (n <= PLOT_MAX_SERIES), their curves in the first run's
+ * panels, run k in style k, labels[k] its legend entry; a loop of
+ * collision coll of each.  0, or -1 with msg.
+ */
+int
+plot_build_compare(struct plot_figure *f, enum plot_kind kind, const struct hb_sim *const *s,
+                   const char *const *labels, int n, double w, double h, long coll, char *msg,
+                   size_t mn);
+
+struct hb_scene;
+
+/*
+ * The legend of runs of the scenes sc[0 .. n-1]: what differs between them,
+ * "law.c = 2 kN s/m, law.alpha = 0.3" (the keys every scene has whose
+ * values differ, at most three, derived ones and the scene's name left
+ * out); the names (names[k], their presets) where they differ and so do
+ * more than three keys, or where no key differs.
+ */
+void
+plot_compare_labels(const struct hb_scene *const *sc, const char *const *names, int n,
+                    char (*labels)[64]);
+
 #endif

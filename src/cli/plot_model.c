@@ -284,6 +284,8 @@ plot_axis_fit(struct plot_axis *a, double lo, double hi, const char *base, int k
 	double mag;
 	char unit[24];
 
+	if (base != a->base)
+		copy_str(a->base, sizeof a->base, base);
 	if (a->log && !(lo > 0 && hi > lo && isfinite(hi)))
 		a->log = 0;   /* a range that is not positive: linear */
 	if (a->log) {

@@ -42,6 +42,7 @@ struct plot_axis {
 	char ticklabel[PLOT_MAX_TICKS][24];   /* in the unit shown */
 	int log;             /* 1: a logarithmic axis (set before plot_axis_fit; its
 	                      * ticks at decades, or 1-2-5 within one or two) */
+	char base[24];       /* the SI base unit plot_axis_fit was given ("m") */
 };
 
 struct plot_series {

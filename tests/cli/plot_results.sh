@@ -140,6 +140,38 @@ else
 	notok "fit --laws --plot" "$T/err"
 fi
 
+# --- several runs in one figure: the legend says what differs ------------------
+"$BIN" plot steel-on-bitumen --variant law.c=2000 --variant law.c=20000 $SB --dpi $DPI \
+	--out "$T/v.png" 2>"$T/err" && $PY info "$T/v.png" >"$T/v.info"
+if [ "$(val panels "$T/v.info")" = 6 ] && legend_has 0 "$T/v.info" && legend_has 1 "$T/v.info" &&
+   ! legend_has 2 "$T/v.info" && [ "$(val legend_shade "$T/v.info")" -lt 10 ]; then
+	ok "plot --variant x2: the state's 6 panels, two runs in the legend, no contact shade"
+else
+	notok "plot --variant: panels or legend" "$T/v.info"
+fi
+"$BIN" plot steel-on-bitumen --variant law.c=2000 --variant law.c=20000 $SB --out "$T/v.tex" 2>"$T/err"
+if [ "$(grep -c '^\\addlegendentry{law\.c = ' "$T/v.tex")" = 2 ] && ! grep -q 'addlegendentry{.*alpha' "$T/v.tex"; then
+	ok "plot --variant: the legend names law.c, the one key that differs"
+else
+	notok "plot --variant: legend entries" "$T/v.tex"
+fi
+"$BIN" plot steel-on-bitumen --laws shccl,bwshccl,bwmcl --kind loop $SB --dpi $DPI \
+	--out "$T/laws.png" 2>"$T/err" && $PY info "$T/laws.png" >"$T/laws.info"
+"$BIN" plot steel-on-bitumen --laws shccl,bwshccl,bwmcl --kind loop $SB --out "$T/laws.tex" 2>>"$T/err"
+if [ "$(val panels "$T/laws.info")" = 1 ] && legend_has 2 "$T/laws.info" &&
+   grep -q 'addlegendentry{scene\.law = shccl' "$T/laws.tex" && grep -q 'addlegendentry{scene\.law = bwmcl' "$T/laws.tex"; then
+	ok "plot --laws --kind loop: one panel, a loop and a legend entry per law, named by its law"
+else
+	notok "plot --laws: panels or legend" "$T/err"
+fi
+"$BIN" plot hertz-elastic ptfe-pom --kind observables --out "$T/two.tex" 2>"$T/err"
+if grep -q 'addlegendentry{hertz-elastic}' "$T/two.tex" && grep -q 'addlegendentry{ptfe-pom}' "$T/two.tex" &&
+   [ "$(grep -c '^\\begin{axis}' "$T/two.tex")" = 9 ]; then
+	ok "plot PRESET PRESET: presets that differ in many keys are named by their names"
+else
+	notok "plot two presets: legend" "$T/two.tex"
+fi
+
 # --- refused before anything runs: exit 2, nothing written ---------------------
 refused() {
 	name=$1 pattern=$2
@@ -174,6 +206,17 @@ refused "plot DIR --observable nonsense" 'expected a collision' \
 	"$BIN" plot "$T/s1" --observable nonsense --out "$T/r/x.png"
 refused "plot DIR over two keys --collisions 0,1" 'draws one collision' \
 	"$BIN" plot "$T/s2" --collisions 0,1 --out "$T/r/x.png"
+refused "plot nine runs" 'at most 8' \
+	"$BIN" plot steel-on-bitumen --variant law.c=1 --variant law.c=2 --variant law.c=3 \
+	--laws shccl,bwmcl,bwshccl --out "$T/r/x.png"
+refused "plot two runs --kind loop --collisions 0,1" 'one collision' \
+	"$BIN" plot steel-on-bitumen --laws shccl,bwmcl --kind loop --collisions 0,1 --out "$T/r/x.png"
+refused "plot --laws with an unknown law" 'law' \
+	"$BIN" plot steel-on-bitumen --laws shccl,nolaw --out "$T/r/x.png"
+refused "plot DIR --variant" 'compare runs of presets' \
+	"$BIN" plot "$T/s1" --variant law.c=1 --out "$T/r/x.png"
+refused "plot DIR DIR" 'one sweep' \
+	"$BIN" plot "$T/s1" "$T/s2" --out "$T/r/x.png"
 refused "plot DIR --set" 'expected no --set' \
 	"$BIN" plot "$T/s1" --set law.c=1 --out "$T/r/x.png"
 refused "plot DIR --out DIR/runs.csv" 'expected a file ending in .png' \

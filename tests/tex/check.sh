@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # make check-tex: the pgfplots source of hybounce plot compiles with
 # pdflatex (each kind, from a paper study; a sweep's curves and heat map;
-# a fit's figure) into a one-page PDF of the figure's size.  Not part of make check: it needs TeX Live's pgfplots
+# a fit's figure; runs compared) into a one-page PDF of the figure's size.  Not part of make check: it needs TeX Live's pgfplots
 # (texlive-pictures, texlive-latex-base: about 220 MB; make deps-tex
 # installs them).
 #
@@ -17,10 +17,12 @@ fi
 "$BIN" sweep steel-on-bitumen --vary law.c=1e3:1e5:5:log --vary initial.x0='10 um,40 um' \
 	--set run.T=0.1 --out "$T/s2" -q 2>/dev/null
 for k in state:steel-on-bitumen observables:ptfe-pom loop:permanent-contact-bwmcl \
-    sweep:"$T/s1" heatmap:"$T/s2" fit:; do
+    sweep:"$T/s1" heatmap:"$T/s2" fit: compare:steel-on-bitumen; do
 	kind=${k%%:*} p=${k#*:}
 	case $kind in
 	heatmap) "$BIN" plot "$p" --out "$T/$kind.tex" 2>"$T/err" ;;
+	compare) "$BIN" plot "$p" --laws shccl,bwmcl --variant law.c=2000 --variant law.c=20000 \
+	             --out "$T/$kind.tex" 2>"$T/err" ;;
 	fit) p=examples/fit/bounces.csv
 	     "$BIN" fit steel-on-bitumen --data "$p" --free law.c,law.alpha -q --out "$T/f.preset" \
 	         --plot "$T/$kind.tex" >/dev/null 2>"$T/err" ;;
