@@ -500,7 +500,7 @@ plot_main(int argc, char **argv)
 	if (sweep && npresets > 1) {
 		free(sets);
 		return bad("more than one sweep or preset given ('%s' ...); a sweep's figure draws "
-		           "one sweep", argv[optind + 1]);
+		           "one sweep: expected one sweep's folder", argv[optind + 1]);
 	}
 	if (out == NULL) {
 		free(sets);
@@ -526,13 +526,13 @@ plot_main(int argc, char **argv)
 	if (sweep != (strcmp(kind_s, "sweep") == 0)) {
 		free(sets);
 		return bad(sweep ? "%s is a sweep (a folder or its runs.csv); --kind %s draws a run "
-		           "of a preset" : "%s: --kind %s draws a sweep: expected its folder or its "
+		           "of a preset: expected --kind sweep or none" : "%s: --kind %s draws a sweep: expected its folder or its "
 		           "runs.csv", preset, kind_s);
 	}
 	if (sweep && (nvariants > 0 || laws_s != NULL)) {
 		free(sets);
 		return bad("%s: a sweep's figure draws what the sweep computed; --variant and --laws "
-		           "compare runs of presets", nvariants ? "--variant" : "--laws");
+		           "compare runs of presets: expected presets", nvariants ? "--variant" : "--laws");
 	}
 	if (sweep && nsets > 0) {
 		rc = bad("--set %s: a sweep's figure draws what the sweep computed; expected no "
@@ -542,7 +542,8 @@ plot_main(int argc, char **argv)
 	}
 	if (!sweep && obs != NULL) {
 		free(sets);
-		return bad("--observable %s: only a sweep's figure takes an observable", obs);
+		return bad("--observable %s: only a sweep's figure takes an observable; expected a "
+		           "sweep's folder (DIR or DIR/runs.csv)", obs);
 	}
 	msg[0] = '\0';
 	if (plot_size_parse(width_s, size_s, dpi_s, &w, &h, &dpi, msg, sizeof msg) != 0) {
@@ -554,7 +555,7 @@ plot_main(int argc, char **argv)
 		if (!sweep && kind != PLOT_LOOP) {
 			free(sets);
 			return bad("--collisions %s: only --kind loop and a sweep's figure draw chosen "
-			           "collisions", coll_s);
+			           "collisions; expected --kind loop", coll_s);
 		}
 		ncoll = parse_indices(coll_s, coll, PLOT_MAX_SERIES);
 		if (ncoll < 0) {

@@ -144,7 +144,7 @@ read_runs(const char *path, const char *obs, struct sweep_data *d, char *msg, si
 		}
 	if (status < 2) {
 		cnum_snprintf(msg, mn, "%s: not a sweep's runs.csv (no varied key before its "
-		              "status column)", path);
+		              "status column); expected id, the varied keys, status, ...", path);
 		goto out;
 	}
 	d->nkeys = status - 1;
@@ -424,8 +424,8 @@ plot_build_sweep(struct plot_figure *f, const char *dir, const char *obs, const 
 		goto out;
 	if (d.nkeys > 2) {
 		cnum_snprintf(msg, n, "%s: the sweep varies %d keys (%s, %s, %s ...); a figure draws "
-		              "one (curves) or two (a heat map)", runs, d.nkeys, d.key[0], d.key[1],
-		              d.key[2]);
+		              "one or two: expected a sweep of one key (curves) or two (a heat map)",
+		              runs, d.nkeys, d.key[0], d.key[1], d.key[2]);
 		goto out;
 	}
 	if (robs < 0) {
@@ -517,8 +517,8 @@ plot_build_sweep(struct plot_figure *f, const char *dir, const char *obs, const 
 			free(ex);
 			free(ey);
 			free(grid);
-			cnum_snprintf(msg, n, mx == 0 || my == 0 ? "%s: no finite value of the keys"
-			              : "out of memory", runs);
+			cnum_snprintf(msg, n, mx == 0 || my == 0 ? "%s: no finite value of the keys; "
+			              "expected numbers" : "out of memory", runs);
 			goto fail;
 		}
 		if (h <= 0)
