@@ -10,6 +10,7 @@
 #   make golden     rewrite tests/golden/*.csv (the collision tables the tests compare with)
 #   make python     the Python package in build/python/hybounce (over build/'s libhybounce.so)
 #   make bench-python  a 1,000-point sweep from Python side by side with hybounce sweep
+#   make bench-figures a figure of each paper study against its batch run; PNG sizes
 #   make install / uninstall   honour PREFIX, DESTDIR, MANPREFIX, LIBDIR, INCLUDEDIR, PYTHONDIR
 #                   (the binary, man page, presets, and libhybounce: shared, static,
 #                   headers under include/hybounce/, pkg-config file hybounce.pc;
@@ -256,6 +257,14 @@ bench-python: deps
 	@$(MAKE) --no-print-directory all
 	@mkdir -p $(BUILD)/bench
 	@PYTHONPATH=$(BUILD)/python $(PYTHON) tests/bench/python_sweep.py $(BIN) | tee $(BUILD)/bench/python.txt
+
+# The figure targets (tests/bench/figures.sh): a figure of each paper study
+# against its batch run, whole processes side by side (hyperfine), and the
+# size of a 1600x1200 PNG.
+.PHONY: bench-figures
+bench-figures: $(BIN)
+	@mkdir -p $(BUILD)/bench
+	@HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/bench/figures.sh $(BIN) | tee $(BUILD)/bench/figures.md
 
 # The generated parts of the man page and the README (tools/gendoc.c):
 # `make docs` rewrites them; tests/cli/docs.sh fails when they are stale.
