@@ -1,8 +1,11 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
- * plot_cmd.c - `hybounce plot PRESET --out FILE.{png,pdf,svg}`: runs the
+ * plot_cmd.c - `hybounce plot PRESET --out FILE.{png,pdf,svg,tex}`: runs the
  * preset and draws one figure of the run (plot_figures.c builds the
- * model, plot_cairo.c draws it, plot_tex.c writes it as pgfplots source).
+ * model, plot_cairo.c draws it, plot_tex.c writes it as pgfplots source);
+ * several presets, --variant or --laws: the runs compared in one figure
+ * (plot_compare.c); a sweep's folder: its figure (plot_sweep.c).  The
+ * file is written by plot_out.c, as the --plot of batch, sweep and fit.
  *
  * Exit status as batch mode's: 0, 1 the run failed numerically (the figure
  * of what was computed is written), 2 bad input or an output that could
@@ -492,7 +495,8 @@ plot_main(int argc, char **argv)
 	}
 	if (optind >= argc) {
 		free(sets);
-		return bad("no preset given; expected hybounce plot PRESET --out FILE.png");
+		return bad("no preset given; expected hybounce plot PRESET --out FILE.png (or a "
+		           "sweep's folder for PRESET)");
 	}
 	npresets = argc - optind;
 	preset = argv[optind];
