@@ -80,6 +80,18 @@ else
 	notok "plot DIR --collisions 2" "$T/c2.info"
 fi
 
+# a sweep in shards: --merge DIR --plot FILE draws the merged sweep
+for k in 0 1; do
+	"$BIN" sweep steel-on-bitumen --vary law.c=1e3:1e5:9:log $SB --out "$T/sh" -q --jobs 1 \
+		--shard $k/2 2>/dev/null
+done
+"$BIN" sweep --merge "$T/sh" --plot "$T/sh.png" 2>"$T/err"
+if grep -q "^wrote $T/sh.png\$" "$T/err" && cmp -s "$T/sh.png" "$T/s1.png"; then
+	ok "sweep --merge DIR --plot: the figure of the same sweep run whole"
+else
+	notok "sweep --merge --plot" "$T/err"
+fi
+
 # --- over two keys: a heat map and its colour legend ---------------------------
 "$BIN" sweep steel-on-bitumen --vary law.c=1e3:1e5:5:log --vary initial.x0='10 um,20 um,40 um' \
 	$SB --out "$T/s2" -q --jobs 2 --plot "$T/s2.png" 2>"$T/err"
