@@ -10,6 +10,7 @@
 #   make golden     rewrite tests/golden/*.csv (the collision tables the tests compare with)
 #   make python     the Python package in build/python/hybounce (over build/'s libhybounce.so)
 #   make bench-python  a 1,000-point sweep from Python side by side with hybounce sweep
+#   make bench-figures a figure of each paper study against its batch run; PNG sizes
 #   make install / uninstall   honour PREFIX, DESTDIR, MANPREFIX, LIBDIR, INCLUDEDIR, PYTHONDIR
 #                   (the binary, man page, presets, and libhybounce: shared, static,
 #                   headers under include/hybounce/, pkg-config file hybounce.pc;
@@ -223,7 +224,7 @@ $(BIN): $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(BIN_LIBS) $(AUBIO_LIBS)
 
 # The figure model of hybounce plot (no plotting library) is unit-tested too.
-UNIT_CLI_OBJ := $(BUILD)/src/cli/plot_model.o
+UNIT_CLI_OBJ := $(BUILD)/src/cli/plot_model.o $(BUILD)/src/cli/plot_map.o
 $(UNIT): $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(TEST_LIBS) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
 
@@ -256,6 +257,14 @@ bench-python: deps
 	@$(MAKE) --no-print-directory all
 	@mkdir -p $(BUILD)/bench
 	@PYTHONPATH=$(BUILD)/python $(PYTHON) tests/bench/python_sweep.py $(BIN) | tee $(BUILD)/bench/python.txt
+
+# The figure targets (tests/bench/figures.sh): a figure of each paper study
+# against its batch run, whole processes side by side (hyperfine), and the
+# size of a 1600x1200 PNG.
+.PHONY: bench-figures
+bench-figures: $(BIN)
+	@mkdir -p $(BUILD)/bench
+	@HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/bench/figures.sh $(BIN) | tee $(BUILD)/bench/figures.md
 
 # The generated parts of the man page and the README (tools/gendoc.c):
 # `make docs` rewrites them; tests/cli/docs.sh fails when they are stale.
@@ -479,7 +488,9 @@ docs: readme-examples
 # The README's figures (docs/figures/*.png), drawn by hybounce plot from the
 # paper's three studies: the state against t and the observables per
 # collision of each, the hysteresis loops of the first; 150 dpi at a
-# journal column's width.
+# journal column's width.  Then the --plot of sweep (e against law.c; a
+# heat map over law.c and law.alpha) and fit (examples/fit/bounces.csv),
+# at their default 300 dpi; two runs of the first study compared.
 FIGURES := docs/figures
 figures: $(BIN)
 	@mkdir -p $(FIGURES)
@@ -490,6 +501,17 @@ figures: $(BIN)
 	done
 	@HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) plot steel-on-bitumen --kind loop --collisions 0,1,2,4 \
 	    --dpi 150 --out $(FIGURES)/steel-on-bitumen-loop.png
+	@rm -rf $(BUILD)/figures && mkdir -p $(BUILD)/figures && \
+	    HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) sweep steel-on-bitumen --vary law.c=1e3:1e5:17:log \
+	        --out $(BUILD)/figures/c -q --plot $(FIGURES)/sweep-law-c.png && \
+	    HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) sweep steel-on-bitumen --vary law.c=1e3:1e5:13:log \
+	        --vary law.alpha=0.1:0.7:13 --set run.T=0.1 --out $(BUILD)/figures/c-alpha -q \
+	        --plot $(FIGURES)/sweep-law-c-alpha.png && \
+	    HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) fit steel-on-bitumen --data examples/fit/bounces.csv \
+	        --free law.c,law.alpha -q --out $(BUILD)/figures/fit.preset \
+	        --plot $(FIGURES)/fit-bounces.png >/dev/null
+	@HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) plot steel-on-bitumen --variant law.c=2000 \
+	    --variant law.c=20000 --set run.T=0.3 --dpi 150 --out $(FIGURES)/compare-law-c.png
 
 # The pgfplots source of hybounce plot compiled with pdflatex
 # (tests/tex/check.sh): not part of make check, TeX Live being heavy;

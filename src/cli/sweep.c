@@ -36,6 +36,8 @@
 #include "hybounce/sweep.h"
 
 #include "sweep_cli.h"
+#include "plot_cmd.h"
+#include "plot_out.h"
 #include "report.h"
 #include "signals.h"
 #include "clock.h"
@@ -43,7 +45,7 @@
 #define PROG "hybounce sweep"
 
 enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS, OPT_MAX_POINTS,
-       OPT_TIME, OPT_PARTITION, OPT_ACCOUNT, OPT_QOS, OPT_MEM, OPT_MAX_ARRAY };
+       OPT_TIME, OPT_PARTITION, OPT_ACCOUNT, OPT_QOS, OPT_MEM, OPT_MAX_ARRAY, OPT_PLOT };
 
 static const struct option sweep_options_long[] = {
 	{ "set",      required_argument, NULL, 's' },
@@ -64,6 +66,7 @@ static const struct option sweep_options_long[] = {
 	{ "qos",       required_argument, NULL, OPT_QOS },
 	{ "mem",       required_argument, NULL, OPT_MEM },
 	{ "max-array", required_argument, NULL, OPT_MAX_ARRAY },
+	{ "plot",      required_argument, NULL, OPT_PLOT },
 	{ "help",     no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
 };
@@ -73,11 +76,11 @@ sweep_usage(FILE *f)
 {
 	fprintf(f,
 "usage: hybounce sweep PRESET [--set KEY=VALUE]... --vary KEY=SPEC [--vary ...]\n"
-"                      [--jobs N] [--shard K/N] [--quiet] --out DIR\n"
+"                      [--jobs N] [--shard K/N] [--quiet] [--plot FILE] --out DIR\n"
 "       hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]\n"
 "                      [--sshlogin HOSTS] [--time T] [--partition P]\n"
 "                      [--account A] [--qos Q] [--mem M] [--max-array N]\n"
-"       hybounce sweep --merge DIR [--shards N]\n"
+"       hybounce sweep --merge DIR [--shards N] [--plot FILE]\n"
 "\n"
 "Runs the Cartesian product of the varied values (the last --vary varies\n"
 "fastest); every other value comes from PRESET and --set.\n"
@@ -95,6 +98,10 @@ sweep_usage(FILE *f)
 "  -q, --quiet             no progress\n"
 "      --progress PCT      without a terminal, a progress line every PCT %%\n"
 "                          of the points (default 10)\n"
+"      --plot FILE         when the sweep is complete, draw it (as hybounce plot\n"
+"                          DIR): e against the varied key, one curve per\n"
+"                          collision i = 0..3, or over two keys a heat map of\n"
+"                          collision 0; FILE.png, .pdf, .svg or .tex\n"
 "      --max-points N      allow a sweep of up to N points (default 1000000,\n"
 "                          at most 1000000000); a larger sweep is refused\n"
 "      --emit slurm        print a script that submits the shards as Slurm job\n"
@@ -271,6 +278,61 @@ print_wrote_dir(const struct dir_targets *d, int unchanged)
 }
 
 /* ------------------------------------------------------------------ */
+/* --plot FILE: the figure of the sweep in dir (plot_out.h)           */
+
+/* The figure's path, by the output rules, before anything runs: 0, or 2 after saying why. */
+static int
+plot_check(const char *plot, const char *dir)
+{
+	struct plot_out po;
+	struct hb_outputs pol;
+	char m[3][4200], msg[4200];
+
+	hb_outputs_init(&pol);
+	snprintf(m[0], sizeof m[0], "%s/runs.csv", dir);
+	snprintf(m[1], sizeof m[1], "%s/collisions.csv", dir);
+	snprintf(m[2], sizeof m[2], "%s/sweep.preset", dir);
+	hb_outputs_input(&pol, m[0], "the sweep's runs.csv");
+	hb_outputs_input(&pol, m[1], "the sweep's collisions.csv");
+	hb_outputs_input(&pol, m[2], "the sweep's sweep.preset");
+	msg[0] = '\0';
+	if (plot_out_parse(&po, "--plot", plot, msg, sizeof msg) != 0 ||
+	    plot_out_register(&po, &pol, msg, sizeof msg) != 0)
+		return bad("%s", msg);
+	return 0;
+}
+
+/* Draws the sweep in dir to plot: 0, or 2 after saying why. */
+static int
+plot_draw_dir(const char *plot, const char *dir)
+{
+	struct plot_out po;
+	struct hb_outputs pol;
+	struct plot_figure *fig = malloc(sizeof *fig);
+	char msg[4200];
+	int status = 0;
+
+	if (fig == NULL)
+		return bad("--plot %s: out of memory", plot);
+	hb_outputs_init(&pol);
+	msg[0] = '\0';
+	if (plot_out_parse(&po, "--plot", plot, msg, sizeof msg) != 0) {
+		free(fig);
+		return bad("%s", msg);
+	}
+	if (plot_build_sweep(fig, dir, NULL, NULL, 0, 252, -1, &pol, msg, sizeof msg) != 0) {
+		free(fig);
+		return bad("--plot %s: %s", plot, msg);
+	}
+	if (plot_out_register(&po, &pol, msg, sizeof msg) != 0 ||
+	    plot_out_write(&po, &pol, fig, msg, sizeof msg) != 0)
+		status = bad("%s", msg);
+	plot_figure_free(fig);
+	free(fig);
+	return status;
+}
+
+/* ------------------------------------------------------------------ */
 /* Input                                                               */
 
 /* The preset, the --set values and the axes; NULL after printing why (exit 2). */
@@ -343,6 +405,7 @@ sweep_main(int argc, char **argv)
 	int nsets = 0, nvaries = 0, quiet = 0, c, status = 2;
 	long jobs = 0, shard_k = 0, shard_n = 1, shards = 0, pct = 10, max_points = 0;
 	const char *out = NULL, *emit = NULL, *sshlogin = NULL, *merge = NULL, *slurm_opt = NULL;
+	const char *plot = NULL;
 	struct sweep_emit_opts eo = { 0 };
 	struct hb_sweep *sw = NULL;
 	char msg[2048];
@@ -396,6 +459,7 @@ sweep_main(int argc, char **argv)
 			}
 			break;
 		case OPT_SSHLOGIN: sshlogin = optarg; break;
+		case OPT_PLOT: plot = optarg; break;
 		case OPT_MERGE: merge = optarg; break;
 		case OPT_PROGRESS:
 			if (parse_long(optarg, 1, 100, &pct) != 0) {
@@ -468,9 +532,11 @@ sweep_main(int argc, char **argv)
 	if (merge != NULL) {
 		if (optind < argc || nvaries || nsets || out || emit || sshlogin || slurm_opt) {
 			status = bad("--merge DIR takes no preset and no other option but "
-			             "--shards N and --quiet");
+			             "--shards N, --plot FILE and --quiet");
 			goto done;
 		}
+		if (plot != NULL && plot_check(plot, merge) != 0)
+			goto done;   /* exit 2 */
 		struct dir_targets dt;
 
 		probe_dir(merge, &dt);
@@ -495,7 +561,7 @@ sweep_main(int argc, char **argv)
 		}
 		if (!quiet)
 			print_wrote_dir(&dt, 0);
-		status = 0;
+		status = plot != NULL ? plot_draw_dir(plot, merge) : 0;
 		goto done;
 	}
 	if (optind >= argc) {
@@ -516,6 +582,16 @@ sweep_main(int argc, char **argv)
 		             : sshlogin ? "--sshlogin" : slurm_opt);
 		goto done;
 	}
+	if (plot != NULL && (emit != NULL || shard_n > 1)) {
+		status = bad("--plot %s: %s", plot, emit != NULL
+		             ? "the emitted jobs compute the sweep later; draw it when it is merged "
+		               "(--merge DIR --plot FILE, or hybounce plot DIR)"
+		             : "a shard holds part of the sweep; draw it when it is merged "
+		               "(--merge DIR --plot FILE)");
+		goto done;
+	}
+	if (plot != NULL && plot_check(plot, out) != 0)
+		goto done;   /* exit 2 */
 	if (emit != NULL && slurm_opt != NULL && strcmp(emit, "slurm") != 0) {
 		status = bad("--emit %s: %s goes with --emit slurm", emit, slurm_opt);
 		goto done;
@@ -593,6 +669,8 @@ sweep_main(int argc, char **argv)
 			else
 				print_wrote_dir(&dt, g.total > 0 && g.resumed == g.total);
 		}
+		if (status == HB_OK && plot != NULL)
+			status = plot_draw_dir(plot, out);
 	}
 done:
 	hb_sweep_free(sw);

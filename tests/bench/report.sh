@@ -3,8 +3,9 @@
 # report.sh [DIR]: after `make bench` (DIR, default build/bench), splices the
 # per-study table (DIR/study-table.md) into docs/speed-and-accuracy.md between the
 # STUDY-TABLE markers, and writes tests/bench/REPORT.md: a header, the
-# engine summary of docs/speed-and-accuracy.md (between the ENGINE-V2 markers) and the bench's
-# own report (DIR/report.md).  Run from the top of the tree (make bench-docs).
+# engine summary of docs/speed-and-accuracy.md (between the ENGINE-V2 markers), the bench's
+# own report (DIR/report.md) and tests/bench/REPORT-figures.md (the figure
+# and Python targets).  Run from the top of the tree (make bench-docs).
 dir=${1:-build/bench}
 here=$(dirname "$0")
 for f in "$dir/study-table.md" "$dir/report.md"; do
@@ -34,5 +35,9 @@ HEAD
 	echo 'The report below is the new run (`make bench`), with the dop853 rows among the extra settings of each study.'
 	echo
 	cat "$dir/report.md"
+	# the figure and Python targets (make bench-figures, make bench-python),
+	# measured by hand: kept as written
+	echo
+	cat "$here/REPORT-figures.md"
 } >"$out.new" && mv "$out.new" "$out"
 echo "$doc (STUDY-TABLE) and $out written"
