@@ -6,7 +6,7 @@
  * runs (exit 2), and shows progress on stderr; the engine does the rest.
  *
  *     hybounce sweep PRESET [--set KEY=VALUE]... [--vary KEY=SPEC]...
- *                    [--jobs N] [--shard K/N] [--quiet] --out DIR
+ *                    [--refine OBS[:TOL]] [--jobs N] [--shard K/N] [--quiet] --out DIR
  *     hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]
  *                    [--sshlogin HOSTS] [--time T] [--partition P] [--account A]
  *                    [--qos Q] [--mem M] [--max-array N]
@@ -43,7 +43,7 @@
 #define PROG "hybounce sweep"
 
 enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS, OPT_MAX_POINTS,
-       OPT_TIME, OPT_PARTITION, OPT_ACCOUNT, OPT_QOS, OPT_MEM, OPT_MAX_ARRAY };
+       OPT_TIME, OPT_PARTITION, OPT_ACCOUNT, OPT_QOS, OPT_MEM, OPT_MAX_ARRAY, OPT_REFINE };
 
 static const struct option sweep_options_long[] = {
 	{ "set",      required_argument, NULL, 's' },
@@ -64,6 +64,7 @@ static const struct option sweep_options_long[] = {
 	{ "qos",       required_argument, NULL, OPT_QOS },
 	{ "mem",       required_argument, NULL, OPT_MEM },
 	{ "max-array", required_argument, NULL, OPT_MAX_ARRAY },
+	{ "refine",    required_argument, NULL, OPT_REFINE },
 	{ "help",     no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
 };
@@ -73,7 +74,8 @@ sweep_usage(FILE *f)
 {
 	fprintf(f,
 "usage: hybounce sweep PRESET [--set KEY=VALUE]... --vary KEY=SPEC [--vary ...]\n"
-"                      [--jobs N] [--shard K/N] [--quiet] --out DIR\n"
+"                      [--refine OBS[:TOL]] [--jobs N] [--shard K/N] [--quiet]\n"
+"                      --out DIR\n"
 "       hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]\n"
 "                      [--sshlogin HOSTS] [--time T] [--partition P]\n"
 "                      [--account A] [--qos Q] [--mem M] [--max-array N]\n"
@@ -87,6 +89,11 @@ sweep_usage(FILE *f)
 "                          in --set: --vary initial.x0='10 um,40 um'); the\n"
 "                          preset's '; sweep: --vary' lines are axes too\n"
 "  -s, --set KEY=VALUE     override one value of the preset (repeatable)\n"
+"      --refine OBS[:TOL]  compute the grid of one or two ranges, then bisect\n"
+"                          where the class of OBS (a runs.csv column) changes\n"
+"                          until each boundary is within TOL of each axis\n"
+"                          (default 1e-3); OBS<X or OBS>X: which side of X;\n"
+"                          DIR/boundaries.csv, runs.csv's 'refined' column\n"
 "  -j, --jobs N            worker threads (default: the online processors)\n"
 "      --shard K/N         compute only shard K of N (points K, K+N, ...);\n"
 "                          then merge with --merge DIR\n"
@@ -238,17 +245,20 @@ on_progress(void *ctx, const struct hb_sweep_progress *p)
 
 /* How DIR/runs.csv and DIR/collisions.csv will be written (before). */
 struct dir_targets {
-	char path[2][4200];
-	struct hb_atomic_target t[2];
+	char path[3][4200];
+	struct hb_atomic_target t[3];
+	int nfiles;    /* 3 with a refined sweep's boundaries.csv */
 };
 
 static void
-probe_dir(const char *dir, struct dir_targets *d)
+probe_dir(const char *dir, struct dir_targets *d, int refined)
 {
+	static const char *const names[3] = { "runs.csv", "collisions.csv", "boundaries.csv" };
 	char m[256];
 
-	for (int k = 0; k < 2; k++) {
-		snprintf(d->path[k], sizeof d->path[k], "%s/%s", dir, k ? "collisions.csv" : "runs.csv");
+	d->nfiles = refined ? 3 : 2;
+	for (int k = 0; k < d->nfiles; k++) {
+		snprintf(d->path[k], sizeof d->path[k], "%s/%s", dir, names[k]);
 		if (hb_atomic_probe(d->path[k], &d->t[k], m, sizeof m) != HB_OK)
 			memset(&d->t[k], 0, sizeof d->t[k]);
 	}
@@ -261,7 +271,7 @@ probe_dir(const char *dir, struct dir_targets *d)
 static void
 print_wrote_dir(const struct dir_targets *d, int unchanged)
 {
-	for (int k = 0; k < 2; k++) {
+	for (int k = 0; k < d->nfiles; k++) {
 		if (unchanged) {
 			fprintf(stderr, "kept %s (the sweep was complete)\n", d->path[k]);
 			continue;
@@ -276,7 +286,8 @@ print_wrote_dir(const struct dir_targets *d, int unchanged)
 /* The preset, the --set values and the axes; NULL after printing why (exit 2). */
 static struct hb_sweep *
 build(const char *preset, const char *const *sets, int nsets,
-      const char *const *varies, int nvaries, const char *out, long max_points)
+      const char *const *varies, int nvaries, const char *out, long max_points,
+      const char *refine)
 {
 	char path[4096], spec[4200], msg[4096], more[128];
 	struct hb_scene sc;
@@ -312,15 +323,26 @@ build(const char *preset, const char *const *sets, int nsets,
 		hb_sweep_free(sw);
 		return NULL;
 	}
-	free(text);
 	for (int i = 0; i < nvaries; i++) {
 		msg[0] = '\0';
 		if (hb_sweep_vary(sw, varies[i], msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": %s\n", msg);
+			free(text);
 			hb_sweep_free(sw);
 			return NULL;
 		}
 	}
+	/* --refine after every axis: the command line's, else the preset's line */
+	msg[0] = '\0';
+	if (hb_sweep_npoints(sw) > 0 &&
+	    (refine != NULL ? hb_sweep_refine(sw, refine, msg, sizeof msg)
+	                    : hb_sweep_refine_from_preset(sw, text, path, msg, sizeof msg)) != HB_OK) {
+		fprintf(stderr, PROG ": %s\n", msg);
+		free(text);
+		hb_sweep_free(sw);
+		return NULL;
+	}
+	free(text);
 	if (hb_sweep_npoints(sw) == 0) {
 		bad("nothing to vary: expected --vary KEY=SPEC (e.g. --vary "
 		    "law.c=1e8:1e10:20:log), or a preset with '; sweep: --vary' lines");
@@ -343,6 +365,7 @@ sweep_main(int argc, char **argv)
 	int nsets = 0, nvaries = 0, quiet = 0, c, status = 2;
 	long jobs = 0, shard_k = 0, shard_n = 1, shards = 0, pct = 10, max_points = 0;
 	const char *out = NULL, *emit = NULL, *sshlogin = NULL, *merge = NULL, *slurm_opt = NULL;
+	const char *refine = NULL;
 	struct sweep_emit_opts eo = { 0 };
 	struct hb_sweep *sw = NULL;
 	char msg[2048];
@@ -455,6 +478,7 @@ sweep_main(int argc, char **argv)
 			}
 			slurm_opt = "--max-array";
 			break;
+		case OPT_REFINE: refine = optarg; break;
 		case 'h':
 			sweep_usage(stdout);
 			status = 0;
@@ -466,14 +490,14 @@ sweep_main(int argc, char **argv)
 	}
 
 	if (merge != NULL) {
-		if (optind < argc || nvaries || nsets || out || emit || sshlogin || slurm_opt) {
+		if (optind < argc || nvaries || nsets || out || emit || sshlogin || slurm_opt || refine) {
 			status = bad("--merge DIR takes no preset and no other option but "
 			             "--shards N and --quiet");
 			goto done;
 		}
 		struct dir_targets dt;
 
-		probe_dir(merge, &dt);
+		probe_dir(merge, &dt, 0);
 		msg[0] = '\0';
 		char shards_txt[24] = "N";
 
@@ -526,9 +550,15 @@ sweep_main(int argc, char **argv)
 		             : "--sshlogin goes with --emit parallel");
 		goto done;
 	}
-	sw = build(argv[optind], sets, nsets, varies, nvaries, out, max_points);
+	sw = build(argv[optind], sets, nsets, varies, nvaries, out, max_points, refine);
 	if (sw == NULL)
 		goto done;      /* exit 2: build said why */
+	if (hb_sweep_refined(sw) && (emit != NULL || shard_n > 1)) {
+		status = bad("%s: a refined sweep (--refine) runs its rounds one after another on "
+		             "one machine (on --jobs threads); accepted: --refine without --emit "
+		             "and --shard", emit != NULL ? "--emit" : "--shard");
+		goto done;
+	}
 
 	if (emit != NULL) {
 		if (shards == 0)
@@ -553,6 +583,7 @@ sweep_main(int argc, char **argv)
 	{
 		struct progress g = { 0 };
 		struct hb_sweep_options o = { 0 };
+		struct hb_sweep_refine_stats rs = { 0 };
 		struct dir_targets dt;
 
 		g.tty = isatty(STDERR_FILENO);
@@ -566,11 +597,12 @@ sweep_main(int argc, char **argv)
 		o.progress = on_progress;
 		o.ctx = &g;
 		o.provenance = cli_provenance();
+		o.refine_stats = &rs;
 		/* SIGINT, SIGTERM, SIGHUP (those not ignored): the points done are
 		 * journaled, exit 128 + N (signals.h). */
 		cli_signals_watch();
 		o.cancel = &cli_signal;
-		probe_dir(out, &dt);
+		probe_dir(out, &dt, hb_sweep_refined(sw));
 		msg[0] = '\0';
 		status = hb_sweep_run(sw, &o, msg, sizeof msg);
 		cli_signals_restore();
@@ -592,6 +624,8 @@ sweep_main(int argc, char **argv)
 				        "with: hybounce sweep --merge %s\n", shard_k, shard_n, out, out);
 			else
 				print_wrote_dir(&dt, g.total > 0 && g.resumed == g.total);
+			if (rs.runs > 0)
+				sweep_refine_summary(stderr, sw, &rs);
 		}
 	}
 done:

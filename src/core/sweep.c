@@ -32,34 +32,15 @@
 #include "scene_keys.h"
 #include "cnum.h"
 
-#define SWEEP_MAX_POINTS 1000000000L
-#define SWEEP_MAX_AXES 16
-
-struct axis {
-	char key[48];
-	char spec[256];   /* as given, after '=' */
-	long n;
-	char **val;       /* a list's n canonical texts, or NULL */
-	double *num;      /* a range's n canonical values, or NULL */
-};
-
-/* The canonical text of value i of axis a (in buf for a range's number). */
-static const char *
-axis_text(const struct axis *a, long i, char *buf, size_t n)
+/* See sweep_impl.h. */
+const char *
+sweep_axis_text(const struct axis *a, long i, char *buf, size_t n)
 {
 	if (a->num == NULL)
 		return a->val[i];
 	cnum_snprintf(buf, n, "%.17g", a->num[i]);
 	return buf;
 }
-
-struct hb_sweep {
-	struct hb_scene base;
-	long max_points;          /* the largest product accepted (hb_sweep_set_max_points) */
-	char more[128];           /* how to ask for more, for the refusal */
-	int naxes;
-	struct axis ax[SWEEP_MAX_AXES];
-};
 
 static void
 axis_free(struct axis *a)
@@ -151,14 +132,14 @@ key_value(const struct hb_scene *sc, const char *key, char *buf, size_t n)
 }
 
 /* The scene on which axis k's values are checked: base + earlier axes' first values. */
-static void
-check_scene(const struct hb_sweep *sw, int k, struct hb_scene *sc)
+void
+sweep_check_scene(const struct hb_sweep *sw, int k, struct hb_scene *sc)
 {
 	char m[256], t[64];
 
 	*sc = sw->base;
 	for (int i = 0; i < k; i++)
-		(void)hb_scene_set(sc, sw->ax[i].key, axis_text(&sw->ax[i], 0, t, sizeof t), m,
+		(void)hb_scene_set(sc, sw->ax[i].key, sweep_axis_text(&sw->ax[i], 0, t, sizeof t), m,
 		                   sizeof m);
 }
 
@@ -218,8 +199,8 @@ parse_count(const char *t, long *out)
  * A range FROM:TO:N[:log] into a->val; others: the points of the other
  * axes, so that a sweep over the limit is refused before a value is made.
  */
-static int
-parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw,
+int
+sweep_parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw,
             double others, char *msg, size_t n)
 {
 	char *part[5] = { 0 }, num[64];
@@ -365,6 +346,10 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 	double others;
 
 	memset(&a, 0, sizeof a);
+	if (sw->rf.on)
+		return hb_status_set(msg, n, HB_EINVAL, "--vary '%s': the sweep is refined already "
+		                     "(--refine %s); expected every --vary before --refine", arg,
+		                     sw->rf.spec);
 	if (eq == NULL)
 		return hb_status_set(msg, n, HB_EINVAL, "--vary '%s': " RANGE_HELP, arg);
 	key = trimmed(arg, eq);
@@ -392,13 +377,13 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 	if (k == sw->naxes && sw->naxes == SWEEP_MAX_AXES)
 		return hb_status_set(msg, n, HB_EINVAL, "--vary %s: too many axes; accepted: at "
 		                  "most %d", a.key, SWEEP_MAX_AXES);
-	check_scene(sw, k, &sc);
+	sweep_check_scene(sw, k, &sc);
 	others = 1;
 	for (int i = 0; i < sw->naxes; i++)
 		if (i != k)
 			others *= (double)sw->ax[i].n;
 	if (strchr(a.spec, ':') != NULL)
-		rc = parse_range(&a, &sc, sw, others, msg, n);
+		rc = sweep_parse_range(&a, &sc, sw, others, msg, n);
 	else
 		rc = parse_list(&a, &sc, msg, n);
 	if (rc != HB_OK) {
@@ -452,8 +437,8 @@ hb_sweep_vary_from_preset(struct hb_sweep *sw, const char *text, const char *nam
 }
 
 /* Index of axis k at point id (row-major, the last axis fastest). */
-static long
-axis_index(const struct hb_sweep *sw, long id, int k)
+long
+sweep_axis_index(const struct hb_sweep *sw, long id, int k)
 {
 	for (int i = sw->naxes - 1; i > k; i--)
 		id /= sw->ax[i].n;
@@ -467,7 +452,7 @@ hb_sweep_point_value(const struct hb_sweep *sw, long id, int k, char *buf, size_
 
 	if (k < 0 || k >= sw->naxes || id < 0 || id >= hb_sweep_npoints(sw))
 		return HB_EINVAL;
-	snprintf(buf, n, "%s", axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t));
+	snprintf(buf, n, "%s", sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t));
 	return HB_OK;
 }
 
@@ -480,7 +465,7 @@ hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, c
 		return hb_status_set(msg, n, HB_EINVAL, "point %ld: no such point", id);
 	*out = sw->base;
 	for (int k = 0; k < sw->naxes; k++) {
-		const char *v = axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t);
+		const char *v = sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t);
 
 		m[0] = '\0';
 		if (hb_scene_set(out, sw->ax[k].key, v, m, sizeof m) != HB_OK)
@@ -495,7 +480,7 @@ hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, c
 		for (int k = 0; k < sw->naxes && l < sizeof vals; k++)
 			l += (size_t)snprintf(vals + l, sizeof vals - l, "%s%s=%s", k ? " " : "",
 			                      sw->ax[k].key,
-			                      axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t));
+			                      sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t));
 		return hb_status_set(msg, n, HB_EINVAL, "point %ld (%s): %s", id, vals, m);
 	}
 	return HB_OK;
@@ -510,6 +495,13 @@ hb_sweep_check(const struct hb_sweep *sw, char *msg, size_t n)
 	if (np == 0)
 		return hb_status_set(msg, n, HB_EINVAL, "nothing to vary; expected at least one "
 		                  "--vary KEY=SPEC");
+	if (sw->rf.on) {
+		/* The grid's points; those between are in ranges of valid values. */
+		for (long g = 0; g < sweep_refine_grid_points(sw); g++)
+			if (hb_sweep_point_scene(sw, sweep_refine_grid_id(sw, g), &sc, msg, n) != HB_OK)
+				return HB_EINVAL;
+		return HB_OK;
+	}
 	for (long id = 0; id < np; id++)
 		if (hb_sweep_point_scene(sw, id, &sc, msg, n) != HB_OK)
 			return HB_EINVAL;
@@ -526,10 +518,13 @@ hb_sweep_spec_format(const struct hb_sweep *sw, char *buf, size_t n)
 	for (int k = 0; k < sw->naxes; k++)
 		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
 		                        "; sweep: --vary %s=%s\n", sw->ax[k].key, sw->ax[k].spec);
+	if (sw->rf.on)
+		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
+		                        "; sweep: --refine %s\n", sw->rf.spec);
 	return len;
 }
 
-/* id, the axes, status, message, the run observables (observables.h), cpu_s. */
+/* id, the axes, status, message, the run observables (observables.h), [refined,] cpu_s. */
 size_t
 hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n)
 {
@@ -543,7 +538,8 @@ hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n)
 	for (int k = 0; k < HB_OBS_COUNT; k++)
 		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
 		                        ",%s", hb_observables[k].name);
-	len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0, ",cpu_s");
+	len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0, "%s,cpu_s",
+	                        sw->rf.on ? ",refined" : "");
 	return len;
 }
 
@@ -557,7 +553,7 @@ runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s, do
 	fprintf(f, "r,%ld", id);
 	for (int k = 0; k < sw->naxes; k++) {
 		fputc(',', f);
-		csv_put_field(f, axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t));
+		csv_put_field(f, sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t));
 	}
 	fprintf(f, ",%s,", failed ? "failed" : "ok");
 	csv_put_field(f, failed && hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_sim_end_str(s));

@@ -221,9 +221,9 @@ read_block(int fd, off_t off, char **buf, size_t *cap)
 	}
 }
 
-/* The collisions header of --collisions (from an empty run's CSV). */
-static int
-collisions_header(const struct hb_scene *sc, char *buf, size_t n, char *msg, size_t mn)
+/* See sweep_impl.h (from an empty run's CSV). */
+int
+sweep_collisions_header(const struct hb_scene *sc, char *buf, size_t n, char *msg, size_t mn)
 {
 	struct hb_sim *s = hb_sim_new(sc, msg, mn);
 	char *t = NULL;
@@ -279,6 +279,10 @@ load_spec(const char *dir, struct hb_scene *sc, char *msg, size_t n)
 		hb_sweep_free(sw);
 		sw = NULL;
 	}
+	if (sw != NULL && hb_sweep_refine_from_preset(sw, text, path, msg, n) != HB_OK) {
+		hb_sweep_free(sw);
+		sw = NULL;
+	}
 	if (sw != NULL && hb_sweep_npoints(sw) == 0) {
 		hb_status_set(msg, n, HB_EINVAL, "%s: no '; sweep: --vary' line", path);
 		hb_sweep_free(sw);
@@ -303,6 +307,13 @@ hb_sweep_merge_shards(const char *dir, long nshards, char *msg, size_t n)
 
 	if (sw == NULL)
 		return HB_EINVAL;
+	if (hb_sweep_refined(sw)) {
+		hb_sweep_free(sw);
+		return hb_status_set(msg, n, HB_EINVAL, "%s holds a refined sweep (--refine), which "
+		                     "runs on one machine and merges itself; expected: hybounce "
+		                     "sweep %s/" SWEEP_SPEC_NAME " --out %s, which resumes it", dir,
+		                     dir, dir);
+	}
 	rc = sweep_merge_into(sw, dir, nshards, msg, n);
 	hb_sweep_free(sw);
 	return rc;
@@ -381,7 +392,7 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char 
 	}
 	hb_sweep_runs_header(sw, hdr, sizeof hdr);
 	fprintf(runs, "%s\n", hdr);
-	if ((rc = collisions_header(sc, hdr, sizeof hdr, msg, n)) != HB_OK)
+	if ((rc = sweep_collisions_header(sc, hdr, sizeof hdr, msg, n)) != HB_OK)
 		goto out;
 	fprintf(coll, "id,%s\n", hdr);
 	for (long id = 0; id < np && rc == HB_OK; id++) {
