@@ -184,6 +184,25 @@ struct hb_sweep_progress {
 	double point_cpu; /* CPU time of the points computed in this run, s */
 };
 
+/*
+ * Another format for the merged files: a sink is given the headers of
+ * runs.csv and collisions.csv (without newline), then every row of both in
+ * the order the CSV files would hold them (a point's collisions, then its
+ * runs row; points by id), as CSV text without newline, then end(ok):
+ * ok 1, put the file in place; ok 0, remove what was written.  Memory is
+ * the sink's affair: the merge streams.  `name` is the file the sink
+ * writes in DIR (e.g. "sweep.h5"): a folder holding it and no journal
+ * holds the sweep complete.  Each function returns HB_OK, or an error
+ * with msg (the merge stops and calls end(0)).
+ */
+struct hb_sweep_sink {
+	const char *name;
+	int (*begin)(void *ctx, const char *runs_header, const char *collisions_header,
+	             char *msg, size_t n);
+	int (*row)(void *ctx, int runs, const char *row, size_t len, char *msg, size_t n);
+	int (*end)(void *ctx, int ok, char *msg, size_t n);
+};
+
 struct hb_sweep_options {
 	const char *dir;  /* the output folder (created if missing) */
 	int jobs;         /* worker threads, >= 1 */
@@ -207,6 +226,9 @@ struct hb_sweep_options {
 	const char *provenance;
 	/* May be NULL.  A refined sweep fills it in when it completes. */
 	struct hb_sweep_refine_stats *refine_stats;
+	/* May be NULL (runs.csv and collisions.csv): where a one-shard sweep merges. */
+	const struct hb_sweep_sink *sink;
+	void *sink_ctx;
 };
 
 /*
@@ -251,6 +273,11 @@ hb_sweep_merge(const char *dir, char *msg, size_t n);
 /* The same for a sweep run as nshards shards (0: from the journals' names). */
 int
 hb_sweep_merge_shards(const char *dir, long nshards, char *msg, size_t n);
+
+/* The same into a sink (NULL: the CSV files). */
+int
+hb_sweep_merge_to(const char *dir, long nshards, const struct hb_sweep_sink *sink, void *ctx,
+                  char *msg, size_t n);
 
 /*
  * Which of nshards shards the folder DIR holds done: done[k] = 1 when

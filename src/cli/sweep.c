@@ -6,11 +6,12 @@
  * runs (exit 2), and shows progress on stderr; the engine does the rest.
  *
  *     hybounce sweep PRESET [--set KEY=VALUE]... [--vary KEY=SPEC]...
- *                    [--refine OBS[:TOL]] [--jobs N] [--shard K/N] [--quiet] --out DIR
+ *                    [--refine OBS[:TOL]] [--format csv|hdf5] [--jobs N] [--shard K/N]
+ *                    [--quiet] --out DIR
  *     hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]
  *                    [--sshlogin HOSTS] [--time T] [--partition P] [--account A]
  *                    [--qos Q] [--mem M] [--max-array N]
- *     hybounce sweep --merge DIR [--shards N]
+ *     hybounce sweep --merge DIR [--shards N] [--format csv|hdf5]
  *
  * Exit status: 0 the sweep is complete (points that failed numerically are
  * rows with their message); 1 it could not be completed (I/O, memory, an
@@ -36,6 +37,7 @@
 #include "hybounce/sweep.h"
 
 #include "sweep_cli.h"
+#include "sweep_hdf5.h"
 #include "report.h"
 #include "signals.h"
 #include "clock.h"
@@ -43,7 +45,8 @@
 #define PROG "hybounce sweep"
 
 enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS, OPT_MAX_POINTS,
-       OPT_TIME, OPT_PARTITION, OPT_ACCOUNT, OPT_QOS, OPT_MEM, OPT_MAX_ARRAY, OPT_REFINE };
+       OPT_TIME, OPT_PARTITION, OPT_ACCOUNT, OPT_QOS, OPT_MEM, OPT_MAX_ARRAY, OPT_REFINE,
+       OPT_FORMAT };
 
 static const struct option sweep_options_long[] = {
 	{ "set",      required_argument, NULL, 's' },
@@ -65,6 +68,7 @@ static const struct option sweep_options_long[] = {
 	{ "mem",       required_argument, NULL, OPT_MEM },
 	{ "max-array", required_argument, NULL, OPT_MAX_ARRAY },
 	{ "refine",    required_argument, NULL, OPT_REFINE },
+	{ "format",    required_argument, NULL, OPT_FORMAT },
 	{ "help",     no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
 };
@@ -74,12 +78,12 @@ sweep_usage(FILE *f)
 {
 	fprintf(f,
 "usage: hybounce sweep PRESET [--set KEY=VALUE]... --vary KEY=SPEC [--vary ...]\n"
-"                      [--refine OBS[:TOL]] [--jobs N] [--shard K/N] [--quiet]\n"
-"                      --out DIR\n"
+"                      [--refine OBS[:TOL]] [--format csv|hdf5] [--jobs N]\n"
+"                      [--shard K/N] [--quiet] --out DIR\n"
 "       hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]\n"
 "                      [--sshlogin HOSTS] [--time T] [--partition P]\n"
 "                      [--account A] [--qos Q] [--mem M] [--max-array N]\n"
-"       hybounce sweep --merge DIR [--shards N]\n"
+"       hybounce sweep --merge DIR [--shards N] [--format csv|hdf5]\n"
 "\n"
 "Runs the Cartesian product of the varied values (the last --vary varies\n"
 "fastest); every other value comes from PRESET and --set.\n"
@@ -99,6 +103,9 @@ sweep_usage(FILE *f)
 "                          then merge with --merge DIR\n"
 "  -o, --out DIR           the folder: runs.csv, collisions.csv, sweep.preset;\n"
 "                          run again with the same command to resume\n"
+"      --format hdf5       the runs and collisions as DIR/sweep.h5 (chunked,\n"
+"                          compressed, units and spec as attributes) instead\n"
+"                          of the CSV files (default: csv)\n"
 "  -q, --quiet             no progress\n"
 "      --progress PCT      without a terminal, a progress line every PCT %%\n"
 "                          of the points (default 10)\n"
@@ -251,14 +258,17 @@ struct dir_targets {
 };
 
 static void
-probe_dir(const char *dir, struct dir_targets *d, int refined)
+probe_dir(const char *dir, struct dir_targets *d, int refined, int hdf5)
 {
-	static const char *const names[3] = { "runs.csv", "collisions.csv", "boundaries.csv" };
+	static const char *const names[2][3] = {
+		{ "runs.csv", "collisions.csv", "boundaries.csv" },
+		{ SWEEP_HDF5_NAME, "boundaries.csv", "" },
+	};
 	char m[256];
 
-	d->nfiles = refined ? 3 : 2;
+	d->nfiles = (hdf5 ? 1 : 2) + refined;
 	for (int k = 0; k < d->nfiles; k++) {
-		snprintf(d->path[k], sizeof d->path[k], "%s/%s", dir, names[k]);
+		snprintf(d->path[k], sizeof d->path[k], "%s/%s", dir, names[hdf5][k]);
 		if (hb_atomic_probe(d->path[k], &d->t[k], m, sizeof m) != HB_OK)
 			memset(&d->t[k], 0, sizeof d->t[k]);
 	}
@@ -366,6 +376,8 @@ sweep_main(int argc, char **argv)
 	long jobs = 0, shard_k = 0, shard_n = 1, shards = 0, pct = 10, max_points = 0;
 	const char *out = NULL, *emit = NULL, *sshlogin = NULL, *merge = NULL, *slurm_opt = NULL;
 	const char *refine = NULL;
+	int hdf5 = 0;
+	struct sweep_hdf5 *h5 = NULL;
 	struct sweep_emit_opts eo = { 0 };
 	struct hb_sweep *sw = NULL;
 	char msg[2048];
@@ -479,6 +491,13 @@ sweep_main(int argc, char **argv)
 			slurm_opt = "--max-array";
 			break;
 		case OPT_REFINE: refine = optarg; break;
+		case OPT_FORMAT:
+			if (strcmp(optarg, "csv") != 0 && strcmp(optarg, "hdf5") != 0) {
+				status = bad("--format '%s': accepted: csv, hdf5", optarg);
+				goto done;
+			}
+			hdf5 = strcmp(optarg, "hdf5") == 0;
+			break;
 		case 'h':
 			sweep_usage(stdout);
 			status = 0;
@@ -497,21 +516,28 @@ sweep_main(int argc, char **argv)
 		}
 		struct dir_targets dt;
 
-		probe_dir(merge, &dt, 0);
+		probe_dir(merge, &dt, 0, hdf5);
 		msg[0] = '\0';
+		if (hdf5 && (h5 = sweep_hdf5_new(merge, msg, sizeof msg)) == NULL) {
+			fprintf(stderr, PROG ": %s\n", msg);
+			status = 1;
+			goto done;
+		}
 		char shards_txt[24] = "N";
 
 		if (shards > 0)
 			snprintf(shards_txt, sizeof shards_txt, "%ld", shards);
-		if (hb_sweep_merge_shards(merge, shards, msg, sizeof msg) != HB_OK) {
+		if (hb_sweep_merge_to(merge, shards, h5 ? &sweep_hdf5_sink : NULL, h5, msg,
+		                      sizeof msg) != HB_OK) {
 			char spec[4200];
 			struct stat sb;
 
 			fprintf(stderr, PROG ": merge: %s\n", msg);
 			if (strstr(msg, " shards incomplete: ") || strstr(msg, " shard incomplete: "))
 				fprintf(stderr, PROG ": the same --emit command (e.g. hybounce sweep "
-				        "%s/sweep.preset --out %s --emit slurm --shards %s) computes "
-				        "only those, then merges\n", merge, merge, shards_txt);
+				        "%s/sweep.preset --out %s --emit slurm --shards %s%s) computes "
+				        "only those, then merges\n", merge, merge, shards_txt,
+				        hdf5 ? " --format hdf5" : "");
 			/* a folder that holds no sweep is bad input; an incomplete one is not */
 			snprintf(spec, sizeof spec, "%s/sweep.preset", merge);
 			status = stat(spec, &sb) == 0 && S_ISREG(sb.st_mode) ? 1 : 2;
@@ -573,6 +599,7 @@ sweep_main(int argc, char **argv)
 		}
 		eo.kind = emit;
 		eo.shards = shards;
+		eo.hdf5 = hdf5;
 		eo.sshlogin = sshlogin;
 		status = sweep_emit(sw, out, &eo, msg, sizeof msg);
 		if (status != 0)
@@ -602,8 +629,15 @@ sweep_main(int argc, char **argv)
 		 * journaled, exit 128 + N (signals.h). */
 		cli_signals_watch();
 		o.cancel = &cli_signal;
-		probe_dir(out, &dt, hb_sweep_refined(sw));
+		probe_dir(out, &dt, hb_sweep_refined(sw), hdf5);
 		msg[0] = '\0';
+		if (hdf5 && (h5 = sweep_hdf5_new(out, msg, sizeof msg)) == NULL) {
+			fprintf(stderr, PROG ": %s\n", msg);
+			status = 1;
+			goto done;
+		}
+		o.sink = h5 ? &sweep_hdf5_sink : NULL;
+		o.sink_ctx = h5;
 		status = hb_sweep_run(sw, &o, msg, sizeof msg);
 		cli_signals_restore();
 		if (status == HB_EDONE) {
@@ -629,6 +663,7 @@ sweep_main(int argc, char **argv)
 		}
 	}
 done:
+	sweep_hdf5_free(h5);
 	hb_sweep_free(sw);
 	free(sets);
 	free(varies);

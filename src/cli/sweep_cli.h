@@ -28,6 +28,7 @@ struct sweep_emit_opts {
 	/* sbatch's --time, --partition, --account, --qos, --mem (NULL: none) */
 	const char *time, *partition, *account, *qos, *mem;
 	long max_array;         /* MaxArraySize; 0: from scontrol, else 1001 */
+	int hdf5;               /* the merge writes sweep.h5 (--format hdf5) */
 };
 
 /*

@@ -154,6 +154,7 @@ sweep_base(const struct hb_sweep *sw);
  * (hb_sweep_prepare_dir checked it): its values are not made again.
  */
 int
-sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char *msg, size_t n);
+sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
+                 const struct hb_sweep_sink *sink, void *ctx, char *msg, size_t n);
 
 #endif

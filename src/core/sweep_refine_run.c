@@ -278,29 +278,43 @@ edges(const struct refine_state *r, const long *cells, long ncells, long **out)
 	return ne;
 }
 
-/* The runs row "r,ID,...,CPU\n" as "ID,...,LEVEL,CPU\n". */
-static void
-put_runs_row(FILE *f, const char *p, size_t l, int level)
+/* The runs row "r,ID,...,CPU\n" (l bytes) as "ID,...,LEVEL,CPU" into *t; its length or 0. */
+static size_t
+runs_row_text(const char *p, size_t l, int level, char **t, size_t *cap)
 {
 	const char *last = p + l - 1;
+	size_t head, w;
 
 	while (last > p && *last != ',')
 		last--;
-	fwrite(p + 2, 1, (size_t)(last - p) - 2, f);
-	fprintf(f, ",%d", level);
-	fwrite(last, 1, (size_t)(p + l - last), f);
+	head = (size_t)(last - p) - 2;
+	if (l + 16 > *cap) {
+		char *nb = realloc(*t, l + 16);
+
+		if (nb == NULL)
+			return 0;
+		*t = nb;
+		*cap = l + 16;
+	}
+	memcpy(*t, p + 2, head);
+	w = head + (size_t)snprintf(*t + head, 16, ",%d", level);
+	memcpy(*t + w, last, (size_t)(p + l - 1 - last));
+	w += (size_t)(p + l - 1 - last);
+	(*t)[w] = '\0';
+	return w;
 }
 
 static int
 write_files(struct refine_state *r, const char *dir, const long *e, long ne, long *nrows,
-            char *msg, size_t n)
+            const struct hb_sweep_sink *sink, void *sctx, char *msg, size_t n)
 {
 	const struct hb_sweep *sw = r->sw;
 	struct hb_atomic_set set;
-	FILE *runs, *coll, *bnd;
-	char path[4200], hdr[4096];
+	FILE *runs = NULL, *coll = NULL, *bnd;
+	char path[4200], hdr[4096], chdr[4300], *row = NULL;
+	size_t rowcap = 0;
 	long *ids, nid = 0;
-	int rc = HB_OK;
+	int rc = HB_OK, sink_open = 0;
 
 	ids = malloc((r->count + 1) * sizeof *ids);
 	if (ids == NULL)
@@ -311,21 +325,30 @@ write_files(struct refine_state *r, const char *dir, const long *e, long ne, lon
 	qsort(ids, (size_t)nid, sizeof *ids, cmp_long);
 	*nrows = nid;
 	hb_atomic_begin(&set);
-	snprintf(path, sizeof path, "%s/runs.csv", dir);
-	runs = hb_atomic_add(&set, path, msg, n);
-	snprintf(path, sizeof path, "%s/collisions.csv", dir);
-	coll = runs ? hb_atomic_add(&set, path, msg, n) : NULL;
+	if (sink == NULL) {
+		snprintf(path, sizeof path, "%s/runs.csv", dir);
+		runs = hb_atomic_add(&set, path, msg, n);
+		snprintf(path, sizeof path, "%s/collisions.csv", dir);
+		coll = runs ? hb_atomic_add(&set, path, msg, n) : NULL;
+	}
 	snprintf(path, sizeof path, "%s/" BOUNDARIES_NAME, dir);
-	bnd = coll ? hb_atomic_add(&set, path, msg, n) : NULL;
+	bnd = coll || sink ? hb_atomic_add(&set, path, msg, n) : NULL;
 	if (bnd == NULL) {
 		rc = HB_EIO;
 		goto out;
 	}
 	hb_sweep_runs_header(sw, hdr, sizeof hdr);
-	fprintf(runs, "%s\n", hdr);
-	if ((rc = sweep_collisions_header(&sw->base, hdr, sizeof hdr, msg, n)) != HB_OK)
+	if ((rc = sweep_collisions_header(&sw->base, path, sizeof path, msg, n)) != HB_OK)
 		goto out;
-	fprintf(coll, "id,%s\n", hdr);
+	snprintf(chdr, sizeof chdr, "id,%s", path);
+	if (sink != NULL) {
+		if ((rc = sink->begin(sctx, hdr, chdr, msg, n)) != HB_OK)
+			goto out;
+		sink_open = 1;
+	} else {
+		fprintf(runs, "%s\n", hdr);
+		fprintf(coll, "%s\n", chdr);
+	}
 	for (long i = 0; i < nid && rc == HB_OK; i++) {
 		const struct node *x = node_get(r, ids[i]);
 		const char *p;
@@ -349,10 +372,22 @@ write_files(struct refine_state *r, const char *dir, const long *e, long ne, lon
 			const char *end = strchr(p, '\n');
 			size_t l = (size_t)(end - p) + 1;
 
-			if (p[0] == 'r')
-				put_runs_row(runs, p, l, x->level);
-			else
+			if (p[0] == 'r') {
+				size_t w = runs_row_text(p, l, x->level, &row, &rowcap);
+
+				if (w == 0)
+					rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+				else if (sink != NULL)
+					rc = sink->row(sctx, 1, row, w, msg, n);
+				else
+					fprintf(runs, "%s\n", row);
+			} else if (sink != NULL) {
+				rc = sink->row(sctx, 0, p + 2, l - 3, msg, n);
+			} else {
 				fwrite(p + 2, 1, l - 2, coll);
+			}
+			if (rc != HB_OK)
+				break;
 			p += l;
 		}
 	}
@@ -383,6 +418,14 @@ write_files(struct refine_state *r, const char *dir, const long *e, long ne, lon
 	}
 out:
 	free(ids);
+	free(row);
+	if (sink_open) {
+		/* the sink's file first: boundaries.csv follows it in place */
+		int e2 = sink->end(sctx, rc == HB_OK, rc == HB_OK ? msg : NULL, rc == HB_OK ? n : 0);
+
+		if (rc == HB_OK)
+			rc = e2;
+	}
 	if (rc == HB_OK)
 		return hb_atomic_commit(&set, msg, n);
 	hb_atomic_abort(&set);
@@ -434,6 +477,10 @@ sweep_refine_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, ch
 		snprintf(path, sizeof path, "%s/runs.csv", o->dir);
 		snprintf(c, sizeof c, "%s/collisions.csv", o->dir);
 		snprintf(b, sizeof b, "%s/" BOUNDARIES_NAME, o->dir);
+		if (o->sink != NULL) {
+			snprintf(path, sizeof path, "%s/%s", o->dir, o->sink->name);
+			snprintf(c, sizeof c, "%s", path);
+		}
 		if (access(path, F_OK) == 0 && access(c, F_OK) == 0 && access(b, F_OK) == 0) {
 			pr.total = pr.done = pr.resumed = 1;
 			if (o->progress)
@@ -534,7 +581,7 @@ sweep_refine_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, ch
 		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
 	}
-	if ((rc = write_files(&r, o->dir, e, ne, &nrows, msg, n)) != HB_OK)
+	if ((rc = write_files(&r, o->dir, e, ne, &nrows, o->sink, o->sink_ctx, msg, n)) != HB_OK)
 		goto out;
 	if (unlink(jpath) != 0 && errno != ENOENT) {
 		rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));

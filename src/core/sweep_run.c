@@ -372,6 +372,17 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 		/* Merged and its journal removed: the sweep is complete. */
 		snprintf(r, sizeof r, "%s/runs.csv", o->dir);
 		snprintf(c, sizeof c, "%s/collisions.csv", o->dir);
+		if (o->sink != NULL) {
+			int csv = access(r, F_OK) == 0 && access(c, F_OK) == 0;
+
+			snprintf(r, sizeof r, "%s/%s", o->dir, o->sink->name);
+			if (access(r, F_OK) != 0 && csv)
+				return hb_status_set(msg, n, HB_EINVAL, "--out %s: the folder holds this "
+				                     "sweep complete as runs.csv and collisions.csv, not "
+				                     "%s; expected a new folder for it", o->dir,
+				                     o->sink->name);
+			snprintf(c, sizeof c, "%s", r);
+		}
 		if (access(r, F_OK) == 0 && access(c, F_OK) == 0) {
 			pr.total = pr.done = pr.resumed = np;
 			if (o->progress)
@@ -417,7 +428,8 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 		fd = -1;
 	}
 	if (ns == 1) {
-		if ((rc = sweep_merge_into(sw, o->dir, 0, msg, n)) == HB_OK && unlink(jpath) != 0 &&
+		if ((rc = sweep_merge_into(sw, o->dir, 0, o->sink, o->sink_ctx, msg, n)) == HB_OK &&
+		    unlink(jpath) != 0 &&
 		    errno != ENOENT)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 	}
