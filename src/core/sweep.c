@@ -456,8 +456,14 @@ hb_sweep_point_value(const struct hb_sweep *sw, long id, int k, char *buf, size_
 	return HB_OK;
 }
 
-int
-hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n)
+/*
+ * The base scene with the axes' values of point id, not validated.  A
+ * range's value goes in as its double (hb_scene_set_number: the double
+ * that its %.17g text reads back to, without the text made and parsed
+ * again); a list's as its text.
+ */
+static int
+point_values(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n)
 {
 	char m[512], t[64];
 
@@ -465,13 +471,33 @@ hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, c
 		return hb_status_set(msg, n, HB_EINVAL, "point %ld: no such point", id);
 	*out = sw->base;
 	for (int k = 0; k < sw->naxes; k++) {
-		const char *v = sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t);
+		const struct axis *a = &sw->ax[k];
+		long i = sweep_axis_index(sw, id, k);
+		struct hb_scene_error e;
 
-		m[0] = '\0';
-		if (hb_scene_set(out, sw->ax[k].key, v, m, sizeof m) != HB_OK)
-			return hb_status_set(msg, n, HB_EINVAL, "point %ld: %s=%s: %s", id,
-			                  sw->ax[k].key, v, m);
+		if (a->num != NULL) {
+			if (hb_scene_set_number(out, a->key, a->num[i], &e) == HB_OK)
+				continue;
+			hb_scene_error_str(&e, m, sizeof m);
+		} else {
+			m[0] = '\0';
+			if (hb_scene_set(out, a->key, a->val[i], m, sizeof m) == HB_OK)
+				continue;
+		}
+		return hb_status_set(msg, n, HB_EINVAL, "point %ld: %s=%s: %s", id, a->key,
+		                     sweep_axis_text(a, i, t, sizeof t), m);
 	}
+	return HB_OK;
+}
+
+int
+hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n)
+{
+	char m[512], t[64];
+	int rc;
+
+	if ((rc = point_values(sw, id, out, msg, n)) != HB_OK)
+		return rc;
 	m[0] = '\0';
 	if (hb_scene_validate(out, m, sizeof m) != HB_OK) {
 		char vals[512] = "";
@@ -569,21 +595,45 @@ runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s, do
 	fputc('\n', f);
 }
 
+/* A stream on w's buffer, emptied (opened on first use). */
+static FILE *
+wbuf_stream(FILE **f, char **buf, size_t *len)
+{
+	if (*f == NULL)
+		*f = open_memstream(buf, len);
+	else if (fseeko(*f, 0, SEEK_SET) != 0)
+		return NULL;
+	return *f;
+}
+
+void
+sweep_wbuf_free(struct sweep_wbuf *w)
+{
+	if (w->coll != NULL)
+		fclose(w->coll);
+	if (w->blk != NULL)
+		fclose(w->blk);
+	free(w->cbuf);
+	free(w->bbuf);
+	memset(w, 0, sizeof *w);
+}
+
+/* See sweep_impl.h. */
 int
-hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed,
-                  char *msg, size_t n)
+sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, char **out,
+                      int *failed, char *msg, size_t n)
 {
 	double c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
 	struct hb_scene sc;
 	struct hb_sim *s;
-	char *coll = NULL, *blk = NULL, m[512];
-	size_t clen = 0, blen = 0;
+	char m[512];
 	FILE *f;
 	int rc;
 
 	*out = NULL;
 	*failed = 0;
-	if ((rc = hb_sweep_point_scene(sw, id, &sc, msg, n)) != HB_OK)
+	/* Not validated here: hb_sim_new validates (and hb_sweep_check did). */
+	if ((rc = point_values(sw, id, &sc, msg, n)) != HB_OK)
 		return rc;
 	m[0] = '\0';
 	s = hb_sim_new(&sc, m, sizeof m);
@@ -593,44 +643,49 @@ hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed
 	*failed = hb_sim_end(s) == HB_SIM_END_FAIL;
 
 	/* The collisions exactly as --collisions writes them, each row prefixed. */
-	f = open_memstream(&coll, &clen);
-	if (f == NULL) {
+	if ((f = wbuf_stream(&w->coll, &w->cbuf, &w->clen)) == NULL) {
 		hb_sim_free(s);
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
-	rc = hb_csv_stream_collisions(f, s, m, sizeof m);
-	if (fclose(f) != 0 || rc != HB_OK) {
-		free(coll);
+	rc = hb_csv_stream_collisions(f, s, m, sizeof m);   /* flushes: cbuf holds clen bytes */
+	if (rc != HB_OK || w->cbuf == NULL) {
 		hb_sim_free(s);
 		return hb_status_set(msg, n, HB_ENOMEM, "point %ld: collisions: %s", id, m);
 	}
-	f = open_memstream(&blk, &blen);
-	if (f == NULL) {
-		free(coll);
+	if ((f = wbuf_stream(&w->blk, &w->bbuf, &w->blen)) == NULL) {
 		hb_sim_free(s);
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
 	{
-		const char *p = strchr(coll, '\n');    /* skip the header */
+		const char *p = memchr(w->cbuf, '\n', w->clen), *end = w->cbuf + w->clen;
 
-		p = p ? p + 1 : coll + clen;
-		while (*p) {
-			const char *e = strchr(p, '\n');
-			size_t l = e ? (size_t)(e - p) : strlen(p);
+		p = p ? p + 1 : end;    /* skip the header */
+		while (p < end) {
+			const char *e = memchr(p, '\n', (size_t)(end - p));
+			size_t l = e ? (size_t)(e - p) : (size_t)(end - p);
 
 			fprintf(f, "c,%ld,%.*s\n", id, (int)l, p);
 			p += l + (e != NULL);
 		}
 	}
-	free(coll);
 	runs_row(f, sw, id, s, clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0);
 	hb_sim_free(s);
-	if (fclose(f) != 0 || blk == NULL) {
-		free(blk);
+	if (fflush(f) != 0 || ferror(f) || w->bbuf == NULL || (*out = malloc(w->blen + 1)) == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-	}
-	*out = blk;
+	memcpy(*out, w->bbuf, w->blen);
+	(*out)[w->blen] = '\0';
 	return HB_OK;
+}
+
+int
+hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed,
+                  char *msg, size_t n)
+{
+	struct sweep_wbuf w = { 0 };
+	int rc = sweep_point_block_buf(sw, id, &w, out, failed, msg, n);
+
+	sweep_wbuf_free(&w);
+	return rc;
 }
 
 const struct hb_scene *

@@ -6,6 +6,7 @@
 #define HYBOUNCE_SWEEP_IMPL_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include <sys/types.h>
 #include "hybounce/scene.h"
 #include "hybounce/sim.h"
@@ -144,6 +145,25 @@ sweep_journal_name(char *buf, size_t n, const char *dir, long k, long nshards);
  */
 int
 sweep_journal_lock(int fd, const char *path, char *msg, size_t n);
+
+/*
+ * A worker's buffers for point blocks, reused from point to point (two
+ * open_memstream(3) a point cost about 18k instructions, more than a
+ * cheap point's whole run).  Zeroed to start; sweep_wbuf_free at the end.
+ */
+struct sweep_wbuf {
+	FILE *coll, *blk;
+	char *cbuf, *bbuf;
+	size_t clen, blen;
+};
+
+void
+sweep_wbuf_free(struct sweep_wbuf *w);
+
+/* hb_sweep_point_block with w's buffers; the scene is validated by hb_sim_new alone. */
+int
+sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, char **out,
+                      int *failed, char *msg, size_t n);
 
 /* The base scene of a sweep (the preset and --set, before any axis). */
 const struct hb_scene *

@@ -68,6 +68,7 @@ static void *
 worker(void *arg)
 {
 	struct pool *p = arg;
+	struct sweep_wbuf wb = { 0 };   /* this worker's buffers, reused point after point */
 
 	for (;;) {
 		struct result *r;
@@ -77,6 +78,7 @@ worker(void *arg)
 		pthread_mutex_lock(&p->mu);
 		if (p->stop || (id = pool_take(p)) < 0) {
 			pthread_mutex_unlock(&p->mu);
+			sweep_wbuf_free(&wb);
 			return NULL;
 		}
 		pthread_mutex_unlock(&p->mu);
@@ -85,7 +87,7 @@ worker(void *arg)
 		c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
 		if (r != NULL) {
 			r->id = id;
-			r->rc = hb_sweep_point_block(p->sw, id, &r->blk, &r->failed, r->msg,
+			r->rc = sweep_point_block_buf(p->sw, id, &wb, &r->blk, &r->failed, r->msg,
 			                          sizeof r->msg);
 			r->cpu = clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
 		}
