@@ -205,7 +205,7 @@ sweep_parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_swe
 {
 	char *part[5] = { 0 }, num[64];
 	const char *p = a->spec, *c;
-	int np = 0, rc = HB_OK, lg = 0;
+	int np = 0, rc = HB_OK, lg = 0, plain = 0;
 	double from, to;
 	char *end;
 
@@ -274,6 +274,14 @@ sweep_parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_swe
 		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
 	}
+	{
+		const struct scene_keydef *kd;
+		struct hb_scene_error e;
+		int li = -1, ro = 0;
+
+		plain = scene_key_resolve(sc, a->key, &kd, &li, &ro, &e) == HB_OK && !ro &&
+		        (kd != NULL ? kd->store == ST_DOUBLE : li >= 0);
+	}
 	for (long i = 0; i < a->n; i++) {
 		double v, f = a->n > 1 ? (double)i / (double)(a->n - 1) : 0;
 		char t[64];
@@ -286,6 +294,16 @@ sweep_parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_swe
 			v = copysign(exp(log(fabs(from)) + (log(fabs(to)) - log(fabs(from))) * f), from);
 		else
 			v = from + (to - from) * f;
+		if (i > 0 && i < a->n - 1 && plain && v >= fmin(from, to) && v <= fmax(from, to)) {
+			/*
+			 * A double of the scene or a law parameter between two values
+			 * accepted: %.17g of v sets v itself, in the range (an interval)
+			 * of its ends.  (The test sweep::point_scene_equals_the_set_values
+			 * sets the printed values.)
+			 */
+			a->num[i] = v;
+			continue;
+		}
 		cnum_snprintf(t, sizeof t, "%.17g", v);
 		if ((rc = canonical(sc, a->key, t, num, sizeof num, msg, n)) != HB_OK)
 			goto out;
@@ -333,6 +351,39 @@ parse_list(struct axis *a, const struct hb_scene *sc, char *msg, size_t n)
 		p = c ? c + 1 : p;
 	}
 	return HB_OK;
+}
+
+/*
+ * Whether a point's scene can be made by storing its values into
+ * sw->fast_base and deriving once: every axis a range of a double of the
+ * scene or of a law parameter (no law among the axes).  hb_scene_set_number
+ * does the same per axis (it derives, checks the range, stores, sets the
+ * body's flags, derives again), at about 7,000 instructions each: the
+ * stored doubles and the flags are the same (the values were checked when
+ * the axis was made), and so is the derived scene.
+ */
+static void
+fast_ready(struct hb_sweep *sw)
+{
+	struct hb_scene sc = sw->base;
+
+	sw->fast = 0;
+	for (int k = 0; k < sw->naxes; k++) {
+		struct axis *a = &sw->ax[k];
+		const struct scene_keydef *kd;
+		struct hb_scene_error e;
+		int li = -1, ro = 0;
+
+		if (a->num == NULL || scene_key_resolve(&sc, a->key, &kd, &li, &ro, &e) != HB_OK ||
+		    ro || (kd != NULL && kd->store != ST_DOUBLE) || (kd == NULL && li < 0))
+			return;
+		a->off = kd != NULL ? kd->off : 0;
+		a->par = kd != NULL ? -1 : li;
+		if (hb_scene_set_number(&sc, a->key, a->num[0], &e) != HB_OK)
+			return;
+	}
+	sw->fast_base = sc;
+	sw->fast = 1;
 }
 
 int
@@ -407,6 +458,7 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 	else
 		sw->naxes++;
 	sw->ax[k] = a;
+	fast_ready(sw);
 	return HB_OK;
 }
 
@@ -469,6 +521,20 @@ point_values(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg
 
 	if (id < 0 || id >= hb_sweep_npoints(sw))
 		return hb_status_set(msg, n, HB_EINVAL, "point %ld: no such point", id);
+	if (sw->fast) {
+		*out = sw->fast_base;
+		for (int k = 0; k < sw->naxes; k++) {
+			const struct axis *a = &sw->ax[k];
+			double v = a->num[sweep_axis_index(sw, id, k)];
+
+			if (a->par >= 0)
+				out->par[a->par] = v;
+			else
+				memcpy((char *)out + a->off, &v, sizeof v);
+		}
+		(void)hb_scene_derive(out, NULL, 0);   /* an error shows in the validation */
+		return HB_OK;
+	}
 	*out = sw->base;
 	for (int k = 0; k < sw->naxes; k++) {
 		const struct axis *a = &sw->ax[k];

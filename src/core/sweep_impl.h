@@ -22,6 +22,9 @@ struct axis {
 	long n;           /* values (a refined axis: those of its lattice) */
 	char **val;       /* a list's n canonical texts, or NULL */
 	double *num;      /* a range's n canonical values, or NULL */
+	/* where a range's value is stored in the scene (sweep.c: fast_ready) */
+	size_t off;       /* a double at this offset of struct hb_scene, or */
+	int par;          /* law parameter par (-1: off) */
 };
 
 /*
@@ -50,6 +53,14 @@ struct hb_sweep {
 	int naxes;
 	struct axis ax[SWEEP_MAX_AXES];
 	struct sweep_refine rf;
+	/*
+	 * When every axis is a range of a plain number (a double of the scene
+	 * or a law parameter): the base with each axis's first value set (its
+	 * flags, such as a material given, set too), into which a point writes
+	 * its values before the scene is derived once (sweep.c: point_values).
+	 */
+	int fast;
+	struct hb_scene fast_base;
 };
 
 /* The canonical text of value i of axis a (in buf for a range's number). */
