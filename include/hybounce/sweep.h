@@ -30,7 +30,9 @@
  *     *.journal        points done so far (one per shard), appended one
  *                      whole point at a time; what a restart reads;
  *     boundaries.csv   (a refined sweep) the pairs of neighbouring points
- *                      whose classes differ.
+ *                      whose classes differ;
+ *     sweep.h5 ...     instead of runs.csv and collisions.csv, what a sink
+ *                      writes (hb_sweep_sink; hybounce sweep --format hdf5).
  *
  * Re-entrancy: a point uses only its own scene, sim and buffers; the
  * engine keeps no mutable static state and writes no process-wide state
