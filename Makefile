@@ -38,7 +38,7 @@ APT_PACKAGES := libgsl-dev libncurses-dev libinih-dev libcriterion-dev pkg-confi
                 clang libclang-rt-14-dev strace parallel slurm-wlm munge \
                 libaubio-dev aubio-tools sox libsox-fmt-mp3 locales python3-pandas \
                 python3-cffi python3-numpy python3-pytest \
-                libcairo2-dev libpng-dev poppler-utils valgrind
+                libcairo2-dev libpng-dev poppler-utils valgrind libhdf5-dev python3-h5py
 # Locales the tests run under (decimal commas, a Turkish case fold): `make
 # deps` generates those `locale -a` lacks with localedef (about 2 MB each,
 # where locales-all would take 220 MB).
@@ -86,6 +86,15 @@ CAIRO_SONAME := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir cairo 2>/
                   2>/dev/null | sed -n 's/^ *SONAME *//p')
 PNG_SONAME   := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir libpng 2>/dev/null)/libpng.so" \
                   2>/dev/null | sed -n 's/^ *SONAME *//p')
+# libhdf5 (hybounce sweep --format hdf5): its headers for sweep_hdf5.o (as
+# system headers), the serial library opened with dlopen when a sweep first
+# asks for it (src/cli/sweep_hdf5.c says why), under the soname of the
+# hdf5-serial pkg-config finds.
+HDF5_PC     := $(shell $(PKG_CONFIG) --exists hdf5-serial 2>/dev/null && echo hdf5-serial || echo hdf5)
+HDF5_CFLAGS := $(patsubst -I%,-isystem %,$(shell $(PKG_CONFIG) --cflags $(HDF5_PC) 2>/dev/null))
+HDF5_LIBDIR := $(patsubst -L%,%,$(firstword $(shell $(PKG_CONFIG) --libs-only-L $(HDF5_PC) 2>/dev/null)))
+HDF5_SONAME := $(shell objdump -p "$(or $(HDF5_LIBDIR),$$($(PKG_CONFIG) --variable=libdir $(HDF5_PC) \
+                  2>/dev/null))/libhdf5.so" 2>/dev/null | sed -n 's/^ *SONAME *//p')
 # The hybounce executable links GSL, inih and ncursesw from their static
 # archives (shipped by the same -dev packages): resolving libgsl's dynamic
 # relocations took 0.8M of the 1.3M instructions of a batch run that does
@@ -172,6 +181,8 @@ $(BUILD)/tests/%.o: tests/%.c
 $(BUILD)/src/core/onset.o: CORE_CFLAGS += $(AUBIO_CFLAGS)
 $(BUILD)/src/core/onset_aubio.o: CORE_CFLAGS += $(AUBIO_CFLAGS) \
     $(if $(AUBIO_SONAME),-DAUBIO_SONAME='"$(AUBIO_SONAME)"')
+$(BUILD)/src/cli/sweep_hdf5.o: CPPFLAGS += $(HDF5_CFLAGS) \
+    $(if $(HDF5_SONAME),-DHDF5_SONAME='"$(HDF5_SONAME)"')
 $(BUILD)/src/cli/plot_cairo.o: CPPFLAGS += $(CAIRO_CFLAGS) \
     $(if $(CAIRO_SONAME),-DCAIRO_SONAME='"$(CAIRO_SONAME)"') \
     $(if $(PNG_SONAME),-DPNG_SONAME='"$(PNG_SONAME)"')
