@@ -487,8 +487,14 @@ plot_build_sweep(struct plot_figure *f, const char *dir, const char *obs, const 
 		for (int c = 0; c < ni; c++) {
 			char lab[32] = "";
 
-			for (size_t r = 0; r < d.n; r++)
+			size_t given = 0;
+
+			for (size_t r = 0; r < d.n; r++) {
 				y[r] = val[r * (size_t)ni + (size_t)c];
+				given += isfinite(y[r]) != 0;
+			}
+			if (given == 0 && c > 0)
+				continue;   /* no run reached collision i: no curve, no legend entry */
 			if (robs < 0)
 				cnum_snprintf(lab, sizeof lab, "i = %ld", idx[c]);
 			if (plot_series_add(p, lab, d.kv[0], y, d.n, c, 1, 1) != 0) {
