@@ -10,6 +10,7 @@
 #   make golden     rewrite tests/golden/*.csv (the collision tables the tests compare with)
 #   make python     the Python package in build/python/hybounce (over build/'s libhybounce.so)
 #   make bench-python  a 1,000-point sweep from Python side by side with hybounce sweep
+#   make bench-figures a figure of each paper study against its batch run; PNG sizes
 #   make install / uninstall   honour PREFIX, DESTDIR, MANPREFIX, LIBDIR, INCLUDEDIR, PYTHONDIR
 #                   (the binary, man page, presets, and libhybounce: shared, static,
 #                   headers under include/hybounce/, pkg-config file hybounce.pc;
@@ -37,7 +38,7 @@ APT_PACKAGES := libgsl-dev libncurses-dev libinih-dev libcriterion-dev pkg-confi
                 clang libclang-rt-14-dev strace parallel slurm-wlm munge \
                 libaubio-dev aubio-tools sox libsox-fmt-mp3 locales python3-pandas \
                 python3-cffi python3-numpy python3-pytest \
-                libcairo2-dev libpng-dev poppler-utils valgrind
+                libcairo2-dev libpng-dev poppler-utils valgrind libhdf5-dev python3-h5py
 # Locales the tests run under (decimal commas, a Turkish case fold): `make
 # deps` generates those `locale -a` lacks with localedef (about 2 MB each,
 # where locales-all would take 220 MB).
@@ -85,6 +86,15 @@ CAIRO_SONAME := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir cairo 2>/
                   2>/dev/null | sed -n 's/^ *SONAME *//p')
 PNG_SONAME   := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir libpng 2>/dev/null)/libpng.so" \
                   2>/dev/null | sed -n 's/^ *SONAME *//p')
+# libhdf5 (hybounce sweep --format hdf5): its headers for sweep_hdf5.o (as
+# system headers), the serial library opened with dlopen when a sweep first
+# asks for it (src/cli/sweep_hdf5.c says why), under the soname of the
+# hdf5-serial pkg-config finds.
+HDF5_PC     := $(shell $(PKG_CONFIG) --exists hdf5-serial 2>/dev/null && echo hdf5-serial || echo hdf5)
+HDF5_CFLAGS := $(patsubst -I%,-isystem %,$(shell $(PKG_CONFIG) --cflags $(HDF5_PC) 2>/dev/null))
+HDF5_LIBDIR := $(patsubst -L%,%,$(firstword $(shell $(PKG_CONFIG) --libs-only-L $(HDF5_PC) 2>/dev/null)))
+HDF5_SONAME := $(shell objdump -p "$(or $(HDF5_LIBDIR),$$($(PKG_CONFIG) --variable=libdir $(HDF5_PC) \
+                  2>/dev/null))/libhdf5.so" 2>/dev/null | sed -n 's/^ *SONAME *//p')
 # The hybounce executable links GSL, inih and ncursesw from their static
 # archives (shipped by the same -dev packages): resolving libgsl's dynamic
 # relocations took 0.8M of the 1.3M instructions of a batch run that does
@@ -171,6 +181,8 @@ $(BUILD)/tests/%.o: tests/%.c
 $(BUILD)/src/core/onset.o: CORE_CFLAGS += $(AUBIO_CFLAGS)
 $(BUILD)/src/core/onset_aubio.o: CORE_CFLAGS += $(AUBIO_CFLAGS) \
     $(if $(AUBIO_SONAME),-DAUBIO_SONAME='"$(AUBIO_SONAME)"')
+$(BUILD)/src/cli/sweep_hdf5.o: CPPFLAGS += $(HDF5_CFLAGS) \
+    $(if $(HDF5_SONAME),-DHDF5_SONAME='"$(HDF5_SONAME)"')
 $(BUILD)/src/cli/plot_cairo.o: CPPFLAGS += $(CAIRO_CFLAGS) \
     $(if $(CAIRO_SONAME),-DCAIRO_SONAME='"$(CAIRO_SONAME)"') \
     $(if $(PNG_SONAME),-DPNG_SONAME='"$(PNG_SONAME)"')
@@ -223,7 +235,7 @@ $(BIN): $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(BIN_LIBS) $(AUBIO_LIBS)
 
 # The figure model of hybounce plot (no plotting library) is unit-tested too.
-UNIT_CLI_OBJ := $(BUILD)/src/cli/plot_model.o
+UNIT_CLI_OBJ := $(BUILD)/src/cli/plot_model.o $(BUILD)/src/cli/plot_map.o
 $(UNIT): $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(TEST_LIBS) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
 
@@ -256,6 +268,14 @@ bench-python: deps
 	@$(MAKE) --no-print-directory all
 	@mkdir -p $(BUILD)/bench
 	@PYTHONPATH=$(BUILD)/python $(PYTHON) tests/bench/python_sweep.py $(BIN) | tee $(BUILD)/bench/python.txt
+
+# The figure targets (tests/bench/figures.sh): a figure of each paper study
+# against its batch run, whole processes side by side (hyperfine), and the
+# size of a 1600x1200 PNG.
+.PHONY: bench-figures
+bench-figures: $(BIN)
+	@mkdir -p $(BUILD)/bench
+	@HYBOUNCE_PRESETS=$(CURDIR)/presets sh tests/bench/figures.sh $(BIN) | tee $(BUILD)/bench/figures.md
 
 # The generated parts of the man page and the README (tools/gendoc.c):
 # `make docs` rewrites them; tests/cli/docs.sh fails when they are stale.
@@ -479,7 +499,9 @@ docs: readme-examples
 # The README's figures (docs/figures/*.png), drawn by hybounce plot from the
 # paper's three studies: the state against t and the observables per
 # collision of each, the hysteresis loops of the first; 150 dpi at a
-# journal column's width.
+# journal column's width.  Then the --plot of sweep (e against law.c; a
+# heat map over law.c and law.alpha) and fit (examples/fit/bounces.csv),
+# at their default 300 dpi; two runs of the first study compared.
 FIGURES := docs/figures
 figures: $(BIN)
 	@mkdir -p $(FIGURES)
@@ -490,6 +512,17 @@ figures: $(BIN)
 	done
 	@HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) plot steel-on-bitumen --kind loop --collisions 0,1,2,4 \
 	    --dpi 150 --out $(FIGURES)/steel-on-bitumen-loop.png
+	@rm -rf $(BUILD)/figures && mkdir -p $(BUILD)/figures && \
+	    HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) sweep steel-on-bitumen --vary law.c=1e3:1e5:17:log \
+	        --out $(BUILD)/figures/c -q --plot $(FIGURES)/sweep-law-c.png && \
+	    HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) sweep steel-on-bitumen --vary law.c=1e3:1e5:13:log \
+	        --vary law.alpha=0.1:0.7:13 --set run.T=0.1 --out $(BUILD)/figures/c-alpha -q \
+	        --plot $(FIGURES)/sweep-law-c-alpha.png && \
+	    HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) fit steel-on-bitumen --data examples/fit/bounces.csv \
+	        --free law.c,law.alpha -q --out $(BUILD)/figures/fit.preset \
+	        --plot $(FIGURES)/fit-bounces.png >/dev/null
+	@HYBOUNCE_PRESETS=$(CURDIR)/presets ./$(BIN) plot steel-on-bitumen --variant law.c=2000 \
+	    --variant law.c=20000 --set run.T=0.3 --dpi 150 --out $(FIGURES)/compare-law-c.png
 
 # The pgfplots source of hybounce plot compiled with pdflatex
 # (tests/tex/check.sh): not part of make check, TeX Live being heavy;

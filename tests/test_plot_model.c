@@ -123,3 +123,67 @@ Test(plot_model, layout_stacks_panels_inside_the_figure)
 	plot_figure_free(&f);
 	cr_assert_eq(f.npanels, 0);
 }
+
+Test(plot_model, log_axis_ticks_at_decades)
+{
+	struct plot_axis a;
+
+	memset(&a, 0, sizeof a);
+	a.log = 1;
+	plot_axis_fit(&a, 1e3, 1e5, "N s/m", 1, 5);
+	cr_assert_eq(a.nticks, 3);
+	cr_assert_float_eq(a.tick[0], 1e3, 1e-9);
+	cr_assert_float_eq(a.tick[2], 1e5, 1e-6);
+	cr_assert_str_eq(a.ticklabel[1], "10^{4}");
+	cr_assert_str_eq(a.unit, "N s/m");   /* no prefix on a log axis */
+	cr_assert_float_eq(plot_axis_pos(&a, 1e4), 0.5, 1e-12);
+	/* within one decade: 1-2-5 */
+	plot_axis_fit(&a, 1.5e-3, 9e-3, "", 1, 5);
+	cr_assert(a.nticks >= 2, "%d ticks", a.nticks);
+	/* a range that is not positive falls back to a linear axis */
+	a.log = 1;
+	plot_axis_fit(&a, -1, 1, "", 0, 5);
+	cr_assert_eq(a.log, 0);
+}
+
+Test(plot_model, colormap_lightness_rises_for_greyscale)
+{
+	double prev = -1, rgb[3];
+
+	for (int k = 0; k <= 100; k++) {
+		double g;
+
+		plot_colormap(k / 100.0, rgb);
+		g = 0.299 * rgb[0] + 0.587 * rgb[1] + 0.114 * rgb[2];
+		cr_assert(g > prev, "grey level falls at %d: %g after %g", k, g, prev);
+		prev = g;
+	}
+	plot_colormap(NAN, rgb);
+	cr_assert(rgb[0] == 1 && rgb[1] == 1 && rgb[2] == 1, "no value: white");
+}
+
+Test(plot_model, colorbar_panel_sits_right_of_its_map)
+{
+	struct plot_figure f;
+	struct plot_panel *p, *b;
+	double xe[3] = { 0, 1, 2 }, ye[2] = { 0, 1 }, v[2] = { 1, 3 };
+
+	plot_figure_init(&f, 252, 200);
+	p = plot_panel_add(&f, "a", "", "b", "");
+	cr_assert_eq(plot_map_set(p, xe, 2, ye, 1, v, 1, 3, 0), 0);
+	plot_axis_fit(&p->xa, 0, 2, "", 1, 5);
+	plot_axis_fit(&p->ya, 0, 1, "", 1, 5);
+	b = plot_colorbar_add(&f, p, "e", "");
+	cr_assert_not_null(b);
+	plot_figure_layout(&f, NULL, NULL);
+	p = &f.p[0];
+	b = &f.p[1];
+	cr_assert(b->colorbar);
+	cr_assert(b->fx > p->fx + p->fw, "the legend right of the map");
+	cr_assert(b->fx + b->fw < f.w, "inside the figure");
+	cr_assert_float_eq(b->fy, p->fy, 1e-9);
+	cr_assert_float_eq(b->fh, p->fh, 1e-9);
+	cr_assert_float_eq(b->ya.lo, 1, 1e-12);
+	cr_assert_float_eq(b->ya.hi, 3, 1e-12);
+	plot_figure_free(&f);
+}

@@ -477,3 +477,52 @@ Test(sweep, curve_observables_are_the_table, .timeout = 60)
 	cr_assert_eq(y[0], 469.0);
 	hb_sweep_curve_free(c);
 }
+
+/*
+ * A point's scene made by storing its values and deriving once (every axis
+ * a range of a number) is the scene that hb_scene_set of the values as
+ * runs.csv shows them makes: the same preset text, derived values and law
+ * parameters, for keys of the bodies (a material, so k is derived), the
+ * law, the loads and the initial state, one axis and two.
+ */
+Test(sweep, point_scene_equals_the_set_values)
+{
+	static const char *const axes[][2] = {
+		{ "initial.x0=10mm:30mm:4", NULL },
+		{ "law.c=440:44000:4:log", NULL },
+		{ "body1.E=100GPa:300GPa:3", NULL },
+		{ "body1.R=10mm:30mm:3", "law.alpha=0.2:0.5:3" },
+		{ "loads.g=0:20:3", "initial.v0=-1m/s:-0.1m/s:3" },
+	};
+
+	for (size_t c = 0; c < sizeof axes / sizeof axes[0]; c++) {
+		struct hb_sweep *sw = sweep_of("steel-on-bitumen");
+		long np;
+
+		vary(sw, axes[c][0]);
+		if (axes[c][1] != NULL)
+			vary(sw, axes[c][1]);
+		np = hb_sweep_npoints(sw);
+		for (long id = 0; id < np; id++) {
+			struct hb_scene a, b;
+			char msg[512], ta[8192], tb[8192];
+
+			cr_assert_eq(hb_sweep_point_scene(sw, id, &a, msg, sizeof msg), HB_OK, "%s", msg);
+			scene_preset("steel-on-bitumen", &b);
+			for (int k = 0; k < hb_sweep_naxes(sw); k++) {
+				char v[64], key[64];
+				const char *spec = axes[c][k];
+
+				snprintf(key, sizeof key, "%.*s", (int)(strchr(spec, '=') - spec), spec);
+				cr_assert_eq(hb_sweep_point_value(sw, id, k, v, sizeof v), HB_OK);
+				cr_assert_eq(hb_scene_set(&b, key, v, msg, sizeof msg), HB_OK, "%s", msg);
+			}
+			hb_preset_format(&a, ta, sizeof ta);
+			hb_preset_format(&b, tb, sizeof tb);
+			cr_assert_str_eq(ta, tb, "%s point %ld", axes[c][0], id);
+			cr_assert(memcmp(&a.d, &b.d, sizeof a.d) == 0, "%s point %ld: derived", axes[c][0], id);
+			cr_assert(memcmp(a.par, b.par, sizeof a.par) == 0, "%s point %ld: law", axes[c][0], id);
+		}
+		hb_sweep_free(sw);
+	}
+}

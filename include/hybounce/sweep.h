@@ -28,7 +28,11 @@
  *     runs.csv         one row per point, sorted by id;
  *     collisions.csv   id, then the columns of --collisions;
  *     *.journal        points done so far (one per shard), appended one
- *                      whole point at a time; what a restart reads.
+ *                      whole point at a time; what a restart reads;
+ *     boundaries.csv   (a refined sweep) the pairs of neighbouring points
+ *                      whose classes differ;
+ *     sweep.h5 ...     instead of runs.csv and collisions.csv, what a sink
+ *                      writes (hb_sweep_sink; hybounce sweep --format hdf5).
  *
  * Re-entrancy: a point uses only its own scene, sim and buffers; the
  * engine keeps no mutable static state and writes no process-wide state
@@ -90,6 +94,48 @@ hb_sweep_vary_from_preset(struct hb_sweep *sw, const char *text, const char *nam
 
 int
 hb_sweep_naxes(const struct hb_sweep *sw);
+/*
+ * Refinement: --refine OBSERVABLE[:TOL].  Instead of every point of the
+ * grid, a refined sweep computes the grid of its one or two ranges, then
+ * bisects every interval (every cell, for two axes) whose ends fall in
+ * different classes of the observable, round after round, until each
+ * boundary lies between two points TOL of each axis's span apart (or
+ * closer; default 1e-3).  Classes: a whole observable's value (collisions,
+ * j_end, q_c_end ...); another observable's existence (t_pc: permanent
+ * contact or not; e_first: a collision that ended or not); with OBS<X or
+ * OBS>X, which side of X (NAN a class of its own); a failed run is a class
+ * of its own.  The points are those of the uniform sweep FROM:TO:M with
+ * M = (N - 1) * 2^L + 1 (hb_sweep_npoints counts them; ids are theirs),
+ * bit-identical to it, so a boundary is where that uniform sweep puts it
+ * when the class changes once between two grid points (for two axes:
+ * where a grid cell's corners differ; an island inside a cell whose
+ * corners agree is not seen).
+ *
+ * Call it after every axis (an axis varied later is refused); the spec
+ * gets a "; sweep: --refine SPEC" line, which hb_sweep_refine_from_preset
+ * reads back.  HB_EINVAL with a message: an unknown observable, a TOL not
+ * in (0, 1), more than two axes, a list axis, a lattice of more than 2^20
+ * intervals.
+ */
+int
+hb_sweep_refine(struct hb_sweep *sw, const char *spec, char *msg, size_t n);
+int
+hb_sweep_refine_from_preset(struct hb_sweep *sw, const char *text, const char *name,
+                            char *msg, size_t n);
+/* 1 for a refined sweep. */
+int
+hb_sweep_refined(const struct hb_sweep *sw);
+
+/* What a refined sweep cost and found (hb_sweep_options.refine_stats). */
+struct hb_sweep_refine_stats {
+	long runs;         /* points computed (runs.csv's rows) */
+	long grid;         /* points of the grid of the specs */
+	long uniform;      /* points of the uniform grid of the same resolution */
+	long boundaries;   /* pairs of neighbouring points of different classes */
+	int levels;        /* bisections from the grid's step to the lattice's */
+	double resolution; /* the lattice's step over the axis's span (the largest) */
+};
+
 /* Points in the product (0 with no axis). */
 long
 hb_sweep_npoints(const struct hb_sweep *sw);
@@ -140,6 +186,25 @@ struct hb_sweep_progress {
 	double point_cpu; /* CPU time of the points computed in this run, s */
 };
 
+/*
+ * Another format for the merged files: a sink is given the headers of
+ * runs.csv and collisions.csv (without newline), then every row of both in
+ * the order the CSV files would hold them (a point's collisions, then its
+ * runs row; points by id), as CSV text without newline, then end(ok):
+ * ok 1, put the file in place; ok 0, remove what was written.  Memory is
+ * the sink's affair: the merge streams.  `name` is the file the sink
+ * writes in DIR (e.g. "sweep.h5"): a folder holding it and no journal
+ * holds the sweep complete.  Each function returns HB_OK, or an error
+ * with msg (the merge stops and calls end(0)).
+ */
+struct hb_sweep_sink {
+	const char *name;
+	int (*begin)(void *ctx, const char *runs_header, const char *collisions_header,
+	             char *msg, size_t n);
+	int (*row)(void *ctx, int runs, const char *row, size_t len, char *msg, size_t n);
+	int (*end)(void *ctx, int ok, char *msg, size_t n);
+};
+
 struct hb_sweep_options {
 	const char *dir;  /* the output folder (created if missing) */
 	int jobs;         /* worker threads, >= 1 */
@@ -161,6 +226,11 @@ struct hb_sweep_options {
 	 * line (--jobs, --quiet) resumes it.
 	 */
 	const char *provenance;
+	/* May be NULL.  A refined sweep fills it in when it completes. */
+	struct hb_sweep_refine_stats *refine_stats;
+	/* May be NULL (runs.csv and collisions.csv): where a one-shard sweep merges. */
+	const struct hb_sweep_sink *sink;
+	void *sink_ctx;
 };
 
 /*
@@ -205,6 +275,11 @@ hb_sweep_merge(const char *dir, char *msg, size_t n);
 /* The same for a sweep run as nshards shards (0: from the journals' names). */
 int
 hb_sweep_merge_shards(const char *dir, long nshards, char *msg, size_t n);
+
+/* The same into a sink (NULL: the CSV files). */
+int
+hb_sweep_merge_to(const char *dir, long nshards, const struct hb_sweep_sink *sink, void *ctx,
+                  char *msg, size_t n);
 
 /*
  * Which of nshards shards the folder DIR holds done: done[k] = 1 when
@@ -274,8 +349,32 @@ struct hb_sweep_curve *
 hb_sweep_curve_start(const struct hb_scene *base, const char *key, const char *spec, int obs,
                   long coll_i, int jobs, char *msg, size_t n);
 
+/*
+ * The same, and once two neighbouring points are done and their classes
+ * differ (as --refine classes a run: a whole run observable's value, else
+ * whether the observable exists; a failed run a class of its own), the
+ * workers bisect that interval on the lattice of the range (hb_sweep_refine)
+ * until it is tol of the range wide or less (0 < tol < 1; tol 0: no
+ * boundaries, as hb_sweep_curve_start).  A list, or a tol whose lattice
+ * would be too fine, is refused (NULL, HB_EINVAL's message).
+ */
+struct hb_sweep_curve *
+hb_sweep_curve_start_refined(const struct hb_scene *base, const char *key, const char *spec,
+                             int obs, long coll_i, double tol, int jobs, char *msg, size_t n);
+
 long
 hb_sweep_curve_npoints(const struct hb_sweep_curve *c);
+
+/*
+ * The boundaries found so far (up to n of them): each lies between the
+ * parameter values lo[i] and hi[i] (SI; the points on either side), and
+ * located[i] is 1 once they are one lattice step apart (0 while it is
+ * being bisected).  Returns the number found (0 for a curve without
+ * boundaries).  Never waits for a point.
+ */
+long
+hb_sweep_curve_boundaries(struct hb_sweep_curve *c, double *lo, double *hi, int *located,
+                          long n);
 
 /*
  * Copies up to n points: x (the parameter, SI), y (the observable; NAN when

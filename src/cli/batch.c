@@ -55,6 +55,8 @@
 #include "hybounce/units.h"
 
 #include "batch.h"
+#include "plot_cmd.h"
+#include "plot_out.h"
 #include "report.h"
 #include "signals.h"
 #include "clock.h"
@@ -694,6 +696,8 @@ batch_run(const struct batch_options *o)
 	struct hb_collision live;
 	struct hb_sim *s;
 	struct hb_csv_export_opts eo = { 0 };
+	struct plot_out po;
+	struct hb_outputs pol;
 	int status = 0, have_live, rc, sig = 0;
 	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
 	/* The files to export; "-" goes to stdout after them. */
@@ -733,6 +737,22 @@ batch_run(const struct batch_options *o)
 	    hb_csv_export_check_with(&eo, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": export: %s\n", msg);
 		return 2;
+	}
+
+	/* --plot: the figure's own rules, the CSVs and the preset as the others (plot_out.h) */
+	hb_outputs_init(&pol);
+	hb_outputs_input(&pol, path, "the preset being run");
+	if (o->plot != NULL) {
+		msg[0] = '\0';
+		if ((trace_file != NULL && hb_outputs_add(&pol, trace_file, "--trace", msg,
+		                                          sizeof msg) != HB_OK) ||
+		    (coll_file != NULL && hb_outputs_add(&pol, coll_file, "--collisions", msg,
+		                                         sizeof msg) != HB_OK) ||
+		    plot_out_parse(&po, "--plot", o->plot, msg, sizeof msg) != 0 ||
+		    plot_out_register(&po, &pol, msg, sizeof msg) != 0) {
+			err(msg);
+			return 2;
+		}
 	}
 
 	/*
@@ -849,6 +869,13 @@ batch_run(const struct batch_options *o)
 				cli_print_wrote(coll_file, &rep.target[1]);
 			if (rep.scene[0])
 				cli_print_wrote(rep.scene, &rep.target[2]);
+		}
+	}
+	if (o->plot != NULL) {
+		msg[0] = '\0';
+		if (plot_write_run(&po, &pol, PLOT_STATE, s, msg, sizeof msg) != 0) {
+			err(msg);
+			status = 2;
 		}
 	}
 	if (trace_out || coll_out) {

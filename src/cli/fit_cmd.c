@@ -26,6 +26,8 @@
 #include "hybounce/scene.h"
 #include "hybounce/status.h"
 #include "fit_cmd.h"
+#include "plot_cmd.h"
+#include "plot_out.h"
 #include "report.h"
 #include "signals.h"
 
@@ -35,7 +37,7 @@
 
 enum { OPT_ONSET_METHOD = 256, OPT_ONSET_THRESHOLD, OPT_ONSET_LEVEL, OPT_MIN_INTERVAL,
        OPT_MAX_ITER, OPT_RESIDUALS, OPT_ONSETS_OUT, OPT_MAX_RSE,
-       OPT_REPORT, OPT_LAWS };
+       OPT_REPORT, OPT_LAWS, OPT_PLOT };
 
 static const struct option long_options[] = {
 	{ "data",            required_argument, NULL, 'd' },
@@ -53,6 +55,7 @@ static const struct option long_options[] = {
 	{ "max-relative-se", required_argument, NULL, OPT_MAX_RSE },
 	{ "report",          required_argument, NULL, OPT_REPORT },
 	{ "laws",            required_argument, NULL, OPT_LAWS },
+	{ "plot",            required_argument, NULL, OPT_PLOT },
 	{ "quiet",           no_argument,       NULL, 'q' },
 	{ "help",            no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
@@ -66,7 +69,7 @@ usage(FILE *f)
 "                [--out FILE] [--residuals FILE] [--jobs N] [--max-iter N]\n"
 "                [--onset-method M] [--onset-threshold X] [--onset-level X]\n"
 "                [--min-interval T] [--onsets-out FILE] [--max-relative-se X]\n"
-"                [--report FILE.json] [--laws LAW,LAW...] [--quiet]\n"
+"                [--report FILE.json] [--plot FILE] [--laws LAW,LAW...] [--quiet]\n"
 "\n"
 "Fits the free keys of PRESET so that its runs reproduce the measured\n"
 "collisions (nonlinear least squares, GSL trust region), and writes the\n"
@@ -88,6 +91,8 @@ usage(FILE *f)
 "      --report FILE.json  write the report as JSON: dof, cost, reduced chi-square,\n"
 "                          the noise test, AIC, BIC, estimates, 95%% intervals,\n"
 "                          correlations, the verdict and the residuals\n"
+"      --plot FILE         draw measured against fitted, the residuals below, to\n"
+"                          FILE.png, .pdf, .svg or .tex (as hybounce plot)\n"
 "  -j, --jobs N            runs in parallel (default: every core)\n"
 "      --max-iter N        iteration cap (default 100)\n"
 "      --max-relative-se X a credible estimate's standard error is at most X\n"
@@ -96,7 +101,8 @@ usage(FILE *f)
 "                          (e.g. shccl,bwshccl,bwmcl); free keys per law: --free\n"
 "                          LAW:KEY, else --free KEY, else the law's default (shccl:\n"
 "                          law.c; bwshccl, bwmcl: law.c,law.alpha); starts per law:\n"
-"                          --set LAW:KEY=VALUE; --out, --residuals: the best law;\n"
+"                          --set LAW:KEY=VALUE; --out, --residuals, --plot: the\n"
+"                          best law;\n"
 "                          exit status: the best law's\n"
 "      --onset-method M    aubio onset method for a recording (default hfc)\n"
 "      --onset-threshold X aubio's peak-picking threshold (default 0.3)\n"
@@ -224,6 +230,8 @@ fit_main(int argc, char **argv)
 	struct hb_fit *fit = NULL;
 	int nsets = 0, nkeys = 0, quiet = 0, c, status = 2, sig = 0, k_out, k_resid = -1, k_ons = -1;
 	int k_report = -1, nnonlaw = 0;
+	const char *plot_path = NULL;
+	struct plot_out po;
 	struct hb_fit_stats fst;
 	struct fit_verdict v;
 	struct fit_report_ctx rc;
@@ -281,6 +289,7 @@ fit_main(int argc, char **argv)
 		case OPT_ONSETS_OUT: onsets_path = optarg; break;
 		case OPT_REPORT: report_path = optarg; break;
 		case OPT_LAWS: laws = optarg; break;
+		case OPT_PLOT: plot_path = optarg; break;
 		case OPT_MAX_RSE:
 			if (parse_pos("--max-relative-se", optarg, &max_rse))
 				goto out;
@@ -380,6 +389,11 @@ fit_main(int argc, char **argv)
 		}
 		k_report = pol.nout - 1;
 	}
+	if (plot_path != NULL && (plot_out_parse(&po, "--plot", plot_path, msg, sizeof msg) != 0 ||
+	                          plot_out_register(&po, &pol, msg, sizeof msg) != 0)) {
+		status = bad("%s", msg);
+		goto out;
+	}
 	printf("hybounce %s fit\n", HYBOUNCE_VERSION);
 	printf("preset      %s (%s)\n", preset, path);
 	/*
@@ -451,7 +465,7 @@ fit_main(int argc, char **argv)
 			.keys = keys, .nkeys = nkeys, .d = &d, .fo = &fo, .max_rse = max_rse,
 			.quiet = quiet, .out = out, .resid_path = resid_path,
 			.report_path = report_path, .pol = &pol, .k_out = k_out, .k_resid = k_resid,
-			.k_report = k_report,
+			.k_report = k_report, .plot = plot_path != NULL ? &po : NULL,
 		};
 
 		status = fit_laws(&la);
@@ -537,6 +551,10 @@ fit_main(int argc, char **argv)
 	if (fit_write_outputs(out, &r.fitted, resid_path, &r, &pol, k_out, k_resid, report_path,
 	                      fit_report_json, &rc, k_report) != 0)
 		goto out;
+	if (plot_path != NULL && plot_write_fit(&po, &pol, &r, &d, msg, sizeof msg) != 0) {
+		status = bad("%s", msg);
+		goto out;
+	}
 	if (sig == 0)
 		sig = cli_signal;   /* caught while writing: the files are whole */
 	if (sig != 0) {

@@ -91,6 +91,7 @@ void
 fit_report_json_object(FILE *f, const struct fit_report_ctx *c);
 
 /* --laws (fit_laws.c): every law fitted to the same data, ranked by AIC. */
+struct plot_out;
 struct fit_laws_args {
 	const char *laws, *preset, *data;
 	const char *const *sets;    /* every --set, LAW:KEY=VALUE ones too */
@@ -104,6 +105,7 @@ struct fit_laws_args {
 	const char *out, *resid_path, *report_path;
 	const struct hb_outputs *pol;
 	int k_out, k_resid, k_report;
+	struct plot_out *plot;      /* --plot (plot_out.h), or NULL */
 };
 
 /* Returns the exit status: the best law's verdict, 2 for bad input. */

@@ -24,6 +24,7 @@
 #include "hybounce/status.h"
 #include "cnum.h"
 #include "fit_cmd.h"
+#include "plot_cmd.h"
 #include "signals.h"
 
 #define PROG "hybounce"
@@ -396,6 +397,14 @@ fit_laws(const struct fit_laws_args *a)
 		fflush(stdout);
 		if (fit_write_outputs(a->out, &b->r.fitted, a->resid_path, &b->r, a->pol, a->k_out,
 		                      a->k_resid, a->report_path, laws_json, &j, a->k_report) != 0) {
+			status = 2;
+			goto out;
+		}
+		char pm[4200];
+
+		if (a->plot != NULL && plot_write_fit(a->plot, a->pol, &b->r, a->d, pm, sizeof pm)
+		    != 0) {
+			fprintf(stderr, PROG " fit: %s\n", pm);
 			status = 2;
 			goto out;
 		}

@@ -41,6 +41,7 @@
 
 enum {
 	OPT_JUMPS = 256,
+	OPT_PLOT,
 	OPT_CHECK,
 	OPT_ASCII,
 	OPT_SCRIPT,
@@ -55,6 +56,7 @@ static const struct option long_options[] = {
 	{ "trace",        required_argument, NULL, 't' },
 	{ "collisions",   required_argument, NULL, 'c' },
 	{ "jumps",        no_argument,       NULL, OPT_JUMPS },
+	{ "plot",         required_argument, NULL, OPT_PLOT },
 	{ "check",        no_argument,       NULL, OPT_CHECK },
 	{ "quiet",        no_argument,       NULL, 'q' },
 	{ "ascii",        no_argument,       NULL, OPT_ASCII },
@@ -74,13 +76,14 @@ usage(FILE *f)
 "usage: hybounce [OPTIONS] [PRESET]     open the explorer (default preset: "
 DEFAULT_PRESET ")\n"
 "       hybounce --batch PRESET [--set KEY=VALUE]... [--trace FILE]\n"
-"                [--collisions FILE] [--jumps] [--check] [--quiet]\n"
+"                [--collisions FILE] [--plot FILE] [--jumps] [--check] [--quiet]\n"
 "       hybounce --list-presets | --list-laws | --help | --version\n"
 "       hybounce sweep PRESET --vary KEY=SPEC... --out DIR   (see hybounce sweep --help)\n"
 "       hybounce fit PRESET --data FILE --free KEY[,KEY...] [OPTIONS]\n"
 "                               fit parameters to measurements (hybounce fit --help)\n"
-"       hybounce plot PRESET --out FILE.{png,pdf,svg} [--kind state|observables|loop]\n"
-"                               draw a figure of a run (hybounce plot --help)\n"
+"       hybounce plot PRESET... | DIR --out FILE.{png,pdf,svg,tex} [--kind KIND]\n"
+"                               draw a figure of runs or of a sweep (hybounce\n"
+"                               plot --help)\n"
 "\n"
 "Repeated impacts of two bodies under incremental contact laws, as a hybrid\n"
 "system (flows and jumps over hybrid time (t, j)).\n"
@@ -95,6 +98,8 @@ DEFAULT_PRESET ")\n"
 "                          the scene is saved beside the first file as .preset.\n"
 "                          FILE - (for one of the two) is standard output, and\n"
 "                          the report then goes to standard error\n"
+"      --plot FILE         (batch) draw the run's state against t (as hybounce\n"
+"                          plot --kind state) to FILE.png, .pdf, .svg or .tex\n"
 "      --jumps             (batch) print how each jump was located\n"
 "      --check             (batch) check the computed solution pair (paper,\n"
 "                          section Simulation) and report it\n"
@@ -218,6 +223,7 @@ hybounce_main(int argc, char **argv)
 		case 't': bo.trace = optarg; break;
 		case 'c': bo.collisions = optarg; break;
 		case OPT_JUMPS: bo.jumps = 1; break;
+		case OPT_PLOT: bo.plot = optarg; break;
 		case OPT_CHECK: bo.check = 1; break;
 		case 'q': bo.quiet = 1; break;
 		case OPT_ASCII: ascii = 1; break;
@@ -281,8 +287,10 @@ hybounce_main(int argc, char **argv)
 	}
 
 	/* The explorer. */
-	if (bo.trace != NULL || bo.collisions != NULL || bo.jumps || bo.check || bo.quiet) {
+	if (bo.trace != NULL || bo.collisions != NULL || bo.jumps || bo.check || bo.quiet ||
+	    bo.plot != NULL) {
 		const char *o = bo.trace ? "--trace" : bo.collisions ? "--collisions"
+		              : bo.plot ? "--plot"
 		              : bo.jumps ? "--jumps" : bo.check ? "--check" : "--quiet";
 
 		free(sets);

@@ -43,10 +43,17 @@ draw_text(const struct plot_backend *b, double x, double y, double angle, double
 	}
 }
 
+/* x of value v in panel p, in points (a log axis by its logarithm) */
 static double
-map(double v, double lo, double hi, double a, double len)
+px_of(const struct plot_panel *p, double v)
 {
-	return a + (v - lo) / (hi - lo) * len;
+	return p->fx + plot_axis_pos(&p->xa, v) * p->fw;
+}
+
+static double
+py_of(const struct plot_panel *p, double v)
+{
+	return p->fy + p->fh - plot_axis_pos(&p->ya, v) * p->fh;
 }
 
 static void
@@ -74,9 +81,10 @@ draw_series(const struct plot_figure *f, const struct plot_panel *p,
 		b->pen(b->ctx, f->lw, dash, st->ndash);
 		for (size_t i = 0; i <= s->n; i++) {
 			int fin = i < s->n && isfinite(s->x[i]) && isfinite(s->y[i]);
-			double x = fin ? map(s->x[i], p->xa.lo, p->xa.hi, p->fx, p->fw) : NAN;
-			double y = fin ? map(s->y[i], p->ya.lo, p->ya.hi, p->fy + p->fh, -p->fh) : NAN;
+			double x = fin ? px_of(p, s->x[i]) : NAN;
+			double y = fin ? py_of(p, s->y[i]) : NAN;
 
+			fin = fin && isfinite(x) && isfinite(y);   /* <= 0 on a log axis */
 			if (fin && k > 0 && floor(x / col) == bx) {
 				/* 0 first, 1 min, 2 max, 3 last */
 				if (y < py[1]) {
@@ -125,8 +133,8 @@ draw_series(const struct plot_figure *f, const struct plot_panel *p,
 	if (s->markers)
 		for (size_t i = 0; i < s->n; i++)
 			if (isfinite(s->x[i]) && isfinite(s->y[i]))
-				b->fill_dot(b->ctx, map(s->x[i], p->xa.lo, p->xa.hi, p->fx, p->fw),
-				            map(s->y[i], p->ya.lo, p->ya.hi, p->fy + p->fh, -p->fh),
+				b->fill_dot(b->ctx, px_of(p, s->x[i]),
+				            py_of(p, s->y[i]),
 				            1.6 * f->lw);
 }
 
@@ -153,6 +161,42 @@ ytitle_size(const struct plot_figure *f, const struct plot_backend *b)
 	return size;
 }
 
+/*
+ * A heat map's cells, each a rectangle of its colour, drawn from the top
+ * row down and from left to right, each reaching over the next cell to
+ * its right and the one below it, which are drawn after it: an edge
+ * between two cells blends their colours, never the white beneath (as
+ * cells that merely touch would at a fraction of a pixel).
+ */
+static void
+draw_map(const struct plot_panel *p, const struct plot_backend *b)
+{
+	for (size_t jj = p->mny; jj-- > 0;) {
+		double top = py_of(p, p->my[jj + 1]), bot = py_of(p, p->my[jj > 0 ? jj - 1 : 0]);
+
+		for (size_t i = 0; i < p->mnx; i++) {
+			double x0 = px_of(p, p->mx[i]);
+			double x1 = px_of(p, p->mx[i + 2 <= p->mnx ? i + 2 : p->mnx]), rgb[3];
+			double v = p->mv[jj * p->mnx + i];
+
+			if (!isfinite(v) || !isfinite(x0) || !isfinite(x1) || !isfinite(top) ||
+			    !isfinite(bot))
+				continue;
+			/* a cell without value is white: so is what reaches into it */
+			if (i + 1 < p->mnx && (!isfinite(p->mv[jj * p->mnx + i + 1]) ||
+			                       (jj > 0 && !isfinite(p->mv[(jj - 1) * p->mnx + i + 1]))))
+				x1 = px_of(p, p->mx[i + 1]);
+			if (jj > 0 && !isfinite(p->mv[(jj - 1) * p->mnx + i]))
+				bot = py_of(p, p->my[jj]);
+			plot_map_colour(p, v, rgb);
+			b->colour(b->ctx, rgb[0], rgb[1], rgb[2]);
+			b->fill_rect(b->ctx, fmin(x0, x1), fmin(top, bot), fabs(x1 - x0),
+			             fabs(bot - top));
+			bot = py_of(p, p->my[jj > 0 ? jj - 1 : 0]);
+		}
+	}
+}
+
 static void
 draw_panel(const struct plot_figure *f, const struct plot_panel *p,
            const struct plot_backend *b, double ysize)
@@ -164,8 +208,8 @@ draw_panel(const struct plot_figure *f, const struct plot_panel *p,
 	if (p->nband > 0) {
 		b->colour(b->ctx, plot_shade_rgb[0], plot_shade_rgb[1], plot_shade_rgb[2]);
 		for (size_t k = 0; k < p->nband; k++) {
-			double x0 = map(p->band0[k], p->xa.lo, p->xa.hi, p->fx, p->fw);
-			double x1 = map(p->band1[k], p->xa.lo, p->xa.hi, p->fx, p->fw);
+			double x0 = px_of(p, p->band0[k]);
+			double x1 = px_of(p, p->band1[k]);
 			/* at least a hairline: a contact of a microsecond on a
 			 * second's axis still shows */
 			double w = fmax(x1 - x0, 0.75 * f->lw);
@@ -173,6 +217,8 @@ draw_panel(const struct plot_figure *f, const struct plot_panel *p,
 			b->fill_rect(b->ctx, 0.5 * (x0 + x1) - 0.5 * w, p->fy, w, p->fh);
 		}
 	}
+	if (p->mnx > 0 && p->mny > 0)
+		draw_map(p, b);
 	for (int k = 0; k < p->ns; k++)
 		draw_series(f, p, &p->s[k], b);
 	b->unclip(b->ctx);
@@ -196,7 +242,7 @@ draw_panel(const struct plot_figure *f, const struct plot_panel *p,
 		b->pen(b->ctx, frame, NULL, 0);
 	}
 	for (int k = 0; k < p->xa.nticks; k++) {
-		double x = map(p->xa.tick[k], p->xa.lo, p->xa.hi, p->fx, p->fw);
+		double x = px_of(p, p->xa.tick[k]);
 
 		b->move_to(b->ctx, x, p->fy + p->fh);
 		b->line_to(b->ctx, x, p->fy + p->fh - tl);
@@ -204,8 +250,13 @@ draw_panel(const struct plot_figure *f, const struct plot_panel *p,
 		b->line_to(b->ctx, x, p->fy + tl);
 	}
 	for (int k = 0; k < p->ya.nticks; k++) {
-		double y = map(p->ya.tick[k], p->ya.lo, p->ya.hi, p->fy + p->fh, -p->fh);
+		double y = py_of(p, p->ya.tick[k]);
 
+		if (p->colorbar) {   /* outward on its right: the colours stay whole */
+			b->move_to(b->ctx, p->fx + p->fw, y);
+			b->line_to(b->ctx, p->fx + p->fw + 0.6 * tl, y);
+			continue;
+		}
 		b->move_to(b->ctx, p->fx, y);
 		b->line_to(b->ctx, p->fx + tl, y);
 		b->move_to(b->ctx, p->fx + p->fw, y);
@@ -213,9 +264,23 @@ draw_panel(const struct plot_figure *f, const struct plot_panel *p,
 	}
 	b->stroke(b->ctx);
 
-	/* labels */
+	/* labels; a colour legend's on its right */
+	if (p->colorbar) {
+		double wmax = 0;
+
+		for (int k = 0; k < p->ya.nticks; k++) {
+			double y = py_of(p, p->ya.tick[k]);
+
+			draw_text(b, p->fx + p->fw + 0.4 * fs, y, 0, fs, p->ya.ticklabel[k], 0, 0.5);
+			wmax = fmax(wmax, plot_text_width(p->ya.ticklabel[k], fs, b->text_width, b->ctx));
+		}
+		plot_axis_label(&p->ya, lab, sizeof lab);
+		draw_text(b, p->fx + p->fw + 0.4 * fs + wmax + 0.5 * fs + 0.7 * fs,
+		          p->fy + p->fh / 2, M_PI / 2, ysize, lab, 0.5, 0.5);
+		return;
+	}
 	for (int k = 0; k < p->ya.nticks; k++) {
-		double y = map(p->ya.tick[k], p->ya.lo, p->ya.hi, p->fy + p->fh, -p->fh);
+		double y = py_of(p, p->ya.tick[k]);
 
 		draw_text(b, p->fx - 0.4 * fs, y, 0, fs, p->ya.ticklabel[k], 1, 0.5);
 	}
@@ -230,7 +295,7 @@ draw_panel(const struct plot_figure *f, const struct plot_panel *p,
 	}
 	if (p->xlabels) {
 		for (int k = 0; k < p->xa.nticks; k++) {
-			double x = map(p->xa.tick[k], p->xa.lo, p->xa.hi, p->fx, p->fw);
+			double x = px_of(p, p->xa.tick[k]);
 
 			draw_text(b, x, p->fy + p->fh + 0.3 * fs, 0, fs, p->xa.ticklabel[k], 0.5, 1);
 		}

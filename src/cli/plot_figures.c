@@ -249,7 +249,8 @@ build_loop(struct plot_figure *f, const struct hb_sim *s, const long *coll, int 
 		ncoll = nc < 3 ? (int)nc : 3;
 		coll = first;
 		if (ncoll == 0) {
-			cnum_snprintf(msg, mn, "the run has no complete collision to draw a loop of");
+			cnum_snprintf(msg, mn, "the run has no complete collision to draw a loop of; "
+			              "expected a run with collisions (a longer run.T?)");
 			return -1;
 		}
 	}
@@ -263,10 +264,14 @@ build_loop(struct plot_figure *f, const struct hb_sim *s, const long *coll, int 
 			if (hb_sim_collision(s, k)->i == coll[c])
 				col = hb_sim_collision(s, k);
 		if (col == NULL) {
-			cnum_snprintf(msg, mn, "--collisions: the run has no collision i = %ld (it "
-			              "kept %zu, i from %ld to %ld)", coll[c], nc,
-			              nc > 0 ? hb_sim_collision(s, 0)->i : 0L,
-			              nc > 0 ? hb_sim_collision(s, nc - 1)->i : 0L);
+			if (nc > 0)
+				cnum_snprintf(msg, mn, "--collisions: the run has no collision i = %ld; "
+				              "expected an index i of the %zu it kept, from %ld to %ld",
+				              coll[c], nc, hb_sim_collision(s, 0)->i,
+				              hb_sim_collision(s, nc - 1)->i);
+			else
+				cnum_snprintf(msg, mn, "--collisions: the run has no collision i = %ld; "
+				              "expected a run with collisions (a longer run.T?)", coll[c]);
 			return -1;
 		}
 		for (size_t k = 0; k < ni; k++) {

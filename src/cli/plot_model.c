@@ -58,6 +58,9 @@ plot_figure_free(struct plot_figure *f)
 		}
 		free(p->band0);
 		free(p->band1);
+		free(p->mx);
+		free(p->my);
+		free(p->mv);
 	}
 	f->npanels = 0;
 }
@@ -189,6 +192,56 @@ plot_ticks(double lo, double hi, int want, int whole, double *t, int *n)
 	}
 }
 
+/* Ticks of a log axis [lo, hi] (lo > 0): decades, or 1-2-5 where fewer
+ * than two decades show, else linear ones. */
+static void
+log_ticks(double lo, double hi, double *t, int *n)
+{
+	static const double mult[] = { 1, 2, 5 };
+
+	*n = 0;
+	for (int pass = 0; pass < 2 && *n < 2; pass++) {
+		*n = 0;
+		for (int e = (int)floor(log10(lo)) - 1; e <= (int)ceil(log10(hi)) + 1; e++)
+			for (int m = 0; m < (pass ? 3 : 1); m++) {
+				double v = mult[m] * pow(10, e);
+
+				if (v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9) && *n < PLOT_MAX_TICKS)
+					t[(*n)++] = v;
+			}
+	}
+	if (*n < 2)
+		plot_ticks(lo, hi, 3, 0, t, n);
+}
+
+/* about `want` ticks on a's range, as its kind asks */
+static void
+axis_ticks(struct plot_axis *a, int want)
+{
+	if (a->log && a->lo > 0)
+		log_ticks(a->lo, a->hi, a->tick, &a->nticks);
+	else
+		plot_ticks(a->lo, a->hi, want, a->whole, a->tick, &a->nticks);
+}
+
+/* "10^{3}", "2×10^{-4}": a tick of a log axis */
+static void
+log_label(double v, char *buf, size_t n)
+{
+	int e = (int)floor(log10(v) + 1e-9);
+	double m = v / pow(10, e);
+	char ex[16];
+
+	if (e < 0)
+		cnum_snprintf(ex, sizeof ex, "\xe2\x88\x92%d", -e);
+	else
+		cnum_snprintf(ex, sizeof ex, "%d", e);
+	if (fabs(m - 1) < 1e-6)
+		cnum_snprintf(buf, n, "10^{%s}", ex);
+	else
+		cnum_snprintf(buf, n, "%.3g\xc3\x97" "10^{%s}", m, ex);
+}
+
 /* The fewest decimals that tell the ticks apart, in the unit shown. */
 static void
 tick_labels(struct plot_axis *a)
@@ -197,6 +250,11 @@ tick_labels(struct plot_axis *a)
 
 	if (a->scale == 0)
 		a->scale = 1;
+	if (a->log && a->lo > 0) {
+		for (int k = 0; k < a->nticks; k++)
+			log_label(a->tick[k] / a->scale, a->ticklabel[k], sizeof a->ticklabel[k]);
+		return;
+	}
 
 	if (a->nticks >= 2) {
 		double step = fabs(a->tick[1] - a->tick[0]) / a->scale;
@@ -226,6 +284,24 @@ plot_axis_fit(struct plot_axis *a, double lo, double hi, const char *base, int k
 	double mag;
 	char unit[24];
 
+	if (base != a->base)
+		copy_str(a->base, sizeof a->base, base);
+	if (a->log && !(lo > 0 && hi > lo && isfinite(hi)))
+		a->log = 0;   /* a range that is not positive: linear */
+	if (a->log) {
+		double pad = keep ? 1 : pow(hi / lo, 0.05);
+
+		a->lo = lo / pad;
+		a->hi = hi * pad;
+		a->scale = 1;
+		if (base[0] != '\0')
+			hb_units_axis(1, base, a->unit, sizeof a->unit);
+		else
+			a->unit[0] = '\0';
+		axis_ticks(a, want);
+		tick_labels(a);
+		return;
+	}
 	if (!keep) {
 		if (!isfinite(lo) || !isfinite(hi)) {
 			lo = 0;
@@ -382,9 +458,27 @@ plot_figure_layout(struct plot_figure *f, double (*text_width)(void *ctx, const 
 	double top = pad, right_pad = 1.2 * fs, row_h, ygap, xlab_h;
 	double colw;
 
-	nrows = (f->npanels + ncols - 1) / ncols;
-	if (nrows < 1)
+	/* a colour legend (the last panel) takes a strip at the right: the
+	 * grid is laid out in what is left of the width, then it beside its map */
+	const int cbar = f->npanels >= 2 && f->p[f->npanels - 1].colorbar;
+	const int np = f->npanels - cbar;
+	const double full_w = f->w;
+	double strip = 0;
+
+	if (cbar) {
+		struct plot_panel *b = &f->p[f->npanels - 1];
+		double tw = 0;
+
+		for (int t = 0; t < b->ya.nticks; t++)
+			tw = fmax(tw, plot_text_width(b->ya.ticklabel[t], fs, text_width, ctx));
+		strip = 0.8 * fs + 1.0 * fs + 0.4 * fs + tw + 0.5 * fs + 1.4 * fs;
+		f->w -= strip;
+	}
+	nrows = (np + ncols - 1) / ncols;
+	if (nrows < 1) {
+		f->w = full_w;
 		return;
+	}
 	if (f->title[0] != '\0')
 		top += 1.5 * fs;
 
@@ -415,7 +509,7 @@ plot_figure_layout(struct plot_figure *f, double (*text_width)(void *ctx, const 
 	 * rotated y title */
 	double left[PLOT_MAX_PANELS] = { 0 };
 
-	for (int k = 0; k < f->npanels; k++) {
+	for (int k = 0; k < np; k++) {
 		struct plot_panel *p = &f->p[k];
 
 		for (int t = 0; t < p->ya.nticks; t++) {
@@ -436,7 +530,7 @@ plot_figure_layout(struct plot_figure *f, double (*text_width)(void *ctx, const 
 		for (r = 0; r < nrows; r++) {
 			int last = r == nrows - 1, shows = 0;
 
-			for (c = 0; c < ncols && r * ncols + c < f->npanels; c++)
+			for (c = 0; c < ncols && r * ncols + c < np; c++)
 				shows |= f->p[r * ncols + c].xlabels;
 			fixed += shows ? xlab_h + (last ? 0 : ygap) : (last ? 0 : ygap);
 		}
@@ -450,7 +544,7 @@ plot_figure_layout(struct plot_figure *f, double (*text_width)(void *ctx, const 
 		for (r = 0; r < nrows; r++) {
 			int shows = 0;
 
-			for (c = 0; c < ncols && r * ncols + c < f->npanels; c++) {
+			for (c = 0; c < ncols && r * ncols + c < np; c++) {
 				struct plot_panel *p = &f->p[r * ncols + c];
 
 				p->fx = c * colw + left[c];
@@ -462,17 +556,37 @@ plot_figure_layout(struct plot_figure *f, double (*text_width)(void *ctx, const 
 			y += row_h + (shows ? xlab_h : 0) + ygap;
 		}
 	}
+	f->w = full_w;
+	if (cbar) {
+		struct plot_panel *b = &f->p[f->npanels - 1], *m = &f->p[f->npanels - 2];
+
+		b->fx = m->fx + m->fw + 0.8 * fs;
+		b->fy = m->fy;
+		b->fw = 1.0 * fs;
+		b->fh = m->fh;
+		b->xlabels = 0;
+	}
 	/* ticks again for the frame's size: about one per 2.5 em of height,
 	 * one per 5 em of width */
 	for (int k = 0; k < f->npanels; k++) {
 		struct plot_panel *p = &f->p[k];
 		int wy = (int)(p->fh / (2.2 * fs)), wx = (int)(p->fw / (5 * fs));
 
-		plot_ticks(p->ya.lo, p->ya.hi, wy < 2 ? 2 : wy, p->ya.whole, p->ya.tick, &p->ya.nticks);
+		axis_ticks(&p->ya, wy < 2 ? 2 : wy);
 		tick_labels(&p->ya);
-		plot_ticks(p->xa.lo, p->xa.hi, wx < 2 ? 2 : wx, p->xa.whole, p->xa.tick, &p->xa.nticks);
+		if (p->colorbar)
+			continue;   /* a colour legend has no x ticks */
+		axis_ticks(&p->xa, wx < 2 ? 2 : wx);
 		tick_labels(&p->xa);
 	}
+}
+
+double
+plot_axis_pos(const struct plot_axis *a, double v)
+{
+	if (a->log && a->lo > 0)
+		return v > 0 ? log10(v / a->lo) / log10(a->hi / a->lo) : NAN;
+	return (v - a->lo) / (a->hi - a->lo);
 }
 
 void

@@ -2,9 +2,11 @@
 /*
  * plot_model.h - the figure model of `hybounce plot`: data -> panels,
  * axes (SI-prefixed units, ticks), series, shaded intervals, a legend, and
- * their layout in points.  Knows no plotting library and no engine run:
- * plot_cmd.c fills it from a run, plot_draw.c renders it through a
- * backend (plot_backend.h), plot_tex.c writes it as pgfplots source.
+ * heat maps with their colour legend (plot_map.c), and their layout in
+ * points.  Knows no plotting library and no engine run: plot_figures.c
+ * fills it from a run, plot_sweep.c from a sweep's files, plot_fit.c from
+ * a fit; plot_draw.c renders it through a backend (plot_backend.h),
+ * plot_tex.c writes it as pgfplots source.
  *
  * Text in labels is a small markup: "x_c" sets c as a subscript, "F_c^max"
  * adds a superscript; a group in braces ("x_{c,1}") is one script.
@@ -38,6 +40,9 @@ struct plot_axis {
 	int nticks;
 	double tick[PLOT_MAX_TICKS];          /* in SI */
 	char ticklabel[PLOT_MAX_TICKS][24];   /* in the unit shown */
+	int log;             /* 1: a logarithmic axis (set before plot_axis_fit; its
+	                      * ticks at decades, or 1-2-5 within one or two) */
+	char base[24];       /* the SI base unit plot_axis_fit was given ("m") */
 };
 
 struct plot_series {
@@ -58,6 +63,20 @@ struct plot_panel {
 	int xlabels;             /* 1: this panel shows the x tick labels and title */
 	/* layout, points from the top left of the figure: the frame */
 	double fx, fy, fw, fh;
+	/*
+	 * A heat map (plot_map_set): mnx x mny cells, cell (i, j) spans
+	 * mx[i] .. mx[i + 1] by my[j] .. my[j + 1] (SI, owned), its value
+	 * mv[j * mnx + i] (NaN: no value, left white), coloured by
+	 * plot_colormap over [vlo, vhi].
+	 */
+	double *mx, *my, *mv;
+	size_t mnx, mny;
+	double vlo, vhi;
+	int vlog;                /* 1: colours spread over log10 of the values */
+	/* 1: the colour legend of the map in the panel before it (set by
+	 * plot_colorbar_add): a narrow strip right of that panel, its scale
+	 * (the y axis) on its right */
+	int colorbar;
 };
 
 struct plot_legend_entry {
@@ -141,6 +160,37 @@ plot_markup(const char *s, struct plot_run *runs, int max);
 double
 plot_text_width(const char *markup, double size,
                 double (*text_width)(void *ctx, const char *s, double size), void *ctx);
+
+/*
+ * The sequential colour map of heat maps at t in [0, 1] (viridis: its
+ * lightness rises with t, so that it reads in greyscale and for
+ * colour-blind readers); NaN gives white.
+ */
+void
+plot_colormap(double t, double rgb[3]);
+
+/* A heat map on p (plot_panel's mx, my, mv: copied); -1 when out of memory. */
+int
+plot_map_set(struct plot_panel *p, const double *x_edges, size_t nx, const double *y_edges,
+             size_t ny, const double *v, double vlo, double vhi, int vlog);
+
+/* The colour of value v of p's map (plot_colormap of its place in vlo .. vhi). */
+void
+plot_map_colour(const struct plot_panel *p, double v, double rgb[3]);
+
+/*
+ * The colour legend of the map of panel `of`, as a panel of its own
+ * after it: its scale titled title (markup) in unit (SI base), over
+ * [of->vlo, of->vhi] (logarithmic where of->vlog).  NULL when full or
+ * out of memory.
+ */
+struct plot_panel *
+plot_colorbar_add(struct plot_figure *f, const struct plot_panel *of, const char *title,
+                  const char *unit);
+
+/* The position of v on axis a: 0 at a->lo, 1 at a->hi (log10 on a log axis). */
+double
+plot_axis_pos(const struct plot_axis *a, double v);
 
 /* "x_c (µm)": the axis title with its unit shown. */
 void

@@ -25,6 +25,15 @@ tex_text(FILE *f, const char *s, int math)
 		if (strncmp(s, "\xce\x9b", 2) == 0) {                 /* Λ */
 			fputs(math ? "\\Lambda " : "$\\Lambda$", f);
 			s++;
+		} else if (strncmp(s, "\xce\x94", 2) == 0) {          /* Δ */
+			fputs(math ? "\\Delta " : "$\\Delta$", f);
+			s++;
+		} else if (strncmp(s, "\xce\xa3", 2) == 0) {          /* Σ */
+			fputs(math ? "\\Sigma " : "$\\Sigma$", f);
+			s++;
+		} else if (strncmp(s, "\xc3\x97", 2) == 0) {          /* × */
+			fputs(math ? "\\times " : "$\\times$", f);
+			s++;
 		} else if (strncmp(s, "\xc2\xb5", 2) == 0) {          /* µ */
 			fputs(math ? "\\mu " : "$\\mu$", f);
 			s++;
@@ -33,6 +42,8 @@ tex_text(FILE *f, const char *s, int math)
 			s += 2;
 		} else if (strchr("#$%&_{}", *s) != NULL) {
 			fprintf(f, "\\%c", *s);
+		} else if (*s == '|') {
+			fputs(math ? "|" : "\\textbar{}", f);
 		} else if (*s == '\\' || *s == '^' || *s == '~') {
 			fputs(*s == '\\' ? "\\textbackslash{}" : *s == '^' ? "\\^{}" : "\\~{}", f);
 		} else {
@@ -133,6 +144,19 @@ tex_ticks(FILE *f, const char *key, const struct plot_axis *a)
 	fputs("},\n", f);
 }
 
+/* the model's own tick labels, so that the figure reads as its PNG */
+static void
+tex_ticklabels(FILE *f, const char *key, const struct plot_axis *a)
+{
+	fprintf(f, "    %s={", key);
+	for (int k = 0; k < a->nticks; k++) {
+		fputs(k ? ",{" : "{", f);
+		tex_markup(f, a->ticklabel[k], 0);
+		fputs("}", f);
+	}
+	fputs("},\n", f);
+}
+
 static void
 tex_style(FILE *f, const struct plot_figure *fig, int style, int line, int markers)
 {
@@ -166,8 +190,10 @@ decimate(const struct plot_panel *p, const struct plot_series *s, double *x, dou
 
 	for (size_t i = 0; i <= s->n; i++) {
 		int fin = i < s->n && isfinite(s->x[i]) && isfinite(s->y[i]);
-		double col = fin ? floor((s->x[i] - p->xa.lo) / (p->xa.hi - p->xa.lo) * p->fw / 0.25)
-		                 : NAN;
+		double col = fin ? floor(plot_axis_pos(&p->xa, s->x[i]) * p->fw / 0.25) : NAN;
+
+		if (fin && !isfinite(col))
+			fin = 0, col = NAN;   /* <= 0 on a log axis */
 
 		if (fin && i > i0 && col == bx)
 			continue;
@@ -295,12 +321,24 @@ plot_tex_write(struct plot_figure *fig, FILE *tex, FILE *dat, const char *datnam
 		             p->fx, -p->fy, p->fw, p->fh, p->xa.lo / p->xa.scale,
 		             p->xa.hi / p->xa.scale, ylo, yhi, fig->font, 1.2 * fig->font,
 		             fig->font, 1.2 * fig->font);
-		tex_ticks(tex, "xtick", &p->xa);
+		if (p->xa.log)
+			fputs("    xmode=log, log basis x=10,\n", tex);
+		if (p->ya.log)
+			fputs("    ymode=log, log basis y=10,\n", tex);
+		if (p->colorbar)   /* a colour legend: its scale on its right */
+			fputs("    xtick=\\empty, yticklabel pos=right, ylabel near ticks, "
+			      "tick align=outside, ytick style={draw=black},\n", tex);
+		else
+			tex_ticks(tex, "xtick", &p->xa);
 		tex_ticks(tex, "ytick", &p->ya);
+		tex_ticklabels(tex, "yticklabels", &p->ya);
 		fputs("    ylabel={", tex);
 		tex_axis_label(tex, &p->ya);
 		fputs("},\n", tex);
-		if (p->xlabels) {
+		if (p->colorbar) {
+			/* no x labels */
+		} else if (p->xlabels) {
+			tex_ticklabels(tex, "xticklabels", &p->xa);
 			fputs("    xlabel={", tex);
 			tex_axis_label(tex, &p->xa);
 			fputs("},\n", tex);
@@ -329,6 +367,21 @@ plot_tex_write(struct plot_figure *fig, FILE *tex, FILE *dat, const char *datnam
 			cnum_fprintf(tex, "\\fill[hbshade] (axis cs:%.10g,%.10g) rectangle (axis cs:%.10g,%.10g);\n",
 			             a0, ylo, a1, yhi);
 		}
+		/* a heat map's cells in their colours, as plot_draw.c fills them */
+		for (size_t j = 0; j < p->mny; j++)
+			for (size_t i = 0; i < p->mnx; i++) {
+				double v = p->mv[j * p->mnx + i], rgb[3];
+
+				if (!isfinite(v))
+					continue;
+				plot_map_colour(p, v, rgb);
+				cnum_fprintf(tex, "\\fill[fill={rgb,255:red,%d;green,%d;blue,%d}] "
+				             "(axis cs:%.10g,%.10g) rectangle (axis cs:%.10g,%.10g);\n",
+				             (int)lround(rgb[0] * 255), (int)lround(rgb[1] * 255),
+				             (int)lround(rgb[2] * 255), p->mx[i] / p->xa.scale,
+				             p->my[j] / p->ya.scale, p->mx[i + 1] / p->xa.scale,
+				             p->my[j + 1] / p->ya.scale);
+			}
 		for (int i = 0; i < p->ns; i++, ncol++) {
 			const struct plot_series *s = &p->s[i];
 			int in_legend = !leg_done && s->label[0] != '\0';
@@ -362,6 +415,9 @@ plot_tex_write(struct plot_figure *fig, FILE *tex, FILE *dat, const char *datnam
 		tex_markup(tex, fig->title, 0);
 		fputs("};\n", tex);
 	}
+	/* the figure's size whatever a label overhangs, as the PNG's */
+	cnum_fprintf(tex, "\\pgfresetboundingbox\\path (0,0) rectangle (%.2f,%.2f);\n", fig->w,
+	             -fig->h);
 	fputs("\\end{tikzpicture}\n\\end{document}\n", tex);
 out:
 	for (int c = 0; c < PLOT_MAX_PANELS * PLOT_MAX_SERIES; c++) {

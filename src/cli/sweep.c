@@ -6,11 +6,12 @@
  * runs (exit 2), and shows progress on stderr; the engine does the rest.
  *
  *     hybounce sweep PRESET [--set KEY=VALUE]... [--vary KEY=SPEC]...
- *                    [--jobs N] [--shard K/N] [--quiet] --out DIR
+ *                    [--refine OBS[:TOL]] [--format csv|hdf5] [--jobs N] [--shard K/N]
+ *                    [--quiet] --out DIR
  *     hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]
  *                    [--sshlogin HOSTS] [--time T] [--partition P] [--account A]
  *                    [--qos Q] [--mem M] [--max-array N]
- *     hybounce sweep --merge DIR [--shards N]
+ *     hybounce sweep --merge DIR [--shards N] [--format csv|hdf5]
  *
  * Exit status: 0 the sweep is complete (points that failed numerically are
  * rows with their message); 1 it could not be completed (I/O, memory, an
@@ -36,6 +37,9 @@
 #include "hybounce/sweep.h"
 
 #include "sweep_cli.h"
+#include "plot_cmd.h"
+#include "plot_out.h"
+#include "sweep_hdf5.h"
 #include "report.h"
 #include "signals.h"
 #include "clock.h"
@@ -43,7 +47,8 @@
 #define PROG "hybounce sweep"
 
 enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS, OPT_MAX_POINTS,
-       OPT_TIME, OPT_PARTITION, OPT_ACCOUNT, OPT_QOS, OPT_MEM, OPT_MAX_ARRAY };
+       OPT_TIME, OPT_PARTITION, OPT_ACCOUNT, OPT_QOS, OPT_MEM, OPT_MAX_ARRAY, OPT_PLOT, OPT_REFINE,
+       OPT_FORMAT };
 
 static const struct option sweep_options_long[] = {
 	{ "set",      required_argument, NULL, 's' },
@@ -64,6 +69,9 @@ static const struct option sweep_options_long[] = {
 	{ "qos",       required_argument, NULL, OPT_QOS },
 	{ "mem",       required_argument, NULL, OPT_MEM },
 	{ "max-array", required_argument, NULL, OPT_MAX_ARRAY },
+	{ "plot",      required_argument, NULL, OPT_PLOT },
+	{ "refine",    required_argument, NULL, OPT_REFINE },
+	{ "format",    required_argument, NULL, OPT_FORMAT },
 	{ "help",     no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
 };
@@ -73,11 +81,12 @@ sweep_usage(FILE *f)
 {
 	fprintf(f,
 "usage: hybounce sweep PRESET [--set KEY=VALUE]... --vary KEY=SPEC [--vary ...]\n"
-"                      [--jobs N] [--shard K/N] [--quiet] --out DIR\n"
+"                      [--refine OBS[:TOL]] [--format csv|hdf5] [--jobs N]\n"
+"                      [--shard K/N] [--quiet] [--plot FILE] --out DIR\n"
 "       hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]\n"
 "                      [--sshlogin HOSTS] [--time T] [--partition P]\n"
 "                      [--account A] [--qos Q] [--mem M] [--max-array N]\n"
-"       hybounce sweep --merge DIR [--shards N]\n"
+"       hybounce sweep --merge DIR [--shards N] [--format csv|hdf5] [--plot FILE]\n"
 "\n"
 "Runs the Cartesian product of the varied values (the last --vary varies\n"
 "fastest); every other value comes from PRESET and --set.\n"
@@ -87,14 +96,26 @@ sweep_usage(FILE *f)
 "                          in --set: --vary initial.x0='10 um,40 um'); the\n"
 "                          preset's '; sweep: --vary' lines are axes too\n"
 "  -s, --set KEY=VALUE     override one value of the preset (repeatable)\n"
+"      --refine OBS[:TOL]  compute the grid of one or two ranges, then bisect\n"
+"                          where the class of OBS (a runs.csv column) changes\n"
+"                          until each boundary is within TOL of each axis\n"
+"                          (default 1e-3); OBS<X or OBS>X: which side of X;\n"
+"                          DIR/boundaries.csv, runs.csv's 'refined' column\n"
 "  -j, --jobs N            worker threads (default: the online processors)\n"
 "      --shard K/N         compute only shard K of N (points K, K+N, ...);\n"
 "                          then merge with --merge DIR\n"
 "  -o, --out DIR           the folder: runs.csv, collisions.csv, sweep.preset;\n"
 "                          run again with the same command to resume\n"
+"      --format hdf5       the runs and collisions as DIR/sweep.h5 (chunked,\n"
+"                          compressed, units and spec as attributes) instead\n"
+"                          of the CSV files (default: csv)\n"
 "  -q, --quiet             no progress\n"
 "      --progress PCT      without a terminal, a progress line every PCT %%\n"
 "                          of the points (default 10)\n"
+"      --plot FILE         when the sweep is complete, draw it (as hybounce plot\n"
+"                          DIR): e against the varied key, one curve per\n"
+"                          collision i = 0..3, or over two keys a heat map of\n"
+"                          collision 0; FILE.png, .pdf, .svg or .tex\n"
 "      --max-points N      allow a sweep of up to N points (default 1000000,\n"
 "                          at most 1000000000); a larger sweep is refused\n"
 "      --emit slurm        print a script that submits the shards as Slurm job\n"
@@ -238,17 +259,23 @@ on_progress(void *ctx, const struct hb_sweep_progress *p)
 
 /* How DIR/runs.csv and DIR/collisions.csv will be written (before). */
 struct dir_targets {
-	char path[2][4200];
-	struct hb_atomic_target t[2];
+	char path[3][4200];
+	struct hb_atomic_target t[3];
+	int nfiles;    /* 3 with a refined sweep's boundaries.csv */
 };
 
 static void
-probe_dir(const char *dir, struct dir_targets *d)
+probe_dir(const char *dir, struct dir_targets *d, int refined, int hdf5)
 {
+	static const char *const names[2][3] = {
+		{ "runs.csv", "collisions.csv", "boundaries.csv" },
+		{ SWEEP_HDF5_NAME, "boundaries.csv", "" },
+	};
 	char m[256];
 
-	for (int k = 0; k < 2; k++) {
-		snprintf(d->path[k], sizeof d->path[k], "%s/%s", dir, k ? "collisions.csv" : "runs.csv");
+	d->nfiles = (hdf5 ? 1 : 2) + refined;
+	for (int k = 0; k < d->nfiles; k++) {
+		snprintf(d->path[k], sizeof d->path[k], "%s/%s", dir, names[hdf5][k]);
 		if (hb_atomic_probe(d->path[k], &d->t[k], m, sizeof m) != HB_OK)
 			memset(&d->t[k], 0, sizeof d->t[k]);
 	}
@@ -261,7 +288,7 @@ probe_dir(const char *dir, struct dir_targets *d)
 static void
 print_wrote_dir(const struct dir_targets *d, int unchanged)
 {
-	for (int k = 0; k < 2; k++) {
+	for (int k = 0; k < d->nfiles; k++) {
 		if (unchanged) {
 			fprintf(stderr, "kept %s (the sweep was complete)\n", d->path[k]);
 			continue;
@@ -271,12 +298,68 @@ print_wrote_dir(const struct dir_targets *d, int unchanged)
 }
 
 /* ------------------------------------------------------------------ */
+/* --plot FILE: the figure of the sweep in dir (plot_out.h)           */
+
+/* The figure's path, by the output rules, before anything runs: 0, or 2 after saying why. */
+static int
+plot_check(const char *plot, const char *dir)
+{
+	struct plot_out po;
+	struct hb_outputs pol;
+	char m[3][4200], msg[4200];
+
+	hb_outputs_init(&pol);
+	snprintf(m[0], sizeof m[0], "%s/runs.csv", dir);
+	snprintf(m[1], sizeof m[1], "%s/collisions.csv", dir);
+	snprintf(m[2], sizeof m[2], "%s/sweep.preset", dir);
+	hb_outputs_input(&pol, m[0], "the sweep's runs.csv");
+	hb_outputs_input(&pol, m[1], "the sweep's collisions.csv");
+	hb_outputs_input(&pol, m[2], "the sweep's sweep.preset");
+	msg[0] = '\0';
+	if (plot_out_parse(&po, "--plot", plot, msg, sizeof msg) != 0 ||
+	    plot_out_register(&po, &pol, msg, sizeof msg) != 0)
+		return bad("%s", msg);
+	return 0;
+}
+
+/* Draws the sweep in dir to plot: 0, or 2 after saying why. */
+static int
+plot_draw_dir(const char *plot, const char *dir)
+{
+	struct plot_out po;
+	struct hb_outputs pol;
+	struct plot_figure *fig = malloc(sizeof *fig);
+	char msg[4200];
+	int status = 0;
+
+	if (fig == NULL)
+		return bad("--plot %s: out of memory", plot);
+	hb_outputs_init(&pol);
+	msg[0] = '\0';
+	if (plot_out_parse(&po, "--plot", plot, msg, sizeof msg) != 0) {
+		free(fig);
+		return bad("%s", msg);
+	}
+	if (plot_build_sweep(fig, dir, NULL, NULL, 0, 252, -1, &pol, msg, sizeof msg) != 0) {
+		free(fig);
+		return bad("--plot %s: %s", plot, msg);
+	}
+	if (plot_out_register(&po, &pol, msg, sizeof msg) != 0 ||
+	    plot_out_write(&po, &pol, fig, msg, sizeof msg) != 0)
+		status = bad("%s", msg);
+	plot_figure_free(fig);
+	free(fig);
+	return status;
+}
+
+/* ------------------------------------------------------------------ */
 /* Input                                                               */
 
 /* The preset, the --set values and the axes; NULL after printing why (exit 2). */
 static struct hb_sweep *
 build(const char *preset, const char *const *sets, int nsets,
-      const char *const *varies, int nvaries, const char *out, long max_points)
+      const char *const *varies, int nvaries, const char *out, long max_points,
+      const char *refine)
 {
 	char path[4096], spec[4200], msg[4096], more[128];
 	struct hb_scene sc;
@@ -312,15 +395,26 @@ build(const char *preset, const char *const *sets, int nsets,
 		hb_sweep_free(sw);
 		return NULL;
 	}
-	free(text);
 	for (int i = 0; i < nvaries; i++) {
 		msg[0] = '\0';
 		if (hb_sweep_vary(sw, varies[i], msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": %s\n", msg);
+			free(text);
 			hb_sweep_free(sw);
 			return NULL;
 		}
 	}
+	/* --refine after every axis: the command line's, else the preset's line */
+	msg[0] = '\0';
+	if (hb_sweep_npoints(sw) > 0 &&
+	    (refine != NULL ? hb_sweep_refine(sw, refine, msg, sizeof msg)
+	                    : hb_sweep_refine_from_preset(sw, text, path, msg, sizeof msg)) != HB_OK) {
+		fprintf(stderr, PROG ": %s\n", msg);
+		free(text);
+		hb_sweep_free(sw);
+		return NULL;
+	}
+	free(text);
 	if (hb_sweep_npoints(sw) == 0) {
 		bad("nothing to vary: expected --vary KEY=SPEC (e.g. --vary "
 		    "law.c=1e8:1e10:20:log), or a preset with '; sweep: --vary' lines");
@@ -343,6 +437,10 @@ sweep_main(int argc, char **argv)
 	int nsets = 0, nvaries = 0, quiet = 0, c, status = 2;
 	long jobs = 0, shard_k = 0, shard_n = 1, shards = 0, pct = 10, max_points = 0;
 	const char *out = NULL, *emit = NULL, *sshlogin = NULL, *merge = NULL, *slurm_opt = NULL;
+	const char *plot = NULL;
+	const char *refine = NULL;
+	int hdf5 = 0;
+	struct sweep_hdf5 *h5 = NULL;
 	struct sweep_emit_opts eo = { 0 };
 	struct hb_sweep *sw = NULL;
 	char msg[2048];
@@ -396,6 +494,7 @@ sweep_main(int argc, char **argv)
 			}
 			break;
 		case OPT_SSHLOGIN: sshlogin = optarg; break;
+		case OPT_PLOT: plot = optarg; break;
 		case OPT_MERGE: merge = optarg; break;
 		case OPT_PROGRESS:
 			if (parse_long(optarg, 1, 100, &pct) != 0) {
@@ -455,6 +554,14 @@ sweep_main(int argc, char **argv)
 			}
 			slurm_opt = "--max-array";
 			break;
+		case OPT_REFINE: refine = optarg; break;
+		case OPT_FORMAT:
+			if (strcmp(optarg, "csv") != 0 && strcmp(optarg, "hdf5") != 0) {
+				status = bad("--format '%s': accepted: csv, hdf5", optarg);
+				goto done;
+			}
+			hdf5 = strcmp(optarg, "hdf5") == 0;
+			break;
 		case 'h':
 			sweep_usage(stdout);
 			status = 0;
@@ -465,29 +572,43 @@ sweep_main(int argc, char **argv)
 		}
 	}
 
+	if (plot != NULL && hdf5) {
+		status = bad("--plot %s: the figure is drawn from the sweep's CSV files; accepted: "
+		             "--plot with --format csv (or hybounce plot on a CSV sweep)", plot);
+		goto done;
+	}
 	if (merge != NULL) {
-		if (optind < argc || nvaries || nsets || out || emit || sshlogin || slurm_opt) {
+		if (optind < argc || nvaries || nsets || out || emit || sshlogin || slurm_opt || refine) {
 			status = bad("--merge DIR takes no preset and no other option but "
-			             "--shards N and --quiet");
+			             "--shards N, --format, --plot FILE and --quiet");
 			goto done;
 		}
+		if (plot != NULL && plot_check(plot, merge) != 0)
+			goto done;   /* exit 2 */
 		struct dir_targets dt;
 
-		probe_dir(merge, &dt);
+		probe_dir(merge, &dt, 0, hdf5);
 		msg[0] = '\0';
+		if (hdf5 && (h5 = sweep_hdf5_new(merge, msg, sizeof msg)) == NULL) {
+			fprintf(stderr, PROG ": %s\n", msg);
+			status = 1;
+			goto done;
+		}
 		char shards_txt[24] = "N";
 
 		if (shards > 0)
 			snprintf(shards_txt, sizeof shards_txt, "%ld", shards);
-		if (hb_sweep_merge_shards(merge, shards, msg, sizeof msg) != HB_OK) {
+		if (hb_sweep_merge_to(merge, shards, h5 ? &sweep_hdf5_sink : NULL, h5, msg,
+		                      sizeof msg) != HB_OK) {
 			char spec[4200];
 			struct stat sb;
 
 			fprintf(stderr, PROG ": merge: %s\n", msg);
 			if (strstr(msg, " shards incomplete: ") || strstr(msg, " shard incomplete: "))
 				fprintf(stderr, PROG ": the same --emit command (e.g. hybounce sweep "
-				        "%s/sweep.preset --out %s --emit slurm --shards %s) computes "
-				        "only those, then merges\n", merge, merge, shards_txt);
+				        "%s/sweep.preset --out %s --emit slurm --shards %s%s) computes "
+				        "only those, then merges\n", merge, merge, shards_txt,
+				        hdf5 ? " --format hdf5" : "");
 			/* a folder that holds no sweep is bad input; an incomplete one is not */
 			snprintf(spec, sizeof spec, "%s/sweep.preset", merge);
 			status = stat(spec, &sb) == 0 && S_ISREG(sb.st_mode) ? 1 : 2;
@@ -495,7 +616,7 @@ sweep_main(int argc, char **argv)
 		}
 		if (!quiet)
 			print_wrote_dir(&dt, 0);
-		status = 0;
+		status = plot != NULL ? plot_draw_dir(plot, merge) : 0;
 		goto done;
 	}
 	if (optind >= argc) {
@@ -516,6 +637,16 @@ sweep_main(int argc, char **argv)
 		             : sshlogin ? "--sshlogin" : slurm_opt);
 		goto done;
 	}
+	if (plot != NULL && (emit != NULL || shard_n > 1)) {
+		status = bad("--plot %s: %s", plot, emit != NULL
+		             ? "the emitted jobs compute the sweep later; draw it when it is merged "
+		               "(--merge DIR --plot FILE, or hybounce plot DIR)"
+		             : "a shard holds part of the sweep; draw it when it is merged "
+		               "(--merge DIR --plot FILE)");
+		goto done;
+	}
+	if (plot != NULL && plot_check(plot, out) != 0)
+		goto done;   /* exit 2 */
 	if (emit != NULL && slurm_opt != NULL && strcmp(emit, "slurm") != 0) {
 		status = bad("--emit %s: %s goes with --emit slurm", emit, slurm_opt);
 		goto done;
@@ -526,9 +657,15 @@ sweep_main(int argc, char **argv)
 		             : "--sshlogin goes with --emit parallel");
 		goto done;
 	}
-	sw = build(argv[optind], sets, nsets, varies, nvaries, out, max_points);
+	sw = build(argv[optind], sets, nsets, varies, nvaries, out, max_points, refine);
 	if (sw == NULL)
 		goto done;      /* exit 2: build said why */
+	if (hb_sweep_refined(sw) && (emit != NULL || shard_n > 1)) {
+		status = bad("%s: a refined sweep (--refine) runs its rounds one after another on "
+		             "one machine (on --jobs threads); accepted: --refine without --emit "
+		             "and --shard", emit != NULL ? "--emit" : "--shard");
+		goto done;
+	}
 
 	if (emit != NULL) {
 		if (shards == 0)
@@ -543,6 +680,7 @@ sweep_main(int argc, char **argv)
 		}
 		eo.kind = emit;
 		eo.shards = shards;
+		eo.hdf5 = hdf5;
 		eo.sshlogin = sshlogin;
 		status = sweep_emit(sw, out, &eo, msg, sizeof msg);
 		if (status != 0)
@@ -553,6 +691,7 @@ sweep_main(int argc, char **argv)
 	{
 		struct progress g = { 0 };
 		struct hb_sweep_options o = { 0 };
+		struct hb_sweep_refine_stats rs = { 0 };
 		struct dir_targets dt;
 
 		g.tty = isatty(STDERR_FILENO);
@@ -566,12 +705,20 @@ sweep_main(int argc, char **argv)
 		o.progress = on_progress;
 		o.ctx = &g;
 		o.provenance = cli_provenance();
+		o.refine_stats = &rs;
 		/* SIGINT, SIGTERM, SIGHUP (those not ignored): the points done are
 		 * journaled, exit 128 + N (signals.h). */
 		cli_signals_watch();
 		o.cancel = &cli_signal;
-		probe_dir(out, &dt);
+		probe_dir(out, &dt, hb_sweep_refined(sw), hdf5);
 		msg[0] = '\0';
+		if (hdf5 && (h5 = sweep_hdf5_new(out, msg, sizeof msg)) == NULL) {
+			fprintf(stderr, PROG ": %s\n", msg);
+			status = 1;
+			goto done;
+		}
+		o.sink = h5 ? &sweep_hdf5_sink : NULL;
+		o.sink_ctx = h5;
 		status = hb_sweep_run(sw, &o, msg, sizeof msg);
 		cli_signals_restore();
 		if (status == HB_EDONE) {
@@ -592,9 +739,14 @@ sweep_main(int argc, char **argv)
 				        "with: hybounce sweep --merge %s\n", shard_k, shard_n, out, out);
 			else
 				print_wrote_dir(&dt, g.total > 0 && g.resumed == g.total);
+			if (rs.runs > 0)
+				sweep_refine_summary(stderr, sw, &rs);
 		}
+		if (status == HB_OK && plot != NULL)
+			status = plot_draw_dir(plot, out);
 	}
 done:
+	sweep_hdf5_free(h5);
 	hb_sweep_free(sw);
 	free(sets);
 	free(varies);

@@ -7,12 +7,18 @@
 #define HYBOUNCE_CLI_SWEEP_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 struct hb_sweep;
+struct hb_sweep_refine_stats;
 
 /* hybounce sweep ARGS (argv[0] is "sweep").  Returns the exit status. */
 int
 sweep_main(int argc, char **argv);
+
+/* "sweep: refined: 2 boundaries located to ... (4.2%)", the summary of --refine. */
+void
+sweep_refine_summary(FILE *f, const struct hb_sweep *sw, const struct hb_sweep_refine_stats *s);
 
 /* What --emit writes: the scheduler, the shards, and its options. */
 struct sweep_emit_opts {
@@ -22,6 +28,7 @@ struct sweep_emit_opts {
 	/* sbatch's --time, --partition, --account, --qos, --mem (NULL: none) */
 	const char *time, *partition, *account, *qos, *mem;
 	long max_array;         /* MaxArraySize; 0: from scontrol, else 1001 */
+	int hdf5;               /* the merge writes sweep.h5 (--format hdf5) */
 };
 
 /*

@@ -278,7 +278,7 @@ emit_slurm(const struct hb_sweep *sw, const char *self, const char *adir, const 
 	       "    --ntasks=1 ");
 	put_output(stdout, adir, e);
 	fputs(" \\\n    ", stdout);
-	snprintf(rest, sizeof rest, " --shards %ld", ns);
+	snprintf(rest, sizeof rest, " --shards %ld%s", ns, e->hdf5 ? " --format hdf5" : "");
 	if (put_wrap(stdout, "exec >\"logs/merge.$SLURM_JOB_ID.out\" 2>&1", self, adir, NULL,
 	             "--merge ", rest) != 0)
 		goto nomem;
@@ -323,7 +323,7 @@ emit_parallel(const char *self, const char *adir, const long *todo, long ntodo,
 	put_sq(stdout, self);
 	printf(" sweep --quiet --merge ");
 	put_sq(stdout, adir);
-	printf(" --shards %ld\n", e->shards);
+	printf(" --shards %ld%s\n", e->shards, e->hdf5 ? " --format hdf5" : "");
 }
 
 int

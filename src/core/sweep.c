@@ -32,34 +32,15 @@
 #include "scene_keys.h"
 #include "cnum.h"
 
-#define SWEEP_MAX_POINTS 1000000000L
-#define SWEEP_MAX_AXES 16
-
-struct axis {
-	char key[48];
-	char spec[256];   /* as given, after '=' */
-	long n;
-	char **val;       /* a list's n canonical texts, or NULL */
-	double *num;      /* a range's n canonical values, or NULL */
-};
-
-/* The canonical text of value i of axis a (in buf for a range's number). */
-static const char *
-axis_text(const struct axis *a, long i, char *buf, size_t n)
+/* See sweep_impl.h. */
+const char *
+sweep_axis_text(const struct axis *a, long i, char *buf, size_t n)
 {
 	if (a->num == NULL)
 		return a->val[i];
 	cnum_snprintf(buf, n, "%.17g", a->num[i]);
 	return buf;
 }
-
-struct hb_sweep {
-	struct hb_scene base;
-	long max_points;          /* the largest product accepted (hb_sweep_set_max_points) */
-	char more[128];           /* how to ask for more, for the refusal */
-	int naxes;
-	struct axis ax[SWEEP_MAX_AXES];
-};
 
 static void
 axis_free(struct axis *a)
@@ -151,14 +132,14 @@ key_value(const struct hb_scene *sc, const char *key, char *buf, size_t n)
 }
 
 /* The scene on which axis k's values are checked: base + earlier axes' first values. */
-static void
-check_scene(const struct hb_sweep *sw, int k, struct hb_scene *sc)
+void
+sweep_check_scene(const struct hb_sweep *sw, int k, struct hb_scene *sc)
 {
 	char m[256], t[64];
 
 	*sc = sw->base;
 	for (int i = 0; i < k; i++)
-		(void)hb_scene_set(sc, sw->ax[i].key, axis_text(&sw->ax[i], 0, t, sizeof t), m,
+		(void)hb_scene_set(sc, sw->ax[i].key, sweep_axis_text(&sw->ax[i], 0, t, sizeof t), m,
 		                   sizeof m);
 }
 
@@ -218,13 +199,13 @@ parse_count(const char *t, long *out)
  * A range FROM:TO:N[:log] into a->val; others: the points of the other
  * axes, so that a sweep over the limit is refused before a value is made.
  */
-static int
-parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw,
+int
+sweep_parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw,
             double others, char *msg, size_t n)
 {
 	char *part[5] = { 0 }, num[64];
 	const char *p = a->spec, *c;
-	int np = 0, rc = HB_OK, lg = 0;
+	int np = 0, rc = HB_OK, lg = 0, plain = 0;
 	double from, to;
 	char *end;
 
@@ -293,6 +274,14 @@ parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw
 		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		goto out;
 	}
+	{
+		const struct scene_keydef *kd;
+		struct hb_scene_error e;
+		int li = -1, ro = 0;
+
+		plain = scene_key_resolve(sc, a->key, &kd, &li, &ro, &e) == HB_OK && !ro &&
+		        (kd != NULL ? kd->store == ST_DOUBLE : li >= 0);
+	}
 	for (long i = 0; i < a->n; i++) {
 		double v, f = a->n > 1 ? (double)i / (double)(a->n - 1) : 0;
 		char t[64];
@@ -305,6 +294,16 @@ parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw
 			v = copysign(exp(log(fabs(from)) + (log(fabs(to)) - log(fabs(from))) * f), from);
 		else
 			v = from + (to - from) * f;
+		if (i > 0 && i < a->n - 1 && plain && v >= fmin(from, to) && v <= fmax(from, to)) {
+			/*
+			 * A double of the scene or a law parameter between two values
+			 * accepted: %.17g of v sets v itself, in the range (an interval)
+			 * of its ends.  (The test sweep::point_scene_equals_the_set_values
+			 * sets the printed values.)
+			 */
+			a->num[i] = v;
+			continue;
+		}
 		cnum_snprintf(t, sizeof t, "%.17g", v);
 		if ((rc = canonical(sc, a->key, t, num, sizeof num, msg, n)) != HB_OK)
 			goto out;
@@ -354,6 +353,39 @@ parse_list(struct axis *a, const struct hb_scene *sc, char *msg, size_t n)
 	return HB_OK;
 }
 
+/*
+ * Whether a point's scene can be made by storing its values into
+ * sw->fast_base and deriving once: every axis a range of a double of the
+ * scene or of a law parameter (no law among the axes).  hb_scene_set_number
+ * does the same per axis (it derives, checks the range, stores, sets the
+ * body's flags, derives again), at about 7,000 instructions each: the
+ * stored doubles and the flags are the same (the values were checked when
+ * the axis was made), and so is the derived scene.
+ */
+static void
+fast_ready(struct hb_sweep *sw)
+{
+	struct hb_scene sc = sw->base;
+
+	sw->fast = 0;
+	for (int k = 0; k < sw->naxes; k++) {
+		struct axis *a = &sw->ax[k];
+		const struct scene_keydef *kd;
+		struct hb_scene_error e;
+		int li = -1, ro = 0;
+
+		if (a->num == NULL || scene_key_resolve(&sc, a->key, &kd, &li, &ro, &e) != HB_OK ||
+		    ro || (kd != NULL && kd->store != ST_DOUBLE) || (kd == NULL && li < 0))
+			return;
+		a->off = kd != NULL ? kd->off : 0;
+		a->par = kd != NULL ? -1 : li;
+		if (hb_scene_set_number(&sc, a->key, a->num[0], &e) != HB_OK)
+			return;
+	}
+	sw->fast_base = sc;
+	sw->fast = 1;
+}
+
 int
 hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 {
@@ -365,6 +397,10 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 	double others;
 
 	memset(&a, 0, sizeof a);
+	if (sw->rf.on)
+		return hb_status_set(msg, n, HB_EINVAL, "--vary '%s': the sweep is refined already "
+		                     "(--refine %s); expected every --vary before --refine", arg,
+		                     sw->rf.spec);
 	if (eq == NULL)
 		return hb_status_set(msg, n, HB_EINVAL, "--vary '%s': " RANGE_HELP, arg);
 	key = trimmed(arg, eq);
@@ -392,13 +428,13 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 	if (k == sw->naxes && sw->naxes == SWEEP_MAX_AXES)
 		return hb_status_set(msg, n, HB_EINVAL, "--vary %s: too many axes; accepted: at "
 		                  "most %d", a.key, SWEEP_MAX_AXES);
-	check_scene(sw, k, &sc);
+	sweep_check_scene(sw, k, &sc);
 	others = 1;
 	for (int i = 0; i < sw->naxes; i++)
 		if (i != k)
 			others *= (double)sw->ax[i].n;
 	if (strchr(a.spec, ':') != NULL)
-		rc = parse_range(&a, &sc, sw, others, msg, n);
+		rc = sweep_parse_range(&a, &sc, sw, others, msg, n);
 	else
 		rc = parse_list(&a, &sc, msg, n);
 	if (rc != HB_OK) {
@@ -422,6 +458,7 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 	else
 		sw->naxes++;
 	sw->ax[k] = a;
+	fast_ready(sw);
 	return HB_OK;
 }
 
@@ -452,8 +489,8 @@ hb_sweep_vary_from_preset(struct hb_sweep *sw, const char *text, const char *nam
 }
 
 /* Index of axis k at point id (row-major, the last axis fastest). */
-static long
-axis_index(const struct hb_sweep *sw, long id, int k)
+long
+sweep_axis_index(const struct hb_sweep *sw, long id, int k)
 {
 	for (int i = sw->naxes - 1; i > k; i--)
 		id /= sw->ax[i].n;
@@ -467,7 +504,55 @@ hb_sweep_point_value(const struct hb_sweep *sw, long id, int k, char *buf, size_
 
 	if (k < 0 || k >= sw->naxes || id < 0 || id >= hb_sweep_npoints(sw))
 		return HB_EINVAL;
-	snprintf(buf, n, "%s", axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t));
+	snprintf(buf, n, "%s", sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t));
+	return HB_OK;
+}
+
+/*
+ * The base scene with the axes' values of point id, not validated.  A
+ * range's value goes in as its double (hb_scene_set_number: the double
+ * that its %.17g text reads back to, without the text made and parsed
+ * again); a list's as its text.
+ */
+static int
+point_values(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n)
+{
+	char m[512], t[64];
+
+	if (id < 0 || id >= hb_sweep_npoints(sw))
+		return hb_status_set(msg, n, HB_EINVAL, "point %ld: no such point", id);
+	if (sw->fast) {
+		*out = sw->fast_base;
+		for (int k = 0; k < sw->naxes; k++) {
+			const struct axis *a = &sw->ax[k];
+			double v = a->num[sweep_axis_index(sw, id, k)];
+
+			if (a->par >= 0)
+				out->par[a->par] = v;
+			else
+				memcpy((char *)out + a->off, &v, sizeof v);
+		}
+		(void)hb_scene_derive(out, NULL, 0);   /* an error shows in the validation */
+		return HB_OK;
+	}
+	*out = sw->base;
+	for (int k = 0; k < sw->naxes; k++) {
+		const struct axis *a = &sw->ax[k];
+		long i = sweep_axis_index(sw, id, k);
+		struct hb_scene_error e;
+
+		if (a->num != NULL) {
+			if (hb_scene_set_number(out, a->key, a->num[i], &e) == HB_OK)
+				continue;
+			hb_scene_error_str(&e, m, sizeof m);
+		} else {
+			m[0] = '\0';
+			if (hb_scene_set(out, a->key, a->val[i], m, sizeof m) == HB_OK)
+				continue;
+		}
+		return hb_status_set(msg, n, HB_EINVAL, "point %ld: %s=%s: %s", id, a->key,
+		                     sweep_axis_text(a, i, t, sizeof t), m);
+	}
 	return HB_OK;
 }
 
@@ -475,18 +560,10 @@ int
 hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n)
 {
 	char m[512], t[64];
+	int rc;
 
-	if (id < 0 || id >= hb_sweep_npoints(sw))
-		return hb_status_set(msg, n, HB_EINVAL, "point %ld: no such point", id);
-	*out = sw->base;
-	for (int k = 0; k < sw->naxes; k++) {
-		const char *v = axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t);
-
-		m[0] = '\0';
-		if (hb_scene_set(out, sw->ax[k].key, v, m, sizeof m) != HB_OK)
-			return hb_status_set(msg, n, HB_EINVAL, "point %ld: %s=%s: %s", id,
-			                  sw->ax[k].key, v, m);
-	}
+	if ((rc = point_values(sw, id, out, msg, n)) != HB_OK)
+		return rc;
 	m[0] = '\0';
 	if (hb_scene_validate(out, m, sizeof m) != HB_OK) {
 		char vals[512] = "";
@@ -495,7 +572,7 @@ hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, c
 		for (int k = 0; k < sw->naxes && l < sizeof vals; k++)
 			l += (size_t)snprintf(vals + l, sizeof vals - l, "%s%s=%s", k ? " " : "",
 			                      sw->ax[k].key,
-			                      axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t));
+			                      sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t));
 		return hb_status_set(msg, n, HB_EINVAL, "point %ld (%s): %s", id, vals, m);
 	}
 	return HB_OK;
@@ -510,6 +587,13 @@ hb_sweep_check(const struct hb_sweep *sw, char *msg, size_t n)
 	if (np == 0)
 		return hb_status_set(msg, n, HB_EINVAL, "nothing to vary; expected at least one "
 		                  "--vary KEY=SPEC");
+	if (sw->rf.on) {
+		/* The grid's points; those between are in ranges of valid values. */
+		for (long g = 0; g < sweep_refine_grid_points(sw); g++)
+			if (hb_sweep_point_scene(sw, sweep_refine_grid_id(sw, g), &sc, msg, n) != HB_OK)
+				return HB_EINVAL;
+		return HB_OK;
+	}
 	for (long id = 0; id < np; id++)
 		if (hb_sweep_point_scene(sw, id, &sc, msg, n) != HB_OK)
 			return HB_EINVAL;
@@ -526,10 +610,13 @@ hb_sweep_spec_format(const struct hb_sweep *sw, char *buf, size_t n)
 	for (int k = 0; k < sw->naxes; k++)
 		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
 		                        "; sweep: --vary %s=%s\n", sw->ax[k].key, sw->ax[k].spec);
+	if (sw->rf.on)
+		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
+		                        "; sweep: --refine %s\n", sw->rf.spec);
 	return len;
 }
 
-/* id, the axes, status, message, the run observables (observables.h), cpu_s. */
+/* id, the axes, status, message, the run observables (observables.h), [refined,] cpu_s. */
 size_t
 hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n)
 {
@@ -543,7 +630,8 @@ hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n)
 	for (int k = 0; k < HB_OBS_COUNT; k++)
 		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
 		                        ",%s", hb_observables[k].name);
-	len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0, ",cpu_s");
+	len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0, "%s,cpu_s",
+	                        sw->rf.on ? ",refined" : "");
 	return len;
 }
 
@@ -557,7 +645,7 @@ runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s, do
 	fprintf(f, "r,%ld", id);
 	for (int k = 0; k < sw->naxes; k++) {
 		fputc(',', f);
-		csv_put_field(f, axis_text(&sw->ax[k], axis_index(sw, id, k), t, sizeof t));
+		csv_put_field(f, sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t));
 	}
 	fprintf(f, ",%s,", failed ? "failed" : "ok");
 	csv_put_field(f, failed && hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_sim_end_str(s));
@@ -573,21 +661,45 @@ runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s, do
 	fputc('\n', f);
 }
 
+/* A stream on w's buffer, emptied (opened on first use). */
+static FILE *
+wbuf_stream(FILE **f, char **buf, size_t *len)
+{
+	if (*f == NULL)
+		*f = open_memstream(buf, len);
+	else if (fseeko(*f, 0, SEEK_SET) != 0)
+		return NULL;
+	return *f;
+}
+
+void
+sweep_wbuf_free(struct sweep_wbuf *w)
+{
+	if (w->coll != NULL)
+		fclose(w->coll);
+	if (w->blk != NULL)
+		fclose(w->blk);
+	free(w->cbuf);
+	free(w->bbuf);
+	memset(w, 0, sizeof *w);
+}
+
+/* See sweep_impl.h. */
 int
-hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed,
-                  char *msg, size_t n)
+sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, char **out,
+                      int *failed, char *msg, size_t n)
 {
 	double c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
 	struct hb_scene sc;
 	struct hb_sim *s;
-	char *coll = NULL, *blk = NULL, m[512];
-	size_t clen = 0, blen = 0;
+	char m[512];
 	FILE *f;
 	int rc;
 
 	*out = NULL;
 	*failed = 0;
-	if ((rc = hb_sweep_point_scene(sw, id, &sc, msg, n)) != HB_OK)
+	/* Not validated here: hb_sim_new validates (and hb_sweep_check did). */
+	if ((rc = point_values(sw, id, &sc, msg, n)) != HB_OK)
 		return rc;
 	m[0] = '\0';
 	s = hb_sim_new(&sc, m, sizeof m);
@@ -597,44 +709,49 @@ hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed
 	*failed = hb_sim_end(s) == HB_SIM_END_FAIL;
 
 	/* The collisions exactly as --collisions writes them, each row prefixed. */
-	f = open_memstream(&coll, &clen);
-	if (f == NULL) {
+	if ((f = wbuf_stream(&w->coll, &w->cbuf, &w->clen)) == NULL) {
 		hb_sim_free(s);
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
-	rc = hb_csv_stream_collisions(f, s, m, sizeof m);
-	if (fclose(f) != 0 || rc != HB_OK) {
-		free(coll);
+	rc = hb_csv_stream_collisions(f, s, m, sizeof m);   /* flushes: cbuf holds clen bytes */
+	if (rc != HB_OK || w->cbuf == NULL) {
 		hb_sim_free(s);
 		return hb_status_set(msg, n, HB_ENOMEM, "point %ld: collisions: %s", id, m);
 	}
-	f = open_memstream(&blk, &blen);
-	if (f == NULL) {
-		free(coll);
+	if ((f = wbuf_stream(&w->blk, &w->bbuf, &w->blen)) == NULL) {
 		hb_sim_free(s);
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
 	{
-		const char *p = strchr(coll, '\n');    /* skip the header */
+		const char *p = memchr(w->cbuf, '\n', w->clen), *end = w->cbuf + w->clen;
 
-		p = p ? p + 1 : coll + clen;
-		while (*p) {
-			const char *e = strchr(p, '\n');
-			size_t l = e ? (size_t)(e - p) : strlen(p);
+		p = p ? p + 1 : end;    /* skip the header */
+		while (p < end) {
+			const char *e = memchr(p, '\n', (size_t)(end - p));
+			size_t l = e ? (size_t)(e - p) : (size_t)(end - p);
 
 			fprintf(f, "c,%ld,%.*s\n", id, (int)l, p);
 			p += l + (e != NULL);
 		}
 	}
-	free(coll);
 	runs_row(f, sw, id, s, clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0);
 	hb_sim_free(s);
-	if (fclose(f) != 0 || blk == NULL) {
-		free(blk);
+	if (fflush(f) != 0 || ferror(f) || w->bbuf == NULL || (*out = malloc(w->blen + 1)) == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-	}
-	*out = blk;
+	memcpy(*out, w->bbuf, w->blen);
+	(*out)[w->blen] = '\0';
 	return HB_OK;
+}
+
+int
+hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed,
+                  char *msg, size_t n)
+{
+	struct sweep_wbuf w = { 0 };
+	int rc = sweep_point_block_buf(sw, id, &w, out, failed, msg, n);
+
+	sweep_wbuf_free(&w);
+	return rc;
 }
 
 const struct hb_scene *

@@ -7,6 +7,15 @@
  * by hb_sim_advance in slices of SLICE_STEPS accepted steps so that a worker
  * sees a cancellation within one slice.  Results go into arrays under a
  * mutex; hb_sweep_curve_poll copies them and never waits for a point.
+ *
+ * Boundaries (hb_sweep_curve_start_refined).  Once two neighbouring points
+ * are done and their classes differ (as --refine classes them:
+ * sweep_refine_class, the observable's existence, or a whole observable's
+ * value), the interval is a bracket; a worker with no point left takes a
+ * bracket and bisects it on the lattice of the range (sweep_refine.c: the
+ * points of FROM:TO:M, every one bit-identical to that uniform sweep) until
+ * its ends are one lattice step apart.  A midpoint of a third class splits
+ * the bracket in two.  The midpoints are not points of the curve.
  */
 #include <math.h>
 #include <pthread.h>
@@ -28,8 +37,19 @@
 /* The per-collision observables; the run observables are named by their table. */
 static const char *const obs_names[HB_CURVE_RUN] = { "e", "v_i", "x_c_r" };
 
+struct bracket {
+	long lo, hi;         /* lattice ids */
+	long clo, chi;       /* their classes */
+	int busy;            /* a worker is bisecting it */
+};
+
 struct hb_sweep_curve {
 	struct hb_sweep *sw;
+	struct hb_sweep *fine;      /* the lattice (refined), or NULL */
+	struct sweep_refine rf;     /* its classes */
+	long *cls;                  /* each point's class, once done */
+	struct bracket *br;
+	long nbr, capbr;
 	char key[48];
 	int obs;
 	long coll_i, np;
@@ -86,49 +106,152 @@ hb_sweep_observe(const struct hb_sim *s, int obs, long i)
 	}
 }
 
+/*
+ * Runs point id of sw in slices; *y and *st its observable and state.
+ * Returns 1 when the curve was stopped meanwhile.
+ */
+static int
+curve_point(struct hb_sweep_curve *c, const struct hb_sweep *sw, long id, double *y, int *st)
+{
+	struct hb_scene sc;
+	struct hb_sim *s = NULL;
+	char m[256];
+	int stop = 0;
+
+	*y = NAN;
+	*st = HB_CURVE_FAILED;
+	if (hb_sweep_point_scene(sw, id, &sc, m, sizeof m) == HB_OK)
+		s = hb_sim_new(&sc, m, sizeof m);
+	while (s != NULL && hb_sim_end(s) == HB_SIM_RUNNING) {
+		if (hb_sim_advance(s, SLICE_STEPS, 0) != HB_OK)
+			break;
+		pthread_mutex_lock(&c->mu);
+		stop = c->stop;
+		pthread_mutex_unlock(&c->mu);
+		if (stop)
+			break;
+	}
+	if (s != NULL && !stop && hb_sim_end(s) != HB_SIM_RUNNING) {
+		*y = hb_sweep_observe(s, c->obs, c->coll_i);
+		*st = hb_sim_end(s) == HB_SIM_END_FAIL ? HB_CURVE_FAILED : HB_CURVE_DONE;
+	}
+	hb_sim_free(s);
+	return stop;
+}
+
+static long
+curve_class(const struct hb_sweep_curve *c, double y, int st)
+{
+	return sweep_refine_class(&c->rf, y, st == HB_CURVE_FAILED);
+}
+
+/* A bracket lo..hi (lattice ids) of classes clo, chi (under c->mu). */
+static void
+bracket_add(struct hb_sweep_curve *c, long lo, long hi, long clo, long chi)
+{
+	if (c->nbr == c->capbr) {
+		long nc = c->capbr ? 2 * c->capbr : 16;
+		struct bracket *nb = realloc(c->br, (size_t)nc * sizeof *nb);
+
+		if (nb == NULL)
+			return;   /* out of memory: that boundary is not shown */
+		c->br = nb;
+		c->capbr = nc;
+	}
+	c->br[c->nbr++] = (struct bracket){ lo, hi, clo, chi, 0 };
+}
+
+/* Point id is done: the intervals to its neighbours that are done and differ (under c->mu). */
+static void
+brackets_around(struct hb_sweep_curve *c, long id)
+{
+	for (long j = id - 1; j <= id + 1; j += 2) {
+		long a = j < id ? j : id, b = a + 1;
+
+		if (j < 0 || j >= c->np || c->state[j] == HB_CURVE_PENDING || c->cls[a] == c->cls[b])
+			continue;
+		bracket_add(c, a * c->rf.step, b * c->rf.step, c->cls[a], c->cls[b]);
+	}
+}
+
+/* Bisects bracket k to one lattice step (taken busy, under c->mu on entry and exit). */
+static int
+bisect(struct hb_sweep_curve *c, long k)
+{
+	while (c->br[k].hi - c->br[k].lo > 1) {
+		long mid = c->br[k].lo + (c->br[k].hi - c->br[k].lo) / 2, cm;
+		double y;
+		int st;
+
+		pthread_mutex_unlock(&c->mu);
+		if (curve_point(c, c->fine, mid, &y, &st)) {
+			pthread_mutex_lock(&c->mu);
+			return 1;
+		}
+		cm = curve_class(c, y, st);
+		pthread_mutex_lock(&c->mu);
+		if (cm == c->br[k].clo) {
+			c->br[k].lo = mid;
+		} else if (cm == c->br[k].chi) {
+			c->br[k].hi = mid;
+		} else {
+			/* a third class: a boundary on each side */
+			long hi = c->br[k].hi, chi = c->br[k].chi;
+
+			c->br[k].hi = mid;
+			c->br[k].chi = cm;
+			bracket_add(c, mid, hi, cm, chi);
+		}
+	}
+	c->br[k].busy = 0;
+	return 0;
+}
+
 static void *
 curve_worker(void *arg)
 {
 	struct hb_sweep_curve *c = arg;
 
 	for (;;) {
-		struct hb_scene sc;
-		struct hb_sim *s = NULL;
-		char m[256];
-		long id;
-		int st = HB_CURVE_FAILED, stop = 0;
-		double y = NAN;
+		long id, k;
+		int st;
+		double y;
 
 		pthread_mutex_lock(&c->mu);
-		if (c->stop || c->next >= c->np) {
+		if (c->stop) {
 			pthread_mutex_unlock(&c->mu);
 			return NULL;
+		}
+		if (c->next >= c->np) {
+			/* no point left: a bracket to bisect, if any */
+			for (k = 0; c->fine != NULL && k < c->nbr; k++)
+				if (!c->br[k].busy && c->br[k].hi - c->br[k].lo > 1)
+					break;
+			if (c->fine == NULL || k == c->nbr) {
+				pthread_mutex_unlock(&c->mu);
+				return NULL;
+			}
+			c->br[k].busy = 1;
+			if (bisect(c, k)) {
+				pthread_mutex_unlock(&c->mu);
+				return NULL;
+			}
+			pthread_mutex_unlock(&c->mu);
+			continue;
 		}
 		id = c->next++;
 		pthread_mutex_unlock(&c->mu);
 
-		if (hb_sweep_point_scene(c->sw, id, &sc, m, sizeof m) == HB_OK)
-			s = hb_sim_new(&sc, m, sizeof m);
-		while (s != NULL && hb_sim_end(s) == HB_SIM_RUNNING) {
-			if (hb_sim_advance(s, SLICE_STEPS, 0) != HB_OK)
-				break;
-			pthread_mutex_lock(&c->mu);
-			stop = c->stop;
-			pthread_mutex_unlock(&c->mu);
-			if (stop)
-				break;
-		}
-		if (s != NULL && !stop && hb_sim_end(s) != HB_SIM_RUNNING) {
-			y = hb_sweep_observe(s, c->obs, c->coll_i);
-			st = hb_sim_end(s) == HB_SIM_END_FAIL ? HB_CURVE_FAILED : HB_CURVE_DONE;
-		}
-		hb_sim_free(s);
-		if (stop)
+		if (curve_point(c, c->sw, id, &y, &st))
 			return NULL;
 		pthread_mutex_lock(&c->mu);
 		c->y[id] = y;
 		c->state[id] = st;
 		c->done++;
+		if (c->fine != NULL) {
+			c->cls[id] = curve_class(c, y, st);
+			brackets_around(c, id);
+		}
 		pthread_mutex_unlock(&c->mu);
 	}
 }
@@ -145,6 +268,9 @@ hb_sweep_curve_free(struct hb_sweep_curve *c)
 		pthread_join(c->th[i], NULL);
 	pthread_mutex_destroy(&c->mu);
 	hb_sweep_free(c->sw);
+	hb_sweep_free(c->fine);
+	free(c->cls);
+	free(c->br);
 	free(c->x);
 	free(c->y);
 	free(c->state);
@@ -154,6 +280,13 @@ hb_sweep_curve_free(struct hb_sweep_curve *c)
 struct hb_sweep_curve *
 hb_sweep_curve_start(const struct hb_scene *base, const char *key, const char *spec, int obs,
                   long coll_i, int jobs, char *msg, size_t n)
+{
+	return hb_sweep_curve_start_refined(base, key, spec, obs, coll_i, 0, jobs, msg, n);
+}
+
+struct hb_sweep_curve *
+hb_sweep_curve_start_refined(const struct hb_scene *base, const char *key, const char *spec,
+                             int obs, long coll_i, double tol, int jobs, char *msg, size_t n)
 {
 	struct hb_sweep_curve *c;
 	char arg[512], v[64];
@@ -187,6 +320,24 @@ hb_sweep_curve_start(const struct hb_scene *base, const char *key, const char *s
 		return NULL;
 	}
 	c->np = hb_sweep_npoints(c->sw);
+	if (tol > 0) {
+		/* The lattice of the range (the classes: those of obs, as --refine's) */
+		char rs[64];
+
+		cnum_snprintf(rs, sizeof rs, "collisions:%.17g", tol);
+		if ((c->fine = hb_sweep_new(base, msg, n)) == NULL ||
+		    hb_sweep_vary(c->fine, arg, msg, n) != HB_OK ||
+		    hb_sweep_refine(c->fine, rs, msg, n) != HB_OK ||
+		    (c->cls = calloc((size_t)c->np, sizeof *c->cls)) == NULL) {
+			if (c->fine != NULL && c->cls == NULL && msg != NULL && strstr(msg, "refine") == NULL)
+				hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+			hb_sweep_curve_free(c);
+			return NULL;
+		}
+		c->rf = c->fine->rf;
+		c->rf.op = 0;
+		c->rf.obs = obs >= HB_CURVE_RUN ? obs - HB_CURVE_RUN : HB_OBS_T_PC; /* existence */
+	}
 	c->x = malloc((size_t)c->np * sizeof *c->x);
 	c->y = malloc((size_t)c->np * sizeof *c->y);
 	c->state = calloc((size_t)c->np, sizeof *c->state);
@@ -219,6 +370,28 @@ long
 hb_sweep_curve_npoints(const struct hb_sweep_curve *c)
 {
 	return c->np;
+}
+
+long
+hb_sweep_curve_boundaries(struct hb_sweep_curve *c, double *lo, double *hi, int *located,
+                          long n)
+{
+	long nb;
+
+	if (c->fine == NULL)
+		return 0;
+	pthread_mutex_lock(&c->mu);
+	nb = c->nbr;
+	for (long i = 0; i < nb && i < n; i++) {
+		if (lo)
+			lo[i] = c->fine->ax[0].num[c->br[i].lo];
+		if (hi)
+			hi[i] = c->fine->ax[0].num[c->br[i].hi];
+		if (located)
+			located[i] = c->br[i].hi - c->br[i].lo <= 1;
+	}
+	pthread_mutex_unlock(&c->mu);
+	return nb;
 }
 
 long

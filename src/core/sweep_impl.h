@@ -6,13 +6,126 @@
 #define HYBOUNCE_SWEEP_IMPL_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include <sys/types.h>
 #include "hybounce/scene.h"
 #include "hybounce/sim.h"
-
-struct hb_sweep;
+#include "hybounce/sweep.h"
 
 #define SWEEP_SPEC_NAME "sweep.preset"
+#define SWEEP_MAX_POINTS 1000000000L
+#define SWEEP_MAX_AXES 16
+
+struct axis {
+	char key[48];
+	char spec[256];   /* as given, after '=' */
+	long n;           /* values (a refined axis: those of its lattice) */
+	char **val;       /* a list's n canonical texts, or NULL */
+	double *num;      /* a range's n canonical values, or NULL */
+	/* where a range's value is stored in the scene (sweep.c: fast_ready) */
+	size_t off;       /* a double at this offset of struct hb_scene, or */
+	int par;          /* law parameter par (-1: off) */
+};
+
+/*
+ * --refine (sweep_refine.c): the classes of a run that a boundary
+ * separates, and the lattice the boundaries are located on.  A refined
+ * axis FROM:TO:N holds the M = (N - 1) * 2^levels + 1 values of
+ * FROM:TO:M (the same doubles as a uniform sweep of M values); the grid
+ * of the spec is every step-th of them.
+ */
+struct sweep_refine {
+	int on;
+	int obs;          /* observables.h index */
+	int op;           /* 0: the value's class; '<' or '>': against thr */
+	double thr;
+	double tol;       /* of each axis's span */
+	int levels;       /* bisections from the grid to the lattice */
+	long step;        /* 2^levels */
+	long grid[2];     /* N of each axis */
+	char spec[128];   /* as given */
+};
+
+struct hb_sweep {
+	struct hb_scene base;
+	long max_points;          /* the largest product accepted (hb_sweep_set_max_points) */
+	char more[128];           /* how to ask for more, for the refusal */
+	int naxes;
+	struct axis ax[SWEEP_MAX_AXES];
+	struct sweep_refine rf;
+	/*
+	 * When every axis is a range of a plain number (a double of the scene
+	 * or a law parameter): the base with each axis's first value set (its
+	 * flags, such as a material given, set too), into which a point writes
+	 * its values before the scene is derived once (sweep.c: point_values).
+	 */
+	int fast;
+	struct hb_scene fast_base;
+};
+
+/* The canonical text of value i of axis a (in buf for a range's number). */
+const char *
+sweep_axis_text(const struct axis *a, long i, char *buf, size_t n);
+
+/* Index of axis k at point id (row-major, the last axis fastest). */
+long
+sweep_axis_index(const struct hb_sweep *sw, long id, int k);
+
+/* The scene on which axis k's values are checked: base + earlier axes' first values. */
+void
+sweep_check_scene(const struct hb_sweep *sw, int k, struct hb_scene *sc);
+
+/* A range FROM:TO:N[:log] (a->spec) into a->num; others: the other axes' points. */
+int
+sweep_parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw,
+            double others, char *msg, size_t n);
+
+/*
+ * The class of a point for --refine: points of one class are on the same
+ * side of every boundary.  v is the observable's value (NAN: none).
+ */
+long
+sweep_refine_class(const struct sweep_refine *rf, double v, int failed);
+
+/*
+ * The value of observable obs (observables.h) and whether the point
+ * failed, read from a journal block's runs row ("r,ID,...").  HB_EINVAL
+ * for a block without one.
+ */
+int
+sweep_block_observable(const struct hb_sweep *sw, const char *blk, size_t len, int obs,
+                       double *v, int *failed);
+
+/* The lattice id of point g of a refined sweep's grid (row-major over the
+ * grid of the specs), and the number of grid points. */
+long
+sweep_refine_grid_id(const struct hb_sweep *sw, long g);
+long
+sweep_refine_grid_points(const struct hb_sweep *sw);
+
+/* The header of the collisions CSV (--collisions) of scene sc, no newline. */
+int
+sweep_collisions_header(const struct hb_scene *sc, char *buf, size_t n, char *msg, size_t mn);
+
+/* hb_sweep_run for a refined sweep (sweep_refine_run.c). */
+int
+sweep_refine_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *msg,
+                 size_t n);
+
+/*
+ * The worker threads of hb_sweep_run: computes, on o->jobs threads, the
+ * points ids[0 .. nids) (ids NULL: the points first, first + step, ...
+ * below np that done does not hold, npending of them), appending each
+ * block to the journal fd (jpath in messages) in the order they complete,
+ * then calling got(ctx, id, blk, len) when got is not NULL; pr is
+ * counted and reported (o->progress).  Returns HB_OK, HB_EDONE (cancelled;
+ * the points in hand are journaled), or an error with msg.
+ */
+int
+sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int fd,
+              const char *jpath, const long *ids, long nids, const unsigned char *done,
+              long first, long step, long npending, struct hb_sweep_progress *pr, double t0,
+              int (*got)(void *, long, const char *, size_t), void *ctx, char *msg, size_t n);
 
 /* The whole of a file into a malloc'd string (*len bytes), read once and
  * bounded (input.h).  NULL with msg on failure; errno ENOENT when absent. */
@@ -29,6 +142,40 @@ int
 sweep_journal_scan(const char *path, long npoints, int trunc,
                    int (*seen)(void *, long, off_t, size_t), void *ctx, char *msg, size_t n);
 
+/* write(2) of the whole of p (EINTR retried); 0, or -1 with errno. */
+int
+sweep_write_all(int fd, const char *p, size_t len);
+
+/* DIR/points.journal for one shard, DIR/shard-K-of-N.journal otherwise. */
+void
+sweep_journal_name(char *buf, size_t n, const char *dir, long k, long nshards);
+
+/*
+ * An exclusive lock on the journal open as fd (flock; a second process on
+ * the same shard is refused, HB_EIO).  fd < 0: the open's errno.
+ */
+int
+sweep_journal_lock(int fd, const char *path, char *msg, size_t n);
+
+/*
+ * A worker's buffers for point blocks, reused from point to point (two
+ * open_memstream(3) a point cost about 18k instructions, more than a
+ * cheap point's whole run).  Zeroed to start; sweep_wbuf_free at the end.
+ */
+struct sweep_wbuf {
+	FILE *coll, *blk;
+	char *cbuf, *bbuf;
+	size_t clen, blen;
+};
+
+void
+sweep_wbuf_free(struct sweep_wbuf *w);
+
+/* hb_sweep_point_block with w's buffers; the scene is validated by hb_sim_new alone. */
+int
+sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, char **out,
+                      int *failed, char *msg, size_t n);
+
 /* The base scene of a sweep (the preset and --set, before any axis). */
 const struct hb_scene *
 sweep_base(const struct hb_sweep *sw);
@@ -38,6 +185,7 @@ sweep_base(const struct hb_sweep *sw);
  * (hb_sweep_prepare_dir checked it): its values are not made again.
  */
 int
-sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char *msg, size_t n);
+sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
+                 const struct hb_sweep_sink *sink, void *ctx, char *msg, size_t n);
 
 #endif

@@ -221,9 +221,9 @@ read_block(int fd, off_t off, char **buf, size_t *cap)
 	}
 }
 
-/* The collisions header of --collisions (from an empty run's CSV). */
-static int
-collisions_header(const struct hb_scene *sc, char *buf, size_t n, char *msg, size_t mn)
+/* See sweep_impl.h (from an empty run's CSV). */
+int
+sweep_collisions_header(const struct hb_scene *sc, char *buf, size_t n, char *msg, size_t mn)
 {
 	struct hb_sim *s = hb_sim_new(sc, msg, mn);
 	char *t = NULL;
@@ -279,6 +279,10 @@ load_spec(const char *dir, struct hb_scene *sc, char *msg, size_t n)
 		hb_sweep_free(sw);
 		sw = NULL;
 	}
+	if (sw != NULL && hb_sweep_refine_from_preset(sw, text, path, msg, n) != HB_OK) {
+		hb_sweep_free(sw);
+		sw = NULL;
+	}
 	if (sw != NULL && hb_sweep_npoints(sw) == 0) {
 		hb_status_set(msg, n, HB_EINVAL, "%s: no '; sweep: --vary' line", path);
 		hb_sweep_free(sw);
@@ -297,19 +301,34 @@ hb_sweep_merge(const char *dir, char *msg, size_t n)
 int
 hb_sweep_merge_shards(const char *dir, long nshards, char *msg, size_t n)
 {
+	return hb_sweep_merge_to(dir, nshards, NULL, NULL, msg, n);
+}
+
+int
+hb_sweep_merge_to(const char *dir, long nshards, const struct hb_sweep_sink *sink, void *ctx,
+                  char *msg, size_t n)
+{
 	struct hb_scene sc;
 	struct hb_sweep *sw = load_spec(dir, &sc, msg, n);
 	int rc;
 
 	if (sw == NULL)
 		return HB_EINVAL;
-	rc = sweep_merge_into(sw, dir, nshards, msg, n);
+	if (hb_sweep_refined(sw)) {
+		hb_sweep_free(sw);
+		return hb_status_set(msg, n, HB_EINVAL, "%s holds a refined sweep (--refine), which "
+		                     "runs on one machine and merges itself; expected: hybounce "
+		                     "sweep %s/" SWEEP_SPEC_NAME " --out %s, which resumes it", dir,
+		                     dir, dir);
+	}
+	rc = sweep_merge_into(sw, dir, nshards, sink, ctx, msg, n);
 	hb_sweep_free(sw);
 	return rc;
 }
 
 int
-sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char *msg, size_t n)
+sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
+                 const struct hb_sweep_sink *sink, void *ctx, char *msg, size_t n)
 {
 	const struct hb_scene *sc = sweep_base(sw);
 	struct index x = { 0 };
@@ -317,8 +336,8 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char 
 	int nnames = 0, *fds = NULL, rc = HB_OK;
 	struct hb_atomic_set set;
 	FILE *runs = NULL, *coll = NULL;
-	int set_open = 0;
-	char *blk = NULL;
+	int set_open = 0, sink_open = 0;
+	char *blk = NULL, chdr[4300];
 	size_t cap = 0;
 	long np = hb_sweep_npoints(sw);
 
@@ -367,6 +386,16 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char 
 		                nnames == 1 ? "" : "s");
 		goto out;
 	}
+	hb_sweep_runs_header(sw, hdr, sizeof hdr);
+	if ((rc = sweep_collisions_header(sc, path, sizeof path, msg, n)) != HB_OK)
+		goto out;
+	snprintf(chdr, sizeof chdr, "id,%s", path);
+	if (sink != NULL) {
+		if ((rc = sink->begin(ctx, hdr, chdr, msg, n)) != HB_OK)
+			goto out;
+		sink_open = 1;
+		goto rows;
+	}
 	hb_atomic_begin(&set);
 	set_open = 1;
 	snprintf(path, sizeof path, "%s/runs.csv", dir);
@@ -379,11 +408,9 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char 
 		rc = HB_EIO;
 		goto out;
 	}
-	hb_sweep_runs_header(sw, hdr, sizeof hdr);
 	fprintf(runs, "%s\n", hdr);
-	if ((rc = collisions_header(sc, hdr, sizeof hdr, msg, n)) != HB_OK)
-		goto out;
-	fprintf(coll, "id,%s\n", hdr);
+	fprintf(coll, "%s\n", chdr);
+rows:
 	for (long id = 0; id < np && rc == HB_OK; id++) {
 		int fi = (int)(x.at[id] & 0xffff);
 		const char *p;
@@ -396,11 +423,21 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, char 
 			const char *end = strchr(p, '\n');
 			size_t l = (size_t)(end - p) + 1;
 
-			fwrite(p + 2, 1, l - 2, p[0] == 'r' ? runs : coll);
+			if (sink != NULL &&
+			    (rc = sink->row(ctx, p[0] == 'r', p + 2, l - 3, msg, n)) != HB_OK)
+				break;
+			if (sink == NULL)
+				fwrite(p + 2, 1, l - 2, p[0] == 'r' ? runs : coll);
 			p += l;
 		}
 	}
 out:
+	if (sink_open) {
+		int e = sink->end(ctx, rc == HB_OK, rc == HB_OK ? msg : NULL, rc == HB_OK ? n : 0);
+
+		if (rc == HB_OK)
+			rc = e;
+	}
 	if (set_open) {
 		if (rc == HB_OK)
 			rc = hb_atomic_commit(&set, msg, n);   /* both files, or neither */

@@ -15,18 +15,12 @@
  * from those bits), and the merge keeps 8 bytes per point, so memory
  * stays flat in the number of points computed.
  *
- * Threads.  Workers take the next id under a mutex, run the point on their
- * own scene and sim (hb_sweep_point_block), and queue the block (the queue
- * is unbounded: a worker never waits for the writer); the calling thread
- * writes blocks and reports progress.  The mutex is held for a few
- * instructions per point and the writer is signalled after it is released.  The results do not depend on
- * the number of threads or the order of completion: each point's bytes come
- * from its own run alone, and the files are sorted by id.
+ * The worker threads are in sweep_pool.c; a refined sweep (--refine) in
+ * sweep_refine_run.c.
  */
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
-#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -103,8 +97,9 @@ strip_provenance(char *text, size_t len)
 	return w;
 }
 
-static int
-write_all(int fd, const char *p, size_t len)
+/* See sweep_impl.h. */
+int
+sweep_write_all(int fd, const char *p, size_t len)
 {
 	while (len > 0) {
 		ssize_t w = write(fd, p, len);
@@ -296,8 +291,9 @@ sweep_journal_scan(const char *path, long npoints, int trunc,
 	return rc;
 }
 
-static void
-journal_name(char *buf, size_t n, const char *dir, long k, long nshards)
+/* See sweep_impl.h. */
+void
+sweep_journal_name(char *buf, size_t n, const char *dir, long k, long nshards)
 {
 	if (nshards <= 1)
 		snprintf(buf, n, "%s/points.journal", dir);
@@ -316,8 +312,8 @@ struct doneset {
  * refused instead of appending beside it).  A file system without locks is
  * taken as it is.  fd < 0: the open's errno.
  */
-static int
-journal_lock(int fd, const char *path, char *msg, size_t n)
+int
+sweep_journal_lock(int fd, const char *path, char *msg, size_t n)
 {
 	if (fd < 0)
 		return hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
@@ -342,108 +338,51 @@ mark_done(void *ctx, long id, off_t off, size_t len)
 	return HB_OK;
 }
 
-/* ------------------------------------------------------------------ */
-/* Worker threads                                                      */
-
-struct result {
-	struct result *next;
-	long id;
-	char *blk;
-	int failed, rc;
-	double cpu;
-	char msg[256];
-};
-
-struct pool {
-	const struct hb_sweep *sw;
-	pthread_mutex_t mu;
-	pthread_cond_t cv;
-	const unsigned char *done;  /* the journal's points: one bit each */
-	long npending;              /* points of the shard to compute */
-	long next, step, np;        /* the next id to look at, the shard count, the points */
-	int stop;
-	struct result *head, *tail;
-};
-
-static void *
-worker(void *arg)
-{
-	struct pool *p = arg;
-
-	for (;;) {
-		struct result *r;
-		long id;
-		double c0;
-
-		pthread_mutex_lock(&p->mu);
-		while (p->next < p->np && (p->done[p->next / 8] & (1u << (p->next % 8))))
-			p->next += p->step;   /* in the journal already */
-		if (p->stop || p->next >= p->np) {
-			pthread_mutex_unlock(&p->mu);
-			return NULL;
-		}
-		id = p->next;
-		p->next += p->step;
-		pthread_mutex_unlock(&p->mu);
-
-		r = calloc(1, sizeof *r);
-		c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
-		if (r != NULL) {
-			r->id = id;
-			r->rc = hb_sweep_point_block(p->sw, id, &r->blk, &r->failed, r->msg,
-			                          sizeof r->msg);
-			r->cpu = clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
-		}
-		pthread_mutex_lock(&p->mu);
-		if (r == NULL) {
-			p->stop = 2;  /* out of memory: the caller says so */
-		} else {
-			if (p->tail)
-				p->tail->next = r;
-			else
-				p->head = r;
-			p->tail = r;
-		}
-		pthread_mutex_unlock(&p->mu);
-		/*
-		 * After the unlock: signalled under the mutex, the woken writer
-		 * would block at once on the mutex this thread still holds (half
-		 * of its sleeps, measured with perf sched).
-		 */
-		pthread_cond_signal(&p->cv);
-	}
-}
-
 int
 hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *msg, size_t n)
 {
 	long np = hb_sweep_npoints(sw), k = o->shard_k, ns = o->shard_n < 1 ? 1 : o->shard_n;
 	struct hb_sweep_progress pr;
 	struct doneset ds = { 0 };
-	struct pool p;
-	pthread_t *th = NULL;
-	long got = 0, nth = 0;
+	long npending = 0;
 	char jpath[4200];
-	int fd = -1, rc, cancelled = 0;
+	int fd = -1, rc;
 	double t0 = clock_seconds(CLOCK_MONOTONIC);
 
 	memset(&pr, 0, sizeof pr);
-	memset(&p, 0, sizeof p);
 	if (np == 0)
 		return hb_status_set(msg, n, HB_EINVAL, "nothing to vary; expected at least one "
 		                  "--vary KEY=SPEC");
 	if (k < 0 || k >= ns)
 		return hb_status_set(msg, n, HB_EINVAL, "--shard %ld/%ld: accepted: K/N with "
 		                  "0 <= K < N", k, ns);
+	if (sw->rf.on) {
+		if (ns > 1)
+			return hb_status_set(msg, n, HB_EINVAL, "--shard: a refined sweep (--refine) "
+			                     "runs on one machine, its rounds one after another; "
+			                     "accepted: --refine without --shard");
+		return sweep_refine_run(sw, o, msg, n);
+	}
 	if ((rc = hb_sweep_prepare_dir_with(sw, o->dir, o->provenance, msg, n)) != HB_OK)
 		return rc;
-	journal_name(jpath, sizeof jpath, o->dir, k, ns);
+	sweep_journal_name(jpath, sizeof jpath, o->dir, k, ns);
 	if (ns == 1 && access(jpath, F_OK) != 0 && errno == ENOENT) {
 		char r[4200], c[4200];
 
 		/* Merged and its journal removed: the sweep is complete. */
 		snprintf(r, sizeof r, "%s/runs.csv", o->dir);
 		snprintf(c, sizeof c, "%s/collisions.csv", o->dir);
+		if (o->sink != NULL) {
+			int csv = access(r, F_OK) == 0 && access(c, F_OK) == 0;
+
+			snprintf(r, sizeof r, "%s/%s", o->dir, o->sink->name);
+			if (access(r, F_OK) != 0 && csv)
+				return hb_status_set(msg, n, HB_EINVAL, "--out %s: the folder holds this "
+				                     "sweep complete as runs.csv and collisions.csv, not "
+				                     "%s; expected a new folder for it", o->dir,
+				                     o->sink->name);
+			snprintf(c, sizeof c, "%s", r);
+		}
 		if (access(r, F_OK) == 0 && access(c, F_OK) == 0) {
 			pr.total = pr.done = pr.resumed = np;
 			if (o->progress)
@@ -456,7 +395,7 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	/* One process a journal: locked before its torn end is cut off. */
 	fd = open(jpath, O_WRONLY | O_APPEND | O_CLOEXEC);
-	if (fd >= 0 && (rc = journal_lock(fd, jpath, msg, n)) != HB_OK)
+	if (fd >= 0 && (rc = sweep_journal_lock(fd, jpath, msg, n)) != HB_OK)
 		goto out;
 	if ((rc = sweep_journal_scan(jpath, np, 1, mark_done, &ds, msg, n)) != HB_OK)
 		goto out;
@@ -464,118 +403,20 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 	for (long id = k; id < np; id += ns)
 		pr.total++;
 	for (long id = k; id < np; id += ns)
-		p.npending += !(ds.bits[id / 8] & (1u << (id % 8)));
-	pr.resumed = pr.done = pr.total - p.npending;
+		npending += !(ds.bits[id / 8] & (1u << (id % 8)));
+	pr.resumed = pr.done = pr.total - npending;
 	if (o->progress)
 		o->progress(o->ctx, &pr);
 
-	if (p.npending > 0) {
+	if (npending > 0) {
 		if (fd < 0 && ((fd = open(jpath, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644)) < 0 ||
-		               (rc = journal_lock(fd, jpath, msg, n)) != HB_OK)) {
+		               (rc = sweep_journal_lock(fd, jpath, msg, n)) != HB_OK)) {
 			if (fd < 0)
 				rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 			goto out;
 		}
-		p.sw = sw;
-		p.done = ds.bits;
-		p.next = k;
-		p.step = ns;
-		p.np = np;
-		pthread_mutex_init(&p.mu, NULL);
-		pthread_cond_init(&p.cv, NULL);
-		nth = o->jobs < 1 ? 1 : o->jobs;
-		if (nth > p.npending)
-			nth = p.npending;
-		th = calloc((size_t)nth, sizeof *th);
-		if (th == NULL) {
-			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-			goto threads_done;
-		}
-		for (long i = 0; i < nth; i++)
-			if (pthread_create(&th[i], NULL, worker, &p) != 0) {
-				nth = i;
-				if (nth == 0) {
-					rc = hb_status_set(msg, n, HB_ENOMEM, "cannot start a thread");
-					goto threads_done;
-				}
-				break;
-			}
-		pthread_mutex_lock(&p.mu);
-		while (got < p.npending && rc == HB_OK) {
-			struct result *r;
-
-			while (p.head == NULL && p.stop == 0 && !cancelled) {
-				struct timespec until;
-
-				if (o->cancel != NULL && *o->cancel) {
-					cancelled = 1;
-					break;
-				}
-				clock_gettime(CLOCK_REALTIME, &until);
-				until.tv_nsec += 100000000L;   /* look at *o->cancel every 0.1 s */
-				if (until.tv_nsec >= 1000000000L) {
-					until.tv_sec++;
-					until.tv_nsec -= 1000000000L;
-				}
-				pthread_cond_timedwait(&p.cv, &p.mu, &until);
-			}
-			if (cancelled || (o->cancel != NULL && *o->cancel)) {
-				cancelled = 1;
-				break;
-			}
-			if (p.head == NULL) {
-				rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-				break;
-			}
-			r = p.head;
-			p.head = r->next;
-			if (p.head == NULL)
-				p.tail = NULL;
-			pthread_mutex_unlock(&p.mu);
-			if (r->rc != HB_OK)
-				rc = hb_status_set(msg, n, r->rc, "%s", r->msg);
-			else if (write_all(fd, r->blk, strlen(r->blk)) != 0)
-				rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
-			else {
-				got++;
-				pr.done++;
-				pr.failed += r->failed;
-				pr.point_cpu += r->cpu;
-				pr.elapsed = clock_seconds(CLOCK_MONOTONIC) - t0;
-				if (o->progress)
-					o->progress(o->ctx, &pr);
-			}
-			free(r->blk);
-			free(r);
-			pthread_mutex_lock(&p.mu);
-		}
-		p.stop = p.stop ? p.stop : rc != HB_OK || cancelled;
-		pthread_mutex_unlock(&p.mu);
-threads_done:
-		for (long i = 0; i < nth; i++)
-			pthread_join(th[i], NULL);
-		while (p.head) {
-			struct result *r = p.head;
-
-			/* Stopped: the points that were finishing are kept too. */
-			if (cancelled && rc == HB_OK && r->rc == HB_OK) {
-				if (write_all(fd, r->blk, strlen(r->blk)) != 0)
-					rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
-				else {
-					pr.done++;
-					pr.failed += r->failed;
-				}
-			}
-			p.head = r->next;
-			free(r->blk);
-			free(r);
-		}
-		if (cancelled && rc == HB_OK)
-			rc = hb_status_set(msg, n, HB_EDONE, "stopped with %ld of %ld points done; "
-			                "the same command resumes", pr.done, pr.total);
-		free(th);
-		pthread_cond_destroy(&p.cv);
-		pthread_mutex_destroy(&p.mu);
+		rc = sweep_compute(sw, o, fd, jpath, NULL, 0, ds.bits, k, ns, npending, &pr, t0,
+		                   NULL, NULL, msg, n);
 		if (close(fd) != 0 && rc == HB_OK)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 		fd = -1;
@@ -587,7 +428,8 @@ threads_done:
 		fd = -1;
 	}
 	if (ns == 1) {
-		if ((rc = sweep_merge_into(sw, o->dir, 0, msg, n)) == HB_OK && unlink(jpath) != 0 &&
+		if ((rc = sweep_merge_into(sw, o->dir, 0, o->sink, o->sink_ctx, msg, n)) == HB_OK &&
+		    unlink(jpath) != 0 &&
 		    errno != ENOENT)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 	}

@@ -4,7 +4,8 @@
  * observable against the parameter, pinned curves first as ghosts (inks
  * 2..), the current curve last (ink 1), points not computed yet left out;
  * the current scene marked '@' on the curve (or '^' under its abscissa
- * while its value is not known); a log range on a logarithmic axis.
+ * while its value is not known); a log range on a logarithmic axis; the
+ * current curve's boundaries (b) as columns of '|' (':' while bisected).
  * Only reads the state.
  */
 #include <curses.h>
@@ -23,6 +24,15 @@ static double
 xmap(const struct sweep_view *v, double x)
 {
 	return v->log ? log10(fabs(x)) : x;
+}
+
+/* Where boundary i of k lies: between its two points (halfway on the axis's scale). */
+static double
+boundary_x(const struct sweep_view *v, const struct sv_curve *k, long i)
+{
+	if (v->log)
+		return copysign(sqrt(fabs(k->blo[i]) * fabs(k->bhi[i])), k->blo[i]);
+	return (k->blo[i] + k->bhi[i]) / 2;
 }
 
 static int
@@ -176,9 +186,18 @@ pane_sweep_draw(const struct app *a)
 		size_t l = strlen(line);
 		snprintf(line + l, sizeof line - l, ", %ld failed", cur->failed);
 	}
+	if (v->bounds && cur->c != NULL) {
+		size_t l = strlen(line);
+		int loc = 0;
+
+		for (long i = 0; i < cur->nb && i < SV_MAX_BOUNDS; i++)
+			loc += cur->bloc[i];
+		snprintf(line + l, sizeof line - l, ", %ld boundar%s%s", cur->nb,
+		         cur->nb == 1 ? "y" : "ies", loc < cur->nb ? ", locating" : " |");
+	}
 	tui_puts(top, 0, COLS, line, A_BOLD);
 
-	/* legend: pins, then the current curve, then the current scene */
+	/* legend: pins, then the current curve, then the current scene, then the boundaries */
 	{
 		int col = 0;
 		for (int i = 0; i <= v->npins && col < COLS; i++) {
@@ -199,8 +218,15 @@ pane_sweep_draw(const struct app *a)
 			hb_units_format(ys, sv_obs_dim(v->obs), 4, vy, sizeof vy);
 		else
 			snprintf(vy, sizeof vy, "%s", hb_sim_end(a->sim) == HB_SIM_RUNNING ? "computing" : "none");
-		snprintf(line, sizeof line, "@ scene: %s = %s, %s = %s", ki.label, vx, on, vy);
+		snprintf(line, sizeof line, "@ scene: %s = %s, %s = %s  ", ki.label, vx, on, vy);
 		tui_puts(top + 1, col, COLS - col, line, A_BOLD);
+		col += (int)strlen(line);
+		for (long i = 0; v->bounds && i < cur->nb && i < SV_MAX_BOUNDS && col < COLS; i++) {
+			hb_units_format(boundary_x(v, cur, i), ki.dim, 4, vx, sizeof vx);
+			snprintf(line, sizeof line, "%c %s  ", cur->bloc[i] ? '|' : ':', vx);
+			tui_puts(top + 1, col, COLS - col, line, ink_attr(a, 1));
+			col += (int)strlen(line);
+		}
 	}
 	if (cw < 10 || ch < 3)
 		return;
@@ -235,6 +261,14 @@ pane_sweep_draw(const struct app *a)
 	for (int i = 0; i < v->npins; i++)
 		draw_curve(c, v, &v->pin[i], i + 2);
 	draw_curve(c, v, cur, 1);
+	for (long i = 0; v->bounds && i < cur->nb && i < SV_MAX_BOUNDS; i++) {
+		int col = canvas_col(c, xmap(v, boundary_x(v, cur, i)));
+		char cell[8];
+
+		for (int row = 0; col >= 0 && row < ch; row++)
+			if (canvas_cell(c, col, row, cell) == 0)
+				canvas_mark(c, col, row, cur->bloc[i] ? '|' : ':', 1);
+	}
 	if (isfinite(xmap(v, xs))) {
 		int col = canvas_col(c, xmap(v, xs));
 		if (col >= 0 && isfinite(ys)) {
@@ -257,5 +291,6 @@ pane_sweep_draw(const struct app *a)
 	move(a->L.footer.y, 0);
 	clrtoeol();
 	tui_puts(a->L.footer.y, 0, COLS,
-	         "o:observable <>:collision r:range L:law p:pin e:export q:close ?:keys", A_REVERSE);
+	         "o:observable <>:collision r:range L:law b:boundaries p:pin e:export q:close ?:keys",
+	         A_REVERSE);
 }

@@ -6,6 +6,11 @@
  * engine's background curve (sweep_curve_*: polling never waits, freeing
  * cancels), so the screen keeps drawing while the points come in.
  *
+ * Boundaries (b): the engine bisects every interval of the current curve
+ * whose ends differ in class (the observable exists or not, or a count
+ * differs) to SV_BOUND_TOL of the range, as hybounce sweep --refine does;
+ * the pane marks them.
+ *
  * Pinning a curve keeps it (still filling in) as a ghost; changing the
  * law (L) or the range then starts a new curve to compare with.
  * Changing the parameter, observable or collision clears the pins (they
@@ -85,11 +90,16 @@ curve_poll(struct sv_curve *k)
 {
 	if (k->c == NULL)
 		return 0;
+	int locating = 0;
+
 	k->done = hb_sweep_curve_poll(k->c, k->x, k->y, k->st, k->n);
 	k->failed = 0;
 	for (long i = 0; i < k->n; i++)
 		k->failed += k->st[i] == HB_CURVE_FAILED;
-	return k->done < k->n;
+	k->nb = hb_sweep_curve_boundaries(k->c, k->blo, k->bhi, k->bloc, SV_MAX_BOUNDS);
+	for (long i = 0; i < k->nb && i < SV_MAX_BOUNDS; i++)
+		locating |= !k->bloc[i];
+	return k->done < k->n || locating;
 }
 
 static int
@@ -108,7 +118,8 @@ curve_start(struct app *a)
 	struct sv_curve k = { 0 };
 	char msg[512];
 
-	k.c = hb_sweep_curve_start(&v->base, v->key, v->spec, v->obs, v->coll, jobs(), msg, sizeof msg);
+	k.c = hb_sweep_curve_start_refined(&v->base, v->key, v->spec, v->obs, v->coll,
+	                                   v->bounds ? SV_BOUND_TOL : 0, jobs(), msg, sizeof msg);
 	if (k.c == NULL) {
 		app_msg(a, 1, "sweep not started: %s", msg);
 		return -1;
@@ -127,8 +138,9 @@ curve_start(struct app *a)
 		v->log = sp != NULL && strcmp(sp + 1, "log") == 0;
 	}
 	curve_poll(&v->cur);
-	app_msg(a, 0, "sweep: %s over %s = %s, %ld points on %d threads", hb_sweep_observable_name(v->obs),
-	        v->key, v->spec, k.n, jobs());
+	app_msg(a, 0, "sweep: %s over %s = %s, %ld points on %d threads%s",
+	        hb_sweep_observable_name(v->obs), v->key, v->spec, k.n, jobs(),
+	        v->bounds ? ", boundaries located to 1e-3 of the range (b: off)" : "");
 	return 0;
 }
 
@@ -352,6 +364,13 @@ sweep_view_key(struct app *a, int ch)
 	case 'p':
 		pin(a);
 		break;
+	case 'b':
+		v->bounds = !v->bounds;
+		if (curve_start(a) != 0)
+			v->bounds = !v->bounds;   /* refused (a list): as it was */
+		else if (!v->bounds)
+			app_msg(a, 0, "boundaries off (b: on)");
+		break;
 	case 'P':
 		pins_drop(v);
 		app_msg(a, 0, "pins cleared");
@@ -365,7 +384,7 @@ sweep_view_key(struct app *a, int ch)
 	case '?':
 	case KEY_F(1):
 		app_msg(a, 0, "sweep keys: o/O observable, < > collision, r range, R from the current "
-		        "scene, L/l law, p pin, P unpin, e export CSV, q/Esc/S close");
+		        "scene, L/l law, b boundaries, p pin, P unpin, e export CSV, q/Esc/S close");
 		break;
 	case 'L' & 0x1f: /* C-l */
 		clear();

@@ -14,7 +14,10 @@
 
 struct app;
 
-enum { SV_MAX_PINS = 3 };
+enum { SV_MAX_PINS = 3, SV_MAX_BOUNDS = 64 };
+
+/* b: boundaries located to this fraction of the range (hb_sweep_curve_start_refined). */
+#define SV_BOUND_TOL 1e-3
 
 /* One curve: the engine's computation and the last copy of its points. */
 struct sv_curve {
@@ -23,6 +26,9 @@ struct sv_curve {
 	long n, done, failed;
 	double *x, *y;
 	int *st;
+	long nb;                 /* boundaries found (the first SV_MAX_BOUNDS kept) */
+	double blo[SV_MAX_BOUNDS], bhi[SV_MAX_BOUNDS]; /* the parameter either side */
+	int bloc[SV_MAX_BOUNDS]; /* 1: located (one lattice step), 0: bisecting */
 };
 
 struct sweep_view {
@@ -37,6 +43,7 @@ struct sweep_view {
 	struct sv_curve pin[SV_MAX_PINS];
 	int npins;
 	int prompt;              /* what the open prompt is for: SV_PROMPT_* */
+	int bounds;              /* b: locate the boundaries of the current curve */
 };
 
 enum { SV_PROMPT_RANGE = 1, SV_PROMPT_EXPORT };

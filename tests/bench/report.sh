@@ -3,8 +3,10 @@
 # report.sh [DIR]: after `make bench` (DIR, default build/bench), splices the
 # per-study table (DIR/study-table.md) into docs/speed-and-accuracy.md between the
 # STUDY-TABLE markers, and writes tests/bench/REPORT.md: a header, the
-# engine summary of docs/speed-and-accuracy.md (between the ENGINE-V2 markers) and the bench's
-# own report (DIR/report.md).  Run from the top of the tree (make bench-docs).
+# engine summary of docs/speed-and-accuracy.md (between the ENGINE-V2 markers), the bench's
+# own report (DIR/report.md), tests/bench/REPORT-figures.md (the figure
+# and Python targets) and the sweep's (DIR/sweep.txt, from make
+# bench-sweep; kept from the old report when there is none).  Run from the top of the tree (make bench-docs).
 dir=${1:-build/bench}
 here=$(dirname "$0")
 for f in "$dir/study-table.md" "$dir/report.md"; do
@@ -34,5 +36,27 @@ HEAD
 	echo 'The report below is the new run (`make bench`), with the dop853 rows among the extra settings of each study.'
 	echo
 	cat "$dir/report.md"
+	# the figure and Python targets (make bench-figures, make bench-python),
+	# measured by hand: kept as written
+	echo
+	cat "$here/REPORT-figures.md"
+	# the sweep's figures (make bench-sweep), last: the latest run's, else
+	# the section as the report had it
+	if [ -r "$dir/sweep.txt" ]; then
+		echo
+		echo '## Sweeps (make bench-sweep)'
+		echo
+		echo 'The latest `make bench-sweep` (tests/bench/sweep.sh), as it printed it. The'
+		echo 'times of section 1 depend on the load of the machine (its first line gives'
+		echo 'the load average: above the processors, other programs share them); the'
+		echo 'instructions, bytes and runs of sections 2 to 4 do not.'
+		echo
+		echo '```'
+		cat "$dir/sweep.txt"
+		echo '```'
+	elif [ -r "$out" ]; then
+		echo
+		sed -n '/^## Sweeps (make bench-sweep)$/,$p' "$out"
+	fi
 } >"$out.new" && mv "$out.new" "$out"
 echo "$doc (STUDY-TABLE) and $out written"

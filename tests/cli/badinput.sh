@@ -3,7 +3,7 @@
 # The bad-input matrix: every row of tests/cli/badinput.tab is one class of
 # bad (or borderline) input, run for every front end that takes it:
 #
-#   ID ;; BATCH SWEEP FIT EXPLORER ;; FRAGMENT ;; SETUP ;; COMMAND [;; XFAIL REASON]
+#   ID ;; BATCH SWEEP FIT EXPLORER PLOT ;; FRAGMENT ;; SETUP ;; COMMAND [;; XFAIL REASON]
 #
 # The second field holds, per front end, the exit status expected from it,
 # or "-" where the row does not apply (an explorer row whose input is good
@@ -25,12 +25,13 @@
 #              --out fit.preset where ARGS give none of these
 #   explorer   hybounce ARGS, standard input and output not a terminal:
 #              bad input must be refused (exit 2) before the UI would start
+#   plot       hybounce plot ARGS, plus --out o-fig.png where ARGS give none
 #
 # each under a time limit (a hang is exit 124; MATRIX_TIMEOUT=S before $B
 # shortens it for a row that may hang).  $H is the bare binary under the
 # same limit, for a row written for one front end.  FRAGMENT "=ran" stands
 # for the front end's own line of a completed run ("ended" of the batch
-# summary, "wrote sw/runs.csv", "wrote fit.preset").
+# summary, "wrote sw/runs.csv", "wrote fit.preset", "wrote o-fig.png").
 #
 # A class passes when the command exits as expected, FRAGMENT (fixed
 # string) is in its standard error or output, nothing crashed (no signal,
@@ -46,7 +47,7 @@
 # not hold the class prints "ok - ... # TODO xfail: REASON"; once it holds,
 # it says that the mark can go.  A crash is never an expected failure.
 #
-# The four front ends run side by side, each over the whole table in
+# The five front ends run side by side, each over the whole table in
 # folders of its own; their lines follow one another.  The totals: rows
 # (distinct classes of input), classes run, crashes, refusals, expected
 # failures, files damaged or lost, commands injected.  Runs under the
@@ -120,6 +121,13 @@ done
 [ $d = 1 ] && set -- "$@" --data d.csv
 [ $f = 1 ] && set -- "$@" --free law.c
 [ $o = 1 ] && set -- "$@" --out fit.preset' 'fit "$@" --quiet'
+wrapper plot 'o=1
+for a in "$@"; do
+	case $a in
+	--out | --out=* | -o | -o?*) o=0 ;;
+	esac
+done
+[ $o = 1 ] && set -- "$@" --out o-fig.png' 'plot "$@"'
 H=$ROOT/fe/hybounce
 # A stand-in for Slurm's sbatch (rows that run what --emit slurm printed):
 # takes the options the emitted script uses (--wrap, --chdir, --output,
@@ -286,6 +294,7 @@ run_class() {
 		batch) frag1=ended ;;
 		sweep) frag1="wrote sw/runs.csv" ;;
 		fit) frag1="wrote fit.preset" ;;
+		plot) frag1="wrote o-fig.png" ;;
 		*) frag1="(=ran does not apply to $fe)" ;;
 		esac
 	fi
@@ -356,10 +365,10 @@ run_fe() {
 		*' ;; '*) cmd=${rest%% ;; *}; xfail=${rest#* ;; } ;;
 		*) cmd=$rest; xfail= ;;
 		esac
-		# shellcheck disable=SC2086 # four words
+		# shellcheck disable=SC2086 # five words
 		set -- $exits
 		bad=
-		[ $# = 4 ] || bad="$# exit fields, expected 4 (BATCH SWEEP FIT EXPLORER)"
+		[ $# = 5 ] || bad="$# exit fields, expected 5 (BATCH SWEEP FIT EXPLORER PLOT)"
 		for e in "$@"; do
 			case $e in - | [0-9] | [0-9][0-9] | [0-9]x | [0-9][0-9]x) ;; *) bad="exit field '$e'" ;; esac
 		done
@@ -391,15 +400,18 @@ run_fe() {
 		"damaged=$damaged injected=$injected xdamaged=$xdamaged xinjected=$xinjected" >"$ROOT/$fe.counts"
 }
 
-FES="batch sweep fit explorer"
+FES="batch sweep fit explorer plot"
+# BADINPUT_FES: some of them only (a table's column being written)
 k=0
 for fe in $FES; do
 	k=$((k + 1))
+	case " ${BADINPUT_FES:-$FES} " in *" $fe "*) ;; *) continue ;; esac
 	run_fe $k "$fe" >"$ROOT/$fe.tap" 2>&1 &
 done
 wait
 n=0 fails=0 crashes=0 refusals=0 xfails=0 damaged=0 injected=0 xdamaged=0 xinjected=0
 per=
+FES=${BADINPUT_FES:-$FES}
 for fe in $FES; do
 	cat "$ROOT/$fe.tap"
 	t_n=$n t_fails=$fails t_crashes=$crashes t_refusals=$refusals t_xfails=$xfails

@@ -194,7 +194,7 @@ bad() {
 }
 bad 'unknown format' 'expected a file ending in .png, .pdf, .svg or .tex' hertz-elastic --out "$T/bad.gif"
 bad 'no --out' 'no --out FILE' hertz-elastic
-bad 'unknown kind' 'expected state, observables or loop' hertz-elastic --kind heat --out "$T/bad.png"
+bad 'unknown kind' 'expected state, observables, loop or sweep' hertz-elastic --kind heat --out "$T/bad.png"
 bad 'bad --width' 'expected a length such as 3.5in' hertz-elastic --width 3.5 --out "$T/bad.png"
 bad 'bad --size' 'expected WIDTHxHEIGHT' hertz-elastic --size 1600 --out "$T/bad.png"
 bad 'bad --dpi' 'pixels per inch from 36 to 2400' hertz-elastic --dpi 0 --out "$T/bad.png"

@@ -11,6 +11,16 @@
         legend_style K N   pixels there nearest colour K of the palette
                            (black, grey and white left out), where N >= 5
         legend_shade N     pixels of the contact shade there
+    python3 plot_png.py bar FILE.png
+        (a heat map: the first frame is the map, its colour legend the
+        coloured strip right of it)
+        bar_bottom R G B / bar_top R G B
+                           the legend's colours at its ends
+        bar_rising 1|0     its grey level (0.299 R + 0.587 G + 0.114 B)
+                           rises from bottom to top (to within 3)
+        bar_grey_span N    top's grey level less bottom's
+        map_top N / map_bottom N
+                           pixels in the map within 12 of those colours
     python3 plot_png.py shade FILE.png COLLISIONS.csv T_END
         hit N / miss N     collisions whose middle (t_e + t_s) / 2 lies on
                            a shaded pixel column (in one of the frames; the
@@ -190,8 +200,38 @@ def shade(path, csv, t_end):
     print("flight_shaded %d" % dirty)
 
 
+def grey(p):
+    return 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]
+
+
+def bar(path):
+    w, h, rows = read_png(path)
+    fr = frames(w, h, rows)
+    l, r, t, b = fr[0]
+    mid = (t + b) // 2
+    x = r + 2
+    while x < w and max(rows[mid][x]) - min(rows[mid][x]) <= 40:
+        x += 1
+    x0 = x
+    while x < w and max(rows[mid][x]) - min(rows[mid][x]) > 40:
+        x += 1
+    xc = (x0 + x) // 2
+    col = [rows[y][xc] for y in range(b - 3, t + 3, -1)]   # bottom to top
+    lo, hi = col[0], col[-1]
+    print("bar_bottom %d %d %d" % lo)
+    print("bar_top %d %d %d" % hi)
+    g = [grey(p) for p in col]
+    print("bar_rising %d" % all(g[k + 1] >= g[k] - 3 for k in range(len(g) - 1)))
+    print("bar_grey_span %d" % (g[-1] - g[0]))
+    inside = [rows[y][xx] for y in range(t + 2, b - 1) for xx in range(l + 2, r - 1)]
+    print("map_top %d" % sum(1 for p in inside if near(p, hi, 12)))
+    print("map_bottom %d" % sum(1 for p in inside if near(p, lo, 12)))
+
+
 if __name__ == "__main__":
     if sys.argv[1] == "info":
         info(sys.argv[2])
+    elif sys.argv[1] == "bar":
+        bar(sys.argv[2])
     else:
         shade(sys.argv[2], sys.argv[3], float(sys.argv[4]))

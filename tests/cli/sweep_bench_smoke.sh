@@ -18,8 +18,9 @@ two='^   speed-up [0-9.]* x at --jobs 2'
 if sh tests/bench/sweep.sh --smoke "$BIN" "$T" >"$T/out" 2>&1 &&
     grep -q '^ *1  *[0-9.]*  *[0-9.]*  *100%  *[0-9.]*  *[0-9.]*  *100%$' "$T/sweep.txt" &&
     grep -q "$two" "$T/sweep.txt" && grep -q "$instr" "$T/sweep.txt" && grep -q "$perpoint" "$T/sweep.txt" &&
-    grep -q '^       200 points: peak RSS  *[0-9.]* MB' "$T/sweep.txt"; then
-	echo "ok - the sweep benchmark (make bench-sweep) runs: scaling, overhead, memory"
+    grep -q '^       200 points: peak RSS  *[0-9.]* MB' "$T/sweep.txt" &&
+    grep -q '^   1 boundary located to 0.00078 of the axis (6 bisections) in [0-9]* runs' "$T/sweep.txt"; then
+	echo "ok - the sweep benchmark (make bench-sweep) runs: scaling, overhead, memory, refinement"
 else
 	echo "not ok - the sweep benchmark (make bench-sweep) runs"
 	sed 's/^/# /' "$T/out"

@@ -4,7 +4,7 @@
 # proposes a range, the curve fills in from background threads with the
 # current scene marked on it, the observable and the law change, a curve
 # is pinned, the curve is exported as CSV, a bad range is refused keeping
-# the curve, a parameter that is not a number is refused, and quitting
+# the curve, b locates a boundary of the curve, a parameter that is not a number is refused, and quitting
 # during a long sweep cancels it at once.
 . "$(dirname "$0")/common.inc"
 
@@ -102,6 +102,33 @@ if wait_for a '^sweep: scene\.law is not a number' 30; then
 else
 	notok "a parameter that is not a number is refused" a
 fi
+# b: the boundaries of the curve, bisected to 1e-3 of the range: the
+# restitution example's e of collision 0 exists from -3.72 mm/s on (hybounce
+# sweep --refine e_first puts it between -3.7113 and -3.7314 mm/s)
+cp examples/sweeps/restitution-shccl.preset "$TMP/"
+start b 80 24 --ascii restitution-shccl.preset
+wait_for b ' finished$' 150
+keys b / ; keys b -l v0 ; keys b Enter
+wait_for b 'nudge\) initial\.v0:' 30
+keys b S
+wait_for b '^sweep initial\.v0 over' 30
+keys b C-u ; keys b -l -- "-1mm/s:-1m/s:21:log" ; keys b Enter
+wait_for b '^sweep: e of collision 0 .* 21/21 done' 300
+keys b b
+if wait_for b '@ scene: .*  \| -3\.721 mm/s$' 300 \
+   && [ "$(screen b | grep -c '^ .*|')" -ge 15 ]; then
+	ok "b locates the curve's boundary (| at -3.721 mm/s, where --refine puts it)"
+else
+	notok "b locates the curve's boundary" b
+fi
+keys b b
+if wait_for b '^boundaries off' 30 && ! screen b | grep -q 'boundary'; then
+	ok "b again: boundaries off"
+else
+	notok "b again: boundaries off" b
+fi
+keys b F10
+wait_exit b 50
 # a long sweep: quitting cancels the workers at once
 keys a / ; keys a -l v0 ; keys a Enter
 wait_for a 'nudge\) initial\.v0:' 30
