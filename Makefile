@@ -8,6 +8,7 @@
 #   make check-asan the unit tests under AddressSanitizer + UBSan
 #   make bench      the work-precision benchmark (report in build/bench/)
 #   make golden     rewrite tests/golden/*.csv (the collision tables the tests compare with)
+#   make reference  rewrite tests/reference/*.csv, the binary128 reference of the paper studies
 #   make python     the Python package in build/python/hybounce (over build/'s libhybounce.so)
 #   make bench-python  a 1,000-point sweep from Python side by side with hybounce sweep
 #   make install / uninstall   honour PREFIX, DESTDIR, MANPREFIX, LIBDIR, INCLUDEDIR, PYTHONDIR
@@ -124,6 +125,10 @@ TUI_LIB   := $(BUILD)/libhybounce-tui.a
 BIN       := $(BUILD)/hybounce
 UNIT      := $(BUILD)/unit-tests
 BENCHBIN  := $(BUILD)/hybounce-bench
+# The binary128 reference of the paper's studies (tests/reference/).
+REFBIN    := $(BUILD)/hybounce-ref
+REF_STUDIES := steel-on-bitumen permanent-contact-shccl permanent-contact-bwshccl \
+               permanent-contact-bwmcl
 
 # libhybounce.so: the core objects are position-independent and hidden
 # unless a public header declares them (HB_BEGIN_DECLS, include/hybounce/export.h).
@@ -148,7 +153,7 @@ pc_rel      = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
 .PHONY: python bench-python
 .PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man lib FORCE golden bench-docs figures
 
-all: $(BIN) lib python
+all: $(BIN) lib python $(REFBIN)
 
 lib: $(STATIC_LIB) $(SHLIB) $(PCFILE)
 
@@ -229,6 +234,24 @@ $(UNIT): $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 
 $(BENCHBIN): $(BENCH_OBJ) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(BENCH_OBJ) $(CORE_LIB) $(CORE_LIBS)
+
+# Written from the paper alone: no engine code, binary128 (libquadmath, part of gcc).
+$(REFBIN): tests/reference/ref.c
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< -lquadmath
+
+# Rewrites the cached reference tables (tests/reference/STUDY.csv, tolerance
+# 1e-28) and shows their own error: each must agree with a run at 1e-24 to
+# 1e-20 (tests/reference/agree.py); about 15 s.
+.PHONY: reference
+reference: $(REFBIN)
+	@set -e; for s in $(REF_STUDIES); do \
+	    ./$(REFBIN) $$s --tol 1e-28 >tests/reference/$$s.csv; \
+	    ./$(REFBIN) $$s --tol 1e-24 >$(BUILD)/ref-$$s-1e-24.csv; \
+	    echo "$$s: the reference at 1e-24 against 1e-28 (largest error per column):"; \
+	    $(PYTHON) tests/reference/agree.py --limit 1e-20 tests/reference/$$s.csv \
+	        $(BUILD)/ref-$$s-1e-24.csv | tr '\n' ' '; echo; \
+	done
 
 # The Python package (python/hybounce: cffi's ABI mode over libhybounce.so).
 # Its declarations (_cdef.py) are generated from the public headers by
