@@ -2,21 +2,23 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """agree.py - how far a collision table is from a reference table.
 
-    agree.py REF.csv OTHER.csv [--rows N] [--limit L] [--errors ERR.csv]
+    agree.py REF.csv OTHER.csv [--rows N] [--limit L] [--errors]
 
 Both files are collision CSVs (hybounce --collisions, or hybounce-ref);
 lines starting with '#' are skipped.  For each column the largest error
 over the first N rows (default: the rows both have) is printed as
-"column error", in the measure the error bars use: t_e and t_s relative to
-the collision's t_d, x_c_r relative to x_c_max, every other value relative
-to its own size.  Read in decimal (28 digits), so that a binary128
+"column error", in the measure the error bars use: t_e and t_s relative
+to the collision's t_d, x_c_r relative to x_c_max, W relative to the
+larger of |W| and |J_Fc v_i|, every other value relative to its own size.
+Read in decimal (28 digits), so that a binary128
 reference is compared to its last digits.
 
 --limit L: exit 1 when an error exceeds L.
---errors ERR.csv: OTHER carries error columns (NAME_err, hybounce --error);
-for each estimated value print the ratio estimate / true error (both in
-the measure above) and exit 1 when one is below 1/2 or above 100 where the
-true error exceeds the reference's own (1e-20).
+--errors: OTHER carries error columns (NAME_err, hybounce --error); for
+each estimated value print the ratio estimate / true error (both in the
+measure above) and exit 1 when one is below 1/2 or above 100.  Where the
+true error is below 1e-13 (500 ulps: double rounding, which neither run
+resolves) only an estimate above 100 x 1e-13 is refused.
 """
 import sys
 from decimal import Decimal, getcontext
@@ -53,6 +55,8 @@ def scale(col, row):
         return abs(num(row["t_d"]))
     if col == "x_c_r":
         return abs(num(row["x_c_max"]))
+    if col == "W":
+        return max(abs(num(row["W"])), abs(num(row["J_Fc"]) * num(row["v_i"])))
     return abs(num(row[col]))
 
 
@@ -81,7 +85,7 @@ def main(argv):
         return 1
     cols = [c for c in h1 if c != "i" and c in h2]
     worst = Decimal(0)
-    bad = 0
+    bad = tested = 0
     for c in cols:
         e = Decimal(0)
         for r in range(n):
@@ -105,12 +109,13 @@ def main(argv):
                     continue
                 true = abs(a - b) / s
                 estr = est / s
-                floor = Decimal("1e-20")
+                floor = Decimal("1e-13")
                 ratio = estr / true if true > 0 else Decimal("Infinity")
                 ok = True
                 if true > floor:
                     ok = Decimal("0.5") <= ratio <= 100
-                elif estr > 100 * floor and estr > 100 * true:
+                    tested += 1
+                elif estr > 100 * floor:
                     ok = False
                 print(f"  {c}[{r}] true {float(true):.3g} estimate {float(estr):.3g} "
                       f"ratio {float(ratio):.3g}{'' if ok else '  OUTSIDE [0.5, 100]'}")
@@ -119,6 +124,8 @@ def main(argv):
     if limit is not None and worst > limit:
         print(f"agree.py: largest error {float(worst):.3g} exceeds {float(limit):.3g}")
         return 1
+    if errfile:
+        print(f"agree.py: {tested} estimates of a true error above 1e-13, {bad} outside")
     if bad:
         print(f"agree.py: {bad} estimates outside [0.5, 100] x the true error")
         return 1
