@@ -7,6 +7,7 @@
 #   make fuzz       the libFuzzer campaign, FUZZ_TIME seconds per harness (tests/fuzz)
 #   make check-asan the unit tests under AddressSanitizer + UBSan
 #   make bench      the work-precision benchmark (report in build/bench/)
+#   make bench-steppers  every stepper's true error against tests/reference (into tests/bench/REPORT.md)
 #   make golden     rewrite tests/golden/*.csv (the collision tables the tests compare with)
 #   make reference  rewrite tests/reference/*.csv, the binary128 reference of the paper studies
 #   make python     the Python package in build/python/hybounce (over build/'s libhybounce.so)
@@ -382,6 +383,16 @@ bench: deps
 	./$(BENCHBIN) --out $(BUILD)/bench
 	@sh tests/bench/study-table.sh $(BUILD)/bench/work-precision.csv >$(BUILD)/bench/study-table.md
 	@echo "per-study table (README Speed and accuracy): $(BUILD)/bench/study-table.md"
+
+# Every offered stepper's true error against the binary128 reference
+# (tests/reference/) at rtol 1e-6 ... 1e-12, and its ratio to rk8pd's:
+# the table goes into tests/bench/REPORT.md (STEPPERS markers); a minute or two.
+.PHONY: bench-steppers
+bench-steppers: $(BIN)
+	@mkdir -p $(BUILD)/bench
+	@sh tests/bench/steppers.sh $(BIN) $(BUILD)/bench/steppers.md
+	@. tests/tui/readme.inc && { echo; cat $(BUILD)/bench/steppers.md; echo; } | \
+	    readme_splice tests/bench/REPORT.md STEPPERS && echo "tests/bench/REPORT.md (STEPPERS) written"
 
 # After make bench: the per-study table into README.md, and tests/bench/REPORT.md.
 bench-docs:

@@ -4,7 +4,9 @@
 # per-study table (DIR/study-table.md) into README.md between the
 # STUDY-TABLE markers, and writes tests/bench/REPORT.md: a header, the
 # README's engine summary (between the ENGINE-V2 markers) and the bench's
-# own report (DIR/report.md).  Run from the top of the tree (make bench-docs).
+# own report (DIR/report.md), then, unchanged, the sections between the
+# REFERENCE-SECTIONS markers (make bench-steppers writes into them).  Run
+# from the top of the tree (make bench-docs).
 dir=${1:-build/bench}
 here=$(dirname "$0")
 for f in "$dir/study-table.md" "$dir/report.md"; do
@@ -13,6 +15,10 @@ done
 . tests/tui/readme.inc
 { echo; cat "$dir/study-table.md"; echo; } | readme_splice README.md STUDY-TABLE || exit 1
 out="$here/REPORT.md"
+# The sections measured against the binary128 reference (make
+# bench-steppers) are kept as they are: they come from their own targets.
+kept=$(mktemp)
+readme_block "$out" REFERENCE-SECTIONS >"$kept"
 {
 	cat <<'HEAD'
 # Speed against error: benchmark report (issue 8)
@@ -33,5 +39,10 @@ HEAD
 	echo 'The report below is the new run (`make bench`), with the dop853 rows among the extra settings of each study.'
 	echo
 	cat "$dir/report.md"
+	echo
+	echo '<!-- REFERENCE-SECTIONS-BEGIN -->'
+	cat "$kept"
+	echo '<!-- REFERENCE-SECTIONS-END -->'
 } >"$out.new" && mv "$out.new" "$out"
+rm -f "$kept"
 echo "README.md (STUDY-TABLE) and $out written"

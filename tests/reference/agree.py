@@ -14,6 +14,8 @@ Read in decimal (28 digits), so that a binary128
 reference is compared to its last digits.
 
 --limit L: exit 1 when an error exceeds L.
+--max: print only the largest error over every column and row (1 when
+the two files have a different number of collisions).
 --errors: OTHER carries error columns (NAME_err, hybounce --error); for
 each estimated value print the ratio estimate / true error (both in the
 measure above) and exit 1 when one is below 1/2 or above 100.  Where the
@@ -63,6 +65,7 @@ def scale(col, row):
 def main(argv):
     args = argv[1:]
     nrows = limit = errfile = None
+    only_max = False
     files = []
     while args:
         a = args.pop(0)
@@ -70,6 +73,8 @@ def main(argv):
             nrows = int(args.pop(0))
         elif a == "--limit":
             limit = Decimal(args.pop(0))
+        elif a == "--max":
+            only_max = True
         elif a == "--errors":
             errfile = True
         else:
@@ -96,7 +101,8 @@ def main(argv):
             if s == 0:
                 continue
             e = max(e, abs(a - b) / s)
-        print(f"{c} {float(e):.3g}")
+        if not only_max:
+            print(f"{c} {float(e):.3g}")
         worst = max(worst, e)
         if errfile and c + "_err" in h2:
             for r in range(n):
@@ -124,6 +130,8 @@ def main(argv):
     if limit is not None and worst > limit:
         print(f"agree.py: largest error {float(worst):.3g} exceeds {float(limit):.3g}")
         return 1
+    if only_max:
+        print(f"{float(worst if len(ref) == len(oth) else 1):.3g}")
     if errfile:
         print(f"agree.py: {tested} estimates of a true error above 1e-13, {bad} outside")
     if bad:
