@@ -8,6 +8,7 @@
 #   make check-asan the unit tests under AddressSanitizer + UBSan
 #   make bench      the work-precision benchmark (report in build/bench/)
 #   make bench-steppers  every stepper's true error against tests/reference (into tests/bench/REPORT.md)
+#   make bench-studies   per study: instructions per rhs, rhs, time beside SciPy, true error, error bar
 #   make golden     rewrite tests/golden/*.csv (the collision tables the tests compare with)
 #   make reference  rewrite tests/reference/*.csv, the binary128 reference of the paper studies
 #   make python     the Python package in build/python/hybounce (over build/'s libhybounce.so)
@@ -383,6 +384,16 @@ bench: deps
 	./$(BENCHBIN) --out $(BUILD)/bench
 	@sh tests/bench/study-table.sh $(BUILD)/bench/work-precision.csv >$(BUILD)/bench/study-table.md
 	@echo "per-study table (README Speed and accuracy): $(BUILD)/bench/study-table.md"
+	@sh tests/bench/studies.sh $(BIN) $(BUILD)/bench/studies.md
+
+# Per paper study: instructions per rhs (callgrind), rhs, rejected steps,
+# engine CPU time beside SciPy DOP853's, the true error against
+# tests/reference and the largest --error bar (build/bench/studies.md; a
+# minute; make bench runs it too, make bench-docs puts it in the README).
+.PHONY: bench-studies
+bench-studies: $(BIN)
+	@mkdir -p $(BUILD)/bench
+	@sh tests/bench/studies.sh $(BIN) $(BUILD)/bench/studies.md
 
 # Every offered stepper's true error against the binary128 reference
 # (tests/reference/) at rtol 1e-6 ... 1e-12, and its ratio to rk8pd's:

@@ -5,8 +5,9 @@
 # STUDY-TABLE markers, and writes tests/bench/REPORT.md: a header, the
 # README's engine summary (between the ENGINE-V2 markers) and the bench's
 # own report (DIR/report.md), then, unchanged, the sections between the
-# REFERENCE-SECTIONS markers (make bench-steppers writes into them).  Run
-# from the top of the tree (make bench-docs).
+# REFERENCE-SECTIONS markers (make bench-steppers writes into them), and
+# DIR/studies.md, when there, into README.md (STUDIES-SUMMARY) and the
+# report (STUDIES).  Run from the top of the tree (make bench-docs).
 dir=${1:-build/bench}
 here=$(dirname "$0")
 for f in "$dir/study-table.md" "$dir/report.md"; do
@@ -45,4 +46,9 @@ HEAD
 	echo '<!-- REFERENCE-SECTIONS-END -->'
 } >"$out.new" && mv "$out.new" "$out"
 rm -f "$kept"
+# make bench's per-study summary against the reference and SciPy
+if [ -r "$dir/studies.md" ]; then
+	{ echo; cat "$dir/studies.md"; echo; } | readme_splice README.md STUDIES-SUMMARY || exit 1
+	{ echo; cat "$dir/studies.md"; echo; } | readme_splice "$out" STUDIES || exit 1
+fi
 echo "README.md (STUDY-TABLE) and $out written"
