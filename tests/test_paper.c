@@ -109,6 +109,7 @@ Test(paper, every_stepper_on_every_paper_preset, .timeout = 600)
 			size_t i, n;
 
 			sc2.run.stepper = st;
+			sc2.run.limits = 0; /* every stepper, to measure it */
 			sc2.run.rtol = sc2.run.atol = 1e-10;
 			s = hb_sim_new(&sc2, msg, sizeof msg);
 			cr_assert_not_null(s, "%s: %s", *p, msg);
@@ -339,6 +340,7 @@ Test(paper, modes_and_dense_output_halve_the_work)
 
 		scene_preset(cases[i].name, &sc);
 		sc.run.stepper = HB_STEPPER_DOP853;
+		sc.run.limits = 0;
 		s = run_scene(&sc);
 		st = hb_sim_stats(s);
 		cr_expect_leq(2 * st->rhs, cases[i].rhs_before, "%s: %ld rhs evaluations (before %ld)",

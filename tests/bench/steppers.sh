@@ -7,7 +7,9 @@
 # t_s relative to t_d, x_c^r to x_c^max, W to |J_Fc v_i| where larger,
 # the rest relative; 1 when the collision count differs), and its ratio to
 # rk8pd's at the same tolerance.  A run that the scene refuses is shown as
-# "refused".  Run from the top of the tree (make bench-steppers).
+# "refused" (run.limits = no: every stepper is measured, also where the
+# scene refuses it, src/core/scene_limits.c).  Run from the top of the tree
+# (make bench-steppers).
 BIN=${1:-build/hybounce}
 OUT=${2:-build/bench/steppers.md}
 PY=${PYTHON:-python3}
@@ -22,6 +24,7 @@ for s in $STUDIES; do
 		for r in $TOLS; do
 			a=$(awk "BEGIN { print $r / 100 }")
 			if "$BIN" --batch "$s" --set run.stepper=$st --set run.rtol=$r --set run.atol=$a \
+			    --set run.limits=no \
 			    --collisions - >"$T/c.csv" 2>"$T/err"; then
 				e=$($PY tests/reference/agree.py --max "tests/reference/$s.csv" "$T/c.csv")
 			elif grep -q 'refused\|accepted' "$T/err"; then
