@@ -320,10 +320,13 @@ Test(paper, study3_approach_to_permanent_contact)
 /*
  * Kinks as modes and location on the dense output: the first and third
  * studies (BWMCL's |Psi_2|, BWSHCCL's |v|) under dop853 at rtol 1e-12 do
- * their work in at most half the right-hand-side evaluations rk8pd needed
- * before (87,656 and 39,259 for the first study and BWMCL's third, counted
- * by this engine before issue 8), and fewer than one step in four is
- * rejected (before: 28% and 28%).  Counts of work, not times.
+ * their work in fewer right-hand-side evaluations than rk8pd needed before
+ * (87,656 and 39,259 for the first study and BWMCL's third, counted by this
+ * engine before issue 8; 68,862 and 34,024 now, with dop853's 5th-order
+ * error estimate, which keeps its global error within 10 x rk8pd's: it was
+ * at most half with dop853.f's combined estimate, whose global error was
+ * up to 476 x rk8pd's), and fewer than one step in four is rejected
+ * (before: 28% and 28%).  Counts of work, not times.
  */
 Test(paper, modes_and_dense_output_halve_the_work)
 {
@@ -343,7 +346,7 @@ Test(paper, modes_and_dense_output_halve_the_work)
 		sc.run.limits = 0;
 		s = run_scene(&sc);
 		st = hb_sim_stats(s);
-		cr_expect_leq(2 * st->rhs, cases[i].rhs_before, "%s: %ld rhs evaluations (before %ld)",
+		cr_expect_lt(st->rhs, cases[i].rhs_before, "%s: %ld rhs evaluations (before %ld)",
 		              cases[i].name, st->rhs, cases[i].rhs_before);
 		cr_expect_lt(4 * st->rejected, st->steps + st->rejected, "%s: %ld of %ld steps rejected",
 		             cases[i].name, st->rejected, st->steps + st->rejected);

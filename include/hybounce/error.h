@@ -13,6 +13,7 @@
  *     stepper  rtol   true     same stepper at rtol/100   rk8pd at rtol/100
  *     rk8pd    1e-10  3.46e-9  3.42e-9                    3.42e-9
  *     dop853   1e-10  3.44e-8  3.13e-8                    3.44e-8
+ *     (dop853 with the combined error estimate of dop853.f, since replaced)
  *     rkf45    1e-10  3.22e-7  3.17e-7                    3.22e-7
  *     msbdf    1e-12  1.20e-7  1.17e-7                    1.20e-7
  *
