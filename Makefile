@@ -129,7 +129,7 @@ UNIT      := $(BUILD)/unit-tests
 BENCHBIN  := $(BUILD)/hybounce-bench
 # The binary128 reference of the paper's studies (tests/reference/).
 REFBIN    := $(BUILD)/hybounce-ref
-REF_STUDIES := steel-on-bitumen permanent-contact-shccl permanent-contact-bwshccl \
+REF_STUDIES := steel-on-bitumen ptfe-pom permanent-contact-shccl permanent-contact-bwshccl \
                permanent-contact-bwmcl
 
 # libhybounce.so: the core objects are position-independent and hidden

@@ -23,7 +23,7 @@ for s in steel-on-bitumen permanent-contact-shccl; do
 	    notok "reference: $s, a short run agrees with the cached table" "$T/out"
 done
 
-for s in steel-on-bitumen permanent-contact-shccl permanent-contact-bwshccl \
+for s in steel-on-bitumen ptfe-pom permanent-contact-shccl permanent-contact-bwshccl \
     permanent-contact-bwmcl; do
 	"$BIN" --batch "$s" --collisions - >"$T/eng.csv" 2>/dev/null &&
 	    $PY $AGREE --limit 1e-9 "tests/reference/$s.csv" "$T/eng.csv" >"$T/out" 2>&1 &&

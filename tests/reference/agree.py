@@ -15,7 +15,8 @@ reference is compared to its last digits.
 
 --limit L: exit 1 when an error exceeds L.
 --max: print only the largest error over every column and row (1 when
-the two files have a different number of collisions).
+the two files have a different number of collisions and --rows is not
+given).
 --errors: OTHER carries error columns (NAME_err, hybounce --error); for
 each estimated value print the ratio estimate / true error (both in the
 measure above) and exit 1 when one is below 1/2 or above 100.  Where the
@@ -131,7 +132,7 @@ def main(argv):
         print(f"agree.py: largest error {float(worst):.3g} exceeds {float(limit):.3g}")
         return 1
     if only_max:
-        print(f"{float(worst if len(ref) == len(oth) else 1):.3g}")
+        print(f"{float(worst if nrows is not None or len(ref) == len(oth) else 1):.3g}")
     if errfile:
         print(f"agree.py: {tested} estimates of a true error above 1e-13, {bad} outside")
     if bad:

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * ref.c - an independent high-precision reference for the paper's studies,
- * written from the paper alone (Model: eqs. Hr_f .. Hr_init, the laws
- * BWMCL, SHCCL and BWSHCCL; Simulation: tables 1 and 3, the observables
+ * written from the paper alone (Model: eqs. main, Hr_f .. Hr_init and the
+ * relative motion of H_f, the laws BWMCL, SHCCL and BWSHCCL; Simulation:
+ * tables 1 to 3, the ramp loads of eqs. ramp .. u_2, the observables
  * t_d .. Lambda and rules R1, R2) and sharing no code with the engine.
  *
  * Arithmetic: IEEE binary128 (__float128, libquadmath).  Method: Gragg-
@@ -15,7 +16,12 @@
  * bracketing on the length of a step from the step's start.  The events
  * (a separation, where the state leaves C by rule R2) and the extrema of
  * x_c and F_c are located the same way.  Flights under constant gravity are
- * parabolas, solved in closed form.
+ * parabolas, solved in closed form; under the ramp of study 2 (whose S''
+ * jumps at T_e, a switching point in time) they are integrated as the
+ * contacts are, to the state leaving C (x < 0 and v < 0).  Study 2 is the
+ * relative motion (x, v) of H_f under its reduced load
+ * F_e,r = -F_e0 (1 + S(t / T_e)); the centre of mass, which no observable
+ * needs, is left out.
  *
  *     hybounce-ref STUDY [--tol TOL] [--collisions N]
  *
@@ -38,37 +44,56 @@ enum law { BWMCL, SHCCL, BWSHCCL };
 struct study {
 	const char *name;  /* the preset's name */
 	enum law law;
-	/* materials and geometry (table 1 or 3); body 2 fixed, R2 = inf */
-	double E1, nu1, rho1, R1, E2, nu2;
+	/* materials and geometry (tables 1 to 3); rho2 = 0: body 2 fixed, R2 = inf */
+	double E1, nu1, rho1, R1, E2, nu2, rho2, R2;
 	/* chosen */
 	double A, alpha, beta, gamma, n, c;
-	/* initial conditions, load, horizon */
-	double x0, g, T;
+	/* initial conditions, load (g; or the ramp F_e0, T_e of eq. u_1), horizon */
+	double x0, g, Fe0, Te, T;
 };
 
-/* The paper's studies of the reduced system H_r (tables 1 and 3). */
+/* The paper's studies (tables 1 to 3): H_r, and H_f's relative motion for study 2. */
 static const struct study studies[] = {
-	{ "steel-on-bitumen", BWMCL, 200e9, 0.30, 7800, 20e-3, 1.0e9, 0.35,
-	  1, 0.35, 5.000e7, 5.000e7, 2, 4.400e3, 20e-3, 9.81, 0.5 },
-	{ "permanent-contact-shccl", SHCCL, 200e9, 0.30, 7800, 20e-3, 2.0e9, 0.35,
-	  1, 1, 0, 0, 2, 4.300e9, 40e-6, 9.81, 0.1 },
-	{ "permanent-contact-bwshccl", BWSHCCL, 200e9, 0.30, 7800, 20e-3, 2.0e9, 0.35,
-	  1, 0.35, 5.000e9, 5.000e9, 2, 2.150e9, 40e-6, 9.81, 0.1 },
-	{ "permanent-contact-bwmcl", BWMCL, 200e9, 0.30, 7800, 20e-3, 1.0e9, 0.35,
-	  1, 0.35, 5.000e7, 5.000e7, 2, 4.400e3, 40e-6, 9.81, 0.1 },
+	{ "steel-on-bitumen", BWMCL, 200e9, 0.30, 7800, 20e-3, 1.0e9, 0.35, 0, 0,
+	  1, 0.35, 5.000e7, 5.000e7, 2, 4.400e3, 20e-3, 9.81, 0, 0, 0.5 },
+	{ "ptfe-pom", BWSHCCL, 0.50e9, 0.46, 2200, 20e-3, 2.90e9, 0.35, 1410, 20e-3,
+	  1, 0.35, 2.409e8, 2.409e8, 2, 2.500e7, 1.5e-3, 0, 0.5759, 0.20, 0.5 },
+	{ "permanent-contact-shccl", SHCCL, 200e9, 0.30, 7800, 20e-3, 2.0e9, 0.35, 0, 0,
+	  1, 1, 0, 0, 2, 4.300e9, 40e-6, 9.81, 0, 0, 0.1 },
+	{ "permanent-contact-bwshccl", BWSHCCL, 200e9, 0.30, 7800, 20e-3, 2.0e9, 0.35, 0, 0,
+	  1, 0.35, 5.000e9, 5.000e9, 2, 2.150e9, 40e-6, 9.81, 0, 0, 0.1 },
+	{ "permanent-contact-bwmcl", BWMCL, 200e9, 0.30, 7800, 20e-3, 1.0e9, 0.35, 0, 0,
+	  1, 0.35, 5.000e7, 5.000e7, 2, 4.400e3, 40e-6, 9.81, 0, 0, 0.1 },
 };
 
 /* The scene in binary128. */
 static enum law LAW;
 static Q K, ALPHA, AA, BETA, GAMMA, NN, P, CC, M, G;
+static int RAMP;      /* study 2: F_e,r = -F_e0 (1 + S(t / T_e)), eq. u_1 */
+static Q FE0, TE;
+enum { FLIGHT, CONTACT };
+static int PHASE;
 
 /* State in contact: x_c, v, W, J_Fc, then z_c (n_z components). */
-enum { XC, V, W, JFC, Z1, Z2, NMAX };
+/* In flight the first component is x (and the law's are unused). */
+enum { XC, V, W, JFC, Z1, Z2, TT, JFE, NMAX };
 static int NY;
 
 /* Switching terms (modes): their signs within a step. */
-enum { S_XC, S_Z1, S_Z2, S_PSI, S_V, NS };
+enum { S_XC, S_Z1, S_Z2, S_PSI, S_V, S_T, NS };
 static int mode[NS];
+
+/* F_e,r at t: -m g, or the ramp with the branch of S that mode[S_T] holds
+ * (S is continuously differentiable; its second derivative jumps at T_e). */
+static Q
+fer(Q t)
+{
+	if (!RAMP)
+		return -M * G;
+	if (mode[S_T] < 0)
+		return -FE0 * (1 + (1 - cosq(M_PIq * t / TE)) / 2);
+	return -2 * FE0;
+}
 
 static Q
 pw(Q u, Q p) /* u^p, u >= 0 */
@@ -124,7 +149,7 @@ law_eval(const Q *y, Q *d, Q *dphi)
 	case SHCCL:
 		phi = K * sp(x, P) + CC * ap(x, P, mode[S_XC]) * v;
 		if (dphi != NULL) {
-			Q a = (-phi) / M - G;
+			Q a = (-phi + fer(y[TT])) / M;
 
 			*dphi = K * P * pw(fabsq(x), P - 1) * v +
 			        CC * (mode[S_XC] * P * pw(fabsq(x), P - 1) * v * v +
@@ -139,7 +164,7 @@ law_eval(const Q *y, Q *d, Q *dphi)
 		psi1 = AA * v - BETA * sp(z, NN) * (mode[S_V] * v) - GAMMA * ap(z, NN, mode[S_Z1]) * v;
 		if (d != NULL)
 			d[Z1] = psi1;
-		a = (-phi) / M - G;
+		a = (-phi + fer(y[TT])) / M;
 		if (dphi != NULL)
 			*dphi = ALPHA * K * P * pw(fabsq(x), P - 1) * v +
 			        (1 - ALPHA) * K * P * pw(fabsq(z), P - 1) * psi1 +
@@ -158,12 +183,20 @@ law_eval(const Q *y, Q *d, Q *dphi)
 static void
 rhs(const Q *y, Q *d)
 {
-	Q phi = law_eval(y, d, NULL);
+	Q phi, f = fer(y[TT]);
 
+	memset(d, 0, NMAX * sizeof *d);
+	d[TT] = 1;
 	d[XC] = y[V];
-	d[V] = (-phi) / M - G;   /* F_e,r = -m g */
+	if (PHASE == FLIGHT) {   /* q_c = 0: the interface frozen */
+		d[V] = f / M;
+		return;
+	}
+	phi = law_eval(y, d, NULL);
+	d[V] = (-phi + f) / M;
 	d[W] = phi * y[V];       /* W = -int F_c v dt, F_c = -Phi */
 	d[JFC] = -phi;           /* J_Fc = int F_c dt */
+	d[JFE] = f;              /* J_Fe = int F_e,r dt */
 }
 
 /* ------------------------------------------------------------------ */
@@ -254,6 +287,8 @@ gbs(const Q *y, Q h, Q *out, Q *err)
 static Q
 switching(int k, const Q *y)
 {
+	if (PHASE == FLIGHT && k != S_T)
+		return 0;
 	switch (k) {
 	case S_XC:
 		return LAW == SHCCL || LAW == BWSHCCL ? y[XC] : 0;
@@ -271,6 +306,8 @@ switching(int k, const Q *y)
 		return 0;
 	case S_V:
 		return LAW == BWSHCCL ? y[V] : 0;
+	case S_T:
+		return RAMP ? y[TT] - TE : 0;
 	}
 	return 0;
 }
@@ -278,12 +315,15 @@ switching(int k, const Q *y)
 static int
 has_switch(int k)
 {
+	if (PHASE == FLIGHT && k != S_T)
+		return 0;
 	switch (k) {
 	case S_XC: return LAW == SHCCL || LAW == BWSHCCL;
 	case S_Z1: return LAW == BWMCL || LAW == BWSHCCL;
 	case S_Z2: return LAW == BWMCL;
 	case S_PSI: return LAW == BWMCL;
 	case S_V: return LAW == BWSHCCL;
+	case S_T: return RAMP;
 	}
 	return 0;
 }
@@ -292,7 +332,11 @@ has_switch(int k)
 static Q
 separation(const Q *y)
 {
-	Q phi = law_eval(y, NULL, NULL);
+	Q phi;
+
+	if (PHASE == FLIGHT) /* leaving C with q_c = 0: x < 0 and v < 0 (eq. H_C) */
+		return -(y[XC] > y[V] ? y[XC] : y[V]);
+	phi = law_eval(y, NULL, NULL);
 
 	return phi < y[V] ? phi : y[V];
 }
@@ -322,6 +366,8 @@ crossed(int ev, Q a, Q b)
 		return has_switch(ev) && b * mode[ev] < 0;
 	if (ev == EV_SEP)
 		return a <= 0 && b > 0;
+	if (PHASE == FLIGHT)
+		return 0;
 	return (a < 0 && b >= 0) || (a > 0 && b <= 0);
 }
 
@@ -391,7 +437,7 @@ set_modes(const Q *y, const Q *dy)
 
 		if (g == 0) /* at the start: the direction of motion */
 			g = k == S_XC ? dy[XC] : k == S_Z1 ? dy[Z1] : k == S_Z2 ? dy[Z2]
-			  : k == S_V ? dy[V] : -1;
+			  : k == S_V ? dy[V] : k == S_T ? 1 : -1;
 		mode[k] = g > 0 ? 1 : -1;
 	}
 }
@@ -399,7 +445,11 @@ set_modes(const Q *y, const Q *dy)
 static void
 candidate(struct contact *c, const Q *y)
 {
-	Q F = -law_eval(y, NULL, NULL);
+	Q F;
+
+	if (PHASE == FLIGHT)
+		return;
+	F = -law_eval(y, NULL, NULL);
 
 	if (fabsq(y[XC]) > c->xcmax)
 		c->xcmax = fabsq(y[XC]);
@@ -407,26 +457,30 @@ candidate(struct contact *c, const Q *y)
 		c->Fcmax = F;
 }
 
-/* Integrates a contact from t_e with approach velocity vi to its separation
- * or to T.  Returns 1 when it separated (c->complete). */
+/*
+ * Integrates the phase (FLIGHT: q_c = 0, CONTACT: q_c = 1) from (*tp, y)
+ * to the event that ends it (the state leaving C, rule R2) or to T; y and
+ * *tp are then the state and time there.  Returns 1 at the event, 0 at T.
+ * In contact the extrema go to c.
+ */
 static int
-contact(Q te, Q vi, Q T, struct contact *c)
+run_phase(int phase, Q *tp, Q *y, Q T, struct contact *c)
 {
-	Q y[NMAX] = { 0 }, dy[NMAX], y1[NMAX], t = te, h = 1e-12Q, err;
+	Q dy[NMAX], y1[NMAX], t = *tp, h = 1e-12Q, err;
+	/* the accelerations the error scales start from */
+	const Q acc = RAMP ? FE0 / M : G;
 
-	y[V] = vi;
-	memset(c, 0, sizeof *c);
-	c->te = te;
-	c->vi = vi;
-	/* the direction of motion at the start: Psi from v, or from gravity at v = 0 */
+	PHASE = phase;
+	/* the modes: the signs of the switching terms, or the direction of motion at 0 */
 	{
 		Q yy[NMAX];
 
 		memcpy(yy, y, sizeof yy);
-		if (vi == 0)
+		if (yy[V] == 0)
 			yy[V] = -1e-30Q;
 		for (int k = 0; k < NS; k++)
 			mode[k] = -1;
+		mode[S_T] = y[TT] < TE ? -1 : 1;
 		rhs(yy, dy);
 		dy[XC] = yy[V];
 		set_modes(y, dy);
@@ -434,13 +488,19 @@ contact(Q te, Q vi, Q T, struct contact *c)
 	candidate(c, y);
 	{
 		/* the sizes the error is measured against at the start, where
-		 * x_c, z_c, W and J_Fc are 0: those of a contact of 0.1 ms */
-		Q vs = fabsq(vi) > G * 1e-4Q ? fabsq(vi) : G * 1e-4Q;
+		 * x_c, z_c, W, J_Fc and J_Fe are 0: those of a contact of 0.1 ms */
+		Q vs = fabsq(y[V]) > acc * 1e-4Q ? fabsq(y[V]) : acc * 1e-4Q;
 
-		ymax[XC] = ymax[Z1] = ymax[Z2] = vs * 1e-4Q;
+		for (int i = 0; i < NMAX; i++)
+			ymax[i] = fabsq(y[i]);
+		if (ymax[XC] < vs * 1e-4Q)
+			ymax[XC] = vs * 1e-4Q;
+		ymax[Z1] = ymax[Z2] = vs * 1e-4Q;
 		ymax[V] = vs;
 		ymax[W] = M * vs * vs;
-		ymax[JFC] = M * vs;
+		ymax[JFC] = ymax[JFE] = M * vs;
+		if (ymax[TT] < 1e-3Q)
+			ymax[TT] = 1e-3Q;
 	}
 	for (;;) {
 		Q g0[NEV], g1[NEV], hmin, lo, hi, yb[NMAX], yfar[NMAX];
@@ -507,14 +567,7 @@ contact(Q te, Q vi, Q T, struct contact *c)
 			if (first != EV_SEP && separation(y) > 0)
 				first = EV_SEP;
 			if (first == EV_SEP) {
-				c->ts = t;
-				c->vs = y[V];
-				c->xcs = y[XC];
-				c->xcr = fabsq(y[XC]);
-				c->W = y[W];
-				c->JFc = y[JFC];
-				c->JFe = -M * G * (t - te);
-				c->complete = 1;
+				*tp = t;
 				return 1;
 			}
 			/* a switching term changed sign: its new mode */
@@ -532,8 +585,7 @@ contact(Q te, Q vi, Q T, struct contact *c)
 			if (fabsq(y[i]) > ymax[i])
 				ymax[i] = fabsq(y[i]);
 		if (t >= T) {
-			c->ts = t;
-			c->complete = 0;
+			*tp = t;
 			return 0;
 		}
 		{
@@ -542,6 +594,46 @@ contact(Q te, Q vi, Q T, struct contact *c)
 			h *= f > 4 ? 4 : f;
 		}
 	}
+}
+
+/* A contact from t_e with approach velocity vi: 1 when it separated before T. */
+static int
+contact(Q te, Q vi, Q T, struct contact *c)
+{
+	Q y[NMAX] = { 0 }, t = te;
+
+	memset(c, 0, sizeof *c);
+	c->te = te;
+	c->vi = vi;
+	y[V] = vi;
+	y[TT] = te;
+	if (!run_phase(CONTACT, &t, y, T, c))
+		return 0;
+	c->ts = t;
+	c->vs = y[V];
+	c->xcs = y[XC];
+	c->xcr = fabsq(y[XC]);
+	c->W = y[W];
+	c->JFc = y[JFC];
+	c->JFe = y[JFE];
+	c->complete = 1;
+	return 1;
+}
+
+/* A flight from (*t, *x, *v) to the next contact's commencement: 1 before T. */
+static int
+flight(Q *t, Q *x, Q *v, Q T)
+{
+	Q y[NMAX] = { 0 };
+
+	y[XC] = *x;
+	y[V] = *v;
+	y[TT] = *t;
+	if (!run_phase(FLIGHT, t, y, T, NULL))
+		return 0;
+	*x = y[XC];
+	*v = y[V];
+	return 1;
 }
 
 /* ------------------------------------------------------------------ */
@@ -590,11 +682,20 @@ main(int argc, char **argv)
 		return 2;
 	}
 
-	/* Derived (study 1, eqs. E*, R_e, m_i, k_H, k): body 2 fixed, R_2 = inf. */
+	/* Derived (study 1, eqs. E*, R_e, m_i, m, k_H, k); rho2 = 0: body 2
+	 * fixed (R_2 = inf, m = m_1). */
 	LAW = st->law;
 	Estar = 1 / ((1 - (Q)st->nu1 * st->nu1) / st->E1 + (1 - (Q)st->nu2 * st->nu2) / st->E2);
-	Re = st->R1;
-	M = 4 * M_PIq / 3 * (Q)st->R1 * st->R1 * st->R1 * st->rho1;
+	if (st->rho2 > 0) {
+		Q m1 = 4 * M_PIq / 3 * (Q)st->R1 * st->R1 * st->R1 * st->rho1;
+		Q m2 = 4 * M_PIq / 3 * (Q)st->R2 * st->R2 * st->R2 * st->rho2;
+
+		Re = 1 / (1 / (Q)st->R1 + 1 / (Q)st->R2);
+		M = m1 * m2 / (m1 + m2);
+	} else {
+		Re = st->R1;
+		M = 4 * M_PIq / 3 * (Q)st->R1 * st->R1 * st->R1 * st->rho1;
+	}
 	P = 1.5Q;
 	kH = 4 * Estar * sqrtq(Re) / 3;
 	AA = st->A;
@@ -605,18 +706,29 @@ main(int argc, char **argv)
 	CC = st->c;
 	G = st->g;
 	K = LAW == SHCCL ? kH : kH / (ALPHA + (1 - ALPHA) * pw(AA, P));
-	NY = LAW == BWMCL ? 6 : LAW == BWSHCCL ? 5 : 4;
+	NY = NMAX;
 	T = st->T;
+	RAMP = st->Fe0 > 0;
+	FE0 = st->Fe0;
+	TE = RAMP ? st->Te : 0;
 
 	printf("# hybounce-ref %s --tol %g: collisions to 25 digits (binary128, GBS order %d)\n",
 	       st->name, (double)tol, 2 * KCOL);
 	printf("i,t_e,t_s,t_d,t_f,v_i,e,x_c_max,F_c_max,x_c_r,W,J_Fc,J_Fe,Lambda\n");
 
-	/* The first flight: from rest at x0 under gravity. */
+	/* The first flight: from rest at x0, under gravity in closed form, or
+	 * under the ramp integrated. */
 	x = st->x0;
-	t = sqrtq(2 * x / G);
-	v = -G * t;
-	x = 0;
+	v = 0;
+	t = 0;
+	if (RAMP) {
+		if (!flight(&t, &x, &v, T))
+			t = T;
+	} else {
+		t = sqrtq(2 * x / G);
+		v = -G * t;
+		x = 0;
+	}
 	while (t < T) {
 		struct contact c;
 		Q xe = x, ts, xs, vs, tv, te2;
@@ -627,8 +739,14 @@ main(int argc, char **argv)
 		vs = c.vs;
 		xs = xe + c.xcs; /* x = x(t_e) + x_c */
 		/* the flight (q_c = 0) until x <= 0 and v <= 0 (eq. H_D), rule R2 */
-		tv = vs / G;
-		if (xs + vs * tv - G * tv * tv / 2 <= 0) {
+		tv = RAMP ? 0 : vs / G;
+		if (RAMP) {
+			te2 = ts;
+			x = xs;
+			v = vs;
+			if (!flight(&te2, &x, &v, T))
+				te2 = T;
+		} else if (xs + vs * tv - G * tv * tv / 2 <= 0) {
 			te2 = ts + tv;
 			x = xs + vs * tv - G * tv * tv / 2;
 			v = 0;
