@@ -32,8 +32,8 @@ static const struct limit limits[] = {
 	{ HB_STEPPER_RK8PD, 0, "" },
 	{ HB_STEPPER_AUTO, 0, "" },
 	{ HB_STEPPER_DOP853, 0, "" }, /* with its 5th-order estimate (step_dop853.c) */
-	{ HB_STEPPER_RKF45, 1e-6, "28 x at rtol 1e-6, up to 920 x at 1e-10" },
-	{ HB_STEPPER_RKCK, 1e-6, "28 x at rtol 1e-6, up to 280 x at 1e-10" },
+	{ HB_STEPPER_RKF45, 1e-6, "33 x at rtol 1e-6, up to 920 x at 1e-10" },
+	{ HB_STEPPER_RKCK, 1e-6, "50 x at rtol 1e-6, up to 280 x at 1e-10" },
 	{ HB_STEPPER_MSBDF, 1e-6, "810 x at rtol 1e-6, up to 17,000 x at 1e-10" },
 	{ HB_STEPPER_RK4IMP, 1e-7, "16 x at rtol 1e-7, up to 362 x at 1e-10" },
 	{ HB_STEPPER_BSIMP, 1e-6, "a different number of collisions at rtol 1e-6, up to "

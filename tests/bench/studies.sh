@@ -10,7 +10,7 @@
 #    setting rtol 1e-11, atol 1e-14, CPU time of the simulation alone,
 #    median of SCIPY_RUNS), study after study, and their ratio;
 #  - the true error against the binary128 reference (tests/reference/,
-#    agree.py --max; study 2 has none) and the largest error bar that
+#    agree.py --max) and the largest error bar that
 #    --error gives, both relative (t_e, t_s to t_d; x_c^r to x_c^max; W to
 #    |J_Fc v_i| where larger), and e of the first collision with its bar.
 # Times are CPU times on a machine that may be loaded: compare them only
