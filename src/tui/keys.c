@@ -60,7 +60,7 @@ static const struct key_binding table[] = {
 	{ 'U', 0, CTX_PARAMS, ACT_RESET, "U",
 	  "(parameter panel) reset the selected value to the scene as opened (the preset and its --set)", NULL },
 	{ 'b', 0, CTX_ANY, ACT_BRANCH, "b",
-	  "branch here: the next edit continues the run from the cursor instead of restarting it", NULL },
+	  "branch here: the next edit continues the run from the cursor instead of restarting it (an export records the branch)", NULL },
 	{ 'L', 0, CTX_ANY, ACT_LAW, "L", "choose the contact law", "law" },
 	{ 'o', 0, CTX_ANY, ACT_PRESET, "o", "open a preset", NULL },
 	{ 'r', 0, CTX_ANY, ACT_RESTART, "r", "restart the run from t = 0", NULL },
