@@ -215,6 +215,8 @@ app_run(const struct app_options *o, char *msg, size_t n)
 		term_mouse(1);
 		app_relayout(a);
 		app_msg(a, 0, "%s: %s   (? or F1 for help)", a->preset, hb_sim_scene(a->sim)->name);
+		if (fitov_loaded(a))
+			fitov_announce(a);   /* --data: what was read (a recording says so) */
 		status = loop(a);
 		term_end();
 		if (term_signalled()) {

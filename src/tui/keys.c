@@ -76,7 +76,7 @@ static const struct key_binding table[] = {
 	{ 'T', 0, CTX_ANY, ACT_PRESENT, "T",
 	  "presentation: no table, large plots, each contact followed in slow motion, looping", NULL },
 	{ 'D', 0, CTX_ANY, ACT_DATA, "D",
-	  "open measured data (as hybounce fit --data): impacts shown as o on the x plot and in the table", NULL },
+	  "open measured data or a recording (as hybounce fit --data): impacts as o on the x plot and in the table; a recording's envelope on a rec strip", NULL },
 	{ 'M', 0, CTX_ANY, ACT_DATA_TABLE, "M", "every data point: measured against simulated now", NULL },
 	{ 'F', 0, CTX_ANY, ACT_FIT, "F",
 	  "fit free keys to the data, one iteration a frame (F again stops); the start is pinned", NULL },

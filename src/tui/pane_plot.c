@@ -172,7 +172,7 @@ margin_labels(const struct axis *ax, int y, int h, const char *name)
 		tui_puts(y + r, 0, LM - 1, buf, 0);
 		used[r] = 1;
 	}
-	snprintf(nm, sizeof nm, "%s[%s]", name, ax->unit);
+	snprintf(nm, sizeof nm, ax->unit[0] ? "%s[%s]" : "%s", name, ax->unit);
 	for (int r = h / 2 - (h > 2 ? 0 : 1); r < h; r++)
 		if (r >= 0 && !used[r]) {
 			tui_puts(y + r, 0, LM - 1, nm, A_BOLD);
@@ -347,7 +347,7 @@ pane_plot_draw(const struct app *a)
 {
 	const struct rect *r = &a->L.plots;
 	const struct hb_sim *s[APP_MAX_PINS + 1];
-	int ink[APP_MAX_PINS + 1], n, hs[NQ], cw = r->w - LM, y, curcol = -1;
+	int ink[APP_MAX_PINS + 1], n, hs[NQ + 1], cw = r->w - LM, y, curcol = -1, nq = NQ;
 	double t0, t1;
 	char line[1024], title[128];
 	const struct hb_arc *arc = hb_sim_arc(a->sim);
@@ -368,12 +368,27 @@ pane_plot_draw(const struct app *a)
 		snprintf(title, sizeof title, "%s", vname[a->view]);
 	/* row 0: title and legend; then the plots; then markers and the axis */
 	legend(a, r->y, LM, cw, title);
-	layout_stack(r->h - 1, NQ, 2, hs);
+	/* a recording opened with D or --data: its strip under the plots, on the same t axis */
+	if (fitov_recording(a) && a->view != VIEW_J && r->h >= 4 + NQ)
+		nq = NQ + 1;
+	layout_stack(r->h - 1, nq, 2, hs);
 	y = r->y + 1;
-	for (int q = 0; q < NQ; q++) {
+	for (int q = 0; q < nq; q++) {
 		double lo = 0, hi = 0;
 		struct axis ay;
 		struct canvas *c;
+
+		if (q == NQ) {
+			canvas_axis(0, fitov_recording_peak(a), hs[q] / 2 + 2, NULL, &ay);
+			c = canvas_or_die(cw, hs[q], a->braille);
+			canvas_range(c, t0, t1, 0, ay.hi);
+			fitov_plot_recording(a, c, t0, t1);
+			blit(a, c, y, r->x + LM, curcol);
+			margin_labels(&ay, y, hs[q], "rec");
+			canvas_free(c);
+			y += hs[q];
+			continue;
+		}
 
 		value_range(a, s, n, q, t0, t1, &lo, &hi);
 		canvas_axis(lo, hi, hs[q] / 2 + 2, qbase[q], &ay);

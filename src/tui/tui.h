@@ -254,6 +254,7 @@ struct canvas;
 action_fn act_data, act_data_table, act_fit;
 int fitov_load(struct app *a, const char *path, char *msg, size_t n); /* 0 or -1 */
 int fitov_loaded(const struct app *a);
+void fitov_announce(struct app *a);                       /* what is loaded, to the message line */
 void fitov_free(struct app *a);
 void fitov_prompt_done(struct app *a, const char *text);  /* PROMPT_DATA, PROMPT_FIT */
 int fitov_tick(struct app *a);                            /* 1 while fitting */
@@ -261,6 +262,10 @@ void fitov_key(struct app *a, int ch);                    /* keys of OV_FIT */
 void fitov_draw(const struct app *a);
 void fitov_plot_marks(const struct app *a, struct canvas *c, int q_is_x, double t0, double t1);
 void fitov_table_note(const struct app *a, long i, char *line, size_t n); /* i -1: header */
+/* A recording is shown (its envelope, onsets and the run's impacts on the plots' t axis). */
+int fitov_recording(const struct app *a);
+double fitov_recording_peak(const struct app *a);               /* full scale 1 */
+void fitov_plot_recording(const struct app *a, struct canvas *c, double t0, double t1);
 
 /* Sets the message line (printf-like). */
 void
