@@ -222,8 +222,9 @@ $(TUI_LIB): $(TUI_OBJ)
 $(BIN): $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(BIN_LIBS) $(AUBIO_LIBS)
 
-# The figure model of hybounce plot (no plotting library) is unit-tested too.
-UNIT_CLI_OBJ := $(BUILD)/src/cli/plot_model.o
+# The figure model of hybounce plot (no plotting library) is unit-tested too;
+# its renderer comes along, as the explorer saves figures through it (src/tui/figure.c).
+UNIT_CLI_OBJ := $(BUILD)/src/cli/plot_model.o $(BUILD)/src/cli/plot_draw.o $(BUILD)/src/cli/plot_cairo.o
 $(UNIT): $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(TEST_LIBS) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
 

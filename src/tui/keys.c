@@ -70,6 +70,8 @@ static const struct key_binding table[] = {
 	{ '3', 0, CTX_ANY, ACT_STUDY3, "3",
 	  "the paper's third study: permanent-contact-shccl, -bwshccl, -bwmcl pinned together", NULL },
 	{ 'e', 0, CTX_ANY, ACT_EXPORT, "e", "export BASE-trace.csv, BASE-collisions.csv and the scene BASE.preset", "export" },
+	{ 'f', 0, CTX_ANY, ACT_FIGURE, "f",
+	  "save the view as a figure, PRESET-view.png (the plots as shown, the pins, the cursor; -2, -3 ... never over an earlier one)", NULL },
 	{ 'S', 0, CTX_ANY, ACT_SWEEP, "S",
 	  "sweep view: the selected parameter over a range against e, v_i, x_c^r, collisions or t_pc, computed in the background", NULL },
 	{ 'm', 0, CTX_ANY, ACT_LOG, "m", "the message log: every message, whole", "log" },

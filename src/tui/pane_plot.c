@@ -472,6 +472,12 @@ pane_plot_draw(const struct app *a)
 	}
 }
 
+void
+plot_view_range(const struct app *a, double *t0, double *t1)
+{
+	view_range(a, t0, t1);
+}
+
 int
 plot_abscissa_at(const struct app *a, int x, double *t)
 {

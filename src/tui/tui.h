@@ -191,6 +191,10 @@ void pane_status_draw(const struct app *a);
 void pane_help_draw(const struct app *a);
 void pane_too_small_draw(const struct app *a);
 void pickers_draw(const struct app *a);
+/* The abscissa range the plots show (t, or j in the (t, j) view). */
+void plot_view_range(const struct app *a, double *t0, double *t1);
+/* f: the view as a figure (figure.c). */
+action_fn act_figure;
 /* The abscissa (t, or j in the (t, j) view) under screen column x of the plots; -1 outside. */
 int plot_abscissa_at(const struct app *a, int x, double *t);
 
