@@ -19,6 +19,7 @@
 #include "canvas.h"
 #include "term.h"
 #include "tui.h"
+#include "plot_summary.h"
 
 enum { LM = 9 };  /* left margin: tick labels and the quantity's name */
 enum { Q_X, Q_XC, Q_FC, NQ };
@@ -126,7 +127,11 @@ sample_span(const struct app *a, const struct hb_arc *arc, double lo, double hi,
 	*i1 = i + 2 < n ? i + 2 : n;
 }
 
-/* Copies a canvas to the screen at (y, x); the cursor column highlighted. */
+/*
+ * Copies a canvas to the screen at (y, x); the cursor column highlighted.
+ * Cells go in as wide characters (add_wch): a Braille cell as a string
+ * would be decoded again byte by byte, the larger part of a frame's cost.
+ */
 static void
 blit(const struct app *a, const struct canvas *c, int y, int x, int curcol)
 {
@@ -134,21 +139,30 @@ blit(const struct app *a, const struct canvas *c, int y, int x, int curcol)
 
 	for (int r = 0; r < c->h; r++)
 		for (int k = 0; k < c->w; k++) {
-			int ink = canvas_cell(c, k, r, cell), attr = 0;
-			if (ink > 0 && a->colour)
-				attr = COLOR_PAIR(PAIR_INK1 + ink - 1) | (ink == 1 ? A_BOLD : 0);
-			else if (ink > 1)
+			int ink = canvas_cell(c, k, r, cell);
+			attr_t attr = 0;
+			short pair = 0;
+			wchar_t wc[2] = { (unsigned char)cell[0], 0 };
+			cchar_t cc;
+
+			if (ink > 0 && a->colour) {
+				pair = (short)(PAIR_INK1 + ink - 1);
+				attr = ink == 1 ? A_BOLD : 0;
+			} else if (ink > 1) {
 				attr = A_DIM;
+			}
 			if (k == curcol) {
 				if (cell[0] == ' ')
-					cell[0] = ':';
+					wc[0] = ':';
 				attr |= A_REVERSE;
 			}
-			if (cell[0] == ' ' && attr == 0)
+			if (wc[0] == ' ' && attr == 0 && pair == 0)
 				continue;
-			attron(attr);
-			mvaddstr(y + r, x + k, cell);
-			attroff(attr);
+			if ((unsigned char)cell[0] == 0xE2)   /* U+2800 + m (canvas_cell) */
+				wc[0] = (wchar_t)(0x2800 + (((unsigned char)cell[1] - 0xA0) << 6) +
+				                  ((unsigned char)cell[2] - 0x80));
+			setcchar(&cc, wc, attr, pair, NULL);
+			mvadd_wch(y + r, x + k, &cc);
 		}
 }
 
@@ -329,9 +343,22 @@ value_range(const struct app *a, const struct hb_sim *const *s, int n, int q, do
 {
 	for (int k = 0; k < n; k++) {
 		const struct hb_arc *ak = hb_sim_arc(s[k]);
+		const struct plot_sum *ps;
 		size_t i, end;
 
-		for (sample_span(a, ak, t0, t1, &i, &end); i < end; i++) {
+		sample_span(a, ak, t0, t1, &i, &end);
+		if (a->view != VIEW_J && end - i > 64 && (ps = psum_of(a->psum, s[k])) != NULL) {
+			/* the samples strictly inside [t0, t1] (sample_span adds one either side) */
+			size_t a0 = i, a1 = end;
+
+			while (a0 < a1 && hb_arc_at(ak, a0)->t < t0)
+				a0++;
+			while (a1 > a0 && hb_arc_at(ak, a1 - 1)->t > t1)
+				a1--;
+			psum_range(ps, a0, a1, q, lo, hi);
+			continue;
+		}
+		for (; i < end; i++) {
 			double xv = absc(a, hb_arc_at(ak, i)), v = qval(hb_arc_at(ak, i), q);
 
 			if (xv >= t0 && xv <= t1 && isfinite(v)) {
@@ -377,6 +404,8 @@ pane_plot_draw(const struct app *a)
 		double lo = 0, hi = 0;
 		struct axis ay;
 		struct canvas *c;
+		struct psum_view pv;
+		int cacheable = a->psum != NULL, cached = 0;
 
 		if (q == NQ) {
 			canvas_axis(0, fitov_recording_peak(a), hs[q] / 2 + 2, NULL, &ay);
@@ -390,14 +419,31 @@ pane_plot_draw(const struct app *a)
 			continue;
 		}
 
+		/* the same runs over the same range: last frame's canvas (playback moves the cursor only) */
+		if (fitov_loaded(a))
+			cacheable = 0;
+		if (cacheable) {
+			psum_view_of(&pv, q, a->view + 16 * a->present, t0, t1, cw, hs[q], a->braille, s, ink, n);
+			if ((c = psum_plot_get(a->psum, &pv, &ay)) != NULL) {
+				cached = 1;
+				goto blit;
+			}
+		}
 		value_range(a, s, n, q, t0, t1, &lo, &hi);
 		canvas_axis(lo, hi, hs[q] / 2 + 2, qbase[q], &ay);
 		c = canvas_or_die(cw, hs[q], a->braille);
 		canvas_range(c, t0, t1, ay.lo, ay.hi);
 		for (int k = 0; k < n; k++) {
 			const struct hb_arc *ak = hb_sim_arc(s[k]);
+			const struct plot_sum *ps;
 			size_t i0, i1;
 			sample_span(a, ak, t0, t1, &i0, &i1);
+			/* many samples to a column: one stroke a column (plot_summary.c) */
+			if (a->view != VIEW_J && i1 - i0 > 4 * (size_t)c->pw
+			    && (ps = psum_of(a->psum, s[k])) != NULL) {
+				psum_draw(ps, c, q, t0, t1, ink[k]);
+				continue;
+			}
 			for (size_t i = i0; i < i1; i++) {
 				const struct hb_arc_sample *p = hb_arc_at(ak, i);
 				if (i > i0) {
@@ -412,11 +458,14 @@ pane_plot_draw(const struct app *a)
 		}
 		pin_marks(a, c, s, ink, n, q, t0, t1);
 		fitov_plot_marks(a, c, q == Q_X, t0, t1);
+blit:
 		if (hb_arc_len(arc) > 0)
 			curcol = canvas_col(c, absc(a, hb_arc_at(arc, a->cursor)));
 		blit(a, c, y, r->x + LM, curcol);
 		margin_labels(&ay, y, hs[q], qname[q]);
-		canvas_free(c);
+		/* kept for the next frame (the cache owns it), else freed */
+		if (!cached && !(cacheable && psum_plot_put(a->psum, &pv, c, &ay) == 0))
+			canvas_free(c);
 		y += hs[q];
 	}
 	/* marker row: contacts of the current run */

@@ -109,6 +109,7 @@ struct app {
 	struct fitov *fitov;        /* measured data and the fit (overlay_fit.c), or NULL */
 	struct sweep_view *sv;      /* the sweep view (sweep_view.c), NULL until S */
 	struct app_physics phys;    /* physics.c */
+	struct plot_sums *psum;     /* plot_summary.c: what the plots draw of long arcs (NULL: none) */
 };
 
 /* An action of the key table (actions.c). */
