@@ -14,6 +14,7 @@
 #   make python     the Python package in build/python/hybounce (over build/'s libhybounce.so)
 #   make bench-python  a 1,000-point sweep from Python side by side with hybounce sweep
 #   make bench-figures a figure of each paper study against its batch run; PNG sizes
+#   make bench-tui  the explorer's frame cost at 25k and 250k samples
 #   make install / uninstall   honour PREFIX, DESTDIR, MANPREFIX, LIBDIR, INCLUDEDIR, PYTHONDIR
 #                   (the binary, man page, presets, and libhybounce: shared, static,
 #                   headers under include/hybounce/, pkg-config file hybounce.pc;
@@ -241,8 +242,9 @@ $(TUI_LIB): $(TUI_OBJ)
 $(BIN): $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(BIN_LIBS) $(AUBIO_LIBS)
 
-# The figure model of hybounce plot (no plotting library) is unit-tested too.
-UNIT_CLI_OBJ := $(BUILD)/src/cli/plot_model.o $(BUILD)/src/cli/plot_map.o
+# The figure model of hybounce plot (no plotting library) is unit-tested too;
+# its renderer comes along, as the explorer saves figures through it (src/tui/figure.c).
+UNIT_CLI_OBJ := $(BUILD)/src/cli/plot_model.o $(BUILD)/src/cli/plot_map.o $(BUILD)/src/cli/plot_draw.o $(BUILD)/src/cli/plot_cairo.o
 $(UNIT): $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(TEST_LIBS) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
 
@@ -502,6 +504,17 @@ check-tsan: deps
 bench-sweep: deps
 	@$(MAKE) --no-print-directory all
 	@sh tests/bench/sweep.sh $(BIN) $(BUILD)/bench
+
+# The explorer's frame against the arc's length (study 1 at run.T = 66 s and
+# 730 s, about 25k and 250k samples): instructions a frame drawn
+# (callgrind), playback's share of a core, computing while drawing against
+# --batch (tests/bench/tui_frame.sh; report in build/bench/tui.txt; a few
+# minutes; needs valgrind and tmux).
+.PHONY: bench-tui
+bench-tui: deps
+	@$(MAKE) --no-print-directory all
+	@mkdir -p $(BUILD)/bench
+	@sh tests/bench/tui_frame.sh $(CURDIR)/$(BIN) | tee $(BUILD)/bench/tui.txt
 
 # The engine side by side with the paper's own method (SciPy DOP853, rtol
 # 1e-11, atol 1e-14: tests/bench/scipy_ref.py) on the five paper studies,

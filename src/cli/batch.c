@@ -717,6 +717,39 @@ run_watched(struct hb_sim *s, int *sig)
 	return rc;
 }
 
+/*
+ * Takes the branches a preset records, as the explorer took them
+ * (hb_sim_branch_at).  A branch that begins where this run has no sample
+ * is refused (-1); one whose state there differs from the recorded one is
+ * taken with a warning: the run is not the one exported.
+ */
+static int
+replay_branches(struct hb_sim *s, const char *path, const struct hb_branch *br, size_t nbr)
+{
+	char msg[1024];
+
+	for (size_t k = 0; k < nbr; k++) {
+		int same = 0, restarted = 0;
+
+		msg[0] = '\0';
+		if (hb_sim_branch_at(s, &br[k], &same, &restarted, msg, sizeof msg) != HB_OK) {
+			fprintf(stderr, PROG ": %s: [branch %zu]: %s\n", path, k + 1, msg);
+			return -1;
+		}
+		if (restarted) {
+			fprintf(stderr, PROG ": %s: [branch %zu]: its values cannot continue the run there "
+			        "(the law or the bodies changed in contact); accepted: a branch the explorer "
+			        "made\n", path, k + 1);
+			return -1;
+		}
+		if (!same)
+			fprintf(stderr, PROG ": warning: %s: [branch %zu]: the state at t = %.9g s differs "
+			        "from the one recorded: this run is not the one the file was exported from\n",
+			        path, k + 1, br[k].t);
+	}
+	return 0;
+}
+
 /* ------------------------------------------------------------------ */
 
 int
@@ -730,6 +763,8 @@ batch_run(const struct batch_options *o)
 	struct plot_out po;
 	struct hb_outputs pol;
 	struct hb_error_estimate est_store, *est = NULL;
+	struct hb_branch *br = NULL;
+	size_t nbr = 0;
 	int status = 0, have_live, rc, sig = 0;
 	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
 	/* The files to export; "-" goes to stdout after them. */
@@ -739,9 +774,17 @@ batch_run(const struct batch_options *o)
 	FILE *out = trace_out || coll_out ? stderr : stdout;
 
 	msg[0] = '\0';
-	if (hb_preset_open_named(o->preset, o->sets, o->nsets, &sc, path, sizeof path, msg,
-	                         sizeof msg) != HB_OK) {
+	/* a preset may record branches (the explorer's b): they are replayed below */
+	if (hb_preset_open_branched(o->preset, o->sets, o->nsets, &sc, &br, &nbr, path, sizeof path,
+	                            msg, sizeof msg) != HB_OK) {
 		err(msg[0] ? msg : o->preset);
+		return 2;
+	}
+	if (o->error && nbr > 0) {
+		fprintf(stderr, PROG ": --error: %s records %zu branch%s (the explorer's b); error "
+		        "bars are made by a second run from t = 0, which has none; accepted: --error "
+		        "on a preset without [branch] sections\n", path, nbr, nbr == 1 ? "" : "es");
+		free(br);
 		return 2;
 	}
 	if (trace_out && coll_out) {
@@ -798,8 +841,16 @@ batch_run(const struct batch_options *o)
 	if (s == NULL) {
 		fprintf(stderr, PROG ": %s: %s\n", path, msg[0] ? msg : "cannot start the run");
 		cli_signals_restore();
+		free(br);
 		return 2;
 	}
+	if (replay_branches(s, path, br, nbr) != 0) {
+		hb_sim_free(s);
+		cli_signals_restore();
+		free(br);
+		return 2;
+	}
+	free(br);
 	rc = run_watched(s, &sig);
 	if (hb_sim_end(s) == HB_SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE))
 		status = 1;
@@ -820,7 +871,15 @@ batch_run(const struct batch_options *o)
 	/* The header comes after the run: the tolerance scales are set per contact. */
 	have_live = hb_sim_contact_live(s, &live);
 	if (!o->quiet) {
-		print_header(out, o->preset, path, hb_sim_scene(s), hb_sim_stats(s));
+		/* the scene from t = 0, then where the branches the preset records begin */
+		print_header(out, o->preset, path, hb_sim_scene0(s), hb_sim_stats(s));
+		for (size_t k = 0; k < hb_sim_nbranches(s); k++) {
+			char tb[64];
+
+			fprintf(out, "branch %-4zu from t = %s (j = %ld) on, with the values of its "
+			        "[branch %zu]\n", k + 1, fmt(hb_sim_branch_get(s, k)->t, hb_unit_time, tb,
+			        sizeof tb), hb_sim_branch_get(s, k)->j, k + 1);
+		}
 		print_table(out, s, have_live ? &live : NULL, est);
 	}
 	if (o->jumps)

@@ -401,12 +401,12 @@ static int
 write_scene(FILE *f, const struct hb_sim *s, struct hb_atomic_set *set, const char *prov,
             const char *trace, int k_trace, const char *coll, int k_coll)
 {
-	size_t len = hb_preset_format(hb_sim_scene(s), NULL, 0);
+	size_t len = hb_preset_format_run(s, NULL, 0);
 	char *buf = malloc(len + 1);
 
 	if (buf == NULL)
 		return ENOMEM;
-	hb_preset_format(hb_sim_scene(s), buf, len + 1);
+	hb_preset_format_run(s, buf, len + 1);
 	fwrite(buf, 1, len, f);
 	free(buf);
 	if (prov != NULL && prov[0] != '\0')

@@ -68,4 +68,12 @@ st=$?
 [ $st -eq 2 ] && grep -q -- '--error needs --batch' "$T/e" &&
     ok "error: --error without --batch is refused" ||
     notok "error: --error without --batch (exit $st)" "$T/e"
+# --error on a preset that records branches (the explorer's b): refused, as
+# the second run would start from t = 0 without them
+{ cat "$HYBOUNCE_PRESETS/steel-on-bitumen.preset"; printf '\n[branch 1]\nt = 0.05 s\nj = 1\nx = 0 m\nv = 0 m/s\nx_c = 0 m\ncontact = no\nlaw.c = 44000 N s/m\n'; } >"$T/br.preset"
+"$BIN" --batch "$T/br.preset" --error -q >"$T/o" 2>"$T/e"
+st=$?
+[ $st -eq 2 ] && grep -q -- '--error: .*br.preset records 1 branch .*accepted: --error on a preset without \[branch\] sections' "$T/e" &&
+    ok "error: --error on a preset with a branch is refused (exit 2, saying why)" ||
+    notok "error: --error on a branched preset (exit $st)" "$T/e"
 [ "$fails" -eq 0 ]
