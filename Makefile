@@ -7,10 +7,14 @@
 #   make fuzz       the libFuzzer campaign, FUZZ_TIME seconds per harness (tests/fuzz)
 #   make check-asan the unit tests under AddressSanitizer + UBSan
 #   make bench      the work-precision benchmark (report in build/bench/)
+#   make bench-steppers  every stepper's true error against tests/reference (into tests/bench/REPORT.md)
+#   make bench-studies   per study: instructions per rhs, rhs, time beside SciPy, true error, error bar
 #   make golden     rewrite tests/golden/*.csv (the collision tables the tests compare with)
+#   make reference  rewrite tests/reference/*.csv, the binary128 reference of the paper studies
 #   make python     the Python package in build/python/hybounce (over build/'s libhybounce.so)
 #   make bench-python  a 1,000-point sweep from Python side by side with hybounce sweep
 #   make bench-figures a figure of each paper study against its batch run; PNG sizes
+#   make bench-tui  the explorer's frame cost at 25k and 250k samples
 #   make install / uninstall   honour PREFIX, DESTDIR, MANPREFIX, LIBDIR, INCLUDEDIR, PYTHONDIR
 #                   (the binary, man page, presets, and libhybounce: shared, static,
 #                   headers under include/hybounce/, pkg-config file hybounce.pc;
@@ -134,6 +138,10 @@ TUI_LIB   := $(BUILD)/libhybounce-tui.a
 BIN       := $(BUILD)/hybounce
 UNIT      := $(BUILD)/unit-tests
 BENCHBIN  := $(BUILD)/hybounce-bench
+# The binary128 reference of the paper's studies (tests/reference/).
+REFBIN    := $(BUILD)/hybounce-ref
+REF_STUDIES := steel-on-bitumen ptfe-pom permanent-contact-shccl permanent-contact-bwshccl \
+               permanent-contact-bwmcl
 
 # libhybounce.so: the core objects are position-independent and hidden
 # unless a public header declares them (HB_BEGIN_DECLS, include/hybounce/export.h).
@@ -158,7 +166,7 @@ pc_rel      = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
 .PHONY: python bench-python
 .PHONY: all run check check-asan unit deps bench install uninstall clean debug lint-man lib FORCE golden bench-docs figures
 
-all: $(BIN) lib python
+all: $(BIN) lib python $(REFBIN)
 
 lib: $(STATIC_LIB) $(SHLIB) $(PCFILE)
 
@@ -234,13 +242,32 @@ $(TUI_LIB): $(TUI_OBJ)
 $(BIN): $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(BIN_LIBS) $(AUBIO_LIBS)
 
-# The figure model of hybounce plot (no plotting library) is unit-tested too.
-UNIT_CLI_OBJ := $(BUILD)/src/cli/plot_model.o $(BUILD)/src/cli/plot_map.o
+# The figure model of hybounce plot (no plotting library) is unit-tested too;
+# its renderer comes along, as the explorer saves figures through it (src/tui/figure.c).
+UNIT_CLI_OBJ := $(BUILD)/src/cli/plot_model.o $(BUILD)/src/cli/plot_map.o $(BUILD)/src/cli/plot_draw.o $(BUILD)/src/cli/plot_cairo.o
 $(UNIT): $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(TEST_OBJ) $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(TEST_LIBS) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
 
 $(BENCHBIN): $(BENCH_OBJ) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $(BENCH_OBJ) $(CORE_LIB) $(CORE_LIBS)
+
+# Written from the paper alone: no engine code, binary128 (libquadmath, part of gcc).
+$(REFBIN): tests/reference/ref.c
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< -lquadmath
+
+# Rewrites the cached reference tables (tests/reference/STUDY.csv, tolerance
+# 1e-28) and shows their own error: each must agree with a run at 1e-24 to
+# 1e-20 (tests/reference/agree.py); about 15 s.
+.PHONY: reference
+reference: $(REFBIN)
+	@set -e; for s in $(REF_STUDIES); do \
+	    ./$(REFBIN) $$s --tol 1e-28 >tests/reference/$$s.csv; \
+	    ./$(REFBIN) $$s --tol 1e-24 >$(BUILD)/ref-$$s-1e-24.csv; \
+	    echo "$$s: the reference at 1e-24 against 1e-28 (largest error per column):"; \
+	    $(PYTHON) tests/reference/agree.py --limit 1e-20 tests/reference/$$s.csv \
+	        $(BUILD)/ref-$$s-1e-24.csv | tr '\n' ' '; echo; \
+	done
 
 # The Python package (python/hybounce: cffi's ABI mode over libhybounce.so).
 # Its declarations (_cdef.py) are generated from the public headers by
@@ -379,6 +406,26 @@ bench: deps
 	./$(BENCHBIN) --out $(BUILD)/bench
 	@sh tests/bench/study-table.sh $(BUILD)/bench/work-precision.csv >$(BUILD)/bench/study-table.md
 	@echo "per-study table (docs/speed-and-accuracy.md): $(BUILD)/bench/study-table.md"
+	@sh tests/bench/studies.sh $(BIN) $(BUILD)/bench/studies.md
+
+# Per paper study: instructions per rhs (callgrind), rhs, rejected steps,
+# engine CPU time beside SciPy DOP853's, the true error against
+# tests/reference and the largest --error bar (build/bench/studies.md; a
+# minute; make bench runs it too, make bench-docs puts it in the README).
+.PHONY: bench-studies
+bench-studies: $(BIN)
+	@mkdir -p $(BUILD)/bench
+	@sh tests/bench/studies.sh $(BIN) $(BUILD)/bench/studies.md
+
+# Every offered stepper's true error against the binary128 reference
+# (tests/reference/) at rtol 1e-6 ... 1e-12, and its ratio to rk8pd's:
+# the table goes into tests/bench/REPORT.md (STEPPERS markers); a minute or two.
+.PHONY: bench-steppers
+bench-steppers: $(BIN)
+	@mkdir -p $(BUILD)/bench
+	@sh tests/bench/steppers.sh $(BIN) $(BUILD)/bench/steppers.md
+	@. tests/tui/readme.inc && { echo; cat $(BUILD)/bench/steppers.md; echo; } | \
+	    readme_splice tests/bench/REPORT.md STEPPERS && echo "tests/bench/REPORT.md (STEPPERS) written"
 
 # After make bench: the per-study table into docs/speed-and-accuracy.md, and tests/bench/REPORT.md.
 bench-docs:
@@ -457,6 +504,17 @@ check-tsan: deps
 bench-sweep: deps
 	@$(MAKE) --no-print-directory all
 	@sh tests/bench/sweep.sh $(BIN) $(BUILD)/bench
+
+# The explorer's frame against the arc's length (study 1 at run.T = 66 s and
+# 730 s, about 25k and 250k samples): instructions a frame drawn
+# (callgrind), playback's share of a core, computing while drawing against
+# --batch (tests/bench/tui_frame.sh; report in build/bench/tui.txt; a few
+# minutes; needs valgrind and tmux).
+.PHONY: bench-tui
+bench-tui: deps
+	@$(MAKE) --no-print-directory all
+	@mkdir -p $(BUILD)/bench
+	@sh tests/bench/tui_frame.sh $(CURDIR)/$(BIN) | tee $(BUILD)/bench/tui.txt
 
 # The engine side by side with the paper's own method (SciPy DOP853, rtol
 # 1e-11, atol 1e-14: tests/bench/scipy_ref.py) on the five paper studies,

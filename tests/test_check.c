@@ -261,6 +261,7 @@ physics_of(const char *preset, int stepper, double tol, struct hb_check_physics 
 	scene_preset(preset, &sc);
 	if (stepper >= 0)
 		sc.run.stepper = stepper;
+	sc.run.limits = 0; /* every stepper, to measure it */
 	if (tol > 0)
 		sc.run.rtol = sc.run.atol = tol;
 	s = hb_sim_new(&sc, msg, n);
@@ -354,6 +355,7 @@ Test(check, the_collisions_that_break_the_law_are_flagged)
 
 	scene_preset("hard-bouc-wen-beta", &sc);
 	sc.run.stepper = HB_STEPPER_BSIMP;
+	sc.run.limits = 0;
 	sc.run.rtol = sc.run.atol = 1e-3;
 	s = hb_sim_new(&sc, msg, sizeof msg);
 	cr_assert_not_null(s, "%s", msg);
@@ -481,6 +483,7 @@ Test(check, every_hard_preset_stepper_and_tolerance_passes_or_warns, .timeout = 
 				int rc;
 
 				s2.run.stepper = st;
+				s2.run.limits = 0;
 				s2.run.rtol = s2.run.atol = tols[t];
 				s = hb_sim_new(&s2, msg, sizeof msg);
 				cr_assert_not_null(s, "%s", msg);

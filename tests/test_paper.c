@@ -109,6 +109,7 @@ Test(paper, every_stepper_on_every_paper_preset, .timeout = 600)
 			size_t i, n;
 
 			sc2.run.stepper = st;
+			sc2.run.limits = 0; /* every stepper, to measure it */
 			sc2.run.rtol = sc2.run.atol = 1e-10;
 			s = hb_sim_new(&sc2, msg, sizeof msg);
 			cr_assert_not_null(s, "%s: %s", *p, msg);
@@ -319,10 +320,13 @@ Test(paper, study3_approach_to_permanent_contact)
 /*
  * Kinks as modes and location on the dense output: the first and third
  * studies (BWMCL's |Psi_2|, BWSHCCL's |v|) under dop853 at rtol 1e-12 do
- * their work in at most half the right-hand-side evaluations rk8pd needed
- * before (87,656 and 39,259 for the first study and BWMCL's third, counted
- * by this engine before issue 8), and fewer than one step in four is
- * rejected (before: 28% and 28%).  Counts of work, not times.
+ * their work in fewer right-hand-side evaluations than rk8pd needed before
+ * (87,656 and 39,259 for the first study and BWMCL's third, counted by this
+ * engine before issue 8; 68,862 and 34,024 now, with dop853's 5th-order
+ * error estimate, which keeps its global error within 10 x rk8pd's: it was
+ * at most half with dop853.f's combined estimate, whose global error was
+ * up to 476 x rk8pd's), and fewer than one step in four is rejected
+ * (before: 28% and 28%).  Counts of work, not times.
  */
 Test(paper, modes_and_dense_output_halve_the_work)
 {
@@ -339,9 +343,10 @@ Test(paper, modes_and_dense_output_halve_the_work)
 
 		scene_preset(cases[i].name, &sc);
 		sc.run.stepper = HB_STEPPER_DOP853;
+		sc.run.limits = 0;
 		s = run_scene(&sc);
 		st = hb_sim_stats(s);
-		cr_expect_leq(2 * st->rhs, cases[i].rhs_before, "%s: %ld rhs evaluations (before %ld)",
+		cr_expect_lt(st->rhs, cases[i].rhs_before, "%s: %ld rhs evaluations (before %ld)",
 		              cases[i].name, st->rhs, cases[i].rhs_before);
 		cr_expect_lt(4 * st->rejected, st->steps + st->rejected, "%s: %ld of %ld steps rejected",
 		             cases[i].name, st->rejected, st->steps + st->rejected);

@@ -77,6 +77,7 @@ scene_same(const struct hb_scene *a, const struct hb_scene *b, const char *what)
 	EQ(run.chatter);
 	EQ(run.reduce);
 	EQ(run.kinks);
+	EQ(run.limits);
 	EQ(d.system);
 	SAME(d.Estar);
 	SAME(d.Re);

@@ -508,6 +508,7 @@ Test(sim, heavy_damping_separates_at_zero_indentation)
 				const struct hb_collision *col;
 
 				sc.run.stepper = steppers[is];
+				sc.run.limits = 0;
 				sc.run.rtol = sc.run.atol = rtols[ir];
 				s = run_scene(&sc);
 				cr_assert_eq(hb_sim_ncollisions(s), 1, "a = %g, %s, rtol %g: %zu collisions", a,
@@ -556,6 +557,7 @@ seek_and_compare(int how, int stepper)
 
 	scene_preset("steel-on-bitumen", &sc);
 	sc.run.stepper = stepper;
+	sc.run.limits = 0;
 	a = run_scene(&sc);
 	ra = hb_sim_stats(a)->rhs;
 	ka = hb_sim_stats(a)->kinks;

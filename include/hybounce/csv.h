@@ -46,6 +46,12 @@ hb_csv_stream_arc(FILE *f, const struct hb_sim *s, char *msg, size_t n);
 int
 hb_csv_stream_collisions(FILE *f, const struct hb_sim *s, char *msg, size_t n);
 
+/* As hb_csv_stream_collisions, with err's NAME_err columns (error.h; NULL: none). */
+struct hb_error_estimate;
+int
+hb_csv_stream_collisions_err(FILE *f, const struct hb_sim *s,
+                             const struct hb_error_estimate *err, char *msg, size_t n);
+
 /*
  * Writes the arc to trace_path and/or the collisions to coll_path (either
  * may be NULL), and the scene beside the first of them as a preset
@@ -106,6 +112,9 @@ struct hb_csv_export_opts {
 	/* The command's other inputs and outputs (outputs.h), which the
 	 * export's files must not be; NULL: none.  Not changed. */
 	const struct hb_outputs *outputs;
+	/* Error bars (error.h) for the collisions CSV: a NAME_err column
+	 * after the others for each value column; NULL: none. */
+	const struct hb_error_estimate *errors;
 };
 
 /*

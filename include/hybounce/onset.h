@@ -55,6 +55,9 @@ struct hb_onset_result {
 	struct hb_onset_drop *drop; /* candidates not kept, in time order (malloc'd) */
 	size_t ndrop;
 	size_t ncand;        /* candidates aubio reported */
+	float *env;          /* the envelope, for showing: peak |amplitude| per env_dt (malloc'd) */
+	size_t nenv;
+	double env_dt;       /* s (0.5 ms, a whole number of samples) */
 };
 
 /*

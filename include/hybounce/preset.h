@@ -80,6 +80,31 @@ size_t
 hb_preset_format(const struct hb_scene *sc, char *buf, size_t n);
 
 /*
+ * A run as a preset that reproduces it (into buf, like hb_preset_format):
+ * its scene; for a run with branches (sim.h: hb_sim_branch) the scene it
+ * began with and a [branch N] section per branch: where it continues from
+ * (t, j), the state there as a check, and the keys that changed.  Where
+ * the file cannot reproduce the run (hb_sim_unrecorded, or a branch that
+ * does not read back to its values), its first line says so.
+ */
+struct hb_sim;
+size_t
+hb_preset_format_run(const struct hb_sim *s, char *buf, size_t n);
+
+/*
+ * hb_preset_open_named for a preset that may hold [branch N] sections (the
+ * other openers refuse them): *br (malloc'd, NULL when none; free it) gets
+ * the branches, each scene being the one before it (with the --set texts)
+ * and the branch's keys.  A host replays them with hb_sim_new and
+ * hb_sim_branch_at, as hybounce --batch and the explorer do.
+ */
+struct hb_branch;
+int
+hb_preset_open_branched(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
+                        struct hb_branch **br, size_t *nbr, char *path, size_t pn, char *msg,
+                        size_t n);
+
+/*
  * Finds a preset by name or path: an existing path is used as is;
  * otherwise NAME or NAME.preset in the preset folders (see
  * hb_preset_dirs()).  Writes the path into out.  Returns 0 or HB_EINVAL with a

@@ -92,6 +92,8 @@ struct hb_scene_run {
 	int chatter;      /* most jumps allowed at one instant of ordinary time */
 	int reduce;       /* REDUCE_* flags */
 	int kinks;        /* 1: steps end on the law's and the loads' kinks (DESIGN.md 4a) */
+	int limits;       /* 1: refuse a stepper at a tolerance where its global error is
+	                   * more than 10 x rk8pd's on the paper's studies (0: only to measure it) */
 };
 
 /*

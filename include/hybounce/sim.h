@@ -200,7 +200,9 @@ hb_sim_seek(struct hb_sim *s, size_t i);
 
 /*
  * Adopts new scene values for what is computed from now on (after the
- * current last sample).  The new scene is validated first; on error
+ * current last sample); where the run continues depends on what it had
+ * computed, so the change is not recorded as a branch (hb_sim_unrecorded;
+ * hb_sim_branch is the reproducible way).  The new scene is validated first; on error
  * nothing changes.  Changing the law or the bodies while the last sample is
  * in contact (or changing the initial conditions or the system) restarts
  * the run from t = 0, and *restarted says so (may be NULL).
@@ -211,6 +213,69 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 /* Discards the run and starts again from t = 0 with the current scene. */
 int
 hb_sim_restart(struct hb_sim *s);
+
+/*
+ * Branches: a run that changes its scene part-way, reproducibly.  A branch
+ * says "from the run's sample at (t, j) on, continue with scene sc"; the
+ * state there is kept as a check.
+ */
+struct hb_branch {
+	double t;            /* the sample the run continues from, s */
+	long j;              /* its jump count */
+	double x, v, xc;     /* the state there (m, m/s, m) */
+	int q;               /* 1: in contact there */
+	struct hb_scene sc;  /* the scene from there on */
+};
+
+/*
+ * Continues the run from its sample i with scene sc, the same way whatever
+ * the run had computed: the run is begun again from t = 0 with its first
+ * scene (hb_sim_scene0), its branches before sample i are taken again, it
+ * is advanced one step at a time to the sample at (t, j) of i, cut there,
+ * and continued with sc (hb_sim_set_scene).  Branches at or after sample i
+ * are replaced.  So hb_sim_new with the first scene, then hb_sim_branch_at
+ * for each branch of hb_sim_branch_get, gives this run bit for bit.  When
+ * sc cannot continue there (a change of the law or the bodies in contact,
+ * of the initial state or the system) the run restarts from t = 0 with sc
+ * and *restarted (may be NULL) says so.  Returns HB_OK, HB_EINVAL (a bad
+ * index or scene, or the replayed run does not reach the sample) or
+ * HB_ENOMEM; on an error other than a bad scene the run is as far as the
+ * replay got.  Costs a run from t = 0 to the sample.
+ */
+int
+hb_sim_branch(struct hb_sim *s, size_t i, const struct hb_scene *sc, int *restarted, char *msg,
+              size_t n);
+
+/*
+ * Takes branch b: advances the run one step at a time until it holds the
+ * sample at (b->t, b->j), cuts it there and continues with b->sc.
+ * *same_state (may be NULL): 1 when the state there is b's to the bit (x,
+ * v, x_c, contact), so the run is the one b was taken from.  Returns
+ * HB_OK, or HB_EINVAL with a message when the run has no sample at (t, j)
+ * (it differs before the branch) or b->sc is refused.
+ */
+int
+hb_sim_branch_at(struct hb_sim *s, const struct hb_branch *b, int *same_state, int *restarted,
+                 char *msg, size_t n);
+
+/* The branches the run holds, in order of t; NULL past the last. */
+size_t
+hb_sim_nbranches(const struct hb_sim *s);
+const struct hb_branch *
+hb_sim_branch_get(const struct hb_sim *s, size_t k);
+
+/* The scene the run began with at t = 0 (hb_sim_scene is the one in effect now). */
+const struct hb_scene *
+hb_sim_scene0(const struct hb_sim *s);
+
+/*
+ * -1, or the first time at which the run changed its scene in a way its
+ * first scene and branches do not record (hb_sim_set_scene continuing the
+ * run, a seek back past a branch): from there on the run is not reproduced
+ * by them.
+ */
+double
+hb_sim_unrecorded(const struct hb_sim *s);
 
 HB_END_DECLS
 

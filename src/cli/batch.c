@@ -45,6 +45,7 @@
 #include "hybounce/collisions.h"
 #include "hybounce/columns.h"
 #include "hybounce/csv.h"
+#include "hybounce/error.h"
 #include "hybounce/law.h"
 #include "hybounce/observables.h"
 #include "hybounce/outputs.h"
@@ -407,8 +408,12 @@ col_head(const struct col *c, char *buf, size_t n)
  * Prints the table of the completed collisions and, below a rule, the
  * contact in progress (live may be NULL).
  */
+static void print_error_table(FILE *out, const struct hb_sim *s, const struct col *cols,
+                              int ncols, const struct hb_error_estimate *est);
+
 static void
-print_table(FILE *out, const struct hb_sim *s, const struct hb_collision *live)
+print_table(FILE *out, const struct hb_sim *s, const struct hb_collision *live,
+            const struct hb_error_estimate *est)
 {
 	struct col cols[NCOLS_MAX];
 	size_t nc = hb_sim_ncollisions(s), r;
@@ -474,6 +479,47 @@ print_table(FILE *out, const struct hb_sim *s, const struct hb_collision *live)
 		fprintf(out, "\n");
 	}
 	fprintf(out, "\n");
+	if (est != NULL)
+		print_error_table(out, s, cols, ncols, est);
+}
+
+/*
+ * --error: the error bars of the completed collisions, a table with the
+ * columns and units of the collision table above.
+ */
+static void
+print_error_table(FILE *out, const struct hb_sim *s, const struct col *cols, int ncols,
+                  const struct hb_error_estimate *est)
+{
+	char buf[64];
+	int c;
+
+	fprintf(out, "error bars (estimated global error of each value above, same units: "
+	        "the run again with rk8pd at rtol %.3g, atol %.3g%s)\n", est->rtol, est->atol,
+	        est->at_floor ? "; less than 100 x tighter, the bars less sure" : "");
+	for (c = 0; c < ncols; c++) {
+		col_head(&cols[c], buf, sizeof buf);
+		fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
+	}
+	fprintf(out, "\n");
+	for (size_t r = 0; r < hb_sim_ncollisions(s); r++) {
+		const struct hb_collision *k = hb_sim_collision(s, r);
+		const struct hb_collision *d = hb_error_find(est, k->i);
+
+		for (c = 0; c < ncols; c++) {
+			double v = d != NULL && cols[c].kind != COL_INDEX ? col_get(&cols[c], d) : NAN;
+
+			if (cols[c].kind == COL_INDEX)
+				snprintf(buf, sizeof buf, "%ld", k->i);
+			else if (isnan(v))
+				snprintf(buf, sizeof buf, "-");
+			else
+				snprintf(buf, sizeof buf, "%.0e", v / cols[c].scale);
+			fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
+		}
+		fprintf(out, "\n");
+	}
+	fprintf(out, "\n");
 }
 
 /* ------------------------------------------------------------------ */
@@ -513,12 +559,26 @@ print_jumps(FILE *out, const struct hb_arc *a)
 }
 
 /*
+ * Significant digits of a value v with error bar err: down to the error's
+ * first digit, 6 at least, 17 at most.
+ */
+static int
+value_digits(double v, double err)
+{
+	int d = 6;
+
+	if (err > 0 && isfinite(err) && v != 0 && isfinite(v))
+		d = (int)floor(log10(fabs(v))) - (int)floor(log10(err)) + 1;
+	return d < 6 ? 6 : d > 17 ? 17 : d;
+}
+
+/*
  * The run observables (observables.h), "name = value unit" in SI as a
  * sweep's runs.csv has them (6 digits; "-" where there is none), as many
  * to a line as fit in 79 columns.
  */
 static void
-print_observables(FILE *out, const struct hb_sim *s)
+print_observables(FILE *out, const struct hb_sim *s, const struct hb_error_estimate *est)
 {
 	int col = 12; /* "  observables" less the blank that each pair brings */
 
@@ -532,7 +592,13 @@ print_observables(FILE *out, const struct hb_sim *s)
 		if (isnan(v))
 			len = snprintf(b, sizeof b, "%s = -", d->name);
 		else if (d->whole)
-			len = snprintf(b, sizeof b, "%s = %ld", d->name, (long)v);
+			len = est != NULL && !isnan(est->obs[k])
+			    ? snprintf(b, sizeof b, "%s = %ld +- %ld", d->name, (long)v, (long)est->obs[k])
+			    : snprintf(b, sizeof b, "%s = %ld", d->name, (long)v);
+		else if (est != NULL && !isnan(est->obs[k]))
+			len = snprintf(b, sizeof b, "%s = %.*g +- %.0e%s%s", d->name,
+			               value_digits(v, est->obs[k]), v, est->obs[k],
+			               d->unit[0] ? " " : "", d->unit);
 		else
 			len = snprintf(b, sizeof b, "%s = %.6g%s%s", d->name, v, d->unit[0] ? " " : "",
 			               d->unit);
@@ -573,7 +639,7 @@ print_bodies(FILE *out, const struct hb_sim *s)
 }
 
 static void
-print_summary(FILE *out, const struct hb_sim *s, int sig)
+print_summary(FILE *out, const struct hb_sim *s, int sig, const struct hb_error_estimate *est)
 {
 	const struct hb_scene *sc = hb_sim_scene(s);
 	const struct hb_arc *a = hb_sim_arc(s);
@@ -606,7 +672,7 @@ print_summary(FILE *out, const struct hb_sim *s, int sig)
 		        hb_sim_ncollisions(s));
 	else
 		fprintf(out, "  collisions  %zu\n", hb_sim_ncollisions(s));
-	print_observables(out, s);
+	print_observables(out, s, est);
 	fprintf(out, "  run time    %s CPU", fmt(st->seconds, hb_unit_time, b1, sizeof b1));
 	fprintf(out, ", %s wall\n", fmt(st->wall, hb_unit_time, b1, sizeof b1));
 	fprintf(out, "  steps       %ld accepted, %ld rejected\n", st->steps, st->rejected);
@@ -686,6 +752,39 @@ run_watched(struct hb_sim *s, int *sig)
 	return rc;
 }
 
+/*
+ * Takes the branches a preset records, as the explorer took them
+ * (hb_sim_branch_at).  A branch that begins where this run has no sample
+ * is refused (-1); one whose state there differs from the recorded one is
+ * taken with a warning: the run is not the one exported.
+ */
+static int
+replay_branches(struct hb_sim *s, const char *path, const struct hb_branch *br, size_t nbr)
+{
+	char msg[1024];
+
+	for (size_t k = 0; k < nbr; k++) {
+		int same = 0, restarted = 0;
+
+		msg[0] = '\0';
+		if (hb_sim_branch_at(s, &br[k], &same, &restarted, msg, sizeof msg) != HB_OK) {
+			fprintf(stderr, PROG ": %s: [branch %zu]: %s\n", path, k + 1, msg);
+			return -1;
+		}
+		if (restarted) {
+			fprintf(stderr, PROG ": %s: [branch %zu]: its values cannot continue the run there "
+			        "(the law or the bodies changed in contact); accepted: a branch the explorer "
+			        "made\n", path, k + 1);
+			return -1;
+		}
+		if (!same)
+			fprintf(stderr, PROG ": warning: %s: [branch %zu]: the state at t = %.9g s differs "
+			        "from the one recorded: this run is not the one the file was exported from\n",
+			        path, k + 1, br[k].t);
+	}
+	return 0;
+}
+
 /* ------------------------------------------------------------------ */
 
 int
@@ -698,6 +797,9 @@ batch_run(const struct batch_options *o)
 	struct hb_csv_export_opts eo = { 0 };
 	struct plot_out po;
 	struct hb_outputs pol;
+	struct hb_error_estimate est_store, *est = NULL;
+	struct hb_branch *br = NULL;
+	size_t nbr = 0;
 	int status = 0, have_live, rc, sig = 0;
 	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
 	/* The files to export; "-" goes to stdout after them. */
@@ -707,9 +809,17 @@ batch_run(const struct batch_options *o)
 	FILE *out = trace_out || coll_out ? stderr : stdout;
 
 	msg[0] = '\0';
-	if (hb_preset_open_named(o->preset, o->sets, o->nsets, &sc, path, sizeof path, msg,
-	                         sizeof msg) != HB_OK) {
+	/* a preset may record branches (the explorer's b): they are replayed below */
+	if (hb_preset_open_branched(o->preset, o->sets, o->nsets, &sc, &br, &nbr, path, sizeof path,
+	                            msg, sizeof msg) != HB_OK) {
 		err(msg[0] ? msg : o->preset);
+		return 2;
+	}
+	if (o->error && nbr > 0) {
+		fprintf(stderr, PROG ": --error: %s records %zu branch%s (the explorer's b); error "
+		        "bars are made by a second run from t = 0, which has none; accepted: --error "
+		        "on a preset without [branch] sections\n", path, nbr, nbr == 1 ? "" : "es");
+		free(br);
 		return 2;
 	}
 	if (trace_out && coll_out) {
@@ -732,6 +842,7 @@ batch_run(const struct batch_options *o)
 	eo.coll = coll_file;
 	eo.run_preset = path;
 	eo.provenance = cli_provenance();
+	eo.errors = NULL; /* set after the run, with --error */
 	msg[0] = '\0';
 	if ((trace_file != NULL || coll_file != NULL) &&
 	    hb_csv_export_check_with(&eo, msg, sizeof msg) != HB_OK) {
@@ -765,21 +876,50 @@ batch_run(const struct batch_options *o)
 	if (s == NULL) {
 		fprintf(stderr, PROG ": %s: %s\n", path, msg[0] ? msg : "cannot start the run");
 		cli_signals_restore();
+		free(br);
 		return 2;
 	}
+	if (replay_branches(s, path, br, nbr) != 0) {
+		hb_sim_free(s);
+		cli_signals_restore();
+		free(br);
+		return 2;
+	}
+	free(br);
 	rc = run_watched(s, &sig);
 	if (hb_sim_end(s) == HB_SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE))
 		status = 1;
 
+	/* --error: the run again at a hundredth of the tolerances (error.h). */
+	if (o->error && sig == 0 && hb_sim_end(s) != HB_SIM_END_FAIL) {
+		msg[0] = '\0';
+		if (hb_error_estimate(s, (const volatile int *)&cli_signal, &est_store, msg,
+		                      sizeof msg) == HB_OK)
+			est = &est_store;
+		else if (cli_signal == 0) {
+			fprintf(stderr, PROG ": --error: no error bars: %s\n", msg);
+			status = 1;
+		}
+		sig = cli_signal;
+	}
+
 	/* The header comes after the run: the tolerance scales are set per contact. */
 	have_live = hb_sim_contact_live(s, &live);
 	if (!o->quiet) {
-		print_header(out, o->preset, path, hb_sim_scene(s), hb_sim_stats(s));
-		print_table(out, s, have_live ? &live : NULL);
+		/* the scene from t = 0, then where the branches the preset records begin */
+		print_header(out, o->preset, path, hb_sim_scene0(s), hb_sim_stats(s));
+		for (size_t k = 0; k < hb_sim_nbranches(s); k++) {
+			char tb[64];
+
+			fprintf(out, "branch %-4zu from t = %s (j = %ld) on, with the values of its "
+			        "[branch %zu]\n", k + 1, fmt(hb_sim_branch_get(s, k)->t, hb_unit_time, tb,
+			        sizeof tb), hb_sim_branch_get(s, k)->j, k + 1);
+		}
+		print_table(out, s, have_live ? &live : NULL, est);
 	}
 	if (o->jumps)
 		print_jumps(out, hb_sim_arc(s));
-	print_summary(out, s, sig);
+	print_summary(out, s, sig, est);
 
 	if (o->check) {
 		msg[0] = '\0';
@@ -790,6 +930,24 @@ batch_run(const struct batch_options *o)
 			         hb_arc_len(hb_sim_arc(s)), hb_arc_njumps(hb_sim_arc(s)));
 		} else {
 			fprintf(out, "  check       solution pair: FAILED: %s\n", msg);
+			if (out != stderr)
+				fprintf(stderr, PROG ": check failed: %s\n", msg);
+			if (status == 0)
+				status = 1;
+		}
+	}
+	if (o->check && est != NULL) {
+		double worst;
+
+		msg[0] = '\0';
+		if (hb_error_check(s, est, &worst, msg, sizeof msg) == HB_OK) {
+			fprintf(out, "  check       error bars: ok (the largest is %.2g x rtol; each "
+			        "must be at most %g x rtol = %.3g, relative to its value; t_e and "
+			        "t_s to t_d, x_c^r to x_c^max, W to |J_Fc v_i| where larger)\n",
+			        worst, HB_ERROR_CHECK_FACTOR,
+			        HB_ERROR_CHECK_FACTOR * hb_sim_scene(s)->run.rtol);
+		} else {
+			fprintf(out, "  check       error bars: FAILED: %s\n", msg);
 			if (out != stderr)
 				fprintf(stderr, PROG ": check failed: %s\n", msg);
 			if (status == 0)
@@ -859,6 +1017,7 @@ batch_run(const struct batch_options *o)
 		struct hb_csv_export_report rep;
 
 		msg[0] = '\0';
+		eo.errors = est;
 		if (hb_csv_export_with(s, &eo, &rep, msg, sizeof msg) != HB_OK) {
 			fprintf(stderr, PROG ": export failed: %s\n", msg);
 			status = 2;
@@ -881,7 +1040,7 @@ batch_run(const struct batch_options *o)
 	if (trace_out || coll_out) {
 		msg[0] = '\0';
 		rc = trace_out ? hb_csv_stream_arc(stdout, s, msg, sizeof msg)
-		               : hb_csv_stream_collisions(stdout, s, msg, sizeof msg);
+		               : hb_csv_stream_collisions_err(stdout, s, est, msg, sizeof msg);
 		/*
 		 * EPIPE (SIGPIPE ignored): the reader has all it wanted; stop
 		 * quietly, like a killed writer, with the run's status.
@@ -892,6 +1051,7 @@ batch_run(const struct batch_options *o)
 		}
 		clearerr(stdout);   /* said here (or quiet on EPIPE): not again in main */
 	}
+	hb_error_free(est);
 	hb_sim_free(s);
 	if (sig == 0)
 		sig = cli_signal;   /* caught while reporting: the report is whole */

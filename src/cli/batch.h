@@ -26,6 +26,7 @@ struct batch_options {
 	int jumps;                 /* 1: print every jump's location record */
 	int check;                 /* 1: run hb_check_solution_pair and report it */
 	int quiet;                 /* 1: no header block and no collision table */
+	int error;                 /* 1: error bars (error.h): a second run, printed and in the CSV */
 };
 
 /* Runs one preset to its end and reports.  Returns the exit status. */

@@ -48,6 +48,7 @@ enum {
 	OPT_LIST_PRESETS,
 	OPT_LIST_LAWS,
 	OPT_DATA,
+	OPT_ERROR,
 };
 
 static const struct option long_options[] = {
@@ -58,6 +59,7 @@ static const struct option long_options[] = {
 	{ "jumps",        no_argument,       NULL, OPT_JUMPS },
 	{ "plot",         required_argument, NULL, OPT_PLOT },
 	{ "check",        no_argument,       NULL, OPT_CHECK },
+	{ "error",        no_argument,       NULL, OPT_ERROR },
 	{ "quiet",        no_argument,       NULL, 'q' },
 	{ "ascii",        no_argument,       NULL, OPT_ASCII },
 	{ "script",       required_argument, NULL, OPT_SCRIPT },
@@ -76,7 +78,7 @@ usage(FILE *f)
 "usage: hybounce [OPTIONS] [PRESET]     open the explorer (default preset: "
 DEFAULT_PRESET ")\n"
 "       hybounce --batch PRESET [--set KEY=VALUE]... [--trace FILE]\n"
-"                [--collisions FILE] [--plot FILE] [--jumps] [--check] [--quiet]\n"
+"                [--collisions FILE] [--plot FILE] [--jumps] [--check] [--error] [--quiet]\n"
 "       hybounce --list-presets | --list-laws | --help | --version\n"
 "       hybounce sweep PRESET --vary KEY=SPEC... --out DIR   (see hybounce sweep --help)\n"
 "       hybounce fit PRESET --data FILE --free KEY[,KEY...] [OPTIONS]\n"
@@ -102,7 +104,12 @@ DEFAULT_PRESET ")\n"
 "                          plot --kind state) to FILE.png, .pdf, .svg or .tex\n"
 "      --jumps             (batch) print how each jump was located\n"
 "      --check             (batch) check the computed solution pair (paper,\n"
-"                          section Simulation) and report it\n"
+"                          section Simulation) and report it; with --error,\n"
+"                          also that every error bar is within 100 x run.rtol\n"
+"      --error             (batch) an error bar on every observable: the run\n"
+"                          again with rk8pd at rtol/100, atol/100; the values\n"
+"                          as NAME = VALUE +- ERROR, the collisions CSV with\n"
+"                          NAME_err columns\n"
 "  -q, --quiet             (batch) print only the summary, no table\n"
 "      --ascii             (explorer) plain ASCII plots, even in a UTF-8 locale\n"
 "      --script FILE       (explorer) play keystrokes from FILE\n"
@@ -225,6 +232,7 @@ hybounce_main(int argc, char **argv)
 		case OPT_JUMPS: bo.jumps = 1; break;
 		case OPT_PLOT: bo.plot = optarg; break;
 		case OPT_CHECK: bo.check = 1; break;
+		case OPT_ERROR: bo.error = 1; break;
 		case 'q': bo.quiet = 1; break;
 		case OPT_ASCII: ascii = 1; break;
 		case OPT_SCRIPT: script = optarg; break;
@@ -288,10 +296,11 @@ hybounce_main(int argc, char **argv)
 
 	/* The explorer. */
 	if (bo.trace != NULL || bo.collisions != NULL || bo.jumps || bo.check || bo.quiet ||
-	    bo.plot != NULL) {
+	    bo.plot != NULL || bo.error) {
 		const char *o = bo.trace ? "--trace" : bo.collisions ? "--collisions"
 		              : bo.plot ? "--plot"
-		              : bo.jumps ? "--jumps" : bo.check ? "--check" : "--quiet";
+		              : bo.jumps ? "--jumps" : bo.check ? "--check"
+		              : bo.error ? "--error" : "--quiet";
 
 		free(sets);
 		return bad_usage("%s needs --batch PRESET (the explorer exports with "

@@ -31,6 +31,7 @@
 #include "hybounce/atomic.h"
 #include "hybounce/columns.h"
 #include "hybounce/csv.h"
+#include "hybounce/error.h"
 #include "hybounce/outputs.h"
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
@@ -144,20 +145,27 @@ write_arc(FILE *f, const struct hb_sim *s)
 	return 0;
 }
 
-/* As write_arc, for the completed collisions. */
+/*
+ * As write_arc, for the completed collisions; with err (error.h, may be
+ * NULL) a NAME_err column after the others for each value column: the
+ * estimated error of that value (empty where there is none).
+ */
 static int
-write_collisions(FILE *f, const struct hb_sim *s)
+write_collisions_err(FILE *f, const struct hb_sim *s, const struct hb_error_estimate *err)
 {
 	size_t nc = hb_sim_ncollisions(s);
 	int e;
 
 	for (int k = 0; k < hb_collision_ncolumns; k++) /* the columns of columns.h */
 		put_field(f, hb_collision_columns[k].name, k == 0);
+	for (int k = 0; err != NULL && k < hb_collision_ncolumns; k++)
+		if (!hb_collision_columns[k].index)
+			fprintf(f, ",%s_err", hb_collision_columns[k].name);
 	fputc('\n', f);
 	if ((e = stream_err(f)) != 0)
 		return e;
 	for (size_t i = 0; i < nc; i++) {
-		const struct hb_collision *c = hb_sim_collision(s, i);
+		const struct hb_collision *c = hb_sim_collision(s, i), *d;
 		if (c == NULL || !c->complete)
 			continue;
 		for (int k = 0; k < hb_collision_ncolumns; k++) {
@@ -166,11 +174,22 @@ write_collisions(FILE *f, const struct hb_sim *s)
 			else
 				csv_put_num(f, hb_collision_value(c, &hb_collision_columns[k]));
 		}
+		d = err != NULL ? hb_error_find(err, c->i) : NULL;
+		for (int k = 0; err != NULL && k < hb_collision_ncolumns; k++)
+			if (!hb_collision_columns[k].index)
+				csv_put_num(f, d != NULL ? hb_collision_value(d, &hb_collision_columns[k])
+				                         : NAN);
 		fputc('\n', f);
 		if ((e = stream_err(f)) != 0)
 			return e;
 	}
 	return 0;
+}
+
+static int
+write_collisions(FILE *f, const struct hb_sim *s)
+{
+	return write_collisions_err(f, s, NULL);
 }
 
 typedef int (*rows_fn)(FILE *, const struct hb_sim *);
@@ -228,6 +247,25 @@ int
 hb_csv_stream_collisions(FILE *f, const struct hb_sim *s, char *msg, size_t n)
 {
 	return stream_one(f, s, write_collisions, msg, n);
+}
+
+int
+hb_csv_stream_collisions_err(FILE *f, const struct hb_sim *s,
+                             const struct hb_error_estimate *err, char *msg, size_t n)
+{
+	int e;
+
+	errno = 0;
+	e = write_collisions_err(f, s, err);
+	if (e == 0 && fflush(f) != 0)
+		e = errno != 0 ? errno : EIO;
+	if (e == 0)
+		e = stream_err(f);
+	if (e == 0)
+		return HB_OK;
+	hb_status_set(msg, n, HB_EIO, "write error: %s", strerror(e));
+	errno = e;
+	return HB_EIO;
 }
 
 /* PATH with the extension of its last component replaced by ".preset". */
@@ -363,12 +401,12 @@ static int
 write_scene(FILE *f, const struct hb_sim *s, struct hb_atomic_set *set, const char *prov,
             const char *trace, int k_trace, const char *coll, int k_coll)
 {
-	size_t len = hb_preset_format(hb_sim_scene(s), NULL, 0);
+	size_t len = hb_preset_format_run(s, NULL, 0);
 	char *buf = malloc(len + 1);
 
 	if (buf == NULL)
 		return ENOMEM;
-	hb_preset_format(hb_sim_scene(s), buf, len + 1);
+	hb_preset_format_run(s, buf, len + 1);
 	fwrite(buf, 1, len, f);
 	free(buf);
 	if (prov != NULL && prov[0] != '\0')
@@ -433,7 +471,7 @@ hb_csv_export_with(const struct hb_sim *s, const struct hb_csv_export_opts *o,
 		if (k < 2)
 			index[k] = set.n - 1;
 		errno = 0;
-		e = k == 0 ? write_arc(f, s) : k == 1 ? write_collisions(f, s)
+		e = k == 0 ? write_arc(f, s) : k == 1 ? write_collisions_err(f, s, o->errors)
 		           : write_scene(f, s, &set, o->provenance, o->trace, index[0], o->coll,
 		                         index[1]);
 		if (e == ENOMEM) {

@@ -32,6 +32,7 @@
 #include "onset_seq.h"
 
 enum { HOP = 64, WIN = 512 };
+#define ENV_DT 0.0005 /* the envelope's block, s */
 #define RISE 0.002   /* longest rise of a click from its start to its peak, s */
 #define QUIET 0.0005 /* a gap this long below the threshold ends a click's sound, s */
 #define REACH 0.010  /* farthest a click lies from aubio's time for it, s */
@@ -46,6 +47,7 @@ hb_onset_result_free(struct hb_onset_result *r)
 	free(r->t);
 	free(r->peak);
 	free(r->drop);
+	free(r->env);
 	memset(r, 0, sizeof *r);
 }
 
@@ -136,6 +138,27 @@ noise_floor(const float *x, size_t nx, double sr)
 	if (isfinite(min))
 		return min;
 	return isfinite(all) ? all : 0;
+}
+
+/* The envelope for showing: the peak |amplitude| of each ENV_DT block. */
+static int
+envelope(const float *x, size_t nx, double sr, struct hb_onset_result *r)
+{
+	size_t blk = (size_t)lround(ENV_DT * sr), nb;
+
+	if (blk < 1)
+		blk = 1;
+	nb = (nx + blk - 1) / blk;
+	if (nb == 0)
+		return 0;
+	if ((r->env = calloc(nb, sizeof *r->env)) == NULL)
+		return -1;
+	for (size_t k = 0; k < nx; k++)
+		if (fabsf(x[k]) > r->env[k / blk])
+			r->env[k / blk] = fabsf(x[k]);
+	r->nenv = nb;
+	r->env_dt = (double)blk / sr;
+	return 0;
 }
 
 static float
@@ -354,6 +377,8 @@ hb_onset_detect(const char *path, const struct hb_onset_options *o, struct hb_on
 	sr = r->samplerate;
 	r->duration = (double)nx / sr;
 	r->noise = noise_floor(x, nx, sr);
+	if (envelope(x, nx, sr, r) != 0)
+		goto nomem;
 	od = A->new_aubio_onset(method, WIN, HOP, (uint_t)sr);
 	if (od == NULL) {
 		st = hb_status_set(msg, n, HB_EINVAL, "onset method '%s'%s%s; accepted: default, "

@@ -20,10 +20,9 @@
  * under a lock and puts them back (preset_ini.h).  Finding presets is in
  * preset_find.c.
  *
- * Writing prints every value in SI with %.17g and its unit, so that
- * loading the file reproduces the scene bit for bit; the file is written by
- * the atomic writer (atomic.h): a temporary name in its folder, flushed to
- * disk and renamed.
+ * [branch N] sections (a run that changed its values part-way) are read
+ * by preset_branch.c, for hb_preset_open_branched only; the other openers
+ * refuse them.  Writing is in preset_write.c.
  */
 #include <ctype.h>
 #include <errno.h>
@@ -48,15 +47,8 @@
 
 #define PRESET_MAX_ENTRIES 512
 
-struct entry {
-	char section[32];
-	char name[64];
-	char *value;
-	int line;
-};
-
 struct collect {
-	struct entry *e;
+	struct preset_entry *e;
 	int n;
 	int oom;
 	int overflow_line; /* first line with a section or key name too long */
@@ -108,7 +100,7 @@ collect_handler(void *user, const char *section, const char *name, const char *v
 {
 	struct handler_ctx *h = user;
 	struct collect *c = h->c;
-	struct entry *e;
+	struct preset_entry *e;
 
 	if (c->n >= PRESET_MAX_ENTRIES) {
 		if (c->toomany_line == 0)
@@ -144,22 +136,21 @@ collect_free(struct collect *c)
 }
 
 /* The sections, in the order a preset is written. */
-static const char *const sections[] = { "scene", "body1", "body2", "law", "chain", "striker",
-	"loads", "initial", "run" };
-#define NSECTIONS (sizeof sections / sizeof sections[0])
+const char *const preset_sections[PRESET_NSECTIONS] = { "scene", "body1", "body2", "law", "chain",
+	"striker", "loads", "initial", "run" };
 
 static int
 section_index(const char *s)
 {
-	for (size_t i = 0; i < NSECTIONS; i++)
-		if (strcmp(sections[i], s) == 0)
+	for (size_t i = 0; i < PRESET_NSECTIONS; i++)
+		if (strcmp(preset_sections[i], s) == 0)
 			return (int)i;
 	return -1;
 }
 
 /* "section.name" of an entry, into key (at least 97 bytes: the parts are bounded). */
 static void
-entry_key(const struct entry *e, char *key)
+entry_key(const struct preset_entry *e, char *key)
 {
 	size_t ls = strlen(e->section), ln = strlen(e->name);
 
@@ -170,7 +161,7 @@ entry_key(const struct entry *e, char *key)
 
 /* 1 if key "SECTION.NAME" is in the table (or the current law's parameters). */
 static int
-key_known(const struct hb_scene *sc, const struct entry *e)
+key_known(const struct hb_scene *sc, const struct preset_entry *e)
 {
 	char key[128];
 
@@ -207,7 +198,7 @@ known_list(const struct hb_scene *sc, const char *section, char *buf, size_t n)
 
 /* "FILE:LINE: [section] name: WHAT; accepted: ACCEPTED" */
 static int
-entry_error(const struct entry *e, const char *file, const struct hb_scene_error *err, char *msg,
+entry_error(const struct preset_entry *e, const char *file, const struct hb_scene_error *err, char *msg,
             size_t n)
 {
 	return hb_status_set(msg, n, HB_EINVAL, "%s:%d: [%s] %s: %s%s%s", file, e->line, e->section,
@@ -216,7 +207,7 @@ entry_error(const struct entry *e, const char *file, const struct hb_scene_error
 
 /* Applies one entry through hb_scene_set_text. */
 static int
-apply(struct hb_scene *sc, const struct entry *e, const char *file, char *msg, size_t n)
+apply(struct hb_scene *sc, const struct preset_entry *e, const char *file, char *msg, size_t n)
 {
 	struct hb_scene_error err;
 	char key[128];
@@ -233,7 +224,7 @@ apply(struct hb_scene *sc, const struct entry *e, const char *file, char *msg, s
 	return entry_error(e, file, &err, msg, n);
 }
 
-static const struct entry *
+static const struct preset_entry *
 entry_find(const struct collect *c, const char *section, const char *name)
 {
 	for (int i = 0; i < c->n; i++)
@@ -244,7 +235,7 @@ entry_find(const struct collect *c, const char *section, const char *name)
 }
 
 static int
-is_string_key(const struct entry *e)
+is_string_key(const struct preset_entry *e)
 {
 	char key[128];
 	const struct scene_keydef *kd;
@@ -256,7 +247,7 @@ is_string_key(const struct entry *e)
 
 /* Is entry e a law exponent (p or n) of the current law? */
 static int
-is_exponent(const struct hb_scene *sc, const struct entry *e)
+is_exponent(const struct hb_scene *sc, const struct preset_entry *e)
 {
 	int i = hb_law_param_index(sc->law, e->name);
 
@@ -264,14 +255,23 @@ is_exponent(const struct hb_scene *sc, const struct entry *e)
 	    (sc->law->params[i].flags & (HB_LAW_PARAM_EXPONENT_P | HB_LAW_PARAM_EXPONENT_N));
 }
 
+/* branches: 1 when [branch N] sections are taken (and left to preset_branch.c) */
 static int
-load_entries(struct collect *c, const char *file, struct hb_scene *sc, char *msg, size_t n)
+load_entries(struct collect *c, const char *file, struct hb_scene *sc, int branches, char *msg,
+             size_t n)
 {
 	int st;
 
 	/* Sections, duplicates and empty values. */
 	for (int i = 0; i < c->n; i++) {
-		const struct entry *e = &c->e[i];
+		const struct preset_entry *e = &c->e[i];
+		if (preset_is_branch(e->section) && !branches)
+			return hb_status_set(msg, n, HB_EINVAL, "%s:%d: [%s]: this preset records a run "
+			    "with branches (the explorer's b: it changed values part-way), which "
+			    "hybounce --batch and the explorer replay and this command does not; "
+			    "accepted: a preset without [branch] sections", file, e->line, e->section);
+		if (preset_is_branch(e->section))
+			continue;
 		if (section_index(e->section) < 0)
 			return hb_status_set(msg, n, HB_EINVAL,
 			    "%s:%d: [%s] %s: unknown section; known sections: scene, body1, body2, "
@@ -291,7 +291,7 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, char *msg
 
 	hb_scene_defaults(sc);
 	/* [scene] law first, then the rest of [scene]. */
-	const struct entry *law = entry_find(c, "scene", "law");
+	const struct preset_entry *law = entry_find(c, "scene", "law");
 	if (law != NULL && (st = apply(sc, law, file, msg, n)) != HB_OK)
 		return st;
 	for (int i = 0; i < c->n; i++)
@@ -302,7 +302,7 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, char *msg
 	/* Bodies: a section present starts from an empty body. */
 	for (int b = 0; b < 2; b++) {
 		const char *sec = b == 0 ? "body1" : "body2";
-		const struct entry *E, *nu, *rho, *mass;
+		const struct preset_entry *E, *nu, *rho, *mass;
 		if (entry_find(c, sec, NULL) == NULL)
 			continue;
 		memset(&sc->body[b], 0, sizeof sc->body[b]);
@@ -316,14 +316,14 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, char *msg
 		rho = entry_find(c, sec, "rho");
 		mass = entry_find(c, sec, "mass");
 		if ((E == NULL) != (nu == NULL)) {
-			const struct entry *e = E != NULL ? E : nu;
+			const struct preset_entry *e = E != NULL ? E : nu;
 			return hb_status_set(msg, n, HB_EINVAL,
 			    "%s:%d: [%s] %s: a material needs both E and nu; accepted: both, or "
 			    "neither (then give the mass and type law.k)", file, e->line, sec,
 			    e->name);
 		}
 		if (rho != NULL && mass != NULL) {
-			const struct entry *e = rho->line > mass->line ? rho : mass;
+			const struct preset_entry *e = rho->line > mass->line ? rho : mass;
 			return hb_status_set(msg, n, HB_EINVAL,
 			    "%s:%d: [%s] %s: give rho (with R) or mass, not both; accepted: one "
 			    "of them", file, e->line, sec, e->name);
@@ -334,7 +334,7 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, char *msg
 	/* [law]: the exponents first. */
 	for (int pass = 0; pass < 2; pass++)
 		for (int i = 0; i < c->n; i++) {
-			const struct entry *e = &c->e[i];
+			const struct preset_entry *e = &c->e[i];
 			if (strcmp(e->section, "law") != 0 || is_exponent(sc, e) != (pass == 0))
 				continue;
 			if ((st = apply(sc, e, file, msg, n)) != HB_OK)
@@ -353,7 +353,7 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, char *msg
 	if (st != HB_OK) {
 		const char *dot = strchr(err.key, '.');
 		char sec[32] = "";
-		const struct entry *e = NULL;
+		const struct preset_entry *e = NULL;
 		if (dot == NULL || (size_t)(dot - err.key) >= sizeof sec) {
 			char m[512];
 			return hb_status_set(msg, n, st, "%s: %s", file, hb_scene_error_str(&err, m, sizeof m));
@@ -408,8 +408,13 @@ preset_ini_end(const struct preset_ini_saved *sv)
 	pthread_mutex_unlock(&ini_lock);
 }
 
-int
-hb_preset_load_string(const char *text, const char *name, struct hb_scene *sc, char *msg, size_t n)
+/*
+ * Loads the text; with keep, [branch N] sections are taken and every entry
+ * is handed back in *keep (collect_free it), else they are refused.
+ */
+static int
+load_text(const char *text, const char *name, struct hb_scene *sc, struct collect *keep,
+          char *msg, size_t n)
 {
 	struct collect c = { 0 };
 	struct source src = { text, 0, 0 };
@@ -450,9 +455,18 @@ hb_preset_load_string(const char *text, const char *name, struct hb_scene *sc, c
 		    "[body2], [law], [loads], [initial] and [run] sections with their keys, "
 		    "as in presets/*.preset", name);
 	else
-		st = load_entries(&c, name, sc, msg, n);
-	collect_free(&c);
+		st = load_entries(&c, name, sc, keep != NULL, msg, n);
+	if (st == HB_OK && keep != NULL)
+		*keep = c;
+	else
+		collect_free(&c);
 	return st;
+}
+
+int
+hb_preset_load_string(const char *text, const char *name, struct hb_scene *sc, char *msg, size_t n)
+{
+	return load_text(text, name, sc, NULL, msg, n);
 }
 
 /* Reads a whole file into a malloc'd string, once, bounded (input.h). */
@@ -517,20 +531,28 @@ apply_set(struct hb_scene *sc, const char *arg, char *msg, size_t n)
 	return HB_OK;
 }
 
-/* Loads path (read once), applies sets, validates; the text read goes to *text when asked. */
+/*
+ * Loads path (read once), applies sets, validates; the text read goes to
+ * *text when asked.  With br, [branch N] sections are read into *br
+ * (preset_branch.c) on top of the scene with its sets; else refused.
+ */
 static int
 open_text(const char *path, const char *const *sets, int nsets, struct hb_scene *sc,
-          char **text, char *msg, size_t n)
+          char **text, struct hb_branch **br, size_t *nbr, char *msg, size_t n)
 {
 	char m[512], *buf = NULL;
+	struct collect c = { 0 };
 	int st = read_file(path, &buf, msg, n);
 
 	if (st == HB_OK)
-		st = hb_preset_load_string(buf, path, sc, msg, n);
+		st = load_text(buf, path, sc, br != NULL ? &c : NULL, msg, n);
 	for (int i = 0; st == HB_OK && i < nsets; i++)
 		st = apply_set(sc, sets[i], msg, n);
 	if (st == HB_OK && (st = hb_scene_validate(sc, m, sizeof m)) != HB_OK)
 		hb_status_set(msg, n, st, "%s: %s", path, m);
+	if (st == HB_OK && br != NULL)
+		st = preset_branches_read(c.e, c.n, path, sc, br, nbr, msg, n);
+	collect_free(&c);
 	if (st == HB_OK && text != NULL)
 		*text = buf;
 	else
@@ -542,7 +564,7 @@ int
 hb_preset_open(const char *path, const char *const *sets, int nsets, struct hb_scene *sc,
             char *msg, size_t n)
 {
-	return open_text(path, sets, nsets, sc, NULL, msg, n);
+	return open_text(path, sets, nsets, sc, NULL, NULL, NULL, msg, n);
 }
 
 int
@@ -564,79 +586,22 @@ hb_preset_open_text(const char *name, const char *const *sets, int nsets, struct
 	if ((st = hb_preset_resolve(name, path, pn, m, sizeof m)) != HB_OK)
 		return hb_status_set(msg, n, st, "preset '%.*s%s': %s", strlen(name) > 72 ? 60 : 72,
 		    name, strlen(name) > 72 ? "..." : "", m[0] ? m : "not found");
-	return open_text(path, sets, nsets, sc, text, msg, n);
-}
-
-/* ---------------------------------------------------------------- */
-/* Writing */
-
-/*
- * "key = VALUE".  A value that begins with ';' or '#' is written right
- * after the '=': inih takes those for a comment only after white space.
- */
-static void
-out_entry(struct textbuf *o, const char *key, const char *value)
-{
-	textbuf_printf(o, "%s =%s%s\n", key, value[0] == ';' || value[0] == '#' ? "" : " ", value);
-}
-
-size_t
-hb_preset_format(const struct hb_scene *sc, char *buf, size_t n)
-{
-	struct textbuf o = { buf, n, 0 };
-	char v[512], sec[16], u[64];
-
-	if (buf != NULL && n > 0)
-		buf[0] = '\0';
-#ifdef HYBOUNCE_VERSION
-	textbuf_printf(&o, "; hybounce %s preset: SI values that reproduce the scene exactly\n",
-	    HYBOUNCE_VERSION);
-#else
-	textbuf_printf(&o, "; hybounce preset: SI values that reproduce the scene exactly\n");
-#endif
-	for (size_t s = 0; s < NSECTIONS; s++) {
-		int any = strcmp(sections[s], "law") == 0;
-
-		for (int k = 0; k < scene_nkeydefs && !any; k++) /* a section with no key is left out */
-			any = strcmp(scene_keydef_section(&scene_keydefs[k], sec, sizeof sec), sections[s]) == 0 &&
-			      scene_keydef_present(sc, &scene_keydefs[k]);
-		if (!any)
-			continue;
-		textbuf_printf(&o, "\n[%s]\n", sections[s]);
-		if (strcmp(sections[s], "law") == 0) {
-			for (int i = 0; sc->law != NULL && i < sc->law->n_params; i++) {
-				const struct hb_law_param *pp = &sc->law->params[i];
-				if ((pp->flags & HB_LAW_PARAM_STIFFNESS) && sc->d.k_derived)
-					continue;
-				hb_units_dim_str(scene_lawpar_dim(sc, i), u, sizeof u);
-				cnum_snprintf(v, sizeof v, "%.17g%s%s", sc->par[i], u[0] ? " " : "", u);
-				out_entry(&o, pp->name, v);
-			}
-			continue;
-		}
-		for (int k = 0; k < scene_nkeydefs; k++) {
-			const struct scene_keydef *kd = &scene_keydefs[k];
-			if (strcmp(scene_keydef_section(kd, sec, sizeof sec), sections[s]) != 0 ||
-			    !scene_keydef_present(sc, kd))
-				continue;
-			scene_keydef_print(sc, kd, v, sizeof v);
-			out_entry(&o, kd->key + strlen(sec) + 1, v);
-		}
-	}
-	return o.len;
+	return open_text(path, sets, nsets, sc, text, NULL, NULL, msg, n);
 }
 
 int
-hb_preset_save(const char *path, const struct hb_scene *sc, char *msg, size_t n)
+hb_preset_open_branched(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
+                        struct hb_branch **br, size_t *nbr, char *path, size_t pn, char *msg,
+                        size_t n)
 {
-	size_t len = hb_preset_format(sc, NULL, 0);
-	char *buf = malloc(len + 1);
+	char m[4096];
 	int st;
 
-	if (buf == NULL)
-		return hb_status_set(msg, n, HB_ENOMEM, "%s: out of memory", path);
-	hb_preset_format(sc, buf, len + 1);
-	st = hb_atomic_write_file(path, buf, len, msg, n);
-	free(buf);
-	return st == HB_OK ? HB_OK : HB_EIO;
+	*br = NULL;
+	*nbr = 0;
+	m[0] = '\0';
+	if ((st = hb_preset_resolve(name, path, pn, m, sizeof m)) != HB_OK)
+		return hb_status_set(msg, n, st, "preset '%.*s%s': %s", strlen(name) > 72 ? 60 : 72,
+		    name, strlen(name) > 72 ? "..." : "", m[0] ? m : "not found");
+	return open_text(path, sets, nsets, sc, NULL, br, nbr, msg, n);
 }

@@ -13,6 +13,10 @@
 #define HYBOUNCE_PRESET_INI_H
 
 #include <stdbool.h>
+#include <stddef.h>
+#include <string.h>
+
+#include "hybounce/sim.h"
 
 /* Longest line of a preset, in bytes with the newline. */
 #define PRESET_MAX_LINE 1024
@@ -35,5 +39,44 @@ preset_ini_begin(struct preset_ini_saved *sv);
 /* Puts the options of *sv back and releases the lock. */
 void
 preset_ini_end(const struct preset_ini_saved *sv);
+
+/* One "key = value" of a preset, with its [section] and line. */
+struct preset_entry {
+	char section[32];
+	char name[64];
+	char *value;
+	int line;
+};
+
+/* The scene's sections, in the order a preset is written (preset.c). */
+enum { PRESET_NSECTIONS = 9 };
+extern const char *const preset_sections[PRESET_NSECTIONS];
+
+/* 1 for a [branch N] section (preset_branch.c). */
+static inline int
+preset_is_branch(const char *section)
+{
+	return strncmp(section, "branch", 6) == 0;
+}
+
+/*
+ * The [branch N] sections among the entries e[0..n), read on top of sc
+ * (the scene with its --set): each branch's scene is the one before it
+ * with the branch's keys.  *br is malloc'd (NULL when none).  Returns 0,
+ * or HB_EINVAL with "FILE:LINE: [branch N] key: ...; accepted: ...".
+ */
+int
+preset_branches_read(const struct preset_entry *e, int n, const char *file,
+                     const struct hb_scene *sc, struct hb_branch **br, size_t *nbr, char *msg,
+                     size_t mn);
+
+/*
+ * Appends "[branch k]" for branch b (before: the scene before it) to o;
+ * returns 1 when reading the section back gives b's scene, else 0.
+ */
+struct textbuf;
+int
+preset_branch_format(struct textbuf *o, int k, const struct hb_scene *before,
+                     const struct hb_branch *b);
 
 #endif

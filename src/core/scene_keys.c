@@ -131,6 +131,9 @@ const struct scene_keydef scene_keydefs[] = {
 	    "closed forms used: all, none, or a comma list of flight, contact, com"),
 	TXT("run.kinks", "run", "kinks", ST_BOOL, "yes", run.kinks, 0,
 	    "end steps on the kinks of the law and the loads (no: only to measure their effect)"),
+	TXT("run.limits", "run", "limits", ST_BOOL, "yes", run.limits, 0,
+	    "refuse a stepper at a tolerance where its global error on the paper's studies is "
+	    "more than 10 x rk8pd's (no: run it anyway, only to measure it)"),
 };
 const int scene_nkeydefs = (int)(sizeof scene_keydefs / sizeof scene_keydefs[0]);
 

@@ -138,6 +138,14 @@ scene_key_info(const struct hb_scene *sc, const struct scene_keydef *kd, struct 
 int
 scene_key_info_law(const struct hb_scene *sc, int i, struct hb_scene_keyinfo *out);
 
+/*
+ * run.stepper at run.rtol against the measured limits of each stepper
+ * (scene_limits.c): HB_OK, or HB_EINVAL with err naming the stepper, the
+ * tolerance and what is accepted.  Nothing is refused when run.limits = no.
+ */
+int
+scene_check_stepper(const struct hb_scene *sc, struct hb_scene_error *err);
+
 /* Fills an error (what: printf format); returns HB_EINVAL. */
 int
 scene_error_set(struct hb_scene_error *e, const char *key, const char *accepted,

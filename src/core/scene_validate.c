@@ -199,6 +199,8 @@ hb_scene_check(struct hb_scene *sc, struct hb_scene_error *err)
 		return scene_error_set(err, "scene.law", NULL, "no contact law");
 	if ((st = check_table(sc, err)) != HB_OK)
 		return st;
+	if ((st = scene_check_stepper(sc, err)) != HB_OK)
+		return st;
 	if (sc->loads.ramp) { /* the ramp needs a drawing force: F_e0 > 0 */
 		static const struct hb_unit_range fe0 = { 0, HUGE_VAL, 1, 1, 0 };
 		if ((st = check_value("loads.F_e0", sc->loads.Fe0, &fe0, hb_unit_force, &hb_unit_force,

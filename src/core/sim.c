@@ -314,6 +314,7 @@ reset_state(struct hb_sim *s)
 		memcpy(s->st.comp, keep.comp, sizeof s->st.comp);
 	}
 	hbs_push_sample(s, HB_ARC_START);
+	hbs_branches_clear(s);
 }
 
 static int
@@ -399,6 +400,7 @@ hb_sim_free(struct hb_sim *s)
 		gsl_vector_complex_free(s->lambda);
 	arc_free(s->arc);
 	hbs_chain_free(s);
+	free(s->br);
 	free(s->col);
 	free(s);
 }
@@ -535,6 +537,7 @@ hb_sim_seek(struct hb_sim *s, size_t i)
 	}
 	if (i >= hb_arc_len(s->arc))
 		return HB_EINVAL;
+	hbs_branches_cut(s, i);
 	/*
 	 * The step to continue with: the one the controller proposes where the
 	 * simulator stands at that sample (an edit at the run's end, a seek
@@ -648,7 +651,9 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 			*restarted = 1;
 		return 0;
 	}
-	/* continue from the last sample with the new values */
+	/* continue from the last sample with the new values (hb_sim_branch records it) */
+	if (s->unrec_t < 0)
+		s->unrec_t = hb_arc_at(s->arc, hb_arc_len(s->arc) - 1)->t;
 	return hb_sim_seek(s, hb_arc_len(s->arc) - 1);
 }
 

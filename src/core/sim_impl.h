@@ -177,6 +177,12 @@ struct hb_sim {
 	gsl_eigen_nonsymm_workspace *eig;
 	gsl_matrix *Jdyn;
 	gsl_vector_complex *lambda;
+
+	/* sim_branch.c: the run as its first scene and the branches taken since */
+	struct hb_scene sc0;        /* the scene the run began with at t = 0 */
+	struct hb_branch *br;
+	size_t nbr, brcap;
+	double unrec_t;             /* -1, or the first t the scene changed unrecorded */
 };
 
 static inline double
@@ -238,6 +244,12 @@ hbs_chain_flight(struct hb_sim *s);
 /* ... the first tau >= 0 after which a gap x + v tau + a tau^2 / 2 leaves C (INFINITY: never) */
 double
 hbs_flight_event(double x, double v, double a);
+
+/* sim_branch.c */
+void
+hbs_branches_clear(struct hb_sim *s);
+void
+hbs_branches_cut(struct hb_sim *s, size_t i);
 
 /* sim_flow.c */
 int

@@ -25,6 +25,7 @@
 #include "status.h"
 #include "term.h"
 #include "tui.h"
+#include "plot_summary.h"
 
 #define DEFAULT_PRESET "steel-on-bitumen"
 #define FRAME_MS 20           /* frame period while computing or playing */
@@ -150,7 +151,13 @@ loop(struct app *a)
 	while (!a->quit) {
 		if (term_signalled())
 			return 128 + term_signalled();
-		timeout(busy ? FRAME_MS : IDLE_MS);
+		/*
+		 * While the current run computes, keys are only polled: the frame
+		 * is its budget of computing plus the drawing (a few hundred
+		 * microseconds, plot_summary.c), so the explorer computes at about
+		 * the batch rate; otherwise a frame every FRAME_MS.
+		 */
+		timeout(!busy ? IDLE_MS : hb_sim_end(a->sim) == HB_SIM_RUNNING ? 0 : FRAME_MS);
 		ch = getch();
 		if (ch != ERR)
 			app_key(a, ch);
@@ -185,6 +192,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 	}
 	a->opt = o;
 	a->budget = COMPUTE_BUDGET;
+	a->psum = psum_new();   /* NULL: the plots draw every sample */
 	app_adopt(a, s, path);
 	a->playing = 1;
 	a->slowmo = 1;
@@ -215,6 +223,8 @@ app_run(const struct app_options *o, char *msg, size_t n)
 		term_mouse(1);
 		app_relayout(a);
 		app_msg(a, 0, "%s: %s   (? or F1 for help)", a->preset, hb_sim_scene(a->sim)->name);
+		if (fitov_loaded(a))
+			fitov_announce(a);   /* --data: what was read (a recording says so) */
 		status = loop(a);
 		term_end();
 		if (term_signalled()) {
@@ -223,6 +233,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 		}
 	}
 done:
+	psum_free(a->psum);
 	fitov_free(a);
 	sweep_view_free(a);
 	physics_forget(a);

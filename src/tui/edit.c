@@ -6,10 +6,12 @@
  * An edit restarts the run from t = 0 with the new scene, the cursor
  * keeping its time: the whole consequence of the change is on screen at
  * once (runs take milliseconds).  "Branch here" (b) arms the next edit to
- * continue from the cursor instead: the run is cut there (hb_sim_seek) and
- * goes on with the new values.  A run that contains such a branch records
- * it (a->branch_t, a->branch_j): its scene alone no longer reproduces it,
- * and an export says so.  The scene is validated first, so a refused edit
+ * continue from the cursor instead (hb_sim_branch: the run is replayed to
+ * the cursor and goes on with the new values).  The simulator records the
+ * branch, an export writes it into the preset ([branch N]) and --batch
+ * replays it: the export reproduces the branched run.  a->branch_t and
+ * a->nbranches mirror hb_sim_branch_get for the screen.  The scene is
+ * validated first, so a refused edit
  * loses nothing.  Each edit keeps the scene before it (up to
  * APP_UNDO_MAX): u goes back to it as an edit would; U resets the selected
  * value to the scene as opened (the preset and its --set).
@@ -58,14 +60,29 @@ apply_scene_how(struct app *a, const struct hb_scene *sc_in, const char *what, i
 	hb_units_format(a->tcur, hb_unit_time, 6, tb, sizeof tb);
 	if (branch) {
 		size_t at = a->cursor;
-		const struct hb_arc_sample *s = hb_arc_len(hb_sim_arc(a->sim)) ? hb_arc_at(hb_sim_arc(a->sim), at) : NULL;
-		long j = s ? s->j : 0;
+		const struct hb_arc_sample *s = hb_arc_at(hb_sim_arc(a->sim), at);
+		long j = s->j;
 
-		if (s != NULL && hb_sim_seek(a->sim, at) != HB_OK) {
-			app_msg(a, 1, "cannot branch at the cursor: %s", hb_sim_errmsg(a->sim));
-			return;
+		/* replayed from t = 0 to the cursor: the same run --batch makes of the export */
+		rc = hb_sim_branch(a->sim, at, &sc, &restarted, emsg, sizeof emsg);
+		if (rc != HB_OK && hb_sim_arc(a->sim) != NULL && hb_arc_len(hb_sim_arc(a->sim)) > 0 &&
+		    hb_scene_validate(&sc, emsg + 256, sizeof emsg - 256) == HB_OK) {
+			/* the replay failed part-way: the new values from t = 0, as an edit */
+			int rs = 0;
+
+			if (hb_sim_set_scene(a->sim, &sc, &rs, emsg + 256, sizeof emsg - 256) == HB_OK &&
+			    (rs || hb_sim_restart(a->sim) == HB_OK)) {
+				app_label_runs(a);
+				if (!undo)
+					undo_push(a, &before, what);
+				a->branch_t = -1;
+				a->nbranches = 0;
+				cursor_set(a, 0);
+				app_msg(a, 1, "%s: cannot branch here (%.200s); the run restarted from t = 0",
+				        what, emsg);
+				return;
+			}
 		}
-		rc = hb_sim_set_scene(a->sim, &sc, &restarted, emsg, sizeof emsg);
 		if (rc != HB_OK) {
 			app_msg(a, 1, "refused (old value kept): %s", emsg);
 			return;
@@ -75,16 +92,18 @@ apply_scene_how(struct app *a, const struct hb_scene *sc_in, const char *what, i
 			undo_push(a, &before, what);
 		if (restarted) {
 			a->branch_t = -1;
+			a->nbranches = 0;
 			cursor_set(a, 0);
 			app_msg(a, 0, "%s: cannot branch here (a change of the law in contact, the bodies or the initial state); the run restarted from t = 0",
 			        what);
 		} else {
-			if (a->branch_t < 0) {
-				a->branch_t = a->tcur;
-				a->branch_j = j;
-			}
-			a->nbranches++;
-			app_msg(a, 0, "%s from t = %s, j = %ld (branch here): the run continues from the cursor",
+			const struct hb_branch *b0 = hb_sim_branch_get(a->sim, 0);
+
+			a->nbranches = (int)hb_sim_nbranches(a->sim);
+			a->branch_t = b0 != NULL ? b0->t : -1;
+			a->branch_j = b0 != NULL ? b0->j : 0;
+			cursor_set(a, at < hb_arc_len(hb_sim_arc(a->sim)) ? at : hb_arc_len(hb_sim_arc(a->sim)) - 1);
+			app_msg(a, 0, "%s from t = %s, j = %ld (branch here): the run continues from the cursor; an export records the branch and --batch replays it",
 			        what, tb, j);
 		}
 	} else {

@@ -4,7 +4,11 @@
  * started from there (issue 13, part 4).
  *
  * D (or --data FILE) opens a data file of `hybounce fit` (fit.h): a
- * bouncing sequence (t_e) or separate drops (v_i, e, x_c_r, t_d).  The
+ * bouncing sequence (t_e) or separate drops (v_i, e, x_c_r, t_d), or a
+ * recording of a bouncing sequence (read by content, hb_fit_data_open),
+ * whose onsets are the sequence.  A recording also gets a strip under the
+ * plots on their t axis: its envelope, the impacts kept (o) and the clicks
+ * dropped (x), and the run's impacts (+) (fitov_plot_recording).  The
  * data's observables are simulated for the current scene whenever it
  * changes (hb_fit_simulate), and shown
  *  - on the x plot: each measured impact as 'o' on the axis x = 0, the
@@ -27,31 +31,13 @@
 
 #include "canvas.h"
 #include "fit.h"
+#include "onset.h"
 #include "status.h"
 #include "term.h"
 #include "tui.h"
 #include "units.h"
+#include "fitov.h"
 
-struct fitov {
-	struct hb_fit_data d;
-	int loaded;
-	char path[512];
-	size_t np;                 /* data points */
-	double *meas, *sim;        /* measured, simulated for `for_scene` (NAN: not computed) */
-	int *row, *obs;
-	struct hb_scene for_scene;    /* the scene sim[] was computed for */
-	int sim_valid;
-	char sim_err[256];         /* why sim[] is missing */
-	struct hb_fit *fit;           /* a fit in progress, or NULL */
-	char keys_text[256];       /* the free keys as typed */
-	char keys_buf[256];
-	const char *keys[HB_FIT_MAX_FREE];
-	int nkeys, iter;
-	double cost, cost0;
-	long runs;
-	char last[256];            /* the last fit's outcome, for the box */
-	int top;                   /* first row shown in the box */
-};
 
 static struct fitov *
 ov_get(struct app *a)
@@ -87,6 +73,7 @@ fitov_free(struct app *a)
 	hb_fit_free(f->fit);
 	points_free(f);
 	hb_fit_data_free(&f->d);
+	hb_onset_result_free(&f->rec);
 	free(f);
 	a->fitov = NULL;
 }
@@ -127,15 +114,21 @@ fitov_load(struct app *a, const char *path, char *msg, size_t n)
 {
 	struct fitov *f = ov_get(a);
 	struct hb_fit_data d;
+	struct hb_onset_result on;
 
 	if (f->fit != NULL) {
 		snprintf(msg, n, "a fit is running (F stops it); the data stay %s", f->path);
 		return -1;
 	}
-	if (hb_fit_data_load(path, &d, msg, n) != HB_OK)
+	/* the one loader (fit.h): a CSV file, or a recording read by content with its onsets */
+	if (hb_fit_data_open(path, NULL, &d, &on, msg, n) != HB_OK) {
+		hb_onset_result_free(&on);
 		return -1;
+	}
 	points_free(f);
 	hb_fit_data_free(&f->d);
+	hb_onset_result_free(&f->rec);
+	f->rec = on;
 	f->d = d;
 	f->loaded = 1;
 	f->top = 0;
@@ -168,7 +161,13 @@ fmt_obs(int ob, double v, char *buf, size_t n)
 static void
 describe(const struct fitov *f, char *buf, size_t n)
 {
-	if (f->d.kind == HB_FIT_SEQUENCE)
+	if (f->rec.nenv > 0) {
+		char du[32];
+
+		hb_units_format(f->rec.duration, hb_unit_time, 3, du, sizeof du);
+		snprintf(buf, n, "%.200s: a recording (%.0f Hz, %s), %zu impacts (o) of %zu clicks", f->path,
+		         f->rec.samplerate, du, f->d.n, f->rec.n + f->rec.ndrop);
+	} else if (f->d.kind == HB_FIT_SEQUENCE)
 		snprintf(buf, n, "%.200s: one bouncing sequence, %zu impacts", f->path, f->d.n);
 	else
 		snprintf(buf, n, "%.200s: %zu separate drops, %zu points", f->path, f->d.n, f->np);
@@ -178,7 +177,7 @@ describe(const struct fitov *f, char *buf, size_t n)
 static void
 load_from_prompt(struct app *a, const char *path)
 {
-	char emsg[512], what[320];
+	char emsg[512];
 
 	if (path[0] == 0) {
 		app_msg(a, 1, "no data file given (D asks again)");
@@ -188,6 +187,14 @@ load_from_prompt(struct app *a, const char *path)
 		app_msg(a, 1, "data not loaded: %s", emsg);
 		return;
 	}
+	fitov_announce(a);
+}
+
+void
+fitov_announce(struct app *a)
+{
+	char what[320];
+
 	describe(a->fitov, what, sizeof what);
 	app_msg(a, 0, "data %s; M: measured against simulated, F: fit", what);
 }
@@ -196,7 +203,7 @@ void
 act_data(struct app *a)
 {
 	prompt_open(a, PROMPT_DATA, fitov_loaded(a) ? a->fitov->path : "",
-	            "data file (t_e, or v_i,e[,x_c_r][,t_d] columns; Enter opens, Esc cancels)");
+	            "data file (t_e, or v_i,e[,x_c_r][,t_d] columns, or a recording; Enter opens)");
 }
 
 /*
@@ -418,8 +425,8 @@ fitov_tick(struct app *a)
 /* ---- drawing ------------------------------------------------------------ */
 
 /* The run's first collision time, to align the measured clock; -1: none yet. */
-static double
-first_te(const struct app *a)
+double
+fitov_first_te(const struct app *a)
 {
 	struct hb_collision live;
 	const struct hb_collision *c = app_ncollisions(a) > 0 ? app_collision(a, 0, &live) : NULL;
@@ -431,7 +438,7 @@ void
 fitov_plot_marks(const struct app *a, struct canvas *c, int q_is_x, double t0, double t1)
 {
 	const struct fitov *f = a->fitov;
-	double te0 = first_te(a);
+	double te0 = fitov_first_te(a);
 	int row;
 
 	if (f == NULL || !f->loaded || f->d.kind != HB_FIT_SEQUENCE || !q_is_x || te0 < 0
@@ -455,7 +462,7 @@ void
 fitov_table_note(const struct app *a, long i, char *line, size_t n)
 {
 	const struct fitov *f = a->fitov;
-	double te0 = first_te(a), tm, te;
+	double te0 = fitov_first_te(a), tm, te;
 	char b1[32], b2[32], note[80];
 	size_t l = strlen(line);
 	struct hb_collision live;
@@ -527,6 +534,16 @@ fitov_draw(const struct app *a)
 		tui_puts(y++, in.x, in.w, f->sim_err, A_BOLD);
 	else if (f->last[0])
 		tui_puts(y++, in.x, in.w, f->last, 0);
+	/* a recording: the clicks not taken as impacts, and why (x on the rec strip) */
+	for (size_t k = 0; k < f->rec.ndrop && k < 3 && y < in.y + in.h - 4; k++) {
+		hb_units_format(f->rec.drop[k].t, hb_unit_time, 5, m, sizeof m);
+		snprintf(line, sizeof line, "dropped (x) at %s of the recording: %s", m, f->rec.drop[k].why);
+		tui_puts(y++, in.x, in.w, line, A_DIM);
+	}
+	if (f->rec.ndrop > 3 && y < in.y + in.h - 4) {
+		snprintf(line, sizeof line, "... and %zu more clicks dropped", f->rec.ndrop - 3);
+		tui_puts(y++, in.x, in.w, line, A_DIM);
+	}
 	snprintf(line, sizeof line, "%5s %-6s %12s %12s %12s", "row", "obs",
 	         f->d.kind == HB_FIT_SEQUENCE ? "data t-t0" : "data", "simulated", "sim - data");
 	tui_puts(y++, in.x, in.w, line, A_UNDERLINE);

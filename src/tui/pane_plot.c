@@ -19,6 +19,7 @@
 #include "canvas.h"
 #include "term.h"
 #include "tui.h"
+#include "plot_summary.h"
 
 enum { LM = 9 };  /* left margin: tick labels and the quantity's name */
 enum { Q_X, Q_XC, Q_FC, NQ };
@@ -130,7 +131,11 @@ sample_span(const struct app *a, const struct hb_arc *arc, double lo, double hi,
 	*i1 = i + 2 < n ? i + 2 : n;
 }
 
-/* Copies a canvas to the screen at (y, x); the cursor column highlighted. */
+/*
+ * Copies a canvas to the screen at (y, x); the cursor column highlighted.
+ * Cells go in as wide characters (add_wch): a Braille cell as a string
+ * would be decoded again byte by byte, the larger part of a frame's cost.
+ */
 static void
 blit(const struct app *a, const struct canvas *c, int y, int x, int curcol)
 {
@@ -138,21 +143,30 @@ blit(const struct app *a, const struct canvas *c, int y, int x, int curcol)
 
 	for (int r = 0; r < c->h; r++)
 		for (int k = 0; k < c->w; k++) {
-			int ink = canvas_cell(c, k, r, cell), attr = 0;
-			if (ink > 0 && a->colour)
-				attr = COLOR_PAIR(PAIR_INK1 + ink - 1) | (ink == 1 ? A_BOLD : 0);
-			else if (ink > 1)
+			int ink = canvas_cell(c, k, r, cell);
+			attr_t attr = 0;
+			short pair = 0;
+			wchar_t wc[2] = { (unsigned char)cell[0], 0 };
+			cchar_t cc;
+
+			if (ink > 0 && a->colour) {
+				pair = (short)(PAIR_INK1 + ink - 1);
+				attr = ink == 1 ? A_BOLD : 0;
+			} else if (ink > 1) {
 				attr = A_DIM;
+			}
 			if (k == curcol) {
 				if (cell[0] == ' ')
-					cell[0] = ':';
+					wc[0] = ':';
 				attr |= A_REVERSE;
 			}
-			if (cell[0] == ' ' && attr == 0)
+			if (wc[0] == ' ' && attr == 0 && pair == 0)
 				continue;
-			attron(attr);
-			mvaddstr(y + r, x + k, cell);
-			attroff(attr);
+			if ((unsigned char)cell[0] == 0xE2)   /* U+2800 + m (canvas_cell) */
+				wc[0] = (wchar_t)(0x2800 + (((unsigned char)cell[1] - 0xA0) << 6) +
+				                  ((unsigned char)cell[2] - 0x80));
+			setcchar(&cc, wc, attr, pair, NULL);
+			mvadd_wch(y + r, x + k, &cc);
 		}
 }
 
@@ -176,7 +190,7 @@ margin_labels(const struct axis *ax, int y, int h, const char *name)
 		tui_puts(y + r, 0, LM - 1, buf, 0);
 		used[r] = 1;
 	}
-	snprintf(nm, sizeof nm, "%s[%s]", name, ax->unit);
+	snprintf(nm, sizeof nm, ax->unit[0] ? "%s[%s]" : "%s", name, ax->unit);
 	for (int r = h / 2 - (h > 2 ? 0 : 1); r < h; r++)
 		if (r >= 0 && !used[r]) {
 			tui_puts(y + r, 0, LM - 1, nm, A_BOLD);
@@ -333,9 +347,22 @@ value_range(const struct app *a, const struct hb_sim *const *s, int n, int q, do
 {
 	for (int k = 0; k < n; k++) {
 		const struct hb_arc *ak = hb_sim_arc(s[k]);
+		const struct plot_sum *ps;
 		size_t i, end;
 
-		for (sample_span(a, ak, t0, t1, &i, &end); i < end; i++) {
+		sample_span(a, ak, t0, t1, &i, &end);
+		if (a->view != VIEW_J && end - i > 64 && (ps = psum_of(a->psum, s[k])) != NULL) {
+			/* the samples strictly inside [t0, t1] (sample_span adds one either side) */
+			size_t a0 = i, a1 = end;
+
+			while (a0 < a1 && hb_arc_at(ak, a0)->t < t0)
+				a0++;
+			while (a1 > a0 && hb_arc_at(ak, a1 - 1)->t > t1)
+				a1--;
+			psum_range(ps, a0, a1, q, lo, hi);
+			continue;
+		}
+		for (; i < end; i++) {
 			double xv = absc(a, hb_arc_at(ak, i)), v = qval(hb_arc_at(ak, i), q);
 
 			if (xv >= t0 && xv <= t1 && isfinite(v)) {
@@ -351,7 +378,7 @@ pane_plot_draw(const struct app *a)
 {
 	const struct rect *r = &a->L.plots;
 	const struct hb_sim *s[APP_MAX_PINS + 1];
-	int ink[APP_MAX_PINS + 1], n, hs[NQ], cw = r->w - LM, y, curcol = -1;
+	int ink[APP_MAX_PINS + 1], n, hs[NQ + 1], cw = r->w - LM, y, curcol = -1, nq = NQ;
 	double t0, t1;
 	char line[1024], title[128];
 	const struct hb_arc *arc = hb_sim_arc(a->sim);
@@ -372,13 +399,40 @@ pane_plot_draw(const struct app *a)
 		snprintf(title, sizeof title, "%s", vname[a->view]);
 	/* row 0: title and legend; then the plots; then markers and the axis */
 	legend(a, r->y, LM, cw, title);
-	layout_stack(r->h - 1, NQ, 2, hs);
+	/* a recording opened with D or --data: its strip under the plots, on the same t axis */
+	if (fitov_recording(a) && a->view != VIEW_J && r->h >= 4 + NQ)
+		nq = NQ + 1;
+	layout_stack(r->h - 1, nq, 2, hs);
 	y = r->y + 1;
-	for (int q = 0; q < NQ; q++) {
+	for (int q = 0; q < nq; q++) {
 		double lo = 0, hi = 0;
 		struct axis ay;
 		struct canvas *c;
+		struct psum_view pv;
+		int cacheable = a->psum != NULL, cached = 0;
 
+		if (q == NQ) {
+			canvas_axis(0, fitov_recording_peak(a), hs[q] / 2 + 2, NULL, &ay);
+			c = canvas_or_die(cw, hs[q], a->braille);
+			canvas_range(c, t0, t1, 0, ay.hi);
+			fitov_plot_recording(a, c, t0, t1);
+			blit(a, c, y, r->x + LM, curcol);
+			margin_labels(&ay, y, hs[q], "rec");
+			canvas_free(c);
+			y += hs[q];
+			continue;
+		}
+
+		/* the same runs over the same range: last frame's canvas (playback moves the cursor only) */
+		if (fitov_loaded(a) || a->present)
+			cacheable = 0;   /* presentation draws the current run up to the cursor */
+		if (cacheable) {
+			psum_view_of(&pv, q, a->view + 16 * a->present, t0, t1, cw, hs[q], a->braille, s, ink, n);
+			if ((c = psum_plot_get(a->psum, &pv, &ay)) != NULL) {
+				cached = 1;
+				goto blit;
+			}
+		}
 		if (a->present && a->hold.n > 0) {
 			/* presentation: the scale over the run, held */
 			lo = a->hold.lo[q];
@@ -392,11 +446,18 @@ pane_plot_draw(const struct app *a)
 		canvas_range(c, t0, t1, ay.lo, ay.hi);
 		for (int k = 0; k < n; k++) {
 			const struct hb_arc *ak = hb_sim_arc(s[k]);
+			const struct plot_sum *ps;
 			size_t i0, i1;
 			sample_span(a, ak, t0, t1, &i0, &i1);
 			/* presentation: the current run drawn up to the cursor, forming */
 			if (a->present && s[k] == a->sim && i1 > a->cursor + 1)
 				i1 = a->cursor + 1;
+			/* many samples to a column: one stroke a column (plot_summary.c) */
+			else if (a->view != VIEW_J && i1 - i0 > 4 * (size_t)c->pw
+			         && (ps = psum_of(a->psum, s[k])) != NULL) {
+				psum_draw(ps, c, q, t0, t1, ink[k]);
+				continue;
+			}
 			for (size_t i = i0; i < i1; i++) {
 				const struct hb_arc_sample *p = hb_arc_at(ak, i);
 				if (i > i0) {
@@ -411,11 +472,14 @@ pane_plot_draw(const struct app *a)
 		}
 		pin_marks(a, c, s, ink, n, q, t0, t1);
 		fitov_plot_marks(a, c, q == Q_X, t0, t1);
+blit:
 		if (hb_arc_len(arc) > 0)
 			curcol = canvas_col(c, absc(a, hb_arc_at(arc, a->cursor)));
 		blit(a, c, y, r->x + LM, curcol);
 		margin_labels(&ay, y, hs[q], qname[q]);
-		canvas_free(c);
+		/* kept for the next frame (the cache owns it), else freed */
+		if (!cached && !(cacheable && psum_plot_put(a->psum, &pv, c, &ay) == 0))
+			canvas_free(c);
 		y += hs[q];
 	}
 	/* marker row: contacts of the current run */
@@ -469,6 +533,12 @@ pane_plot_draw(const struct app *a)
 		tui_puts(y, r->x + LM, cw, line, 0);
 		tui_puts(y, 0, LM - 1, a->view == VIEW_J ? "j ->" : "t ->", A_BOLD);
 	}
+}
+
+void
+plot_view_range(const struct app *a, double *t0, double *t1)
+{
+	view_range(a, t0, t1);
 }
 
 int

@@ -23,15 +23,35 @@
 #include "tui.h"
 #include "units.h"
 
+/*
+ * Opens a preset as a run, replaying the branches it records (an export
+ * after b): the run is then the one exported.  NULL with msg on an error.
+ */
 struct hb_sim *
 load_sim(const char *name, const char *const *sets, int nsets, char *path, size_t pn,
          char *msg, size_t n)
 {
 	struct hb_scene sc;
+	struct hb_branch *br = NULL;
+	struct hb_sim *s;
+	size_t nbr = 0;
 
-	if (hb_preset_open_named(name, sets, nsets, &sc, path, pn, msg, n) != HB_OK)
+	if (hb_preset_open_branched(name, sets, nsets, &sc, &br, &nbr, path, pn, msg, n) != HB_OK)
 		return NULL;
-	return hb_sim_new(&sc, msg, n);
+	s = hb_sim_new(&sc, msg, n);
+	for (size_t k = 0; s != NULL && k < nbr; k++) {
+		char m[512];
+		int restarted = 0;
+
+		if (hb_sim_branch_at(s, &br[k], NULL, &restarted, m, sizeof m) != HB_OK || restarted) {
+			snprintf(msg, n, "%s: [branch %zu]: %s", path, k + 1,
+			         restarted ? "its values cannot continue the run there" : m);
+			hb_sim_free(s);
+			s = NULL;
+		}
+	}
+	free(br);
+	return s;
 }
 
 /* File name without folder and ".preset". */
@@ -127,9 +147,11 @@ adopt_sim(struct app *a, struct hb_sim *s, const char *path)
 	a->cursor = 0;
 	a->tcur = 0;
 	a->want_t = -1;
-	a->branch_t = -1;
+	/* a preset that records branches was replayed with them (load_sim) */
+	a->branch_t = hb_sim_nbranches(s) > 0 ? hb_sim_branch_get(s, 0)->t : -1;
+	a->branch_j = hb_sim_nbranches(s) > 0 ? hb_sim_branch_get(s, 0)->j : 0;
 	a->branch_armed = 0;
-	a->nbranches = 0;
+	a->nbranches = (int)hb_sim_nbranches(s);
 	a->table_sel = a->table_top = 0;
 	a->param_sel = 1;
 	a->param_top = 0;
@@ -394,19 +416,25 @@ export_do(struct app *a, const char *base0)
 		free(rep);
 		return;
 	}
-	if (a->branch_t >= 0) {
+	if (hb_sim_unrecorded(a->sim) >= 0) {
 		char tb[32];
-		hb_units_format(a->branch_t, hb_unit_time, 6, tb, sizeof tb);
+		hb_units_format(hb_sim_unrecorded(a->sim), hb_unit_time, 6, tb, sizeof tb);
 		snprintf(note, sizeof note,
-		         "; NOTE: this run was branched at t = %s, j = %ld: the scene file holds the values after the branch and does NOT reproduce it (r, then export, gives a reproducible run)",
-		         tb, a->branch_j);
+		         "; NOTE: the values changed at t = %s in a way a preset cannot record: the scene file does NOT reproduce this run (its first line says so; r, then export, gives a reproducible run)",
+		         tb);
+	} else if (hb_sim_nbranches(a->sim) > 0) {
+		char tb[32];
+		hb_units_format(hb_sim_branch_get(a->sim, 0)->t, hb_unit_time, 6, tb, sizeof tb);
+		snprintf(note, sizeof note, "; the scene file records the %zu branch%s (the first at t = %s) and --batch replays %s",
+		         hb_sim_nbranches(a->sim), hb_sim_nbranches(a->sim) == 1 ? "" : "es", tb,
+		         hb_sim_nbranches(a->sim) == 1 ? "it" : "them");
 	}
 	if (renamed) {
 		size_t l = strlen(note);
 
 		snprintf(note + l, sizeof note - l, "; %.100s-* is an earlier export, kept", base0);
 	}
-	app_msg(a, a->branch_t >= 0 || renamed, "wrote %s%s, %s%s and %s%s (%zu samples, %zu collisions)%s", trace,
+	app_msg(a, hb_sim_unrecorded(a->sim) >= 0 || renamed, "wrote %s%s, %s%s and %s%s (%zu samples, %zu collisions)%s", trace,
 	        how_written(&rep->target[0]), coll, how_written(&rep->target[1]),
 	        rep->scene[0] ? rep->scene : "no scene", rep->scene[0] ? how_written(&rep->target[2]) : "",
 	        hb_arc_len(hb_sim_arc(a->sim)), hb_sim_ncollisions(a->sim), note);

@@ -125,6 +125,7 @@ struct app {
 	struct fitov *fitov;        /* measured data and the fit (overlay_fit.c), or NULL */
 	struct sweep_view *sv;      /* the sweep view (sweep_view.c), NULL until S */
 	struct app_physics phys;    /* physics.c */
+	struct plot_sums *psum;     /* plot_summary.c: what the plots draw of long arcs (NULL: none) */
 };
 
 /* An action of the key table (actions.c). */
@@ -218,6 +219,10 @@ void pane_status_draw(const struct app *a);
 void pane_help_draw(const struct app *a);
 void pane_too_small_draw(const struct app *a);
 void pickers_draw(const struct app *a);
+/* The abscissa range the plots show (t, or j in the (t, j) view). */
+void plot_view_range(const struct app *a, double *t0, double *t1);
+/* f: the view as a figure (figure.c). */
+action_fn act_figure;
 /* The abscissa (t, or j in the (t, j) view) under screen column x of the plots; -1 outside. */
 int plot_abscissa_at(const struct app *a, int x, double *t);
 
@@ -281,6 +286,7 @@ struct canvas;
 action_fn act_data, act_data_table, act_fit;
 int fitov_load(struct app *a, const char *path, char *msg, size_t n); /* 0 or -1 */
 int fitov_loaded(const struct app *a);
+void fitov_announce(struct app *a);                       /* what is loaded, to the message line */
 void fitov_free(struct app *a);
 void fitov_prompt_done(struct app *a, const char *text);  /* PROMPT_DATA, PROMPT_FIT */
 int fitov_tick(struct app *a);                            /* 1 while fitting */
@@ -288,6 +294,10 @@ void fitov_key(struct app *a, int ch);                    /* keys of OV_FIT */
 void fitov_draw(const struct app *a);
 void fitov_plot_marks(const struct app *a, struct canvas *c, int q_is_x, double t0, double t1);
 void fitov_table_note(const struct app *a, long i, char *line, size_t n); /* i -1: header */
+/* A recording is shown (its envelope, onsets and the run's impacts on the plots' t axis). */
+int fitov_recording(const struct app *a);
+double fitov_recording_peak(const struct app *a);               /* full scale 1 */
+void fitov_plot_recording(const struct app *a, struct canvas *c, double t0, double t1);
 
 /* Sets the message line (printf-like). */
 void

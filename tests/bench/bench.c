@@ -447,6 +447,7 @@ static void
 set_tol(struct hb_scene *sc, int stepper, double rtol, double atol)
 {
 	sc->run.stepper = stepper;
+	sc->run.limits = 0; /* every stepper at every tolerance: the bench measures them */
 	sc->run.rtol = rtol;
 	sc->run.atol = atol;
 }

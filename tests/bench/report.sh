@@ -4,9 +4,13 @@
 # per-study table (DIR/study-table.md) into docs/speed-and-accuracy.md between the
 # STUDY-TABLE markers, and writes tests/bench/REPORT.md: a header, the
 # engine summary of docs/speed-and-accuracy.md (between the ENGINE-V2 markers), the bench's
-# own report (DIR/report.md), tests/bench/REPORT-figures.md (the figure
-# and Python targets) and the sweep's (DIR/sweep.txt, from make
-# bench-sweep; kept from the old report when there is none).  Run from the top of the tree (make bench-docs).
+# own report (DIR/report.md), then, unchanged, the sections between the
+# REFERENCE-SECTIONS markers (make bench-steppers writes into them),
+# tests/bench/REPORT-figures.md (the figure and Python targets) and the
+# sweep's (DIR/sweep.txt, from make bench-sweep; kept from the old report
+# when there is none); and DIR/studies.md, when there, into README.md
+# (STUDIES-SUMMARY) and the report (STUDIES).  Run from the top of the tree
+# (make bench-docs).
 dir=${1:-build/bench}
 here=$(dirname "$0")
 for f in "$dir/study-table.md" "$dir/report.md"; do
@@ -16,6 +20,10 @@ done
 doc=docs/speed-and-accuracy.md
 { echo; cat "$dir/study-table.md"; echo; } | readme_splice "$doc" STUDY-TABLE || exit 1
 out="$here/REPORT.md"
+# The sections measured against the binary128 reference (make
+# bench-steppers) are kept as they are: they come from their own targets.
+kept=$(mktemp)
+readme_block "$out" REFERENCE-SECTIONS >"$kept"
 {
 	cat <<'HEAD'
 # Speed against error: benchmark report (issue 8)
@@ -36,6 +44,10 @@ HEAD
 	echo 'The report below is the new run (`make bench`), with the dop853 rows among the extra settings of each study.'
 	echo
 	cat "$dir/report.md"
+	echo
+	echo '<!-- REFERENCE-SECTIONS-BEGIN -->'
+	cat "$kept"
+	echo '<!-- REFERENCE-SECTIONS-END -->'
 	# the figure and Python targets (make bench-figures, make bench-python),
 	# measured by hand: kept as written
 	echo
@@ -59,4 +71,10 @@ HEAD
 		sed -n '/^## Sweeps (make bench-sweep)$/,$p' "$out"
 	fi
 } >"$out.new" && mv "$out.new" "$out"
-echo "$doc (STUDY-TABLE) and $out written"
+rm -f "$kept"
+# make bench's per-study summary against the reference and SciPy
+if [ -r "$dir/studies.md" ]; then
+	{ echo; cat "$dir/studies.md"; echo; } | readme_splice README.md STUDIES-SUMMARY || exit 1
+	{ echo; cat "$dir/studies.md"; echo; } | readme_splice "$out" STUDIES || exit 1
+fi
+echo "$doc (STUDY-TABLE), README.md (STUDIES-SUMMARY) and $out written"

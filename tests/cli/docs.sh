@@ -35,7 +35,7 @@ else notok "make docs restores it"; fi
 # every key --set accepts is documented (the panel keys of the default scene)
 missing=
 for k in name description law extension E nu rho R mass g F1 F2 ramp F_e0 T_e T_s x0 v0 \
-    x_m0 v_m0 T J stepper rtol atol h_max max_samples chatter reductions kinks; do
+    x_m0 v_m0 T J stepper rtol atol h_max max_samples chatter reductions kinks limits; do
 	grep -q "^\.It Cm $k\$" man/hybounce.1 || missing="$missing $k"
 done
 if [ -z "$missing" ]; then ok "the man page lists every preset key"

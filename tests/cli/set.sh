@@ -70,7 +70,7 @@ run.T=400ms |run.T=0.4
 	initial.x0	=	20 mm	|initial.x0=0.02
  body1.R = 2 cm|body1.R=0.02
  law.alpha = 0.25 |law.alpha=0.25
- run.stepper = bsimp |run.stepper=bsimp
+ run.stepper = auto |run.stepper=auto
 scene.law = bwmcl|scene.law=bwmcl
 EOF_GOOD
 

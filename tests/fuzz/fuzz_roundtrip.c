@@ -102,6 +102,7 @@ same_scene(const struct hb_scene *a, const struct hb_scene *b)
 	same_i("run.chatter", a->run.chatter, b->run.chatter);
 	same_i("run.reduce", a->run.reduce, b->run.reduce);
 	same_i("run.kinks", a->run.kinks, b->run.kinks);
+	same_i("run.limits", a->run.limits, b->run.limits);
 	same_i("system", a->d.system, b->d.system);
 	same_d("derived m", a->d.m, b->d.m);
 }
