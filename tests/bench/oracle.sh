@@ -25,7 +25,7 @@ here=$(cd "$(dirname "$0")/../.." && pwd)
 # name and --set arguments of each variant, run on every preset
 variants() {
 	echo "base"
-	echo "bsimp --set run.stepper=bsimp"
+	echo "bsimp --set run.stepper=bsimp --set run.limits=no"
 	echo "dop853 --set run.stepper=dop853"
 	echo "auto --set run.stepper=auto"
 	echo "none --set run.reductions=none"
