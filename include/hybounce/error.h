@@ -84,6 +84,11 @@ hb_error_estimate(const struct hb_sim *s, const volatile int *stop,
 void
 hb_error_free(struct hb_error_estimate *e);
 
+/* 1 when the estimate gives run observable k (observables.h) an error bar;
+ * 0 for the counts of work (steps, rejected, rhs, jac), always NAN. */
+int
+hb_error_observable(int k);
+
 /* The error of collision i (its index, as hb_collision.i), or NULL. */
 const struct hb_collision *
 hb_error_find(const struct hb_error_estimate *e, long i);

@@ -154,6 +154,12 @@ hb_error_free(struct hb_error_estimate *e)
 	e->ncoll = 0;
 }
 
+int
+hb_error_observable(int k)
+{
+	return k >= 0 && k < HB_OBS_COUNT && !is_work(k);
+}
+
 const struct hb_collision *
 hb_error_find(const struct hb_error_estimate *e, long i)
 {
