@@ -130,7 +130,7 @@ hb_sweep_refined(const struct hb_sweep *sw);
 /*
  * Error bars: with on set, every point is also estimated by
  * hb_error_estimate (error.h: a second run with rk8pd at a hundredth of
- * the tolerances, about twice the work of a point): runs.csv gets an
+ * the tolerances, about 2.5 times the work of a point): runs.csv gets an
  * OBS_err column after the observables for each observable with an error
  * bar (hb_error_observable), collisions.csv a NAME_err column per value
  * column, as hybounce --batch --error --collisions writes them (a point's

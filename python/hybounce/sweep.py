@@ -119,7 +119,7 @@ def sweep(base, vary=None, jobs=None, dir=None, max_points=None, error=False):  
     FROM:TO:N, FROM:TO:N:log, V1,V2,...), after the preset's own
     "; sweep: --vary" lines, on jobs threads (default: os.cpu_count()).
     error=True: every point's error bars too, as hybounce sweep --error
-    (runs["OBS_err"], collisions["NAME_err"]; about twice the work).
+    (runs["OBS_err"], collisions["NAME_err"]; about 2.5 times the work).
     Returns a SweepResult; bad input raises InputError with the library's
     message."""
     run = base if isinstance(base, Run) else Run(base)

@@ -84,8 +84,7 @@ sweep_usage(FILE *f)
 	fprintf(f,
 "usage: hybounce sweep PRESET [--set KEY=VALUE]... --vary KEY=SPEC [--vary ...]\n"
 "                      [--refine OBS[:TOL]] [--error] [--format csv|hdf5]\n"
-"                      [--jobs N]"
-"                      [--shard K/N] [--quiet] [--plot FILE] --out DIR\n"
+"                      [--jobs N] [--shard K/N] [--quiet] [--plot FILE] --out DIR\n"
 "       hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]\n"
 "                      [--sshlogin HOSTS] [--time T] [--partition P]\n"
 "                      [--account A] [--qos Q] [--mem M] [--max-array N]\n"
@@ -105,7 +104,7 @@ sweep_usage(FILE *f)
 "                          (default 1e-3); OBS<X or OBS>X: which side of X;\n"
 "                          DIR/boundaries.csv, runs.csv's 'refined' column\n"
 "      --error             error bars: each point run again with rk8pd at a\n"
-"                          hundredth of the tolerances (about twice the work);\n"
+"                          hundredth of the tolerances (about 2.5x the work);\n"
 "                          runs.csv gets OBS_err beside the observables,\n"
 "                          collisions.csv NAME_err columns, as --batch --error\n"
 "  -j, --jobs N            worker threads (default: the online processors)\n"
