@@ -154,6 +154,27 @@ hb_error_free(struct hb_error_estimate *e)
 	e->ncoll = 0;
 }
 
+int
+hb_error_tighten(struct hb_scene *sc)
+{
+	int at_floor = 0;
+
+	sc->run.stepper = HB_STEPPER_RK8PD;
+	sc->run.atol /= HB_ERROR_TIGHTEN;
+	sc->run.rtol /= HB_ERROR_TIGHTEN;
+	if (sc->run.rtol < HB_ERROR_RTOL_MIN) {
+		sc->run.rtol = HB_ERROR_RTOL_MIN;
+		at_floor = 1;
+	}
+	return at_floor;
+}
+
+int
+hb_error_observable(int k)
+{
+	return k >= 0 && k < HB_OBS_COUNT && !is_work(k);
+}
+
 const struct hb_collision *
 hb_error_find(const struct hb_error_estimate *e, long i)
 {
