@@ -71,16 +71,10 @@ hb_error_estimate(const struct hb_sim *s, const volatile int *stop,
 	int rc;
 
 	memset(e, 0, sizeof *e);
-	e->stepper = HB_STEPPER_RK8PD;
-	e->rtol = sc.run.rtol / HB_ERROR_TIGHTEN;
-	e->atol = sc.run.atol / HB_ERROR_TIGHTEN;
-	if (e->rtol < HB_ERROR_RTOL_MIN) {
-		e->rtol = HB_ERROR_RTOL_MIN;
-		e->at_floor = 1;
-	}
-	sc.run.stepper = e->stepper;
-	sc.run.rtol = e->rtol;
-	sc.run.atol = e->atol;
+	e->at_floor = hb_error_tighten(&sc);
+	e->stepper = sc.run.stepper;
+	e->rtol = sc.run.rtol;
+	e->atol = sc.run.atol;
 	t = hb_sim_new(&sc, msg, n);
 	if (t == NULL)
 		return HB_EINVAL;
