@@ -84,6 +84,23 @@ hb_error_estimate(const struct hb_sim *s, const volatile int *stop,
 void
 hb_error_free(struct hb_error_estimate *e);
 
+struct hb_scene;
+
+/*
+ * Makes sc the scene of the estimate's second run: rk8pd, run.rtol and
+ * run.atol divided by HB_ERROR_TIGHTEN, rtol never below
+ * HB_ERROR_RTOL_MIN.  Returns 1 when that floor was hit (at_floor), else 0.
+ * For a front end that makes its own tighter runs (hybounce fit: the
+ * numerical error of its estimates).
+ */
+int
+hb_error_tighten(struct hb_scene *sc);
+
+/* 1 when the estimate gives run observable k (observables.h) an error bar;
+ * 0 for the counts of work (steps, rejected, rhs, jac), always NAN. */
+int
+hb_error_observable(int k);
+
 /* The error of collision i (its index, as hb_collision.i), or NULL. */
 const struct hb_collision *
 hb_error_find(const struct hb_error_estimate *e, long i);

@@ -196,7 +196,20 @@ struct hb_fit_options {
 	/* Called after every iteration (may be NULL): iteration, cost, runs so far. */
 	void (*progress)(void *ctx, int iter, double cost, long runs);
 	void *ctx;
+	/*
+	 * 1: once the fit has stopped, estimate each estimate's numerical
+	 * error (hb_fit_result.num_err): the data's runs made once more at the
+	 * estimates, at the tighter tolerance of an error estimate (error.h:
+	 * rk8pd at a hundredth of run.rtol), and the change of the residuals
+	 * carried through the Jacobian at the estimates into the parameters
+	 * (the Gauss-Newton step of the tighter model from there).  Costs one
+	 * evaluation of the data at that tolerance.
+	 */
+	int numerical;
 };
+
+/* A numerical error above this share of the standard error is not well below it. */
+#define HB_FIT_NUM_RATIO 0.1
 
 /* One data point and its fit. */
 struct hb_fit_point {
@@ -238,6 +251,18 @@ struct hb_fit_result {
 	char unident[256];          /* "law.c, law.alpha" when not identifiable, else "" */
 	char why[512];              /* the reason in words */
 	struct hb_scene fitted;        /* the scene at the estimates */
+	/*
+	 * With hb_fit_options.numerical, once the fit has stopped (num_on 1):
+	 * each estimate's numerical error, SI (how far it moves when the runs
+	 * are made at num_rtol); NAN, with num_why saying why, when the
+	 * tighter runs failed.  It should be well below the standard error
+	 * (at most HB_FIT_NUM_RATIO of it), or the tolerance, not the data,
+	 * limits the estimate.
+	 */
+	int num_on;
+	double num_err[HB_FIT_MAX_FREE];
+	double num_rtol;
+	char num_why[256];
 };
 
 /* A short phrase for a reason ("converged (small step)" ...). */

@@ -23,7 +23,8 @@
  *
  * Files in DIR (see hb_sweep_run):
  *     sweep.preset     the base scene, then one "; sweep: --vary KEY=SPEC"
- *                      line per axis: it reproduces the sweep, and a DIR
+ *                      line per axis (and "; sweep: --refine", "; sweep:
+ *                      --error" lines): it reproduces the sweep, and a DIR
  *                      holding another sweep is refused;
  *     runs.csv         one row per point, sorted by id;
  *     collisions.csv   id, then the columns of --collisions;
@@ -125,6 +126,28 @@ hb_sweep_refine_from_preset(struct hb_sweep *sw, const char *text, const char *n
 /* 1 for a refined sweep. */
 int
 hb_sweep_refined(const struct hb_sweep *sw);
+
+/*
+ * Error bars: with on set, every point is also estimated by
+ * hb_error_estimate (error.h: a second run with rk8pd at a hundredth of
+ * the tolerances, about 2.5 times the work of a point): runs.csv gets an
+ * OBS_err column after the observables for each observable with an error
+ * bar (hb_error_observable), collisions.csv a NAME_err column per value
+ * column, as hybounce --batch --error --collisions writes them (a point's
+ * rows are bit-identical to it).  A failed point, or one whose second run
+ * failed (its message then says "no error bars: ..."), has them empty.
+ * The spec gets a "; sweep: --error" line, which
+ * hb_sweep_error_from_preset reads back (so a resume, a shard and a merge
+ * keep it).
+ */
+void
+hb_sweep_set_error(struct hb_sweep *sw, int on);
+/* Sets it when text (a preset's) holds a "; sweep: --error" line. */
+void
+hb_sweep_error_from_preset(struct hb_sweep *sw, const char *text);
+/* 1 for a sweep with error bars. */
+int
+hb_sweep_error(const struct hb_sweep *sw);
 
 /* What a refined sweep cost and found (hb_sweep_options.refine_stats). */
 struct hb_sweep_refine_stats {

@@ -18,11 +18,11 @@ from ._lib import LIBRARY, LIBRARY_COMMIT, LIBRARY_VERSION, ffi, lib
 from ._cdef import HEADER_VERSION as __version__
 from .errors import (ChatterError, DoneError, FileError, HybounceError, InputError,
                      NoMemoryError, NumericError)
-from .run import Arc, Run, collision_columns, collision_dtype, open, sample_dtype
+from .run import Arc, ErrorBars, Run, collision_columns, collision_dtype, open, sample_dtype
 from .sweep import SweepResult, sweep
 from .fit import FitResult, fit
 
-__all__ = ["Run", "Arc", "open", "sweep", "SweepResult", "fit", "FitResult",
+__all__ = ["Run", "Arc", "ErrorBars", "open", "sweep", "SweepResult", "fit", "FitResult",
            "HybounceError", "InputError", "NoMemoryError", "FileError", "NumericError",
            "ChatterError", "DoneError", "collision_columns", "collision_dtype",
            "sample_dtype", "presets", "__version__"]

@@ -22,7 +22,10 @@ class FitResult:
     """keys, start, value, se (NumPy arrays, SI), corr (P x P), points (a
     structured array: row, obs, measured, simulated, sd, resid, start),
     cost0, cost, iter, runs, reason (words), why, unident, sd_scaled, cond,
-    and fitted: a Run of the scene at the estimates."""
+    and fitted: a Run of the scene at the estimates.  With numerical=True:
+    numerical (each estimate's numerical error, SI; NAN with numerical_why
+    saying why when it could not be had) and numerical_rtol, as hybounce
+    fit reports them; else numerical is None."""
 
     def __repr__(self):
         vals = ", ".join("%s = %.6g +- %.2g" % (k, v, s)
@@ -42,10 +45,12 @@ def _data(data, d, msg):
                                      len(t), b"times", d, msg, MSG), msg)
 
 
-def fit(base, data, keys, jobs=0, max_iter=0, xtol=0.0, gtol=0.0, ftol=0.0):
+def fit(base, data, keys, jobs=0, max_iter=0, xtol=0.0, gtol=0.0, ftol=0.0, numerical=False):
     """Fits the keys (e.g. ["law.c", "law.alpha"]) of base (a Run, or a
-    preset's name or path) to data.  InputError with the library's message
-    for bad input; otherwise a FitResult, whatever the reason it stopped."""
+    preset's name or path) to data.  numerical=True: each estimate's
+    numerical error too (one more evaluation of the data, with rk8pd at a
+    hundredth of run.rtol).  InputError with the library's message for bad
+    input; otherwise a FitResult, whatever the reason it stopped."""
     run = base if isinstance(base, Run) else Run(base)
     if isinstance(keys, str):
         keys = [keys]
@@ -58,6 +63,7 @@ def fit(base, data, keys, jobs=0, max_iter=0, xtol=0.0, gtol=0.0, ftol=0.0):
     o.keys, o.nkeys = karr, len(keys)
     o.max_iter, o.jobs = int(max_iter), int(jobs)
     o.xtol, o.gtol, o.ftol = xtol, gtol, ftol
+    o.numerical = 1 if numerical else 0
     _data(data, d, msg)
     try:
         check(lib.hb_fit_run(run._scene, d, o, r, msg, MSG), msg)
@@ -78,6 +84,9 @@ def fit(base, data, keys, jobs=0, max_iter=0, xtol=0.0, gtol=0.0, ftol=0.0):
         res.reason = text(lib.hb_fit_reason_str(r.reason))
         res.why, res.unident = text(r.why), text(r.unident)
         res.sd_scaled = bool(r.sd_scaled)
+        res.numerical = np.array([r.num_err[k] for k in range(p)]) if r.num_on else None
+        res.numerical_rtol = r.num_rtol if r.num_on else None
+        res.numerical_why = text(r.num_why) if r.num_on else None
         res.fitted = Run._of_scene(ffi.addressof(r.fitted))
         return res
     finally:

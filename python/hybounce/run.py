@@ -7,6 +7,7 @@ arc and the collisions as NumPy arrays.
     run.run()
     run.arc.t, run.arc.x_c, run.arc.F_c        # views of the library's arc
     run.collisions["e"]                        # a structured array
+    run.error()["e"]                           # its error bars (a second run)
 
 Copies.  The arc's columns and the collision table are views of the
 library's memory (struct hb_arc_sample and struct hb_collision arrays,
@@ -172,6 +173,41 @@ class Arc:
         return "<hybounce.Arc: %d samples, t 0 .. %.6g s, j 0 .. %d%s>" % (
             len(self), self.t[-1], self.j[-1],
             ", thinned %d times" % self.thinned if self.thinned else "")
+
+
+class ErrorBars:
+    """The error bars of a run (Run.error()), NumPy arrays the caller owns
+    (copies: the library frees its estimate).
+
+    collisions: a structured array of collision_dtype(), one row per
+        completed collision of the run (Run.collisions' rows, in order),
+        i and j as there, every other field the absolute error of that
+        value (the --collisions CSV's NAME_err columns); NAN where the
+        tighter run has no such collision.
+    observables: {name: error} for every run observable (as
+        Run.observables()), NAN for the counts of work (steps, rejected,
+        rhs, jac).
+    rtol, atol: the second run's tolerances; at_floor: True when rtol / 100
+        was below 1e-15 (the estimate is less sure); other_total,
+        other_rhs: that run's completed collisions and rhs evaluations.
+    """
+
+    def __init__(self, e):
+        n = e.ncoll
+        self.collisions = np.array(view(e.coll, n, collision_dtype(), None)) if n else \
+            np.zeros(0, collision_dtype())
+        self.observables = {text(lib.hb_observables[k].name): e.obs[k]
+                            for k in range(lib.HB_OBS_COUNT)}
+        self.rtol, self.atol, self.at_floor = e.rtol, e.atol, bool(e.at_floor)
+        self.other_total, self.other_rhs = e.other_total, e.other_rhs
+
+    def __getitem__(self, name):
+        """bars["e"]: the error of field e of every collision (an array)."""
+        return self.collisions[name]
+
+    def __repr__(self):
+        return "<hybounce.ErrorBars: %d collisions, rtol %.3g%s>" % (
+            len(self.collisions), self.rtol, " (at the floor)" if self.at_floor else "")
 
 
 class Run:
@@ -353,6 +389,23 @@ class Run:
         sim = self._need()
         return {text(lib.hb_observables[k].name): lib.hb_observable_value(sim.ptr, k)
                 for k in range(lib.HB_OBS_COUNT)}
+
+    def error(self):
+        """Error bars of the finished run (ErrorBars): the estimate of
+        hybounce --batch --error (the library's hb_error_estimate: the scene
+        run again with rk8pd at a hundredth of the tolerances, about the
+        cost of the run again).  A failure of that second run raises
+        NumericError with its message."""
+        sim = self._need()
+        e = ffi.new("struct hb_error_estimate *")
+        msg = msgbuf()
+        rc = lib.hb_error_estimate(sim.ptr, ffi.NULL, e, msg, MSG)
+        if rc != 0:
+            raise error(rc, text(msg))
+        try:
+            return ErrorBars(e)
+        finally:
+            lib.hb_error_free(e)
 
     def stats(self):
         """The integrator's counts (steps, rejected, rhs, jac, jumps, ...)."""

@@ -113,11 +113,13 @@ def _axes(vary):
     return list(vary)
 
 
-def sweep(base, vary=None, jobs=None, dir=None, max_points=None):  # noqa: A002
+def sweep(base, vary=None, jobs=None, dir=None, max_points=None, error=False):  # noqa: A002
     """Runs a sweep of base (a Run, or a preset's name or path) over the axes
     vary ({"KEY": "SPEC"} or ["KEY=SPEC", ...]; SPEC as --vary takes it:
     FROM:TO:N, FROM:TO:N:log, V1,V2,...), after the preset's own
     "; sweep: --vary" lines, on jobs threads (default: os.cpu_count()).
+    error=True: every point's error bars too, as hybounce sweep --error
+    (runs["OBS_err"], collisions["NAME_err"]; about 2.5 times the work).
     Returns a SweepResult; bad input raises InputError with the library's
     message."""
     run = base if isinstance(base, Run) else Run(base)
@@ -133,6 +135,10 @@ def sweep(base, vary=None, jobs=None, dir=None, max_points=None):  # noqa: A002
                                             msg, MSG), msg)
     for a in _axes(vary or []):
         check(lib.hb_sweep_vary(sw, _b(a), msg, MSG), msg)
+    if run.preset_text:
+        lib.hb_sweep_error_from_preset(sw, _b(run.preset_text))
+    if error:
+        lib.hb_sweep_set_error(sw, 1)
     check(lib.hb_sweep_check(sw, msg, MSG), msg)
     n = lib.hb_sweep_runs_header(sw, ffi.NULL, 0)
     hdr = ffi.new("char[]", n + 1)

@@ -89,8 +89,9 @@ usage(FILE *f)
 "  -o, --out FILE          the fitted preset (default: DATA's name + -fit.preset)\n"
 "      --residuals FILE    write the points as CSV: measured, simulated, sd ...\n"
 "      --report FILE.json  write the report as JSON: dof, cost, reduced chi-square,\n"
-"                          the noise test, AIC, BIC, estimates, 95%% intervals,\n"
-"                          correlations, the verdict and the residuals\n"
+"                          the noise test, AIC, BIC, estimates, numerical\n"
+"                          errors, 95%% intervals, correlations, the verdict and\n"
+"                          the residuals\n"
 "      --plot FILE         draw measured against fitted, the residuals below, to\n"
 "                          FILE.png, .pdf, .svg or .tex (as hybounce plot)\n"
 "  -j, --jobs N            runs in parallel (default: every core)\n"
@@ -115,9 +116,12 @@ usage(FILE *f)
 "\n"
 "Exit status: 0 converged to credible estimates, 1 not credible (stopped\n"
 "without converging: iteration cap, no progress, parameters not identifiable;\n"
-"an estimate's relative standard error above --max-relative-se; with sd\n"
-"columns, residuals inconsistent with them: a two-sided chi-square test at\n"
-"5%%): the reasons on stderr, the estimates still reported and written,\n"
+"an estimate's relative standard error above --max-relative-se; an\n"
+"estimate's numerical error, how far it moves when the runs are made with\n"
+"rk8pd at run.rtol/100 (one more evaluation of the data), above 0.1 of its\n"
+"standard error; with sd columns, residuals inconsistent with them: a\n"
+"two-sided chi-square test at 5%%): the reasons on stderr, the estimates\n"
+"still reported and written,\n"
 "2 bad input (a recording that is no bouncing sequence too), 128+N stopped by signal\n"
 "N (SIGINT, SIGTERM, SIGHUP: the best point so far is written).  See hybounce(1).\n");
 }
@@ -222,7 +226,8 @@ fit_main(int argc, char **argv)
 	char *freebuf = NULL, path[1024], outbuf[1024], msg[4096];
 	struct hb_onset_options oo = { 0 };
 	double max_rse = 0.1;
-	struct hb_fit_options fo = { 0 };
+	/* with each estimate's numerical error (fit.h), also of each law of --laws */
+	struct hb_fit_options fo = { .numerical = 1 };
 	struct hb_fit_data d = { 0 };
 	struct hb_fit_result r = { 0 };
 	struct hb_scene sc;

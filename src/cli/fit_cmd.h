@@ -7,6 +7,7 @@
  * stopped without converging
  * (iteration cap, no progress, parameters not identifiable, runs failing):
  * or an estimate's relative standard error above --max-relative-se, or
+ * its numerical error not well below its standard error, or
  * with sd columns residuals inconsistent with them (fit_report.c): the
  * best point is still reported and written; 2 bad input (options, preset,
  * --set, data file, a recording that is no bouncing sequence, a start at
@@ -46,8 +47,14 @@ struct fit_verdict {
 	char reason[FIT_VERDICT_MAX][640];
 };
 
+/* 1 when estimate i's numerical error is not well below its standard error
+ * (above HB_FIT_NUM_RATIO of it). */
+int
+fit_num_flagged(const struct hb_fit_result *r, int i);
+
 /*
- * Credible: converged, every relative standard error at most max_rse, and
+ * Credible: converged, every relative standard error at most max_rse, every
+ * numerical error well below its standard error (fit_num_flagged), and
  * with stated noise the residuals consistent with it (hb_fit_stats).
  * Returns v->status.
  */

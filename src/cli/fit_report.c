@@ -30,6 +30,13 @@ ic_form(const struct hb_fit_stats *st)
 }
 
 int
+fit_num_flagged(const struct hb_fit_result *r, int i)
+{
+	return r->num_on && isfinite(r->num_err[i]) && isfinite(r->se[i]) &&
+	       r->num_err[i] > HB_FIT_NUM_RATIO * r->se[i];
+}
+
+int
 fit_verdict(const struct hb_fit_result *r, const struct hb_fit_stats *st, double max_rse,
             struct fit_verdict *v)
 {
@@ -43,6 +50,14 @@ fit_verdict(const struct hb_fit_result *r, const struct hb_fit_stats *st, double
 		snprintf(v->reason[v->n++], sizeof v->reason[0], "the standard error of %s is %.3g "
 		         "of its value, above %g (--max-relative-se): the data do not determine it",
 		         r->key[i], st->rel_se[i], max_rse);
+	}
+	for (int i = 0; i < r->np && v->n < FIT_VERDICT_MAX; i++) {
+		if (!fit_num_flagged(r, i))
+			continue;
+		snprintf(v->reason[v->n++], sizeof v->reason[0], "the numerical error of %s is "
+		         "%.3g, not well below its standard error %.3g (above %g of it): the "
+		         "tolerance, not the data, limits the estimate; expected a smaller run.rtol",
+		         r->key[i], r->num_err[i], r->se[i], HB_FIT_NUM_RATIO);
 	}
 	if (v->n < FIT_VERDICT_MAX && (st->noise == HB_FIT_NOISE_ABOVE
 	                               || st->noise == HB_FIT_NOISE_BELOW)) {
@@ -85,18 +100,26 @@ fit_report_print(const struct hb_fit_result *r, const struct hb_fit_data *d,
 	       "%.4g se)\n", r->sd_scaled
 	    ? "scaled by the residual variance cost/(N-P): the data carry no sd"
 	    : "from the data's standard deviations", st->dof, st->t95);
-	printf("  %-14s %14s %16s %12s %9s %13s %13s  %s\n", "key", "start", "estimate",
-	    "std error", "relative", "95% low", "95% high", "unit");
+	printf("  %-14s %14s %16s %12s %9s %13s %13s %11s  %s\n", "key", "start", "estimate",
+	    "std error", "relative", "95% low", "95% high", "numerical", "unit");
 	for (int i = 0; i < p; i++) {
 		struct hb_scene_keyinfo ki;
 
 		if (hb_scene_get(&r->fitted, r->key[i], &ki, NULL) != HB_OK)
 			ki.unit[0] = '\0';
-		printf("  %-14s %14.6g %16.9g %12.3g %9.2g %13.6g %13.6g  %s%s\n", r->key[i],
+		printf("  %-14s %14.6g %16.9g %12.3g %9.2g %13.6g %13.6g %11.2g  %s%s%s\n", r->key[i],
 		    r->start[i], r->value[i], r->se[i], st->rel_se[i], st->lo95[i], st->hi95[i],
-		    ki.unit, st->at_bound[i] < 0 ? "  AT LOWER BOUND" : st->at_bound[i] > 0
-		    ? "  AT UPPER BOUND" : "");
+		    r->num_on ? r->num_err[i] : NAN, ki.unit, st->at_bound[i] < 0
+		    ? "  AT LOWER BOUND" : st->at_bound[i] > 0 ? "  AT UPPER BOUND" : "",
+		    fit_num_flagged(r, i) ? "  NUMERICAL ERROR NOT WELL BELOW SE" : "");
 	}
+	if (r->num_on && r->num_why[0] != '\0')
+		printf("  numerical: no estimate: %s\n", r->num_why);
+	else if (r->num_on)
+		printf("  numerical: how far each estimate moves when the runs are made at rtol "
+		       "%.3g (rk8pd; the residuals at the estimates through the Jacobian); "
+		       "at most %g x the standard error is well below it\n", r->num_rtol,
+		       HB_FIT_NUM_RATIO);
 	for (int i = 0; i < p; i++)
 		if (st->at_bound[i] != 0)
 			printf("  %s is at the %s bound of its range: its standard error and interval "
@@ -223,6 +246,12 @@ fit_report_json_object(FILE *f, const struct fit_report_ctx *c)
 	jstr(f, ic_form(st));
 	fprintf(f, ",\n  \"t95\": ");
 	jnum(f, st->t95);
+	fprintf(f, ",\n  \"numerical_rtol\": ");
+	jnum(f, r->num_on ? r->num_rtol : NAN);
+	if (r->num_on && r->num_why[0] != '\0') {
+		fprintf(f, ",\n  \"numerical_failed\": ");
+		jstr(f, r->num_why);
+	}
 	fprintf(f, ",\n  \"parameters\": [\n");
 	for (int i = 0; i < p; i++) {
 		struct hb_scene_keyinfo ki;
@@ -241,6 +270,10 @@ fit_report_json_object(FILE *f, const struct fit_report_ctx *c)
 		jnum(f, r->se[i]);
 		fprintf(f, ", \"relative_se\": ");
 		jnum(f, st->rel_se[i]);
+		fprintf(f, ", \"numerical_error\": ");
+		jnum(f, r->num_on ? r->num_err[i] : NAN);
+		fprintf(f, ", \"numerical_well_below_se\": %s", !r->num_on || !isfinite(r->num_err[i])
+		    ? "null" : fit_num_flagged(r, i) ? "false" : "true");
 		fprintf(f, ", \"ci95\": [");
 		jnum(f, st->lo95[i]);
 		fprintf(f, ", ");

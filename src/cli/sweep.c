@@ -6,7 +6,8 @@
  * runs (exit 2), and shows progress on stderr; the engine does the rest.
  *
  *     hybounce sweep PRESET [--set KEY=VALUE]... [--vary KEY=SPEC]...
- *                    [--refine OBS[:TOL]] [--format csv|hdf5] [--jobs N] [--shard K/N]
+ *                    [--refine OBS[:TOL]] [--error] [--format csv|hdf5] [--jobs N]
+ *                    [--shard K/N]
  *                    [--quiet] --out DIR
  *     hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]
  *                    [--sshlogin HOSTS] [--time T] [--partition P] [--account A]
@@ -48,7 +49,7 @@
 
 enum { OPT_EMIT = 256, OPT_SHARDS, OPT_SSHLOGIN, OPT_MERGE, OPT_PROGRESS, OPT_MAX_POINTS,
        OPT_TIME, OPT_PARTITION, OPT_ACCOUNT, OPT_QOS, OPT_MEM, OPT_MAX_ARRAY, OPT_PLOT, OPT_REFINE,
-       OPT_FORMAT };
+       OPT_FORMAT, OPT_ERROR };
 
 static const struct option sweep_options_long[] = {
 	{ "set",      required_argument, NULL, 's' },
@@ -72,6 +73,7 @@ static const struct option sweep_options_long[] = {
 	{ "plot",      required_argument, NULL, OPT_PLOT },
 	{ "refine",    required_argument, NULL, OPT_REFINE },
 	{ "format",    required_argument, NULL, OPT_FORMAT },
+	{ "error",     no_argument,       NULL, OPT_ERROR },
 	{ "help",     no_argument,       NULL, 'h' },
 	{ NULL, 0, NULL, 0 },
 };
@@ -81,8 +83,8 @@ sweep_usage(FILE *f)
 {
 	fprintf(f,
 "usage: hybounce sweep PRESET [--set KEY=VALUE]... --vary KEY=SPEC [--vary ...]\n"
-"                      [--refine OBS[:TOL]] [--format csv|hdf5] [--jobs N]\n"
-"                      [--shard K/N] [--quiet] [--plot FILE] --out DIR\n"
+"                      [--refine OBS[:TOL]] [--error] [--format csv|hdf5]\n"
+"                      [--jobs N] [--shard K/N] [--quiet] [--plot FILE] --out DIR\n"
 "       hybounce sweep PRESET ... --out DIR --emit slurm|parallel [--shards N]\n"
 "                      [--sshlogin HOSTS] [--time T] [--partition P]\n"
 "                      [--account A] [--qos Q] [--mem M] [--max-array N]\n"
@@ -101,6 +103,10 @@ sweep_usage(FILE *f)
 "                          until each boundary is within TOL of each axis\n"
 "                          (default 1e-3); OBS<X or OBS>X: which side of X;\n"
 "                          DIR/boundaries.csv, runs.csv's 'refined' column\n"
+"      --error             error bars: each point run again with rk8pd at a\n"
+"                          hundredth of the tolerances (about 2.5x the work);\n"
+"                          runs.csv gets OBS_err beside the observables,\n"
+"                          collisions.csv NAME_err columns, as --batch --error\n"
 "  -j, --jobs N            worker threads (default: the online processors)\n"
 "      --shard K/N         compute only shard K of N (points K, K+N, ...);\n"
 "                          then merge with --merge DIR\n"
@@ -359,7 +365,7 @@ plot_draw_dir(const char *plot, const char *dir)
 static struct hb_sweep *
 build(const char *preset, const char *const *sets, int nsets,
       const char *const *varies, int nvaries, const char *out, long max_points,
-      const char *refine)
+      const char *refine, int error)
 {
 	char path[4096], spec[4200], msg[4096], more[128];
 	struct hb_scene sc;
@@ -404,6 +410,10 @@ build(const char *preset, const char *const *sets, int nsets,
 			return NULL;
 		}
 	}
+	/* --error: the command line's, or the preset's line */
+	hb_sweep_error_from_preset(sw, text);
+	if (error)
+		hb_sweep_set_error(sw, 1);
 	/* --refine after every axis: the command line's, else the preset's line */
 	msg[0] = '\0';
 	if (hb_sweep_npoints(sw) > 0 &&
@@ -439,7 +449,7 @@ sweep_main(int argc, char **argv)
 	const char *out = NULL, *emit = NULL, *sshlogin = NULL, *merge = NULL, *slurm_opt = NULL;
 	const char *plot = NULL;
 	const char *refine = NULL;
-	int hdf5 = 0;
+	int hdf5 = 0, error = 0;
 	struct sweep_hdf5 *h5 = NULL;
 	struct sweep_emit_opts eo = { 0 };
 	struct hb_sweep *sw = NULL;
@@ -555,6 +565,7 @@ sweep_main(int argc, char **argv)
 			slurm_opt = "--max-array";
 			break;
 		case OPT_REFINE: refine = optarg; break;
+		case OPT_ERROR: error = 1; break;
 		case OPT_FORMAT:
 			if (strcmp(optarg, "csv") != 0 && strcmp(optarg, "hdf5") != 0) {
 				status = bad("--format '%s': accepted: csv, hdf5", optarg);
@@ -578,7 +589,8 @@ sweep_main(int argc, char **argv)
 		goto done;
 	}
 	if (merge != NULL) {
-		if (optind < argc || nvaries || nsets || out || emit || sshlogin || slurm_opt || refine) {
+		if (optind < argc || nvaries || nsets || out || emit || sshlogin || slurm_opt || refine ||
+		    error) {
 			status = bad("--merge DIR takes no preset and no other option but "
 			             "--shards N, --format, --plot FILE and --quiet");
 			goto done;
@@ -657,7 +669,7 @@ sweep_main(int argc, char **argv)
 		             : "--sshlogin goes with --emit parallel");
 		goto done;
 	}
-	sw = build(argv[optind], sets, nsets, varies, nvaries, out, max_points, refine);
+	sw = build(argv[optind], sets, nsets, varies, nvaries, out, max_points, refine, error);
 	if (sw == NULL)
 		goto done;      /* exit 2: build said why */
 	if (hb_sweep_refined(sw) && (emit != NULL || shard_n > 1)) {

@@ -182,13 +182,26 @@ is_number(const char *s)
 	return *end == '\0';
 }
 
+/* The index find gives NAME of a column NAME_err (an error bar, --error), or -1. */
+static int
+err_of(const char *col, int (*find)(const char *))
+{
+	char stem[64];
+	size_t l = strlen(col);
+
+	if (l <= 4 || l - 4 >= sizeof stem || strcmp(col + l - 4, "_err") != 0)
+		return -1;
+	snprintf(stem, sizeof stem, "%.*s", (int)(l - 4), col);
+	return find(stem);
+}
+
 /* Column k of runs: its unit and kind (first: the first row's field, for an axis). */
 static void
 runs_column(struct sweep_hdf5 *h, int col, const char *first, const char **unit, int *kind)
 {
 	const char *name = h->runs.col[col];
 	struct hb_scene_keyinfo ki;
-	int k = hb_observable_find(name);
+	int k = hb_observable_find(name), ke = err_of(name, hb_observable_find);
 
 	*unit = "";
 	*kind = COL_NUM;
@@ -201,6 +214,8 @@ runs_column(struct sweep_hdf5 *h, int col, const char *first, const char **unit,
 	} else if (k >= 0) {
 		*unit = hb_observables[k].unit;
 		*kind = hb_observables[k].whole ? COL_INT : COL_NUM;
+	} else if (ke >= 0) {
+		*unit = hb_observables[ke].unit;   /* an error bar (--error): a number */
 	} else {
 		/* an axis: a number (its SI unit), or a word (a law's name) */
 		memset(&ki, 0, sizeof ki);
@@ -217,6 +232,14 @@ static void
 coll_column(const char *name, const char **unit, int *kind)
 {
 	const struct hb_collision_column *c = hb_collision_column_find(name);
+	char stem[64];
+	size_t l = strlen(name);
+
+	/* NAME_err (--error): the error bar of NAME, in its unit */
+	if (c == NULL && l > 4 && l - 4 < sizeof stem && strcmp(name + l - 4, "_err") == 0) {
+		snprintf(stem, sizeof stem, "%.*s", (int)(l - 4), name);
+		c = hb_collision_column_find(stem);
+	}
 
 	*unit = c != NULL ? c->unit : "";
 	*kind = strcmp(name, "id") == 0 || strcmp(name, "i") == 0 ? COL_INT : COL_NUM;

@@ -71,16 +71,10 @@ hb_error_estimate(const struct hb_sim *s, const volatile int *stop,
 	int rc;
 
 	memset(e, 0, sizeof *e);
-	e->stepper = HB_STEPPER_RK8PD;
-	e->rtol = sc.run.rtol / HB_ERROR_TIGHTEN;
-	e->atol = sc.run.atol / HB_ERROR_TIGHTEN;
-	if (e->rtol < HB_ERROR_RTOL_MIN) {
-		e->rtol = HB_ERROR_RTOL_MIN;
-		e->at_floor = 1;
-	}
-	sc.run.stepper = e->stepper;
-	sc.run.rtol = e->rtol;
-	sc.run.atol = e->atol;
+	e->at_floor = hb_error_tighten(&sc);
+	e->stepper = sc.run.stepper;
+	e->rtol = sc.run.rtol;
+	e->atol = sc.run.atol;
 	t = hb_sim_new(&sc, msg, n);
 	if (t == NULL)
 		return HB_EINVAL;
@@ -152,6 +146,27 @@ hb_error_free(struct hb_error_estimate *e)
 	free(e->coll);
 	e->coll = NULL;
 	e->ncoll = 0;
+}
+
+int
+hb_error_tighten(struct hb_scene *sc)
+{
+	int at_floor = 0;
+
+	sc->run.stepper = HB_STEPPER_RK8PD;
+	sc->run.atol /= HB_ERROR_TIGHTEN;
+	sc->run.rtol /= HB_ERROR_TIGHTEN;
+	if (sc->run.rtol < HB_ERROR_RTOL_MIN) {
+		sc->run.rtol = HB_ERROR_RTOL_MIN;
+		at_floor = 1;
+	}
+	return at_floor;
+}
+
+int
+hb_error_observable(int k)
+{
+	return k >= 0 && k < HB_OBS_COUNT && !is_work(k);
 }
 
 const struct hb_collision *

@@ -274,6 +274,10 @@ struct hb_fit {
 	void *pctx;
 	int done;
 	struct hb_fit_result r;          /* keys, starts, points (start values), cost0; reason */
+	/* the numerical error (fit_num.c), made once when the fit has stopped */
+	int numerical, num_done;
+	double num_err[HB_FIT_MAX_FREE], num_rtol;
+	char num_why[256];
 };
 
 void
@@ -354,6 +358,7 @@ hb_fit_new(const struct hb_scene *sc, const struct hb_fit_data *d, const struct 
 	f->gtol = o->gtol > 0 ? o->gtol : 1e-10;
 	f->ftol = o->ftol > 0 ? o->ftol : 1e-12;
 	f->max_iter = o->max_iter > 0 ? o->max_iter : 100;
+	f->numerical = o->numerical;
 	f->progress = o->progress;
 	f->pctx = o->ctx;
 	r->np = np;
@@ -536,6 +541,29 @@ hb_fit_result_get(struct hb_fit *f, struct hb_fit_result *out, char *msg, size_t
 		r->cost += rk * rk;
 	}
 	errors(gsl_multifit_nlinear_jac(f->w), c, u, r);
+	if (f->numerical && f->done) {
+		if (!f->num_done && r->reason == HB_FIT_SINGULAR) {
+			for (int j = 0; j < HB_FIT_MAX_FREE; j++)
+				f->num_err[j] = NAN;
+			snprintf(f->num_why, sizeof f->num_why, "not identifiable (the Jacobian at "
+			         "the estimates is singular)");
+			f->num_done = 1;
+		} else if (!f->num_done) {
+			long num_runs = 0;   /* not the fit's: r->runs counts those */
+
+			f->num_why[0] = '\0';
+			if (fit_numerical(c->sc, c->d, c->jobs, f->fp, np, u,
+			                  gsl_multifit_nlinear_jac(f->w), fv, c->meas, c->sd,
+			                  f->num_err, &f->num_rtol, &num_runs, &c->cpu, &c->span,
+			                  f->num_why, sizeof f->num_why) == HB_OK)
+				f->num_why[0] = '\0';
+			f->num_done = 1;
+		}
+		r->num_on = 1;
+		memcpy(r->num_err, f->num_err, sizeof r->num_err);
+		r->num_rtol = f->num_rtol;
+		snprintf(r->num_why, sizeof r->num_why, "%s", f->num_why);
+	}
 	if (r->reason == HB_FIT_SINGULAR) {
 		for (int j = 0; j < np; j++)
 			if (strstr(r->unident, r->key[j]) != NULL)

@@ -128,7 +128,8 @@ run_trial(struct pool *pl, struct task *tk)
 	 * shrinks to nothing the impacts after it merge there, so the
 	 * residuals stay continuous in the parameters.
 	 */
-	have_live = nc < need && !tk->fail && hb_sim_contact_live(s, &live);
+	/* (a run with no completed collision reproduces none: it fails below) */
+	have_live = nc > 0 && nc < need && !tk->fail && hb_sim_contact_live(s, &live);
 	if (nc < need && !have_live && !tk->fail) {
 		tk->fail = 1;
 		if (nc == 0)

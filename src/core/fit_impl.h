@@ -76,4 +76,17 @@ fit_identifiability(const gsl_matrix *J, const struct fit_param *fp, int np, dou
 double
 fit_gn_decrease(const gsl_matrix *J, const gsl_vector *f);
 
+/*
+ * fit_num.c: the numerical error of the estimates at u (see there): the
+ * runs of the data at hb_error_tighten's tolerance (its rtol into *rtol),
+ * the change of the residuals f (J, f: at u) carried through J into
+ * |dtheta| (np values; NAN on failure).  Returns HB_OK, or HB_ENUMERIC
+ * (a tighter run failed, J singular) / HB_ENOMEM with msg.
+ */
+int
+fit_numerical(const struct hb_scene *sc, const struct hb_fit_data *d, int jobs,
+              const struct fit_param *fp, int np, const double *u, const gsl_matrix *J,
+              const gsl_vector *f, const double *meas, const double *sd, double *dtheta,
+              double *rtol, long *runs, double *cpu, double *span, char *msg, size_t n);
+
 #endif

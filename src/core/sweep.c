@@ -21,6 +21,7 @@
 
 #include "hybounce/arc.h"
 #include "hybounce/csv.h"
+#include "hybounce/error.h"
 #include "hybounce/observables.h"
 #include "hybounce/preset.h"
 #include "hybounce/sim.h"
@@ -613,10 +614,14 @@ hb_sweep_spec_format(const struct hb_sweep *sw, char *buf, size_t n)
 	if (sw->rf.on)
 		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
 		                        "; sweep: --refine %s\n", sw->rf.spec);
+	if (sw->error)
+		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
+		                        "%s\n", SWEEP_ERROR_LINE);
 	return len;
 }
 
-/* id, the axes, status, message, the run observables (observables.h), [refined,] cpu_s. */
+/* id, the axes, status, message, the run observables (observables.h),
+ * [OBS_err of each with an error bar (--error),] [refined,] cpu_s. */
 size_t
 hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n)
 {
@@ -630,14 +635,22 @@ hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n)
 	for (int k = 0; k < HB_OBS_COUNT; k++)
 		len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
 		                        ",%s", hb_observables[k].name);
+	for (int k = 0; sw->error && k < HB_OBS_COUNT; k++)
+		if (hb_error_observable(k))
+			len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0,
+			                        ",%s_err", hb_observables[k].name);
 	len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0, "%s,cpu_s",
 	                        sw->rf.on ? ",refined" : "");
 	return len;
 }
 
-/* The runs row of a finished sim (no newline). */
+/*
+ * The runs row of a finished sim (no newline); est: its error bars, when
+ * sw->error (NULL: none could be had, the bars empty, why in note).
+ */
 static void
-runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s, double cpu)
+runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s,
+         const struct hb_error_estimate *est, const char *note, double cpu)
 {
 	int failed = hb_sim_end(s) == HB_SIM_END_FAIL;
 	char t[64];
@@ -648,7 +661,14 @@ runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s, do
 		csv_put_field(f, sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t));
 	}
 	fprintf(f, ",%s,", failed ? "failed" : "ok");
-	csv_put_field(f, failed && hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_sim_end_str(s));
+	if (note != NULL && note[0] != '\0') {
+		char m[768];
+
+		snprintf(m, sizeof m, "%s; %s", hb_sim_end_str(s), note);
+		csv_put_field(f, m);
+	} else {
+		csv_put_field(f, failed && hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_sim_end_str(s));
+	}
 	for (int k = 0; k < HB_OBS_COUNT; k++) {
 		double v = hb_observable_value(s, k);
 
@@ -657,6 +677,9 @@ runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s, do
 		else
 			csv_put_num(f, v);
 	}
+	for (int k = 0; sw->error && k < HB_OBS_COUNT; k++)
+		if (hb_error_observable(k))
+			csv_put_num(f, est != NULL ? est->obs[k] : NAN);
 	csv_put_num(f, cpu);
 	fputc('\n', f);
 }
@@ -690,13 +713,15 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, 
                       int *failed, char *msg, size_t n)
 {
 	double c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
+	struct hb_error_estimate est_store = { 0 }, none = { 0 }, *est = NULL;
 	struct hb_scene sc;
 	struct hb_sim *s;
-	char m[512];
+	char m[512], note[600];
 	FILE *f;
 	int rc;
 
 	*out = NULL;
+	note[0] = '\0';
 	*failed = 0;
 	/* Not validated here: hb_sim_new validates (and hb_sweep_check did). */
 	if ((rc = point_values(sw, id, &sc, msg, n)) != HB_OK)
@@ -707,18 +732,30 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, 
 		return hb_status_set(msg, n, HB_EINVAL, "point %ld: %s", id, m[0] ? m : "no memory");
 	(void)hb_sim_run(s);
 	*failed = hb_sim_end(s) == HB_SIM_END_FAIL;
+	/* --error: the same estimate as hybounce --batch --error (error.h) */
+	if (sw->error && !*failed) {
+		m[0] = '\0';
+		if (hb_error_estimate(s, NULL, &est_store, m, sizeof m) == HB_OK)
+			est = &est_store;
+		else
+			snprintf(note, sizeof note, "no error bars: %.500s", m);
+	}
 
 	/* The collisions exactly as --collisions writes them, each row prefixed. */
 	if ((f = wbuf_stream(&w->coll, &w->cbuf, &w->clen)) == NULL) {
 		hb_sim_free(s);
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
-	rc = hb_csv_stream_collisions(f, s, m, sizeof m);   /* flushes: cbuf holds clen bytes */
+	/* flushes: cbuf holds clen bytes */
+	rc = hb_csv_stream_collisions_err(f, s, !sw->error ? NULL : est != NULL ? est : &none, m,
+	                                  sizeof m);
 	if (rc != HB_OK || w->cbuf == NULL) {
+		hb_error_free(&est_store);
 		hb_sim_free(s);
 		return hb_status_set(msg, n, HB_ENOMEM, "point %ld: collisions: %s", id, m);
 	}
 	if ((f = wbuf_stream(&w->blk, &w->bbuf, &w->blen)) == NULL) {
+		hb_error_free(&est_store);
 		hb_sim_free(s);
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
@@ -734,7 +771,8 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, 
 			p += l + (e != NULL);
 		}
 	}
-	runs_row(f, sw, id, s, clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0);
+	runs_row(f, sw, id, s, est, note, clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0);
+	hb_error_free(&est_store);
 	hb_sim_free(s);
 	if (fflush(f) != 0 || ferror(f) || w->bbuf == NULL || (*out = malloc(w->blen + 1)) == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");

@@ -15,6 +15,7 @@
 #define SWEEP_SPEC_NAME "sweep.preset"
 #define SWEEP_MAX_POINTS 1000000000L
 #define SWEEP_MAX_AXES 16
+#define SWEEP_ERROR_LINE "; sweep: --error"
 
 struct axis {
 	char key[48];
@@ -53,6 +54,7 @@ struct hb_sweep {
 	int naxes;
 	struct axis ax[SWEEP_MAX_AXES];
 	struct sweep_refine rf;
+	int error;                /* --error: the error bars of each point (error.h) */
 	/*
 	 * When every axis is a range of a plain number (a double of the scene
 	 * or a law parameter): the base with each axis's first value set (its
@@ -103,9 +105,11 @@ sweep_refine_grid_id(const struct hb_sweep *sw, long g);
 long
 sweep_refine_grid_points(const struct hb_sweep *sw);
 
-/* The header of the collisions CSV (--collisions) of scene sc, no newline. */
+/* The header of the collisions CSV (--collisions) of scene sc, no newline;
+ * err: with the NAME_err columns of --error. */
 int
-sweep_collisions_header(const struct hb_scene *sc, char *buf, size_t n, char *msg, size_t mn);
+sweep_collisions_header(const struct hb_scene *sc, int err, char *buf, size_t n, char *msg,
+                        size_t mn);
 
 /* hb_sweep_run for a refined sweep (sweep_refine_run.c). */
 int

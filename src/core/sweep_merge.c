@@ -22,6 +22,7 @@
 
 #include "hybounce/atomic.h"
 #include "hybounce/csv.h"
+#include "hybounce/error.h"
 #include "hybounce/preset.h"
 #include "hybounce/sim.h"
 #include "hybounce/status.h"
@@ -223,9 +224,11 @@ read_block(int fd, off_t off, char **buf, size_t *cap)
 
 /* See sweep_impl.h (from an empty run's CSV). */
 int
-sweep_collisions_header(const struct hb_scene *sc, char *buf, size_t n, char *msg, size_t mn)
+sweep_collisions_header(const struct hb_scene *sc, int err, char *buf, size_t n, char *msg,
+                        size_t mn)
 {
 	struct hb_sim *s = hb_sim_new(sc, msg, mn);
+	struct hb_error_estimate none = { 0 };   /* no rows: the header alone */
 	char *t = NULL;
 	size_t tl = 0;
 	FILE *f;
@@ -238,7 +241,7 @@ sweep_collisions_header(const struct hb_scene *sc, char *buf, size_t n, char *ms
 		hb_sim_free(s);
 		return hb_status_set(msg, mn, HB_ENOMEM, "out of memory");
 	}
-	rc = hb_csv_stream_collisions(f, s, msg, mn);
+	rc = hb_csv_stream_collisions_err(f, s, err ? &none : NULL, msg, mn);
 	fclose(f);
 	hb_sim_free(s);
 	if (rc == HB_OK && t != NULL)
@@ -279,6 +282,8 @@ load_spec(const char *dir, struct hb_scene *sc, char *msg, size_t n)
 		hb_sweep_free(sw);
 		sw = NULL;
 	}
+	if (sw != NULL)
+		hb_sweep_error_from_preset(sw, text);
 	if (sw != NULL && hb_sweep_refine_from_preset(sw, text, path, msg, n) != HB_OK) {
 		hb_sweep_free(sw);
 		sw = NULL;
@@ -387,7 +392,7 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
 		goto out;
 	}
 	hb_sweep_runs_header(sw, hdr, sizeof hdr);
-	if ((rc = sweep_collisions_header(sc, path, sizeof path, msg, n)) != HB_OK)
+	if ((rc = sweep_collisions_header(sc, hb_sweep_error(sw), path, sizeof path, msg, n)) != HB_OK)
 		goto out;
 	snprintf(chdr, sizeof chdr, "id,%s", path);
 	if (sink != NULL) {

@@ -338,7 +338,7 @@ write_files(struct refine_state *r, const char *dir, const long *e, long ne, lon
 		goto out;
 	}
 	hb_sweep_runs_header(sw, hdr, sizeof hdr);
-	if ((rc = sweep_collisions_header(&sw->base, path, sizeof path, msg, n)) != HB_OK)
+	if ((rc = sweep_collisions_header(&sw->base, sw->error, path, sizeof path, msg, n)) != HB_OK)
 		goto out;
 	snprintf(chdr, sizeof chdr, "id,%s", path);
 	if (sink != NULL) {

@@ -123,7 +123,7 @@ if command -v sox >/dev/null 2>&1; then
 	printf 'M\ndump %s\nq\n' "$T/rec.screen" >"$T/rec.keys"
 	"$BIN" steel-on-bitumen --data "$T/rec.wav" --script "$T/rec.keys" >/dev/null 2>"$T/rec.xerr"
 	rc=$?
-	if [ "$rc" -eq 0 ] && grep -q 'rec.wav: one bouncing sequence, 8 impacts' "$T/rec.screen"; then
+	if [ "$rc" -eq 0 ] && grep -q 'rec.wav: a recording ([0-9]* Hz, [0-9]* ms), 8 impact' "$T/rec.screen"; then
 		ok "the explorer's --data takes the recording as fit does (8 impacts)"
 	else
 		notok "the explorer's --data takes the recording as fit does (exit $rc)" "$T/rec.xerr"

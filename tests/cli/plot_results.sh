@@ -54,9 +54,11 @@ else
 	notok "sweep --plot: exit $rc" "$T/err"
 fi
 $PY info "$T/s1.png" >"$T/s1.info"
+# (at T = 0.1 s the runs have one or two collisions: curves for i = 0 and 1
+# only, no legend entry for an index that no run reached)
 if [ "$(val panels "$T/s1.info")" = 1 ] && legend_has 0 "$T/s1.info" && legend_has 1 "$T/s1.info" &&
-   legend_has 2 "$T/s1.info" && legend_has 3 "$T/s1.info" && ! legend_has 4 "$T/s1.info"; then
-	ok "sweep --plot, one key: one panel, a legend entry for each of i = 0..3"
+   ! legend_has 2 "$T/s1.info" && ! legend_has 4 "$T/s1.info"; then
+	ok "sweep --plot, one key: one panel, a legend entry for i = 0 and 1, the indices the runs reached"
 else
 	notok "sweep --plot, one key: panels or legend" "$T/s1.info"
 fi
