@@ -310,7 +310,7 @@ Test(preset, unknown_key_and_section)
 
 	cr_assert_eq(load_with(17, "[inital]", msg, sizeof msg, &sc), HB_EINVAL);
 	cr_assert(strstr(msg, "t.preset:18: [inital] x0: unknown section; known sections: scene, "
-	    "body1, body2, law, loads, initial, run") != NULL, "%s", msg);
+	    "body1, body2, law, chain, striker, loads, initial, run") != NULL, "%s", msg);
 }
 
 Test(preset, out_of_range)

@@ -96,6 +96,18 @@ struct hb_scene_run {
 	                   * more than 10 x rk8pd's on the paper's studies (0: only to measure it) */
 };
 
+/*
+ * A chain of n equal bodies on the axis (docs/chains.md): n = 0 for the
+ * two-body scene.  Every body is body 1 of the scene, every interface has
+ * the scene's law; body 1 is the lowest, body n (the striker) the highest.
+ */
+struct hb_scene_chain {
+	int n;            /* bodies; 0: not a chain */
+	int floor;        /* 1: a fixed obstacle below body 1 (interface 0) */
+	double spacing;   /* gap between neighbours (and body 1 and the floor), m */
+	double v;         /* the striker's (body n's) initial velocity, m/s */
+};
+
 struct hb_scene_derived {
 	int system;       /* enum hb_scene_system */
 	double Estar;     /* Pa; NAN when a body has no material */
@@ -117,6 +129,7 @@ struct hb_scene {
 	struct hb_scene_loads loads;
 	struct hb_scene_initial init;
 	struct hb_scene_run run;
+	struct hb_scene_chain chain;
 	struct hb_scene_derived d; /* filled by hb_scene_derive() */
 };
 

@@ -170,6 +170,25 @@ int
 hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out);
 
 /*
+ * The bodies of the run's chain, numbered from the bottom up: 2 in the
+ * full system (body 1 of the chain is the scene's body 2), 1 in the
+ * reduced one, chain.n in a chain.  hb_sim_body fills *out with body i's
+ * (0-based) mass, position and velocity at the last sample (positions of
+ * the two-body scenes are measured so that the gap is their difference)
+ * and returns HB_OK, or HB_EINVAL for a bad index.
+ */
+struct hb_sim_body {
+	double m;  /* kg */
+	double y;  /* m, position of its centre */
+	double u;  /* m/s */
+};
+
+int
+hb_sim_nbodies(const struct hb_sim *s);
+int
+hb_sim_body(const struct hb_sim *s, int i, struct hb_sim_body *out);
+
+/*
  * Truncates the run after sample i (which becomes the last sample; a
  * pre-jump sample is kept with its jump undone) and continues from its
  * state on the next hb_sim_advance.  Collisions that end after it are dropped.
@@ -177,6 +196,7 @@ hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out);
  */
 int
 hb_sim_seek(struct hb_sim *s, size_t i);
+/* (A chain's run cannot be continued from an earlier sample yet: HB_EINVAL.) */
 
 /*
  * Adopts new scene values for what is computed from now on (after the

@@ -355,7 +355,12 @@ hb_check_physics(const struct hb_scene *sc, const struct hb_arc *arc, struct hb_
 		escale = fmax(escale, fabs(a->Fer * a->x));
 	}
 	r->escale = escale;
-	for (i = 0; i < len && escale > 0.0; i++) {
+	/*
+	 * A chain's arc records one interface at a time, whose relative motion
+	 * the other interfaces change too: the identity is the chain's, over
+	 * its bodies, not checked on the arc (docs/chains.md section 5).
+	 */
+	for (i = 0; i < len && escale > 0.0 && sc->chain.n == 0; i++) {
 		const struct hb_arc_sample *a = hb_arc_at(arc, i);
 		/* (v - v0)(v + v0) keeps the difference exact when v is near v0 */
 		double res = fabs(0.5 * m * (a->v - v0) * (a->v + v0) - (a->Ee + a->Wc)) / escale;

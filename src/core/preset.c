@@ -136,8 +136,8 @@ collect_free(struct collect *c)
 }
 
 /* The sections, in the order a preset is written. */
-const char *const preset_sections[PRESET_NSECTIONS] = { "scene", "body1", "body2", "law", "loads",
-	"initial", "run" };
+const char *const preset_sections[PRESET_NSECTIONS] = { "scene", "body1", "body2", "law", "chain",
+	"striker", "loads", "initial", "run" };
 
 static int
 section_index(const char *s)
@@ -275,7 +275,7 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, int branc
 		if (section_index(e->section) < 0)
 			return hb_status_set(msg, n, HB_EINVAL,
 			    "%s:%d: [%s] %s: unknown section; known sections: scene, body1, body2, "
-			    "law, loads, initial, run", file, e->line, e->section, e->name);
+			    "law, chain, striker, loads, initial, run", file, e->line, e->section, e->name);
 		for (int j = 0; j < i; j++)
 			if (strcmp(c->e[j].section, e->section) == 0 &&
 			    strcmp(c->e[j].name, e->name) == 0)
@@ -340,8 +340,8 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, int branc
 			if ((st = apply(sc, e, file, msg, n)) != HB_OK)
 				return st;
 		}
-	static const char *const rest[] = { "loads", "initial", "run" };
-	for (size_t s = 0; s < 3; s++)
+	static const char *const rest[] = { "chain", "striker", "loads", "initial", "run" };
+	for (size_t s = 0; s < sizeof rest / sizeof rest[0]; s++)
 		for (int i = 0; i < c->n; i++)
 			if (strcmp(c->e[i].section, rest[s]) == 0 &&
 			    (st = apply(sc, &c->e[i], file, msg, n)) != HB_OK)

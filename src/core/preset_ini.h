@@ -49,7 +49,7 @@ struct preset_entry {
 };
 
 /* The scene's sections, in the order a preset is written (preset.c). */
-enum { PRESET_NSECTIONS = 7 };
+enum { PRESET_NSECTIONS = 9 };
 extern const char *const preset_sections[PRESET_NSECTIONS];
 
 /* 1 for a [branch N] section (preset_branch.c). */

@@ -53,6 +53,13 @@ hb_preset_format(const struct hb_scene *sc, char *buf, size_t n)
 	textbuf_printf(&o, "; hybounce preset: SI values that reproduce the scene exactly\n");
 #endif
 	for (size_t s = 0; s < PRESET_NSECTIONS; s++) {
+		int any = strcmp(preset_sections[s], "law") == 0;
+
+		for (int k = 0; k < scene_nkeydefs && !any; k++) /* a section with no key is left out */
+			any = strcmp(scene_keydef_section(&scene_keydefs[k], sec, sizeof sec),
+			             preset_sections[s]) == 0 && scene_keydef_present(sc, &scene_keydefs[k]);
+		if (!any)
+			continue;
 		textbuf_printf(&o, "\n[%s]\n", preset_sections[s]);
 		if (strcmp(preset_sections[s], "law") == 0) {
 			for (int i = 0; sc->law != NULL && i < sc->law->n_params; i++) {

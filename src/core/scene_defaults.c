@@ -127,17 +127,19 @@ int
 hb_scene_derive(struct hb_scene *sc, char *msg, size_t n)
 {
 	struct hb_scene_derived *d = &sc->d;
-	const struct hb_scene_body *b1 = &sc->body[0], *b2 = &sc->body[1];
+	/* in a chain every body is body 1: its interfaces are body 1 on body 1 */
+	const struct hb_scene_body *b1 = &sc->body[0], *b2 = sc->chain.n > 0 ? b1 : &sc->body[1];
 	double m1 = NAN, m2 = NAN;
 	int st, ki;
 
 	st = body_mass(b1, 0, &m1, msg, n);
 	if (st == HB_OK)
-		st = body_mass(b2, 1, &m2, msg, n);
+		st = sc->chain.n > 0 ? (m2 = m1, HB_OK) : body_mass(b2, 1, &m2, msg, n);
 	if (st != HB_OK)
 		return st;
 	sc->body[0].mass = m1;
-	sc->body[1].mass = m2;
+	if (sc->chain.n == 0)
+		sc->body[1].mass = m2;
 	d->m1 = m1;
 	if (isinf(m2)) {
 		d->system = HB_SCENE_REDUCED;

@@ -102,6 +102,15 @@ const struct scene_keydef scene_keydefs[] = {
 	NUM("initial.v_m0", "initial", "v_m0", hb_unit_velocity, R_SPEED, 0, init.vm0, SP_FULL,
 	    "initial velocity of the centre of mass (full system)"),
 
+	{ "chain.n", "chain", "n", ST_INT, NULL, { 0, 1000, 0, 0, 1 }, 0, NULL, OFF(chain.n), 0,
+	  SP_CHAIN, "bodies of a chain, each body 1, with the law between neighbours; 0: the two-body scene" },
+	{ "chain.floor", "chain", "floor", ST_BOOL, NULL, R_NONE, NAN, "no", OFF(chain.floor), 0,
+	  SP_CHAIN, "a fixed obstacle below body 1 of the chain (interface 0): yes or no" },
+	NUM("chain.spacing", "chain", "spacing", hb_unit_length, R_POS, 0.001, chain.spacing, SP_CHAIN,
+	    "gap between neighbours (and between body 1 and the floor), > 0"),
+	NUM("striker.v", "chain", "striker v", hb_unit_velocity, R_SPEED, 0, chain.v, SP_CHAIN,
+	    "initial velocity of body n, the striker (negative: towards body n - 1)"),
+
 	NUM("run.T", "run", "T", hb_unit_time, R_POS, 0.2, run.T, SP_NONE, "end of ordinary time"),
 	{ "run.J", "run", "J", ST_LONG, NULL, { 1, 1e18, 0, 0, 1 }, 100000, NULL, OFF(run.J), 0,
 	  SP_NONE, "jump cap" },
@@ -159,6 +168,8 @@ scene_keydef_present(const struct hb_scene *sc, const struct scene_keydef *kd)
 {
 	int b = scene_keydef_body(kd);
 
+	if (kd->special == SP_CHAIN)
+		return sc->chain.n > 0;
 	if (b < 0)
 		return 1;
 	switch (kd->special) {

@@ -44,6 +44,7 @@ enum scene_special {
 	SP_MASS,     /* typing it makes the mass given (and forgets rho) */
 	SP_FULL,     /* used by the full system only */
 	SP_RAMP,     /* used only with loads.ramp = yes */
+	SP_CHAIN,    /* shown and written only for a chain (chain.n >= 1) */
 };
 
 struct scene_keydef {

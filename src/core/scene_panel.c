@@ -38,7 +38,8 @@ xcs(const struct hb_scene *sc)
 static int
 rows_list(const struct hb_scene *sc, struct row *rows, int max)
 {
-	static const char *const order[] = { "bodies", "derived", "law", "loads", "initial", "run" };
+	static const char *const order[] = { "bodies", "derived", "law", "chain", "loads", "initial",
+		"run" };
 	int nr = 0, full = sc->d.system == HB_SCENE_FULL;
 
 #define PUSH(k, d, i) do { if (nr < max) { rows[nr].kind = (k); rows[nr].kd = (d); \
@@ -69,7 +70,7 @@ rows_list(const struct hb_scene *sc, struct row *rows, int max)
 			const struct scene_keydef *kd = &scene_keydefs[i];
 			if (strcmp(kd->panel, order[s]) != 0)
 				continue;
-			if (kd->special == SP_FULL && !full)
+			if ((kd->special == SP_FULL && !full) || (kd->special == SP_CHAIN && !sc->chain.n))
 				continue;
 			PUSH(0, kd, 0);
 		}

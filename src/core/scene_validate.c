@@ -164,6 +164,30 @@ check_forces(const struct hb_scene *sc, struct hb_scene_error *err)
 	return HB_OK;
 }
 
+/*
+ * What a chain runs with in this version: constant loads (gravity, no
+ * ramp), every closed form, bodies apart at the start (touching bodies
+ * would be several contacts at once), at least one interface.
+ */
+static int
+check_chain(const struct hb_scene *sc, struct hb_scene_error *err)
+{
+	if (sc->chain.n <= 0)
+		return HB_OK;
+	if (sc->chain.n < 2 && !sc->chain.floor)
+		return scene_error_set(err, "chain.n", "2 or more bodies, or chain.floor = yes",
+		    "a chain of one body without a floor has no interface");
+	if (sc->loads.ramp)
+		return scene_error_set(err, "loads.ramp", "no", "a chain's loads are constant");
+	if (sc->loads.F1 != 0 || sc->loads.F2 != 0)
+		return scene_error_set(err, sc->loads.F1 != 0 ? "loads.F1" : "loads.F2", "0 N",
+		    "a chain's load is gravity alone");
+	if (sc->run.reduce != HB_REDUCE_ALL)
+		return scene_error_set(err, "run.reductions", "all",
+		    "a chain's flights and centres of mass are always in closed form");
+	return HB_OK;
+}
+
 int
 hb_scene_check(struct hb_scene *sc, struct hb_scene_error *err)
 {
@@ -200,6 +224,8 @@ hb_scene_check(struct hb_scene *sc, struct hb_scene_error *err)
 	if ((st = check_weight(sc, err)) != HB_OK)
 		return st;
 	if ((st = check_forces(sc, err)) != HB_OK)
+		return st;
+	if ((st = check_chain(sc, err)) != HB_OK)
 		return st;
 	return check_law(sc, err);
 }

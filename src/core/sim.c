@@ -43,6 +43,13 @@
  * stepper in contact checks the stiffness of the flow (stiffness()):
  * run.stepper = auto then goes over to bsimp for the contacts.
  *
+ * The state is that of a chain (docs/chains.md, sim_chain.c): bodies and
+ * the interfaces between them, each interface with its own law, effective
+ * mass and state (q_c, x, v, x_c, z, W, J_Fc, J_Fe, extrema, commencement
+ * values); s->I is the interface the current flow interval integrates,
+ * and (x_m, v_m) the centre of mass of its pair.  Today's scenes are the
+ * chains of one interface: two bodies (H_f) or one on the floor (H_r).
+ *
  * Invariants: the arc's samples are all in C except each pre-jump sample,
  * which is in D by hb_check_in_D's test; post-jump samples are g of the
  * pre-jump ones bit for bit; a failed step leaves the arc as it was.
@@ -62,22 +69,23 @@
 static void
 resume_interval(struct hb_sim *s)
 {
+	struct iface *I = s->I;
 	const struct layout *L = &s->cur->L;
 	const struct hb_arc_sample *f = hb_arc_at(s->arc, s->resume_first);
-	double t = s->t, x = s->x, v = s->v, xm = s->xm, vm = s->vm;
+	double t = s->t, x = I->x, v = I->v, xm = s->xm, vm = s->vm;
 	double fv[MAXFUN], u[MAXDIM];
 	int kind[MAXFUN], n, i;
 	size_t k;
 
 	s->t = f->t;
-	s->x = f->x;
-	s->v = f->v;
+	I->x = f->x;
+	I->v = f->v;
 	s->xm = f->xm;
 	s->vm = f->vm;
-	hbs_scales(s, L, s->q);
+	hbs_scales(s, L, I->q);
 	s->t = t;
-	s->x = x;
-	s->v = v;
+	I->x = x;
+	I->v = v;
 	s->xm = xm;
 	s->vm = vm;
 	for (k = s->resume_first; k <= s->resume_last; k++) {
@@ -95,32 +103,33 @@ resume_interval(struct hb_sim *s)
 static int
 setup_interval(struct hb_sim *s)
 {
+	struct iface *I = s->I;
 	const struct hb_scene *sc = &s->sc;
 
 	s->setup = 0;
 	s->ntiny = 0;
 	s->msign = s->mforce = 0;
 	memset(s->gmax, 0, sizeof s->gmax);
-	s->vmax = fabs(s->v);
-	s->closed = !s->q && (sc->run.reduce & HB_REDUCE_FLIGHT) &&
+	s->vmax = fabs(I->v);
+	s->closed = !I->q && (s->chain || ((sc->run.reduce & HB_REDUCE_FLIGHT) &&
 	            hb_scene_Fer_constant(sc, s->t, sc->run.T) &&
-	            (sc->d.system == HB_SCENE_REDUCED || (sc->run.reduce & HB_REDUCE_COM));
+	            (sc->d.system == HB_SCENE_REDUCED || (sc->run.reduce & HB_REDUCE_COM))));
 	if (s->closed) {
 		s->resume = 0;
 		return 0;
 	}
 	s->stiff_row = 0;
-	if (s->built[s->q] != s->stepper[s->q] && hbs_phase_alloc(s, &s->ph[s->q], s->q))
+	if (s->built[I->q] != s->stepper[I->q] && hbs_phase_alloc(s, &s->ph[I->q], I->q))
 		return hbs_fail(s, HB_ENOMEM, "out of memory for the integrator");
-	s->cur = &s->ph[s->q];
+	s->cur = &s->ph[I->q];
 	if (s->resume)
 		resume_interval(s);
 	else
-		hbs_scales(s, &s->cur->L, s->q);
+		hbs_scales(s, &s->cur->L, I->q);
 	hbs_pack(s, &s->cur->L, s->u);
 	gsl_odeiv2_driver_reset(s->cur->d);
 	{
-		double Tc = s->q ? s->scale[s->cur->L.ixc] / s->scale[s->cur->L.iv]
+		double Tc = I->q ? s->scale[s->cur->L.ixc] / s->scale[s->cur->L.iv]
 		                 : s->scale[s->cur->L.ix] / s->scale[s->cur->L.iv];
 		s->Tc = Tc;
 		/*
@@ -129,7 +138,7 @@ setup_interval(struct hb_sim *s)
 		 * short (Phi grows as x_c^p from x_c = 0, not smoothly), and the
 		 * guess 1e-2 Tc was rejected about seven times at each contact.
 		 */
-		s->h = s->h1[s->q] > 0 ? s->h1[s->q] * Tc : 1e-2 * Tc;
+		s->h = s->h1[I->q] > 0 ? s->h1[I->q] * Tc : 1e-2 * Tc;
 		s->h = fmin(s->h, sc->run.T - s->t);
 		s->first = 1;
 		if (s->resume && s->resume_h > 0)
@@ -153,10 +162,11 @@ static void
 set_mode(struct hb_sim *s)
 {
 	const struct hb_scene *sc = &s->sc;
+	const struct iface *I = s->I;
 	const struct phase *p = s->cur;
 	int m = 0;
 
-	if (p->q && sc->law->psi_mode && sc->run.kinks) {
+	if (p->q && I->law->psi_mode && sc->run.kinks) {
 		double y[MAXDIM], g[HB_LAW_MAX_KINKS], z[HB_LAW_MAX_Z] = { 0 };
 		const struct layout *L = &p->L;
 		int i;
@@ -165,10 +175,10 @@ set_mode(struct hb_sim *s)
 			m = s->mforce;
 		} else {
 			hbs_unscale(p, s->u0, y);
-			for (i = 0; i < sc->law->n_z; i++)
+			for (i = 0; i < I->law->n_z; i++)
 				z[i] = y[L->iz + i];
-			sc->law->kinks(sc->par, sc->ext, y[L->ixc], z, y[L->iv], g);
-			m = g[sc->law->mode_kink] > 0 ? 1 : (g[sc->law->mode_kink] < 0 ? -1 : 0);
+			I->law->kinks(I->par, I->ext, y[L->ixc], z, y[L->iv], g);
+			m = g[I->law->mode_kink] > 0 ? 1 : (g[I->law->mode_kink] < 0 ? -1 : 0);
 		}
 	}
 	if (m != s->msign) {
@@ -268,22 +278,26 @@ retry:
 static void
 reset_state(struct hb_sim *s)
 {
+	struct iface *I = s->I;
 	const struct hb_scene *sc = &s->sc;
 
 	s->end = HB_SIM_RUNNING;
 	s->err[0] = s->endmsg[0] = '\0';
 	s->t = 0.0;
 	s->j = 0;
-	s->q = 0;
-	s->x = sc->init.x0;
-	s->v = sc->init.v0;
-	s->xc = 0.0;
-	memset(s->z, 0, sizeof s->z);
+	I->q = 0;
+	I->x = sc->init.x0;
+	I->v = sc->init.v0;
+	I->xc = 0.0;
+	memset(I->z, 0, sizeof I->z);
 	s->xm = sc->d.system == HB_SCENE_FULL ? sc->init.xm0 : 0.0;
 	s->vm = sc->d.system == HB_SCENE_FULL ? sc->init.vm0 : 0.0;
-	s->W = s->JFc = s->JFe = s->xcmax = s->Fcmax = 0.0;
-	s->Ee = s->Wc = s->Wc0 = 0.0;
-	s->xe = s->te = s->vi = 0.0;
+	I->W = I->JFc = I->JFe = I->xcmax = I->Fcmax = 0.0;
+	I->Ee = I->Wc = I->Wc0 = 0.0;
+	I->xe = I->te = I->vi = 0.0;
+	if (s->chain) {
+		hbs_chain_reset(s);
+	}
 	s->n_instant = 0;
 	s->setup = 1;
 	s->resume = 0;
@@ -308,6 +322,8 @@ build(struct hb_sim *s, char *msg, size_t n)
 {
 	int q;
 
+	if (hbs_chain_bind(s))
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory for the chain");
 	for (q = 0; q < 2; q++)
 		s->stepper[q] = s->sc.run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : s->sc.run.stepper;
 	for (q = 0; q < 2; q++)
@@ -323,8 +339,8 @@ build(struct hb_sim *s, char *msg, size_t n)
 		if (L->ix >= 0) names[L->ix] = "x";
 		names[L->ixc] = "x_c";
 		names[L->iv] = "v";
-		for (i = 0; i < s->sc.law->n_z; i++)
-			names[L->iz + i] = i ? "z_c2" : (s->sc.law->n_z > 1 ? "z_c1" : "z_c");
+		for (i = 0; i < s->I->law->n_z; i++)
+			names[L->iz + i] = i ? "z_c2" : (s->I->law->n_z > 1 ? "z_c1" : "z_c");
 		names[L->iW] = "W";
 		names[L->iJc] = "J_Fc";
 		names[L->iJe] = "J_Fe";
@@ -383,6 +399,7 @@ hb_sim_free(struct hb_sim *s)
 	if (s->lambda)
 		gsl_vector_complex_free(s->lambda);
 	arc_free(s->arc);
+	hbs_chain_free(s);
 	free(s->br);
 	free(s->col);
 	free(s);
@@ -409,7 +426,7 @@ hb_sim_advance(struct hb_sim *s, long max_steps, double max_seconds)
 		}
 		s->work++;
 		if (s->closed)
-			rc = hbs_flight_closed(s);
+			rc = s->chain ? hbs_chain_flight(s) : hbs_flight_closed(s);
 		else
 			rc = numeric_step(s);
 		if (rc)
@@ -483,25 +500,26 @@ hb_sim_collision(const struct hb_sim *s, size_t i)
 int
 hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out)
 {
-	if (!s->q)
+	const struct iface *I = s->I;
+	if (!I->q)
 		return 0;
 	memset(out, 0, sizeof *out);
 	out->i = s->ncol_total;
 	out->j = s->j;
-	out->te = s->te;
+	out->te = I->te;
 	out->ts = s->t;
-	out->td = s->t - s->te;
+	out->td = s->t - I->te;
 	out->tf = NAN;
-	out->vi = s->vi;
-	out->e = s->vi != 0.0 ? -s->v / s->vi : NAN;
-	out->xcmax = s->xcmax;
-	out->Fcmax = s->Fcmax;
-	out->xcr = fabs(s->xc);
+	out->vi = I->vi;
+	out->e = I->vi != 0.0 ? -I->v / I->vi : NAN;
+	out->xcmax = I->xcmax;
+	out->Fcmax = I->Fcmax;
+	out->xcr = fabs(I->xc);
 	out->xcr_sum = (s->ncol > 0 ? s->col[s->ncol - 1].xcr_sum : 0.0) + out->xcr;
-	out->W = s->W;
-	out->JFc = s->JFc;
-	out->JFe = s->JFe;
-	out->Lambda = s->JFc != 0.0 ? s->JFe / s->JFc : NAN;
+	out->W = I->W;
+	out->JFc = I->JFc;
+	out->JFe = I->JFe;
+	out->Lambda = I->JFc != 0.0 ? I->JFe / I->JFc : NAN;
 	out->complete = 0;
 	return 1;
 }
@@ -509,9 +527,14 @@ hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out)
 int
 hb_sim_seek(struct hb_sim *s, size_t i)
 {
+	struct iface *I = s->I;
 	const struct hb_arc_sample *a;
 	const struct hb_arc_interval *iv;
 
+	if (s->chain) { /* a chain's arc does not hold its bodies yet */
+		snprintf(s->err, sizeof s->err, "a chain's run cannot be continued from an earlier sample");
+		return HB_EINVAL;
+	}
 	if (i >= hb_arc_len(s->arc))
 		return HB_EINVAL;
 	hbs_branches_cut(s, i);
@@ -535,32 +558,32 @@ hb_sim_seek(struct hb_sim *s, size_t i)
 	s->resume_last = i;
 	s->t = a->t;
 	s->j = a->j;
-	s->q = a->q;
-	s->x = a->x;
-	s->v = a->v;
-	s->xc = a->xc;
-	memcpy(s->z, a->z, sizeof s->z);
+	I->q = a->q;
+	I->x = a->x;
+	I->v = a->v;
+	I->xc = a->xc;
+	memcpy(I->z, a->z, sizeof I->z);
 	s->xm = a->xm;
 	s->vm = a->vm;
-	s->W = a->W;
-	s->JFc = a->JFc;
-	s->JFe = a->JFe;
-	s->xcmax = a->xcmax;
-	s->Fcmax = a->Fcmax;
-	s->Ee = a->Ee;
-	s->Wc = a->Wc;
-	s->Wc0 = a->Wc + a->W;
-	s->xe = a->x - a->xc;
-	if (s->q) {
+	I->W = a->W;
+	I->JFc = a->JFc;
+	I->JFe = a->JFe;
+	I->xcmax = a->xcmax;
+	I->Fcmax = a->Fcmax;
+	I->Ee = a->Ee;
+	I->Wc = a->Wc;
+	I->Wc0 = a->Wc + a->W;
+	I->xe = a->x - a->xc;
+	if (I->q) {
 		const struct hb_arc_sample *f = hb_arc_at(s->arc, iv->first);
 
-		s->te = f->t;
-		s->vi = f->v;
+		I->te = f->t;
+		I->vi = f->v;
 	}
 	while (s->ncol > 0 && s->col[s->ncol - 1].j >= s->j)
 		s->ncol--;
 	s->ncol_total = s->ncol > 0 ? s->col[s->ncol - 1].i + 1 : 0;
-	if (s->ncol > 0 && s->col[s->ncol - 1].j + 1 >= s->j && !s->q)
+	if (s->ncol > 0 && s->col[s->ncol - 1].j + 1 >= s->j && !I->q)
 		s->col[s->ncol - 1].tf = NAN;
 	if (s->ncol > 0 && s->col[s->ncol - 1].j + 1 == s->j)
 		s->col[s->ncol - 1].tf = NAN;
@@ -594,9 +617,9 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 		*restarted = 0;
 	if ((rc = hb_scene_validate(&nsc, msg, n)) != 0)
 		return rc;
-	restart = nsc.d.system != s->sc.d.system ||
+	restart = nsc.d.system != s->sc.d.system || s->chain || nsc.chain.n > 0 ||
 	          memcmp(&nsc.init, &s->sc.init, sizeof nsc.init) != 0 ||
-	          (s->q && (nsc.law != s->sc.law || nsc.ext != s->sc.ext || !same_bodies(&nsc, &s->sc)));
+	          (s->I->q && (nsc.law != s->sc.law || nsc.ext != s->sc.ext || !same_bodies(&nsc, &s->sc)));
 	{
 		/* build for the new scene aside: on failure the simulator is exactly as it was */
 		struct hb_scene old = s->sc;
@@ -611,6 +634,7 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 			hbs_phase_free(&s->ph[0]);
 			hbs_phase_free(&s->ph[1]);
 			s->sc = old;
+			hbs_chain_bind(s); /* no larger than the arrays it had: cannot fail */
 			memcpy(s->ph, oldph, sizeof s->ph);
 			memcpy(s->stepper, oldstepper, sizeof s->stepper);
 			memcpy(s->built, oldbuilt, sizeof s->built);

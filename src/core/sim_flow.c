@@ -51,9 +51,10 @@ rhs(double t, const double u[], double du[], void *params)
 	struct hb_sim *s = p->s;
 	const struct layout *L = &p->L;
 	const struct hb_scene *sc = &s->sc;
+	const struct iface *I = s->I;
 	const double *is = s->iscale;
 	double y[MAXDIM];
-	double Fer = hb_scene_Fer(sc, t), phi = 0.0, v, bad = 0.0;
+	double Fer = iface_Fer(s, I, t), phi = 0.0, v, bad = 0.0;
 	int i;
 
 	s->st.rhs++;
@@ -63,15 +64,15 @@ rhs(double t, const double u[], double du[], void *params)
 	/* each du is scaled as it is written; bad turns NaN as soon as one du is NaN or infinite */
 #define PUT(k, val) (du[k] = (val) * is[k], bad += 0.0 * du[k])
 	if (p->q) {
-		const int nz = sc->law->n_z;
+		const int nz = I->law->n_z;
 		const double *z = nz ? &y[L->iz] : NULL;
 		double dz[HB_LAW_MAX_Z];
 
-		phi = sc->law->phi(sc->par, sc->ext, y[L->ixc], z, v);
+		phi = I->law->phi(I->par, I->ext, y[L->ixc], z, v);
 		if (s->msign)
-			sc->law->psi_mode(sc->par, sc->ext, y[L->ixc], z, v, s->msign, dz);
+			I->law->psi_mode(I->par, I->ext, y[L->ixc], z, v, s->msign, dz);
 		else if (nz)
-			sc->law->psi(sc->par, sc->ext, y[L->ixc], z, v, dz);
+			I->law->psi(I->par, I->ext, y[L->ixc], z, v, dz);
 		PUT(L->ixc, v);
 		for (i = 0; i < nz; i++)
 			PUT(L->iz + i, dz[i]);
@@ -81,7 +82,7 @@ rhs(double t, const double u[], double du[], void *params)
 	}
 	if (L->ix >= 0)
 		PUT(L->ix, v);
-	PUT(L->iv, (-phi + Fer) / sc->d.m);
+	PUT(L->iv, (-phi + Fer) / I->m);
 	PUT(L->iEe, Fer * v);
 	if (L->ixm >= 0) {
 		double F1, F2;
@@ -97,11 +98,11 @@ rhs(double t, const double u[], double du[], void *params)
 }
 
 static double
-Fer_rate(const struct hb_scene *sc, double t)
+Fer_rate(const struct hb_sim *s, const struct iface *I, double t)
 {
 	double h = 1e-7 * (fabs(t) + 1e-3);
 
-	return (hb_scene_Fer(sc, t + h) - hb_scene_Fer(sc, t - h)) / (2 * h);
+	return (iface_Fer(s, I, t + h) - iface_Fer(s, I, t - h)) / (2 * h);
 }
 
 /* The Jacobian of rhs, for the implicit steppers; the law's partials. */
@@ -111,10 +112,10 @@ hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *para
 	struct phase *p = params;
 	struct hb_sim *s = p->s;
 	const struct layout *L = &p->L;
-	const struct hb_scene *sc = &s->sc;
-	int n = L->dim, nz = sc->law->n_z, i, k;
+	const struct iface *I = s->I;
+	int n = L->dim, nz = I->law->n_z, i, k;
 	double y[MAXDIM], J[MAXDIM * MAXDIM], dt[MAXDIM];
-	double m = sc->d.m, Ferdot = Fer_rate(sc, t);
+	double m = I->m, Ferdot = Fer_rate(s, I, t);
 
 	s->st.jac++;
 	hbs_unscale(p, u, y);
@@ -127,10 +128,10 @@ hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *para
 		double dphi[HB_LAW_MAX_Z + 2], dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)];
 		const double *z = nz ? &y[L->iz] : NULL;
 		double v = y[L->iv];
-		double phi = sc->law->phi(sc->par, sc->ext, y[L->ixc], z, v);
+		double phi = I->law->phi(I->par, I->ext, y[L->ixc], z, v);
 		int col[HB_LAW_MAX_Z + 2];
 
-		sc->law->jac(sc->par, sc->ext, y[L->ixc], z, v, dphi, nz ? dpsi : NULL);
+		I->law->jac(I->par, I->ext, y[L->ixc], z, v, dphi, nz ? dpsi : NULL);
 		col[0] = L->ixc;
 		for (i = 0; i < nz; i++)
 			col[1 + i] = L->iz + i;
@@ -146,7 +147,7 @@ hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *para
 		J[L->iW * n + L->iv] += phi;
 		dt[L->iJe] = Ferdot;
 	}
-	J[L->iEe * n + L->iv] = hb_scene_Fer(sc, t);
+	J[L->iEe * n + L->iv] = iface_Fer(s, I, t);
 	dt[L->iEe] = Ferdot * y[L->iv];
 	if (L->ixm >= 0)
 		J[L->ixm * n + L->ivm] = 1.0;
@@ -159,7 +160,7 @@ hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *para
 }
 
 static void
-make_layout(const struct hb_scene *sc, int q, struct layout *L)
+make_layout(const struct hb_scene *sc, const struct iface *I, int q, struct layout *L)
 {
 	int n = 0;
 	int com = !(sc->run.reduce & HB_REDUCE_COM);
@@ -170,9 +171,9 @@ make_layout(const struct hb_scene *sc, int q, struct layout *L)
 			L->ix = n++;
 		L->ixc = n++;
 		L->iv = n++;
-		if (sc->law->n_z) {
+		if (I->law->n_z) {
 			L->iz = n;
-			n += sc->law->n_z;
+			n += I->law->n_z;
 		}
 		L->nread = n;
 		L->iW = n++;
@@ -212,7 +213,7 @@ hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
 	hbs_phase_free(p);
 	p->s = s;
 	p->q = q;
-	make_layout(sc, q, &p->L);
+	make_layout(sc, s->I, q, &p->L);
 	p->sys = (gsl_odeiv2_system){ rhs, hbs_jacobian, (size_t)p->L.dim, p };
 	p->d = gsl_odeiv2_driver_alloc_standard_new(&p->sys, T, 1e-6, sc->run.atol,
 	                                            sc->run.rtol, 1.0, 0.0);
@@ -229,7 +230,9 @@ hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
 void
 hbs_set_com(struct hb_sim *s)
 {
-	if (s->sc.d.system == HB_SCENE_FULL)
+	if (s->chain)
+		hbs_chain_com(s);
+	else if (s->sc.d.system == HB_SCENE_FULL)
 		hb_scene_com(&s->sc, s->t, &s->xm, &s->vm);
 	else
 		s->xm = s->vm = 0.0;
@@ -237,17 +240,17 @@ hbs_set_com(struct hb_sim *s)
 
 /* The stiffness k and exponent p of the law (k of the first stiffness param). */
 static void
-law_kp(const struct hb_scene *sc, double *k, double *p)
+law_kp(const struct iface *I, double *k, double *p)
 {
 	int i;
 
 	*k = NAN;
-	for (i = 0; i < sc->law->n_params; i++)
-		if (sc->law->params[i].flags & HB_LAW_PARAM_STIFFNESS || !strcmp(sc->law->params[i].name, "k")) {
-			*k = sc->par[i];
+	for (i = 0; i < I->law->n_params; i++)
+		if (I->law->params[i].flags & HB_LAW_PARAM_STIFFNESS || !strcmp(I->law->params[i].name, "k")) {
+			*k = I->par[i];
 			break;
 		}
-	*p = hb_law_exponent_p(sc->law, sc->par);
+	*p = hb_law_exponent_p(I->law, I->par);
 }
 
 /*
@@ -260,39 +263,40 @@ law_kp(const struct hb_scene *sc, double *k, double *p)
 void
 hbs_scales(struct hb_sim *s, const struct layout *L, int q)
 {
+	struct iface *I = s->I;
 	const struct hb_scene *sc = &s->sc;
-	double m = sc->d.m, F = fabs(hb_scene_Fer(sc, s->t)), X, V, k, p;
+	double m = I->m, F = fabs(iface_Fer(s, I, s->t)), X, V, k, p;
 	int i;
 
 	s->w.valid = 0; /* the watched values were of the old scales */
 
 	if (q) {
-		law_kp(sc, &k, &p);
+		law_kp(I, &k, &p);
 		if (!(k > 0))
 			k = 1.0;
-		X = pow((p + 1) * m * s->v * s->v / (2 * k), 1 / (p + 1));
+		X = pow((p + 1) * m * I->v * I->v / (2 * k), 1 / (p + 1));
 		X = fmax(X, pow(F / k, 1 / p));
 		if (!(X > 1e-15))
 			X = 1e-15;
-		V = fmax(fabs(s->v), X * sqrt(k * pow(X, p - 1) / m));
+		V = fmax(fabs(I->v), X * sqrt(k * pow(X, p - 1) / m));
 	} else {
 		double acc = F / m;
 
-		X = fmax(fabs(s->x), acc > 0 ? s->v * s->v / (2 * acc) : 0.0);
+		X = fmax(fabs(I->x), acc > 0 ? I->v * I->v / (2 * acc) : 0.0);
 		if (!(X > 1e-12))
 			X = 1e-12;
-		V = fmax(fabs(s->v), sqrt(2 * acc * X));
+		V = fmax(fabs(I->v), sqrt(2 * acc * X));
 		if (!(V > 1e-12))
 			V = 1e-12;
 	}
 	for (i = 0; i < L->dim; i++)
 		s->scale[i] = 1.0;
 	if (L->ix >= 0)
-		s->scale[L->ix] = q ? X + fabs(s->xe) : X;
+		s->scale[L->ix] = q ? X + fabs(I->xe) : X;
 	s->scale[L->iv] = V;
 	if (L->ixc >= 0)
 		s->scale[L->ixc] = X;
-	for (i = 0; L->iz >= 0 && i < sc->law->n_z; i++)
+	for (i = 0; L->iz >= 0 && i < I->law->n_z; i++)
 		s->scale[L->iz + i] = X;
 	s->scale[L->iEe] = 0.5 * m * V * V;
 	if (L->iW >= 0) {
@@ -328,21 +332,22 @@ hbs_scales(struct hb_sim *s, const struct layout *L, int q)
 void
 hbs_pack(struct hb_sim *s, const struct layout *L, double *u)
 {
+	struct iface *I = s->I;
 	double y[MAXDIM];
 	int i;
 
 	if (L->ix >= 0)
-		y[L->ix] = s->x;
-	y[L->iv] = s->v;
+		y[L->ix] = I->x;
+	y[L->iv] = I->v;
 	if (L->ixc >= 0) {
-		y[L->ixc] = s->xc;
-		for (i = 0; i < s->sc.law->n_z; i++)
-			y[L->iz + i] = s->z[i];
-		y[L->iW] = s->W;
-		y[L->iJc] = s->JFc;
-		y[L->iJe] = s->JFe;
+		y[L->ixc] = I->xc;
+		for (i = 0; i < s->I->law->n_z; i++)
+			y[L->iz + i] = I->z[i];
+		y[L->iW] = I->W;
+		y[L->iJc] = I->JFc;
+		y[L->iJe] = I->JFe;
 	}
-	y[L->iEe] = s->Ee;
+	y[L->iEe] = I->Ee;
 	if (L->ixm >= 0) {
 		y[L->ixm] = s->xm;
 		y[L->ivm] = s->vm;
@@ -355,26 +360,27 @@ hbs_pack(struct hb_sim *s, const struct layout *L, double *u)
 void
 hbs_unpack(struct hb_sim *s, const struct phase *p, double t, const double *u)
 {
+	struct iface *I = s->I;
 	const struct layout *L = &p->L;
 	double y[MAXDIM];
 	int i;
 
 	hbs_unscale(p, u, y);
 	s->t = t;
-	s->v = y[L->iv];
+	I->v = y[L->iv];
 	if (p->q) {
-		s->xc = y[L->ixc];
-		s->x = L->ix >= 0 ? y[L->ix] : s->xe + s->xc;
-		for (i = 0; i < s->sc.law->n_z; i++)
-			s->z[i] = y[L->iz + i];
-		s->W = y[L->iW];
-		s->JFc = y[L->iJc];
-		s->JFe = y[L->iJe];
-		s->Wc = s->Wc0 - s->W;
+		I->xc = y[L->ixc];
+		I->x = L->ix >= 0 ? y[L->ix] : I->xe + I->xc;
+		for (i = 0; i < s->I->law->n_z; i++)
+			I->z[i] = y[L->iz + i];
+		I->W = y[L->iW];
+		I->JFc = y[L->iJc];
+		I->JFe = y[L->iJe];
+		I->Wc = I->Wc0 - I->W;
 	} else {
-		s->x = y[L->ix];
+		I->x = y[L->ix];
 	}
-	s->Ee = y[L->iEe];
+	I->Ee = y[L->iEe];
 	if (L->ixm >= 0) {
 		s->xm = y[L->ixm];
 		s->vm = y[L->ivm];
@@ -395,7 +401,7 @@ hbs_pack_sample(const struct hb_sim *s, const struct layout *L, const struct hb_
 	y[L->iv] = a->v;
 	if (L->ixc >= 0) {
 		y[L->ixc] = a->xc;
-		for (i = 0; i < s->sc.law->n_z; i++)
+		for (i = 0; i < s->I->law->n_z; i++)
 			y[L->iz + i] = a->z[i];
 		y[L->iW] = a->W;
 		y[L->iJc] = a->JFc;

@@ -64,8 +64,57 @@ struct cached {
 	double u[MAXDIM];
 };
 
+/*
+ * The chain (docs/chains.md section 1): bodies 1..N from the bottom up
+ * (body[0] is body 1) and the interfaces between them, interface 0 on the
+ * floor when there is one.  The two-body scenes are N = 2 without a floor
+ * (the full system: chain body 1 is the scene's body 2, the lower one) and
+ * N = 1 on the floor (the reduced system); a [chain] scene has chain.n
+ * bodies.  One interface at a time is in contact, integrated in its own
+ * coordinates (docs/chains.md section 8, a cluster of one contact); see
+ * sim_chain.c for how the bodies follow.
+ */
+struct body {
+	double m;               /* kg */
+	double l;               /* half-length along the axis (radius), m; 0 when unknown */
+	double y, u, tb;        /* a chain's: position and velocity of its centre at time tb
+	                           (the two-body scenes': from their interface, hbs_body_at) */
+	double a;               /* a chain's: its constant acceleration */
+	double Fe;              /* a chain's: its applied force, constant */
+};
+
+struct iface {
+	const struct hb_law_type *law;
+	const double *par;      /* the law's parameters */
+	int ext;                /* rule R1 continuation */
+	int lo, hi;             /* the bodies below and above (index into body[]; lo = -1: the floor) */
+	double m;               /* effective mass m_lo m_hi / (m_lo + m_hi) (m_hi on the floor) */
+	double wlo, whi;        /* a chain's: m_lo / (m_lo + m_hi), m_hi / (m_lo + m_hi) */
+	double Fer;             /* a chain's: F_e,r = (m_lo F_hi - m_hi F_lo) / (m_lo + m_hi), constant */
+	double (*Fer_at)(const struct hb_sim *s, const struct iface *I, double t); /* F_e,r at t */
+
+	/* its state at (t, j) */
+	int q;
+	double x, v, xc, z[HB_LAW_MAX_Z];
+	double W, JFc, JFe, xcmax, Fcmax;
+	double Ee, Wc;          /* works of its F_er and F_c since t = 0 */
+	double Wc0;             /* Wc at the commencement of the contact in progress */
+	double xe;              /* x at the commencement of the contact in progress */
+	double te, vi;          /* commencement time and approach velocity */
+};
+
 struct hb_sim {
 	struct hb_scene sc;
+	int chain;              /* 1: a chain scene (sc.chain.n >= 1) */
+	int nbody, k0, nif;     /* N, the first interface's number (0: a floor), N - k0 */
+	int ia;                 /* I - ifc */
+	double cm_t0, cm_y0, cm_u0, cm_a; /* a chain's: the pair in contact's centre of mass */
+	double cm_tother;       /* ... and the earliest closing of a gap away from it, */
+	int cm_iother;          /* and its interface (index) */
+	struct body *body;      /* body[i] is body i + 1 */
+	struct iface *ifc;      /* ifc[i] is interface k0 + i */
+	int capbody, capif;     /* their allocated lengths */
+	struct iface *I;        /* the interface of the flow interval (the cluster in contact, or in flight) */
 	struct hb_arc *arc;
 	struct hb_collision *col;
 	size_t ncol, colcap;
@@ -75,16 +124,10 @@ struct hb_sim {
 	char endmsg[700];
 	struct hb_sim_stats st;
 
-	/* canonical state at (t, j) */
+	/* canonical state at (t, j): the interfaces' (above) and the centre of mass of the cluster */
 	double t;
 	long j;
-	int q;
-	double x, v, xc, z[HB_LAW_MAX_Z], xm, vm;
-	double W, JFc, JFe, xcmax, Fcmax;
-	double Ee, Wc;      /* works of F_er and F_c since t = 0 */
-	double Wc0;         /* Wc at the commencement of the contact in progress */
-	double xe;          /* x at the commencement of the contact in progress */
-	double te, vi;      /* commencement time and approach velocity */
+	double xm, vm;
 	double t_instant;   /* time of the last jump, and jumps at it */
 	int n_instant;
 
@@ -145,8 +188,62 @@ struct hb_sim {
 static inline double
 phi_at(const struct hb_sim *s, double xc, const double *z, double v)
 {
-	return s->sc.law->phi(s->sc.par, s->sc.ext, xc, z, v);
+	return s->I->law->phi(s->I->par, s->I->ext, xc, z, v);
 }
+
+/*
+ * The interface's reduced applied force F_e,r at t (the paper's, for its
+ * pair; the scene's loads in the reduced and the full system).
+ */
+static inline double
+iface_Fer(const struct hb_sim *s, const struct iface *I, double t)
+{
+	return I->Fer_at(s, I, t);
+}
+
+/*
+ * sim_chain.c: the chain of the scene (bodies, interfaces bound to the
+ * scene's law); the interfaces' states are kept where the chain keeps its
+ * shape.  HB_ENOMEM (the simulator as it was) when its arrays cannot grow.
+ */
+int
+hbs_chain_bind(struct hb_sim *s);
+
+/* ... their arrays freed */
+void
+hbs_chain_free(struct hb_sim *s);
+
+/*
+ * ... a chain's bodies' positions and velocities at the current state
+ * (HB_ENUMERIC when two of its interfaces are in contact at once); the
+ * two-body scenes' bodies follow from their interface and centre of mass
+ * on request (hbs_body_at).
+ */
+int
+hbs_bodies_sync(struct hb_sim *s);
+void
+hbs_body_at(const struct hb_sim *s, int i, double *y, double *u);
+void
+hbs_chain_activate(struct hb_sim *s, int i);
+void
+hbs_chain_reset(struct hb_sim *s);
+void
+hbs_chain_jumped(struct hb_sim *s);
+void
+hbs_chain_com(struct hb_sim *s);
+void
+hbs_chain_pair_com(struct hb_sim *s);
+void
+hbs_chain_gap(const struct hb_sim *s, int i, double t, double *x, double *v);
+void
+hbs_chain_settle(struct hb_sim *s, int i, double t);
+
+/* sim_flight.c: a chain's flight, every body in closed form */
+int
+hbs_chain_flight(struct hb_sim *s);
+/* ... the first tau >= 0 after which a gap x + v tau + a tau^2 / 2 leaves C (INFINITY: never) */
+double
+hbs_flight_event(double x, double v, double a);
 
 /* sim_branch.c */
 void

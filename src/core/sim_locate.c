@@ -524,7 +524,7 @@ hbs_after_step(struct hb_sim *s, int load_kink)
 		 * that begins on a located crossing): it crosses when its sign
 		 * differs from the mode's.
 		 */
-		int k = 1 + s->sc.law->mode_kink;
+		int k = 1 + s->I->law->mode_kink;
 
 		if (!(f0[k] * s->msign > 0))
 			f0[k] = s->msign * DBL_MIN;
@@ -661,8 +661,8 @@ again:
 			return hbs_jump(s, HB_LOCATE_BRENT, s->loc_iter, b - a, fa0, fb[0]);
 		}
 		accept_at(s, b);
-		if (s->msign && hbs_crossed(FUN_KINK, f0[1 + s->sc.law->mode_kink],
-		                        fb[1 + s->sc.law->mode_kink])) {
+		if (s->msign && hbs_crossed(FUN_KINK, f0[1 + s->I->law->mode_kink],
+		                        fb[1 + s->I->law->mode_kink])) {
 			/* the mode's switching function crossed: the next step is on the other side */
 			s->mforce = -s->msign;
 			s->mforce_t = s->t;

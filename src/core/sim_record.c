@@ -8,10 +8,11 @@
 int
 hbs_fail(struct hb_sim *s, int status, const char *why)
 {
+	struct iface *I = s->I;
 	s->end = HB_SIM_END_FAIL;
 	cnum_snprintf(s->err, sizeof s->err,
 	         "%s at (t = %.12g s, j = %ld): x = %.6g m, v = %.6g m/s, x_c = %.6g m, q_c = %d",
-	         why, s->t, s->j, s->x, s->v, s->xc, s->q);
+	         why, s->t, s->j, I->x, I->v, I->xc, I->q);
 	snprintf(s->endmsg, sizeof s->endmsg, "failed: %s", s->err);
 	return status;
 }
@@ -19,36 +20,41 @@ hbs_fail(struct hb_sim *s, int status, const char *why)
 int
 hbs_push_sample(struct hb_sim *s, int kind)
 {
+	struct iface *I = s->I;
 	struct hb_arc_sample a;
 	double phi = 0.0;
 
+	int rc;
+
+	if (s->chain && (rc = hbs_bodies_sync(s)))
+		return rc;
 	memset(&a, 0, sizeof a);
 	a.t = s->t;
 	a.j = s->j;
-	a.q = s->q;
+	a.q = I->q;
 	a.kind = kind;
-	a.x = s->x;
-	a.v = s->v;
-	if (s->q) {
-		phi = phi_at(s, s->xc, s->z, s->v);
-		a.xc = s->xc;
-		memcpy(a.z, s->z, sizeof a.z);
-		if (fabs(s->xc) > s->xcmax)
-			s->xcmax = fabs(s->xc);
-		if (-phi > s->Fcmax)
-			s->Fcmax = -phi;
+	a.x = I->x;
+	a.v = I->v;
+	if (I->q) {
+		phi = phi_at(s, I->xc, I->z, I->v);
+		a.xc = I->xc;
+		memcpy(a.z, I->z, sizeof a.z);
+		if (fabs(I->xc) > I->xcmax)
+			I->xcmax = fabs(I->xc);
+		if (-phi > I->Fcmax)
+			I->Fcmax = -phi;
 	}
 	a.Fc = -phi;
-	a.Fer = hb_scene_Fer(&s->sc, s->t);
+	a.Fer = iface_Fer(s, I, s->t);
 	a.xm = s->xm;
 	a.vm = s->vm;
-	a.W = s->W;
-	a.JFc = s->JFc;
-	a.JFe = s->JFe;
-	a.xcmax = s->xcmax;
-	a.Fcmax = s->Fcmax;
-	a.Ee = s->Ee;
-	a.Wc = s->Wc;
+	a.W = I->W;
+	a.JFc = I->JFc;
+	a.JFe = I->JFe;
+	a.xcmax = I->xcmax;
+	a.Fcmax = I->Fcmax;
+	a.Ee = I->Ee;
+	a.Wc = I->Wc;
 	if (arc_push(s->arc, &a))
 		return hbs_fail(s, HB_ENOMEM, "out of memory for the arc");
 	return 0;
@@ -57,6 +63,7 @@ hbs_push_sample(struct hb_sim *s, int kind)
 static int
 push_collision(struct hb_sim *s)
 {
+	struct iface *I = s->I;
 	struct hb_collision c;
 
 	/*
@@ -85,20 +92,20 @@ push_collision(struct hb_sim *s)
 	memset(&c, 0, sizeof c);
 	c.i = s->ncol_total++;
 	c.j = s->j;
-	c.te = s->te;
+	c.te = I->te;
 	c.ts = s->t;
-	c.td = s->t - s->te;
+	c.td = s->t - I->te;
 	c.tf = NAN;
-	c.vi = s->vi;
-	c.e = s->vi != 0.0 ? -s->v / s->vi : NAN;
-	c.xcmax = s->xcmax;
-	c.Fcmax = s->Fcmax;
-	c.xcr = fabs(s->xc);
+	c.vi = I->vi;
+	c.e = I->vi != 0.0 ? -I->v / I->vi : NAN;
+	c.xcmax = I->xcmax;
+	c.Fcmax = I->Fcmax;
+	c.xcr = fabs(I->xc);
 	c.xcr_sum = (s->ncol > 0 ? s->col[s->ncol - 1].xcr_sum : 0.0) + c.xcr;
-	c.W = s->W;
-	c.JFc = s->JFc;
-	c.JFe = s->JFe;
-	c.Lambda = s->JFc != 0.0 ? s->JFe / s->JFc : NAN;
+	c.W = I->W;
+	c.JFc = I->JFc;
+	c.JFe = I->JFe;
+	c.Lambda = I->JFc != 0.0 ? I->JFe / I->JFc : NAN;
 	c.complete = 1;
 	s->col[s->ncol++] = c;
 	return 0;
@@ -112,6 +119,7 @@ push_collision(struct hb_sim *s)
 int
 hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, double ihi)
 {
+	struct iface *I = s->I;
 	struct hb_arc_jump jr;
 	int rc;
 
@@ -133,8 +141,8 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 	}
 	jr.t = s->t;
 	jr.j = s->j;
-	jr.from_q = s->q;
-	jr.left = s->q ? "contact: Phi > 0 and v > 0" : "flight: x < 0 and v < 0";
+	jr.from_q = I->q;
+	jr.left = I->q ? "contact: Phi > 0 and v > 0" : "flight: x < 0 and v < 0";
 	jr.how = how;
 	jr.iterations = iterations;
 	jr.width = width;
@@ -142,24 +150,26 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 	jr.ind_hi = ihi;
 	if (arc_push_jump(s->arc, &jr))
 		return hbs_fail(s, HB_ENOMEM, "out of memory for the jump records");
-	if (s->q && (rc = push_collision(s)))
+	if (I->q && (rc = push_collision(s)))
 		return rc;
 
 	/* g: x, v, x_m, v_m unchanged; x_c = 0, z_c = 0, q_c = 1 - q_c */
-	s->q = 1 - s->q;
+	I->q = 1 - I->q;
 	s->j++;
-	s->xc = 0.0;
-	memset(s->z, 0, sizeof s->z);
-	s->W = s->JFc = s->JFe = 0.0;
-	s->xcmax = s->Fcmax = 0.0;
-	if (s->q) {
-		s->te = s->t;
-		s->vi = s->v;
-		s->xe = s->x;
-		s->Wc0 = s->Wc;
+	I->xc = 0.0;
+	memset(I->z, 0, sizeof I->z);
+	I->W = I->JFc = I->JFe = 0.0;
+	I->xcmax = I->Fcmax = 0.0;
+	if (I->q) {
+		I->te = s->t;
+		I->vi = I->v;
+		I->xe = I->x;
+		I->Wc0 = I->Wc;
 		if (s->ncol > 0 && isnan(s->col[s->ncol - 1].tf))
 			s->col[s->ncol - 1].tf = s->t - s->col[s->ncol - 1].ts;
 	}
+	if (s->chain)
+		hbs_chain_jumped(s);
 	s->st.jumps++;
 	if ((rc = hbs_push_sample(s, HB_ARC_POST_JUMP)))
 		return rc;

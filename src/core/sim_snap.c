@@ -31,10 +31,10 @@ hbs_snap_stick(struct hb_sim *s, double *u)
 	if (!(v > 0 && v <= eta * s->vmax))
 		return;
 	hbs_unscale(p, u, y);
-	for (i = 0; i < s->sc.law->n_z; i++)
+	for (i = 0; i < s->I->law->n_z; i++)
 		z[i] = y[L->iz + i];
 	phi = phi_at(s, y[L->ixc], z, v);
-	if (phi > 0 && phi <= eta * s->Fcmax)
+	if (phi > 0 && phi <= eta * s->I->Fcmax)
 		u[L->iv] = 0.0;
 }
 
@@ -71,9 +71,9 @@ hbs_snap_separation(struct hb_sim *s, double *u)
 {
 	const struct phase *p = s->cur;
 	const struct layout *L = &p->L;
-	const struct hb_scene *sc = &s->sc;
+	const struct iface *I = s->I;
 	double y[MAXDIM], z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi, v, vn, dv;
-	int nz = sc->law->n_z, i;
+	int nz = I->law->n_z, i;
 
 	if (!p->q)
 		return 0;
@@ -86,7 +86,7 @@ hbs_snap_separation(struct hb_sim *s, double *u)
 	phi = phi_at(s, y[L->ixc], z, v);
 	if (!(phi > 0))
 		return 0;
-	sc->law->jac(sc->par, sc->ext, y[L->ixc], z, v, dphi, NULL);
+	I->law->jac(I->par, I->ext, y[L->ixc], z, v, dphi, NULL);
 	dv = dphi[nz + 1];
 	if (!(dv > 0) || phi > dv * v_noise(s, u))
 		return 0;
@@ -105,9 +105,9 @@ hbs_hugging(struct hb_sim *s, const double *u)
 {
 	const struct phase *p = s->cur;
 	const struct layout *L = &p->L;
-	const struct hb_scene *sc = &s->sc;
+	const struct iface *I = s->I;
 	double y[MAXDIM], z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi;
-	int nz = sc->law->n_z, i;
+	int nz = I->law->n_z, i;
 
 	if (!p->q)
 		return 0;
@@ -117,6 +117,6 @@ hbs_hugging(struct hb_sim *s, const double *u)
 	for (i = 0; i < nz; i++)
 		z[i] = y[L->iz + i];
 	phi = phi_at(s, y[L->ixc], z, y[L->iv]);
-	sc->law->jac(sc->par, sc->ext, y[L->ixc], z, y[L->iv], dphi, NULL);
+	I->law->jac(I->par, I->ext, y[L->ixc], z, y[L->iv], dphi, NULL);
 	return dphi[nz + 1] > 0 && fabs(phi) <= dphi[nz + 1] * v_noise(s, u);
 }

@@ -49,7 +49,7 @@ hbs_stiffness(struct hb_sim *s)
 	if (L->ix >= 0) idx[nd++] = L->ix;
 	idx[nd++] = L->iv;
 	idx[nd++] = L->ixc;
-	for (i = 0; i < s->sc.law->n_z; i++)
+	for (i = 0; i < s->I->law->n_z; i++)
 		idx[nd++] = L->iz + i;
 	if (L->ixm >= 0) {
 		idx[nd++] = L->ixm;

@@ -21,12 +21,13 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
       int *kind, double *rate, int only)
 {
 	const struct hb_scene *sc = &s->sc;
+	const struct iface *I = s->I;
 	const struct layout *L = &p->L;
 	double y[MAXDIM], v, xc, z[HB_LAW_MAX_Z] = { 0 };
 	double dphi[HB_LAW_MAX_Z + 2], dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)], dz[HB_LAW_MAX_Z];
 	double phi = 0.0, vdot, d;
-	int i, nz = sc->law->n_z;
-	int nk = sc->law->n_kinks && sc->run.kinks ? sc->law->n_kinks : 0;
+	int i, nz = I->law->n_z;
+	int nk = I->law->n_kinks && sc->run.kinks ? I->law->n_kinks : 0;
 	int all = only < 0;
 
 	hbs_unscale(p, u, y);
@@ -35,7 +36,7 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 	if (!p->q) {
 		f[0] = fmax(y[L->ix], v);
 		if (rate != NULL)
-			*rate = y[L->ix] > v ? v : hb_scene_Fer(sc, t) / sc->d.m;
+			*rate = y[L->ix] > v ? v : iface_Fer(s, I, t) / I->m;
 		return 1;
 	}
 	xc = y[L->ixc];
@@ -50,13 +51,13 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 	if (all || only == 0)
 		f[0] = -fmin(phi, v);
 	if (nk && (all || (only >= 1 && only <= nk)))
-		sc->law->kinks(sc->par, sc->ext, xc, z, v, &f[1]);
+		I->law->kinks(I->par, I->ext, xc, z, v, &f[1]);
 	f[nk + 1] = v;
 	if (all || only == nk + 2) {
-		sc->law->jac(sc->par, sc->ext, xc, z, v, dphi, nz ? dpsi : NULL);
+		I->law->jac(I->par, I->ext, xc, z, v, dphi, nz ? dpsi : NULL);
 		if (nz)
-			sc->law->psi(sc->par, sc->ext, xc, z, v, dz);
-		vdot = (-phi + hb_scene_Fer(sc, t)) / sc->d.m;
+			I->law->psi(I->par, I->ext, xc, z, v, dz);
+		vdot = (-phi + iface_Fer(s, I, t)) / I->m;
 		d = dphi[0] * v + dphi[nz + 1] * vdot;
 		for (i = 0; i < nz; i++)
 			d += dphi[1 + i] * dz[i];
@@ -92,12 +93,12 @@ hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u,
 {
 	size_t nu = (size_t)p->L.dim * sizeof *u;
 
-	if (!(s->w.valid && s->w.p == p && s->w.t == t && s->w.xe == s->xe
+	if (!(s->w.valid && s->w.p == p && s->w.t == t && s->w.xe == s->I->xe
 	      && memcmp(s->w.u, u, nu) == 0)) {
 		s->w.n = watch(s, p, t, u, s->w.f, s->w.kind, &s->w.rate, -1);
 		s->w.p = p;
 		s->w.t = t;
-		s->w.xe = s->xe;
+		s->w.xe = s->I->xe;
 		memcpy(s->w.u, u, nu);
 		s->w.valid = 1;
 	}

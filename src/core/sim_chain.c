@@ -1,0 +1,401 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/*
+ * sim_chain.c - the chain a scene describes (docs/chains.md section 1):
+ * its bodies, from the bottom up, and its interfaces, each bound to its law
+ * and with its effective mass; the bodies' positions, velocities and loads
+ * at the current state.
+ *
+ * The two-body scenes are two chains:
+ *  - the full system H_f: N = 2 bodies, no floor, interface 1 between them;
+ *    chain body 1 (below) is the scene's body 2, chain body 2 (above) the
+ *    scene's body 1 (the paper's body 1 is the upper one);
+ *  - the reduced system H_r: N = 1 body on the floor, interface 0.
+ * Their state is the interface's (x, v, ...) and the centre of mass
+ * (x_m, v_m), as today; their bodies' positions (measured so that the gap
+ * is their difference, as the paper's x and x_m are) and velocities follow
+ * on request.
+ *
+ * A [chain] scene has chain.n bodies of body 1's mass and radius, with the
+ * scene's law at every interface.  Each body's (y, u) is kept at the time
+ * tb it is of and moves on its parabola from there (sim_flight.c), so
+ * that a flight or a step touches only the bodies it concerns; one
+ * interface at a time is in contact, integrated as the two-body contact
+ * (s->I, its effective mass and F_e,r) with its pair's centre of mass in
+ * closed form from the commencement, its two bodies set from them at
+ * every sample; another interface closing meanwhile stops the run.
+ */
+#include "sim_impl.h"
+
+/* Grows *p (of *cap elements of size sz) to n elements, zeroing the new ones. */
+static int
+grow(void **p, int *cap, int n, size_t sz)
+{
+	void *q;
+
+	if (n <= *cap)
+		return 0;
+	q = realloc(*p, (size_t)n * sz);
+	if (q == NULL)
+		return HB_ENOMEM;
+	memset((char *)q + (size_t)*cap * sz, 0, (size_t)(n - *cap) * sz);
+	*p = q;
+	*cap = n;
+	return 0;
+}
+
+/* F_e,r of a two-body scene's interface: the scene's loads (ramps included). */
+static double
+scene_Fer(const struct hb_sim *s, const struct iface *I, double t)
+{
+	(void)I;
+	return hb_scene_Fer(&s->sc, t);
+}
+
+/* F_e,r of a chain's interface: constant. */
+static double
+chain_Fer(const struct hb_sim *s, const struct iface *I, double t)
+{
+	(void)s;
+	(void)t;
+	return I->Fer;
+}
+
+/* Binds interface I (number k) of a chain scene: the bodies it joins, its mass and F_e,r. */
+static void
+bind_chain_iface(struct hb_sim *s, struct iface *I, int k)
+{
+	const struct hb_scene *sc = &s->sc;
+
+	I->lo = k - 1;
+	I->hi = k;
+	if (I->lo < 0) {
+		I->m = sc->d.m1;
+		I->Fer = s->body[0].Fe;
+		I->wlo = 0.0;
+		I->whi = 1.0;
+	} else {
+		const struct body *lo = &s->body[I->lo], *hi = &s->body[I->hi];
+
+		I->m = lo->m * hi->m / (lo->m + hi->m);
+		I->wlo = lo->m / (lo->m + hi->m);
+		I->whi = hi->m / (lo->m + hi->m);
+		I->Fer = I->wlo * hi->Fe - I->whi * lo->Fe; /* (m_lo F_hi - m_hi F_lo) / (m_lo + m_hi) */
+	}
+}
+
+int
+hbs_chain_bind(struct hb_sim *s)
+{
+	const struct hb_scene *sc = &s->sc;
+	int chain = sc->chain.n > 0;
+	int full = sc->d.system == HB_SCENE_FULL;
+	int nbody = chain ? sc->chain.n : full ? 2 : 1;
+	int k0 = chain ? !sc->chain.floor : full ? 1 : 0;
+	int i;
+	struct iface *I;
+
+	if (grow((void **)&s->body, &s->capbody, nbody, sizeof *s->body) ||
+	    grow((void **)&s->ifc, &s->capif, nbody - k0, sizeof *s->ifc))
+		return HB_ENOMEM;
+	s->chain = chain;
+	s->nbody = nbody;
+	s->k0 = k0;
+	s->nif = nbody - k0;
+	for (i = 0; i < nbody; i++) { /* the bodies' states are kept: only their constants change */
+		s->body[i].m = chain ? sc->d.m1 : i == 0 ? (full ? sc->d.m2 : sc->d.m1) : sc->d.m1;
+		s->body[i].l = chain && isfinite(sc->body[0].R) ? sc->body[0].R : 0.0;
+		s->body[i].a = -sc->loads.g;
+		s->body[i].Fe = -s->body[i].m * sc->loads.g;
+	}
+	for (i = 0; i < s->nif; i++) {
+		I = &s->ifc[i];
+		I->law = sc->law;
+		I->par = sc->par;
+		I->ext = sc->ext;
+		I->Fer_at = chain ? chain_Fer : scene_Fer;
+		if (chain) {
+			bind_chain_iface(s, I, k0 + i);
+			continue;
+		}
+		I->lo = full ? 0 : -1;
+		I->hi = full ? 1 : 0;
+		I->m = sc->d.m; /* m_lo m_hi / (m_lo + m_hi), as the scene derived it (m_hi on the floor) */
+	}
+	if (s->ia < 0 || s->ia >= s->nif)
+		s->ia = s->nif - 1;
+	s->I = &s->ifc[s->ia]; /* the arrays may have moved */
+	return 0;
+}
+
+void
+hbs_chain_free(struct hb_sim *s)
+{
+	free(s->body);
+	free(s->ifc);
+	s->body = NULL;
+	s->ifc = NULL;
+	s->capbody = s->capif = 0;
+}
+
+/* Body b's position and velocity at t: its parabola from the time tb its (y, u) are of. */
+static void
+body_now(const struct body *b, double t, double *y, double *u)
+{
+	double tau = t - b->tb;
+
+	*y = b->y + tau * (b->u + 0.5 * b->a * tau);
+	*u = b->u + b->a * tau;
+}
+
+/* Gap and relative velocity of interface I at t from the bodies' parabolas. */
+static void
+gap_at(const struct hb_sim *s, const struct iface *I, double t, double *x, double *v)
+{
+	const struct body *hi = &s->body[I->hi];
+	double yh, uh;
+
+	body_now(hi, t, &yh, &uh);
+	if (I->lo < 0) {
+		*x = yh - hi->l;
+		*v = uh;
+	} else {
+		const struct body *lo = &s->body[I->lo];
+		double yl, ul;
+
+		body_now(lo, t, &yl, &ul);
+		*x = (yh - hi->l) - (yl + lo->l);
+		*v = uh - ul;
+	}
+}
+
+/* Sets body b to (y, u) at t. */
+static void
+body_set(struct body *b, double t, double y, double u)
+{
+	b->y = y;
+	b->u = u;
+	b->tb = t;
+}
+
+/* The two-contacts message: interface i closed while s->I is in contact. */
+static int
+two_contacts(struct hb_sim *s, int i)
+{
+	const struct iface *J = &s->ifc[i];
+	char why[220];
+
+	snprintf(why, sizeof why, "interface %d (bodies %d and %d) closed while interface %d was in "
+	         "contact: a chain carries one contact at a time in this version",
+	         s->k0 + i, J->lo + 1, J->hi + 1, s->k0 + s->ia);
+	return hbs_fail(s, HB_ENUMERIC, why);
+}
+
+/*
+ * A chain's bodies at s->t where a sample is recorded.  In flight every
+ * body is on its parabola: nothing to do.  In contact the two bodies of
+ * s->I are set from its gap and their centre of mass; the interfaces next
+ * to it are checked (their gaps move with the contact), and every other
+ * gap closes no earlier than cm_tother, found when the contact began (its
+ * bodies fly on parabolas): another interface closing while one is in
+ * contact is two contacts at once, which this version does not carry
+ * (HB_ENUMERIC, naming them).  The work is the same for any N.
+ */
+static int
+chain_sync(struct hb_sim *s)
+{
+	const struct iface *I = s->I;
+	struct body *hi = &s->body[I->hi];
+	double x, v;
+
+	if (!I->q)
+		return 0;
+	if (I->lo < 0) {
+		body_set(hi, s->t, I->x + hi->l, I->v);
+	} else {
+		struct body *lo = &s->body[I->lo];
+		double d = I->x + hi->l + lo->l;
+
+		body_set(hi, s->t, s->xm + I->wlo * d, s->vm + I->wlo * I->v);
+		body_set(lo, s->t, s->xm - I->whi * d, s->vm - I->whi * I->v);
+	}
+	if (s->ia > 0) {
+		gap_at(s, &s->ifc[s->ia - 1], s->t, &x, &v);
+		if (x < 0)
+			return two_contacts(s, s->ia - 1);
+	}
+	if (s->ia + 1 < s->nif) {
+		gap_at(s, &s->ifc[s->ia + 1], s->t, &x, &v);
+		if (x < 0)
+			return two_contacts(s, s->ia + 1);
+	}
+	if (s->t >= s->cm_tother)
+		return two_contacts(s, s->cm_iother);
+	return 0;
+}
+
+int
+hbs_bodies_sync(struct hb_sim *s)
+{
+	return s->chain ? chain_sync(s) : 0;
+}
+
+void
+hbs_body_at(const struct hb_sim *s, int i, double *y, double *u)
+{
+	const struct hb_scene *sc = &s->sc;
+	const struct iface *I = &s->ifc[0];
+
+	if (s->chain)
+		body_now(&s->body[i], s->t, y, u);
+	else if (s->nbody == 1) {
+		*y = I->x;
+		*u = I->v;
+	} else if (i == I->hi) {
+		*y = s->xm + sc->d.etac * I->x;
+		*u = s->vm + sc->d.etac * I->v;
+	} else {
+		*y = s->xm - sc->d.eta * I->x;
+		*u = s->vm - sc->d.eta * I->v;
+	}
+}
+
+/* Makes interface number i (index into ifc) the one the flow interval is about. */
+void
+hbs_chain_activate(struct hb_sim *s, int i)
+{
+	s->ia = i;
+	s->I = &s->ifc[i];
+}
+
+/* The chain's state at t = 0: bodies spaced from the floor (or from 0) up, the striker moving. */
+void
+hbs_chain_reset(struct hb_sim *s)
+{
+	const struct hb_scene *sc = &s->sc;
+	double y = 0.0;
+	int i;
+
+	for (i = 0; i < s->nbody; i++) {
+		struct body *b = &s->body[i];
+
+		if (i == 0)
+			y = sc->chain.floor ? b->l + sc->chain.spacing : 0.0;
+		else
+			y += s->body[i - 1].l + sc->chain.spacing + b->l;
+		body_set(b, 0.0, y, i == s->nbody - 1 ? sc->chain.v : 0.0);
+	}
+	for (i = 0; i < s->nif; i++) {
+		struct iface *J = &s->ifc[i];
+
+		memset(&J->q, 0, sizeof *J - offsetof(struct iface, q));
+		gap_at(s, J, 0.0, &J->x, &J->v);
+	}
+	hbs_chain_activate(s, s->nif - 1);
+	s->xm = s->vm = 0.0;
+	s->cm_tother = INFINITY;
+	s->cm_iother = -1;
+}
+
+/*
+ * After the jump of s->I: into a contact, the centre of mass of its pair
+ * at the commencement, from which it moves under the pair's load alone.
+ */
+void
+hbs_chain_jumped(struct hb_sim *s)
+{
+	const struct iface *I = s->I;
+	int i;
+
+	if (!I->q) /* a separation: x_m, v_m unchanged (g) */
+		return;
+	hbs_chain_pair_com(s);
+	s->cm_t0 = s->t;
+	s->cm_y0 = s->xm;
+	s->cm_u0 = s->vm;
+	s->cm_a = I->lo < 0 ? 0.0 : I->wlo * s->body[I->lo].a + I->whi * s->body[I->hi].a;
+	/* the earliest closing of a gap whose bodies both fly through the contact */
+	s->cm_tother = INFINITY;
+	s->cm_iother = -1;
+	for (i = 0; i < s->nif; i++) {
+		const struct iface *J = &s->ifc[i];
+		double x, v, a, tau;
+
+		if (i >= s->ia - 1 && i <= s->ia + 1)
+			continue;
+		gap_at(s, J, s->t, &x, &v);
+		a = s->body[J->hi].a - (J->lo >= 0 ? s->body[J->lo].a : 0.0);
+		tau = hbs_flight_event(x, v, a);
+		if (s->t + tau < s->cm_tother) {
+			s->cm_tother = s->t + tau;
+			s->cm_iother = i;
+		}
+	}
+}
+
+/* x_m, v_m: the centre of mass of s->I's pair from the bodies (0 on the floor). */
+void
+hbs_chain_pair_com(struct hb_sim *s)
+{
+	const struct iface *I = s->I;
+
+	double yl, ul, yh, uh;
+
+	if (I->lo < 0) {
+		s->xm = s->vm = 0.0;
+		return;
+	}
+	body_now(&s->body[I->lo], s->t, &yl, &ul);
+	body_now(&s->body[I->hi], s->t, &yh, &uh);
+	s->xm = I->wlo * yl + I->whi * yh;
+	s->vm = I->wlo * ul + I->whi * uh;
+}
+
+/* The centre of mass of the pair in contact at s->t (closed form). */
+void
+hbs_chain_com(struct hb_sim *s)
+{
+	double tau = s->t - s->cm_t0;
+
+	if (!s->I->q)
+		return;
+	s->xm = s->cm_y0 + tau * (s->cm_u0 + 0.5 * s->cm_a * tau);
+	s->vm = s->cm_u0 + s->cm_a * tau;
+}
+
+/* Gap and relative velocity of interface i at t, for the flight (sim_flight.c). */
+void
+hbs_chain_gap(const struct hb_sim *s, int i, double t, double *x, double *v)
+{
+	gap_at(s, &s->ifc[i], t, x, v);
+}
+
+/* The bodies of interface i set to their state at t (where a flight's event places them). */
+void
+hbs_chain_settle(struct hb_sim *s, int i, double t)
+{
+	const struct iface *J = &s->ifc[i];
+	double y, u;
+
+	body_now(&s->body[J->hi], t, &y, &u);
+	body_set(&s->body[J->hi], t, y, u);
+	if (J->lo >= 0) {
+		body_now(&s->body[J->lo], t, &y, &u);
+		body_set(&s->body[J->lo], t, y, u);
+	}
+}
+
+int
+hb_sim_nbodies(const struct hb_sim *s)
+{
+	return s->nbody;
+}
+
+int
+hb_sim_body(const struct hb_sim *s, int i, struct hb_sim_body *out)
+{
+	if (i < 0 || i >= s->nbody)
+		return HB_EINVAL;
+	out->m = s->body[i].m;
+	hbs_body_at(s, i, &out->y, &out->u);
+	return HB_OK;
+}
