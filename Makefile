@@ -33,7 +33,7 @@ LIBDIR    ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
 PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
 # libhybounce.so.SOVERSION: raise it when the ABI changes incompatibly.
-SOVERSION := 1
+SOVERSION := 2
 CC        ?= gcc
 PKG_CONFIG ?= pkg-config
 

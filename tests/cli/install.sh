@@ -25,8 +25,11 @@ LIB=$(dirname "$(dirname "${pc:-$DEST/none/x}")")
 if [ "$rc" -eq 0 ] && [ -n "$pc" ] && [ -n "$PREFIX" ]; then ok "make install into a DESTDIR (prefix $PREFIX)"
 else notok "make install into a DESTDIR (exit $rc)" "$T/install.log"; fi
 
+# the soname's number, from the Makefile (raised when the ABI changes)
+SOV=$(sed -n 's/^SOVERSION := //p' Makefile)
+SONAME=libhybounce.so.$SOV
 missing=
-for f in lib/libhybounce.a lib/libhybounce.so lib/libhybounce.so.1 lib/pkgconfig/hybounce.pc \
+for f in lib/libhybounce.a lib/libhybounce.so lib/$SONAME lib/pkgconfig/hybounce.pc \
     bin/hybounce share/man/man1/hybounce.1; do
 	[ -e "$DEST$PREFIX/$f" ] || missing="$missing $f"
 done
@@ -37,11 +40,11 @@ if [ -z "$missing" ]; then ok "libraries, headers, hybounce.pc, binary and man p
 else notok "libraries, headers, hybounce.pc, binary and man page installed (missing:$missing)"; fi
 
 so=$(readelf -d "$LIB/libhybounce.so" 2>/dev/null | sed -n 's/.*(SONAME).*\[\(.*\)\]/\1/p')
-if [ "$so" = libhybounce.so.1 ] && [ "$(readlink "$LIB/libhybounce.so")" = libhybounce.so.1 ] &&
-    [ -f "$LIB/$(readlink "$LIB/libhybounce.so.1")" ]; then
-	ok "the shared library has the soname libhybounce.so.1 and its links"
+if [ -n "$SOV" ] && [ "$so" = "$SONAME" ] && [ "$(readlink "$LIB/libhybounce.so")" = "$SONAME" ] &&
+    [ -f "$LIB/$(readlink "$LIB/$SONAME")" ]; then
+	ok "the shared library has the soname $SONAME and its links"
 else
-	notok "the shared library has the soname libhybounce.so.1 and its links (soname '$so')"
+	notok "the shared library has the soname $SONAME and its links (soname '$so')"
 fi
 
 # Exported: every defined dynamic symbol must be declared in a public header
@@ -158,12 +161,12 @@ else notok "the core keeps no mutable static state (found: $(tr '\n' ' ' <"$T/st
 cdef=$(find "$DEST" -path '*/dist-packages/hybounce/_cdef.py' | head -n 1)
 pre=
 for rt in libasan libubsan; do
-	pre="$pre $(ldd "$LIB/libhybounce.so.1" 2>/dev/null | sed -n "s/.*$rt\.so[^ ]* => \([^ ]*\).*/\1/p" | head -n 1)"
+	pre="$pre $(ldd "$LIB/$SONAME" 2>/dev/null | sed -n "s/.*$rt\.so[^ ]* => \([^ ]*\).*/\1/p" | head -n 1)"
 done
 pre=$(echo $pre)
-if [ -n "$cdef" ] && grep -q "^LIBRARIES = \['libhybounce.so.1', '$PREFIX/lib/libhybounce.so.1'\]" "$cdef" &&
+if [ -n "$cdef" ] && grep -q "^LIBRARIES = \['$SONAME', '$PREFIX/lib/$SONAME'\]" "$cdef" &&
     env ${pre:+LD_PRELOAD="$pre"} ASAN_OPTIONS=detect_leaks=0 PYTHONPATH="$(dirname "$(dirname "$cdef")")" \
-    HYBOUNCE_LIB="$LIB/libhybounce.so.1" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 -c '
+    HYBOUNCE_LIB="$LIB/$SONAME" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 -c '
 import hybounce
 r = hybounce.Run("steel-on-bitumen").run()
 assert hybounce.__version__ == hybounce.LIBRARY_VERSION and len(r.collisions) > 0
