@@ -16,8 +16,9 @@ struct fitov {
 	int loaded;
 	char path[512];
 	size_t np;                 /* data points */
-	double *meas, *sim;        /* measured, simulated for `for_scene` (NAN: not computed) */
-	int *row, *obs;
+	struct hb_fit_point *pt;   /* the fit's points (hb_fit_data_points), in its order */
+	double *sim;               /* simulated for `for_scene`, as pt (NAN: not computed) */
+	long first;                /* sequences: the first trial's first given impact (-1: none) */
 	struct hb_scene for_scene;    /* the scene sim[] was computed for */
 	int sim_valid;
 	char sim_err[256];         /* why sim[] is missing */

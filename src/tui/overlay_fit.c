@@ -11,12 +11,13 @@
  * dropped (x), and the run's impacts (+) (fitov_plot_recording).  The
  * data's observables are simulated for the current scene whenever it
  * changes (hb_fit_simulate), and shown
- *  - on the x plot: each measured impact as 'o' on the axis x = 0, the
- *    clocks aligned at the run's first collision (sequences);
- *  - in the collisions table: the measured t_e of each collision beside
- *    the simulated one, and their difference (sequences);
- *  - in a box (M): every data point, measured against simulated now, with
- *    the difference, for both kinds of data.
+ *  - on the x plot: each measured impact of the first trial as 'o' on the
+ *    axis x = 0, the clocks aligned at its first given impact (sequences);
+ *  - in the collisions table: the first trial's measured t_e of each
+ *    collision beside the simulated one, and their difference (sequences);
+ *  - in a box (M): every data point as the fit takes it (hb_fit_data_points:
+ *    missed values left out, trials and heights told apart), measured
+ *    against simulated now, with the difference, for every kind of data.
  * F asks for the free keys and runs the fit one trust-region iteration per
  * frame (hb_fit_new / hb_fit_iterate), with a progress line; F again stops it.
  * When it stops, the run before the fit is pinned (when a pin is free) and
@@ -53,13 +54,12 @@ ov_get(struct app *a)
 static void
 points_free(struct fitov *f)
 {
-	free(f->meas);
+	free(f->pt);
 	free(f->sim);
-	free(f->row);
-	free(f->obs);
-	f->meas = f->sim = NULL;
-	f->row = f->obs = NULL;
+	f->pt = NULL;
+	f->sim = NULL;
 	f->np = 0;
+	f->first = -1;
 	f->sim_valid = 0;
 }
 
@@ -78,34 +78,27 @@ fitov_free(struct app *a)
 	a->fitov = NULL;
 }
 
-/* The measured value of each point, in hb_fit_simulate's order (fit.h). */
+/*
+ * The data points as the fit takes them (hb_fit_data_points: missed values
+ * left out, trials and heights told apart), and the first trial's first
+ * given impact, at which a sequence's clock is aligned with the run's.
+ */
 static int
 points_make(struct fitov *f)
 {
-	size_t n = hb_fit_npoints(&f->d), k = 0;
 	const struct hb_fit_data *d = &f->d;
+	size_t n = hb_fit_npoints(d);
 
-	f->meas = calloc(n ? n : 1, sizeof *f->meas);
+	f->pt = calloc(n ? n : 1, sizeof *f->pt);
 	f->sim = calloc(n ? n : 1, sizeof *f->sim);
-	f->row = calloc(n ? n : 1, sizeof *f->row);
-	f->obs = calloc(n ? n : 1, sizeof *f->obs);
-	if (!f->meas || !f->sim || !f->row || !f->obs)
+	if (!f->pt || !f->sim)
 		return -1;
-	if (d->kind == HB_FIT_SEQUENCE) {
-		for (size_t i = 1; i < d->n && k < n; i++, k++) {
-			f->meas[k] = d->col[HB_FIT_OBS_TE][i] - d->col[HB_FIT_OBS_TE][0];
-			f->row[k] = (int)i;
-			f->obs[k] = HB_FIT_OBS_TE;
-		}
-	} else {
-		for (int ob = HB_FIT_OBS_E; ob < HB_FIT_OBS_COUNT; ob++)
-			for (size_t i = 0; d->col[ob] != NULL && i < d->n && k < n; i++, k++) {
-				f->meas[k] = d->col[ob][i];
-				f->row[k] = (int)i;
-				f->obs[k] = ob;
-			}
-	}
-	f->np = k;
+	f->np = hb_fit_data_points(d, f->pt);
+	f->first = -1;
+	if (d->kind == HB_FIT_SEQUENCE && d->ntrials > 0)
+		for (size_t i = d->trial_row[0]; i < d->trial_row[1] && f->first < 0; i++)
+			if (!isnan(d->col[HB_FIT_OBS_TE][i]))
+				f->first = (long)(i - d->trial_row[0]);
 	return 0;
 }
 
@@ -154,7 +147,8 @@ fmt_obs(int ob, double v, char *buf, size_t n)
 	else if (ob == HB_FIT_OBS_E)
 		snprintf(buf, n, "%.4f", v);
 	else
-		hb_units_format(v, ob == HB_FIT_OBS_XCR ? hb_unit_length : hb_unit_time, 4, buf, n);
+		hb_units_format(v, ob == HB_FIT_OBS_XCR || ob == HB_FIT_OBS_H ? hb_unit_length : hb_unit_time,
+		                4, buf, n);
 	return buf;
 }
 
@@ -167,8 +161,14 @@ describe(const struct fitov *f, char *buf, size_t n)
 		hb_units_format(f->rec.duration, hb_unit_time, 3, du, sizeof du);
 		snprintf(buf, n, "%.200s: a recording (%.0f Hz, %s), %zu impacts (o) of %zu clicks", f->path,
 		         f->rec.samplerate, du, f->d.n, f->rec.n + f->rec.ndrop);
-	} else if (f->d.kind == HB_FIT_SEQUENCE)
+	} else if (f->d.kind == HB_FIT_SEQUENCE && f->d.ntrials > 1)
+		snprintf(buf, n, "%.200s: %zu bouncing sequences (trials), %zu points", f->path,
+		         f->d.ntrials, f->np);
+	else if (f->d.kind == HB_FIT_SEQUENCE)
 		snprintf(buf, n, "%.200s: one bouncing sequence, %zu impacts", f->path, f->d.n);
+	else if (f->d.kind == HB_FIT_HEIGHTS)
+		snprintf(buf, n, "%.200s: %zu drops with their rebound heights, %zu points", f->path,
+		         f->d.ntrials, f->np);
 	else
 		snprintf(buf, n, "%.200s: %zu separate drops, %zu points", f->path, f->d.n, f->np);
 }
@@ -434,15 +434,44 @@ fitov_first_te(const struct app *a)
 	return c != NULL ? c->te : -1;
 }
 
+/*
+ * The run's time of the impact at which the data's clock is aligned: the
+ * first trial's first given impact (its index in the sequence); -1: none.
+ */
+static double
+align_te(const struct app *a)
+{
+	const struct fitov *f = a->fitov;
+	struct hb_collision live;
+	const struct hb_collision *c;
+
+	if (f->first < 0 || f->first >= app_ncollisions(a))
+		return -1;
+	c = app_collision(a, f->first, &live);
+	return c != NULL ? c->te : -1;
+}
+
+/* The measured t_e of impact i of the first trial, since its first given impact (NAN: missed). */
+static double
+first_trial_te(const struct fitov *f, long i)
+{
+	const struct hb_fit_data *d = &f->d;
+	size_t r = d->trial_row[0];
+
+	if (f->first < 0 || i < 0 || (size_t)i >= d->trial_row[1] - r)
+		return NAN;
+	return d->col[HB_FIT_OBS_TE][r + (size_t)i] - d->col[HB_FIT_OBS_TE][r + (size_t)f->first];
+}
+
 void
 fitov_plot_marks(const struct app *a, struct canvas *c, int q_is_x, double t0, double t1)
 {
 	const struct fitov *f = a->fitov;
-	double te0 = fitov_first_te(a);
+	double te0;
 	int row;
 
-	if (f == NULL || !f->loaded || f->d.kind != HB_FIT_SEQUENCE || !q_is_x || te0 < 0
-	    || a->view == VIEW_J)
+	if (f == NULL || !f->loaded || f->d.kind != HB_FIT_SEQUENCE || !q_is_x || a->view == VIEW_J
+	    || (te0 = align_te(a)) < 0)
 		return;
 	row = (int)floor(canvas_pyf(c, 0) + 0.5);
 	row = c->braille ? row / 4 : row;
@@ -450,8 +479,9 @@ fitov_plot_marks(const struct app *a, struct canvas *c, int q_is_x, double t0, d
 		row = c->h - 1;
 	if (row < 0)
 		row = 0;
-	for (size_t i = 0; i < f->d.n; i++) {
-		double t = te0 + f->d.col[HB_FIT_OBS_TE][i] - f->d.col[HB_FIT_OBS_TE][0];
+	/* the first trial's impacts (every trial runs from the same start) */
+	for (long i = 0; (size_t)i < f->d.trial_row[1] - f->d.trial_row[0]; i++) {
+		double t = te0 + first_trial_te(f, i);
 		int col = t >= t0 && t <= t1 ? canvas_col(c, t) : -1;
 		if (col >= 0)
 			canvas_mark(c, col, row, 'o', 1);
@@ -462,7 +492,7 @@ void
 fitov_table_note(const struct app *a, long i, char *line, size_t n)
 {
 	const struct fitov *f = a->fitov;
-	double te0 = fitov_first_te(a), tm, te;
+	double te0, tm, te;
 	char b1[32], b2[32], note[80];
 	size_t l = strlen(line);
 	struct hb_collision live;
@@ -471,12 +501,13 @@ fitov_table_note(const struct app *a, long i, char *line, size_t n)
 	if (f == NULL || !f->loaded || f->d.kind != HB_FIT_SEQUENCE)
 		return;
 	if (i < 0) {
-		snprintf(line + l, n - l, "  %-24s", "data t_e (sim - data)");
+		snprintf(line + l, n - l, "  %-24s",
+		         f->d.ntrials > 1 ? "trial 1 t_e (sim - data)" : "data t_e (sim - data)");
 		return;
 	}
-	if (te0 < 0 || (size_t)i >= f->d.n || (c = app_collision(a, i, &live)) == NULL)
+	tm = first_trial_te(f, i); /* since the first given impact; NAN: missed */
+	if (isnan(tm) || (te0 = align_te(a)) < 0 || (c = app_collision(a, i, &live)) == NULL)
 		return;
-	tm = f->d.col[HB_FIT_OBS_TE][i] - f->d.col[HB_FIT_OBS_TE][0]; /* since the first impact */
 	te = c->te - te0;
 	hb_units_format(te0 + tm, hb_unit_time, 5, b1, sizeof b1);
 	hb_units_format(te - tm, hb_unit_time, 2, b2, sizeof b2);
@@ -544,15 +575,28 @@ fitov_draw(const struct app *a)
 		snprintf(line, sizeof line, "... and %zu more clicks dropped", f->rec.ndrop - 3);
 		tui_puts(y++, in.x, in.w, line, A_DIM);
 	}
-	snprintf(line, sizeof line, "%5s %-6s %12s %12s %12s", "row", "obs",
+	/* the fit's points: missed values left out, each trial told apart */
+	snprintf(line, sizeof line, "%5s %5s %-8s %12s %12s %12s", "row", "trial", "obs",
 	         f->d.kind == HB_FIT_SEQUENCE ? "data t-t0" : "data", "simulated", "sim - data");
 	tui_puts(y++, in.x, in.w, line, A_UNDERLINE);
 	for (int k = f->top; k < (int)f->np && y < in.y + in.h - 1; k++) {
-		fmt_obs(f->obs[k], f->meas[k], m, sizeof m);
-		fmt_obs(f->obs[k], f->sim_valid ? f->sim[k] : NAN, s, sizeof s);
-		fmt_obs(f->obs[k], f->sim_valid ? f->sim[k] - f->meas[k] : NAN, dlt, sizeof dlt);
-		snprintf(line, sizeof line, "%5d %-6s %12s %12s %12s", f->row[k],
-		         hb_fit_obs_name(f->obs[k]), m, s, dlt);
+		const struct hb_fit_point *p = &f->pt[k];
+		char trial[16], obs[24];
+
+		fmt_obs(p->obs, p->measured, m, sizeof m);
+		fmt_obs(p->obs, f->sim_valid ? f->sim[k] : NAN, s, sizeof s);
+		fmt_obs(p->obs, f->sim_valid ? f->sim[k] - p->measured : NAN, dlt, sizeof dlt);
+		if (f->d.kind == HB_FIT_DROPS)
+			snprintf(trial, sizeof trial, "-");
+		else
+			snprintf(trial, sizeof trial, "%zu", p->trial + 1);
+		if (p->obs == HB_FIT_OBS_H)
+			snprintf(obs, sizeof obs, "h_%zu", p->index);
+		else if (p->obs == HB_FIT_OBS_TE)
+			snprintf(obs, sizeof obs, "t_e %zu", p->index);
+		else
+			snprintf(obs, sizeof obs, "%s", hb_fit_obs_name(p->obs));
+		snprintf(line, sizeof line, "%5zu %5s %-8s %12s %12s %12s", p->row, trial, obs, m, s, dlt);
 		tui_puts(y++, in.x, in.w, line, 0);
 	}
 	tui_puts(in.y + in.h - 1, in.x, in.w,
