@@ -106,6 +106,8 @@ app_tick(struct app *a)
 		}
 	if (fitov_tick(a))
 		busy = 1;
+	if (errbar_tick(a))
+		busy = 1;
 	cursor_clamp(a);
 	cursor_follow_want(a);
 	if (playback_tick(a, dt))
@@ -235,6 +237,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 done:
 	psum_free(a->psum);
 	fitov_free(a);
+	errbar_free(a);
 	sweep_view_free(a);
 	physics_forget(a);
 	pins_clear(a);

@@ -124,6 +124,7 @@ struct app {
 	unsigned long frames;
 	struct fitov *fitov;        /* measured data and the fit (overlay_fit.c), or NULL */
 	struct sweep_view *sv;      /* the sweep view (sweep_view.c), NULL until S */
+	struct errbar *errbar;      /* error bars (errbar.c), NULL until E */
 	struct app_physics phys;    /* physics.c */
 	struct plot_sums *psum;     /* plot_summary.c: what the plots draw of long arcs (NULL: none) */
 };
@@ -284,6 +285,14 @@ script_dump(const char *path, char *msg, size_t n);
 /* overlay_fit.c: measured data over the scene, and the fit (D, M, F; --data). */
 struct canvas;
 action_fn act_data, act_data_table, act_fit;
+/* errbar.c: error bars (E) */
+action_fn act_errbar;
+int errbar_on(const struct app *a);
+int errbar_tick(struct app *a);                           /* 1 while the second run computes */
+void errbar_free(struct app *a);
+const struct hb_collision *errbar_find(const struct app *a, long i); /* NULL: none (yet) */
+void errbar_state(const struct app *a, char *buf, size_t n);          /* "" when off */
+void errbar_format(const char *name, double v, double err, char *buf, size_t n);
 int fitov_load(struct app *a, const char *path, char *msg, size_t n); /* 0 or -1 */
 int fitov_loaded(const struct app *a);
 void fitov_announce(struct app *a);                       /* what is loaded, to the message line */
