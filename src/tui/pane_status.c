@@ -16,49 +16,6 @@
 #include "tui.h"
 #include "units.h"
 
-/* The mark at the end of a text cut to its room: an ellipsis, or > without UTF-8. */
-const char *
-tui_cut_mark(void)
-{
-	return term_utf8() ? "\xe2\x80\xa6" : ">";
-}
-
-/*
- * Writes UTF-8 text at (y, x), at most maxw columns (one column per
- * character: our texts are ASCII plus Braille, which is one column wide).
- * Text cut to fit (more than blanks left over) ends in the cut mark in
- * its last column: nothing is cut without a mark.
- */
-void
-tui_puts(int y, int x, int maxw, const char *s, int attr)
-{
-	int cols = 0;
-	const unsigned char *p = (const unsigned char *)s, *start = p, *last = p, *rest;
-
-	if (y < 0 || y >= LINES || x >= COLS || maxw <= 0)
-		return;
-	if (x + maxw > COLS)
-		maxw = COLS - x;
-	while (*p && cols < maxw) {
-		last = p;
-		p++;
-		while ((*p & 0xC0) == 0x80)
-			p++;
-		cols++;
-	}
-	for (rest = p; *rest == ' '; rest++)
-		;
-	attron(attr);
-	if (*rest != 0 && cols > 0) {
-		/* cut: the last column shows the mark instead of its character */
-		mvaddnstr(y, x, (const char *)start, (int)(last - start));
-		mvaddstr(y, x + cols - 1, tui_cut_mark());
-	} else {
-		mvaddnstr(y, x, (const char *)start, (int)(p - start));
-	}
-	attroff(attr);
-}
-
 static const char *
 state_name(const struct app *a, char *buf, size_t n)
 {

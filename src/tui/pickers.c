@@ -122,8 +122,7 @@ pickers_key(struct app *a, int ch)
 	case 'G':
 		a->pick_sel = n - 1;
 		break;
-	case KEY_RESIZE:
-		app_relayout(a);
+	case KEY_RESIZE: /* app_key lays the screen out again before a picker sees a key */
 		break;
 	case 27:
 	case 'q':

@@ -6,7 +6,12 @@
  * function (actions.c) in the file that owns that part of the state:
  * nav.c, playback.c, edit.c, runs.c, log.c, mouse.c.  The pane_*.c files
  * only read the state and draw it.  No file calls back into app.c except
- * through app_msg (log.c) and app_relayout.
+ * through app_msg (log.c) and app_relayout.  Below every mode, calling
+ * only each other, term.c, keys.c and canvas.c: draw.c (text, boxes,
+ * wrapping), cursor.c (the cursor and the run's collisions), log.c,
+ * fitov_draw.c, sweep_obs.c, errbar.c.  tests/cli/calls.sh measures the
+ * cycles of calls left among the files (nm over the objects) against
+ * tests/cli/calls.allow.
  *
  * The cursor is a sample index into the current run's arc (always valid:
  * < hb_arc_len); tcur is the playback time it follows while playing.
@@ -142,7 +147,7 @@ action_fn act_play, act_step_fwd, act_step_back, act_prev_jump, act_next_jump,
 	act_pin, act_unpin, act_compare, act_study3, act_export, act_log, act_present,
 	act_search_next, act_search_prev, act_undo, act_reset;
 
-/* nav.c: the cursor and the selections. */
+/* nav.c: the cursor and the selections (the first four: cursor.c). */
 void cursor_set(struct app *a, size_t i);
 void cursor_clamp(struct app *a);                 /* keeps it < hb_arc_len */
 long coll_at_cursor(const struct app *a);         /* the collision at the cursor, or -1 */
@@ -186,7 +191,7 @@ void overlay_key(struct app *a, int ch);
 void log_free(struct app *a);
 const char *log_get(const struct app *a, int i);  /* i-th message, oldest first */
 void pane_log_draw(const struct app *a);
-/* An overlay box with a border on all four sides, cleared inside; returns the inner rect. */
+/* An overlay box with a border on all four sides, cleared inside; returns the inner rect (draw.c). */
 struct rect box_draw(int y, int x, int h, int w, const char *title);
 
 /* physics.c: checks the ended run; failures to the message line and the log. */
@@ -200,17 +205,23 @@ void mouse_event(struct app *a);
 /* A script's caption (log.c): on the message line wrapped, or large in a box; "" clears. */
 void app_caption(struct app *a, const char *text, int large);
 
-/* Cells of text drawing with clipping (pane_status.c): a cut text ends in tui_cut_mark(). */
+/* Cells of text drawing with clipping (draw.c): a cut text ends in tui_cut_mark(). */
 void
 tui_puts(int y, int x, int maxw, const char *s, int attr);
 const char *tui_cut_mark(void);
 /*
  * Draws s word-wrapped into rows of w columns from (y, x), at most maxrows
- * (log.c); a text that needs more ends in the cut mark.  Returns the rows
+ * (draw.c); a text that needs more ends in the cut mark.  Returns the rows
  * drawn.  tui_wrap_rows: the rows s needs at width w.
  */
 int tui_wrap_draw(int y, int x, int w, int maxrows, const char *s, int attr);
 int tui_wrap_rows(const char *s, int w);
+/*
+ * Wraps s into lines of at most w columns at blanks (a word longer than w
+ * is cut), calling out(ctx, k, line) for each (out may be NULL); lines
+ * after the first get indent blanks before them.  Returns the line count.
+ */
+int tui_wrap(const char *s, int w, int indent, void (*out)(void *, int, const char *), void *ctx);
 
 /* Drawing (pane_*.c): read the state, draw into stdscr. */
 void pane_plot_draw(const struct app *a);
