@@ -337,6 +337,14 @@ search_again(struct app *a, int dir)
 void act_search_next(struct app *a) { search_again(a, 1); }
 void act_search_prev(struct app *a) { search_again(a, -1); }
 
+/* The search prompt's report: each edit shows the best match, Enter keeps it. */
+static void
+search_prompt_done(struct app *a, const char *text, int how)
+{
+	if (how != PROMPT_CANCEL)
+		search_do(a, text, how == PROMPT_ENTER);
+}
+
 void
 act_search(struct app *a)
 {
@@ -345,7 +353,7 @@ act_search(struct app *a)
 		app_relayout(a);
 	}
 	a->search_from = a->param_sel;
-	prompt_open(a, PROMPT_SEARCH, "", "search parameters (Enter keeps, Esc cancels)");
+	prompt_open(a, PROMPT_SEARCH, search_prompt_done, "", "search parameters (Enter keeps, Esc cancels)");
 }
 
 /* Moves the panel selection to the first key of the next (dir > 0) or previous section. */

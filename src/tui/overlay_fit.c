@@ -41,6 +41,8 @@
 #include "fitov.h"
 
 
+static prompt_fn fitov_prompt_done;
+
 static struct fitov *
 ov_get(struct app *a)
 {
@@ -162,7 +164,7 @@ fitov_announce(struct app *a)
 void
 act_data(struct app *a)
 {
-	prompt_open(a, PROMPT_DATA, fitov_loaded(a) ? a->fitov->path : "",
+	prompt_open(a, PROMPT_DATA, fitov_prompt_done, fitov_loaded(a) ? a->fitov->path : "",
 	            "data file (t_e, or v_i,e[,x_c_r][,t_d] columns, or a recording; Enter opens)");
 }
 
@@ -338,13 +340,16 @@ act_fit(struct app *a)
 		snprintf(def, sizeof def, "%s", f->keys_text);
 	else
 		default_keys(hb_sim_scene(a->sim), def, sizeof def);
-	prompt_open(a, PROMPT_FIT, def, "fit to %.40s: free keys (KEY,KEY...; Enter starts)",
+	prompt_open(a, PROMPT_FIT, fitov_prompt_done, def, "fit to %.40s: free keys (KEY,KEY...; Enter starts)",
 	            f->path);
 }
 
-void
-fitov_prompt_done(struct app *a, const char *text)
+/* The data and fit prompts' report: Enter loads the file or starts the fit. */
+static void
+fitov_prompt_done(struct app *a, const char *text, int how)
 {
+	if (how != PROMPT_ENTER)
+		return;
 	if (a->prompt_kind == PROMPT_DATA)
 		load_from_prompt(a, text);
 	else if (fitov_loaded(a))

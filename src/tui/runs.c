@@ -306,6 +306,14 @@ act_preset(struct app *a)
 
 /* ---- export ------------------------------------------------------------ */
 
+/* The export prompt's report: Enter exports under that base name. */
+static void
+export_prompt_done(struct app *a, const char *text, int how)
+{
+	if (how == PROMPT_ENTER)
+		export_do(a, text);
+}
+
 void
 act_export(struct app *a)
 {
@@ -318,7 +326,7 @@ act_export(struct app *a)
 	if (getcwd(cwd, sizeof cwd) == NULL)
 		snprintf(cwd, sizeof cwd, ".");
 	snprintf(base, sizeof base, "%.40s-%s", a->preset, stamp);
-	prompt_open(a, PROMPT_EXPORT, base, "export to %s/BASE-trace.csv, -collisions.csv, .preset; BASE",
+	prompt_open(a, PROMPT_EXPORT, export_prompt_done, base, "export to %s/BASE-trace.csv, -collisions.csv, .preset; BASE",
 	            cwd);
 }
 

@@ -35,6 +35,15 @@ enum { OV_FIT = 16 };           /* overlay_fit.c: measured against simulated */
 enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH, PROMPT_SWEEP };
 enum { PROMPT_DATA = 16, PROMPT_FIT };  /* overlay_fit.c */
 
+/*
+ * How a prompt reports (prompt.c calls the function its opener gave, never
+ * a mode by name): PROMPT_ENTER with the text, PROMPT_CANCEL (Esc), or
+ * PROMPT_TYPED with the text after each key while it stays open.
+ */
+enum { PROMPT_ENTER = 0, PROMPT_CANCEL, PROMPT_TYPED };
+struct app;
+typedef void prompt_fn(struct app *a, const char *text, int how);
+
 struct pin {
 	struct hb_sim *sim;
 	char label[96];             /* what differs from the current run */
@@ -102,6 +111,7 @@ struct app {
 	struct hb_preset_info *presets;
 	int npresets;
 	int prompt_kind;
+	prompt_fn *prompt_done;      /* what the open prompt reports to (prompt_open) */
 	char prompt_key[48];
 	char prompt_title[640];
 	char prompt_buf[256];
@@ -182,8 +192,8 @@ void export_do(struct app *a, const char *base);
 int tui_unused_name(const char *path, char *out, size_t n);
 
 /* prompt.c */
-void prompt_open(struct app *a, int kind, const char *text, const char *fmt, ...)
-	__attribute__((format(printf, 4, 5)));
+void prompt_open(struct app *a, int kind, prompt_fn *done, const char *text, const char *fmt, ...)
+	__attribute__((format(printf, 5, 6)));
 void prompt_key(struct app *a, int ch);
 
 /* log.c: keys while the help or the log is open; the log's memory. */
@@ -308,7 +318,6 @@ int fitov_load(struct app *a, const char *path, char *msg, size_t n); /* 0 or -1
 int fitov_loaded(const struct app *a);
 void fitov_announce(struct app *a);                       /* what is loaded, to the message line */
 void fitov_free(struct app *a);
-void fitov_prompt_done(struct app *a, const char *text);  /* PROMPT_DATA, PROMPT_FIT */
 int fitov_tick(struct app *a);                            /* 1 while fitting */
 void fitov_key(struct app *a, int ch);                    /* keys of OV_FIT */
 void fitov_draw(const struct app *a);
@@ -329,7 +338,6 @@ int sweep_view_open(const struct app *a);
 void sweep_view_key(struct app *a, int ch);
 int sweep_view_tick(struct app *a);              /* polls the curves; 1 while computing */
 void sweep_view_free(struct app *a);
-void sweep_prompt_done(struct app *a, const char *text, int cancelled);
 void pane_sweep_draw(const struct app *a);
 
 #endif
