@@ -293,12 +293,20 @@ act_branch(struct app *a)
 		app_msg(a, 0, "branch cancelled: edits restart the run from t = 0");
 }
 
+/* The law picker's report: Enter takes that law. */
+static void
+law_chosen(struct app *a, const char *law)
+{
+	app_set_law(a, law);
+}
+
 void
 act_law(struct app *a)
 {
 	const struct hb_law_type *const *l = hb_law_list();
 
 	a->overlay = OV_LAW;
+	a->pick_done = law_chosen;
 	a->pick_sel = a->pick_top = 0;
 	for (int i = 0; l[i]; i++)
 		if (l[i] == hb_sim_scene(a->sim)->law)

@@ -275,6 +275,13 @@ act_restart(struct app *a)
 	app_msg(a, 0, "restarted from t = 0");
 }
 
+/* The preset picker's report: Enter opens that preset (its path). */
+static void
+preset_chosen(struct app *a, const char *path)
+{
+	app_open_preset(a, path);
+}
+
 void
 act_preset(struct app *a)
 {
@@ -298,6 +305,7 @@ act_preset(struct app *a)
 		return;
 	}
 	a->overlay = OV_PRESET;
+	a->pick_done = preset_chosen;
 	a->pick_sel = a->pick_top = 0;
 	for (int i = 0; i < n; i++)
 		if (strcmp(a->presets[i].name, a->preset) == 0)

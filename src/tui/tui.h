@@ -43,6 +43,8 @@ enum { PROMPT_DATA = 16, PROMPT_FIT };  /* overlay_fit.c */
 enum { PROMPT_ENTER = 0, PROMPT_CANCEL, PROMPT_TYPED };
 struct app;
 typedef void prompt_fn(struct app *a, const char *text, int how);
+/* How a picker (pickers.c) reports the entry chosen with Enter: a law's name, a preset's path. */
+typedef void pick_fn(struct app *a, const char *choice);
 
 struct pin {
 	struct hb_sim *sim;
@@ -112,6 +114,7 @@ struct app {
 	int npresets;
 	int prompt_kind;
 	prompt_fn *prompt_done;      /* what the open prompt reports to (prompt_open) */
+	pick_fn *pick_done;          /* what the open picker reports to (OV_LAW, OV_PRESET) */
 	char prompt_key[48];
 	char prompt_title[640];
 	char prompt_buf[256];
