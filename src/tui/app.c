@@ -41,14 +41,6 @@ now_s(void)
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-void
-app_relayout(struct app *a)
-{
-	layout_compute(COLS, LINES, a->focus == FOCUS_PARAMS && !a->present, &a->L);
-	if (a->present && !a->L.too_small)
-		layout_present(&a->L);
-}
-
 /* After an edit restarted the run: the cursor returns to its time once computed. */
 static void
 cursor_follow_want(struct app *a)

@@ -349,36 +349,6 @@ how_written(const struct hb_atomic_target *t)
 	return t->how == HB_ATOMIC_REPLACE ? " (replaced the existing file)" : "";
 }
 
-/* 1 if a file (or a link, even dangling) is at path: an export must not replace it unasked. */
-static int
-taken(const char *path)
-{
-	struct stat st;
-
-	return lstat(path, &st) == 0 && !S_ISCHR(st.st_mode) && !S_ISFIFO(st.st_mode);
-}
-
-int
-tui_unused_name(const char *path, char *out, size_t n)
-{
-	const char *slash = strrchr(path, '/');
-	const char *dot = strrchr(slash != NULL ? slash + 1 : path, '.');
-	int stem = dot != NULL && dot != (slash != NULL ? slash + 1 : path)
-	           ? (int)(dot - path) : (int)strlen(path);
-
-	if (!taken(path)) {
-		snprintf(out, n, "%s", path);
-		return 0;
-	}
-	for (int k = 2; k < 1000; k++) {
-		if ((size_t)snprintf(out, n, "%.*s-%d%s", stem, path, k, path + stem) >= n)
-			return -1;
-		if (!taken(out))
-			return 1;
-	}
-	return -1;
-}
-
 /*
  * Writes BASE-trace.csv, BASE-collisions.csv and the scene as BASE.preset
  * through hb_csv_export_with(): all or nothing, never over the preset being
@@ -404,7 +374,7 @@ export_do(struct app *a, const char *base0)
 		snprintf(trace, sizeof trace, "%s-trace.csv", base);
 		snprintf(coll, sizeof coll, "%s-collisions.csv", base);
 		snprintf(scene, sizeof scene, "%s.preset", base);
-		if (!taken(trace) && !taken(coll) && !taken(scene))
+		if (!tui_path_taken(trace) && !tui_path_taken(coll) && !tui_path_taken(scene))
 			break;
 		if (k >= 1000) {
 			app_msg(a, 1, "export failed, nothing written: %.100s-2 ... -999 are all taken; "

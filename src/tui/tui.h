@@ -5,13 +5,16 @@
  * app.c owns the loop; a key becomes an action (keys.c) and the action a
  * function (actions.c) in the file that owns that part of the state:
  * nav.c, playback.c, edit.c, runs.c, log.c, mouse.c.  The pane_*.c files
- * only read the state and draw it.  No file calls back into app.c except
- * through app_msg (log.c) and app_relayout.  Below every mode, calling
- * only each other, term.c, keys.c and canvas.c: draw.c (text, boxes,
- * wrapping), cursor.c (the cursor and the run's collisions), log.c,
- * fitov_draw.c, sweep_obs.c, errbar.c.  tests/cli/calls.sh measures the
- * cycles of calls left among the files (nm over the objects) against
- * tests/cli/calls.allow.
+ * only read the state and draw it.  Calls go one way, from the loop and
+ * the dispatch down to the modes and the panes: a mode reports through
+ * app_msg (log.c), lays the screen out again with app_relayout
+ * (relayout.c), and a prompt or a picker reports to the function its
+ * opener gave (prompt_fn, pick_fn); the shared primitives are draw.c
+ * (text, boxes, wrapping), cursor.c (the cursor and the run's
+ * collisions), names.c (export names), fitov_draw.c and sweep_obs.c.
+ * tests/cli/calls.sh measures the cycles of calls left among the files
+ * (nm over the objects) against tests/cli/calls.allow: script.c, which
+ * drives the loop (app_tick, app_draw) that starts it, is the one left.
  *
  * The cursor is a sample index into the current run's arc (always valid:
  * < hb_arc_len); tcur is the playback time it follows while playing.
@@ -192,7 +195,9 @@ void export_do(struct app *a, const char *base);
  * STEM-2.EXT, STEM-3.EXT ... that is free (1): an export never replaces an
  * earlier one unasked.  -1 when none is (up to -999) or out is too small.
  */
-int tui_unused_name(const char *path, char *out, size_t n);
+int tui_unused_name(const char *path, char *out, size_t n);   /* names.c */
+/* 1 if a file (or a link, even dangling) is at path: an export must not replace it (names.c). */
+int tui_path_taken(const char *path);
 
 /* prompt.c */
 void prompt_open(struct app *a, int kind, prompt_fn *done, const char *text, const char *fmt, ...)
@@ -267,7 +272,7 @@ app_key(struct app *a, int ch);
 int
 app_tick(struct app *a);
 
-/* Recomputes the layout from LINES/COLS. */
+/* Recomputes the layout from LINES/COLS (relayout.c). */
 void
 app_relayout(struct app *a);
 
