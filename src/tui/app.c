@@ -70,11 +70,10 @@ cursor_follow_want(struct app *a)
 int
 app_tick(struct app *a)
 {
-	static double last;
-	double t = now_s(), dt = last > 0 ? t - last : 0;
+	double t = now_s(), dt = a->tick_last > 0 ? t - a->tick_last : 0;
 	int busy = 0, rc;
 
-	last = t;
+	a->tick_last = t;
 	if (dt > 0.25)
 		dt = 0.25;
 	if (hb_sim_end(a->sim) == HB_SIM_RUNNING) {

@@ -83,6 +83,8 @@ struct app {
 	int nbranches;
 	int compare;                /* table differences against pin compare-1 (0: off) */
 	int present;                /* presentation mode (T): 1 dark, 2 light theme */
+	double tick_last;           /* app_tick: when the last frame was (monotonic s; 0: none) */
+	int script_live;            /* script.c: a script plays on the real screen */
 	int present_view, present_slowmo;   /* what T puts back */
 	double slow_t0, slow_td;    /* in slow motion: the contact's start and the duration it is timed by */
 	/*
