@@ -13,8 +13,8 @@
  * (text, boxes, wrapping), cursor.c (the cursor and the run's
  * collisions), names.c (export names), fitov_draw.c and sweep_obs.c.
  * tests/cli/calls.sh measures the cycles of calls left among the files
- * (nm over the objects) against tests/cli/calls.allow: script.c, which
- * drives the loop (app_tick, app_draw) that starts it, is the one left.
+ * (nm over the objects) against tests/cli/calls.allow, empty now: the
+ * loop (app.c) and a script (script.c) both play frames (frame.c).
  *
  * The cursor is a sample index into the current run's arc (always valid:
  * < hb_arc_len); tcur is the playback time it follows while playing.
@@ -258,7 +258,7 @@ action_fn act_figure;
 /* The abscissa (t, or j in the (t, j) view) under screen column x of the plots; -1 outside. */
 int plot_abscissa_at(const struct app *a, int x, double *t);
 
-/* The whole frame: erase, draw every pane, refresh. */
+/* The whole frame: erase, draw every pane, refresh (frame.c). */
 void
 app_draw(struct app *a);
 
@@ -267,7 +267,7 @@ void
 app_key(struct app *a, int ch);
 
 /*
- * One frame of work without input: computes for the frame's budget and
+ * One frame of work without input (frame.c): computes for the budget and
  * advances playback by the wall time since the last call.  Returns 1 while
  * something is still going on (computing or playing), 0 when idle.
  */
