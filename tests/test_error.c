@@ -118,3 +118,45 @@ Test(error, tolerance_floor)
 	hb_error_free(&e);
 	hb_sim_free(s);
 }
+
+Test(error, halves_give_the_whole_estimate)
+{
+	struct hb_scene sc, tight;
+	struct hb_error_estimate e, h;
+	struct hb_sim *s, *t;
+	char msg[512];
+	int at_floor = -1;
+
+	scene_preset("steel-on-bitumen", &sc);
+	s = run_scene(&sc);
+	cr_assert_eq(hb_error_estimate(s, NULL, &e, msg, sizeof msg), HB_OK, "%s", msg);
+	hb_error_scene(&sc, &tight, &at_floor);
+	cr_assert_eq(at_floor, 0);
+	cr_assert_eq(tight.run.stepper, HB_STEPPER_RK8PD);
+	cr_assert_float_eq(tight.run.rtol, sc.run.rtol / HB_ERROR_TIGHTEN, 1e-30);
+	t = hb_sim_new(&tight, msg, sizeof msg);
+	cr_assert_not_null(t, "%s", msg);
+	/* not ended: refused */
+	cr_assert_eq(hb_error_compare(s, t, &h, msg, sizeof msg), HB_EINVAL);
+	cr_assert(strstr(msg, "has not ended") != NULL, "%s", msg);
+	/* the second run in small slices, as the explorer runs it between frames */
+	while (hb_sim_end(t) == HB_SIM_RUNNING)
+		cr_assert(hb_sim_advance(t, 0, 0.003) == HB_OK || hb_sim_end(t) != HB_SIM_RUNNING);
+	cr_assert_eq(hb_error_compare(s, t, &h, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(h.ncoll, e.ncoll);
+	cr_assert_eq(h.at_floor, e.at_floor);
+	cr_assert_eq(h.other_total, e.other_total);
+	for (size_t k = 0; k < e.ncoll; k++)
+		cr_assert(memcmp(&h.coll[k], &e.coll[k], sizeof h.coll[k]) == 0, "collision %zu", k);
+	for (int k = 0; k < HB_OBS_COUNT; k++)
+		cr_assert(memcmp(&h.obs[k], &e.obs[k], sizeof h.obs[k]) == 0, "observable %d", k);
+	hb_error_free(&h);
+	hb_error_free(&e);
+	/* the floor */
+	sc.run.rtol = 1e-14;
+	hb_error_scene(&sc, &tight, &at_floor);
+	cr_assert_eq(at_floor, 1);
+	cr_assert_float_eq(tight.run.rtol, HB_ERROR_RTOL_MIN, 1e-30);
+	hb_sim_free(t);
+	hb_sim_free(s);
+}

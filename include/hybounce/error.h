@@ -45,6 +45,7 @@
 HB_BEGIN_DECLS
 
 struct hb_sim;
+struct hb_scene;
 
 /* The second run's tolerances are the first's divided by this. */
 #define HB_ERROR_TIGHTEN 100.0
@@ -80,6 +81,22 @@ struct hb_error_estimate {
 int
 hb_error_estimate(const struct hb_sim *s, const volatile int *stop,
                   struct hb_error_estimate *e, char *msg, size_t n);
+
+/*
+ * The same estimate in two halves, for a front end that runs the second
+ * run itself (in slices, between frames): hb_error_scene gives the second
+ * run's scene (sc with rk8pd at the tolerances / HB_ERROR_TIGHTEN, rtol
+ * never below HB_ERROR_RTOL_MIN; *at_floor 1 when it was raised), and
+ * hb_error_compare, once both the run s and the second run t of that scene
+ * have ended, fills e as hb_error_estimate does (HB_ENUMERIC with a message
+ * when t failed, HB_EINVAL when it has not ended).
+ */
+void
+hb_error_scene(const struct hb_scene *sc, struct hb_scene *tight, int *at_floor);
+
+int
+hb_error_compare(const struct hb_sim *s, const struct hb_sim *t, struct hb_error_estimate *e,
+                 char *msg, size_t n);
 
 void
 hb_error_free(struct hb_error_estimate *e);

@@ -61,42 +61,33 @@ find_in(const struct hb_sim *s, long i)
 	return NULL;
 }
 
-int
-hb_error_estimate(const struct hb_sim *s, const volatile int *stop,
-                  struct hb_error_estimate *e, char *msg, size_t n)
+void
+hb_error_scene(const struct hb_scene *sc, struct hb_scene *tight, int *at_floor)
 {
-	struct hb_scene sc = *hb_sim_scene(s);
-	struct hb_sim *t;
+	*tight = *sc;
+	*at_floor = hb_error_tighten(tight);
+}
+
+int
+hb_error_compare(const struct hb_sim *s, const struct hb_sim *t, struct hb_error_estimate *e,
+                 char *msg, size_t n)
+{
 	size_t nc = hb_sim_ncollisions(s), k;
-	int rc;
 
 	memset(e, 0, sizeof *e);
-	e->at_floor = hb_error_tighten(&sc);
-	e->stepper = sc.run.stepper;
-	e->rtol = sc.run.rtol;
-	e->atol = sc.run.atol;
-	t = hb_sim_new(&sc, msg, n);
-	if (t == NULL)
-		return HB_EINVAL;
-	do {
-		if (stop != NULL && *stop != 0) {
-			hb_sim_free(t);
-			return hb_status_set(msg, n, HB_EINVAL, "error estimate interrupted");
-		}
-		rc = hb_sim_advance(t, 0, 0.1);
-	} while (rc == HB_OK && hb_sim_end(t) == HB_SIM_RUNNING);
-	if (hb_sim_end(t) == HB_SIM_END_FAIL || (rc != HB_OK && rc != HB_EDONE)) {
-		rc = hb_status_set(msg, n, rc != HB_OK && rc != HB_EDONE ? rc : HB_ENUMERIC,
-		                   "the second run of the error estimate (rk8pd, rtol %.3g) "
-		                   "failed: %s", e->rtol, hb_sim_errmsg(t));
-		hb_sim_free(t);
-		return rc;
-	}
+	e->stepper = hb_sim_scene(t)->run.stepper;
+	e->rtol = hb_sim_scene(t)->run.rtol;
+	e->atol = hb_sim_scene(t)->run.atol;
+	e->at_floor = e->rtol > hb_sim_scene(s)->run.rtol / HB_ERROR_TIGHTEN;
+	if (hb_sim_end(t) == HB_SIM_END_FAIL || hb_sim_end(t) == HB_SIM_RUNNING)
+		return hb_status_set(msg, n, hb_sim_end(t) == HB_SIM_RUNNING ? HB_EINVAL : HB_ENUMERIC,
+		                     "the second run of the error estimate "
+		                     "(rk8pd, rtol %.3g) %s%s", e->rtol,
+		                     hb_sim_end(t) == HB_SIM_RUNNING ? "has not ended" : "failed: ",
+		                     hb_sim_end(t) == HB_SIM_RUNNING ? "" : hb_sim_errmsg(t));
 	e->coll = calloc(nc > 0 ? nc : 1, sizeof *e->coll);
-	if (e->coll == NULL) {
-		hb_sim_free(t);
+	if (e->coll == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "error estimate: out of memory");
-	}
 	for (k = 0; k < nc; k++) {
 		const struct hb_collision *a = hb_sim_collision(s, k), *b;
 		struct hb_collision *d = &e->coll[e->ncoll];
@@ -134,8 +125,38 @@ hb_error_estimate(const struct hb_sim *s, const volatile int *stop,
 		                : bar(hb_observable_value(s, o), hb_observable_value(t, o), 0);
 	e->other_total = hb_sim_collisions_total(t);
 	e->other_rhs = hb_sim_stats(t)->rhs;
-	hb_sim_free(t);
 	return HB_OK;
+}
+
+int
+hb_error_estimate(const struct hb_sim *s, const volatile int *stop,
+                  struct hb_error_estimate *e, char *msg, size_t n)
+{
+	struct hb_scene sc;
+	struct hb_sim *t;
+	int rc, at_floor;
+
+	memset(e, 0, sizeof *e);
+	hb_error_scene(hb_sim_scene(s), &sc, &at_floor);
+	t = hb_sim_new(&sc, msg, n);
+	if (t == NULL)
+		return HB_EINVAL;
+	do {
+		if (stop != NULL && *stop != 0) {
+			hb_sim_free(t);
+			return hb_status_set(msg, n, HB_EINVAL, "error estimate interrupted");
+		}
+		rc = hb_sim_advance(t, 0, 0.1);
+	} while (rc == HB_OK && hb_sim_end(t) == HB_SIM_RUNNING);
+	if (rc != HB_OK && rc != HB_EDONE && hb_sim_end(t) != HB_SIM_END_FAIL) {
+		rc = hb_status_set(msg, n, rc, "the second run of the error estimate (rk8pd, rtol %.3g) "
+		                   "failed: %s", sc.run.rtol, hb_sim_errmsg(t));
+		hb_sim_free(t);
+		return rc;
+	}
+	rc = hb_error_compare(s, t, e, msg, n);
+	hb_sim_free(t);
+	return rc;
 }
 
 void

@@ -39,7 +39,7 @@ static action_fn *const actions[ACT_COUNT] = {
 	[ACT_TOP] = act_top, [ACT_BOTTOM] = act_bottom,
 	[ACT_PREV_SECTION] = act_prev_section, [ACT_NEXT_SECTION] = act_next_section,
 	[ACT_LOG] = act_log, [ACT_PRESENT] = act_present, [ACT_COMPARE] = act_compare,
-	[ACT_DATA] = act_data, [ACT_DATA_TABLE] = act_data_table, [ACT_FIT] = act_fit,
+	[ACT_DATA] = act_data, [ACT_DATA_TABLE] = act_data_table, [ACT_FIT] = act_fit, [ACT_ERRBAR] = act_errbar,
 	[ACT_SWEEP] = act_sweep,
 	[ACT_SEARCH_NEXT] = act_search_next, [ACT_SEARCH_PREV] = act_search_prev,
 	[ACT_UNDO] = act_undo, [ACT_RESET] = act_reset,

@@ -7,7 +7,9 @@
  * hb_sim_advance(sim, 0, budget) with a budget of a few milliseconds, so the
  * screen never freezes however long or stiff a run is.  Playback
  * (playback.c) moves the cursor in simulated time.  Keys are dispatched
- * through the action table (actions.c).
+ * through the action table (actions.c).  One frame, its computing and
+ * its drawing (app_tick, app_draw), is frame.c's, which a script
+ * (script.c) plays too.
  *
  * Errors from the engine go to the message line; nothing computed is lost
  * by a refused edit or a failed export.  The terminal is restored on every
@@ -31,117 +33,6 @@
 #define FRAME_MS 20           /* frame period while computing or playing */
 #define IDLE_MS 250           /* getch timeout when idle (to see signals) */
 #define COMPUTE_BUDGET 0.012  /* s of computation per frame */
-
-static double
-now_s(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-void
-app_relayout(struct app *a)
-{
-	layout_compute(COLS, LINES, a->focus == FOCUS_PARAMS && !a->present, &a->L);
-	if (a->present && !a->L.too_small)
-		layout_present(&a->L);
-}
-
-/* After an edit restarted the run: the cursor returns to its time once computed. */
-static void
-cursor_follow_want(struct app *a)
-{
-	const struct hb_arc *arc = hb_sim_arc(a->sim);
-	const struct hb_arc_sample *l = hb_arc_last(arc);
-
-	if (a->want_t < 0 || l == NULL)
-		return;
-	if (l->t >= a->want_t || hb_sim_end(a->sim) != HB_SIM_RUNNING) {
-		/* the sample nearest to that time */
-		size_t i = hb_arc_find_t(arc, a->want_t);
-		if (i + 1 < hb_arc_len(arc)
-		    && fabs(hb_arc_at(arc, i + 1)->t - a->want_t) < fabs(hb_arc_at(arc, i)->t - a->want_t))
-			i++;
-		a->cursor = i;
-		a->tcur = hb_arc_at(arc, i)->t;
-		a->want_t = -1;
-		if (coll_at_cursor(a) >= 0)
-			a->table_sel = coll_at_cursor(a);
-	} else {
-		a->cursor = hb_arc_len(arc) - 1;
-		a->tcur = a->want_t;
-	}
-}
-
-int
-app_tick(struct app *a)
-{
-	static double last;
-	double t = now_s(), dt = last > 0 ? t - last : 0;
-	int busy = 0, rc;
-
-	last = t;
-	if (dt > 0.25)
-		dt = 0.25;
-	if (hb_sim_end(a->sim) == HB_SIM_RUNNING) {
-		physics_forget(a);
-		rc = hb_sim_advance(a->sim, 0, a->budget);
-		if (rc != HB_OK && rc != HB_EDONE) {
-			app_msg(a, 1, "run failed: %s (everything before is kept)", hb_sim_errmsg(a->sim));
-		} else if (hb_sim_end(a->sim) != HB_SIM_RUNNING && hb_sim_stats(a->sim)->stiff) {
-			char note[160];
-
-			app_msg(a, 0, "run computed%s", stiff_note(a, note, sizeof note));
-		}
-		if (hb_sim_end(a->sim) != HB_SIM_RUNNING)
-			physics_run(a);
-		busy = 1;
-	}
-	for (int i = 0; i < a->npins; i++)
-		if (hb_sim_end(a->pin[i].sim) == HB_SIM_RUNNING) {
-			hb_sim_advance(a->pin[i].sim, 0, a->budget / 4);
-			busy = 1;
-		}
-	if (fitov_tick(a))
-		busy = 1;
-	cursor_clamp(a);
-	cursor_follow_want(a);
-	if (playback_tick(a, dt))
-		busy = 1;
-	if (sweep_view_tick(a))
-		busy = 1;
-	return busy;
-}
-
-void
-app_draw(struct app *a)
-{
-	erase();
-	if (a->L.too_small) {
-		pane_too_small_draw(a);
-	} else {
-		pane_plot_draw(a);
-		if (a->L.table_visible)
-			pane_table_draw(a);
-		if (a->L.params_visible)
-			pane_params_draw(a);
-		pane_status_draw(a);
-		if (sweep_view_open(a))
-			pane_sweep_draw(a);
-		if (a->overlay == OV_HELP)
-			pane_help_draw(a);
-		else if (a->overlay == OV_LOG)
-			pane_log_draw(a);
-		else if (a->overlay == OV_LAW || a->overlay == OV_PRESET)
-			pickers_draw(a);
-		else if (a->overlay == OV_FIT)
-			fitov_draw(a);
-	}
-	a->frames++;
-	refresh();
-}
 
 static int
 loop(struct app *a)
@@ -235,6 +126,7 @@ app_run(const struct app_options *o, char *msg, size_t n)
 done:
 	psum_free(a->psum);
 	fitov_free(a);
+	errbar_free(a);
 	sweep_view_free(a);
 	physics_forget(a);
 	pins_clear(a);

@@ -233,6 +233,16 @@ nudge(struct app *a, int dir)
 	apply_scene(a, &sc, emsg);
 }
 
+/* The value prompt's report: Enter sets the key, Esc disarms a branch (b). */
+static void
+edit_prompt_done(struct app *a, const char *text, int how)
+{
+	if (how == PROMPT_CANCEL)
+		a->branch_armed = 0;
+	else if (how == PROMPT_ENTER)
+		edit_value(a, a->prompt_key, text);
+}
+
 static void
 prompt_edit_begin(struct app *a)
 {
@@ -245,7 +255,7 @@ prompt_edit_begin(struct app *a)
 		app_msg(a, 1, "%s is derived: computed from the bodies, never typed", ki.label);
 		return;
 	}
-	prompt_open(a, PROMPT_EDIT, ki.edit /* reads back exactly */, "%.47s %.47s%s", ki.key, ki.range,
+	prompt_open(a, PROMPT_EDIT, edit_prompt_done, ki.edit /* reads back exactly */, "%.47s %.47s%s", ki.key, ki.range,
 	            a->branch_armed ? " (branch here)" : "");
 	snprintf(a->prompt_key, sizeof a->prompt_key, "%s", ki.key);
 }
@@ -283,12 +293,20 @@ act_branch(struct app *a)
 		app_msg(a, 0, "branch cancelled: edits restart the run from t = 0");
 }
 
+/* The law picker's report: Enter takes that law. */
+static void
+law_chosen(struct app *a, const char *law)
+{
+	app_set_law(a, law);
+}
+
 void
 act_law(struct app *a)
 {
 	const struct hb_law_type *const *l = hb_law_list();
 
 	a->overlay = OV_LAW;
+	a->pick_done = law_chosen;
 	a->pick_sel = a->pick_top = 0;
 	for (int i = 0; l[i]; i++)
 		if (l[i] == hb_sim_scene(a->sim)->law)

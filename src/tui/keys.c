@@ -69,6 +69,9 @@ static const struct key_binding table[] = {
 	{ 'c', 0, CTX_ANY, ACT_COMPARE, "c", "table: differences against pinned run 1, 2, 3, off", NULL },
 	{ '3', 0, CTX_ANY, ACT_STUDY3, "3",
 	  "the paper's third study: permanent-contact-shccl, -bwshccl, -bwmcl pinned together", NULL },
+	{ 'E', 0, CTX_ANY, ACT_ERRBAR, "E",
+	  "error bars on / off: a second run at rtol / 100, between frames once the run has ended; "
+	  "+- under the selected collision and in the readout", NULL },
 	{ 'e', 0, CTX_ANY, ACT_EXPORT, "e", "export BASE-trace.csv, BASE-collisions.csv and the scene BASE.preset", "export" },
 	{ 'f', 0, CTX_ANY, ACT_FIGURE, "f",
 	  "save the view as a figure, PRESET-view.png (the plots as shown, the pins, the cursor; -2, -3 ... never over an earlier one)", NULL },

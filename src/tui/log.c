@@ -69,103 +69,6 @@ log_free(struct app *a)
 	a->log_n = a->log_head = 0;
 }
 
-struct rect
-box_draw(int y, int x, int h, int w, const char *title)
-{
-	struct rect in = { y + 1, x + 2, h - 2, w - 4 };
-
-	for (int r = 0; r < h; r++)
-		mvhline(y + r, x, ' ', w);
-	attron(A_BOLD);
-	mvhline(y, x + 1, ACS_HLINE, w - 2);
-	mvhline(y + h - 1, x + 1, ACS_HLINE, w - 2);
-	mvvline(y + 1, x, ACS_VLINE, h - 2);
-	mvvline(y + 1, x + w - 1, ACS_VLINE, h - 2);
-	mvaddch(y, x, ACS_ULCORNER);
-	mvaddch(y, x + w - 1, ACS_URCORNER);
-	mvaddch(y + h - 1, x, ACS_LLCORNER);
-	mvaddch(y + h - 1, x + w - 1, ACS_LRCORNER);
-	attroff(A_BOLD);
-	tui_puts(y, x + 2, w - 4, title, A_BOLD);
-	return in;
-}
-
-/*
- * Wraps s into lines of at most w columns at blanks (a word longer than w
- * is cut); calls out for each line with its text.  Returns the line count.
- * indent: columns of blank put before every line after the first.
- */
-static int
-wrap(const char *s, int w, int indent, void (*out)(void *, int, const char *), void *ctx)
-{
-	char line[1024];
-	int n = 0, first = 1;
-
-	if (w < 8)
-		w = 8;
-	while (*s) {
-		int room = first ? w : w - indent, len = (int)strlen(s), cut = len;
-		if (len > room) {
-			cut = room;
-			while (cut > room / 2 && s[cut] != ' ')
-				cut--;
-			if (s[cut] != ' ')
-				cut = room;
-		}
-		snprintf(line, sizeof line, "%*s%.*s", first ? 0 : indent, "", cut, s);
-		if (out)
-			out(ctx, n, line);
-		n++;
-		s += cut;
-		while (*s == ' ')
-			s++;
-		first = 0;
-	}
-	return n;
-}
-
-/* ---- drawing ----------------------------------------------------------- */
-
-struct bctx {
-	int y, x, w, maxrows;
-	int attr;
-	int total;
-};
-
-static void
-put_bounded(void *p, int k, const char *line)
-{
-	struct bctx *c = p;
-	char buf[1100];
-
-	if (k < c->maxrows - 1 || (k == c->maxrows - 1 && c->total <= c->maxrows)) {
-		tui_puts(c->y + k, c->x, c->w, line, c->attr);
-	} else if (k == c->maxrows - 1) {
-		/* the last row there is room for, with more to come: the mark says so */
-		snprintf(buf, sizeof buf, "%s%*s", line, c->w, "");
-		tui_puts(c->y + k, c->x, c->w, buf, c->attr);
-		mvaddstr(c->y + k, c->x + c->w - 1, tui_cut_mark());
-	}
-}
-
-int
-tui_wrap_rows(const char *s, int w)
-{
-	return wrap(s, w, 0, NULL, NULL);
-}
-
-int
-tui_wrap_draw(int y, int x, int w, int maxrows, const char *s, int attr)
-{
-	struct bctx c = { y, x, w, maxrows, attr, 0 };
-
-	if (maxrows < 1 || w < 1)
-		return 0;
-	c.total = wrap(s, w, 0, NULL, NULL);
-	wrap(s, w, 0, put_bounded, &c);
-	return c.total < maxrows ? c.total : maxrows;
-}
-
 struct wctx {
 	int y0, x0, w, top, rows, row;
 };
@@ -207,7 +110,7 @@ help_lines(const struct app *a, struct wctx *c)
 	int total = 0;
 	for (size_t i = 0; i < n; i++) {
 		snprintf(line, sizeof line, "%-9s %s", t[i].label, t[i].help);
-		total += wrap(line, w, 10, c ? put_line : NULL, c);
+		total += tui_wrap(line, w, 10, c ? put_line : NULL, c);
 	}
 	static const char *legend[] = {
 		"",
@@ -220,7 +123,7 @@ help_lines(const struct app *a, struct wctx *c)
 		"In a prompt: the value shown is replaced by the first key typed; Left/Right/Home/End (C-b C-f C-a C-e) keep it to edit; BSpace, C-d, C-k delete; C-u clears; Enter accepts, Esc cancels.",
 	};
 	for (size_t i = 0; i < sizeof legend / sizeof legend[0]; i++)
-		total += wrap(legend[i][0] ? legend[i] : " ", w, 2, c ? put_line : NULL, c);
+		total += tui_wrap(legend[i][0] ? legend[i] : " ", w, 2, c ? put_line : NULL, c);
 	return total;
 }
 
@@ -232,9 +135,9 @@ log_lines(const struct app *a, struct wctx *c)
 	if (c)
 		c->row = 0;
 	for (int i = 0; i < a->log_n; i++)
-		total += wrap(log_get(a, i), w, 2, c ? put_line : NULL, c);
+		total += tui_wrap(log_get(a, i), w, 2, c ? put_line : NULL, c);
 	if (a->log_n == 0)
-		total += wrap("(no messages yet)", w, 0, c ? put_line : NULL, c);
+		total += tui_wrap("(no messages yet)", w, 0, c ? put_line : NULL, c);
 	return total;
 }
 
@@ -313,8 +216,7 @@ overlay_key(struct app *a, int ch)
 		else
 			return;
 	} else if (ch == KEY_RESIZE) {
-		app_relayout(a);
-		return;
+		return; /* app_key lays the screen out again before an overlay sees a key */
 	} else {
 		a->overlay = OV_NONE;
 		return;

@@ -6,7 +6,8 @@
  * The cursor is a sample index into the current run's arc (always valid:
  * < hb_arc_len); tcur is the time it stands for.  Every function here only
  * reads the run (hb_sim_arc, hb_sim_collision) and moves the cursor or a
- * selection.
+ * selection.  The cursor's primitives, which every pane uses, are
+ * cursor.c's.
  */
 #include <curses.h>
 #include <math.h>
@@ -14,88 +15,6 @@
 
 #include "cnum.h" /* ASCII case fold (src/core) */
 #include "tui.h"
-
-long
-app_ncollisions(const struct app *a)
-{
-	struct hb_collision live;
-
-	return (long)hb_sim_ncollisions(a->sim) + (hb_sim_contact_live(a->sim, &live) ? 1 : 0);
-}
-
-const struct hb_collision *
-app_collision(const struct app *a, long i, struct hb_collision *live)
-{
-	size_t nc = hb_sim_ncollisions(a->sim);
-
-	if (i < 0)
-		return NULL;
-	if ((size_t)i < nc)
-		return hb_sim_collision(a->sim, (size_t)i);
-	if ((size_t)i == nc && hb_sim_contact_live(a->sim, live))
-		return live;
-	return NULL;
-}
-
-void
-cursor_set(struct app *a, size_t i)
-{
-	const struct hb_arc *arc = hb_sim_arc(a->sim);
-	size_t n = hb_arc_len(arc);
-
-	if (n == 0) {
-		a->cursor = 0;
-		a->tcur = 0;
-		return;
-	}
-	if (i >= n)
-		i = n - 1;
-	a->cursor = i;
-	a->tcur = hb_arc_at(arc, i)->t;
-}
-
-void
-cursor_clamp(struct app *a)
-{
-	size_t n = hb_arc_len(hb_sim_arc(a->sim));
-
-	if (n == 0)
-		a->cursor = 0;
-	else if (a->cursor >= n)
-		a->cursor = n - 1;
-}
-
-long
-coll_at_cursor(const struct app *a)
-{
-	const struct hb_arc *arc = hb_sim_arc(a->sim);
-	const struct hb_arc_sample *s;
-
-	if (hb_arc_len(arc) == 0)
-		return -1;
-	s = hb_arc_at(arc, a->cursor);
-	if (!s->q)
-		return -1;
-	for (long i = 0; i < app_ncollisions(a); i++) {
-		struct hb_collision live;
-		const struct hb_collision *c = app_collision(a, i, &live);
-		if (c && c->j == s->j)
-			return i;
-	}
-	return -1;
-}
-
-void
-cursor_to_collision(struct app *a, long i)
-{
-	struct hb_collision live;
-	const struct hb_collision *c = app_collision(a, i, &live);
-
-	if (c == NULL)
-		return;
-	cursor_set(a, hb_arc_find(hb_sim_arc(a->sim), c->te, c->j));
-	a->table_sel = i;
-}
 
 /* The table selection follows the cursor onto a contact. */
 static void
@@ -418,6 +337,14 @@ search_again(struct app *a, int dir)
 void act_search_next(struct app *a) { search_again(a, 1); }
 void act_search_prev(struct app *a) { search_again(a, -1); }
 
+/* The search prompt's report: each edit shows the best match, Enter keeps it. */
+static void
+search_prompt_done(struct app *a, const char *text, int how)
+{
+	if (how != PROMPT_CANCEL)
+		search_do(a, text, how == PROMPT_ENTER);
+}
+
 void
 act_search(struct app *a)
 {
@@ -426,7 +353,7 @@ act_search(struct app *a)
 		app_relayout(a);
 	}
 	a->search_from = a->param_sel;
-	prompt_open(a, PROMPT_SEARCH, "", "search parameters (Enter keeps, Esc cancels)");
+	prompt_open(a, PROMPT_SEARCH, search_prompt_done, "", "search parameters (Enter keeps, Esc cancels)");
 }
 
 /* Moves the panel selection to the first key of the next (dir > 0) or previous section. */

@@ -11,17 +11,19 @@
  * dropped (x), and the run's impacts (+) (fitov_plot_recording).  The
  * data's observables are simulated for the current scene whenever it
  * changes (hb_fit_simulate), and shown
- *  - on the x plot: each measured impact as 'o' on the axis x = 0, the
- *    clocks aligned at the run's first collision (sequences);
- *  - in the collisions table: the measured t_e of each collision beside
- *    the simulated one, and their difference (sequences);
- *  - in a box (M): every data point, measured against simulated now, with
- *    the difference, for both kinds of data.
+ *  - on the x plot: each measured impact of the first trial as 'o' on the
+ *    axis x = 0, the clocks aligned at its first given impact (sequences);
+ *  - in the collisions table: the first trial's measured t_e of each
+ *    collision beside the simulated one, and their difference (sequences);
+ *  - in a box (M): every data point as the fit takes it (hb_fit_data_points:
+ *    missed values left out, trials and heights told apart), measured
+ *    against simulated now, with the difference, for every kind of data.
  * F asks for the free keys and runs the fit one trust-region iteration per
  * frame (hb_fit_new / hb_fit_iterate), with a progress line; F again stops it.
  * When it stops, the run before the fit is pinned (when a pin is free) and
  * the current run takes the fitted values, so measured, start and fit are
- * drawn together.
+ * drawn together.  What the panes draw of the data (read only) is
+ * fitov_draw.c's.
  */
 #include <curses.h>
 #include <math.h>
@@ -39,6 +41,8 @@
 #include "fitov.h"
 
 
+static prompt_fn fitov_prompt_done;
+
 static struct fitov *
 ov_get(struct app *a)
 {
@@ -53,13 +57,12 @@ ov_get(struct app *a)
 static void
 points_free(struct fitov *f)
 {
-	free(f->meas);
+	free(f->pt);
 	free(f->sim);
-	free(f->row);
-	free(f->obs);
-	f->meas = f->sim = NULL;
-	f->row = f->obs = NULL;
+	f->pt = NULL;
+	f->sim = NULL;
 	f->np = 0;
+	f->first = -1;
 	f->sim_valid = 0;
 }
 
@@ -78,34 +81,27 @@ fitov_free(struct app *a)
 	a->fitov = NULL;
 }
 
-/* The measured value of each point, in hb_fit_simulate's order (fit.h). */
+/*
+ * The data points as the fit takes them (hb_fit_data_points: missed values
+ * left out, trials and heights told apart), and the first trial's first
+ * given impact, at which a sequence's clock is aligned with the run's.
+ */
 static int
 points_make(struct fitov *f)
 {
-	size_t n = hb_fit_npoints(&f->d), k = 0;
 	const struct hb_fit_data *d = &f->d;
+	size_t n = hb_fit_npoints(d);
 
-	f->meas = calloc(n ? n : 1, sizeof *f->meas);
+	f->pt = calloc(n ? n : 1, sizeof *f->pt);
 	f->sim = calloc(n ? n : 1, sizeof *f->sim);
-	f->row = calloc(n ? n : 1, sizeof *f->row);
-	f->obs = calloc(n ? n : 1, sizeof *f->obs);
-	if (!f->meas || !f->sim || !f->row || !f->obs)
+	if (!f->pt || !f->sim)
 		return -1;
-	if (d->kind == HB_FIT_SEQUENCE) {
-		for (size_t i = 1; i < d->n && k < n; i++, k++) {
-			f->meas[k] = d->col[HB_FIT_OBS_TE][i] - d->col[HB_FIT_OBS_TE][0];
-			f->row[k] = (int)i;
-			f->obs[k] = HB_FIT_OBS_TE;
-		}
-	} else {
-		for (int ob = HB_FIT_OBS_E; ob < HB_FIT_OBS_COUNT; ob++)
-			for (size_t i = 0; d->col[ob] != NULL && i < d->n && k < n; i++, k++) {
-				f->meas[k] = d->col[ob][i];
-				f->row[k] = (int)i;
-				f->obs[k] = ob;
-			}
-	}
-	f->np = k;
+	f->np = hb_fit_data_points(d, f->pt);
+	f->first = -1;
+	if (d->kind == HB_FIT_SEQUENCE && d->ntrials > 0)
+		for (size_t i = d->trial_row[0]; i < d->trial_row[1] && f->first < 0; i++)
+			if (!isnan(d->col[HB_FIT_OBS_TE][i]))
+				f->first = (long)(i - d->trial_row[0]);
 	return 0;
 }
 
@@ -139,40 +135,6 @@ fitov_load(struct app *a, const char *path, char *msg, size_t n)
 	return 0;
 }
 
-int
-fitov_loaded(const struct app *a)
-{
-	return a->fitov != NULL && a->fitov->loaded;
-}
-
-/* Formats a value of observable ob with its unit. */
-static char *
-fmt_obs(int ob, double v, char *buf, size_t n)
-{
-	if (!isfinite(v))
-		snprintf(buf, n, "-");
-	else if (ob == HB_FIT_OBS_E)
-		snprintf(buf, n, "%.4f", v);
-	else
-		hb_units_format(v, ob == HB_FIT_OBS_XCR ? hb_unit_length : hb_unit_time, 4, buf, n);
-	return buf;
-}
-
-static void
-describe(const struct fitov *f, char *buf, size_t n)
-{
-	if (f->rec.nenv > 0) {
-		char du[32];
-
-		hb_units_format(f->rec.duration, hb_unit_time, 3, du, sizeof du);
-		snprintf(buf, n, "%.200s: a recording (%.0f Hz, %s), %zu impacts (o) of %zu clicks", f->path,
-		         f->rec.samplerate, du, f->d.n, f->rec.n + f->rec.ndrop);
-	} else if (f->d.kind == HB_FIT_SEQUENCE)
-		snprintf(buf, n, "%.200s: one bouncing sequence, %zu impacts", f->path, f->d.n);
-	else
-		snprintf(buf, n, "%.200s: %zu separate drops, %zu points", f->path, f->d.n, f->np);
-}
-
 /* Data file from the prompt (D) or --data. */
 static void
 load_from_prompt(struct app *a, const char *path)
@@ -195,14 +157,14 @@ fitov_announce(struct app *a)
 {
 	char what[320];
 
-	describe(a->fitov, what, sizeof what);
+	fitov_describe(a->fitov, what, sizeof what);
 	app_msg(a, 0, "data %s; M: measured against simulated, F: fit", what);
 }
 
 void
 act_data(struct app *a)
 {
-	prompt_open(a, PROMPT_DATA, fitov_loaded(a) ? a->fitov->path : "",
+	prompt_open(a, PROMPT_DATA, fitov_prompt_done, fitov_loaded(a) ? a->fitov->path : "",
 	            "data file (t_e, or v_i,e[,x_c_r][,t_d] columns, or a recording; Enter opens)");
 }
 
@@ -378,13 +340,16 @@ act_fit(struct app *a)
 		snprintf(def, sizeof def, "%s", f->keys_text);
 	else
 		default_keys(hb_sim_scene(a->sim), def, sizeof def);
-	prompt_open(a, PROMPT_FIT, def, "fit to %.40s: free keys (KEY,KEY...; Enter starts)",
+	prompt_open(a, PROMPT_FIT, fitov_prompt_done, def, "fit to %.40s: free keys (KEY,KEY...; Enter starts)",
 	            f->path);
 }
 
-void
-fitov_prompt_done(struct app *a, const char *text)
+/* The data and fit prompts' report: Enter loads the file or starts the fit. */
+static void
+fitov_prompt_done(struct app *a, const char *text, int how)
 {
+	if (how != PROMPT_ENTER)
+		return;
 	if (a->prompt_kind == PROMPT_DATA)
 		load_from_prompt(a, text);
 	else if (fitov_loaded(a))
@@ -422,68 +387,6 @@ fitov_tick(struct app *a)
 	return 0;
 }
 
-/* ---- drawing ------------------------------------------------------------ */
-
-/* The run's first collision time, to align the measured clock; -1: none yet. */
-double
-fitov_first_te(const struct app *a)
-{
-	struct hb_collision live;
-	const struct hb_collision *c = app_ncollisions(a) > 0 ? app_collision(a, 0, &live) : NULL;
-
-	return c != NULL ? c->te : -1;
-}
-
-void
-fitov_plot_marks(const struct app *a, struct canvas *c, int q_is_x, double t0, double t1)
-{
-	const struct fitov *f = a->fitov;
-	double te0 = fitov_first_te(a);
-	int row;
-
-	if (f == NULL || !f->loaded || f->d.kind != HB_FIT_SEQUENCE || !q_is_x || te0 < 0
-	    || a->view == VIEW_J)
-		return;
-	row = (int)floor(canvas_pyf(c, 0) + 0.5);
-	row = c->braille ? row / 4 : row;
-	if (row >= c->h)
-		row = c->h - 1;
-	if (row < 0)
-		row = 0;
-	for (size_t i = 0; i < f->d.n; i++) {
-		double t = te0 + f->d.col[HB_FIT_OBS_TE][i] - f->d.col[HB_FIT_OBS_TE][0];
-		int col = t >= t0 && t <= t1 ? canvas_col(c, t) : -1;
-		if (col >= 0)
-			canvas_mark(c, col, row, 'o', 1);
-	}
-}
-
-void
-fitov_table_note(const struct app *a, long i, char *line, size_t n)
-{
-	const struct fitov *f = a->fitov;
-	double te0 = fitov_first_te(a), tm, te;
-	char b1[32], b2[32], note[80];
-	size_t l = strlen(line);
-	struct hb_collision live;
-	const struct hb_collision *c;
-
-	if (f == NULL || !f->loaded || f->d.kind != HB_FIT_SEQUENCE)
-		return;
-	if (i < 0) {
-		snprintf(line + l, n - l, "  %-24s", "data t_e (sim - data)");
-		return;
-	}
-	if (te0 < 0 || (size_t)i >= f->d.n || (c = app_collision(a, i, &live)) == NULL)
-		return;
-	tm = f->d.col[HB_FIT_OBS_TE][i] - f->d.col[HB_FIT_OBS_TE][0]; /* since the first impact */
-	te = c->te - te0;
-	hb_units_format(te0 + tm, hb_unit_time, 5, b1, sizeof b1);
-	hb_units_format(te - tm, hb_unit_time, 2, b2, sizeof b2);
-	snprintf(note, sizeof note, "%s (%s%s)", b1, te - tm >= 0 ? "+" : "", b2);
-	snprintf(line + l, n - l, "  %-24s", note);
-}
-
 void
 act_data_table(struct app *a)
 {
@@ -512,49 +415,4 @@ fitov_key(struct app *a, int ch)
 		if (ch == 'F')
 			act_fit(a);
 	}
-}
-
-void
-fitov_draw(const struct app *a)
-{
-	const struct fitov *f = a->fitov;
-	int h = a->L.lines - 4, w = a->L.cols - 6, y;
-	struct rect in;
-	char line[512], what[320], m[32], s[32], dlt[32];
-
-	if (f == NULL || h < 6 || w < 40)
-		return;
-	if (w > 96)
-		w = 96;
-	describe(f, what, sizeof what);
-	in = box_draw(2, (a->L.cols - w) / 2, h, w, " measured against simulated (M) ");
-	y = in.y;
-	tui_puts(y++, in.x, in.w, what, A_BOLD);
-	if (f->sim_err[0])
-		tui_puts(y++, in.x, in.w, f->sim_err, A_BOLD);
-	else if (f->last[0])
-		tui_puts(y++, in.x, in.w, f->last, 0);
-	/* a recording: the clicks not taken as impacts, and why (x on the rec strip) */
-	for (size_t k = 0; k < f->rec.ndrop && k < 3 && y < in.y + in.h - 4; k++) {
-		hb_units_format(f->rec.drop[k].t, hb_unit_time, 5, m, sizeof m);
-		snprintf(line, sizeof line, "dropped (x) at %s of the recording: %s", m, f->rec.drop[k].why);
-		tui_puts(y++, in.x, in.w, line, A_DIM);
-	}
-	if (f->rec.ndrop > 3 && y < in.y + in.h - 4) {
-		snprintf(line, sizeof line, "... and %zu more clicks dropped", f->rec.ndrop - 3);
-		tui_puts(y++, in.x, in.w, line, A_DIM);
-	}
-	snprintf(line, sizeof line, "%5s %-6s %12s %12s %12s", "row", "obs",
-	         f->d.kind == HB_FIT_SEQUENCE ? "data t-t0" : "data", "simulated", "sim - data");
-	tui_puts(y++, in.x, in.w, line, A_UNDERLINE);
-	for (int k = f->top; k < (int)f->np && y < in.y + in.h - 1; k++) {
-		fmt_obs(f->obs[k], f->meas[k], m, sizeof m);
-		fmt_obs(f->obs[k], f->sim_valid ? f->sim[k] : NAN, s, sizeof s);
-		fmt_obs(f->obs[k], f->sim_valid ? f->sim[k] - f->meas[k] : NAN, dlt, sizeof dlt);
-		snprintf(line, sizeof line, "%5d %-6s %12s %12s %12s", f->row[k],
-		         hb_fit_obs_name(f->obs[k]), m, s, dlt);
-		tui_puts(y++, in.x, in.w, line, 0);
-	}
-	tui_puts(in.y + in.h - 1, in.x, in.w,
-	         "Up/Down scroll, F fits, any other key closes", A_DIM);
 }

@@ -16,49 +16,6 @@
 #include "tui.h"
 #include "units.h"
 
-/* The mark at the end of a text cut to its room: an ellipsis, or > without UTF-8. */
-const char *
-tui_cut_mark(void)
-{
-	return term_utf8() ? "\xe2\x80\xa6" : ">";
-}
-
-/*
- * Writes UTF-8 text at (y, x), at most maxw columns (one column per
- * character: our texts are ASCII plus Braille, which is one column wide).
- * Text cut to fit (more than blanks left over) ends in the cut mark in
- * its last column: nothing is cut without a mark.
- */
-void
-tui_puts(int y, int x, int maxw, const char *s, int attr)
-{
-	int cols = 0;
-	const unsigned char *p = (const unsigned char *)s, *start = p, *last = p, *rest;
-
-	if (y < 0 || y >= LINES || x >= COLS || maxw <= 0)
-		return;
-	if (x + maxw > COLS)
-		maxw = COLS - x;
-	while (*p && cols < maxw) {
-		last = p;
-		p++;
-		while ((*p & 0xC0) == 0x80)
-			p++;
-		cols++;
-	}
-	for (rest = p; *rest == ' '; rest++)
-		;
-	attron(attr);
-	if (*rest != 0 && cols > 0) {
-		/* cut: the last column shows the mark instead of its character */
-		mvaddnstr(y, x, (const char *)start, (int)(last - start));
-		mvaddstr(y, x + cols - 1, tui_cut_mark());
-	} else {
-		mvaddnstr(y, x, (const char *)start, (int)(p - start));
-	}
-	attroff(attr);
-}
-
 static const char *
 state_name(const struct app *a, char *buf, size_t n)
 {
@@ -93,7 +50,7 @@ readout_draw(const struct app *a)
 	const struct hb_arc *arc = hb_sim_arc(a->sim);
 	const struct rect *r = &a->L.readout;
 	const struct hb_arc_sample *s;
-	char f[9][96], tb[48], vb[32], line[512];
+	char f[10][96], tb[48], vb[32], line[512];
 	int sig, nf = 0, row = 0, col = 0;
 
 	if (r->h < 1 || hb_arc_len(arc) == 0)
@@ -119,6 +76,20 @@ readout_draw(const struct app *a)
 	snprintf(f[nf++], sizeof f[0], "t=%s", tb);
 	snprintf(f[nf++], sizeof f[0], "j=%ld", s->j);
 	snprintf(f[nf++], sizeof f[0], "q_c=%d", s->q);
+	/* error bars (E): the selected collision's e, as many digits as its bar allows
+	 * (before the sample's values: a narrow readout leaves those out first) */
+	if (errbar_on(a) && a->table_sel >= 0 && a->table_sel < app_ncollisions(a)) {
+		struct hb_collision live;
+		const struct hb_collision *c = app_collision(a, a->table_sel, &live);
+		const struct hb_collision *d = c != NULL ? errbar_find(a, c->i) : NULL;
+
+		if (d != NULL) {
+			char e[80];
+
+			errbar_format("e", c->e, d->e, e, sizeof e);
+			snprintf(f[nf++], sizeof f[0], "coll %ld: %s", c->i, e);
+		}
+	}
 	hb_units_format(s->x, hb_unit_length, 4, vb, sizeof vb);
 	snprintf(f[nf++], sizeof f[0], "x=%s", vb);
 	hb_units_format(s->v, hb_unit_velocity, 4, vb, sizeof vb);
@@ -204,12 +175,14 @@ pane_status_draw(const struct app *a)
 		snprintf(tb, sizeof tb, "-");
 	hb_units_format(a->speed, hb_unit_none, 2, sp, sizeof sp);
 	{
-		char tail[256], st[48];
+		char tail[256], st[48], eb[48];
 		int room;
-		snprintf(tail, sizeof tail, " %s t=%s j=%ld q_c=%d coll %zu x%s%s %s %s",
+		errbar_state(a, eb, sizeof eb);
+		snprintf(tail, sizeof tail, " %s t=%s j=%ld q_c=%d coll %zu x%s%s %s %s%s%s",
 		         hb_sim_scene(a->sim)->law->name, tb, s ? s->j : 0L, s ? s->q : 0,
 		         hb_sim_ncollisions(a->sim), sp, a->in_slow ? " slow" : "",
-		         a->playing ? "playing" : "paused", state_name(a, st, sizeof st));
+		         a->playing ? "playing" : "paused", state_name(a, st, sizeof st),
+		         eb[0] ? " " : "", eb);
 		room = r->w - (int)strlen(tail) - 1;
 		if (room < 8)
 			room = 0; /* a narrow terminal: the run's state before the preset's name */

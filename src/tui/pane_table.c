@@ -136,6 +136,33 @@ fit_row(char *line, size_t size, const int *ends, int n, int w, int header)
 	snprintf(line + keep, size - (size_t)keep, "%*s%s", w - 1 - keep, "", tui_cut_mark());
 }
 
+/*
+ * The error bars of a collision (E), in the table's columns and scales:
+ * "+-" in the index column, each bar to one digit, "-" where none.
+ */
+static void
+bars_row(const struct hb_collision *d, const struct hb_collision_column *const *cols,
+         const int *width, const double *scale, int ncol, char *line, size_t size, int *ends)
+{
+	char cell[64], w[80];
+
+	line[0] = 0;
+	for (int k = 0; k < ncol; k++) {
+		double v = cols[k]->index ? NAN : hb_collision_value(d, cols[k]);
+
+		if (cols[k]->index)
+			snprintf(cell, sizeof cell, "+-");
+		else if (!isfinite(v))
+			snprintf(cell, sizeof cell, "-");
+		else
+			snprintf(cell, sizeof cell, "%.0e", v / scale[k]);
+		snprintf(w, sizeof w, "%*s", width[k], cell);
+		strncat(line, w, size - strlen(line) - 1);
+		ends[k] = (int)strlen(line);
+	}
+	strncat(line, "  error bars (E)", size - strlen(line) - 1);
+}
+
 void
 pane_table_draw(const struct app *a)
 {
@@ -147,8 +174,9 @@ pane_table_draw(const struct app *a)
 	double scale[NCOL_MAX], mag[NCOL_MAX];
 	char unit[NCOL_MAX][16], line[512], cell[64];
 	int ends[NCOL_MAX + 1];
-	int k, focused = a->focus == FOCUS_TABLE;
+	int k, focused = a->focus == FOCUS_TABLE, below = 0;
 	long at = -1;
+	const struct hb_collision *bars = NULL;
 	const struct hb_arc *arc = hb_sim_arc(a->sim);
 	struct hb_collision live;
 
@@ -196,9 +224,15 @@ pane_table_draw(const struct app *a)
 	fit_row(line, sizeof line, ends, ncol, r->w, 1);
 	tui_puts(r->y, r->x, r->w, line, A_BOLD | (focused ? A_UNDERLINE : 0));
 
-	/* scroll so the selection is visible */
+	/* scroll so the selection is visible (and its error bars, E, under it) */
 	if (sel >= n)
 		sel = n - 1;
+	if (sel >= 0 && rows > 2) {
+		const struct hb_collision *c = app_collision(a, sel, &live);
+		bars = c != NULL && c->complete ? errbar_find(a, c->i) : NULL;
+	}
+	if (bars != NULL)
+		rows--;
 	top = layout_scroll(a->table_top, sel, rows, n);
 	for (i = top; i < n && i < top + rows; i++) {
 		const struct hb_collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
@@ -257,7 +291,13 @@ pane_table_draw(const struct app *a)
 		if (!c->complete && a->colour)
 			attr |= COLOR_PAIR(PAIR_CONTACT);
 		fit_row(line, sizeof line, ends, ncol, r->w, 0);
-		tui_puts(r->y + 1 + (int)(i - top), r->x, r->w, line, attr);
+		tui_puts(r->y + 1 + below + (int)(i - top), r->x, r->w, line, attr);
+		if (i == sel && bars != NULL) {
+			bars_row(bars, cols, width, scale, ncol, line, sizeof line, ends);
+			fit_row(line, sizeof line, ends, ncol, r->w, 0);
+			below = 1;
+			tui_puts(r->y + 1 + below + (int)(i - top), r->x, r->w, line, A_DIM);
+		}
 	}
 	if (n == 0)
 		tui_puts(r->y + 1, r->x, r->w, "  (no collision yet)", A_DIM);

@@ -122,8 +122,7 @@ pickers_key(struct app *a, int ch)
 	case 'G':
 		a->pick_sel = n - 1;
 		break;
-	case KEY_RESIZE:
-		app_relayout(a);
+	case KEY_RESIZE: /* app_key lays the screen out again before a picker sees a key */
 		break;
 	case 27:
 	case 'q':
@@ -133,14 +132,12 @@ pickers_key(struct app *a, int ch)
 	case '\r':
 	case KEY_ENTER:
 		a->overlay = OV_NONE;
-		if (a->pick_sel < 0 || a->pick_sel >= n)
+		if (a->pick_sel < 0 || a->pick_sel >= n || a->pick_done == NULL)
 			break;
-		if (kind == OV_PRESET) {
-			snprintf(name, sizeof name, "%s", a->presets[a->pick_sel].path);
-			app_open_preset(a, name);
-		} else {
-			app_set_law(a, hb_law_list()[a->pick_sel]->name);
-		}
+		/* the opener's function takes the choice: the picker calls no mode by name */
+		snprintf(name, sizeof name, "%s", kind == OV_PRESET ? a->presets[a->pick_sel].path
+		                                                    : hb_law_list()[a->pick_sel]->name);
+		a->pick_done(a, name);
 		break;
 	default:
 		break;

@@ -2,7 +2,9 @@
 /*
  * prompt.c - the one-line prompt on the message line: a value to type, an
  * export name, a parameter to search for.  Keys typed into it are text
- * (UTF-8 as it arrives) and line editing, not bindings.
+ * (UTF-8 as it arrives) and line editing, not bindings.  What it is for
+ * is its opener's: the prompt reports Enter, Esc and each edit to the
+ * function given to prompt_open, and calls no mode by name.
  */
 #include <curses.h>
 #include <stdarg.h>
@@ -12,7 +14,7 @@
 #include "tui.h"
 
 void
-prompt_open(struct app *a, int kind, const char *text, const char *fmt, ...)
+prompt_open(struct app *a, int kind, prompt_fn *done, const char *text, const char *fmt, ...)
 {
 	va_list ap;
 
@@ -21,6 +23,7 @@ prompt_open(struct app *a, int kind, const char *text, const char *fmt, ...)
 	va_end(ap);
 	a->overlay = OV_PROMPT;
 	a->prompt_kind = kind;
+	a->prompt_done = done;
 	snprintf(a->prompt_buf, sizeof a->prompt_buf, "%s", text);
 	a->prompt_pos = strlen(a->prompt_buf);
 	a->prompt_fresh = a->prompt_buf[0] != 0;
@@ -105,30 +108,22 @@ edit_key(struct app *a, int ch)
 void
 prompt_key(struct app *a, int ch)
 {
+	prompt_fn *done = a->prompt_done;
+
 	if (ch == 27) {
 		a->overlay = OV_NONE;
-		if (a->prompt_kind == PROMPT_EDIT)
-			a->branch_armed = 0;
 		app_msg(a, 0, "cancelled");
-		if (a->prompt_kind == PROMPT_SWEEP)
-			sweep_prompt_done(a, "", 1);
+		if (done != NULL)
+			done(a, "", PROMPT_CANCEL);
 	} else if (ch == '\n' || ch == '\r' || ch == KEY_ENTER) {
 		char buf[256];
 		snprintf(buf, sizeof buf, "%s", a->prompt_buf);
 		a->overlay = OV_NONE;
-		if (a->prompt_kind == PROMPT_EDIT)
-			edit_value(a, a->prompt_key, buf);
-		else if (a->prompt_kind == PROMPT_SEARCH)
-			search_do(a, buf, 1);
-		else if (a->prompt_kind == PROMPT_DATA || a->prompt_kind == PROMPT_FIT)
-			fitov_prompt_done(a, buf);
-		else if (a->prompt_kind == PROMPT_SWEEP)
-			sweep_prompt_done(a, buf, 0);
-		else
-			export_do(a, buf);
+		if (done != NULL)
+			done(a, buf, PROMPT_ENTER);
 	} else {
 		edit_key(a, ch);
+		if (a->overlay == OV_PROMPT && done != NULL)
+			done(a, a->prompt_buf, PROMPT_TYPED);
 	}
-	if (a->overlay == OV_PROMPT && a->prompt_kind == PROMPT_SEARCH)
-		search_do(a, a->prompt_buf, 0);
 }

@@ -275,6 +275,13 @@ act_restart(struct app *a)
 	app_msg(a, 0, "restarted from t = 0");
 }
 
+/* The preset picker's report: Enter opens that preset (its path). */
+static void
+preset_chosen(struct app *a, const char *path)
+{
+	app_open_preset(a, path);
+}
+
 void
 act_preset(struct app *a)
 {
@@ -298,6 +305,7 @@ act_preset(struct app *a)
 		return;
 	}
 	a->overlay = OV_PRESET;
+	a->pick_done = preset_chosen;
 	a->pick_sel = a->pick_top = 0;
 	for (int i = 0; i < n; i++)
 		if (strcmp(a->presets[i].name, a->preset) == 0)
@@ -305,6 +313,14 @@ act_preset(struct app *a)
 }
 
 /* ---- export ------------------------------------------------------------ */
+
+/* The export prompt's report: Enter exports under that base name. */
+static void
+export_prompt_done(struct app *a, const char *text, int how)
+{
+	if (how == PROMPT_ENTER)
+		export_do(a, text);
+}
 
 void
 act_export(struct app *a)
@@ -318,7 +334,7 @@ act_export(struct app *a)
 	if (getcwd(cwd, sizeof cwd) == NULL)
 		snprintf(cwd, sizeof cwd, ".");
 	snprintf(base, sizeof base, "%.40s-%s", a->preset, stamp);
-	prompt_open(a, PROMPT_EXPORT, base, "export to %s/BASE-trace.csv, -collisions.csv, .preset; BASE",
+	prompt_open(a, PROMPT_EXPORT, export_prompt_done, base, "export to %s/BASE-trace.csv, -collisions.csv, .preset; BASE",
 	            cwd);
 }
 
@@ -331,36 +347,6 @@ how_written(const struct hb_atomic_target *t)
 	if (t->via_link)
 		return t->how == HB_ATOMIC_REPLACE ? " (through a link, replacing its target)" : " (through a link)";
 	return t->how == HB_ATOMIC_REPLACE ? " (replaced the existing file)" : "";
-}
-
-/* 1 if a file (or a link, even dangling) is at path: an export must not replace it unasked. */
-static int
-taken(const char *path)
-{
-	struct stat st;
-
-	return lstat(path, &st) == 0 && !S_ISCHR(st.st_mode) && !S_ISFIFO(st.st_mode);
-}
-
-int
-tui_unused_name(const char *path, char *out, size_t n)
-{
-	const char *slash = strrchr(path, '/');
-	const char *dot = strrchr(slash != NULL ? slash + 1 : path, '.');
-	int stem = dot != NULL && dot != (slash != NULL ? slash + 1 : path)
-	           ? (int)(dot - path) : (int)strlen(path);
-
-	if (!taken(path)) {
-		snprintf(out, n, "%s", path);
-		return 0;
-	}
-	for (int k = 2; k < 1000; k++) {
-		if ((size_t)snprintf(out, n, "%.*s-%d%s", stem, path, k, path + stem) >= n)
-			return -1;
-		if (!taken(out))
-			return 1;
-	}
-	return -1;
 }
 
 /*
@@ -388,7 +374,7 @@ export_do(struct app *a, const char *base0)
 		snprintf(trace, sizeof trace, "%s-trace.csv", base);
 		snprintf(coll, sizeof coll, "%s-collisions.csv", base);
 		snprintf(scene, sizeof scene, "%s.preset", base);
-		if (!taken(trace) && !taken(coll) && !taken(scene))
+		if (!tui_path_taken(trace) && !tui_path_taken(coll) && !tui_path_taken(scene))
 			break;
 		if (k >= 1000) {
 			app_msg(a, 1, "export failed, nothing written: %.100s-2 ... -999 are all taken; "

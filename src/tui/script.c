@@ -319,8 +319,6 @@ bad:
 
 /* ---- playing ------------------------------------------------------------------- */
 
-static int live;   /* playing on the real screen */
-
 /* What the footer says during a demo on the real screen (app.demo_hint). */
 static const char hint_playing[] = "demo: any key pauses, q quits";
 static const char hint_paused[] = "demo paused: any key resumes, q quits";
@@ -368,7 +366,7 @@ frame(struct app *a)
 {
 	int ch;
 
-	if (!live)
+	if (!a->script_live)
 		return 0;
 	app_draw(a);
 	if ((ch = getch()) == ERR || ch == KEY_MOUSE)
@@ -395,7 +393,7 @@ wait_ms(struct app *a, double ms)
 
 	while (!term_signalled() && !a->quit && (clock_seconds(CLOCK_MONOTONIC) - t0) * 1e3 < ms) {
 		int computing = hb_sim_end(a->sim) == HB_SIM_RUNNING;
-		if (!app_tick(a) && !live)
+		if (!app_tick(a) && !a->script_live)
 			break;
 		t0 += frame(a);
 		if (!computing)
@@ -409,7 +407,7 @@ wait_key(struct app *a)
 {
 	int ch;
 
-	if (!live)
+	if (!a->script_live)
 		return;
 	a->demo_hint = hint_key;
 	while (!term_signalled() && !a->quit) {
@@ -470,14 +468,14 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 
 	if (script_load(path, &sc, msg, n) != 0)
 		return 2;
-	live = isatty(STDIN_FILENO) && isatty(STDOUT_FILENO);
-	if (live ? term_begin(msg, n) != 0 : term_begin_script(80, 24, msg, n) != 0) {
+	a->script_live = isatty(STDIN_FILENO) && isatty(STDOUT_FILENO);
+	if (a->script_live ? term_begin(msg, n) != 0 : term_begin_script(80, 24, msg, n) != 0) {
 		script_free(&sc);
 		return 1;
 	}
 	a->braille = term_utf8() && !a->opt->ascii;
-	a->colour = live ? term_colour() : 0;
-	if (live) {
+	a->colour = a->script_live ? term_colour() : 0;
+	if (a->script_live) {
 		timeout(0);
 		a->demo_hint = hint_playing;
 	}
@@ -529,7 +527,7 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 			break;
 		}
 		case CMD_SIZE:
-			if (!live) {
+			if (!a->script_live) {
 				resizeterm(c->lines, c->cols);
 				app_key(a, KEY_RESIZE);
 			}
@@ -543,7 +541,7 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 		if (status != 0)
 			break;
 	}
-	if (live && status == 0)
+	if (a->script_live && status == 0)
 		the_end(a);
 	script_free(&sc);
 	term_end();

@@ -34,37 +34,7 @@
 
 #define SV_DEFAULT_N 40
 
-const char *
-sv_obs_unit(int obs)
-{
-	if (obs >= HB_CURVE_RUN && obs < HB_CURVE_COUNT) /* the run observables' table */
-		return hb_observables[obs - HB_CURVE_RUN].unit[0] ? hb_observables[obs - HB_CURVE_RUN].unit
-		                                                  : NULL;
-	switch (obs) {
-	case HB_CURVE_VI: return "m/s";
-	case HB_CURVE_XCR: return "m";
-	default: return NULL;
-	}
-}
-
-struct hb_unit_dim
-sv_obs_dim(int obs)
-{
-	if (obs >= HB_CURVE_RUN && obs < HB_CURVE_COUNT)
-		return *hb_observables[obs - HB_CURVE_RUN].dim;
-	return obs == HB_CURVE_VI ? hb_unit_velocity : obs == HB_CURVE_XCR ? hb_unit_length
-	                                                                  : hb_unit_none;
-}
-
-double
-sv_current_y(const struct app *a, int obs, long coll)
-{
-	/* a value of collision i is final once it completed; the others once the run ended */
-	if (obs != HB_CURVE_E && obs != HB_CURVE_VI && obs != HB_CURVE_XCR
-	    && (hb_sim_end(a->sim) == HB_SIM_RUNNING || hb_sim_end(a->sim) == HB_SIM_END_FAIL))
-		return NAN;
-	return hb_sweep_observe(a->sim, obs, coll);
-}
+static prompt_fn sweep_prompt_done;
 
 static void
 curve_drop(struct sv_curve *k)
@@ -171,7 +141,7 @@ static void
 open_range_prompt(struct app *a)
 {
 	a->sv->prompt = SV_PROMPT_RANGE;
-	prompt_open(a, PROMPT_SWEEP, a->sv->spec, "sweep %s over FROM:TO:N[:log] or V1,V2,...",
+	prompt_open(a, PROMPT_SWEEP, sweep_prompt_done, a->sv->spec, "sweep %s over FROM:TO:N[:log] or V1,V2,...",
 	            a->sv->key);
 }
 
@@ -207,14 +177,16 @@ act_sweep(struct app *a)
 	open_range_prompt(a);
 }
 
-void
-sweep_prompt_done(struct app *a, const char *text, int cancelled)
+/* The range and export prompts' report (prompt_open): Enter starts or writes, Esc cancels. */
+static void
+sweep_prompt_done(struct app *a, const char *text, int how)
 {
+	int cancelled = how == PROMPT_CANCEL;
 	struct sweep_view *v = a->sv;
 	char path[600], msg[512];
 	int renamed;
 
-	if (v == NULL)
+	if (v == NULL || how == PROMPT_TYPED)
 		return;
 	if (cancelled) {
 		if (v->cur.c == NULL && v->npins == 0)
@@ -379,7 +351,7 @@ sweep_view_key(struct app *a, int ch)
 		snprintf(def, sizeof def, "%s-%s-%s.csv", a->preset, v->key,
 		         hb_sweep_observable_name(v->obs));
 		v->prompt = SV_PROMPT_EXPORT;
-		prompt_open(a, PROMPT_SWEEP, def, "export the curve as CSV to");
+		prompt_open(a, PROMPT_SWEEP, sweep_prompt_done, def, "export the curve as CSV to");
 		break;
 	case '?':
 	case KEY_F(1):

@@ -4,7 +4,8 @@
  * observable over one parameter, computed by background threads
  * (hb_sweep_curve_start), with pinned curves to compare laws.
  *
- * sweep_view.c owns the state and its keys; pane_sweep.c draws it.
+ * sweep_view.c owns the state and its keys; pane_sweep.c draws it;
+ * sweep_obs.c has the observables' units and the current run's value.
  */
 #ifndef HYBOUNCE_SWEEP_VIEW_H
 #define HYBOUNCE_SWEEP_VIEW_H

@@ -5,8 +5,16 @@
  * app.c owns the loop; a key becomes an action (keys.c) and the action a
  * function (actions.c) in the file that owns that part of the state:
  * nav.c, playback.c, edit.c, runs.c, log.c, mouse.c.  The pane_*.c files
- * only read the state and draw it.  No file calls back into app.c except
- * through app_msg (log.c) and app_relayout.
+ * only read the state and draw it.  Calls go one way, from the loop and
+ * the dispatch down to the modes and the panes: a mode reports through
+ * app_msg (log.c), lays the screen out again with app_relayout
+ * (relayout.c), and a prompt or a picker reports to the function its
+ * opener gave (prompt_fn, pick_fn); the shared primitives are draw.c
+ * (text, boxes, wrapping), cursor.c (the cursor and the run's
+ * collisions), names.c (export names), fitov_draw.c and sweep_obs.c.
+ * tests/cli/calls.sh measures the cycles of calls left among the files
+ * (nm over the objects) against tests/cli/calls.allow, empty now: the
+ * loop (app.c) and a script (script.c) both play frames (frame.c).
  *
  * The cursor is a sample index into the current run's arc (always valid:
  * < hb_arc_len); tcur is the playback time it follows while playing.
@@ -29,6 +37,17 @@ enum overlay { OV_NONE = 0, OV_HELP, OV_LAW, OV_PRESET, OV_PROMPT, OV_LOG };
 enum { OV_FIT = 16 };           /* overlay_fit.c: measured against simulated */
 enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH, PROMPT_SWEEP };
 enum { PROMPT_DATA = 16, PROMPT_FIT };  /* overlay_fit.c */
+
+/*
+ * How a prompt reports (prompt.c calls the function its opener gave, never
+ * a mode by name): PROMPT_ENTER with the text, PROMPT_CANCEL (Esc), or
+ * PROMPT_TYPED with the text after each key while it stays open.
+ */
+enum { PROMPT_ENTER = 0, PROMPT_CANCEL, PROMPT_TYPED };
+struct app;
+typedef void prompt_fn(struct app *a, const char *text, int how);
+/* How a picker (pickers.c) reports the entry chosen with Enter: a law's name, a preset's path. */
+typedef void pick_fn(struct app *a, const char *choice);
 
 struct pin {
 	struct hb_sim *sim;
@@ -64,6 +83,8 @@ struct app {
 	int nbranches;
 	int compare;                /* table differences against pin compare-1 (0: off) */
 	int present;                /* presentation mode (T): 1 dark, 2 light theme */
+	double tick_last;           /* app_tick: when the last frame was (monotonic s; 0: none) */
+	int script_live;            /* script.c: a script plays on the real screen */
 	int present_view, present_slowmo;   /* what T puts back */
 	double slow_t0, slow_td;    /* in slow motion: the contact's start and the duration it is timed by */
 	/*
@@ -97,6 +118,8 @@ struct app {
 	struct hb_preset_info *presets;
 	int npresets;
 	int prompt_kind;
+	prompt_fn *prompt_done;      /* what the open prompt reports to (prompt_open) */
+	pick_fn *pick_done;          /* what the open picker reports to (OV_LAW, OV_PRESET) */
 	char prompt_key[48];
 	char prompt_title[640];
 	char prompt_buf[256];
@@ -124,6 +147,7 @@ struct app {
 	unsigned long frames;
 	struct fitov *fitov;        /* measured data and the fit (overlay_fit.c), or NULL */
 	struct sweep_view *sv;      /* the sweep view (sweep_view.c), NULL until S */
+	struct errbar *errbar;      /* error bars (errbar.c), NULL until E */
 	struct app_physics phys;    /* physics.c */
 	struct plot_sums *psum;     /* plot_summary.c: what the plots draw of long arcs (NULL: none) */
 };
@@ -141,7 +165,7 @@ action_fn act_play, act_step_fwd, act_step_back, act_prev_jump, act_next_jump,
 	act_pin, act_unpin, act_compare, act_study3, act_export, act_log, act_present,
 	act_search_next, act_search_prev, act_undo, act_reset;
 
-/* nav.c: the cursor and the selections. */
+/* nav.c: the cursor and the selections (the first four: cursor.c). */
 void cursor_set(struct app *a, size_t i);
 void cursor_clamp(struct app *a);                 /* keeps it < hb_arc_len */
 long coll_at_cursor(const struct app *a);         /* the collision at the cursor, or -1 */
@@ -173,11 +197,13 @@ void export_do(struct app *a, const char *base);
  * STEM-2.EXT, STEM-3.EXT ... that is free (1): an export never replaces an
  * earlier one unasked.  -1 when none is (up to -999) or out is too small.
  */
-int tui_unused_name(const char *path, char *out, size_t n);
+int tui_unused_name(const char *path, char *out, size_t n);   /* names.c */
+/* 1 if a file (or a link, even dangling) is at path: an export must not replace it (names.c). */
+int tui_path_taken(const char *path);
 
 /* prompt.c */
-void prompt_open(struct app *a, int kind, const char *text, const char *fmt, ...)
-	__attribute__((format(printf, 4, 5)));
+void prompt_open(struct app *a, int kind, prompt_fn *done, const char *text, const char *fmt, ...)
+	__attribute__((format(printf, 5, 6)));
 void prompt_key(struct app *a, int ch);
 
 /* log.c: keys while the help or the log is open; the log's memory. */
@@ -185,7 +211,7 @@ void overlay_key(struct app *a, int ch);
 void log_free(struct app *a);
 const char *log_get(const struct app *a, int i);  /* i-th message, oldest first */
 void pane_log_draw(const struct app *a);
-/* An overlay box with a border on all four sides, cleared inside; returns the inner rect. */
+/* An overlay box with a border on all four sides, cleared inside; returns the inner rect (draw.c). */
 struct rect box_draw(int y, int x, int h, int w, const char *title);
 
 /* physics.c: checks the ended run; failures to the message line and the log. */
@@ -199,17 +225,23 @@ void mouse_event(struct app *a);
 /* A script's caption (log.c): on the message line wrapped, or large in a box; "" clears. */
 void app_caption(struct app *a, const char *text, int large);
 
-/* Cells of text drawing with clipping (pane_status.c): a cut text ends in tui_cut_mark(). */
+/* Cells of text drawing with clipping (draw.c): a cut text ends in tui_cut_mark(). */
 void
 tui_puts(int y, int x, int maxw, const char *s, int attr);
 const char *tui_cut_mark(void);
 /*
  * Draws s word-wrapped into rows of w columns from (y, x), at most maxrows
- * (log.c); a text that needs more ends in the cut mark.  Returns the rows
+ * (draw.c); a text that needs more ends in the cut mark.  Returns the rows
  * drawn.  tui_wrap_rows: the rows s needs at width w.
  */
 int tui_wrap_draw(int y, int x, int w, int maxrows, const char *s, int attr);
 int tui_wrap_rows(const char *s, int w);
+/*
+ * Wraps s into lines of at most w columns at blanks (a word longer than w
+ * is cut), calling out(ctx, k, line) for each (out may be NULL); lines
+ * after the first get indent blanks before them.  Returns the line count.
+ */
+int tui_wrap(const char *s, int w, int indent, void (*out)(void *, int, const char *), void *ctx);
 
 /* Drawing (pane_*.c): read the state, draw into stdscr. */
 void pane_plot_draw(const struct app *a);
@@ -226,7 +258,7 @@ action_fn act_figure;
 /* The abscissa (t, or j in the (t, j) view) under screen column x of the plots; -1 outside. */
 int plot_abscissa_at(const struct app *a, int x, double *t);
 
-/* The whole frame: erase, draw every pane, refresh. */
+/* The whole frame: erase, draw every pane, refresh (frame.c). */
 void
 app_draw(struct app *a);
 
@@ -235,14 +267,14 @@ void
 app_key(struct app *a, int ch);
 
 /*
- * One frame of work without input: computes for the frame's budget and
+ * One frame of work without input (frame.c): computes for the budget and
  * advances playback by the wall time since the last call.  Returns 1 while
  * something is still going on (computing or playing), 0 when idle.
  */
 int
 app_tick(struct app *a);
 
-/* Recomputes the layout from LINES/COLS. */
+/* Recomputes the layout from LINES/COLS (relayout.c). */
 void
 app_relayout(struct app *a);
 
@@ -284,11 +316,18 @@ script_dump(const char *path, char *msg, size_t n);
 /* overlay_fit.c: measured data over the scene, and the fit (D, M, F; --data). */
 struct canvas;
 action_fn act_data, act_data_table, act_fit;
+/* errbar.c: error bars (E) */
+action_fn act_errbar;
+int errbar_on(const struct app *a);
+int errbar_tick(struct app *a);                           /* 1 while the second run computes */
+void errbar_free(struct app *a);
+const struct hb_collision *errbar_find(const struct app *a, long i); /* NULL: none (yet) */
+void errbar_state(const struct app *a, char *buf, size_t n);          /* "" when off */
+void errbar_format(const char *name, double v, double err, char *buf, size_t n);
 int fitov_load(struct app *a, const char *path, char *msg, size_t n); /* 0 or -1 */
 int fitov_loaded(const struct app *a);
 void fitov_announce(struct app *a);                       /* what is loaded, to the message line */
 void fitov_free(struct app *a);
-void fitov_prompt_done(struct app *a, const char *text);  /* PROMPT_DATA, PROMPT_FIT */
 int fitov_tick(struct app *a);                            /* 1 while fitting */
 void fitov_key(struct app *a, int ch);                    /* keys of OV_FIT */
 void fitov_draw(const struct app *a);
@@ -309,7 +348,6 @@ int sweep_view_open(const struct app *a);
 void sweep_view_key(struct app *a, int ch);
 int sweep_view_tick(struct app *a);              /* polls the curves; 1 while computing */
 void sweep_view_free(struct app *a);
-void sweep_prompt_done(struct app *a, const char *text, int cancelled);
 void pane_sweep_draw(const struct app *a);
 
 #endif

@@ -33,8 +33,8 @@ fi
 keys a M
 if wait_for a 'measured against simulated \(M\)' 30 \
    && wait_for a "one bouncing sequence, $((rows + 1)) impacts" 10 \
-   && wait_for a " +1 t_e +$t1 ms +[0-9.]+ ms +-[0-9.]+ ms" 10 \
-   && [ "$(screen a | grep -Ec ' +[0-9]+ t_e +[0-9.]+ ms')" -eq "$rows" ]; then
+   && wait_for a " +1 +1 t_e 1 +$t1 ms +[0-9.]+ ms +-[0-9.]+ ms" 10 \
+   && [ "$(screen a | grep -Ec ' +[0-9]+ t_e [0-9]+ +[0-9.]+ ms')" -eq "$rows" ]; then
 	ok "M: every point of the sequence, measured ($t1 ms for row 1) against simulated"
 else
 	notok "M: every point of the sequence, measured against simulated" a
@@ -100,8 +100,8 @@ keys a -l "$TMP/drops.csv"
 keys a Enter
 keys a M
 if wait_for a 'drops\.csv: 2 separate drops, 2 points' 50 \
-   && wait_for a ' +0 e +0\.5200 +0\.[0-9]+ +-?0\.[0-9]+' 50 \
-   && wait_for a ' +1 e +0\.6000 +0\.[0-9]+ +-?0\.[0-9]+' 10; then
+   && wait_for a ' +0 +- +e +0\.5200 +0\.[0-9]+ +-?0\.[0-9]+' 50 \
+   && wait_for a ' +1 +- +e +0\.6000 +0\.[0-9]+ +-?0\.[0-9]+' 10; then
 	ok "D: separate drops, each e measured against simulated"
 else
 	notok "D: separate drops, each e measured against simulated" a
