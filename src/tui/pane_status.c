@@ -126,7 +126,10 @@ readout_draw(const struct app *a)
 		}
 		if (w > r->w)
 			continue;
-		snprintf(line + strlen(line), sizeof line - strlen(line), "%s%s", col ? " " : "", f[i]);
+		/* (w <= r->w, so the field fits the line; the return value is only a check) */
+		if (snprintf(line + strlen(line), sizeof line - strlen(line), "%s%s", col ? " " : "",
+		             f[i]) < 0)
+			break;
 		col += w;
 	}
 	tui_puts(r->y + row, r->x, r->w, line, 0);
