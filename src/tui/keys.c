@@ -76,7 +76,7 @@ static const struct key_binding table[] = {
 	{ 'f', 0, CTX_ANY, ACT_FIGURE, "f",
 	  "save the view as a figure, PRESET-view.png (the plots as shown, the pins, the cursor; -2, -3 ... never over an earlier one)", NULL },
 	{ 'S', 0, CTX_ANY, ACT_SWEEP, "S",
-	  "sweep view: the selected parameter over a range against e, v_i, x_c^r, collisions or t_pc, computed in the background", NULL },
+	  "sweep view: the selected parameter over a range against e, v_i, x_c^r, collisions or t_pc, computed in the background; m in it maps two keys", NULL },
 	{ 'm', 0, CTX_ANY, ACT_LOG, "m", "the message log: every message, whole", "log" },
 	{ 'T', 0, CTX_ANY, ACT_PRESENT, "T",
 	  "presentation: no table, large plots with thick lines and held scales, each contact formed in slow motion, looping; T again: the light theme, then off", NULL },

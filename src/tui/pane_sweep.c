@@ -161,6 +161,11 @@ pane_sweep_draw(const struct app *a)
 	char line[512], vx[48], vy[48];
 	const char *on = hb_sweep_observable_name(v->obs), *ou = sv_obs_unit(v->obs);
 
+	if (v->map.on) {
+		pane_map_draw(a);
+		return;
+	}
+
 	for (int r = top; r < bottom; r++) {
 		move(r, 0);
 		clrtoeol();
@@ -291,6 +296,6 @@ pane_sweep_draw(const struct app *a)
 	move(a->L.footer.y, 0);
 	clrtoeol();
 	tui_puts(a->L.footer.y, 0, COLS,
-	         "o:observable <>:collision r:range L:law b:boundaries p:pin e:export q:close ?:keys",
+	         "o:obs <>:collision r:range L:law b:bounds p:pin m:map e:export q:close ?:keys",
 	         A_REVERSE);
 }

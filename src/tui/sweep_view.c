@@ -17,6 +17,10 @@
  * would not share the axes).  Export writes the current curve's finished
  * points as CSV (hb_sweep_curve_write_csv: a temporary file renamed over the
  * name, so a failed export damages nothing).
+ *
+ * m: the 2-D map (sweep_map.c) of the observable over this key (across)
+ * and the key swept before it (up), each over its range; m again goes back
+ * to the curve.  Its export writes i1,i2,KEY1,KEY2,OBS the same way.
  */
 #include <curses.h>
 #include <math.h>
@@ -170,11 +174,59 @@ act_sweep(struct app *a)
 	}
 	pins_drop(a->sv);
 	curve_drop(&a->sv->cur);
+	sv_map_drop(&a->sv->map);
+	if (a->sv->key[0] != 0) {   /* the map's second key: the one swept before */
+		snprintf(a->sv->prevkey, sizeof a->sv->prevkey, "%s", a->sv->key);
+		snprintf(a->sv->prevspec, sizeof a->sv->prevspec, "%s", a->sv->spec);
+	}
 	snprintf(a->sv->key, sizeof a->sv->key, "%s", ki.key);
 	default_spec(&ki, a->sv->spec, sizeof a->sv->spec);
 	a->sv->base = *sc;
 	a->sv->open = 1;
 	open_range_prompt(a);
+}
+
+/* Writes the map's finished points to text, or to text-2.csv ... when it is taken. */
+static void
+map_export(struct app *a, const char *text)
+{
+	struct sv_map *m = &a->sv->map;
+	char path[600], msg[512];
+	int renamed = tui_unused_name(text, path, sizeof path);
+
+	if (renamed < 0) {
+		app_msg(a, 1, "export failed, nothing written: %.200s and its -2 ... -999 names are "
+		        "taken; type another name", text);
+		return;
+	}
+	if (sv_map_write_csv(a->sv, path, msg, sizeof msg) != HB_OK) {
+		app_msg(a, 1, "export failed, nothing written: %s", msg);
+		return;
+	}
+	app_msg(a, renamed, "wrote %s (%ld of %ld x %ld points%s)%s%s%s", path, m->done, m->n1, m->n2,
+	        m->done < m->n1 * m->n2 ? ", still computing" : "", renamed ? "; " : "",
+	        renamed ? text : "", renamed ? " is an earlier export, kept" : "");
+}
+
+/* m: the map of this key against the one swept before, or back to the curve. */
+static void
+map_toggle(struct app *a)
+{
+	struct sweep_view *v = a->sv;
+	char msg[512];
+
+	if (v->map.on) {
+		v->map.on = 0;
+		app_msg(a, 0, "the curve (m: the map again, recomputed)");
+		return;
+	}
+	if (sv_map_start(v, jobs(), msg, sizeof msg) != 0) {
+		app_msg(a, 1, "map not started: %s", msg);
+		return;
+	}
+	app_msg(a, 0, "map: %s over %s = %s (across) and %s = %s (up), %ld x %ld points, row by row",
+	        hb_sweep_observable_name(v->obs), v->map.key1, v->map.spec1, v->map.key2,
+	        v->map.spec2, v->map.n1, v->map.n2);
 }
 
 /* The range and export prompts' report (prompt_open): Enter starts or writes, Esc cancels. */
@@ -208,6 +260,10 @@ sweep_prompt_done(struct app *a, const char *text, int how)
 		app_msg(a, 1, "export cancelled: empty name");
 		return;
 	}
+	if (v->prompt == SV_PROMPT_MAP_EXPORT) {
+		map_export(a, text);
+		return;
+	}
 	if (v->cur.c == NULL) {
 		app_msg(a, 1, "export: no curve (p pinned it; L or r computes a new one)");
 		return;
@@ -237,6 +293,10 @@ restart(struct app *a, int clear_pins)
 		app_msg(a, 0, "pins cleared (another observable)");
 	}
 	curve_start(a);
+	if (a->sv->map.on) {   /* the map follows the observable */
+		a->sv->map.on = 0;
+		map_toggle(a);
+	}
 }
 
 static void
@@ -281,47 +341,13 @@ pin(struct app *a)
 	        v->pin[v->npins - 1].label, v->npins);
 }
 
-void
-sweep_view_key(struct app *a, int ch)
+/* The keys that change the curve (not the map). */
+static void
+curve_key(struct app *a, int ch)
 {
 	struct sweep_view *v = a->sv;
-	char def[160];
 
 	switch (ch) {
-	case 27:
-	case 'q':
-	case 'S':
-		v->open = 0;
-		app_msg(a, 0, "sweep view closed (S reopens it; the curve keeps computing)");
-		break;
-	case KEY_F(10):
-		a->quit = 1;
-		break;
-	case KEY_MOUSE:
-		break;
-	case 'o':
-	case 'O':
-		v->obs = (v->obs + (ch == 'o' ? 1 : HB_CURVE_COUNT - 1)) % HB_CURVE_COUNT;
-		restart(a, 1);
-		break;
-	case '>':
-	case '.':
-	case '<':
-	case ',':
-		if (v->obs != HB_CURVE_E && v->obs != HB_CURVE_VI && v->obs != HB_CURVE_XCR) {
-			app_msg(a, 1, "< >: %s does not depend on a collision number (o: the observable)",
-			        hb_sweep_observable_name(v->obs));
-			break;
-		}
-		if (ch == '<' || ch == ',') {
-			if (v->coll == 0)
-				break;
-			v->coll--;
-		} else {
-			v->coll++;
-		}
-		restart(a, 1);
-		break;
 	case 'r':
 		open_range_prompt(a);
 		break;
@@ -347,7 +373,74 @@ sweep_view_key(struct app *a, int ch)
 		pins_drop(v);
 		app_msg(a, 0, "pins cleared");
 		break;
+	}
+}
+
+void
+sweep_view_key(struct app *a, int ch)
+{
+	struct sweep_view *v = a->sv;
+	char def[256];
+
+	switch (ch) {
+	case 27:
+	case 'q':
+	case 'S':
+		v->open = 0;
+		app_msg(a, 0, "sweep view closed (S reopens it; the curve keeps computing)");
+		break;
+	case KEY_F(10):
+		a->quit = 1;
+		break;
+	case KEY_MOUSE:
+		break;
+	case 'm':
+		map_toggle(a);
+		break;
+	case 'r':
+	case 'R':
+	case 'L':
+	case 'l':
+	case 'p':
+	case 'b':
+	case 'P':
+		if (v->map.on) {
+			app_msg(a, 1, "%c works on the curve: m goes back to it", ch);
+			break;
+		}
+		curve_key(a, ch);
+		break;
+	case 'o':
+	case 'O':
+		v->obs = (v->obs + (ch == 'o' ? 1 : HB_CURVE_COUNT - 1)) % HB_CURVE_COUNT;
+		restart(a, 1);
+		break;
+	case '>':
+	case '.':
+	case '<':
+	case ',':
+		if (v->obs != HB_CURVE_E && v->obs != HB_CURVE_VI && v->obs != HB_CURVE_XCR) {
+			app_msg(a, 1, "< >: %s does not depend on a collision number (o: the observable)",
+			        hb_sweep_observable_name(v->obs));
+			break;
+		}
+		if (ch == '<' || ch == ',') {
+			if (v->coll == 0)
+				break;
+			v->coll--;
+		} else {
+			v->coll++;
+		}
+		restart(a, 1);
+		break;
 	case 'e':
+		if (v->map.on) {
+			snprintf(def, sizeof def, "%s-%s-%s-%s.csv", a->preset, v->map.key1, v->map.key2,
+			         hb_sweep_observable_name(v->map.obs));
+			v->prompt = SV_PROMPT_MAP_EXPORT;
+			prompt_open(a, PROMPT_SWEEP, sweep_prompt_done, def, "export the map as CSV to");
+			break;
+		}
 		snprintf(def, sizeof def, "%s-%s-%s.csv", a->preset, v->key,
 		         hb_sweep_observable_name(v->obs));
 		v->prompt = SV_PROMPT_EXPORT;
@@ -356,7 +449,8 @@ sweep_view_key(struct app *a, int ch)
 	case '?':
 	case KEY_F(1):
 		app_msg(a, 0, "sweep keys: o/O observable, < > collision, r range, R from the current "
-		        "scene, L/l law, b boundaries, p pin, P unpin, e export CSV, q/Esc/S close");
+		        "scene, L/l law, b boundaries, p pin, P unpin, m map against the key swept before, "
+		        "e export CSV, q/Esc/S close");
 		break;
 	case 'L' & 0x1f: /* C-l */
 		clear();
@@ -384,6 +478,7 @@ sweep_view_tick(struct app *a)
 	if (v == NULL)
 		return 0;
 	busy |= curve_poll(&v->cur);
+	busy |= sv_map_tick(&v->map);
 	for (int i = 0; i < v->npins; i++)
 		busy |= curve_poll(&v->pin[i]);
 	return busy && v->open;
@@ -396,6 +491,7 @@ sweep_view_free(struct app *a)
 		return;
 	pins_drop(a->sv);
 	curve_drop(&a->sv->cur);
+	sv_map_drop(&a->sv->map);
 	free(a->sv);
 	a->sv = NULL;
 }

@@ -32,6 +32,30 @@ struct sv_curve {
 	int bloc[SV_MAX_BOUNDS]; /* 1: located (one lattice step), 0: bisecting */
 };
 
+/*
+ * m: the 2-D map, the observable over the view's key (across, its range)
+ * and the key swept before it (up, its range), computed one row at a time
+ * by a background curve (sweep_map.c; the pane is pane_map.c).
+ */
+struct sv_map {
+	int on;                  /* the view shows the map instead of the curve */
+	int obs;                 /* the observable (enum hb_sweep_observable) */
+	long coll;               /* and its collision */
+	char key1[48], key2[48]; /* across, up */
+	char spec1[160], spec2[160];
+	int log1, log2;
+	struct hb_sweep *rows;   /* key2's values: row j's scene */
+	long n1, n2;             /* grid size */
+	long row;                /* the row computing (n2: all done) */
+	long done, failed;       /* grid points finished, failed */
+	double *x1, *x2;         /* the keys' values, SI */
+	double *z;               /* n1 * n2, row-major (i2 * n1 + i1) */
+	int *st;                 /* HB_CURVE_* of each point */
+	struct hb_sweep_curve *c;   /* the row computing */
+	double *ry;
+	int *rst;
+};
+
 struct sweep_view {
 	int open;                /* the view covers the plots */
 	char key[48];            /* the parameter swept */
@@ -45,9 +69,27 @@ struct sweep_view {
 	int npins;
 	int prompt;              /* what the open prompt is for: SV_PROMPT_* */
 	int bounds;              /* b: locate the boundaries of the current curve */
+	char prevkey[48];        /* the key swept before this one (m: the map's second key) */
+	char prevspec[160];      /* and its range */
+	struct sv_map map;
 };
 
-enum { SV_PROMPT_RANGE = 1, SV_PROMPT_EXPORT };
+enum { SV_PROMPT_RANGE = 1, SV_PROMPT_EXPORT, SV_PROMPT_MAP_EXPORT };
+
+/* sweep_map.c: starts the map (0, or -1 with the reason in msg), polls it
+ * (1 while computing), writes it as CSV (i1,i2,KEY1,KEY2,OBS), frees it. */
+int
+sv_map_start(struct sweep_view *v, int jobs, char *msg, size_t n);
+int
+sv_map_tick(struct sv_map *m);
+int
+sv_map_write_csv(const struct sweep_view *v, const char *path, char *msg, size_t n);
+void
+sv_map_drop(struct sv_map *m);
+
+/* pane_map.c: draws the map and its legend. */
+void
+pane_map_draw(const struct app *a);
 
 /* SI base unit of an observable for axis labels ("m", "m/s", "s"), NULL for a plain number. */
 struct hb_unit_dim

@@ -1,0 +1,85 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The sweep view's 2-D map in tmux at 80x24, in ASCII: S sweeps the damping
+# c, then S on v0 sweeps v0; m maps e over v0 (across) and c (up), row by
+# row in the background; the legend gives each shade's range; e exports
+# the grid (i1,i2,KEY1,KEY2,OBS, one row per point) and a second export
+# keeps the first; m goes back to the curve; quitting exits 0.
+. "$(dirname "$0")/common.inc"
+
+start a 80 24 --ascii
+wait_for a ' finished$' 150
+# the first key: c, over 3 values
+keys a / ; keys a -l law.c ; keys a Enter
+wait_for a 'nudge\) law\.c:' 30
+keys a S
+wait_for a '^sweep law\.c over FROM:TO:N' 30
+keys a C-u ; keys a -l "2000:8000:3" ; keys a Enter
+wait_for a '^sweep: e of collision 0 against law\.c = 2000:8000:3 +3/3 done$' 300
+keys a m
+if wait_for a '^map not started: a map needs a second key' 30; then
+	ok "m with one key swept says how to choose the second"
+else
+	notok "m with one key swept says how to choose the second" a
+fi
+# the second key: v0, chosen as the first was
+keys a q
+wait_gone a '^sweep: e of' 30
+keys a / ; keys a -l v0 ; keys a Enter
+wait_for a 'nudge\) initial\.v0:' 30
+keys a S
+wait_for a '^sweep initial\.v0 over FROM:TO:N' 30
+keys a C-u ; keys a -l -- "-0.2 m/s:-1 m/s:4" ; keys a Enter
+wait_for a '^sweep: e of collision 0 against initial\.v0 = .* 4/4 done$' 300
+keys a m
+if wait_for a '^map: e of collision 0 over initial\.v0 \(across\) and law\.c \(up\) +12/12 done$' 300 \
+   && screen a | grep -q ' legend: e *$' \
+   && [ "$(screen a | grep -Ec ' [.:=+*#@-] [-0-9.e+]+\.\.[-0-9.e+]+ *$')" -eq 8 ] \
+   && screen a | grep -q '? no such value'; then
+	ok "m maps e over v0 and c; the legend gives each shade's range"
+else
+	notok "m maps e over v0 and c with its legend" a
+fi
+# the map's cells: shades of the ASCII ramp, nothing left blank once done
+if [ "$(screen a | sed -n '3,20p' | cut -c11-50 | grep -c '[.:=+*#@-]\{30\}')" -ge 10 ]; then
+	ok "the map's cells are drawn in ASCII shades"
+else
+	notok "the map's cells are drawn in ASCII shades" a
+fi
+keys a e
+wait_for a '^export the map as CSV to: steel-on-bitumen-initial\.v0-law\.c-e\.csv_$' 30
+keys a Enter
+f="$TMP/steel-on-bitumen-initial.v0-law.c-e.csv"
+if wait_for a '^wrote steel-on-bitumen-initial\.v0-law\.c-e\.csv \(12 of 4 x 3 points\)' 30 \
+   && [ "$(head -1 "$f")" = "i1,i2,initial.v0,law.c,e" ] \
+   && [ "$(wc -l < "$f")" -eq 13 ] \
+   && sed -n 2p "$f" | grep -q '^0,0,-0\.2[0-9]*,2000,' \
+   && sed -n 13p "$f" | grep -q '^3,2,-1,8000,'; then
+	ok "e exports the map as CSV: i1,i2,KEY1,KEY2,OBS, one row per grid point"
+else
+	notok "e exports the map as CSV" a
+	sed 's/^/# /' "$f"
+fi
+cp "$f" "$TMP/first.csv"
+keys a e
+wait_for a '^export the map as CSV to: ' 30
+keys a Enter
+if wait_for a '^wrote steel-on-bitumen-initial\.v0-law\.c-e-2\.csv \(12 of 4 x 3 points' 30 \
+   && cmp -s "$f" "$TMP/first.csv"; then
+	ok "a second export keeps the first (NAME-2.csv)"
+else
+	notok "a second export keeps the first" a
+fi
+keys a m
+if wait_for a '^sweep: e of collision 0 against initial\.v0' 30; then
+	ok "m goes back to the curve"
+else
+	notok "m goes back to the curve" a
+fi
+keys a F10
+if wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ]; then
+	ok "F10 leaves the explorer with the map, exit 0"
+else
+	notok "F10 leaves the explorer with the map, exit 0" a
+fi
+exit $((failed > 0))
