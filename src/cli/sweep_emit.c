@@ -200,43 +200,43 @@ slurm_max_array(void)
 	return v > 0 ? v : 0;
 }
 
-/* "0-3,7,9-12": the indices k - base of the shards todo[from, to). */
+/* "0-3,7,9-12": the indices k - base of the shards pending[from, to). */
 static void
-put_array_spec(FILE *f, const long *todo, long from, long to, long base)
+put_array_spec(FILE *f, const long *pending, long from, long to, long base)
 {
 	for (long i = from; i < to; ) {
 		long j = i;
 
-		while (j + 1 < to && todo[j + 1] == todo[j] + 1)
+		while (j + 1 < to && pending[j + 1] == pending[j] + 1)
 			j++;
 		if (i > from)
 			fputc(',', f);
 		if (j > i)
-			fprintf(f, "%ld-%ld", todo[i] - base, todo[j] - base);
+			fprintf(f, "%ld-%ld", pending[i] - base, pending[j] - base);
 		else
-			fprintf(f, "%ld", todo[i] - base);
+			fprintf(f, "%ld", pending[i] - base);
 		i = j + 1;
 	}
 }
 
 static int
-emit_slurm(const struct hb_sweep *sw, const char *self, const char *adir, const long *todo,
-           long ntodo, const struct sweep_emit_opts *e, char *msg, size_t n)
+emit_slurm(const struct hb_sweep *sw, const char *self, const char *adir, const long *pending,
+           long npending, const struct sweep_emit_opts *e, char *msg, size_t n)
 {
 	long ns = e->shards, max = e->max_array, narrays = 0;
 	char out[160], rest[96];
 
 	if (max <= 0 && (max = slurm_max_array()) <= 0) {
 		max = SLURM_DEFAULT_MAX_ARRAY;
-		if (ntodo > 0 && todo[ntodo - 1] >= max)
+		if (npending > 0 && pending[npending - 1] >= max)
 			fprintf(stderr, "sweep: scontrol does not answer here: arrays of at most "
 			        "%ld shards (Slurm's default MaxArraySize; --max-array N sets "
 			        "another)\n", max);
 	}
-	for (long i = 0; i < ntodo; ) {
+	for (long i = 0; i < npending; ) {
 		long j = i;
 
-		while (j < ntodo && todo[j] / max == todo[i] / max)
+		while (j < npending && pending[j] / max == pending[i] / max)
 			j++;
 		narrays++;
 		i = j;
@@ -251,16 +251,16 @@ emit_slurm(const struct hb_sweep *sw, const char *self, const char *adir, const 
 	       "# sbatch's SBATCH_* environment variables apply (options given here win).\n"
 	       "set -e\n"
 	       "ids=\n"
-	       "deps=\n", hb_sweep_npoints(sw), ns, ntodo, ns - ntodo, narrays,
+	       "deps=\n", hb_sweep_npoints(sw), ns, npending, ns - npending, narrays,
 	       narrays == 1 ? "" : "s", max);
 	snprintf(rest, sizeof rest, " --shard \"$k/%ld\" --jobs \"${SLURM_CPUS_PER_TASK:-1}\"", ns);
-	for (long i = 0; i < ntodo; ) {
-		long base = todo[i] / max * max, j = i;
+	for (long i = 0; i < npending; ) {
+		long base = pending[i] / max * max, j = i;
 
-		while (j < ntodo && todo[j] / max == todo[i] / max)
+		while (j < npending && pending[j] / max == pending[i] / max)
 			j++;
 		fputs("a=$(sbatch --parsable --job-name=hybounce-sweep --array=", stdout);
-		put_array_spec(stdout, todo, i, j, base);
+		put_array_spec(stdout, pending, i, j, base);
 		fputs(" \\\n    --ntasks=1 --cpus-per-task=1 ", stdout);
 		put_output(stdout, adir, e);
 		fputs(" \\\n    ", stdout);
@@ -292,7 +292,7 @@ nomem:
 }
 
 static void
-emit_parallel(const char *self, const char *adir, const long *todo, long ntodo,
+emit_parallel(const char *self, const char *adir, const long *pending, long npending,
               const struct sweep_emit_opts *e)
 {
 	/*
@@ -303,7 +303,7 @@ emit_parallel(const char *self, const char *adir, const long *todo, long ntodo,
 	 * and the folder reach the shards in the environment (--env for other
 	 * hosts), never in parallel's command text.
 	 */
-	if (ntodo > 0) {
+	if (npending > 0) {
 		fputs("HB_SWEEP_BIN=", stdout);
 		put_sq(stdout, self);
 		fputs(" HB_SWEEP_DIR=", stdout);
@@ -316,8 +316,8 @@ emit_parallel(const char *self, const char *adir, const long *todo, long ntodo,
 		}
 		printf(" '\"$HB_SWEEP_BIN\" sweep \"$HB_SWEEP_DIR/sweep.preset\" --jobs 1 --quiet "
 		       "--out \"$HB_SWEEP_DIR\" --shard {}/%ld' :::", e->shards);
-		for (long k = 0; k < ntodo; k++)
-			printf(" %ld", todo[k]);
+		for (long k = 0; k < npending; k++)
+			printf(" %ld", pending[k]);
 		fputs("; ", stdout);
 	}
 	put_sq(stdout, self);
@@ -332,7 +332,7 @@ sweep_emit(const struct hb_sweep *sw, const char *dir, const struct sweep_emit_o
 {
 	char self[PATH_MAX], adir[PATH_MAX], logs[PATH_MAX + 8];
 	unsigned char *done;
-	long *todo, ntodo = 0, ndone;
+	long *pending, npending = 0, ndone;
 	int rc;
 
 	if ((rc = hb_sweep_prepare_dir(sw, dir, msg, n)) != HB_OK)
@@ -347,31 +347,31 @@ sweep_emit(const struct hb_sweep *sw, const char *dir, const struct sweep_emit_o
 		return 1;
 	}
 	done = calloc((size_t)e->shards, 1);
-	todo = malloc((size_t)e->shards * sizeof *todo);
-	if (done == NULL || todo == NULL) {
+	pending = malloc((size_t)e->shards * sizeof *pending);
+	if (done == NULL || pending == NULL) {
 		free(done);
-		free(todo);
+		free(pending);
 		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 		return 1;
 	}
 	if ((ndone = hb_sweep_shards_done(sw, adir, e->shards, done, msg, n)) < 0) {
 		free(done);
-		free(todo);
+		free(pending);
 		return 1;
 	}
 	for (long k = 0; k < e->shards; k++)
 		if (!done[k])
-			todo[ntodo++] = k;
+			pending[npending++] = k;
 	if (ndone > 0)
 		fprintf(stderr, "sweep: %ld of %ld shards already done in %s; the %s runs the "
 		        "other %ld, then the merge\n", ndone, e->shards, dir,
-		        strcmp(e->kind, "slurm") == 0 ? "script" : "command line", ntodo);
+		        strcmp(e->kind, "slurm") == 0 ? "script" : "command line", npending);
 	if (strcmp(e->kind, "parallel") == 0)
-		emit_parallel(self, adir, todo, ntodo, e);
+		emit_parallel(self, adir, pending, npending, e);
 	else
-		rc = emit_slurm(sw, self, adir, todo, ntodo, e, msg, n);
+		rc = emit_slurm(sw, self, adir, pending, npending, e, msg, n);
 	free(done);
-	free(todo);
+	free(pending);
 	if (rc != 0)
 		return rc;
 	if (fflush(stdout) != 0 || ferror(stdout)) {

@@ -60,8 +60,8 @@ struct refine_state {
 	const struct hb_sweep *sw;
 	struct node *t;     /* open addressing, cap a power of 2 */
 	size_t cap, count;
-	long *todo;         /* the round's points to compute */
-	long ntodo, todo_cap;
+	long *pending;         /* the round's points to compute */
+	long npending, todo_cap;
 	int64_t jsize;      /* the journal's length */
 	int rfd;            /* the journal, to read blocks */
 	char *buf;
@@ -190,16 +190,16 @@ request(struct refine_state *r, long id, int level)
 	if ((x = node_add(r, id)) == NULL)
 		return HB_ENOMEM;
 	x->level = (signed char)level;
-	if (r->ntodo == r->todo_cap) {
+	if (r->npending == r->todo_cap) {
 		long nc = r->todo_cap ? 2 * r->todo_cap : 256;
-		long *nt = realloc(r->todo, (size_t)nc * sizeof *nt);
+		long *nt = realloc(r->pending, (size_t)nc * sizeof *nt);
 
 		if (nt == NULL)
 			return HB_ENOMEM;
-		r->todo = nt;
+		r->pending = nt;
 		r->todo_cap = nc;
 	}
-	r->todo[r->ntodo++] = id;
+	r->pending[r->npending++] = id;
 	return HB_OK;
 }
 
@@ -432,21 +432,21 @@ out:
 	return rc;
 }
 
-/* Computes the round's points (r->todo). */
+/* Computes the round's points (r->pending). */
 static int
 compute(struct refine_state *r, const struct hb_sweep_options *o, int fd, const char *jpath,
         struct hb_sweep_progress *pr, double t0, char *msg, size_t n)
 {
 	int rc;
 
-	if (r->ntodo == 0)
+	if (r->npending == 0)
 		return HB_OK;
 	/* in id order: the journal's order does not change the files */
-	qsort(r->todo, (size_t)r->ntodo, sizeof *r->todo, cmp_long);
-	pr->total += r->ntodo;
-	rc = sweep_compute(r->sw, o, fd, jpath, r->todo, r->ntodo, NULL, 0, 1, r->ntodo, pr, t0,
+	qsort(r->pending, (size_t)r->npending, sizeof *r->pending, cmp_long);
+	pr->total += r->npending;
+	rc = sweep_compute(r->sw, o, fd, jpath, r->pending, r->npending, NULL, 0, 1, r->npending, pr, t0,
 	                   got_block, r, msg, n);
-	r->ntodo = 0;
+	r->npending = 0;
 	return rc;
 }
 
@@ -609,7 +609,7 @@ out:
 	free(next);
 	free(e);
 	free(r.t);
-	free(r.todo);
+	free(r.pending);
 	free(r.buf);
 	return rc;
 }
