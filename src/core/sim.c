@@ -322,8 +322,10 @@ build(struct hb_sim *s, char *msg, size_t n)
 {
 	int q;
 
-	if (hbs_chain_bind(s))
-		return hb_status_set(msg, n, HB_ENOMEM, "out of memory for the chain");
+	if ((q = hbs_chain_bind(s)) != 0)
+		return q == HB_ENOMEM ? hb_status_set(msg, n, HB_ENOMEM, "out of memory for the chain")
+		                      : hb_status_set(msg, n, q, "the chain's scene names a body or "
+		                                      "interface it does not have");
 	for (q = 0; q < 2; q++)
 		s->stepper[q] = s->sc.run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : s->sc.run.stepper;
 	for (q = 0; q < 2; q++)

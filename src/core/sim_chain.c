@@ -25,6 +25,7 @@
  * every sample; another interface closing meanwhile stops the run.
  */
 #include "sim_impl.h"
+#include "scene_chain.h"
 
 /* Grows *p (of *cap elements of size sz) to n elements, zeroing the new ones. */
 static int
@@ -102,21 +103,40 @@ hbs_chain_bind(struct hb_sim *s)
 	s->k0 = k0;
 	s->nif = nbody - k0;
 	for (i = 0; i < nbody; i++) { /* the bodies' states are kept: only their constants change */
-		s->body[i].m = chain ? sc->d.m1 : i == 0 ? (full ? sc->d.m2 : sc->d.m1) : sc->d.m1;
-		s->body[i].l = chain && isfinite(sc->body[0].R) ? sc->body[0].R : 0.0;
-		s->body[i].a = -sc->loads.g;
-		s->body[i].Fe = -s->body[i].m * sc->loads.g;
+		struct body *b = &s->body[i];
+		struct scene_chain_body cb;
+
+		if (chain) {
+			if (scene_chain_body(sc, i, &cb) != HB_OK)
+				return HB_EINVAL;
+			b->m = cb.m;
+			b->l = cb.R;
+			b->Fe = cb.F;
+			b->a = cb.F / cb.m;
+			continue;
+		}
+		b->m = i == 0 ? (full ? sc->d.m2 : sc->d.m1) : sc->d.m1;
+		b->l = 0.0;
+		b->a = -sc->loads.g;
+		b->Fe = -b->m * sc->loads.g;
 	}
 	for (i = 0; i < s->nif; i++) {
 		I = &s->ifc[i];
-		I->law = sc->law;
-		I->par = sc->par;
-		I->ext = sc->ext;
 		I->Fer_at = chain ? chain_Fer : scene_Fer;
 		if (chain) {
+			struct scene_chain_iface ci;
+
+			if (scene_chain_iface(sc, k0 + i, &ci) != HB_OK)
+				return HB_EINVAL;
+			I->law = ci.law;
+			I->par = ci.par;
+			I->ext = ci.ext;
 			bind_chain_iface(s, I, k0 + i);
 			continue;
 		}
+		I->law = sc->law;
+		I->par = sc->par;
+		I->ext = sc->ext;
 		I->lo = full ? 0 : -1;
 		I->hi = full ? 1 : 0;
 		I->m = sc->d.m; /* m_lo m_hi / (m_lo + m_hi), as the scene derived it (m_hi on the floor) */
@@ -277,12 +297,14 @@ hbs_chain_reset(struct hb_sim *s)
 
 	for (i = 0; i < s->nbody; i++) {
 		struct body *b = &s->body[i];
+		struct scene_chain_body cb;
 
+		scene_chain_body(sc, i, &cb); /* cannot fail: hbs_chain_bind took every body */
 		if (i == 0)
-			y = sc->chain.floor ? b->l + sc->chain.spacing : 0.0;
+			y = sc->chain.floor ? b->l + cb.gap : 0.0;
 		else
-			y += s->body[i - 1].l + sc->chain.spacing + b->l;
-		body_set(b, 0.0, y, i == s->nbody - 1 ? sc->chain.v : 0.0);
+			y += s->body[i - 1].l + cb.gap + b->l;
+		body_set(b, 0.0, y, cb.v0);
 	}
 	for (i = 0; i < s->nif; i++) {
 		struct iface *J = &s->ifc[i];

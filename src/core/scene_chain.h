@@ -1,0 +1,35 @@
+/*
+ * A chain scene's bodies and interfaces, one at a time (docs/chains.md
+ * section 7): what the engine binds a chain from.  The scene stores a
+ * uniform chain compactly ([chain], [body1], [law], [striker]); these
+ * functions resolve, for one body or one interface, the value that applies
+ * to it (an override where the scene has one, the chain's otherwise), so
+ * that the engine never reads the scene's layout of a chain itself.
+ */
+#ifndef HB_SCENE_CHAIN_H
+#define HB_SCENE_CHAIN_H
+
+#include "hybounce/scene.h"
+#include "hybounce/status.h"
+
+struct scene_chain_body {
+	double m;   /* mass, kg */
+	double R;   /* half-length along the axis (radius), m; 0 when unknown */
+	double F;   /* applied force, constant (gravity m g included, signed along the axis), N */
+	double v0;  /* initial velocity, m/s */
+	double gap; /* initial gap below the body (to the body below, or the floor), m */
+};
+
+struct scene_chain_iface {
+	const struct hb_law_type *law;
+	const double *par; /* the law's parameters, in its table order (storage of the scene) */
+	int ext;           /* rule R1: 1 adhesive continuation, 0 clamped */
+};
+
+/* Body i (0 = body 1, the lowest; n - 1 the striker) of a chain scene. */
+int scene_chain_body(const struct hb_scene *sc, int i, struct scene_chain_body *out);
+
+/* Interface k (0 = the floor's, below body 1; k joins bodies k and k + 1). */
+int scene_chain_iface(const struct hb_scene *sc, int k, struct scene_chain_iface *out);
+
+#endif
