@@ -6,6 +6,7 @@
 #include "scene_chain.h"
 
 #include <math.h>
+#include <string.h>
 
 int
 scene_chain_body(const struct hb_scene *sc, int i, struct scene_chain_body *out)
@@ -26,7 +27,7 @@ scene_chain_iface(const struct hb_scene *sc, int k, struct scene_chain_iface *ou
 	if (sc->chain.n <= 0 || k < !sc->chain.floor || k >= sc->chain.n)
 		return HB_EINVAL;
 	out->law = sc->law;
-	out->par = sc->par;
+	memcpy(out->par, sc->par, sizeof out->par);
 	out->ext = sc->ext;
 	return HB_OK;
 }

@@ -22,7 +22,8 @@ struct scene_chain_body {
 
 struct scene_chain_iface {
 	const struct hb_law_type *law;
-	const double *par; /* the law's parameters, in its table order (storage of the scene) */
+	double par[HB_LAW_MAX_PARAMS]; /* the law's parameters, in its table order, as they
+	                                * apply to this interface (derived for its pair of bodies) */
 	int ext;           /* rule R1: 1 adhesive continuation, 0 clamped */
 };
 

@@ -129,7 +129,8 @@ hbs_chain_bind(struct hb_sim *s)
 			if (scene_chain_iface(sc, k0 + i, &ci) != HB_OK)
 				return HB_EINVAL;
 			I->law = ci.law;
-			I->par = ci.par;
+			memcpy(I->parv, ci.par, sizeof I->parv);
+			I->par = I->parv; /* set again at every bind: the array may have moved */
 			I->ext = ci.ext;
 			bind_chain_iface(s, I, k0 + i);
 			continue;

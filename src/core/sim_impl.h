@@ -85,7 +85,8 @@ struct body {
 
 struct iface {
 	const struct hb_law_type *law;
-	const double *par;      /* the law's parameters */
+	const double *par;      /* the law's parameters (a chain's: parv) */
+	double parv[HB_LAW_MAX_PARAMS]; /* a chain's: its own parameters (derived for its pair) */
 	int ext;                /* rule R1 continuation */
 	int lo, hi;             /* the bodies below and above (index into body[]; lo = -1: the floor) */
 	double m;               /* effective mass m_lo m_hi / (m_lo + m_hi) (m_hi on the floor) */
