@@ -218,14 +218,10 @@ hb_csv_write_collisions(const char *path, const struct hb_sim *s, char *msg, siz
 	return hb_atomic_write_with(path, fill_collisions, s, msg, n);
 }
 
-/* Writes fn's CSV to the stream f and flushes it (see csv.h). */
+/* After a writer returned e (errno is 0 before it): flushes f and reports (see csv.h). */
 static int
-stream_one(FILE *f, const struct hb_sim *s, rows_fn fn, char *msg, size_t n)
+stream_done(FILE *f, int e, char *msg, size_t n)
 {
-	int e;
-
-	errno = 0;
-	e = fn(f, s);
 	if (e == 0 && fflush(f) != 0)
 		e = errno != 0 ? errno : EIO;
 	if (e == 0)
@@ -235,6 +231,14 @@ stream_one(FILE *f, const struct hb_sim *s, rows_fn fn, char *msg, size_t n)
 	hb_status_set(msg, n, HB_EIO, "write error: %s", strerror(e));
 	errno = e;
 	return HB_EIO;
+}
+
+/* Writes fn's CSV to the stream f and flushes it (see csv.h). */
+static int
+stream_one(FILE *f, const struct hb_sim *s, rows_fn fn, char *msg, size_t n)
+{
+	errno = 0;
+	return stream_done(f, fn(f, s), msg, n);
 }
 
 int
@@ -253,19 +257,8 @@ int
 hb_csv_stream_collisions_err(FILE *f, const struct hb_sim *s,
                              const struct hb_error_estimate *err, char *msg, size_t n)
 {
-	int e;
-
 	errno = 0;
-	e = write_collisions_err(f, s, err);
-	if (e == 0 && fflush(f) != 0)
-		e = errno != 0 ? errno : EIO;
-	if (e == 0)
-		e = stream_err(f);
-	if (e == 0)
-		return HB_OK;
-	hb_status_set(msg, n, HB_EIO, "write error: %s", strerror(e));
-	errno = e;
-	return HB_EIO;
+	return stream_done(f, write_collisions_err(f, s, err), msg, n);
 }
 
 /* PATH with the extension of its last component replaced by ".preset". */
