@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "cnum.h" /* C-locale numbers (src/core) */
+#include "keys.h"
 #include "sweep_view.h"
 #include "term.h"
 #include "tui.h"
@@ -51,9 +52,10 @@ shade_of(double z, double lo, double hi)
 }
 
 void
-pane_map_draw(const struct app *a)
+pane_map_draw(const struct app *a, const struct mode *self)
 {
 	const struct sv_map *m = &a->sv->map;
+	char foot[256];
 	int top = a->L.status.y + 1, bottom = a->L.msg.y;      /* rows top .. bottom-1 */
 	int cw = COLS - MLM - LEGW - 1, ch = bottom - top - 2;  /* title, x axis */
 	double lo = INFINITY, hi = -INFINITY;
@@ -163,6 +165,6 @@ pane_map_draw(const struct app *a)
 
 	move(a->L.footer.y, 0);
 	clrtoeol();
-	tui_puts(a->L.footer.y, 0, COLS, "o:observable <>:collision m:curve e:export CSV q:close ?:keys",
-	         A_REVERSE);
+	/* the sweep view's keys on the map, from its table */
+	tui_puts(a->L.footer.y, 0, COLS, keys_footer(self, CTX_MAP, foot, sizeof foot, COLS - 1), A_REVERSE);
 }
