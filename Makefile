@@ -528,12 +528,13 @@ bench-scipy: deps
 deps-scipy:
 	@$(MAKE) --no-print-directory deps APT_PACKAGES='python3-scipy python3-numpy hyperfine'
 
-# The explorer's key list in the man page and the README, generated from the
-# key table (src/tui/keys.c) between the KEYS-BEGIN and KEYS-END markers;
-# tests/test_tui_keys.c fails when they differ.
+# The explorer's key lists in the man page and the README, one per mode,
+# generated from the modes' key tables (src/tui/modes.c lists the modes)
+# between the KEYS-BEGIN and KEYS-END markers; tests/test_tui_keys.c fails
+# when they differ.  The modes bring the explorer along (and its figures).
 GENKEYS := $(BUILD)/gen-keys
-$(GENKEYS): $(BUILD)/tests/gen_keys.o $(TUI_LIB) $(CORE_LIB)
-	$(CC) $(LDFLAGS) -o $@ $(BUILD)/tests/gen_keys.o $(TUI_LIB) $(CORE_LIB) $(TUI_LIBS) $(CORE_LIBS)
+$(GENKEYS): $(BUILD)/tests/gen_keys.o $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB)
+	$(CC) $(LDFLAGS) -o $@ $(BUILD)/tests/gen_keys.o $(UNIT_CLI_OBJ) $(TUI_LIB) $(CORE_LIB) $(TUI_LIBS) $(CORE_LIBS) $(AUBIO_LIBS)
 .PHONY: keys-doc
 keys-doc: $(GENKEYS)
 	$(GENKEYS) man > $(BUILD)/keys.man

@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
- * gen_keys.c - prints the explorer's key list from the key table
- * (src/tui/keys.c): "man" the mdoc list of man/hybounce.1's EXPLORER KEYS,
- * "md" the Markdown table of the README's Explorer section.  `make
- * keys-doc` splices both into their files between the KEYS-BEGIN and
- * KEYS-END markers; tests/test_tui_keys.c checks that they agree.
+ * gen_keys.c - prints the explorer's key lists, one per mode, from the
+ * modes' key tables (the registry tui_modes, src/tui/modes.c): "man" the
+ * mdoc lists of man/hybounce.1's EXPLORER KEYS, "md" the Markdown tables
+ * of the README's Explorer section.  `make keys-doc` splices both into
+ * their files between the KEYS-BEGIN and KEYS-END markers;
+ * tests/test_tui_keys.c checks that they agree.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,14 +24,14 @@ main(int argc, char **argv)
 		fputs("usage: gen-keys man|md\n", stderr);
 		return 2;
 	}
-	n = (md ? keys_markdown(NULL, 0) : keys_man(NULL, 0)) + 1;
+	n = (md ? keys_markdown(tui_modes, NULL, 0) : keys_man(tui_modes, NULL, 0)) + 1;
 	buf = malloc(n);
 	if (buf == NULL)
 		return 1;
 	if (md)
-		keys_markdown(buf, n);
+		keys_markdown(tui_modes, buf, n);
 	else
-		keys_man(buf, n);
+		keys_man(tui_modes, buf, n);
 	fputs(buf, stdout);
 	free(buf);
 	return ferror(stdout) || fflush(stdout) != 0;

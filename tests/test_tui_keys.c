@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
- * test_tui_keys.c - the explorer's key table (src/tui/keys.c) and its
- * layout (src/tui/layout.c): pure functions, no terminal.
+ * test_tui_keys.c - the explorer's modes and their key tables (mode.h,
+ * the registry src/tui/modes.c), the key lists printed from them
+ * (src/tui/keys.c), and the layout (src/tui/layout.c): pure functions, no
+ * terminal.
  */
 #include <criterion/criterion.h>
 #include <stdio.h>
@@ -9,41 +11,86 @@
 #include <string.h>
 
 #include "keys.h"
+#include "mode.h"
 #include "layout.h"
 #include "testutil.h"
 #include "tui.h"
 
-Test(keys, no_key_bound_twice_in_one_context)
+/* The contexts a binding of mode m can apply in (CTX_ANY: all of them). */
+static int
+contexts(const struct mode *m, int *ctx)
 {
-	size_t n;
-	const struct key_binding *t = keys_table(&n);
+	int n = 0;
 
-	cr_assert(n > 30);
-	for (size_t i = 0; i < n; i++)
-		for (size_t k = i + 1; k < n; k++) {
-			int same = t[i].key == t[k].key || (t[k].key2 && t[i].key == t[k].key2)
-			           || (t[i].key2 && (t[i].key2 == t[k].key || t[i].key2 == t[k].key2));
-			int overlap = t[i].ctx == 0 || t[k].ctx == 0 || t[i].ctx == t[k].ctx;
-			cr_assert(!(same && overlap), "'%s' (%s) and '%s' (%s) share a key",
-			          t[i].label, t[i].help, t[k].label, t[k].help);
-		}
+	ctx[n++] = CTX_ANY;
+	if (m == &mode_main) {
+		ctx[0] = CTX_PARAMS;
+		ctx[n++] = CTX_NOT_PARAMS;
+	} else if (m == &mode_sweep) {
+		ctx[0] = CTX_CURVE;
+		ctx[n++] = CTX_MAP;
+	}
+	return n;
 }
 
+Test(keys, every_mode_has_keys_and_a_name)
+{
+	size_t n = 0;
+
+	for (; tui_modes[n] != NULL; n++) {
+		const struct mode *m = tui_modes[n];
+		cr_assert(m->name && m->name[0] && m->title && m->title[0]);
+		cr_assert(m->nkeys > 0, "mode %s has no keys", m->name);
+		/* the explorer first, the only one without an opener */
+		cr_assert_eq(m->opener == NULL, n == 0, "mode %s", m->name);
+		for (size_t k = 0; k < n; k++)
+			cr_assert(tui_modes[k] != m, "mode %s listed twice", m->name);
+	}
+	cr_assert(n >= 9, "%zu modes", n);
+	cr_assert_eq(tui_modes[0], &mode_main);
+}
+
+Test(keys, no_key_bound_twice_in_one_context)
+{
+	for (size_t k = 0; tui_modes[k] != NULL; k++) {
+		const struct mode *m = tui_modes[k];
+		const struct mode_key *t = m->keys;
+		for (size_t i = 0; i < m->nkeys; i++)
+			for (size_t j = i + 1; j < m->nkeys; j++) {
+				int same = t[i].key == t[j].key || (t[j].key2 && t[i].key == t[j].key2)
+				           || (t[i].key2 && (t[i].key2 == t[j].key || t[i].key2 == t[j].key2));
+				int overlap = t[i].ctx == 0 || t[j].ctx == 0 || t[i].ctx == t[j].ctx;
+				cr_assert(!(same && overlap), "%s: '%s' (%s) and '%s' (%s) share a key", m->name,
+				          t[i].label, t[i].help, t[j].label, t[j].help);
+			}
+	}
+}
+
+/* Each binding of each mode is what its keys find (mode_binding, the dispatch's lookup). */
 Test(keys, every_binding_reachable)
 {
-	size_t n;
-	const struct key_binding *t = keys_table(&n);
-
-	for (size_t i = 0; i < n; i++) {
-		int params = t[i].ctx == CTX_PARAMS;
-		cr_assert_eq(keys_action(t[i].key, params), t[i].action, "%s", t[i].label);
-		if (t[i].key2)
-			cr_assert_eq(keys_action(t[i].key2, params), t[i].action, "%s", t[i].label);
-		cr_assert(t[i].help && t[i].help[0] && t[i].label && t[i].label[0]);
+	for (size_t k = 0; tui_modes[k] != NULL; k++) {
+		const struct mode *m = tui_modes[k];
+		int ctx[4], nc = contexts(m, ctx);
+		for (size_t i = 0; i < m->nkeys; i++) {
+			const struct mode_key *b = &m->keys[i];
+			cr_assert(b->fn != NULL, "%s: %s has no function", m->name, b->label);
+			cr_assert(b->help && b->help[0] && b->label && b->label[0]);
+			for (int c = 0; c < nc; c++) {
+				if (b->ctx != CTX_ANY && b->ctx != ctx[c])
+					continue;
+				cr_assert_eq(mode_binding(m, b->key, ctx[c]), b, "%s: %s", m->name, b->label);
+				if (b->key2)
+					cr_assert_eq(mode_binding(m, b->key2, ctx[c]), b, "%s: %s", m->name, b->label);
+			}
+		}
+		cr_assert_null(mode_binding(m, -12345, ctx[0]));
 	}
 	/* + is playback speed outside the panel and a nudge inside it */
-	cr_assert_neq(keys_action('+', 0), keys_action('+', 1));
-	cr_assert_eq(keys_action(-12345, 0), ACT_NONE);
+	cr_assert_neq(mode_binding(&mode_main, '+', CTX_NOT_PARAMS)->fn,
+	              mode_binding(&mode_main, '+', CTX_PARAMS)->fn);
+	/* Enter comes as \n, \r or KEY_ENTER */
+	cr_assert_eq(mode_binding(&mode_prompt, '\r', CTX_ANY), mode_binding(&mode_prompt, '\n', CTX_ANY));
 }
 
 Test(keys, names_round_trip)
@@ -60,14 +107,24 @@ Test(keys, names_round_trip)
 	cr_assert_eq(keys_from_name("space"), ' ');
 	cr_assert_eq(keys_from_name("C-c"), 3);
 	cr_assert_eq(keys_from_name("NoSuchKey"), -1);
-	/* every label's words are key names */
-	size_t n;
-	const struct key_binding *t = keys_table(&n);
-	for (size_t i = 0; i < n; i++) {
-		char lab[64], *save, *tok;
-		snprintf(lab, sizeof lab, "%s", t[i].label);
-		for (tok = strtok_r(lab, " ", &save); tok; tok = strtok_r(NULL, " ", &save))
-			cr_assert(keys_from_name(tok) >= 0, "label word '%s'", tok);
+	/* every label's words are key names, and name the binding's keys */
+	for (size_t k = 0; tui_modes[k] != NULL; k++) {
+		const struct mode *m = tui_modes[k];
+		for (size_t i = 0; i < m->nkeys; i++) {
+			char lab[64], *save, *tok;
+			int has1 = 0, has2 = m->keys[i].key2 == 0;
+			snprintf(lab, sizeof lab, "%s", m->keys[i].label);
+			for (tok = strtok_r(lab, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
+				int c = keys_from_name(tok);
+				cr_assert(c >= 0, "%s: label word '%s'", m->name, tok);
+				has1 |= c == m->keys[i].key;
+				has2 |= c == m->keys[i].key2;
+				/* Enter and BSpace also come as another code (KEY_ENTER, DEL) */
+				has2 |= strcmp(tok, "Enter") == 0 || strcmp(tok, "BSpace") == 0;
+			}
+			cr_assert(has1 && has2, "%s: the label '%s' does not name its keys", m->name,
+			          m->keys[i].label);
+		}
 	}
 }
 
@@ -75,45 +132,107 @@ Test(keys, footer_fits)
 {
 	char buf[512];
 
-	keys_footer(buf, sizeof buf, 79);
+	keys_footer(&mode_main, CTX_NOT_PARAMS, buf, sizeof buf, 79);
 	cr_assert(strlen(buf) <= 79);
 	cr_assert(strstr(buf, "?:help") == buf);
 	cr_assert(strstr(buf, "q:quit") != NULL);
-	keys_footer(buf, sizeof buf, 10);
+	keys_footer(&mode_main, CTX_NOT_PARAMS, buf, sizeof buf, 10);
 	cr_assert(strlen(buf) <= 10);
+	/* the sweep view's footer, from its table: the curve's keys, the map's */
+	keys_footer(&mode_sweep, CTX_CURVE, buf, sizeof buf, 79);
+	cr_assert_str_eq(buf, "o:obs <>:collision r:range L:law b:bounds p:pin m:map e:export q:close ?:keys");
+	keys_footer(&mode_sweep, CTX_MAP, buf, sizeof buf, 79);
+	cr_assert_str_eq(buf, "o:obs <>:collision m:curve e:export q:close ?:keys");
+	cr_assert(keys_has_footer(&mode_main) && !keys_has_footer(&mode_help));
 }
 
-/* The man page's EXPLORER KEYS section holds the list generated from the table. */
-Test(keys, man_page_matches_table)
+/*
+ * The text gen holds every key of mode m (in the form key(tok, out) gives),
+ * and its heading when the mode has one; fails naming the key missing.
+ */
+static void
+holds_every_key(const char *where, const char *gen, const struct mode *m,
+                void (*form)(const char *tok, char out[][80], int *n))
 {
-	char *man = slurp("man/hybounce.1"), *b, *e, gen[16384], lab[64];
-	size_t n;
-	const struct key_binding *t = keys_table(&n);
+	for (size_t i = 0; i < m->nkeys; i++) {
+		char lab[64], *save, *tok;
+		snprintf(lab, sizeof lab, "%s", m->keys[i].label);
+		for (tok = strtok_r(lab, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
+			char f[6][80];
+			int nf = 0, found = 0;
+			form(tok, f, &nf);
+			for (int k = 0; k < nf; k++)
+				found |= strstr(gen, f[k]) != NULL;
+			cr_assert(found, "%s: key '%s' of mode %s (%s) missing", where, tok, m->name,
+			          m->keys[i].help);
+		}
+		cr_assert(strstr(gen, m->keys[i].help) != NULL || where[0] == 'm',
+		          "%s: '%s' of mode %s missing", where, m->keys[i].help, m->name);
+	}
+}
+
+static void
+man_form(const char *tok, char out[][80], int *n)
+{
+	snprintf(out[(*n)++], 80, "Ic %s\n", tok);
+	snprintf(out[(*n)++], 80, "Ic \\&%s\n", tok);
+	snprintf(out[(*n)++], 80, "Ic %s ", tok);
+	snprintf(out[(*n)++], 80, "Ic \\&%s ", tok);
+}
+
+static void
+help_form(const char *tok, char out[][80], int *n)
+{
+	snprintf(out[(*n)++], 80, "%s", tok);
+}
+
+/*
+ * The man page's EXPLORER KEYS section holds the lists generated from the
+ * tables, each mode's under its heading, and no key of any mode is missing
+ * from them.
+ */
+Test(keys, man_page_matches_tables)
+{
+	char *man = slurp("man/hybounce.1"), *b, *e, gen[32768];
 
 	cr_assert_not_null(man, "man/hybounce.1 not readable (run from the top folder)");
 	b = strstr(man, ".\\\" KEYS-BEGIN");
 	e = strstr(man, ".\\\" KEYS-END");
 	cr_assert(b && e && b < e, "KEYS-BEGIN / KEYS-END markers missing");
 	*e = 0;
-	cr_assert(keys_man(gen, sizeof gen) < sizeof gen);
+	cr_assert(keys_man(tui_modes, gen, sizeof gen) < sizeof gen);
 	cr_assert(strstr(b, gen) != NULL,
-	          "the man page's key list differs from keys_man(); regenerate it");
-	for (size_t i = 0; i < n; i++) {
-		char *save, *tok;
-		snprintf(lab, sizeof lab, "%s", t[i].label);
-		for (tok = strtok_r(lab, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
-			char a[80], c[80];
-			snprintf(a, sizeof a, "Ic %s\n", tok);
-			snprintf(c, sizeof c, "Ic \\&%s\n", tok);
-			char a2[80], c2[80];
-			snprintf(a2, sizeof a2, "Ic %s ", tok);
-			snprintf(c2, sizeof c2, "Ic \\&%s ", tok);
-			/* the generated list (equal to the man page's, above) names every key */
-			cr_assert(strstr(gen, a) || strstr(gen, c) || strstr(gen, a2) || strstr(gen, c2),
-			          "key '%s' missing from keys_man(), hence from the man page", tok);
-		}
+	          "the man page's key lists differ from keys_man(); regenerate them (make keys-doc)");
+	for (size_t k = 0; tui_modes[k] != NULL; k++) {
+		const struct mode *m = tui_modes[k];
+		char one[8192];
+		const struct mode *just[] = { m, NULL };
+		/* the mode's own list (after its heading) is in the page, and holds each of its keys */
+		cr_assert(keys_man(just, one, sizeof one) < sizeof one);
+		cr_assert(strstr(b, one) != NULL, "mode %s: its list is not in the man page", m->name);
+		holds_every_key("man page", one, m, man_form);
+		if (m->opener != NULL)
+			cr_assert(strstr(one, m->title) != NULL, "mode %s: no heading", m->name);
 	}
 	free(man);
+}
+
+/* The help (mode_help.c prints keys_help of each mode) names every key of every mode. */
+Test(keys, help_lists_every_mode)
+{
+	for (size_t k = 0; tui_modes[k] != NULL; k++) {
+		const struct mode *m = tui_modes[k];
+		char help[8192];
+		cr_assert(keys_help(m, help, sizeof help) < sizeof help);
+		holds_every_key("help", help, m, help_form);
+		if (m->opener != NULL) {
+			char h[160];
+			snprintf(h, sizeof h, "In %s (", m->title);
+			cr_assert(strstr(help, h) == help, "mode %s: the help's heading '%s'", m->name, h);
+		}
+		if (m->other_help != NULL)
+			cr_assert(strstr(help, m->other_help) != NULL);
+	}
 }
 
 static int
@@ -179,27 +298,10 @@ Test(layout, presentation)
 	cr_assert_eq(L.plots.y + L.plots.h, L.readout.y);
 }
 
-/* Every action of the key table has a function (actions.c); no function for ACT_NONE. */
-Test(keys, every_action_dispatched)
+/* The README's Explorer section holds the Markdown key tables generated from the tables. */
+Test(keys, readme_matches_tables)
 {
-	size_t n;
-	const struct key_binding *t = keys_table(&n);
-
-	cr_assert_null(action_get(ACT_NONE));
-	cr_assert_null(action_get(ACT_COUNT));
-	for (int act = ACT_NONE + 1; act < ACT_COUNT; act++) {
-		int bound = 0;
-		cr_assert_not_null(action_get(act), "action %d has no function", act);
-		for (size_t i = 0; i < n; i++)
-			bound |= t[i].action == act;
-		cr_assert(bound, "action %d has no key", act);
-	}
-}
-
-/* The README's Explorer section holds the Markdown key table generated from the table. */
-Test(keys, readme_matches_table)
-{
-	char *md = slurp("README.md"), *b, *e, gen[16384];
+	char *md = slurp("README.md"), *b, *e, gen[32768];
 
 	cr_assert_not_null(md, "README.md not readable (run from the top folder)");
 	b = strstr(md, "<!-- KEYS-BEGIN -->\n");
@@ -207,21 +309,32 @@ Test(keys, readme_matches_table)
 	cr_assert(b && e && b < e, "KEYS-BEGIN / KEYS-END markers missing in README.md");
 	b += strlen("<!-- KEYS-BEGIN -->\n");
 	*e = 0;
-	cr_assert(keys_markdown(gen, sizeof gen) < sizeof gen);
-	cr_assert_str_eq(b, gen, "the README's key table differs from the key table: make keys-doc");
+	cr_assert(keys_markdown(tui_modes, gen, sizeof gen) < sizeof gen);
+	cr_assert_str_eq(b, gen, "the README's key tables differ from the modes' tables: make keys-doc");
+	for (size_t k = 1; tui_modes[k] != NULL; k++) {
+		char h[160];
+		snprintf(h, sizeof h, "In %s (`", tui_modes[k]->title);
+		cr_assert(strstr(b, h) != NULL, "README: no table for mode %s", tui_modes[k]->name);
+	}
 	free(md);
 }
 
 /* F1 and F10 are help and quit, as in htop and mc. */
 Test(keys, function_keys)
 {
-	cr_assert_eq(keys_action(keys_from_name("F1"), 0), ACT_HELP);
-	cr_assert_eq(keys_action(keys_from_name("F10"), 1), ACT_QUIT);
-	cr_assert_eq(keys_action('/', 0), ACT_SEARCH);
+	const struct mode_key *f1 = mode_binding(&mode_main, keys_from_name("F1"), CTX_NOT_PARAMS);
+	const struct mode_key *q = mode_binding(&mode_main, 'q', CTX_PARAMS);
+
+	cr_assert_not_null(f1);
+	cr_assert_eq(mode_binding(&mode_main, '?', CTX_PARAMS), f1);
+	cr_assert_not_null(q);
+	cr_assert_eq(mode_binding(&mode_main, keys_from_name("F10"), CTX_PARAMS), q);
 	/* Home and End move the list in the panel, the time cursor elsewhere */
-	cr_assert_eq(keys_action(keys_from_name("Home"), 1), ACT_TOP);
-	cr_assert_eq(keys_action(keys_from_name("Home"), 0), ACT_HOME);
-	cr_assert_eq(keys_action('1', 0), ACT_NONE);
+	cr_assert_neq(mode_binding(&mode_main, keys_from_name("Home"), CTX_PARAMS)->fn,
+	              mode_binding(&mode_main, keys_from_name("Home"), CTX_NOT_PARAMS)->fn);
+	cr_assert_null(mode_binding(&mode_main, '1', CTX_NOT_PARAMS));
+	/* F10 quits from the sweep view too */
+	cr_assert_not_null(mode_binding(&mode_sweep, keys_from_name("F10"), CTX_MAP));
 }
 
 Test(layout, stack)

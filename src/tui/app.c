@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include "app.h"
+#include "mode.h"
 #include "status.h"
 #include "term.h"
 #include "tui.h"
@@ -82,6 +83,8 @@ app_run(const struct app_options *o, char *msg, size_t n)
 		return 1;
 	}
 	a->opt = o;
+	a->modes = tui_modes;        /* every mode, for the help */
+	mode_push(a, &mode_main);    /* the explorer, at the bottom of the stack */
 	a->budget = COMPUTE_BUDGET;
 	a->psum = psum_new();   /* NULL: the plots draw every sample */
 	app_adopt(a, s, path);

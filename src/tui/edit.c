@@ -305,12 +305,13 @@ act_law(struct app *a)
 {
 	const struct hb_law_type *const *l = hb_law_list();
 
-	a->overlay = OV_LAW;
+	a->pick_kind = PICK_LAW;
 	a->pick_done = law_chosen;
 	a->pick_sel = a->pick_top = 0;
 	for (int i = 0; l[i]; i++)
 		if (l[i] == hb_sim_scene(a->sim)->law)
 			a->pick_sel = i;
+	mode_push(a, &mode_law);
 }
 
 /* u: back to the scene before the last edit. */

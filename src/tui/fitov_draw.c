@@ -150,12 +150,14 @@ fitov_table_note(const struct app *a, long i, char *line, size_t n)
 }
 
 void
-fitov_draw(const struct app *a)
+fitov_draw(const struct app *a, const struct mode *self)
 {
 	const struct fitov *f = a->fitov;
 	int h = a->L.lines - 4, w = a->L.cols - 6, y;
 	struct rect in;
 	char line[512], what[320], m[32], s[32], dlt[32];
+
+	(void)self;
 
 	if (f == NULL || h < 6 || w < 40)
 		return;

@@ -11,6 +11,7 @@
 #include <time.h>
 
 #include "status.h"
+#include "mode.h"
 #include "tui.h"
 
 static double
@@ -102,16 +103,7 @@ app_draw(struct app *a)
 		if (a->L.params_visible)
 			pane_params_draw(a);
 		pane_status_draw(a);
-		if (sweep_view_open(a))
-			pane_sweep_draw(a);
-		if (a->overlay == OV_HELP)
-			pane_help_draw(a);
-		else if (a->overlay == OV_LOG)
-			pane_log_draw(a);
-		else if (a->overlay == OV_LAW || a->overlay == OV_PRESET)
-			pickers_draw(a);
-		else if (a->overlay == OV_FIT)
-			fitov_draw(a);
+		mode_draw(a);   /* the modes open over the explorer, bottom first */
 	}
 	a->frames++;
 	refresh();

@@ -15,7 +15,7 @@
  *    axis x = 0, the clocks aligned at its first given impact (sequences);
  *  - in the collisions table: the first trial's measured t_e of each
  *    collision beside the simulated one, and their difference (sequences);
- *  - in a box (M): every data point as the fit takes it (hb_fit_data_points:
+ *  - in a box (M, mode_fit.c): every data point as the fit takes it (hb_fit_data_points:
  *    missed values left out, trials and heights told apart), measured
  *    against simulated now, with the difference, for every kind of data.
  * F asks for the free keys and runs the fit one trust-region iteration per
@@ -385,34 +385,4 @@ fitov_tick(struct app *a)
 				f->sim[k] = NAN;
 	}
 	return 0;
-}
-
-void
-act_data_table(struct app *a)
-{
-	if (!fitov_loaded(a)) {
-		app_msg(a, 1, "no data: D opens a data file (or start with --data FILE)");
-		return;
-	}
-	a->overlay = OV_FIT;
-}
-
-void
-fitov_key(struct app *a, int ch)
-{
-	struct fitov *f = a->fitov;
-
-	if (ch == KEY_UP || ch == 'k')
-		f->top = f->top > 0 ? f->top - 1 : 0;
-	else if (ch == KEY_DOWN || ch == 'j')
-		f->top = f->top + 1 < (int)f->np ? f->top + 1 : f->top;
-	else if (ch == KEY_PPAGE)
-		f->top = f->top > 10 ? f->top - 10 : 0;
-	else if (ch == KEY_NPAGE)
-		f->top = f->top + 10 < (int)f->np ? f->top + 10 : f->top;
-	else {
-		a->overlay = OV_NONE;
-		if (ch == 'F')
-			act_fit(a);
-	}
 }

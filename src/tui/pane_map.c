@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "cnum.h" /* C-locale numbers (src/core) */
+#include "keys.h"
 #include "sweep_view.h"
 #include "term.h"
 #include "tui.h"
@@ -50,17 +51,50 @@ shade_of(double z, double lo, double hi)
 	return s < 0 ? 0 : s >= NSHADE ? NSHADE - 1 : s;
 }
 
+/*
+ * The grid index whose value is nearest x, or -1 when x is off the grid's
+ * span (or not a number).
+ */
+static long
+nearest(const double *g, long n, double x)
+{
+	double lo = INFINITY, hi = -INFINITY, best = INFINITY;
+	long k = -1;
+
+	for (long i = 0; i < n; i++) {
+		lo = fmin(lo, g[i]);
+		hi = fmax(hi, g[i]);
+	}
+	if (!isfinite(x) || x < lo - 1e-9 * fabs(lo) || x > hi + 1e-9 * fabs(hi))
+		return -1;
+	for (long i = 0; i < n; i++)
+		if (fabs(g[i] - x) < best) {
+			best = fabs(g[i] - x);
+			k = i;
+		}
+	return k;
+}
+
+/* The cell (of w) in the middle of those that show grid index i of n. */
+static int
+cell_of(long i, long n, int w)
+{
+	return (int)((2 * i + 1) * (long)w / (2 * n));
+}
+
 void
-pane_map_draw(const struct app *a)
+pane_map_draw(const struct app *a, const struct mode *self)
 {
 	const struct sv_map *m = &a->sv->map;
+	char foot[256];
 	int top = a->L.status.y + 1, bottom = a->L.msg.y;      /* rows top .. bottom-1 */
 	int cw = COLS - MLM - LEGW - 1, ch = bottom - top - 2;  /* title, x axis */
 	double lo = INFINITY, hi = -INFINITY;
 	struct hb_scene_keyinfo k1 = { 0 }, k2 = { 0 };
 	char line[512], a1[48], a2[48];
 	const char *on = hb_sweep_observable_name(m->obs), *ou = sv_obs_unit(m->obs);
-	long nnone = 0;
+	long nnone = 0, s1 = -1, s2 = -1;
+	struct hb_scene_keyinfo ks;
 
 	for (int r = top; r < bottom; r++) {
 		move(r, 0);
@@ -116,6 +150,18 @@ pane_map_draw(const struct app *a)
 			tui_puts(top + 1 + r, MLM + c, 1, g, attr);
 		}
 
+	/*
+	 * The current scene (the run's values of the two keys): X on the cell
+	 * of the grid point nearest it, when it is on the map.
+	 */
+	if (hb_scene_get(hb_sim_scene(a->sim), m->key1, &ks, NULL) == 0)
+		s1 = nearest(m->x1, m->n1, ks.number);
+	if (hb_scene_get(hb_sim_scene(a->sim), m->key2, &ks, NULL) == 0)
+		s2 = nearest(m->x2, m->n2, ks.number);
+	if (s1 >= 0 && s2 >= 0)
+		tui_puts(top + ch - cell_of(s2, m->n2, ch), MLM + cell_of(s1, m->n1, cw), 1, "X",
+		         A_BOLD | A_REVERSE);
+
 	/* the second key's ends on the left, the first key's under the map */
 	cnum_snprintf(a2, sizeof a2, "%.3g", m->x2[m->n2 - 1]);
 	tui_puts(top + 1, 0, MLM - 1, a2, 0);
@@ -158,11 +204,14 @@ pane_map_draw(const struct app *a)
 			tui_puts(y++, x, LEGW, "! failed run", A_DIM);
 		if (y < bottom)
 			tui_puts(y++, x, LEGW, "  blank: computing", A_DIM);
+		if (y < bottom)
+			tui_puts(y++, x, LEGW, s1 >= 0 && s2 >= 0 ? "X the current scene" : "X scene: off the map",
+			         A_DIM);
 		(void)nnone;
 	}
 
 	move(a->L.footer.y, 0);
 	clrtoeol();
-	tui_puts(a->L.footer.y, 0, COLS, "o:observable <>:collision m:curve e:export CSV q:close ?:keys",
-	         A_REVERSE);
+	/* the sweep view's keys on the map, from its table */
+	tui_puts(a->L.footer.y, 0, COLS, keys_footer(self, CTX_MAP, foot, sizeof foot, COLS - 1), A_REVERSE);
 }

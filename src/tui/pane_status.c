@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * pane_status.c - the status line, the message (or prompt) line, the
- * footer, the help overlay and the "terminal too small" screen.
+ * footer (the explorer's keys, from its table) and the "terminal too
+ * small" screen.
  * Drawing only: reads the state, never changes it.
  */
 #include <curses.h>
@@ -13,6 +14,7 @@
 #include "scene.h"
 #include "layout.h"
 #include "term.h"
+#include "mode.h"
 #include "tui.h"
 #include "units.h"
 
@@ -204,7 +206,7 @@ pane_status_draw(const struct app *a)
 
 	/* message or prompt */
 	r = &a->L.msg;
-	if (a->overlay == OV_PROMPT) {
+	if (mode_on(a, &mode_prompt)) {
 		/*
 		 * Too long for the line: the caret stays in view.  A text as
 		 * given (the first printable key replaces it) is shown reversed;
@@ -314,11 +316,14 @@ pane_status_draw(const struct app *a)
 	}
 
 	r = &a->L.footer;
-	if (a->demo_hint != NULL) {
+	if (a->nmodes == 0) {
+		/* nothing open yet */
+	} else if (a->demo_hint != NULL) {
 		/* a demo on the real screen: what the viewer's keys do now */
 		tui_puts(r->y, 0, r->w, a->demo_hint, A_BOLD);
 	} else {
-		keys_footer(foot, sizeof foot, r->w - 1);
+		/* the explorer's keys (the bottom mode); the sweep view draws its own */
+		keys_footer(a->mode[0], mode_context(a, a->mode[0]), foot, sizeof foot, r->w - 1);
 		tui_puts(r->y, 0, r->w, foot, A_DIM);
 	}
 	if (a->caption[0] && a->caption_large && strcmp(a->msg, a->caption) == 0)

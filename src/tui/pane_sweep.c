@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "canvas.h"
+#include "keys.h"
 #include "sweep_view.h"
 #include "term.h"
 #include "tui.h"
@@ -148,7 +149,7 @@ y_labels(const struct axis *ay, int y, int h)
 }
 
 void
-pane_sweep_draw(const struct app *a)
+pane_sweep_draw(const struct app *a, const struct mode *self)
 {
 	const struct sweep_view *v = a->sv;
 	const struct sv_curve *cur = &v->cur;
@@ -158,11 +159,11 @@ pane_sweep_draw(const struct app *a)
 	struct hb_scene_keyinfo ki = { 0 };
 	struct axis ax, ay;
 	struct canvas *c;
-	char line[512], vx[48], vy[48];
+	char line[512], vx[48], vy[48], foot[256];
 	const char *on = hb_sweep_observable_name(v->obs), *ou = sv_obs_unit(v->obs);
 
 	if (v->map.on) {
-		pane_map_draw(a);
+		pane_map_draw(a, self);
 		return;
 	}
 
@@ -292,10 +293,8 @@ pane_sweep_draw(const struct app *a)
 	tui_puts(top + 2 + ch, 0, SLM - 1, line, A_BOLD);
 	canvas_free(c);
 
-	/* footer: the view's own keys */
+	/* footer: the view's own keys, from its table */
 	move(a->L.footer.y, 0);
 	clrtoeol();
-	tui_puts(a->L.footer.y, 0, COLS,
-	         "o:obs <>:collision r:range L:law b:bounds p:pin m:map e:export q:close ?:keys",
-	         A_REVERSE);
+	tui_puts(a->L.footer.y, 0, COLS, keys_footer(self, CTX_CURVE, foot, sizeof foot, COLS - 1), A_REVERSE);
 }

@@ -2,15 +2,16 @@
 /*
  * pickers.c - the law picker (hb_law_list: name, title, description,
  * parameters) and the preset picker (hb_preset_list: the *.preset files of presets/ and
- * $HYBOUNCE_PRESETS, with descriptions), drawn as a box over the plots.
- * Up/Down (k/j) move, PgUp/PgDn a page, Home/End (g/G) to the ends,
- * Enter chooses, Esc or q closes.
+ * $HYBOUNCE_PRESETS, with descriptions), drawn as a box over the plots:
+ * the list and its moves, for the two modes (pick_law.c, pick_preset.c)
+ * whose tables bind them.
  */
 #include <curses.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "law.h"
+#include "mode.h"
 #include "tui.h"
 
 static int
@@ -18,7 +19,7 @@ count(const struct app *a)
 {
 	int n = 0;
 
-	if (a->overlay == OV_PRESET)
+	if (a->pick_kind == PICK_PRESET)
 		return a->npresets;
 	while (hb_law_list()[n])
 		n++;
@@ -34,7 +35,7 @@ details(const struct app *a, char *out, size_t n)
 	out[0] = 0;
 	if (sel < 0 || sel >= count(a))
 		return;
-	if (a->overlay == OV_PRESET) {
+	if (a->pick_kind == PICK_PRESET) {
 		const struct hb_preset_info *p = &a->presets[sel];
 		snprintf(out, n, "%s: %s. %s (%s)", p->name, p->title, p->description, p->path);
 	} else {
@@ -87,80 +88,63 @@ page(const struct app *a)
 	return list;
 }
 
-void
-pickers_key(struct app *a, int ch)
-{
-	int n = count(a), kind = a->overlay;
-	char name[512];
+void pick_up(struct app *a) { if (a->pick_sel > 0) a->pick_sel--; }
+void pick_down(struct app *a) { if (a->pick_sel + 1 < count(a)) a->pick_sel++; }
+void pick_home(struct app *a) { a->pick_sel = 0; }
+void pick_end(struct app *a) { a->pick_sel = count(a) - 1; }
+void pick_close(struct app *a) { mode_pop(a); }
 
-	switch (ch) {
-	case KEY_UP:
-	case 'k':
-		if (a->pick_sel > 0)
-			a->pick_sel--;
-		break;
-	case KEY_DOWN:
-	case 'j':
-		if (a->pick_sel + 1 < n)
-			a->pick_sel++;
-		break;
-	case KEY_PPAGE:
-		a->pick_sel -= page(a);
-		if (a->pick_sel < 0)
-			a->pick_sel = 0;
-		break;
-	case KEY_NPAGE:
-		a->pick_sel += page(a);
-		if (a->pick_sel >= n)
-			a->pick_sel = n - 1;
-		break;
-	case KEY_HOME:
-	case 'g':
+void
+pick_pgup(struct app *a)
+{
+	a->pick_sel -= page(a);
+	if (a->pick_sel < 0)
 		a->pick_sel = 0;
-		break;
-	case KEY_END:
-	case 'G':
-		a->pick_sel = n - 1;
-		break;
-	case KEY_RESIZE: /* app_key lays the screen out again before a picker sees a key */
-		break;
-	case 27:
-	case 'q':
-		a->overlay = OV_NONE;
-		break;
-	case '\n':
-	case '\r':
-	case KEY_ENTER:
-		a->overlay = OV_NONE;
-		if (a->pick_sel < 0 || a->pick_sel >= n || a->pick_done == NULL)
-			break;
-		/* the opener's function takes the choice: the picker calls no mode by name */
-		snprintf(name, sizeof name, "%s", kind == OV_PRESET ? a->presets[a->pick_sel].path
-		                                                    : hb_law_list()[a->pick_sel]->name);
-		a->pick_done(a, name);
-		break;
-	default:
-		break;
-	}
 }
 
 void
-pickers_draw(const struct app *a)
+pick_pgdn(struct app *a)
+{
+	int n = count(a);
+
+	a->pick_sel += page(a);
+	if (a->pick_sel >= n)
+		a->pick_sel = n - 1;
+}
+
+void
+pick_choose(struct app *a)
+{
+	int n = count(a);
+	char name[512];
+
+	mode_pop(a);
+	if (a->pick_sel < 0 || a->pick_sel >= n || a->pick_done == NULL)
+		return;
+	/* the opener's function takes the choice: the picker calls no mode by name */
+	snprintf(name, sizeof name, "%s", a->pick_kind == PICK_PRESET ? a->presets[a->pick_sel].path
+	                                                            : hb_law_list()[a->pick_sel]->name);
+	a->pick_done(a, name);
+}
+
+void
+pickers_draw(const struct app *a, const struct mode *self)
 {
 	int n = count(a), h, w, rows, drows, x0 = 3, y0 = 1, top = 0, i;
 	char line[512], d[2048];
 
+	(void)self;
 	geometry(a, &h, &w, &rows, &drows);
 	if (a->pick_sel >= rows)
 		top = a->pick_sel - rows + 1;
-	box_draw(y0, x0, h, w, a->overlay == OV_PRESET ? " open a preset (Enter opens, Esc closes) "
+	box_draw(y0, x0, h, w, a->pick_kind == PICK_PRESET ? " open a preset (Enter opens, Esc closes) "
 	                                               : " contact law (Enter chooses, Esc closes) ");
 	/* the text inside the border; a cut entry is whole in the details below */
 	x0++;
 	w -= 2;
 	for (i = top; i < n && i < top + rows; i++) {
 		int attr = i == a->pick_sel ? A_REVERSE : 0;
-		if (a->overlay == OV_PRESET)
+		if (a->pick_kind == PICK_PRESET)
 			snprintf(line, sizeof line, " %-28s %s", a->presets[i].name, a->presets[i].title);
 		else
 			snprintf(line, sizeof line, " %-10s %s%s", hb_law_list()[i]->name, hb_law_list()[i]->title,

@@ -74,7 +74,7 @@ stiff_note(const struct app *a, char *buf, size_t n)
  * of those runs (a pin, or an edit: the current run's scene changed)
  * starts again from their first samples.
  */
-static void
+void
 hold_update(struct app *a)
 {
 	const struct hb_sim *s[APP_MAX_PINS + 1];
@@ -210,42 +210,3 @@ act_view(struct app *a)
 void act_zoom(struct app *a) { zoom_on(a, VIEW_ZOOM); }
 void act_loop(struct app *a) { zoom_on(a, VIEW_LOOP); }
 void act_jview(struct app *a) { a->view = a->view == VIEW_J ? VIEW_WHOLE : VIEW_J; }
-
-/*
- * T: presentation mode for teaching: no table nor panel, the plots take
- * their rows, the view follows the cursor, each contact is played in slow
- * motion with the view on the contact as it forms, each axis holds its
- * scale over the run, lines are thick, and the run loops.  T again: the
- * same on the light theme (with colours); T a third time restores what
- * was before.
- */
-void
-act_present(struct app *a)
-{
-	if (!a->present) {
-		a->present = 1;
-		a->present_view = a->view;
-		a->present_slowmo = a->slowmo;
-		a->view = VIEW_FOLLOW;
-		a->slowmo = 1;
-		a->playing = 1;
-		a->hold.n = 0;
-		hold_update(a);
-		if (hb_sim_end(a->sim) != HB_SIM_RUNNING && a->cursor + 1 >= hb_arc_len(hb_sim_arc(a->sim)))
-			cursor_set(a, 0);
-		app_msg(a, 0, "presentation: contacts in slow motion, looping (T: %s)",
-		        a->colour ? "light theme" : "back");
-	} else if (a->present == 1 && a->colour) {
-		a->present = 2;
-		term_light(1);
-		app_msg(a, 0, "presentation on the light theme (T: back)");
-	} else {
-		if (a->present == 2)
-			term_light(0);
-		a->present = 0;
-		a->view = a->present_view;
-		a->slowmo = a->present_slowmo;
-		app_msg(a, 0, "presentation off");
-	}
-	app_relayout(a);
-}

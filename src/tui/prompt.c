@@ -1,16 +1,18 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * prompt.c - the one-line prompt on the message line: a value to type, an
- * export name, a parameter to search for.  Keys typed into it are text
- * (UTF-8 as it arrives) and line editing, not bindings.  What it is for
- * is its opener's: the prompt reports Enter, Esc and each edit to the
- * function given to prompt_open, and calls no mode by name.
+ * export name, a parameter to search for, and its mode (mode.h): its keys
+ * are line editing; any other key is text (UTF-8 as it arrives).  It is
+ * drawn on the message line (pane_status.c).
+ * What it is for is its opener's: the prompt reports Enter, Esc and each
+ * edit to the function given to prompt_open, and calls no mode by name.
  */
 #include <curses.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "mode.h"
 #include "tui.h"
 
 void
@@ -21,7 +23,8 @@ prompt_open(struct app *a, int kind, prompt_fn *done, const char *text, const ch
 	va_start(ap, fmt);
 	vsnprintf(a->prompt_title, sizeof a->prompt_title, fmt, ap);
 	va_end(ap);
-	a->overlay = OV_PROMPT;
+	if (!mode_on(a, &mode_prompt))
+		mode_push(a, &mode_prompt);
 	a->prompt_kind = kind;
 	a->prompt_done = done;
 	snprintf(a->prompt_buf, sizeof a->prompt_buf, "%s", text);
@@ -105,25 +108,77 @@ edit_key(struct app *a, int ch)
 	a->prompt_pos = pos;
 }
 
-void
-prompt_key(struct app *a, int ch)
+/* After an edit: the opener sees the text as it is now. */
+static void
+typed(struct app *a)
+{
+	if (mode_top(a) == &mode_prompt && a->prompt_done != NULL)
+		a->prompt_done(a, a->prompt_buf, PROMPT_TYPED);
+}
+
+static void
+prompt_type(struct app *a, int ch)
+{
+	edit_key(a, ch);
+	typed(a);
+}
+
+static void prompt_left(struct app *a) { prompt_type(a, KEY_LEFT); }
+static void prompt_right(struct app *a) { prompt_type(a, KEY_RIGHT); }
+static void prompt_home(struct app *a) { prompt_type(a, KEY_HOME); }
+static void prompt_end(struct app *a) { prompt_type(a, KEY_END); }
+static void prompt_bspace(struct app *a) { prompt_type(a, KEY_BACKSPACE); }
+static void prompt_delete(struct app *a) { prompt_type(a, KEY_DC); }
+static void prompt_kill(struct app *a) { prompt_type(a, CTRL('k')); }
+static void prompt_clear(struct app *a) { prompt_type(a, CTRL('u')); }
+
+static void
+prompt_cancel(struct app *a)
 {
 	prompt_fn *done = a->prompt_done;
 
-	if (ch == 27) {
-		a->overlay = OV_NONE;
-		app_msg(a, 0, "cancelled");
-		if (done != NULL)
-			done(a, "", PROMPT_CANCEL);
-	} else if (ch == '\n' || ch == '\r' || ch == KEY_ENTER) {
-		char buf[256];
-		snprintf(buf, sizeof buf, "%s", a->prompt_buf);
-		a->overlay = OV_NONE;
-		if (done != NULL)
-			done(a, buf, PROMPT_ENTER);
-	} else {
-		edit_key(a, ch);
-		if (a->overlay == OV_PROMPT && done != NULL)
-			done(a, a->prompt_buf, PROMPT_TYPED);
-	}
+	mode_close(a, &mode_prompt);
+	app_msg(a, 0, "cancelled");
+	if (done != NULL)
+		done(a, "", PROMPT_CANCEL);
 }
+
+static void
+prompt_enter(struct app *a)
+{
+	prompt_fn *done = a->prompt_done;
+	char buf[256];
+
+	snprintf(buf, sizeof buf, "%s", a->prompt_buf);
+	mode_close(a, &mode_prompt);
+	if (done != NULL)
+		done(a, buf, PROMPT_ENTER);
+}
+
+static const struct mode_key keys[] = {
+	{ '\n', KEY_ENTER, CTX_ANY, prompt_enter, "Enter", "accept the text", NULL },
+	{ 27, 0, CTX_ANY, prompt_cancel, "Esc", "cancel", NULL },
+	{ KEY_LEFT, CTRL('b'), CTX_ANY, prompt_left, "Left C-b", "the caret a character left (keeps the value shown to edit it)", NULL },
+	{ KEY_RIGHT, CTRL('f'), CTX_ANY, prompt_right, "Right C-f", "the caret a character right", NULL },
+	{ KEY_HOME, CTRL('a'), CTX_ANY, prompt_home, "Home C-a", "the caret to the start", NULL },
+	{ KEY_END, CTRL('e'), CTX_ANY, prompt_end, "End C-e", "the caret to the end", NULL },
+	{ KEY_BACKSPACE, 127, CTX_ANY, prompt_bspace, "BSpace", "delete the character before the caret", NULL },
+	{ KEY_DC, CTRL('d'), CTX_ANY, prompt_delete, "Delete C-d", "delete the character under the caret", NULL },
+	{ CTRL('k'), 0, CTX_ANY, prompt_kill, "C-k", "delete to the end", NULL },
+	{ CTRL('u'), 0, CTX_ANY, prompt_clear, "C-u", "clear the field", NULL },
+};
+
+static void
+prompt_other(struct app *a, int ch)
+{
+	prompt_type(a, ch);
+}
+
+const struct mode mode_prompt = {
+	.name = "prompt",
+	.title = "a prompt",
+	.opener = "Enter / e D F S",
+	.keys = MODE_KEYS(keys),
+	.other_help = "typed into the field; the value shown is replaced by the first key typed, unless a key above came first",
+	.other = prompt_other,
+};

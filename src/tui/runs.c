@@ -304,12 +304,13 @@ act_preset(struct app *a)
 		app_msg(a, 1, "no presets found (looked in %s; HYBOUNCE_PRESETS adds folders)", where);
 		return;
 	}
-	a->overlay = OV_PRESET;
+	a->pick_kind = PICK_PRESET;
 	a->pick_done = preset_chosen;
 	a->pick_sel = a->pick_top = 0;
 	for (int i = 0; i < n; i++)
 		if (strcmp(a->presets[i].name, a->preset) == 0)
 			a->pick_sel = i;
+	mode_push(a, &mode_preset);
 }
 
 /* ---- export ------------------------------------------------------------ */

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
- * sweep_view.c - the sweep view's state and keys: one parameter (the
+ * sweep_view.c - the sweep view's state, its mode and key table (mode.h;
+ * the footer and the help print it): one parameter (the
  * parameter panel's selected key), a range typed as for --vary
  * (FROM:TO:N[:log], units accepted) and an observable, computed by the
  * engine's background curve (sweep_curve_*: polling never waits, freeing
@@ -31,6 +32,7 @@
 
 #include "keys.h"
 #include "law.h"
+#include "mode.h"
 #include "status.h"
 #include "sweep_view.h"
 #include "term.h"
@@ -169,7 +171,8 @@ act_sweep(struct app *a)
 	if (a->sv == NULL && (a->sv = calloc(1, sizeof *a->sv)) == NULL)
 		term_oom();
 	if (strcmp(a->sv->key, ki.key) == 0 && (a->sv->cur.c != NULL || a->sv->npins > 0)) {
-		a->sv->open = 1;
+		if (!mode_on(a, &mode_sweep))
+			mode_push(a, &mode_sweep);
 		return;
 	}
 	pins_drop(a->sv);
@@ -182,7 +185,8 @@ act_sweep(struct app *a)
 	snprintf(a->sv->key, sizeof a->sv->key, "%s", ki.key);
 	default_spec(&ki, a->sv->spec, sizeof a->sv->spec);
 	a->sv->base = *sc;
-	a->sv->open = 1;
+	if (!mode_on(a, &mode_sweep))
+		mode_push(a, &mode_sweep);
 	open_range_prompt(a);
 }
 
@@ -242,7 +246,7 @@ sweep_prompt_done(struct app *a, const char *text, int how)
 		return;
 	if (cancelled) {
 		if (v->cur.c == NULL && v->npins == 0)
-			v->open = 0;
+			mode_close(a, &mode_sweep);
 		return;
 	}
 	if (v->prompt == SV_PROMPT_RANGE) {
@@ -252,7 +256,7 @@ sweep_prompt_done(struct app *a, const char *text, int how)
 		if (curve_start(a) != 0) {
 			snprintf(v->spec, sizeof v->spec, "%s", old);
 			if (v->cur.c == NULL && v->npins == 0)
-				v->open = 0;
+				mode_close(a, &mode_sweep);
 		}
 		return;
 	}
@@ -341,132 +345,164 @@ pin(struct app *a)
 	        v->pin[v->npins - 1].label, v->npins);
 }
 
-/* The keys that change the curve (not the map). */
+/* The keys that change the curve (CTX_CURVE: not on the map). */
+static void k_range(struct app *a) { open_range_prompt(a); }
+static void k_law_next(struct app *a) { next_law(a, 1); }
+static void k_law_prev(struct app *a) { next_law(a, -1); }
+static void k_pin(struct app *a) { pin(a); }
+
 static void
-curve_key(struct app *a, int ch)
+k_rescene(struct app *a)
+{
+	a->sv->base = *hb_sim_scene(a->sim);
+	curve_start(a);
+}
+
+
+static void
+k_bounds(struct app *a)
 {
 	struct sweep_view *v = a->sv;
 
-	switch (ch) {
-	case 'r':
-		open_range_prompt(a);
-		break;
-	case 'R':
-		v->base = *hb_sim_scene(a->sim);
-		curve_start(a);
-		break;
-	case 'L':
-	case 'l':
-		next_law(a, ch == 'L' ? 1 : -1);
-		break;
-	case 'p':
-		pin(a);
-		break;
-	case 'b':
-		v->bounds = !v->bounds;
-		if (curve_start(a) != 0)
-			v->bounds = !v->bounds;   /* refused (a list): as it was */
-		else if (!v->bounds)
-			app_msg(a, 0, "boundaries off (b: on)");
-		break;
-	case 'P':
-		pins_drop(v);
-		app_msg(a, 0, "pins cleared");
-		break;
-	}
+	v->bounds = !v->bounds;
+	if (curve_start(a) != 0)
+		v->bounds = !v->bounds;   /* refused (a list): as it was */
+	else if (!v->bounds)
+		app_msg(a, 0, "boundaries off (b: on)");
 }
 
-void
-sweep_view_key(struct app *a, int ch)
+static void
+k_unpin(struct app *a)
+{
+	pins_drop(a->sv);
+	app_msg(a, 0, "pins cleared");
+}
+
+static void
+k_close(struct app *a)
+{
+	mode_close(a, &mode_sweep);
+	app_msg(a, 0, "sweep view closed (S reopens it; the curve keeps computing)");
+}
+
+static void k_quit(struct app *a) { a->quit = 1; }
+static void k_map(struct app *a) { map_toggle(a); }
+static void k_help(struct app *a) { mode_push(a, &mode_help); }
+static void k_redraw(struct app *a) { clear(); app_relayout(a); }
+
+static void
+observable(struct app *a, int dir)
+{
+	struct sweep_view *v = a->sv;
+
+	v->obs = (v->obs + (dir > 0 ? 1 : HB_CURVE_COUNT - 1)) % HB_CURVE_COUNT;
+	restart(a, 1);
+}
+
+static void k_obs_next(struct app *a) { observable(a, 1); }
+static void k_obs_prev(struct app *a) { observable(a, -1); }
+
+static void
+collision(struct app *a, int dir)
+{
+	struct sweep_view *v = a->sv;
+
+	if (v->obs != HB_CURVE_E && v->obs != HB_CURVE_VI && v->obs != HB_CURVE_XCR) {
+		app_msg(a, 1, "< >: %s does not depend on a collision number (o: the observable)",
+		        hb_sweep_observable_name(v->obs));
+		return;
+	}
+	if (dir < 0) {
+		if (v->coll == 0)
+			return;
+		v->coll--;
+	} else {
+		v->coll++;
+	}
+	restart(a, 1);
+}
+
+static void k_coll_prev(struct app *a) { collision(a, -1); }
+static void k_coll_next(struct app *a) { collision(a, 1); }
+
+static void
+k_export(struct app *a)
 {
 	struct sweep_view *v = a->sv;
 	char def[256];
 
-	switch (ch) {
-	case 27:
-	case 'q':
-	case 'S':
-		v->open = 0;
-		app_msg(a, 0, "sweep view closed (S reopens it; the curve keeps computing)");
-		break;
-	case KEY_F(10):
-		a->quit = 1;
-		break;
-	case KEY_MOUSE:
-		break;
-	case 'm':
-		map_toggle(a);
-		break;
-	case 'r':
-	case 'R':
-	case 'L':
-	case 'l':
-	case 'p':
-	case 'b':
-	case 'P':
-		if (v->map.on) {
-			app_msg(a, 1, "%c works on the curve: m goes back to it", ch);
-			break;
-		}
-		curve_key(a, ch);
-		break;
-	case 'o':
-	case 'O':
-		v->obs = (v->obs + (ch == 'o' ? 1 : HB_CURVE_COUNT - 1)) % HB_CURVE_COUNT;
-		restart(a, 1);
-		break;
-	case '>':
-	case '.':
-	case '<':
-	case ',':
-		if (v->obs != HB_CURVE_E && v->obs != HB_CURVE_VI && v->obs != HB_CURVE_XCR) {
-			app_msg(a, 1, "< >: %s does not depend on a collision number (o: the observable)",
-			        hb_sweep_observable_name(v->obs));
-			break;
-		}
-		if (ch == '<' || ch == ',') {
-			if (v->coll == 0)
-				break;
-			v->coll--;
-		} else {
-			v->coll++;
-		}
-		restart(a, 1);
-		break;
-	case 'e':
-		if (v->map.on) {
-			snprintf(def, sizeof def, "%s-%s-%s-%s.csv", a->preset, v->map.key1, v->map.key2,
-			         hb_sweep_observable_name(v->map.obs));
-			v->prompt = SV_PROMPT_MAP_EXPORT;
-			prompt_open(a, PROMPT_SWEEP, sweep_prompt_done, def, "export the map as CSV to");
-			break;
-		}
-		snprintf(def, sizeof def, "%s-%s-%s.csv", a->preset, v->key,
-		         hb_sweep_observable_name(v->obs));
-		v->prompt = SV_PROMPT_EXPORT;
-		prompt_open(a, PROMPT_SWEEP, sweep_prompt_done, def, "export the curve as CSV to");
-		break;
-	case '?':
-	case KEY_F(1):
-		app_msg(a, 0, "sweep keys: o/O observable, < > collision, r range, R from the current "
-		        "scene, L/l law, b boundaries, p pin, P unpin, m map against the key swept before, "
-		        "e export CSV, q/Esc/S close");
-		break;
-	case 'L' & 0x1f: /* C-l */
-		clear();
-		app_relayout(a);
-		break;
-	default: {
-		char name[32];
-		app_msg(a, 1, "sweep view: unknown key %s (? for its keys)", keys_name(ch, name, sizeof name));
+	if (v->map.on) {
+		snprintf(def, sizeof def, "%s-%s-%s-%s.csv", a->preset, v->map.key1, v->map.key2,
+		         hb_sweep_observable_name(v->map.obs));
+		v->prompt = SV_PROMPT_MAP_EXPORT;
+		prompt_open(a, PROMPT_SWEEP, sweep_prompt_done, def, "export the map as CSV to");
+		return;
 	}
-	}
+	snprintf(def, sizeof def, "%s-%s-%s.csv", a->preset, v->key, hb_sweep_observable_name(v->obs));
+	v->prompt = SV_PROMPT_EXPORT;
+	prompt_open(a, PROMPT_SWEEP, sweep_prompt_done, def, "export the curve as CSV to");
 }
+
+static void
+sweep_other(struct app *a, int ch)
+{
+	char name[32];
+
+	if (ch == KEY_MOUSE)
+		return;
+	keys_name(ch, name, sizeof name);
+	if (a->sv->map.on && mode_binding(&mode_sweep, ch, CTX_CURVE) != NULL)
+		app_msg(a, 1, "%s works on the curve: m goes back to it", name);
+	else
+		app_msg(a, 1, "sweep view: unknown key %s (? for its keys)", name);
+}
+
+#define CTRL(c) ((c) & 0x1f)
+
+static const struct mode_key keys[] = {
+	{ 'o', 0, CTX_ANY, k_obs_next, "o",
+	  "the next observable: e, v_i, x_c^r of collision i, then the run observables of a sweep's runs.csv (collisions, t_pc ...)", "obs" },
+	{ 'O', 0, CTX_ANY, k_obs_prev, "O", "the previous observable", NULL },
+	{ '<', ',', CTX_ANY, k_coll_prev, "< ,", "the previous collision i (from 0, as in the table)", "<>:collision" },
+	{ '>', '.', CTX_ANY, k_coll_next, "> .", "the next collision i", NULL },
+	{ 'r', 0, CTX_CURVE, k_range, "r", "another range (FROM:TO:N[:log] or V1,V2,..., as --vary)", "range" },
+	{ 'R', 0, CTX_CURVE, k_rescene, "R", "recompute from the current scene", NULL },
+	{ 'L', 0, CTX_CURVE, k_law_next, "L", "the next law (at its defaults)", "law" },
+	{ 'l', 0, CTX_CURVE, k_law_prev, "l", "the previous law", NULL },
+	{ 'b', 0, CTX_CURVE, k_bounds, "b", "the boundaries on / off: each interval whose ends differ bisected in the background", "bounds" },
+	{ 'p', 0, CTX_CURVE, k_pin, "p", "pin the curve (up to 3, drawn as ghosts) to compare", "pin" },
+	{ 'P', 0, CTX_CURVE, k_unpin, "P", "clear the pinned curves", NULL },
+	{ 'm', 0, CTX_CURVE, k_map, "m",
+	  "the 2-D map of the observable over this key (across) and the key swept before it (up)", "map" },
+	{ 'm', 0, CTX_MAP, k_map, "m", "(map) back to the curve, where r R L l b p P work", "curve" },
+	{ 'e', 0, CTX_ANY, k_export, "e", "export the finished points (of the curve, or of the map) as CSV, never over an earlier export", "export" },
+	{ 'q', 27, CTX_ANY, k_close, "q Esc", "close the view (the curve keeps computing; S on the same parameter reopens it)", "close" },
+	{ 'S', 0, CTX_ANY, k_close, "S", "close the view, as q", NULL },
+	{ '?', KEY_F(1), CTX_ANY, k_help, "? F1", "the help, at these keys", "keys" },
+	{ KEY_F(10), 0, CTX_ANY, k_quit, "F10", "quit the explorer", NULL },
+	{ CTRL('l'), 0, CTX_ANY, k_redraw, "C-l", "redraw the screen", NULL },
+};
+
+static int
+sweep_context(const struct app *a)
+{
+	return a->sv != NULL && a->sv->map.on ? CTX_MAP : CTX_CURVE;
+}
+
+const struct mode mode_sweep = {
+	.name = "sweep",
+	.title = "the sweep view",
+	.opener = "S",
+	.keys = MODE_KEYS(keys),
+	.other = sweep_other,
+	.draw = pane_sweep_draw,
+	.context = sweep_context,
+};
 
 int
 sweep_view_open(const struct app *a)
 {
-	return a->sv != NULL && a->sv->open;
+	return a->sv != NULL && mode_on(a, &mode_sweep);
 }
 
 int
@@ -481,7 +517,7 @@ sweep_view_tick(struct app *a)
 	busy |= sv_map_tick(&v->map);
 	for (int i = 0; i < v->npins; i++)
 		busy |= curve_poll(&v->pin[i]);
-	return busy && v->open;
+	return busy && mode_on(a, &mode_sweep);
 }
 
 void

@@ -13,6 +13,8 @@
 #include "scene.h"
 #include "sweep.h"
 
+struct mode;
+
 struct app;
 
 enum { SV_MAX_PINS = 3, SV_MAX_BOUNDS = 64 };
@@ -57,7 +59,6 @@ struct sv_map {
 };
 
 struct sweep_view {
-	int open;                /* the view covers the plots */
 	char key[48];            /* the parameter swept */
 	char spec[160];          /* FROM:TO:N[:log] as typed */
 	int log;                 /* the range is logarithmic */
@@ -89,7 +90,7 @@ sv_map_drop(struct sv_map *m);
 
 /* pane_map.c: draws the map and its legend. */
 void
-pane_map_draw(const struct app *a);
+pane_map_draw(const struct app *a, const struct mode *self);
 
 /* SI base unit of an observable for axis labels ("m", "m/s", "s"), NULL for a plain number. */
 struct hb_unit_dim

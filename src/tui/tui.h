@@ -2,16 +2,19 @@
 /*
  * tui.h - the explorer's state, shared by its files (private to src/tui/).
  *
- * app.c owns the loop; a key becomes an action (keys.c) and the action a
- * function (actions.c) in the file that owns that part of the state:
- * nav.c, playback.c, edit.c, runs.c, log.c, mouse.c.  The pane_*.c files
- * only read the state and draw it.  Calls go one way, from the loop and
- * the dispatch down to the modes and the panes: a mode reports through
- * app_msg (log.c), lays the screen out again with app_relayout
- * (relayout.c), and a prompt or a picker reports to the function its
- * opener gave (prompt_fn, pick_fn); the shared primitives are draw.c
- * (text, boxes, wrapping), cursor.c (the cursor and the run's
- * collisions), names.c (export names), fitov_draw.c and sweep_obs.c.
+ * app.c owns the loop; a key goes to the mode on top of the stack of
+ * modes (mode.h: the explorer, presentation, the help, the log, the
+ * pickers, the prompt, the data table, the sweep view, each in its own
+ * file with its own key table), whose table gives the function, in the
+ * file that owns that part of the state: nav.c, playback.c, edit.c,
+ * runs.c, log.c, mouse.c.  The pane_*.c files only read the state and
+ * draw it.  Calls go one way, from the loop and the dispatch down to the
+ * modes and the panes: a mode reports through app_msg (log.c), lays the
+ * screen out again with app_relayout (relayout.c), and a prompt or a
+ * picker reports to the function its opener gave (prompt_fn, pick_fn);
+ * the shared primitives are draw.c (text, boxes, wrapping), cursor.c (the
+ * cursor and the run's collisions), names.c (export names), textov.c
+ * (scrolled text in a box), fitov_draw.c and sweep_obs.c.
  * tests/cli/calls.sh measures the cycles of calls left among the files
  * (nm over the objects) against tests/cli/calls.allow, empty now: the
  * loop (app.c) and a script (script.c) both play frames (frame.c).
@@ -25,6 +28,7 @@
 #include <stddef.h>
 
 #include "app.h"
+#include "mode.h"
 #include "layout.h"
 #include "preset.h"
 #include "sim.h"
@@ -33,8 +37,8 @@ enum { APP_MAX_PINS = 3, APP_LOG_MAX = 64, APP_UNDO_MAX = 32 };
 
 enum view { VIEW_WHOLE = 0, VIEW_FOLLOW, VIEW_ZOOM, VIEW_LOOP, VIEW_J, VIEW_COUNT };
 enum focus { FOCUS_TABLE = 0, FOCUS_PARAMS };
-enum overlay { OV_NONE = 0, OV_HELP, OV_LAW, OV_PRESET, OV_PROMPT, OV_LOG };
-enum { OV_FIT = 16 };           /* overlay_fit.c: measured against simulated */
+enum { APP_MODE_MAX = 8 };     /* modes open at once (mode.h) */
+enum pick_kind { PICK_LAW = 0, PICK_PRESET };
 enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH, PROMPT_SWEEP };
 enum { PROMPT_DATA = 16, PROMPT_FIT };  /* overlay_fit.c */
 
@@ -113,13 +117,20 @@ struct app {
 	long table_sel, table_top;
 	int param_sel, param_top;
 
-	int overlay;                /* enum overlay */
+	/*
+	 * The modes open (mode.h), the explorer (mode_main) first: the top one
+	 * takes the keys.  modes: the registry, every mode (the help lists them).
+	 */
+	const struct mode *mode[APP_MODE_MAX];
+	int nmodes;
+	const struct mode *const *modes;
+	int pick_kind;              /* enum pick_kind: the list of the open picker */
 	int pick_sel, pick_top, help_top;
 	struct hb_preset_info *presets;
 	int npresets;
 	int prompt_kind;
 	prompt_fn *prompt_done;      /* what the open prompt reports to (prompt_open) */
-	pick_fn *pick_done;          /* what the open picker reports to (OV_LAW, OV_PRESET) */
+	pick_fn *pick_done;          /* what the open picker reports to (mode_law, mode_preset) */
 	char prompt_key[48];
 	char prompt_title[640];
 	char prompt_buf[256];
@@ -152,9 +163,8 @@ struct app {
 	struct plot_sums *psum;     /* plot_summary.c: what the plots draw of long arcs (NULL: none) */
 };
 
-/* An action of the key table (actions.c). */
+/* What a key of a mode's table does (mode.h). */
 typedef void action_fn(struct app *a);
-action_fn *action_get(int act);
 
 action_fn act_play, act_step_fwd, act_step_back, act_prev_jump, act_next_jump,
 	act_prev_coll, act_next_coll, act_scrub_back, act_scrub_fwd, act_home, act_end,
@@ -180,6 +190,8 @@ void search_do(struct app *a, const char *text, int final);
 double speed_default(double T);
 int playback_tick(struct app *a, double dt);      /* 1 while playing */
 const char *stiff_note(const struct app *a, char *buf, size_t n);
+/* Presentation: each axis's range over the samples of the runs drawn so far (a->hold). */
+void hold_update(struct app *a);
 
 /* edit.c: the what-if loop. */
 void edit_value(struct app *a, const char *key, const char *text);
@@ -204,13 +216,24 @@ int tui_path_taken(const char *path);
 /* prompt.c */
 void prompt_open(struct app *a, int kind, prompt_fn *done, const char *text, const char *fmt, ...)
 	__attribute__((format(printf, 5, 6)));
-void prompt_key(struct app *a, int ch);
 
-/* log.c: keys while the help or the log is open; the log's memory. */
-void overlay_key(struct app *a, int ch);
+/* log.c: the log's memory. */
 void log_free(struct app *a);
 const char *log_get(const struct app *a, int i);  /* i-th message, oldest first */
-void pane_log_draw(const struct app *a);
+
+/*
+ * textov.c: a text overlay (the help, the log): a box over the plots and
+ * the bottom pane whose lines scroll.  lines(a, out, ctx) gives every line
+ * to out (wrapped to width w); *top is the first line shown.
+ */
+struct rect;
+typedef void textov_out(void *ctx, int k, const char *line);
+typedef int textov_lines(const struct app *a, int w, textov_out *out, void *ctx);
+int textov_width(const struct app *a);
+void textov_draw(const struct app *a, const char *title, textov_lines *lines, int top);
+void textov_scroll(struct app *a, textov_lines *lines, int *top, int d);  /* d: lines; +-1000000: a page */
+int textov_page(const struct app *a);                                   /* the rows shown */
+void textov_wheel(struct app *a, textov_lines *lines, int *top);        /* KEY_MOUSE: the wheel */
 /* An overlay box with a border on all four sides, cleared inside; returns the inner rect (draw.c). */
 struct rect box_draw(int y, int x, int h, int w, const char *title);
 
@@ -248,9 +271,7 @@ void pane_plot_draw(const struct app *a);
 void pane_table_draw(const struct app *a);
 void pane_params_draw(const struct app *a);
 void pane_status_draw(const struct app *a);
-void pane_help_draw(const struct app *a);
 void pane_too_small_draw(const struct app *a);
-void pickers_draw(const struct app *a);
 /* The abscissa range the plots show (t, or j in the (t, j) view). */
 void plot_view_range(const struct app *a, double *t0, double *t1);
 /* f: the view as a figure (figure.c). */
@@ -262,7 +283,7 @@ int plot_abscissa_at(const struct app *a, int x, double *t);
 void
 app_draw(struct app *a);
 
-/* Handles one key (as from getch) and returns nothing; sets a->quit to leave (actions.c). */
+/* Handles one key (as from getch) through the top mode (mode.h); sets a->quit to leave (actions.c). */
 void
 app_key(struct app *a, int ch);
 
@@ -300,9 +321,9 @@ app_open_preset(struct app *a, const char *name);
 void
 app_set_law(struct app *a, const char *law);
 
-/* Pickers (pickers.c): keys while a picker is open. */
-void
-pickers_key(struct app *a, int ch);
+/* Pickers (pickers.c): the list of the open picker (a->pick_kind); its modes: pick_law.c, pick_preset.c. */
+action_fn pick_up, pick_down, pick_pgup, pick_pgdn, pick_home, pick_end, pick_close, pick_choose;
+void pickers_draw(const struct app *a, const struct mode *self);
 
 /* Scripted mode (script.c).  Returns the exit status. */
 int
@@ -329,8 +350,8 @@ int fitov_loaded(const struct app *a);
 void fitov_announce(struct app *a);                       /* what is loaded, to the message line */
 void fitov_free(struct app *a);
 int fitov_tick(struct app *a);                            /* 1 while fitting */
-void fitov_key(struct app *a, int ch);                    /* keys of OV_FIT */
-void fitov_draw(const struct app *a);
+/* The data table M (mode_fit.c), drawn by fitov_draw.c. */
+void fitov_draw(const struct app *a, const struct mode *self);
 void fitov_plot_marks(const struct app *a, struct canvas *c, int q_is_x, double t0, double t1);
 void fitov_table_note(const struct app *a, long i, char *line, size_t n); /* i -1: header */
 /* A recording is shown (its envelope, onsets and the run's impacts on the plots' t axis). */
@@ -345,9 +366,8 @@ app_msg(struct app *a, int error, const char *fmt, ...) __attribute__((format(pr
 /* The sweep view (sweep_view.c, pane_sweep.c): S opens it; while open it takes the keys. */
 action_fn act_sweep;
 int sweep_view_open(const struct app *a);
-void sweep_view_key(struct app *a, int ch);
 int sweep_view_tick(struct app *a);              /* polls the curves; 1 while computing */
 void sweep_view_free(struct app *a);
-void pane_sweep_draw(const struct app *a);
+void pane_sweep_draw(const struct app *a, const struct mode *self);
 
 #endif

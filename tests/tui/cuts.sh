@@ -54,12 +54,20 @@ if wait_for a 'more below \(Down\)' 30; then
 else
 	notok "help: the bottom border says more rows follow" a
 fi
-keys a PgDn PgDn PgDn PgDn PgDn PgDn PgDn PgDn
-if wait_gone a 'more below' 50 && wait_for a 'more above \(Up\)' 30 &&
-   wait_joined a "every column is in the exported CSV."; then
-	ok "help: its last row is reached, and the cut mark is explained there"
+# the explorer's keys, then the legend, which explains the cut mark
+keys a PgDn PgDn PgDn PgDn PgDn
+if wait_joined a "every column is in the exported CSV."; then
+	ok "help: the cut mark is explained after the explorer's keys"
 else
-	notok "help: its last row is reached, and the cut mark is explained there" a
+	notok "help: the cut mark is explained after the explorer's keys" a
+fi
+# then every other mode's keys, to the last row: the sweep view's
+keys a PgDn PgDn PgDn PgDn PgDn PgDn PgDn PgDn PgDn PgDn PgDn PgDn PgDn PgDn PgDn PgDn
+if wait_gone a 'more below' 50 && wait_for a 'more above \(Up\)' 30 &&
+   wait_joined a "F10 quit the explorer"; then
+	ok "help: its last row is reached, the keys of every mode before it"
+else
+	notok "help: its last row is reached, the keys of every mode before it" a
 fi
 keys a Escape
 

@@ -4,7 +4,8 @@
 # c, then S on v0 sweeps v0; m maps e over v0 (across) and c (up), row by
 # row in the background; the legend gives each shade's range; e exports
 # the grid (i1,i2,KEY1,KEY2,OBS, one row per point) and a second export
-# keeps the first; m goes back to the curve; quitting exits 0.
+# keeps the first; X marks the current scene; m goes back to the curve;
+# quitting exits 0.
 . "$(dirname "$0")/common.inc"
 
 start a 80 24 --ascii
@@ -69,6 +70,25 @@ if wait_for a '^wrote steel-on-bitumen-initial\.v0-law\.c-e-2\.csv \(12 of 4 x 3
 	ok "a second export keeps the first (NAME-2.csv)"
 else
 	notok "a second export keeps the first" a
+fi
+# the current scene on the map: v0 = 0 is off it; after v0 = -0.5 m/s it is
+# the X on the cell of v0 = -0.467 m/s (across) and c = 5000 (up)
+if screen a | grep -q 'X scene: off the map' && [ "$(screen a | sed -n '3,22p' | cut -c11-55 | grep -c X)" -eq 0 ]; then
+	ok "the map says when the current scene is off it"
+else
+	notok "the map says when the current scene is off it" a
+fi
+keys a q
+wait_gone a '^map: ' 30
+keys a Enter ; keys a C-u ; keys a -l -- "-0.5 m/s" ; keys a Enter
+wait_for a ' finished$' 150
+keys a S
+if wait_for a 'X the current scene' 30 \
+   && [ "$(screen a | sed -n '3,22p' | cut -c11-55 | grep -c X)" -eq 1 ] \
+   && screen a | sed -n '3,22p' | cut -c11-55 | grep -q '^[^X]\{11,22\}X'; then
+	ok "the current scene is marked X on the map"
+else
+	notok "the current scene is marked X on the map" a
 fi
 keys a m
 if wait_for a '^sweep: e of collision 0 against initial\.v0' 30; then

@@ -92,6 +92,25 @@ if wait_for a '^sweep not started: --vary initial\.v0=-1 mm/s:-10 m/s:1000000000
 else
 	notok "a range of 10^9 points is refused at once, the curve kept" a
 fi
+# the view's own keys: its footer and ? (the help, at its list) from its key table
+if screen a | tail -n 1 | grep -q '^o:obs <>:collision r:range L:law b:bounds p:pin m:map e:export q:close ?:keys'; then
+	ok "the sweep view's footer lists its keys"
+else
+	notok "the sweep view's footer lists its keys" a
+fi
+keys a '?'
+if wait_for a 'hybounce keys' 30 && wait_for a 'In the sweep view \(S\):' 10 \
+   && wait_for a ' o {5,}the next observable' 10 && wait_for a ' > \. {5,}the next collision i' 10; then
+	ok "? in the sweep view: the help, at the view's keys"
+else
+	notok "? in the sweep view: the help, at the view's keys" a
+fi
+keys a x
+if wait_gone a 'hybounce keys' 30 && wait_for a '^sweep: e of collision 0 ' 10; then
+	ok "any other key closes the help, back in the sweep view"
+else
+	notok "any other key closes the help, back in the sweep view" a
+fi
 keys a q
 wait_gone a '^sweep: e of' 30
 keys a / ; keys a -l scene.law ; keys a Enter
