@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include "app.h"
+#include "spacetime.h"
 #include "status.h"
 #include "term.h"
 #include "tui.h"
@@ -128,6 +129,7 @@ done:
 	fitov_free(a);
 	errbar_free(a);
 	sweep_view_free(a);
+	spacetime_free(a);
 	physics_forget(a);
 	pins_clear(a);
 	hb_sim_free(a->sim);

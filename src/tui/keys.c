@@ -42,6 +42,8 @@ static const struct key_binding table[] = {
 	{ 'z', 0, CTX_ANY, ACT_ZOOM, "z", "zoom on the collision at the cursor (or the selected row)", NULL },
 	{ 'y', 0, CTX_ANY, ACT_LOOP, "y", "hysteresis loop F_c against x_c of that collision", NULL },
 	{ 'J', 0, CTX_ANY, ACT_JVIEW, "J", "the arc against the jump counter j", NULL },
+	{ 'V', 0, CTX_ANY, ACT_SPACETIME, "V",
+	  "space-time view on / off: every body's position against t, # at each contact of each interface, the cursor's time", NULL },
 	{ '\t', 0, CTX_ANY, ACT_FOCUS, "Tab", "switch the focus: collisions table / parameter panel", "params" },
 	{ KEY_UP, 'k', CTX_ANY, ACT_UP, "Up k", "previous row of the focused table", NULL },
 	{ KEY_DOWN, 'j', CTX_ANY, ACT_DOWN, "Down j", "next row of the focused table", NULL },
