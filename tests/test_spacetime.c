@@ -68,7 +68,11 @@ Test(spacetime, cradle_contacts_per_interface)
 		                   st->c[i].t0, c->te);
 		cr_assert_float_eq(st->c[i].t1, c->ts, 1e-12, "contact %zu ends at %g, not %g", i,
 		                   st->c[i].t1, c->ts);
+		cr_assert_eq(st->c[i].j, c->j, "contact %zu in interval %ld, not %ld", i, st->c[i].j, c->j);
 	}
+	/* the gap of interface 4 (bodies 4 and 5) closes at 1 m/s: half of 1 mm at 0.5 ms */
+	cr_assert_float_eq(st_gap_at(st, 4, 0.0005), 0.0005, 1e-12);
+	cr_assert_float_eq(st_gap_at(st, 3, 0.0005), 0.001, 1e-12);
 	/* at the end every body where the run left it */
 	cr_assert_eq(st->t[st->nrec - 1], hb_arc_last(hb_sim_arc(a->sim))->t);
 	for (int b = 0; b < st->nb; b++) {
@@ -111,5 +115,30 @@ Test(spacetime, off_frees)
 	cr_assert(!spacetime_on(a));
 	cr_assert_null(a->st->sh);
 	cr_assert_eq(a->st->nrec, 0);
+	app_off(a);
+}
+
+/* K cycles the interfaces 1 .. 4 of a chain of five, then back to the run's own. */
+Test(spacetime, iface_cycles)
+{
+	struct app *a = app_on("n = 5\nspacing = 1 mm", 0.01);
+	char buf[32];
+
+	act_spacetime(a);   /* the view off: the interface still needs the buffer */
+	cr_assert_eq(spacetime_iface(a), -1);
+	cr_assert_str_empty(spacetime_state(a, buf, sizeof buf));
+	for (int k = 1; k <= 4; k++) {
+		act_iface(a);
+		cr_assert_eq(spacetime_iface(a), k);
+		char want[24];
+		snprintf(want, sizeof want, " k=%d", k);
+		cr_assert_str_eq(spacetime_state(a, buf, sizeof buf), want);
+	}
+	for (int n = 0; spacetime_tick(a); n++)
+		cr_assert(n < 100000);
+	cr_assert_eq(a->st->nc, 4, "the buffer computed for the interface without the view");
+	act_iface(a);
+	cr_assert_eq(spacetime_iface(a), -1);
+	cr_assert_null(a->st->sh, "back to the run's own, the view off: the buffer freed");
 	app_off(a);
 }

@@ -45,7 +45,7 @@ static action_fn *const actions[ACT_COUNT] = {
 	[ACT_SEARCH_NEXT] = act_search_next, [ACT_SEARCH_PREV] = act_search_prev,
 	[ACT_UNDO] = act_undo, [ACT_RESET] = act_reset,
 	[ACT_FIGURE] = act_figure,
-	[ACT_SPACETIME] = act_spacetime,
+	[ACT_SPACETIME] = act_spacetime, [ACT_IFACE] = act_iface,
 };
 
 action_fn *

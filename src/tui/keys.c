@@ -44,6 +44,8 @@ static const struct key_binding table[] = {
 	{ 'J', 0, CTX_ANY, ACT_JVIEW, "J", "the arc against the jump counter j", NULL },
 	{ 'V', 0, CTX_ANY, ACT_SPACETIME, "V",
 	  "space-time view on / off: every body's position against t, # at each contact of each interface, the cursor's time", NULL },
+	{ 'K', 0, CTX_ANY, ACT_IFACE, "K",
+	  "a chain's next interface k for the plots (x, x_c, F_c of k; k= in the status line), then each interval's own", NULL },
 	{ '\t', 0, CTX_ANY, ACT_FOCUS, "Tab", "switch the focus: collisions table / parameter panel", "params" },
 	{ KEY_UP, 'k', CTX_ANY, ACT_UP, "Up k", "previous row of the focused table", NULL },
 	{ KEY_DOWN, 'j', CTX_ANY, ACT_DOWN, "Down j", "next row of the focused table", NULL },

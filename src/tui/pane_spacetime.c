@@ -22,8 +22,8 @@
 
 enum { LM = 9, INK_BODY = 1, INK_CONTACT = 2 };
 
-static void
-blit(const struct app *a, const struct canvas *c, int y, int x, int curcol)
+void
+st_blit(const struct app *a, const struct canvas *c, int y, int x, int curcol)
 {
 	char cell[8];
 
@@ -56,9 +56,9 @@ blit(const struct app *a, const struct canvas *c, int y, int x, int curcol)
 		}
 }
 
-/* The y axis: its top and bottom ticks and the name, in the left margin. */
-static void
-ylabels(const struct axis *ay, int y, int h)
+/* The y axis: its top and bottom ticks and the name (with the unit), in the left margin. */
+void
+st_ylabels(const struct axis *ay, int y, int h, const char *name)
 {
 	char lab[32], buf[40];
 
@@ -68,14 +68,14 @@ ylabels(const struct axis *ay, int y, int h)
 	canvas_tick_label(ay, ay->lo, lab, sizeof lab);
 	snprintf(buf, sizeof buf, "%*s", LM - 1, lab);
 	tui_puts(y + h - 1, 0, LM - 1, buf, 0);
-	snprintf(buf, sizeof buf, "y[%s]", ay->unit);
+	snprintf(buf, sizeof buf, ay->unit[0] ? "%s[%s]" : "%s", name, ay->unit);
 	if (h >= 3)
 		tui_puts(y + h / 2, 0, LM - 1, buf, A_BOLD);
 }
 
 /* The abscissa: as the plots' in the follow and zoom views, else the whole run. */
-static void
-st_range(const struct app *a, const struct spacetime *st, double *t0, double *t1)
+void
+st_time_range(const struct app *a, const struct spacetime *st, double *t0, double *t1)
 {
 	const struct hb_arc *arc = hb_sim_arc(a->sim);
 	const struct hb_arc_sample *l = hb_arc_last(arc);
@@ -231,7 +231,7 @@ pane_spacetime_draw(const struct app *a)
 		tui_puts(r->y, LM, cw, title, A_BOLD);
 		return;
 	}
-	st_range(a, st, &t0, &t1);
+	st_time_range(a, st, &t0, &t1);
 	c = st_canvas(a, st, t0, t1, cw, ch, &ay, &every);
 	n = snprintf(title, sizeof title, "space-time: ");
 	if (hb_sim_end(st->sh) == HB_SIM_RUNNING)
@@ -243,8 +243,8 @@ pane_spacetime_draw(const struct app *a)
 		              every == 2 ? "nd" : every == 3 ? "rd" : "th");
 	snprintf(title + n, sizeof title - (size_t)n, ", # contact; t = %s", tbuf);
 	tui_puts(r->y, LM, cw, title, A_BOLD);
-	blit(a, c, r->y + 1, r->x + LM, canvas_col(c, tc));
-	ylabels(&ay, r->y + 1, ch);
+	st_blit(a, c, r->y + 1, r->x + LM, canvas_col(c, tc));
+	st_ylabels(&ay, r->y + 1, ch, "y");
 	canvas_axis(t0, t1, cw / 10 > 2 ? cw / 10 : 2, "s", &ax);
 	canvas_axis_line(&ax, t0, t1, cw, line, sizeof line);
 	tui_puts(r->y + 1 + ch, r->x + LM, cw, line, 0);

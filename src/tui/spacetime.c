@@ -5,6 +5,7 @@
  * spacetime.h for why and how).
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -225,16 +226,24 @@ st_observe(struct spacetime *st)
 	st->last_iv = (long)ivi;
 }
 
+/* The state, allocated on first use; NULL (and a message) on no memory. */
+static struct spacetime *
+st_get(struct app *a)
+{
+	if (a->st == NULL && (a->st = calloc(1, sizeof *a->st)) == NULL)
+		app_msg(a, 1, "space-time view: out of memory");
+	return a->st;
+}
+
 void
 act_spacetime(struct app *a)
 {
-	if (a->st == NULL && (a->st = calloc(1, sizeof *a->st)) == NULL) {
-		app_msg(a, 1, "space-time view: out of memory");
+	if (st_get(a) == NULL)
 		return;
-	}
 	a->st->on = !a->st->on;
 	if (!a->st->on) {
-		st_reset(a->st);   /* its memory back; V again computes it afresh */
+		if (a->st->iface == 0)
+			st_reset(a->st);   /* its memory back; V again computes it afresh */
 		app_msg(a, 0, "space-time view off: the plots again");
 		return;
 	}
@@ -248,6 +257,67 @@ spacetime_on(const struct app *a)
 	return a->st != NULL && a->st->on;
 }
 
+/* The scene's interfaces: k0 .. nb - 1. */
+static void
+st_ifaces(const struct app *a, int *k0, int *nb)
+{
+	const struct hb_scene *sc = hb_sim_scene(a->sim);
+
+	*nb = hb_sim_nbodies(a->sim);
+	*k0 = sc->chain.n > 0 ? (sc->chain.floor ? 0 : 1) : (*nb == 1 ? 0 : 1);
+}
+
+void
+act_iface(struct app *a)
+{
+	int k0, nb, k;
+
+	st_ifaces(a, &k0, &nb);
+	if (nb - k0 < 2) {
+		app_msg(a, 1, "one interface only: the plots show it (K chooses among a chain's)");
+		return;
+	}
+	if (st_get(a) == NULL)
+		return;
+	k = a->st->iface - 1;   /* -1: the run's own */
+	k = k < 0 ? k0 : k + 1;
+	if (k >= nb) {
+		a->st->iface = 0;
+		if (!a->st->on)
+			st_reset(a->st);
+		app_msg(a, 0, "plots: each interval's interface, as the run records it (K: interface %d)", k0);
+		return;
+	}
+	a->st->iface = k + 1;
+	if (k == 0)
+		app_msg(a, 0, "plots: interface 0 (the floor and body 1): x, x_c, F_c (K: the next)");
+	else
+		app_msg(a, 0, "plots: interface %d (bodies %d and %d): x, x_c, F_c (K: the next)", k, k, k + 1);
+}
+
+int
+spacetime_iface(const struct app *a)
+{
+	int k0, nb;
+
+	if (a->st == NULL || a->st->iface == 0)
+		return -1;
+	st_ifaces(a, &k0, &nb);
+	return a->st->iface - 1 < nb ? a->st->iface - 1 : -1;   /* a scene with fewer bodies now */
+}
+
+char *
+spacetime_state(const struct app *a, char *buf, size_t n)
+{
+	int k = spacetime_iface(a);
+
+	if (k < 0)
+		snprintf(buf, n, "%s", "");
+	else
+		snprintf(buf, n, " k=%d", k);
+	return buf;
+}
+
 int
 spacetime_tick(struct app *a)
 {
@@ -255,8 +325,8 @@ spacetime_tick(struct app *a)
 	double t0;
 	int n = 0;
 
-	if (!spacetime_on(a) || a->branch_t >= 0)
-		return 0;   /* a branched run: the scene from t = 0 is not the run (pane_spacetime.c says so) */
+	if ((!spacetime_on(a) && spacetime_iface(a) < 0) || a->branch_t >= 0)
+		return 0;   /* a branched run: the scene from t = 0 is not the run (the panes say so) */
 	if (st->src != a->sim || st->scene == NULL
 	    || memcmp(st->scene, hb_sim_scene(a->sim), st->scene_size) != 0) {
 		if (st->failed && st->src == a->sim)
@@ -328,4 +398,17 @@ st_y_at(const struct spacetime *st, int b, double t, size_t *i)
 	/* cubic Hermite: exact for a parabola (a body in free flight under a constant load) */
 	return (2 * s * s * s - 3 * s * s + 1) * y0 + (s * s * s - 2 * s * s + s) * m0
 	       + (-2 * s * s * s + 3 * s * s) * y1 + (s * s * s - s * s) * m1;
+}
+
+double
+st_gap_at(const struct spacetime *st, int k, double t)
+{
+	size_t h = 0;
+	double lo, hi;
+
+	if (k == 0)
+		return st_y_at(st, 0, t, &h) - st->R[0] - st->floor_y;
+	lo = st_y_at(st, k - 1, t, &h);
+	hi = st_y_at(st, k, t, &h);
+	return (hi - st->R[k]) - (lo + st->R[k - 1]);
 }

@@ -38,6 +38,7 @@ struct st_contact {
 
 struct spacetime {
 	int on;
+	int iface;                  /* the interface the plots show, + 1 (0: the run's own, as recorded) */
 	const struct hb_sim *src;   /* the explorer's run this one shadows */
 	struct hb_sim *sh;          /* the shadow (NULL: none) */
 	unsigned char *scene;       /* the scene it was built from (bytes, to see an edit) */
@@ -65,6 +66,14 @@ struct spacetime {
 void act_spacetime(struct app *a);
 /* 1 when the view replaces the plots. */
 int spacetime_on(const struct app *a);
+/* K: the interface whose x, x_c and F_c the plots show: the next one, then the run's own. */
+void act_iface(struct app *a);
+/* That interface k (docs/chains.md numbering), or -1: the run's own (each interval's). */
+int spacetime_iface(const struct app *a);
+/* " k=K" for the status line while an interface is chosen, else "".  Returns buf. */
+char *spacetime_state(const struct app *a, char *buf, size_t n);
+/* The gap of interface k at t (the records' cubic), m. */
+double st_gap_at(const struct spacetime *st, int k, double t);
 /* One frame's work on the shadow (within the frame's budget); 1 while computing. */
 int spacetime_tick(struct app *a);
 void spacetime_free(struct app *a);
@@ -79,5 +88,13 @@ double st_gap(const struct spacetime *st, int k, size_t i);
 
 /* pane_spacetime.c: draws the view into the plots' rectangle. */
 void pane_spacetime_draw(const struct app *a);
+/* ... its canvas copy and its y labels, shared with pane_iface.c */
+void st_blit(const struct app *a, const struct canvas *c, int y, int x, int curcol);
+struct axis;
+void st_ylabels(const struct axis *ay, int y, int h, const char *name);
+/* The time axis: the plots' in the follow and zoom views, else the whole run. */
+void st_time_range(const struct app *a, const struct spacetime *st, double *t0, double *t1);
+/* pane_iface.c: x, x_c and F_c of the chosen interface, in the plots' rectangle. */
+void pane_iface_draw(const struct app *a);
 
 #endif

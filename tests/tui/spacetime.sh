@@ -5,7 +5,9 @@
 # the four contacts with # at its interface, from the top down, and shows
 # the cursor's time (the status line's); on a chain of 100 it thins the
 # lines and says so, and still marks the contacts; V again gives the
-# plots back; the key is in the help; quitting exits 0.
+# plots back; K shows x, x_c and F_c of one interface at a time (k= on
+# the status line), then the run's own; the key is in the help; quitting
+# exits 0.
 . "$(dirname "$0")/common.inc"
 
 cat >"$TMP/cradle.preset" <<'P'
@@ -64,6 +66,26 @@ if wait_for a '^ +(whole run|follow the cursor)' 30 && wait_for a '^space-time v
 else
 	notok "V again: the plots" a
 fi
+# K: the plots of one interface, k= on the status line; after the last, the run's own again
+keys a K
+if wait_for a '^ cradle hertz k=1 t=' 30 && wait_for a '^ +interface 1 \(bodies 1 and 2\)$' 30 &&
+   screen a | grep -q '^x\[mm\]' && screen a | grep -q '^F_c\[kN\]'; then
+	ok "K: x, x_c and F_c of interface 1, k=1 on the status line"
+else
+	notok "K: x, x_c and F_c of interface 1, k=1 on the status line" a
+fi
+keys a K K K
+if wait_for a '^ cradle hertz k=4 t=' 30 && wait_for a '^ +interface 4 \(bodies 4 and 5\)$' 30; then
+	ok "K three times more: interface 4"
+else
+	notok "K three times more: interface 4" a
+fi
+keys a K
+if wait_for a '^ cradle hertz t=' 30 && wait_for a '^ +(whole run|follow the cursor)' 30; then
+	ok "K after the last interface: the run's own plots, no k="
+else
+	notok "K after the last interface: the run's own plots, no k=" a
+fi
 keys a '?'
 wait_for a 'hybounce keys' 30
 n=0
@@ -72,10 +94,10 @@ while [ $n -lt 10 ] && ! screen a | grep -q 'V  *space-time view on / off'; do
 	n=$((n + 1))
 	wait_for a 'hybounce keys' 30
 done
-if screen a | grep -q 'V  *space-time view on / off'; then
-	ok "the help lists V"
+if screen a | grep -q 'V  *space-time view on / off' && screen a | grep -q "K  *a chain's next interface"; then
+	ok "the help lists V and K"
 else
-	notok "the help lists V" a
+	notok "the help lists V and K" a
 fi
 keys a q
 keys a q
