@@ -142,3 +142,40 @@ Test(spacetime, iface_cycles)
 	cr_assert_null(a->st->sh, "back to the run's own, the view off: the buffer freed");
 	app_off(a);
 }
+
+/*
+ * The reduced system (one body over the floor) over a long horizon, its
+ * arc thinned many times: every contact is interface 0's, and each of the
+ * 12 collisions is a contact with its t_e and t_s; the 13th is the
+ * permanent contact the run ends in.
+ */
+Test(spacetime, reduced_system_thinned_arc)
+{
+	struct hb_scene sc;
+	struct app *a = calloc(1, sizeof *a);
+
+	cr_assert_not_null(a);
+	scene_preset("steel-on-bitumen", &sc);
+	sc.run.T = 20;
+	sc.run.max_samples = 2000;
+	a->sim = run_scene(&sc);
+	a->budget = 0.002;
+	a->branch_t = -1;
+	act_spacetime(a);
+	for (int n = 0; spacetime_tick(a); n++)
+		cr_assert(n < 1000000, "the shadow never ends");
+	cr_assert(hb_arc_thinned(hb_sim_arc(a->st->sh)) > 0, "the shadow's arc was not thinned");
+	cr_assert_eq(a->st->nb, 1);
+	cr_assert_eq(a->st->k0, 0);
+	cr_assert_eq(hb_sim_ncollisions(a->sim), 12);
+	cr_assert_eq(a->st->nc, 13, "contacts %zu", a->st->nc);
+	for (size_t i = 0; i < a->st->nc; i++) {
+		cr_assert_eq(a->st->c[i].k, 0);
+		if (i < 12) {
+			const struct hb_collision *c = hb_sim_collision(a->sim, i);
+			cr_assert_float_eq(a->st->c[i].t0, c->te, 1e-12);
+			cr_assert_float_eq(a->st->c[i].t1, c->ts, 1e-12);
+		}
+	}
+	app_off(a);
+}

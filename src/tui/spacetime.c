@@ -94,7 +94,7 @@ st_build(struct spacetime *st, const struct hb_sim *src)
 	st->floor_y = 0;
 	st->T = sc->run.T;
 	st->dt = st->T / (double)(st->cap / 2);
-	st->last_iv = -1;
+	st->last_j = -1;
 	st->ylo = st->k0 == 0 ? st->floor_y : INFINITY;
 	st->yhi = st->k0 == 0 ? st->floor_y : -INFINITY;
 	return 0;
@@ -191,39 +191,50 @@ st_contact(struct spacetime *st, int k, long j, double t0, double t1)
 }
 
 /*
- * After a step of the shadow: a record on the grid or where a flow
- * interval changed, and the contact of the interval (its interface found
- * from the gaps), or of the one before when a whole contact fell within
- * one step.
+ * After a step of the shadow: a record on the grid or where a new flow
+ * interval began, and the contact of the interval (its interface found
+ * from the gaps).  The intervals passed since the last step (by j: the
+ * arc's thinning renumbers its intervals, never their j) close the last
+ * contact where it ended, and a contact begun and ended within one step
+ * goes to the pair nearest touching then.
  */
 static void
 st_observe(struct spacetime *st)
 {
 	const struct hb_arc *arc = hb_sim_arc(st->sh);
 	const struct hb_arc_sample *l = hb_arc_last(arc);
-	size_t li, ivi;
 	const struct hb_arc_interval *iv;
+	size_t ivi, m;
+	int fresh;
 
 	if (l == NULL)
 		return;
-	li = hb_arc_len(arc) - 1;
-	ivi = hb_arc_interval_of(arc, li);
+	ivi = hb_arc_interval_of(arc, hb_arc_len(arc) - 1);
 	iv = hb_arc_interval_at(arc, ivi);
-	if (st->nrec == 0 || l->t - st->t[st->nrec - 1] >= st->dt || (long)ivi != st->last_iv
+	fresh = iv != NULL && iv->j != st->last_j;
+	if (st->nrec == 0 || l->t - st->t[st->nrec - 1] >= st->dt || fresh
 	    || hb_sim_end(st->sh) != HB_SIM_RUNNING)
 		st_record(st, l->t);
-	if (iv != NULL && (long)ivi != st->last_iv && ivi > 0) {
-		/* the interval before, if it was a contact: closed where this one began */
-		const struct hb_arc_interval *pv = hb_arc_interval_at(arc, ivi - 1);
-		if (pv->q && st->nc > 0 && st->c[st->nc - 1].j == pv->j)
-			st->c[st->nc - 1].t1 = pv->t1;
-		else if (pv->q)   /* begun and ended within one step: the pair nearest touching now */
-			st_contact(st, st_iface_of(st, 0.0), pv->j, pv->t0, pv->t1);
+	if (iv == NULL)
+		return;
+	if (fresh) {
+		for (m = ivi; m > 0 && hb_arc_interval_at(arc, m - 1)->j > st->last_j; m--)
+			;   /* m: the first interval after the last one seen */
+		if (m > 0) {
+			const struct hb_arc_interval *pv = hb_arc_interval_at(arc, m - 1);
+			if (pv->q && st->nc > 0 && st->c[st->nc - 1].j == pv->j)
+				st->c[st->nc - 1].t1 = pv->t1;
+		}
+		for (; m < ivi; m++) {
+			const struct hb_arc_interval *pv = hb_arc_interval_at(arc, m);
+			if (pv->q)
+				st_contact(st, st_iface_of(st, 0.0), pv->j, pv->t0, pv->t1);
+		}
 	}
-	if (iv != NULL && iv->q)
+	if (iv->q)
 		st_contact(st, st->nc > 0 && st->c[st->nc - 1].j == iv->j ? st->c[st->nc - 1].k
 		               : st_iface_of(st, l->x), iv->j, iv->t0, l->t);
-	st->last_iv = (long)ivi;
+	st->last_j = iv->j;
 }
 
 /* The state, allocated on first use; NULL (and a message) on no memory. */

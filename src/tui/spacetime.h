@@ -52,7 +52,7 @@ struct spacetime {
 	double dt;                  /* the grid: a record at least this far after the last */
 	double ylo, yhi;            /* the range of every position recorded, m */
 	double T;                   /* the run's horizon */
-	long last_iv;               /* the shadow's interval index at the last record */
+	long last_j;                /* j of the shadow's interval at the last step */
 	struct st_contact *c;
 	size_t nc, ccap;
 	long lost;                  /* contacts past ST_MAX_CONTACTS, not kept */
