@@ -241,7 +241,10 @@ pane_spacetime_draw(const struct app *a)
 	if (every > 1)
 		n += snprintf(title + n, sizeof title - (size_t)n, " (every %d%s drawn)", every,
 		              every == 2 ? "nd" : every == 3 ? "rd" : "th");
-	snprintf(title + n, sizeof title - (size_t)n, ", # contact; t = %s", tbuf);
+	n += snprintf(title + n, sizeof title - (size_t)n, ", # contact; t = %s", tbuf);
+	if (st->lost > 0)
+		snprintf(title + n, sizeof title - (size_t)n, "; %ld contacts past the first %d unmarked",
+		         st->lost, ST_MAX_CONTACTS);
 	tui_puts(r->y, LM, cw, title, A_BOLD);
 	st_blit(a, c, r->y + 1, r->x + LM, canvas_col(c, tc));
 	st_ylabels(&ay, r->y + 1, ch, "y");

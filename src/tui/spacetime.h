@@ -13,7 +13,8 @@
  * (from the bodies' positions and half-lengths) is the arc sample's x.
  * Between records a body's path is the cubic through both ends' positions
  * and velocities, which is its parabola in free flight.  The buffer holds
- * at most ST_MAX_VALUES positions: past that every other record goes and
+ * ST_MAX_VALUES positions (16384 records at most, 256 at least; the grid
+ * starts at T over half of them): when full, every other record goes and
  * the grid doubles; contacts are kept up to ST_MAX_CONTACTS.
  *
  * pane_spacetime.c draws it over the plots' rectangle.
