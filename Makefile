@@ -547,12 +547,13 @@ keys-doc: $(GENKEYS)
 	mv $(BUILD)/README.md.new README.md
 docs: keys-doc
 
-# The README's explorer screen and batch example, from real runs
+# The README's explorer screens (the plots, the space-time view) and batch example, from real runs
 # (tests/tui/readme.inc); tests/tui/readme.sh fails when they are stale.
 .PHONY: readme-examples
 readme-examples: $(BIN)
 	. tests/tui/readme.inc && readme_screen $(abspath $(BIN)) | readme_splice README.md SCREEN \
-	    && readme_batch $(abspath $(BIN)) | readme_splice README.md BATCH
+	    && readme_batch $(abspath $(BIN)) | readme_splice README.md BATCH \
+	    && readme_spacetime $(abspath $(BIN)) | readme_splice README.md SPACETIME
 docs: readme-examples
 
 # The README's figures (docs/figures/*.png), drawn by hybounce plot from the

@@ -25,6 +25,7 @@
 
 #include "app.h"
 #include "mode.h"
+#include "spacetime.h"
 #include "status.h"
 #include "term.h"
 #include "tui.h"
@@ -131,6 +132,7 @@ done:
 	fitov_free(a);
 	errbar_free(a);
 	sweep_view_free(a);
+	spacetime_free(a);
 	physics_forget(a);
 	pins_clear(a);
 	hb_sim_free(a->sim);

@@ -10,6 +10,7 @@
 #include <math.h>
 #include <time.h>
 
+#include "spacetime.h"
 #include "status.h"
 #include "mode.h"
 #include "tui.h"
@@ -86,6 +87,8 @@ app_tick(struct app *a)
 	if (playback_tick(a, dt))
 		busy = 1;
 	if (sweep_view_tick(a))
+		busy = 1;
+	if (spacetime_tick(a))
 		busy = 1;
 	return busy;
 }

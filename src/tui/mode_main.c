@@ -15,6 +15,7 @@
 
 #include "keys.h"
 #include "mode.h"
+#include "spacetime.h"
 #include "tui.h"
 
 #define CTRL(c) ((c) & 0x1f)
@@ -48,6 +49,10 @@ static const struct mode_key keys[] = {
 	{ 'z', 0, CTX_ANY, act_zoom, "z", "zoom on the collision at the cursor (or the selected row)", NULL },
 	{ 'y', 0, CTX_ANY, act_loop, "y", "hysteresis loop F_c against x_c of that collision", NULL },
 	{ 'J', 0, CTX_ANY, act_jview, "J", "the arc against the jump counter j", NULL },
+	{ 'V', 0, CTX_ANY, act_spacetime, "V",
+	  "space-time view on / off: every body's position against t, # at each contact of each interface, the cursor's time", NULL },
+	{ 'K', 0, CTX_ANY, act_iface, "K",
+	  "a chain's next interface k for the plots (x, x_c, F_c of k; k= in the status line), then each interval's own", NULL },
 	{ '\t', 0, CTX_ANY, act_focus, "Tab", "switch the focus: collisions table / parameter panel", "params" },
 	{ KEY_UP, 'k', CTX_ANY, act_up, "Up k", "previous row of the focused table", NULL },
 	{ KEY_DOWN, 'j', CTX_ANY, act_down, "Down j", "next row of the focused table", NULL },

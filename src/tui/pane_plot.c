@@ -20,6 +20,7 @@
 #include "term.h"
 #include "tui.h"
 #include "plot_summary.h"
+#include "spacetime.h"
 
 enum { LM = 9 };  /* left margin: tick labels and the quantity's name */
 enum { Q_X, Q_XC, Q_FC, NQ };
@@ -385,6 +386,10 @@ pane_plot_draw(const struct app *a)
 	static const char *vname[VIEW_COUNT] = { "whole run", "follow the cursor", "zoom",
 	                                         "loop", "against j" };
 
+	if (spacetime_on(a) || (spacetime_iface(a) >= 0 && a->view != VIEW_LOOP && a->view != VIEW_J)) {
+		(spacetime_on(a) ? pane_spacetime_draw : pane_iface_draw)(a);
+		return;
+	}
 	if (a->view == VIEW_LOOP) {
 		draw_loop(a);
 		return;

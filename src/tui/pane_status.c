@@ -12,6 +12,7 @@
 
 #include "keys.h"
 #include "scene.h"
+#include "spacetime.h"
 #include "layout.h"
 #include "term.h"
 #include "mode.h"
@@ -180,11 +181,12 @@ pane_status_draw(const struct app *a)
 		snprintf(tb, sizeof tb, "-");
 	hb_units_format(a->speed, hb_unit_none, 2, sp, sizeof sp);
 	{
-		char tail[256], st[48], eb[48];
+		char tail[256], st[48], eb[48], ib[24];
 		int room;
 		errbar_state(a, eb, sizeof eb);
-		snprintf(tail, sizeof tail, " %s t=%s j=%ld q_c=%d coll %zu x%s%s %s %s%s%s",
-		         hb_sim_scene(a->sim)->law->name, tb, s ? s->j : 0L, s ? s->q : 0,
+		snprintf(tail, sizeof tail, " %s%s t=%s j=%ld q_c=%d coll %zu x%s%s %s %s%s%s",
+		         hb_sim_scene(a->sim)->law->name, spacetime_state(a, ib, sizeof ib), tb,
+		         s ? s->j : 0L, s ? s->q : 0,
 		         hb_sim_ncollisions(a->sim), sp, a->in_slow ? " slow" : "",
 		         a->playing ? "playing" : "paused", state_name(a, st, sizeof st),
 		         eb[0] ? " " : "", eb);

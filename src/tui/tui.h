@@ -161,6 +161,7 @@ struct app {
 	struct errbar *errbar;      /* error bars (errbar.c), NULL until E */
 	struct app_physics phys;    /* physics.c */
 	struct plot_sums *psum;     /* plot_summary.c: what the plots draw of long arcs (NULL: none) */
+	struct spacetime *st;       /* the space-time view (spacetime.c), NULL until V */
 };
 
 /* What a key of a mode's table does (mode.h). */

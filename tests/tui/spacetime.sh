@@ -1,0 +1,126 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The space-time view (V) in tmux at 80x24, in ASCII: on a Newton's cradle
+# of five balls 10 mm apart it draws one line per body and marks each of
+# the four contacts with # at its interface, from the top down, and shows
+# the cursor's time (the status line's); on a chain of 100 it thins the
+# lines and says so, and still marks the contacts; V again gives the
+# plots back; K shows x, x_c and F_c of one interface at a time (k= on
+# the status line), then the run's own; the key is in the help; quitting
+# exits 0.
+. "$(dirname "$0")/common.inc"
+
+cat >"$TMP/cradle.preset" <<'P'
+[scene]
+name = cradle
+law = hertz
+[body1]
+E = 200 GPa
+nu = 0.3
+rho = 7800 kg/m^3
+R = 10 mm
+[chain]
+n = 5
+spacing = 10 mm
+[striker]
+v = -1 m/s
+[loads]
+g = 0
+[run]
+T = 60 ms
+rtol = 1e-12
+atol = 1e-14
+P
+
+# rows of the view's canvas (below its title, above the t axis)
+canvas() { screen "$1" | sed -n '/space-time: /,/^t ->/p' | sed '1d;$d' | cut -c10-; }
+
+start a 80 24 --ascii cradle.preset
+wait_for a ' finished$' 150
+keys a space         # pause: the cursor stays where it is
+keys a V
+if wait_for a '^ +space-time: 5 bodies, # contact; t = [0-9.]+ [mu]?s$' 100 &&
+   [ "$(canvas a | grep -c '\*')" -ge 5 ]; then
+	ok "V: the space-time view of 5 bodies, one line each"
+else
+	notok "V: the space-time view of 5 bodies, one line each" a
+fi
+# the four contacts, each a # on its own row, lower as t goes on (the wave goes down)
+rows=$(canvas a | awk '{ c = index($0, "#"); if (c) print NR, c }')
+if [ "$(echo "$rows" | wc -l)" -eq 4 ] &&
+   echo "$rows" | awk 'NR > 1 && ($1 <= r || $2 <= c) { bad = 1 } { r = $1; c = $2 } END { exit bad }'; then
+	ok "four contacts marked #, each lower and later than the one before"
+else
+	notok "four contacts marked #, each lower and later than the one before ($rows)" a
+fi
+# the cursor's time: the status line's t
+keys a End
+if wait_for a '^ cradle hertz t=60 ms ' 30 && wait_for a '^ +space-time: .*; t = 60 ms$' 30; then
+	ok "the title shows the cursor's time (End: 60 ms, as on the status line)"
+else
+	notok "the title shows the cursor's time (End: 60 ms, as on the status line)" a
+fi
+keys a V
+if wait_for a '^ +(whole run|follow the cursor)' 30 && wait_for a '^space-time view off' 30; then
+	ok "V again: the plots"
+else
+	notok "V again: the plots" a
+fi
+# K: the plots of one interface, k= on the status line; after the last, the run's own again
+keys a K
+if wait_for a '^ cradle hertz k=1 t=' 30 && wait_for a '^ +interface 1 \(bodies 1 and 2\)$' 30 &&
+   screen a | grep -q '^x\[mm\]' && screen a | grep -q '^F_c\[kN\]'; then
+	ok "K: x, x_c and F_c of interface 1, k=1 on the status line"
+else
+	notok "K: x, x_c and F_c of interface 1, k=1 on the status line" a
+fi
+keys a K K K
+if wait_for a '^ cradle hertz k=4 t=' 30 && wait_for a '^ +interface 4 \(bodies 4 and 5\)$' 30; then
+	ok "K three times more: interface 4"
+else
+	notok "K three times more: interface 4" a
+fi
+keys a K
+if wait_for a '^ cradle hertz t=' 30 && wait_for a '^ +(whole run|follow the cursor)' 30; then
+	ok "K after the last interface: the run's own plots, no k="
+else
+	notok "K after the last interface: the run's own plots, no k=" a
+fi
+keys a '?'
+wait_for a 'hybounce keys' 30
+n=0
+while [ $n -lt 10 ] && ! screen a | grep -q 'V  *space-time view on / off'; do
+	keys a PgDn
+	n=$((n + 1))
+	wait_for a 'hybounce keys' 30
+done
+if screen a | grep -q 'V  *space-time view on / off' && screen a | grep -q "K  *a chain's next interface"; then
+	ok "the help lists V and K"
+else
+	notok "the help lists V and K" a
+fi
+keys a q
+keys a q
+if wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ]; then
+	ok "quit exits 0"
+else
+	notok "quit exits 0" a
+fi
+
+# a chain of 100: thinned lines, said in the title, and the 99 contacts marked
+start b 80 24 --ascii cradle.preset --set chain.n=100 --set chain.spacing=1mm --set run.T=120ms
+wait_for b ' finished$' 150
+keys b V
+if wait_for b '^ +space-time: 100 bodies \(every [0-9]+(st|nd|rd|th) drawn\), # contact; t = ' 150 &&
+   [ "$(canvas b | grep -c '#')" -ge 5 ]; then
+	ok "100 bodies: every m-th drawn, said in the title; the contacts marked"
+else
+	notok "100 bodies: every m-th drawn, said in the title; the contacts marked" b
+fi
+keys b q
+if wait_exit b 50 && [ "$(cat "$TMP/b.rc")" = 0 ]; then
+	ok "quit exits 0 (100 bodies)"
+else
+	notok "quit exits 0 (100 bodies)" b
+fi
+exit $((failed > 0))
