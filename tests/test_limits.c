@@ -4,8 +4,9 @@
  * (src/core/scene_limits.c, measured by make bench-steppers): a stepper
  * whose global error on the paper's studies is more than 10 x rk8pd's is
  * refused at and below the tolerance where it was measured so, with a
- * message naming the stepper, the tolerance and what is accepted; rk8pd,
- * auto and dop853 are offered at every tolerance; run.limits = no lifts it.
+ * message naming the stepper, the tolerance and what is accepted (vern98
+ * only in the band where it was); rk8pd, auto and dop853 are offered at
+ * every tolerance; run.limits = no lifts it.
  */
 #include "hybounce/scene.h"
 #include "testutil.h"
@@ -54,6 +55,25 @@ Test(limits, each_stepper_where_it_is_offered)
 	cr_assert_eq(validate("rk8pd", 1e-14, 1, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(validate("auto", 1e-14, 1, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(validate("dop853", 1e-14, 1, msg, sizeof msg), HB_OK, "%s", msg);
+}
+
+Test(limits, vern98_refused_in_a_band)
+{
+	static const double ok[] = { 1e-6, 1e-9, 1e-11, 1e-12, 1e-14 };
+	static const double refused[] = { 8e-10, 1e-10, 3e-11 };
+	char msg[1024];
+
+	for (size_t i = 0; i < sizeof ok / sizeof ok[0]; i++)
+		cr_assert_eq(validate("vern98", ok[i], 1, msg, sizeof msg), HB_OK, "at %g: %s", ok[i], msg);
+	for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
+		cr_assert_eq(validate("vern98", refused[i], 1, msg, sizeof msg), HB_EINVAL, "at %g",
+		             refused[i]);
+		cr_assert_eq(validate("vern98", refused[i], 0, msg, sizeof msg), HB_OK, "%s", msg);
+	}
+	validate("vern98", 1e-10, 1, msg, sizeof msg);
+	cr_assert(strstr(msg, "more than 10 x rk8pd's at 1e-11 < rtol <= 8e-10") != NULL, "%s", msg);
+	cr_assert(strstr(msg, "accepted: vern98 with run.rtol > 8e-10 or <= 1e-11; rk8pd, auto or "
+	                      "dop853 at any rtol") != NULL, "%s", msg);
 }
 
 Test(limits, the_key_reads_and_defaults_to_yes)

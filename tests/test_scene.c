@@ -620,7 +620,7 @@ Test(scene, com_against_quadrature)
 Test(scene, steppers)
 {
 	static const char *const names[] = { "rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto",
-	                                     "dop853" };
+	                                     "dop853", "vern98" };
 
 	cr_assert_eq(sizeof names / sizeof names[0], HB_STEPPER_COUNT);
 

@@ -47,6 +47,7 @@ enum hb_scene_stepper {
 	HB_STEPPER_BSIMP,
 	HB_STEPPER_AUTO,      /* dop853, then bsimp for contacts once one is found stiff */
 	HB_STEPPER_DOP853,    /* explicit Dormand-Prince 8(5,3) with dense output (the engine's own) */
+	HB_STEPPER_VERN98,    /* explicit Verner 9(8), 16 stages (the engine's own) */
 	HB_STEPPER_COUNT
 };
 

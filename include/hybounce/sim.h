@@ -85,8 +85,8 @@ struct hb_sim_stats {
 	 * Stiffness of the contact flow, checked every 32nd step of an explicit
 	 * stepper in contact: h |lambda| over the decaying eigenvalues (Re
 	 * lambda <= 0) of the flow's Jacobian, real or oscillatory.  Beyond half
-	 * the stepper's stability radius (6.1 for dop853, 5.3 for rk8pd, 3 for
-	 * rkf45 and rkck) the step is limited by stability, not accuracy; eight
+	 * the stepper's stability radius (6.1 for dop853, 5.3 for rk8pd, 4.4
+	 * for vern98, 3 for rkf45 and rkck) the step is limited by stability, not accuracy; eight
 	 * such checks in a row make the contact stiff.
 	 */
 	long stiff_checks;

@@ -25,7 +25,7 @@
 /* Steppers */
 
 static const char *const stepper_names[HB_STEPPER_COUNT] = {
-	"rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto", "dop853",
+	"rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto", "dop853", "vern98",
 };
 
 const char *

@@ -115,7 +115,8 @@ const struct scene_keydef scene_keydefs[] = {
 	{ "run.J", "run", "J", ST_LONG, NULL, { 1, 1e18, 0, 0, 1 }, 100000, NULL, OFF(run.J), 0,
 	  SP_NONE, "jump cap" },
 	TXT("run.stepper", "run", "stepper", ST_STEPPER, "rk8pd", run.stepper, 0,
-	    "stepper: rk8pd, dop853 (with dense output), rkf45, rkck, msbdf, rk4imp, bsimp, "
+	    "stepper: rk8pd, dop853 (with dense output), vern98 (Verner's 9(8)), rkf45, rkck, "
+	    "msbdf, rk4imp, bsimp, "
 	    "or auto (rk8pd, then bsimp for the contacts once one is found stiff)"),
 	NUM("run.rtol", "run", "rtol", hb_unit_none, R_TOL, 1e-10,
 	    run.rtol, SP_NONE, "relative tolerance of the integrator"),

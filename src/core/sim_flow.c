@@ -5,12 +5,13 @@
  * the packing of the canonical state (see sim.c for the method).
  */
 #include "sim_impl.h"
+#include "step_vern98.h"
 
 int
 hbs_explicit_stepper(int stepper)
 {
 	return stepper == HB_STEPPER_RK8PD || stepper == HB_STEPPER_RKF45 || stepper == HB_STEPPER_RKCK ||
-	       stepper == HB_STEPPER_DOP853;
+	       stepper == HB_STEPPER_DOP853 || stepper == HB_STEPPER_VERN98;
 }
 
 static const gsl_odeiv2_step_type *
@@ -23,6 +24,7 @@ stepper_type(int stepper)
 	case HB_STEPPER_RK4IMP: return gsl_odeiv2_step_rk4imp;
 	case HB_STEPPER_BSIMP: return hb_step_bsimp_shifted;
 	case HB_STEPPER_DOP853: return hb_step_dop853;
+	case HB_STEPPER_VERN98: return hb_step_vern98;
 	default: return gsl_odeiv2_step_rk8pd;
 	}
 }

@@ -18,6 +18,7 @@ stability_radius(int stepper)
 	switch (stepper) {
 	case HB_STEPPER_DOP853: return 6.1;
 	case HB_STEPPER_RK8PD: return 5.3;
+	case HB_STEPPER_VERN98: return 4.4; /* |R(z)| = 1 at 4.4-4.5 from 100 to 180 degrees */
 	default: return 3.0;
 	}
 }

@@ -14,7 +14,7 @@ BIN=${1:-build/hybounce}
 OUT=${2:-build/bench/steppers.md}
 PY=${PYTHON:-python3}
 STUDIES="steel-on-bitumen ptfe-pom permanent-contact-shccl permanent-contact-bwshccl permanent-contact-bwmcl"
-STEPPERS="rk8pd dop853 auto rkf45 rkck msbdf rk4imp bsimp"
+STEPPERS="rk8pd dop853 vern98 auto rkf45 rkck msbdf rk4imp bsimp"
 TOLS="1e-6 1e-7 1e-8 1e-9 1e-10 1e-11 1e-12"
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
