@@ -106,8 +106,8 @@ const struct scene_keydef scene_keydefs[] = {
 	  SP_CHAIN, "bodies of a chain, each body 1, with the law between neighbours; 0: the two-body scene" },
 	{ "chain.floor", "chain", "floor", ST_BOOL, NULL, R_NONE, NAN, "no", OFF(chain.floor), 0,
 	  SP_CHAIN, "a fixed obstacle below body 1 of the chain (interface 0): yes or no" },
-	NUM("chain.spacing", "chain", "spacing", hb_unit_length, R_POS, 0.001, chain.spacing, SP_CHAIN,
-	    "gap between neighbours (and between body 1 and the floor), > 0"),
+	NUM("chain.spacing", "chain", "spacing", hb_unit_length, R_NONNEG, 0.001, chain.spacing, SP_CHAIN,
+	    "gap between neighbours (and between body 1 and the floor); 0: touching"),
 	NUM("striker.v", "chain", "striker v", hb_unit_velocity, R_SPEED, 0, chain.v, SP_CHAIN,
 	    "initial velocity of body n, the striker (negative: towards body n - 1)"),
 

@@ -402,6 +402,7 @@ hb_sim_free(struct hb_sim *s)
 		gsl_vector_complex_free(s->lambda);
 	arc_free(s->arc);
 	hbs_chain_free(s);
+	hbs_cluster_free(s);
 	free(s->br);
 	free(s->col);
 	free(s);
@@ -422,13 +423,22 @@ hb_sim_advance(struct hb_sim *s, long max_steps, double max_seconds)
 		if (max_seconds > 0 && ((s->work - work0) & 7) == 0 &&
 		    clock_seconds(CLOCK_MONOTONIC) - start >= max_seconds)
 			break;
+		if (s->chain) { /* a chain: its flights and its clusters of contacts (sim_cluster.c) */
+			if (s->setup && (rc = hbs_cluster_setup(s)))
+				break;
+			s->work++;
+			rc = s->cx.nact ? hbs_cluster_step(s) : hbs_chain_flight(s);
+			if (rc)
+				break;
+			continue;
+		}
 		if (s->setup) {
 			if ((rc = setup_interval(s)))
 				break;
 		}
 		s->work++;
 		if (s->closed)
-			rc = s->chain ? hbs_chain_flight(s) : hbs_flight_closed(s);
+			rc = hbs_flight_closed(s);
 		else
 			rc = numeric_step(s);
 		if (rc)
