@@ -14,6 +14,7 @@
 #include <criterion/criterion.h>
 
 #include "hybounce/status.h"
+#include "sim_impl.h" /* the mirror image's initial velocities, set on the bodies */
 #include "testutil.h"
 
 /* Steel balls (R 10 mm) with the Hertz elastic law, in a chain (CHAIN: the [chain] lines). */
@@ -146,6 +147,48 @@ Test(chain, touching_cradle_of_three)
 Test(chain, touching_cradle_of_five)
 {
 	touching_cradle(5);
+}
+
+/*
+ * A chain and its mirror image give mirrored motions: a touching cradle of
+ * 5 struck from the top at 1 m/s, and the same struck from the bottom at
+ * +1 m/s (its bodies' velocities set before the run: a scene has one
+ * striker, at the top).  Body i's final velocity in one is minus body
+ * n + 1 - i's in the other, to 1e-10 m/s, and the collisions are as many,
+ * each interface k of one matching n - k of the other.
+ */
+Test(chain, mirror_image_gives_mirrored_motion)
+{
+	struct hb_scene sc;
+	struct hb_sim *a, *b;
+	const int n = 5;
+	char msg[512];
+	int ka[8] = { 0 }, kb[8] = { 0 };
+
+	chain_scene(&sc, "n = 5\nspacing = 0 m", -1.0, 0.0, 0.01);
+	a = run_scene(&sc);
+	b = hb_sim_new(&sc, msg, sizeof msg);
+	cr_assert_not_null(b, "%s", msg);
+	b->body[n - 1].u = 0.0;
+	b->body[0].u = 1.0;
+	cr_assert_eq(hb_sim_run(b), 0, "%s", hb_sim_errmsg(b));
+	cr_assert_eq(hb_sim_end(b), HB_SIM_END_T, "%s", hb_sim_end_str(b));
+	for (int i = 0; i < n; i++) {
+		struct hb_sim_body ba, bb;
+
+		hb_sim_body(a, i, &ba);
+		hb_sim_body(b, n - 1 - i, &bb);
+		assert_abs(ba.u, -bb.u, 1e-10);
+	}
+	cr_assert_eq(hb_sim_ncollisions(a), hb_sim_ncollisions(b));
+	for (size_t i = 0; i < hb_sim_ncollisions(a); i++) {
+		ka[hb_sim_collision(a, i)->k]++;
+		kb[n - hb_sim_collision(b, i)->k]++;
+	}
+	for (int k = 1; k < n; k++)
+		cr_assert_eq(ka[k], kb[k], "interface %d: %d collisions, its mirror %d", k, ka[k], kb[k]);
+	hb_sim_free(a);
+	hb_sim_free(b);
 }
 
 /* Interface k's overlap (> 0 when the bodies press) from bodies k - 1 and k (R 10 mm). */
