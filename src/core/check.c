@@ -57,8 +57,11 @@ hb_check_solution_pair(const struct hb_scene *sc, const struct hb_arc *arc, char
 					return hb_status_set(msg, n, HB_EINVAL,
 					                  "sample %zu: t decreases within j = %ld (%.17g -> %.17g)",
 					                  i, a->j, a->t, b->t);
-				/* a chain's samples are of the interface that jumped last, or jumps next */
-				if (b->q != a->q && b->k == a->k)
+				/*
+				 * a chain's samples are of the interface that jumped last,
+				 * or of the one that jumps next: its q_c may differ
+				 */
+				if (b->q != a->q && sc->chain.n == 0)
 					return hb_status_set(msg, n, HB_EINVAL, "sample %zu: q_c changes without a jump", i);
 			} else if (b->j == a->j + 1) {
 				if (b->t != a->t)

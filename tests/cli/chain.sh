@@ -89,4 +89,14 @@ else
 	notok "two contacts at once (1 nm apart) run together, energy and momentum kept, --check" "$T/out"
 fi
 
+# the collision table and CSV of a chain name each collision's interface (k after i)
+if "$BIN" --batch "$T/cradle.preset" --set chain.n=4 --collisions "$T/c.csv" >"$T/out" 2>&1 &&
+    grep -q '^i  k  t_e ' "$T/out" && grep -q '^0  3 ' "$T/out" && grep -q '^2  1 ' "$T/out" &&
+    noprov "$T/c.csv" | head -1 | grep -q '^i,k,t_e,t_s,' &&
+    noprov "$T/c.csv" | cut -d, -f1,2 | tr '\n' ' ' | grep -q '^i,k 0,3 1,2 2,1 $'; then
+	ok "a chain's collision table and CSV have the interface k after i"
+else
+	notok "a chain's collision table and CSV have the interface k after i" "$T/out" "$T/c.csv"
+fi
+
 [ "$fails" -eq 0 ]
