@@ -659,6 +659,14 @@ print_bodies(FILE *out, const struct hb_sim *s)
 	}
 	fprintf(out, "  chain       kinetic energy %s, momentum %.9g kg m/s\n",
 	        fmt(K, hb_unit_energy, b1, sizeof b1), P);
+	{
+		long nlim;
+		const char *note = hb_sim_limits(s, &nlim);
+
+		if (nlim > 0) /* run.chain_limits = warn */
+			fprintf(out, "  limits      passed %ld time%s (run.chain_limits = warn); the first: %s\n",
+			        nlim, nlim == 1 ? "" : "s", note);
+	}
 }
 
 static void

@@ -134,6 +134,11 @@ const struct scene_keydef scene_keydefs[] = {
 	TXT("run.limits", "run", "limits", ST_BOOL, "yes", run.limits, 0,
 	    "refuse a stepper at a tolerance where its global error on the paper's studies is "
 	    "more than 10 x rk8pd's (no: run it anyway, only to measure it)"),
+	NUM("run.max_indent", "run", "max_indent", hb_unit_none, R_TOL, 0.1, run.max_indent, SP_CHAIN,
+	    "a chain's largest indentation (or overlap), a fraction of the smaller radius of its two bodies"),
+	{ "run.chain_limits", "run", "chain_limits", ST_STOPWARN, NULL, R_NONE, NAN, "stop",
+	  OFF(run.chain_limits), 0, SP_CHAIN, "where a chain passes run.max_indent, or bodies that are "
+	  "not neighbours overlap: stop the run, or warn (note it and go on)" },
 };
 const int scene_nkeydefs = (int)(sizeof scene_keydefs / sizeof scene_keydefs[0]);
 
@@ -210,6 +215,10 @@ scene_keydef_choices(const struct scene_keydef *kd, const char **out, int max)
 		ADD(bool_names[1]);
 		ADD(bool_names[0]);
 		break;
+	case ST_STOPWARN:
+		ADD("stop");
+		ADD("warn");
+		break;
 	case ST_REDUCE:
 		ADD(reduce_names[7]);
 		for (int i = 0; i < 7; i++)
@@ -253,6 +262,12 @@ scene_keydef_read_choice(const struct scene_keydef *kd, const char *t, int *v)
 				return *v = 0, 0;
 		}
 		return -1;
+	case ST_STOPWARN:
+		if (cnum_casecmp(t, "stop") == 0)
+			return *v = HB_CHAIN_LIMITS_STOP, 0;
+		if (cnum_casecmp(t, "warn") == 0)
+			return *v = HB_CHAIN_LIMITS_WARN, 0;
+		return -1;
 	case ST_REDUCE: {
 		static const char *const flag[] = { "flight", "contact", "com" };
 		int r = 0;
@@ -292,6 +307,7 @@ scene_keydef_choice(const struct hb_scene *sc, const struct scene_keydef *kd)
 	case ST_STEPPER: return hb_scene_stepper_name(v);
 	case ST_BOOL: return bool_names[v != 0];
 	case ST_REDUCE: return reduce_names[v & HB_REDUCE_ALL];
+	case ST_STOPWARN: return v == HB_CHAIN_LIMITS_WARN ? "warn" : "stop";
 	default: return "";
 	}
 }

@@ -270,6 +270,8 @@ hbs_chain_reset(struct hb_sim *s)
 		s->ifc[i].off = -1;
 	s->cx.nact = s->cx.ncl = s->cx.nwatch = s->cx.dim = 0;
 	s->cx.h = 0.0;
+	s->nlim = 0;
+	s->limnote[0] = '\0';
 }
 
 /* x_m, v_m: the centre of mass of s->I's pair from the bodies (0 on the floor). */

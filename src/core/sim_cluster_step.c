@@ -454,6 +454,8 @@ retry:
 		}
 	}
 	hbs_cluster_unpack(s, t, c->u);
+	if ((rc = hbs_cluster_limits(s)))
+		return rc;
 	if (best >= 0 && c->fkind[best] == FUN_EVENT) {
 		double fb = c->f0[best];
 

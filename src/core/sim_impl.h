@@ -99,6 +99,8 @@ struct iface {
 	int off;                /* a chain's: its block in the clusters' ODE (sim_cluster.c), -1: none */
 	int watch;              /* a chain's: 1 while in flight next to a cluster (its gap is watched) */
 	double tphi;            /* a chain's: Phi at the state rhs evaluates (scratch) */
+	int over;               /* a chain's: the model limits passed in this contact (1 indentation,
+	                           2 non-neighbours above it) */
 
 	/* its state at (t, j) */
 	int q;
@@ -145,6 +147,8 @@ struct clusters {
 struct hb_sim {
 	struct hb_scene sc;
 	struct clusters cx;     /* a chain's clusters in contact */
+	char limnote[400];      /* a chain's first passing of a model limit (run.chain_limits = warn) */
+	long nlim;              /* ... and how many times one was passed */
 	int chain;              /* 1: a chain scene (sc.chain.n >= 1) */
 	int nbody, k0, nif;     /* N, the first interface's number (0: a floor), N - k0 */
 	int ia;                 /* I - ifc */
@@ -296,6 +300,8 @@ int
 hbs_cluster_step(struct hb_sim *s);
 void
 hbs_cluster_sync(struct hb_sim *s);
+int
+hbs_cluster_limits(struct hb_sim *s);
 void
 hbs_cluster_free(struct hb_sim *s);
 

@@ -161,6 +161,7 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 	memset(I->z, 0, sizeof I->z);
 	I->W = I->JFc = I->JFe = 0.0;
 	I->xcmax = I->Fcmax = 0.0;
+	I->over = 0;
 	if (I->q) {
 		I->te = s->t;
 		I->vi = I->v;

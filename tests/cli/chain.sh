@@ -4,8 +4,8 @@
 # body's velocity and kinetic energy and the chain's totals (Newton's cradle
 # of three: the bottom ball leaves with the striker's velocity, or most of it
 # when the balls touch), --set reaches the chain keys, --check passes,
-# several contacts at once run together, and what a chain cannot run yet is
-# refused with the key named.
+# several contacts at once run together, the model's limits stop the run (or
+# are noted), and what a chain cannot run yet is refused with the key named.
 . "$(dirname "$0")/common.inc"
 
 cat >"$T/cradle.preset" <<'P'
@@ -97,6 +97,37 @@ if "$BIN" --batch "$T/cradle.preset" --set chain.n=4 --collisions "$T/c.csv" >"$
 	ok "a chain's collision table and CSV have the interface k after i"
 else
 	notok "a chain's collision table and CSV have the interface k after i" "$T/out" "$T/c.csv"
+fi
+
+# the model's limits: an indentation past run.max_indent of the smaller radius stops
+# the run naming the interface, its bodies, the time and the value, keeping what
+# was computed; run.chain_limits = warn notes it and goes on
+"$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 --set run.max_indent=0.001 >"$T/out" 2>&1
+rc=$?
+if [ $rc -eq 1 ] &&
+    grep -q 'the run failed: interface 2 (bodies 2 and 3) is indented by 1.0[0-9]*e-05 m at t = 1.0[0-9]*e-05 s, 0.00[0-9]* of the smaller radius 0.01 m, past run.max_indent = 0.001' "$T/out" &&
+    grep -q '^  arc         [1-9][0-9]* samples' "$T/out" && grep -q '^  body 3 ' "$T/out"; then
+	ok "an indentation past run.max_indent stops the run, exit 1, naming interface, bodies, time and value"
+else
+	notok "an indentation past run.max_indent stops the run, exit 1, naming interface, bodies, time and value (got $rc)" "$T/out"
+fi
+if "$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 --set run.max_indent=0.001 \
+        --set run.chain_limits=warn >"$T/out" 2>&1 &&
+    grep -q '^  ended       horizon T = 0.01 s' "$T/out" &&
+    grep -q '^  limits      passed 2 times (run.chain_limits = warn); the first: interface 2 (bodies 2 and 3) is indented' "$T/out"; then
+	ok "run.chain_limits = warn: the run goes on and the summary counts the limits passed"
+else
+	notok "run.chain_limits = warn: the run goes on and the summary counts the limits passed" "$T/out"
+fi
+# a soft linear law: bodies 1 and 3 overlap across body 2 before any indentation passes a radius
+"$BIN" --batch "$T/cradle.preset" --set scene.law=linear --set law.k=10 --set chain.spacing=0 \
+    --set run.T=1 --set striker.v=-10 --set run.max_indent=0.99 >"$T/out" 2>&1
+rc=$?
+if [ $rc -eq 1 ] &&
+    grep -q 'the run failed: bodies 1 and 3, not neighbours, overlap by [0-9.e-]* m at t = [0-9.e-]* s: the model lets only neighbours touch' "$T/out"; then
+	ok "bodies that are not neighbours overlapping stop the run, exit 1, naming them"
+else
+	notok "bodies that are not neighbours overlapping stop the run, exit 1, naming them (got $rc)" "$T/out"
 fi
 
 [ "$fails" -eq 0 ]
