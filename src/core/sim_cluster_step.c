@@ -319,18 +319,57 @@ locate(struct hb_sim *s, int fi, double fa, double fb, double *hb, int *iters)
 	int side = 0, it = 0, kind = c->fkind[fi];
 	double *f = c->f1; /* scratch: the values at the trial */
 
+	int slow = 0, flat = 0;
+
+	/*
+	 * The far end as the re-steps see it: the accepted step's length is
+	 * t - t0, which may differ from the h it was taken with by rounding,
+	 * so that a crossing at the level of round-off may not be there for
+	 * the re-steps.  Then there is none to locate (*hb = INFINITY): an
+	 * event whose function is negative at the step's end is taken when
+	 * the next step begins.
+	 */
+	if (restep(s, b) != GSL_SUCCESS)
+		return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
+	hbs_cluster_watch(s, c->t0 + b, c->u1, f);
+	fb = f[fi];
+	if (!hbs_crossed(kind, fa, fb)) {
+		*hb = INFINITY;
+		*iters = 1;
+		return 0;
+	}
+	it = 1;
+
 	while (b - a > tol && it < 200) {
-		double m, fm;
+		double m, fm, w = b - a;
 		int in_b;
 
+		/*
+		 * Regula falsi with the Illinois halving, and a bisection after a
+		 * trial that did not halve the bracket or that found the value of
+		 * an end again (a gap computed from positions moves in steps of
+		 * their ulps): at least a halving every two trials.  A trial is
+		 * never nearer an end than tol, so that the bracket closes once
+		 * the root is found; a touching gap, which leaves C at once, is
+		 * tried first at a + tol.
+		 */
 		m = fa != fb ? b - fb * (b - a) / (fb - fa) : 0.5 * (a + b);
-		if (!(m > a && m < b) || it % 2 == 1)
+		if (!(m > a && m < b) || slow || flat)
+			m = 0.5 * (a + b);
+		if (fa == 0.0 && kind == FUN_EVENT && it == 1)
+			m = a + tol;
+		if (m - a < tol)
+			m = a + tol;
+		if (b - m < tol)
+			m = b - tol;
+		if (!(m > a && m < b))
 			m = 0.5 * (a + b);
 		if (restep(s, m) != GSL_SUCCESS)
 			return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
 		hbs_cluster_watch(s, c->t0 + m, c->u1, f);
 		fm = f[fi];
 		it++;
+		flat = fm == fa || fm == fb;
 		/* is the crossing in (a, m]? */
 		in_b = kind == FUN_EVENT ? fm < 0.0 : (fm > 0.0) == (fb > 0.0) || fm == 0.0;
 		if (in_b) {
@@ -346,6 +385,7 @@ locate(struct hb_sim *s, int fi, double fa, double fb, double *hb, int *iters)
 				fb *= 0.5;
 			side = 1;
 		}
+		slow = b - a > 0.5 * w;
 	}
 	*hb = b;
 	*iters = it;
@@ -447,6 +487,18 @@ retry:
 			memcpy(c->u, c->u1, (size_t)c->dim * sizeof(double));
 			t = c->t0 + hbest;
 			hbs_cluster_watch(s, t, c->u, fend);
+			/*
+			 * A kink or an extremum located within the resolution of t
+			 * just past an event (Hertz separates where its kink at
+			 * x_c = 0 is): the state is out of C there, so the event is
+			 * taken (the lowest k first).
+			 */
+			if (c->fkind[best] != FUN_EVENT)
+				for (i = 0; i < c->nf; i++)
+					if (c->fkind[i] == FUN_EVENT && c->f0[i] >= 0.0 && fend[i] < 0.0) {
+						best = i;
+						break;
+					}
 		}
 		for (i = 0; i < c->nf; i++) {
 			c->gmax[i] = fmax(c->gmax[i], fabs(fend[i]));

@@ -89,6 +89,18 @@ else
 	notok "two contacts at once (1 nm apart) run together, energy and momentum kept, --check" "$T/out"
 fi
 
+# a touching chain of 20 under gravity, and one of 6 on the floor: every sample
+# of the hybrid arc in C, every pre-jump one in D, post-jump = g(pre-jump)
+for a in "chain.n=20" "chain.n=6 --set chain.floor=yes"; do
+	# shellcheck disable=SC2086
+	if "$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 --set loads.g=9.81 --set $a --check -q >"$T/out" 2>&1 &&
+	    grep -q '^  check       solution pair: ok' "$T/out"; then
+		ok "touching chain ($a, gravity): --check passes"
+	else
+		notok "touching chain ($a, gravity): --check passes" "$T/out"
+	fi
+done
+
 # the collision table and CSV of a chain name each collision's interface (k after i)
 if "$BIN" --batch "$T/cradle.preset" --set chain.n=4 --collisions "$T/c.csv" >"$T/out" 2>&1 &&
     grep -q '^i  k  t_e ' "$T/out" && grep -q '^0  3 ' "$T/out" && grep -q '^2  1 ' "$T/out" &&
