@@ -8,6 +8,13 @@
  */
 #include "sim_impl.h"
 
+/* Whether a chain's clusters can run with the scene's stepper (explicit, or auto: rk8pd). */
+int
+hbs_chain_stepper_ok(int stepper)
+{
+	return stepper == HB_STEPPER_AUTO || hbs_explicit_stepper(stepper);
+}
+
 /* (Re)allocates the ODE's workspace for dimension n. */
 static int
 alloc_ode(struct hb_sim *s, int n)
@@ -16,7 +23,8 @@ alloc_ode(struct hb_sim *s, int n)
 	const struct hb_scene *sc = &s->sc;
 	const gsl_odeiv2_step_type *T = sc->run.stepper == HB_STEPPER_RKF45 ? gsl_odeiv2_step_rkf45
 	                              : sc->run.stepper == HB_STEPPER_RKCK ? gsl_odeiv2_step_rkck
-	                              : gsl_odeiv2_step_rk8pd;
+	                              : sc->run.stepper == HB_STEPPER_DOP853 ? hb_step_dop853
+	                              : gsl_odeiv2_step_rk8pd; /* rk8pd, auto (hbs_chain_stepper_ok) */
 	int cap = c->capdim;
 
 	if (n > cap) {

@@ -297,6 +297,8 @@ hbs_cluster_unpack(struct hb_sim *s, double t, const double *u);
 int
 hbs_cluster_setup(struct hb_sim *s);
 int
+hbs_chain_stepper_ok(int stepper);
+int
 hbs_cluster_step(struct hb_sim *s);
 void
 hbs_cluster_sync(struct hb_sim *s);

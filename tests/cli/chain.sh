@@ -101,6 +101,15 @@ for a in "chain.n=20" "chain.n=6 --set chain.floor=yes"; do
 	fi
 done
 
+# a chain's contacts run with an explicit stepper: an implicit one is refused by name
+"$BIN" --batch "$T/cradle.preset" --set run.stepper=bsimp --set run.limits=no >"$T/out" 2>&1
+rc=$?
+if [ $rc -eq 2 ] && grep -q "run.stepper: a chain's contacts run with an explicit stepper; accepted: rk8pd, dop853, rkf45, rkck, auto (rk8pd)" "$T/out"; then
+	ok "a chain with an implicit stepper refused, exit 2"
+else
+	notok "a chain with an implicit stepper refused, exit 2 (got $rc)" "$T/out"
+fi
+
 # the collision table and CSV of a chain name each collision's interface (k after i)
 if "$BIN" --batch "$T/cradle.preset" --set chain.n=4 --collisions "$T/c.csv" >"$T/out" 2>&1 &&
     grep -q '^i  k  t_e ' "$T/out" && grep -q '^0  3 ' "$T/out" && grep -q '^2  1 ' "$T/out" &&
