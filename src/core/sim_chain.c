@@ -260,6 +260,7 @@ hbs_chain_reset(struct hb_sim *s)
 		struct iface *J = &s->ifc[i];
 
 		memset(&J->q, 0, sizeof *J - offsetof(struct iface, q));
+		J->over = J->msign = 0;
 		gap_at(s, J, 0.0, &J->x, &J->v);
 	}
 	hbs_chain_activate(s, s->nif - 1);

@@ -230,7 +230,10 @@ hbs_cluster_rhs(double t, const double u[], double du[], void *params)
 
 			for (i = 0; i < nz; i++)
 				z[i] = u[o + 2 + i] * sc[o + 2 + i];
-			I->law->psi(I->par, I->ext, u[o] * sc[o], z, v, dz);
+			if (I->msign)
+				I->law->psi_mode(I->par, I->ext, u[o] * sc[o], z, v, I->msign, dz);
+			else
+				I->law->psi(I->par, I->ext, u[o] * sc[o], z, v, dz);
 			for (i = 0; i < nz; i++)
 				PUT(o + 2 + i, dz[i]);
 		}

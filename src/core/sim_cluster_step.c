@@ -408,6 +408,38 @@ jump_iface(struct hb_sim *s, int i, int how, int iters, double width, double ilo
 	return hbs_jump(s, how, iters, width, ilo, ihi);
 }
 
+/*
+ * Kinks as modes, per interface (as set_mode in sim.c for the pair): the
+ * sign of each law's |w| term is frozen for the step that begins at the
+ * current state, from its switching function there, so that the flow is
+ * smooth inside the step; a change restarts the stepper.
+ */
+static void
+set_modes(struct hb_sim *s)
+{
+	struct clusters *c = &s->cx;
+	int p, changed = 0;
+
+	for (p = 0; p < c->nact; p++) {
+		struct iface *I = &s->ifc[c->act[p]];
+		double g[HB_LAW_MAX_KINKS];
+		int m = 0;
+
+		if (I->law->psi_mode && s->sc.run.kinks) {
+			I->law->kinks(I->par, I->ext, I->xc, I->z, I->v, g);
+			m = g[I->law->mode_kink] > 0 ? 1 : g[I->law->mode_kink] < 0 ? -1 : 0;
+		}
+		if (m != I->msign) {
+			I->msign = m;
+			changed = 1;
+		}
+	}
+	if (changed) {
+		gsl_odeiv2_evolve_reset(c->ev);
+		gsl_odeiv2_step_reset(c->step);
+	}
+}
+
 /* One accepted step of a chain's clusters, with what follows from it. */
 int
 hbs_cluster_step(struct hb_sim *s)
@@ -437,6 +469,7 @@ hbs_cluster_step(struct hb_sim *s)
 		s->ifc[c->ifree].v = v;
 		return jump_iface(s, c->ifree, HB_LOCATE_CLOSED_FORM, 0, 0.0, fmax(x, v), fmax(x, v));
 	}
+	set_modes(s);
 	memcpy(c->u0, c->u, (size_t)c->dim * sizeof(double));
 	c->t0 = t;
 retry:
@@ -516,11 +549,15 @@ retry:
 	hbs_cluster_unpack(s, t, c->u);
 	if ((rc = hbs_cluster_limits(s)))
 		return rc;
+	if (best >= 0)
+		s->st.located++;
 	if (best >= 0 && c->fkind[best] == FUN_EVENT) {
 		double fb = c->f0[best];
 
 		return jump_iface(s, c->fif[best], HB_LOCATE_BRENT, iters, 0.0, fb, fb);
 	}
+	if (best >= 0 && c->fkind[best] == FUN_KINK)
+		s->st.kinks++;
 	if (best >= 0) { /* a kink or an extremum: the step ends there, the stepper restarts */
 		gsl_odeiv2_evolve_reset(c->ev);
 		gsl_odeiv2_step_reset(c->step);

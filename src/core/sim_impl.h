@@ -99,6 +99,7 @@ struct iface {
 	int off;                /* a chain's: its block in the clusters' ODE (sim_cluster.c), -1: none */
 	int watch;              /* a chain's: 1 while in flight next to a cluster (its gap is watched) */
 	double tphi;            /* a chain's: Phi at the state rhs evaluates (scratch) */
+	int msign;              /* a chain's: the sign of its law's mode term, frozen for a step */
 	int over;               /* a chain's: the model limits passed in this contact (1 indentation,
 	                           2 non-neighbours above it) */
 

@@ -162,6 +162,7 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 	I->W = I->JFc = I->JFe = 0.0;
 	I->xcmax = I->Fcmax = 0.0;
 	I->over = 0;
+	I->msign = 0;
 	if (I->q) {
 		I->te = s->t;
 		I->vi = I->v;
