@@ -8,11 +8,11 @@
  */
 #include "sim_impl.h"
 
-/* Whether a chain's clusters can run with the scene's stepper (explicit, or auto: rk8pd). */
+/* Whether a chain's clusters can run with the scene's stepper (explicit, bsimp, or auto). */
 int
 hbs_chain_stepper_ok(int stepper)
 {
-	return stepper == HB_STEPPER_AUTO || hbs_explicit_stepper(stepper);
+	return stepper == HB_STEPPER_AUTO || stepper == HB_STEPPER_BSIMP || hbs_explicit_stepper(stepper);
 }
 
 /* (Re)allocates the ODE's workspace for dimension n. */
@@ -21,10 +21,12 @@ alloc_ode(struct hb_sim *s, int n)
 {
 	struct clusters *c = &s->cx;
 	const struct hb_scene *sc = &s->sc;
-	const gsl_odeiv2_step_type *T = sc->run.stepper == HB_STEPPER_RKF45 ? gsl_odeiv2_step_rkf45
-	                              : sc->run.stepper == HB_STEPPER_RKCK ? gsl_odeiv2_step_rkck
-	                              : sc->run.stepper == HB_STEPPER_DOP853 ? hb_step_dop853
-	                              : gsl_odeiv2_step_rk8pd; /* rk8pd, auto (hbs_chain_stepper_ok) */
+	const int st = s->stepper[1]; /* the scene's, or rk8pd for auto until it goes over to bsimp */
+	const gsl_odeiv2_step_type *T = st == HB_STEPPER_RKF45 ? gsl_odeiv2_step_rkf45
+	                              : st == HB_STEPPER_RKCK ? gsl_odeiv2_step_rkck
+	                              : st == HB_STEPPER_DOP853 ? hb_step_dop853
+	                              : st == HB_STEPPER_BSIMP ? hb_step_bsimp_shifted
+	                              : gsl_odeiv2_step_rk8pd;
 	int cap = c->capdim;
 
 	if (n > cap) {
@@ -42,7 +44,7 @@ alloc_ode(struct hb_sim *s, int n)
 		}
 		c->capdim = m;
 	}
-	if (c->built_dim == n && c->step != NULL) {
+	if (c->built_dim == n && c->built_stepper == st && c->step != NULL) {
 		gsl_odeiv2_control_init(c->ctl, sc->run.atol, sc->run.rtol, 1.0, 0.0);
 		return 0;
 	}
@@ -63,8 +65,9 @@ alloc_ode(struct hb_sim *s, int n)
 		c->built_dim = 0;
 		return HB_ENOMEM;
 	}
-	c->sys = (gsl_odeiv2_system){ hbs_cluster_rhs, NULL, (size_t)n, s };
+	c->sys = (gsl_odeiv2_system){ hbs_cluster_rhs, hbs_cluster_jacobian, (size_t)n, s };
 	c->built_dim = n;
+	c->built_stepper = st;
 	return 0;
 }
 
@@ -565,6 +568,8 @@ retry:
 			return hbs_push_sample(s, HB_ARC_EXTREMUM);
 	}
 	if ((rc = hbs_push_sample(s, HB_ARC_STEP)))
+		return rc;
+	if ((rc = hbs_cluster_stiffness(s)))
 		return rc;
 	if (s->t >= sc->run.T) {
 		if ((rc = hbs_push_sample(s, HB_ARC_END)))

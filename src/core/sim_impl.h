@@ -99,6 +99,8 @@ struct iface {
 	int off;                /* a chain's: its block in the clusters' ODE (sim_cluster.c), -1: none */
 	int watch;              /* a chain's: 1 while in flight next to a cluster (its gap is watched) */
 	double tphi;            /* a chain's: Phi at the state rhs evaluates (scratch) */
+	double tdphi[HB_LAW_MAX_Z + 2]; /* a chain's: Phi's and Psi's partials there (scratch) */
+	double tdpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)];
 	int msign;              /* a chain's: the sign of its law's mode term, frozen for a step */
 	int over;               /* a chain's: the model limits passed in this contact (1 indentation,
 	                           2 non-neighbours above it) */
@@ -139,7 +141,7 @@ struct clusters {
 	gsl_odeiv2_control *ctl;
 	gsl_odeiv2_evolve *ev;
 	gsl_odeiv2_system sys;
-	int built_dim;
+	int built_dim, built_stepper;
 	double h, H, t0;
 	double tfree;           /* the earliest closing of a gap between two flying bodies */
 	int ifree;              /* ... its interface (index), -1: none */
@@ -299,6 +301,11 @@ int
 hbs_cluster_setup(struct hb_sim *s);
 int
 hbs_chain_stepper_ok(int stepper);
+/* sim_cluster_stiff.c: the clusters' Jacobian (bsimp), their stiffness check */
+int
+hbs_cluster_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *params);
+int
+hbs_cluster_stiffness(struct hb_sim *s);
 int
 hbs_cluster_step(struct hb_sim *s);
 void
