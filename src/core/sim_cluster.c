@@ -24,7 +24,8 @@
  * Watched along a step, interface by interface in increasing k: for one
  * in contact the indicator of its flow set -min(Phi_k, v_k) (an event),
  * its law's switching functions (kinks: the step ends there and the
- * stepper restarts) and v_k (the extremum of x_c,k); for one in flight
+ * stepper restarts), v_k (the extremum of x_c,k) and dPhi_k/dt (that of
+ * F_c,k, its neighbours' forces in dv_k/dt); for one in flight
  * next to a cluster the indicator max(x_k, v_k) of its gap (an event).
  * A crossing is bracketed on re-steps from the step's start (one step of
  * the same method of length h) by the Illinois method down to a few ulps
@@ -261,21 +262,49 @@ hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f)
 	if (c->nwatch > 0)
 		for (i = 0; i < c->ncl; i++)
 			cluster_bodies(s, &c->cl[i], t, u);
+	for (p = 0; p < c->nact; p++) { /* the forces first: dPhi/dt needs the neighbours' */
+		struct iface *I = &s->ifc[c->act[p]];
+		int o = I->off, nz = I->law->n_z;
+		double z[HB_LAW_MAX_Z];
+
+		for (i = 0; i < nz; i++)
+			z[i] = u[o + 2 + i] * c->scale[o + 2 + i];
+		I->tphi = I->law->phi(I->par, I->ext, u[o] * c->scale[o], nz ? z : NULL,
+		                      u[o + 1] * c->scale[o + 1]);
+	}
 	for (p = 0, w = 0; p < c->nact || w < c->nwatch;) {
 		if (w >= c->nwatch || (p < c->nact && c->act[p] < c->wif[w])) {
-			const struct iface *I = &s->ifc[c->act[p++]];
+			int k = c->act[p++];
+			const struct iface *I = &s->ifc[k];
 			int o = I->off, nz = I->law->n_z;
 			int nk = I->law->n_kinks && s->sc.run.kinks ? I->law->n_kinks : 0;
 			double z[HB_LAW_MAX_Z] = { 0 }, xc = u[o] * c->scale[o], v = u[o + 1] * c->scale[o + 1];
+			double dphi[HB_LAW_MAX_Z + 2], dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)], dz[HB_LAW_MAX_Z];
+			double vdot, d;
 
 			for (i = 0; i < nz; i++)
 				z[i] = u[o + 2 + i] * c->scale[o + 2 + i];
-			f[n++] = -fmin(I->law->phi(I->par, I->ext, xc, nz ? z : NULL, v), v);
+			f[n++] = -fmin(I->tphi, v);
 			if (nk) {
 				I->law->kinks(I->par, I->ext, xc, z, v, &f[n]);
 				n += nk;
 			}
 			f[n++] = v;
+			/* dPhi/dt (its minimum is F_c's maximum), with this step's mode of Psi */
+			I->law->jac(I->par, I->ext, xc, nz ? z : NULL, v, dphi, nz ? dpsi : NULL);
+			if (nz && I->msign)
+				I->law->psi_mode(I->par, I->ext, xc, z, v, I->msign, dz);
+			else if (nz)
+				I->law->psi(I->par, I->ext, xc, z, v, dz);
+			vdot = -I->tphi * (I->ilo + I->ihi) + I->arel;
+			if (k > 0 && s->ifc[k - 1].off >= 0)
+				vdot += s->ifc[k - 1].tphi * I->ilo;
+			if (k + 1 < s->nif && s->ifc[k + 1].off >= 0)
+				vdot += s->ifc[k + 1].tphi * I->ihi;
+			d = dphi[0] * v + dphi[nz + 1] * vdot;
+			for (i = 0; i < nz; i++)
+				d += dphi[1 + i] * dz[i];
+			f[n++] = d;
 		} else {
 			double x, v;
 

@@ -240,7 +240,7 @@ hbs_cluster_setup(struct hb_sim *s)
 
 		I->off = n;
 		n += 5 + I->law->n_z; /* x_c, v, z..., W, J_Fc, J_Fe */
-		nf += 2 + (I->law->n_kinks && s->sc.run.kinks ? I->law->n_kinks : 0);
+		nf += 3 + (I->law->n_kinks && s->sc.run.kinks ? I->law->n_kinks : 0);
 	}
 	nf += c->nwatch;
 	if (alloc_ode(s, n) || ensure_f(s, nf))
@@ -264,6 +264,8 @@ hbs_cluster_setup(struct hb_sim *s)
 				}
 				c->fif[f] = c->act[q];
 				c->fkind[f++] = FUN_XCMAX;
+				c->fif[f] = c->act[q];
+				c->fkind[f++] = FUN_FCMAX;
 				q++;
 			} else {
 				c->fif[f] = c->wif[w++];
@@ -564,7 +566,7 @@ retry:
 	if (best >= 0) { /* a kink or an extremum: the step ends there, the stepper restarts */
 		gsl_odeiv2_evolve_reset(c->ev);
 		gsl_odeiv2_step_reset(c->step);
-		if (c->fkind[best] == FUN_XCMAX)
+		if (c->fkind[best] == FUN_XCMAX || c->fkind[best] == FUN_FCMAX)
 			return hbs_push_sample(s, HB_ARC_EXTREMUM);
 	}
 	if ((rc = hbs_push_sample(s, HB_ARC_STEP)))
