@@ -427,6 +427,16 @@ bench-steppers: $(BIN)
 	@. tests/tui/readme.inc && { echo; cat $(BUILD)/bench/steppers.md; echo; } | \
 	    readme_splice tests/bench/REPORT.md STEPPERS && echo "tests/bench/REPORT.md (STEPPERS) written"
 
+# A chain's work in counts (tests/bench/chains.sh, callgrind): a 5-ball touching
+# cradle, a 100-bead chain over its wave's crossing, the cost of a step at
+# N = 10, 100, 1000; the table goes into tests/bench/REPORT.md (CHAINS markers).
+.PHONY: bench-chains
+bench-chains: $(BIN)
+	@mkdir -p $(BUILD)/bench
+	@sh tests/bench/chains.sh $(BIN) $(BUILD)/bench/chains.md
+	@. tests/tui/readme.inc && { echo; cat $(BUILD)/bench/chains.md; echo; } | \
+	    readme_splice tests/bench/REPORT.md CHAINS && echo "tests/bench/REPORT.md (CHAINS) written"
+
 # After make bench: the per-study table into docs/speed-and-accuracy.md, and tests/bench/REPORT.md.
 bench-docs:
 	@sh tests/bench/report.sh $(BUILD)/bench

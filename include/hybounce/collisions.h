@@ -28,6 +28,8 @@ struct hb_collision {
 	double Lambda;   /* J_Fe / J_Fc */
 	double xcr_sum;  /* x_c^r summed over collisions 0 .. i (the thinned ones too), m */
 	int complete;    /* 0 for the contact in progress (values so far, ts = now) */
+	int k;           /* the interface's number (docs/chains.md: k joins bodies k and k + 1;
+	                    0 the floor's); 1 in the full system, 0 in the reduced one */
 };
 
 HB_END_DECLS

@@ -95,7 +95,12 @@ struct hb_scene_run {
 	int kinks;        /* 1: steps end on the law's and the loads' kinks (DESIGN.md 4a) */
 	int limits;       /* 1: refuse a stepper at a tolerance where its global error is
 	                   * more than 10 x rk8pd's on the paper's studies (0: only to measure it) */
+	double max_indent; /* a chain's: largest indentation, a fraction of the smaller radius */
+	int chain_limits; /* a chain's model limits (docs/chains.md 6): HB_CHAIN_LIMITS_* */
 };
+
+/* What a chain does where it leaves its model's limits (run.chain_limits). */
+enum { HB_CHAIN_LIMITS_STOP = 0, HB_CHAIN_LIMITS_WARN = 1 };
 
 /*
  * A chain of n equal bodies on the axis (docs/chains.md): n = 0 for the

@@ -189,6 +189,16 @@ int
 hb_sim_body(const struct hb_sim *s, int i, struct hb_sim_body *out);
 
 /*
+ * A chain's model limits (docs/chains.md section 6) under
+ * run.chain_limits = warn: how many times an interface passed
+ * run.max_indent or bodies that are not neighbours overlapped, and the
+ * first of them in words ("" when none).  Under stop the first one ends
+ * the run (hb_sim_errmsg names it).
+ */
+const char *
+hb_sim_limits(const struct hb_sim *s, long *count);
+
+/*
  * Truncates the run after sample i (which becomes the last sample; a
  * pre-jump sample is kept with its jump undone) and continues from its
  * state on the next hb_sim_advance.  Collisions that end after it are dropped.

@@ -295,7 +295,7 @@ print_header(FILE *out, const char *preset, const char *path,
 /* ------------------------------------------------------------------ */
 /* Collision table                                                     */
 
-enum col_kind { COL_INDEX, COL_VALUE, COL_RATIO };
+enum col_kind { COL_INDEX, COL_VALUE, COL_RATIO, COL_IFACE };
 
 struct col {
 	const char *name;
@@ -310,9 +310,12 @@ struct col {
 
 enum { NCOLS_MAX = 32 };
 
-/* The columns of the batch table, from the table of columns.h. */
+/*
+ * The columns of the batch table, from the table of columns.h; a chain's
+ * has its interface k after i.
+ */
 static int
-cols_from_table(struct col *cols)
+cols_from_table(struct col *cols, int chain)
 {
 	int nc = 0;
 
@@ -327,8 +330,22 @@ cols_from_table(struct col *cols)
 		cols[nc].kind = cc->index ? COL_INDEX : cc->unit[0] ? COL_VALUE : COL_RATIO;
 		cols[nc].scale = 1;
 		nc++;
+		if (cc->index && chain && nc < NCOLS_MAX) {
+			memset(&cols[nc], 0, sizeof cols[nc]);
+			cols[nc].name = "k";
+			cols[nc].kind = COL_IFACE;
+			cols[nc].scale = 1;
+			nc++;
+		}
 	}
 	return nc;
+}
+
+/* A whole-number column: the collision's index i, or a chain's interface k. */
+static int
+col_whole(const struct col *c)
+{
+	return c->kind == COL_INDEX || c->kind == COL_IFACE;
 }
 
 static double
@@ -383,6 +400,10 @@ col_cell(const struct col *c, const struct hb_collision *k, char *buf, size_t n)
 		snprintf(buf, n, "%ld", k->i);
 		return;
 	}
+	if (c->kind == COL_IFACE) {
+		snprintf(buf, n, "%d", k->k);
+		return;
+	}
 	v = col_get(c, k);
 	/* e is defined at the separation: not for the contact in progress. */
 	if (!k->complete && c->off == offsetof(struct hb_collision, e))
@@ -419,7 +440,7 @@ print_table(FILE *out, const struct hb_sim *s, const struct hb_collision *live,
 	size_t nc = hb_sim_ncollisions(s), r;
 	char buf[64];
 	int c, w;
-	const int ncols = cols_from_table(cols);
+	const int ncols = cols_from_table(cols, hb_sim_scene(s)->chain.n > 0);
 
 	for (c = 0; c < ncols; c++) {
 		double mag = 0;
@@ -429,13 +450,13 @@ print_table(FILE *out, const struct hb_sim *s, const struct hb_collision *live,
 			const struct hb_collision *k = r < nc ? hb_sim_collision(s, r) : live;
 			double v;
 
-			if (k == NULL || cols[c].kind == COL_INDEX || (r == nc && nc > 0))
+			if (k == NULL || col_whole(&cols[c]) || (r == nc && nc > 0))
 				continue;
 			v = fabs(col_get(&cols[c], k));
 			if (isfinite(v) && v > mag)
 				mag = v;
 		}
-		if (cols[c].kind != COL_INDEX)
+		if (!col_whole(&cols[c]))
 			col_choose(&cols[c], mag);
 		col_head(&cols[c], buf, sizeof buf);
 		w = (int)strlen(buf);
@@ -507,10 +528,12 @@ print_error_table(FILE *out, const struct hb_sim *s, const struct col *cols, int
 		const struct hb_collision *d = hb_error_find(est, k->i);
 
 		for (c = 0; c < ncols; c++) {
-			double v = d != NULL && cols[c].kind != COL_INDEX ? col_get(&cols[c], d) : NAN;
+			double v = d != NULL && !col_whole(&cols[c]) ? col_get(&cols[c], d) : NAN;
 
 			if (cols[c].kind == COL_INDEX)
 				snprintf(buf, sizeof buf, "%ld", k->i);
+			else if (cols[c].kind == COL_IFACE)
+				snprintf(buf, sizeof buf, "%d", k->k);
 			else if (isnan(v))
 				snprintf(buf, sizeof buf, "-");
 			else
@@ -636,6 +659,14 @@ print_bodies(FILE *out, const struct hb_sim *s)
 	}
 	fprintf(out, "  chain       kinetic energy %s, momentum %.9g kg m/s\n",
 	        fmt(K, hb_unit_energy, b1, sizeof b1), P);
+	{
+		long nlim;
+		const char *note = hb_sim_limits(s, &nlim);
+
+		if (nlim > 0) /* run.chain_limits = warn */
+			fprintf(out, "  limits      passed %ld time%s (run.chain_limits = warn); the first: %s\n",
+			        nlim, nlim == 1 ? "" : "s", note);
+	}
 }
 
 static void

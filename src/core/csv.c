@@ -154,10 +154,13 @@ static int
 write_collisions_err(FILE *f, const struct hb_sim *s, const struct hb_error_estimate *err)
 {
 	size_t nc = hb_sim_ncollisions(s);
-	int e;
+	int e, chain = hb_sim_scene(s)->chain.n > 0;
 
-	for (int k = 0; k < hb_collision_ncolumns; k++) /* the columns of columns.h */
+	for (int k = 0; k < hb_collision_ncolumns; k++) { /* the columns of columns.h */
 		put_field(f, hb_collision_columns[k].name, k == 0);
+		if (hb_collision_columns[k].index && chain) /* a chain's: the interface after i */
+			fputs(",k", f);
+	}
 	for (int k = 0; err != NULL && k < hb_collision_ncolumns; k++)
 		if (!hb_collision_columns[k].index)
 			fprintf(f, ",%s_err", hb_collision_columns[k].name);
@@ -169,9 +172,11 @@ write_collisions_err(FILE *f, const struct hb_sim *s, const struct hb_error_esti
 		if (c == NULL || !c->complete)
 			continue;
 		for (int k = 0; k < hb_collision_ncolumns; k++) {
-			if (hb_collision_columns[k].index)
+			if (hb_collision_columns[k].index) {
 				fprintf(f, "%s%ld", k ? "," : "", c->i);
-			else
+				if (chain)
+					fprintf(f, ",%d", c->k);
+			} else
 				csv_put_num(f, hb_collision_value(c, &hb_collision_columns[k]));
 		}
 		d = err != NULL ? hb_error_find(err, c->i) : NULL;

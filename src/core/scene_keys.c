@@ -106,8 +106,8 @@ const struct scene_keydef scene_keydefs[] = {
 	  SP_CHAIN, "bodies of a chain, each body 1, with the law between neighbours; 0: the two-body scene" },
 	{ "chain.floor", "chain", "floor", ST_BOOL, NULL, R_NONE, NAN, "no", OFF(chain.floor), 0,
 	  SP_CHAIN, "a fixed obstacle below body 1 of the chain (interface 0): yes or no" },
-	NUM("chain.spacing", "chain", "spacing", hb_unit_length, R_POS, 0.001, chain.spacing, SP_CHAIN,
-	    "gap between neighbours (and between body 1 and the floor), > 0"),
+	NUM("chain.spacing", "chain", "spacing", hb_unit_length, R_NONNEG, 0.001, chain.spacing, SP_CHAIN,
+	    "gap between neighbours (and between body 1 and the floor); 0: touching"),
 	NUM("striker.v", "chain", "striker v", hb_unit_velocity, R_SPEED, 0, chain.v, SP_CHAIN,
 	    "initial velocity of body n, the striker (negative: towards body n - 1)"),
 
@@ -135,6 +135,11 @@ const struct scene_keydef scene_keydefs[] = {
 	TXT("run.limits", "run", "limits", ST_BOOL, "yes", run.limits, 0,
 	    "refuse a stepper at a tolerance where its global error on the paper's studies is "
 	    "more than 10 x rk8pd's (no: run it anyway, only to measure it)"),
+	NUM("run.max_indent", "run", "max_indent", hb_unit_none, R_TOL, 0.1, run.max_indent, SP_CHAIN,
+	    "a chain's largest indentation (or overlap), a fraction of the smaller radius of its two bodies"),
+	{ "run.chain_limits", "run", "chain_limits", ST_STOPWARN, NULL, R_NONE, NAN, "stop",
+	  OFF(run.chain_limits), 0, SP_CHAIN, "where a chain passes run.max_indent, or bodies that are "
+	  "not neighbours overlap: stop the run, or warn (note it and go on)" },
 };
 const int scene_nkeydefs = (int)(sizeof scene_keydefs / sizeof scene_keydefs[0]);
 
@@ -211,6 +216,10 @@ scene_keydef_choices(const struct scene_keydef *kd, const char **out, int max)
 		ADD(bool_names[1]);
 		ADD(bool_names[0]);
 		break;
+	case ST_STOPWARN:
+		ADD("stop");
+		ADD("warn");
+		break;
 	case ST_REDUCE:
 		ADD(reduce_names[7]);
 		for (int i = 0; i < 7; i++)
@@ -254,6 +263,12 @@ scene_keydef_read_choice(const struct scene_keydef *kd, const char *t, int *v)
 				return *v = 0, 0;
 		}
 		return -1;
+	case ST_STOPWARN:
+		if (cnum_casecmp(t, "stop") == 0)
+			return *v = HB_CHAIN_LIMITS_STOP, 0;
+		if (cnum_casecmp(t, "warn") == 0)
+			return *v = HB_CHAIN_LIMITS_WARN, 0;
+		return -1;
 	case ST_REDUCE: {
 		static const char *const flag[] = { "flight", "contact", "com" };
 		int r = 0;
@@ -293,6 +308,7 @@ scene_keydef_choice(const struct hb_scene *sc, const struct scene_keydef *kd)
 	case ST_STEPPER: return hb_scene_stepper_name(v);
 	case ST_BOOL: return bool_names[v != 0];
 	case ST_REDUCE: return reduce_names[v & HB_REDUCE_ALL];
+	case ST_STOPWARN: return v == HB_CHAIN_LIMITS_WARN ? "warn" : "stop";
 	default: return "";
 	}
 }

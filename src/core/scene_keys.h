@@ -34,6 +34,7 @@ enum scene_store {
 	ST_STEPPER, /* int: a stepper name */
 	ST_BOOL,    /* int: yes | no */
 	ST_REDUCE,  /* int: REDUCE_* flags, all | none | a comma list */
+	ST_STOPWARN, /* int: stop | warn (HB_CHAIN_LIMITS_*) */
 };
 
 /* What else a value means (SP_FULL and SP_RAMP: when it is shown and checked). */

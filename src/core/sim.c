@@ -326,6 +326,10 @@ build(struct hb_sim *s, char *msg, size_t n)
 		return q == HB_ENOMEM ? hb_status_set(msg, n, HB_ENOMEM, "out of memory for the chain")
 		                      : hb_status_set(msg, n, q, "the chain's scene names a body or "
 		                                      "interface it does not have");
+	if (s->chain && !hbs_chain_stepper_ok(s->sc.run.stepper))
+		return hb_status_set(msg, n, HB_EINVAL, "run.stepper: a chain's contacts run with rk8pd, "
+		                     "dop853, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once stiff); "
+		                     "accepted: those");
 	for (q = 0; q < 2; q++)
 		s->stepper[q] = s->sc.run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : s->sc.run.stepper;
 	for (q = 0; q < 2; q++)
@@ -402,6 +406,7 @@ hb_sim_free(struct hb_sim *s)
 		gsl_vector_complex_free(s->lambda);
 	arc_free(s->arc);
 	hbs_chain_free(s);
+	hbs_cluster_free(s);
 	free(s->br);
 	free(s->col);
 	free(s);
@@ -422,13 +427,22 @@ hb_sim_advance(struct hb_sim *s, long max_steps, double max_seconds)
 		if (max_seconds > 0 && ((s->work - work0) & 7) == 0 &&
 		    clock_seconds(CLOCK_MONOTONIC) - start >= max_seconds)
 			break;
+		if (s->chain) { /* a chain: its flights and its clusters of contacts (sim_cluster.c) */
+			if (s->setup && (rc = hbs_cluster_setup(s)))
+				break;
+			s->work++;
+			rc = s->cx.nact ? hbs_cluster_step(s) : hbs_chain_flight(s);
+			if (rc)
+				break;
+			continue;
+		}
 		if (s->setup) {
 			if ((rc = setup_interval(s)))
 				break;
 		}
 		s->work++;
 		if (s->closed)
-			rc = s->chain ? hbs_chain_flight(s) : hbs_flight_closed(s);
+			rc = hbs_flight_closed(s);
 		else
 			rc = numeric_step(s);
 		if (rc)

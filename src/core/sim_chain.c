@@ -82,6 +82,9 @@ bind_chain_iface(struct hb_sim *s, struct iface *I, int k)
 		I->whi = hi->m / (lo->m + hi->m);
 		I->Fer = I->wlo * hi->Fe - I->whi * lo->Fe; /* (m_lo F_hi - m_hi F_lo) / (m_lo + m_hi) */
 	}
+	I->ihi = 1.0 / s->body[I->hi].m;
+	I->ilo = I->lo < 0 ? 0.0 : 1.0 / s->body[I->lo].m;
+	I->arel = s->body[I->hi].a - (I->lo < 0 ? 0.0 : s->body[I->lo].a);
 }
 
 int
@@ -159,8 +162,8 @@ hbs_chain_free(struct hb_sim *s)
 }
 
 /* Body b's position and velocity at t: its parabola from the time tb its (y, u) are of. */
-static void
-body_now(const struct body *b, double t, double *y, double *u)
+void
+hbs_body_now(const struct body *b, double t, double *y, double *u)
 {
 	double tau = t - b->tb;
 
@@ -175,7 +178,7 @@ gap_at(const struct hb_sim *s, const struct iface *I, double t, double *x, doubl
 	const struct body *hi = &s->body[I->hi];
 	double yh, uh;
 
-	body_now(hi, t, &yh, &uh);
+	hbs_body_now(hi, t, &yh, &uh);
 	if (I->lo < 0) {
 		*x = yh - hi->l;
 		*v = uh;
@@ -183,81 +186,27 @@ gap_at(const struct hb_sim *s, const struct iface *I, double t, double *x, doubl
 		const struct body *lo = &s->body[I->lo];
 		double yl, ul;
 
-		body_now(lo, t, &yl, &ul);
+		hbs_body_now(lo, t, &yl, &ul);
 		*x = (yh - hi->l) - (yl + lo->l);
 		*v = uh - ul;
 	}
 }
 
 /* Sets body b to (y, u) at t. */
-static void
-body_set(struct body *b, double t, double y, double u)
+void
+hbs_body_set(struct body *b, double t, double y, double u)
 {
 	b->y = y;
 	b->u = u;
 	b->tb = t;
 }
 
-/* The two-contacts message: interface i closed while s->I is in contact. */
-static int
-two_contacts(struct hb_sim *s, int i)
-{
-	const struct iface *J = &s->ifc[i];
-	char why[220];
-
-	snprintf(why, sizeof why, "interface %d (bodies %d and %d) closed while interface %d was in "
-	         "contact: a chain carries one contact at a time in this version",
-	         s->k0 + i, J->lo + 1, J->hi + 1, s->k0 + s->ia);
-	return hbs_fail(s, HB_ENUMERIC, why);
-}
-
-/*
- * A chain's bodies at s->t where a sample is recorded.  In flight every
- * body is on its parabola: nothing to do.  In contact the two bodies of
- * s->I are set from its gap and their centre of mass; the interfaces next
- * to it are checked (their gaps move with the contact), and every other
- * gap closes no earlier than cm_tother, found when the contact began (its
- * bodies fly on parabolas): another interface closing while one is in
- * contact is two contacts at once, which this version does not carry
- * (HB_ENUMERIC, naming them).  The work is the same for any N.
- */
-static int
-chain_sync(struct hb_sim *s)
-{
-	const struct iface *I = s->I;
-	struct body *hi = &s->body[I->hi];
-	double x, v;
-
-	if (!I->q)
-		return 0;
-	if (I->lo < 0) {
-		body_set(hi, s->t, I->x + hi->l, I->v);
-	} else {
-		struct body *lo = &s->body[I->lo];
-		double d = I->x + hi->l + lo->l;
-
-		body_set(hi, s->t, s->xm + I->wlo * d, s->vm + I->wlo * I->v);
-		body_set(lo, s->t, s->xm - I->whi * d, s->vm - I->whi * I->v);
-	}
-	if (s->ia > 0) {
-		gap_at(s, &s->ifc[s->ia - 1], s->t, &x, &v);
-		if (x < 0)
-			return two_contacts(s, s->ia - 1);
-	}
-	if (s->ia + 1 < s->nif) {
-		gap_at(s, &s->ifc[s->ia + 1], s->t, &x, &v);
-		if (x < 0)
-			return two_contacts(s, s->ia + 1);
-	}
-	if (s->t >= s->cm_tother)
-		return two_contacts(s, s->cm_iother);
-	return 0;
-}
-
 int
 hbs_bodies_sync(struct hb_sim *s)
 {
-	return s->chain ? chain_sync(s) : 0;
+	if (s->chain)
+		hbs_cluster_sync(s);
+	return 0;
 }
 
 void
@@ -267,7 +216,7 @@ hbs_body_at(const struct hb_sim *s, int i, double *y, double *u)
 	const struct iface *I = &s->ifc[0];
 
 	if (s->chain)
-		body_now(&s->body[i], s->t, y, u);
+		hbs_body_now(&s->body[i], s->t, y, u);
 	else if (s->nbody == 1) {
 		*y = I->x;
 		*u = I->v;
@@ -305,54 +254,25 @@ hbs_chain_reset(struct hb_sim *s)
 			y = sc->chain.floor ? b->l + cb.gap : 0.0;
 		else
 			y += s->body[i - 1].l + cb.gap + b->l;
-		body_set(b, 0.0, y, cb.v0);
+		hbs_body_set(b, 0.0, y, cb.v0);
 	}
 	for (i = 0; i < s->nif; i++) {
 		struct iface *J = &s->ifc[i];
 
 		memset(&J->q, 0, sizeof *J - offsetof(struct iface, q));
+		J->over = J->msign = 0;
 		gap_at(s, J, 0.0, &J->x, &J->v);
 	}
 	hbs_chain_activate(s, s->nif - 1);
 	s->xm = s->vm = 0.0;
-	s->cm_tother = INFINITY;
-	s->cm_iother = -1;
-}
-
-/*
- * After the jump of s->I: into a contact, the centre of mass of its pair
- * at the commencement, from which it moves under the pair's load alone.
- */
-void
-hbs_chain_jumped(struct hb_sim *s)
-{
-	const struct iface *I = s->I;
-	int i;
-
-	if (!I->q) /* a separation: x_m, v_m unchanged (g) */
-		return;
-	hbs_chain_pair_com(s);
-	s->cm_t0 = s->t;
-	s->cm_y0 = s->xm;
-	s->cm_u0 = s->vm;
-	s->cm_a = I->lo < 0 ? 0.0 : I->wlo * s->body[I->lo].a + I->whi * s->body[I->hi].a;
-	/* the earliest closing of a gap whose bodies both fly through the contact */
-	s->cm_tother = INFINITY;
-	s->cm_iother = -1;
-	for (i = 0; i < s->nif; i++) {
-		const struct iface *J = &s->ifc[i];
-		double x, v, a, tau;
-
-		if (i >= s->ia - 1 && i <= s->ia + 1)
-			continue;
-		gap_at(s, J, s->t, &x, &v);
-		a = s->body[J->hi].a - (J->lo >= 0 ? s->body[J->lo].a : 0.0);
-		tau = hbs_flight_event(x, v, a);
-		if (s->t + tau < s->cm_tother) {
-			s->cm_tother = s->t + tau;
-			s->cm_iother = i;
-		}
-	}
+	for (i = 0; i < s->nbody; i++)
+		s->body[i].cl = -1;
+	for (i = 0; i < s->nif; i++)
+		s->ifc[i].off = -1;
+	s->cx.nact = s->cx.ncl = s->cx.nwatch = s->cx.dim = 0;
+	s->cx.h = 0.0;
+	s->nlim = 0;
+	s->limnote[0] = '\0';
 }
 
 /* x_m, v_m: the centre of mass of s->I's pair from the bodies (0 on the floor). */
@@ -367,22 +287,10 @@ hbs_chain_pair_com(struct hb_sim *s)
 		s->xm = s->vm = 0.0;
 		return;
 	}
-	body_now(&s->body[I->lo], s->t, &yl, &ul);
-	body_now(&s->body[I->hi], s->t, &yh, &uh);
+	hbs_body_now(&s->body[I->lo], s->t, &yl, &ul);
+	hbs_body_now(&s->body[I->hi], s->t, &yh, &uh);
 	s->xm = I->wlo * yl + I->whi * yh;
 	s->vm = I->wlo * ul + I->whi * uh;
-}
-
-/* The centre of mass of the pair in contact at s->t (closed form). */
-void
-hbs_chain_com(struct hb_sim *s)
-{
-	double tau = s->t - s->cm_t0;
-
-	if (!s->I->q)
-		return;
-	s->xm = s->cm_y0 + tau * (s->cm_u0 + 0.5 * s->cm_a * tau);
-	s->vm = s->cm_u0 + s->cm_a * tau;
 }
 
 /* Gap and relative velocity of interface i at t, for the flight (sim_flight.c). */
@@ -399,11 +307,11 @@ hbs_chain_settle(struct hb_sim *s, int i, double t)
 	const struct iface *J = &s->ifc[i];
 	double y, u;
 
-	body_now(&s->body[J->hi], t, &y, &u);
-	body_set(&s->body[J->hi], t, y, u);
+	hbs_body_now(&s->body[J->hi], t, &y, &u);
+	hbs_body_set(&s->body[J->hi], t, y, u);
 	if (J->lo >= 0) {
-		body_now(&s->body[J->lo], t, &y, &u);
-		body_set(&s->body[J->lo], t, y, u);
+		hbs_body_now(&s->body[J->lo], t, &y, &u);
+		hbs_body_set(&s->body[J->lo], t, y, u);
 	}
 }
 

@@ -233,8 +233,8 @@ void
 hbs_set_com(struct hb_sim *s)
 {
 	if (s->chain)
-		hbs_chain_com(s);
-	else if (s->sc.d.system == HB_SCENE_FULL)
+		return; /* a chain's centres of mass are its clusters' (sim_cluster.c) */
+	if (s->sc.d.system == HB_SCENE_FULL)
 		hb_scene_com(&s->sc, s->t, &s->xm, &s->vm);
 	else
 		s->xm = s->vm = 0.0;

@@ -81,6 +81,7 @@ struct body {
 	                           (the two-body scenes': from their interface, hbs_body_at) */
 	double a;               /* a chain's: its constant acceleration */
 	double Fe;              /* a chain's: its applied force, constant */
+	int cl;                 /* a chain's: the cluster it is in (index), -1 in flight */
 };
 
 struct iface {
@@ -93,6 +94,16 @@ struct iface {
 	double wlo, whi;        /* a chain's: m_lo / (m_lo + m_hi), m_hi / (m_lo + m_hi) */
 	double Fer;             /* a chain's: F_e,r = (m_lo F_hi - m_hi F_lo) / (m_lo + m_hi), constant */
 	double (*Fer_at)(const struct hb_sim *s, const struct iface *I, double t); /* F_e,r at t */
+	double ilo, ihi;        /* a chain's: 1 / m_lo (0 on the floor), 1 / m_hi */
+	double arel;            /* a chain's: a_hi - a_lo, the gap's acceleration in flight */
+	int off;                /* a chain's: its block in the clusters' ODE (sim_cluster.c), -1: none */
+	int watch;              /* a chain's: 1 while in flight next to a cluster (its gap is watched) */
+	double tphi;            /* a chain's: Phi at the state rhs evaluates (scratch) */
+	double tdphi[HB_LAW_MAX_Z + 2]; /* a chain's: Phi's and Psi's partials there (scratch) */
+	double tdpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)];
+	int msign;              /* a chain's: the sign of its law's mode term, frozen for a step */
+	int over;               /* a chain's: the model limits passed in this contact (1 indentation,
+	                           2 non-neighbours above it) */
 
 	/* its state at (t, j) */
 	int q;
@@ -104,14 +115,46 @@ struct iface {
 	double te, vi;          /* commencement time and approach velocity */
 };
 
+/*
+ * A chain's clusters (docs/chains.md section 8): maximal runs of bodies
+ * b0..b1 joined by interfaces in contact, with the floor when its
+ * interface is in contact; the centre of mass of one without the floor in
+ * closed form from (t0, y0, u0) under its loads alone.
+ */
+struct cluster {
+	int b0, b1, floor;
+	double M, t0, y0, u0, a;
+};
+
+/* The clusters' ODE (sim_cluster.c): one block per interface in contact. */
+struct clusters {
+	int nact, ncl, nwatch, dim, nf;
+	int *act;               /* the interfaces in contact (index into ifc), ascending */
+	struct cluster *cl;
+	int *wif;               /* the interfaces in flight next to a cluster, ascending */
+	int capact, capcl, capwif, capdim, capf;
+	double *u, *u0, *u1, *scale, *iscale, *f0, *f1, *fe, *gmax, *yerr;
+	double *by, *bu;        /* scratch: the bodies' (y, u) of the clusters at a state */
+	int capb;
+	int *fkind, *fif;       /* each watched function's kind and interface (index) */
+	gsl_odeiv2_step *step, *loc;
+	gsl_odeiv2_control *ctl;
+	gsl_odeiv2_evolve *ev;
+	gsl_odeiv2_system sys;
+	int built_dim, built_stepper;
+	double h, H, t0;
+	double tfree;           /* the earliest closing of a gap between two flying bodies */
+	int ifree;              /* ... its interface (index), -1: none */
+};
+
 struct hb_sim {
 	struct hb_scene sc;
+	struct clusters cx;     /* a chain's clusters in contact */
+	char limnote[400];      /* a chain's first passing of a model limit (run.chain_limits = warn) */
+	long nlim;              /* ... and how many times one was passed */
 	int chain;              /* 1: a chain scene (sc.chain.n >= 1) */
 	int nbody, k0, nif;     /* N, the first interface's number (0: a floor), N - k0 */
 	int ia;                 /* I - ifc */
-	double cm_t0, cm_y0, cm_u0, cm_a; /* a chain's: the pair in contact's centre of mass */
-	double cm_tother;       /* ... and the earliest closing of a gap away from it, */
-	int cm_iother;          /* and its interface (index) */
 	struct body *body;      /* body[i] is body i + 1 */
 	struct iface *ifc;      /* ifc[i] is interface k0 + i */
 	int capbody, capif;     /* their allocated lengths */
@@ -216,9 +259,9 @@ hbs_chain_free(struct hb_sim *s);
 
 /*
  * ... a chain's bodies' positions and velocities at the current state
- * (HB_ENUMERIC when two of its interfaces are in contact at once); the
- * two-body scenes' bodies follow from their interface and centre of mass
- * on request (hbs_body_at).
+ * (the clusters' bodies set from their interfaces and centres of mass);
+ * the two-body scenes' bodies follow from their interface and centre of
+ * mass on request (hbs_body_at).
  */
 int
 hbs_bodies_sync(struct hb_sim *s);
@@ -229,15 +272,48 @@ hbs_chain_activate(struct hb_sim *s, int i);
 void
 hbs_chain_reset(struct hb_sim *s);
 void
-hbs_chain_jumped(struct hb_sim *s);
-void
-hbs_chain_com(struct hb_sim *s);
-void
 hbs_chain_pair_com(struct hb_sim *s);
 void
 hbs_chain_gap(const struct hb_sim *s, int i, double t, double *x, double *v);
 void
 hbs_chain_settle(struct hb_sim *s, int i, double t);
+void
+hbs_body_now(const struct body *b, double t, double *y, double *u);
+void
+hbs_body_set(struct body *b, double t, double y, double u);
+
+/*
+ * sim_cluster.c: a chain's interfaces in contact, integrated together
+ * (docs/chains.md section 8): the clusters rebuilt after a jump, a flow
+ * interval begun, one accepted step with what follows from it; the
+ * clusters' bodies at the current state; the limits of section 6.
+ */
+int
+hbs_cluster_jumped(struct hb_sim *s);
+/* ... the right-hand side, the watched functions at a scaled state, the state unpacked */
+int
+hbs_cluster_rhs(double t, const double u[], double du[], void *params);
+void
+hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f);
+void
+hbs_cluster_unpack(struct hb_sim *s, double t, const double *u);
+int
+hbs_cluster_setup(struct hb_sim *s);
+int
+hbs_chain_stepper_ok(int stepper);
+/* sim_cluster_stiff.c: the clusters' Jacobian (bsimp), their stiffness check */
+int
+hbs_cluster_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *params);
+int
+hbs_cluster_stiffness(struct hb_sim *s);
+int
+hbs_cluster_step(struct hb_sim *s);
+void
+hbs_cluster_sync(struct hb_sim *s);
+int
+hbs_cluster_limits(struct hb_sim *s);
+void
+hbs_cluster_free(struct hb_sim *s);
 
 /* sim_flight.c: a chain's flight, every body in closed form */
 int

@@ -107,6 +107,7 @@ push_collision(struct hb_sim *s)
 	c.JFe = I->JFe;
 	c.Lambda = I->JFc != 0.0 ? I->JFe / I->JFc : NAN;
 	c.complete = 1;
+	c.k = s->k0 + s->ia;
 	s->col[s->ncol++] = c;
 	return 0;
 }
@@ -160,16 +161,28 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 	memset(I->z, 0, sizeof I->z);
 	I->W = I->JFc = I->JFe = 0.0;
 	I->xcmax = I->Fcmax = 0.0;
+	I->over = 0;
+	I->msign = 0;
 	if (I->q) {
 		I->te = s->t;
 		I->vi = I->v;
 		I->xe = I->x;
 		I->Wc0 = I->Wc;
-		if (s->ncol > 0 && isnan(s->col[s->ncol - 1].tf))
-			s->col[s->ncol - 1].tf = s->t - s->col[s->ncol - 1].ts;
+		if (!s->chain) {
+			if (s->ncol > 0 && isnan(s->col[s->ncol - 1].tf))
+				s->col[s->ncol - 1].tf = s->t - s->col[s->ncol - 1].ts;
+		} else {
+			/* a chain: the flight of this interface since its last collision */
+			size_t r = s->ncol;
+
+			while (r > 0 && s->col[r - 1].k != s->k0 + s->ia)
+				r--;
+			if (r > 0 && isnan(s->col[r - 1].tf))
+				s->col[r - 1].tf = s->t - s->col[r - 1].ts;
+		}
 	}
-	if (s->chain)
-		hbs_chain_jumped(s);
+	if (s->chain && (rc = hbs_cluster_jumped(s)))
+		return rc;
 	s->st.jumps++;
 	if ((rc = hbs_push_sample(s, HB_ARC_POST_JUMP)))
 		return rc;

@@ -2,9 +2,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # A chain scene in batch: the header names the chain, the summary gives each
 # body's velocity and kinetic energy and the chain's totals (Newton's cradle
-# of three: the bottom ball leaves with the striker's velocity), --set
-# reaches the chain keys, --check passes, and what a chain cannot run yet is
-# refused with the key named, or stops the run saying why.
+# of three: the bottom ball leaves with the striker's velocity, or most of it
+# when the balls touch), --set reaches the chain keys, --check passes,
+# several contacts at once run together, the model's limits stop the run (or
+# are noted), and what a chain cannot run yet is refused with the key named.
 . "$(dirname "$0")/common.inc"
 
 cat >"$T/cradle.preset" <<'P'
@@ -49,12 +50,24 @@ else
 	notok "--set chain.n=5 --set striker.v=-3: four collisions, body 1 leaves at -3 m/s" "$T/out"
 fi
 
-"$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 >"$T/out" 2>&1
-rc=$?
-if [ $rc -eq 2 ] && grep -q 'chain.spacing: value 0 is out of range; accepted: (0, inf) m' "$T/out"; then
-	ok "touching bodies (chain.spacing = 0) refused, exit 2"
+# touching balls (chain.spacing = 0): the contacts overlap in time; the bottom ball
+# leaves with most but not all of the striker's velocity and the striker recoils
+if "$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 --check >"$T/out" 2>&1 &&
+    grep -q '^  body 1      u = -994.549 mm/s' "$T/out" &&
+    grep -q '^  body 3      u = 70.95' "$T/out" &&
+    grep -q '^  chain       kinetic energy 16.3363 mJ, momentum -0.0326725636 kg m/s$' "$T/out" &&
+    grep -q '^  check       solution pair: ok' "$T/out"; then
+	ok "touching cradle of three (chain.spacing = 0): most but not all of the velocity passes, the striker recoils, --check"
 else
-	notok "touching bodies (chain.spacing = 0) refused, exit 2 (got $rc)" "$T/out"
+	notok "touching cradle of three (chain.spacing = 0): most but not all of the velocity passes, the striker recoils, --check" "$T/out"
+fi
+
+"$BIN" --batch "$T/cradle.preset" --set chain.spacing=-1mm >"$T/out" 2>&1
+rc=$?
+if [ $rc -eq 2 ] && grep -q 'chain.spacing: value -1mm is out of range; accepted: \[0, inf) m' "$T/out"; then
+	ok "overlapping bodies (chain.spacing < 0) refused, exit 2"
+else
+	notok "overlapping bodies (chain.spacing < 0) refused, exit 2 (got $rc)" "$T/out"
 fi
 
 "$BIN" --batch "$T/cradle.preset" --set loads.F1=1 >"$T/out" 2>&1
@@ -65,13 +78,77 @@ else
 	notok "a chain with loads.F1 refused, exit 2 (got $rc)" "$T/out"
 fi
 
-# 1 nm apart the struck ball reaches the next one while the first contact lasts
-"$BIN" --batch "$T/cradle.preset" --set chain.spacing=1nm --quiet >"$T/out" 2>&1
-rc=$?
-if [ $rc -eq 1 ] && grep -q 'interface 1 (bodies 1 and 2) closed while interface 2 was in contact: a chain carries one contact at a time' "$T/out"; then
-	ok "two contacts at once stop the run naming both, exit 1"
+# 1 nm apart the struck ball reaches the next one while the first contact lasts:
+# two contacts at once, integrated together (a cluster)
+if "$BIN" --batch "$T/cradle.preset" --set chain.spacing=1nm --check >"$T/out" 2>&1 &&
+    grep -q '^  collisions  2$' "$T/out" &&
+    grep -q '^  chain       kinetic energy 16.3363 mJ, momentum -0.0326725636 kg m/s$' "$T/out" &&
+    grep -q '^  check       solution pair: ok' "$T/out"; then
+	ok "two contacts at once (1 nm apart) run together, energy and momentum kept, --check"
 else
-	notok "two contacts at once stop the run naming both, exit 1 (got $rc)" "$T/out"
+	notok "two contacts at once (1 nm apart) run together, energy and momentum kept, --check" "$T/out"
+fi
+
+# a touching chain of 20 under gravity, and one of 6 on the floor: every sample
+# of the hybrid arc in C, every pre-jump one in D, post-jump = g(pre-jump)
+for a in "chain.n=20" "chain.n=6 --set chain.floor=yes"; do
+	# shellcheck disable=SC2086
+	if "$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 --set loads.g=9.81 --set $a --check -q >"$T/out" 2>&1 &&
+	    grep -q '^  check       solution pair: ok' "$T/out"; then
+		ok "touching chain ($a, gravity): --check passes"
+	else
+		notok "touching chain ($a, gravity): --check passes" "$T/out"
+	fi
+done
+
+# a chain's contacts run with rk8pd, dop853, rkf45, rkck, bsimp or auto: msbdf is refused by name
+"$BIN" --batch "$T/cradle.preset" --set run.stepper=msbdf --set run.limits=no >"$T/out" 2>&1
+rc=$?
+if [ $rc -eq 2 ] && grep -q "run.stepper: a chain's contacts run with rk8pd, dop853, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once stiff); accepted: those" "$T/out"; then
+	ok "a chain with msbdf refused, exit 2"
+else
+	notok "a chain with msbdf refused, exit 2 (got $rc)" "$T/out"
+fi
+
+# the collision table and CSV of a chain name each collision's interface (k after i)
+if "$BIN" --batch "$T/cradle.preset" --set chain.n=4 --collisions "$T/c.csv" >"$T/out" 2>&1 &&
+    grep -q '^i  k  t_e ' "$T/out" && grep -q '^0  3 ' "$T/out" && grep -q '^2  1 ' "$T/out" &&
+    noprov "$T/c.csv" | head -1 | grep -q '^i,k,t_e,t_s,' &&
+    noprov "$T/c.csv" | cut -d, -f1,2 | tr '\n' ' ' | grep -q '^i,k 0,3 1,2 2,1 $'; then
+	ok "a chain's collision table and CSV have the interface k after i"
+else
+	notok "a chain's collision table and CSV have the interface k after i" "$T/out" "$T/c.csv"
+fi
+
+# the model's limits: an indentation past run.max_indent of the smaller radius stops
+# the run naming the interface, its bodies, the time and the value, keeping what
+# was computed; run.chain_limits = warn notes it and goes on
+"$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 --set run.max_indent=0.001 >"$T/out" 2>&1
+rc=$?
+if [ $rc -eq 1 ] &&
+    grep -q 'the run failed: interface 2 (bodies 2 and 3) is indented by 1.0[0-9]*e-05 m at t = 1.0[0-9]*e-05 s, 0.00[0-9]* of the smaller radius 0.01 m, past run.max_indent = 0.001' "$T/out" &&
+    grep -q '^  arc         [1-9][0-9]* samples' "$T/out" && grep -q '^  body 3 ' "$T/out"; then
+	ok "an indentation past run.max_indent stops the run, exit 1, naming interface, bodies, time and value"
+else
+	notok "an indentation past run.max_indent stops the run, exit 1, naming interface, bodies, time and value (got $rc)" "$T/out"
+fi
+if "$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 --set run.max_indent=0.001 \
+        --set run.chain_limits=warn >"$T/out" 2>&1 &&
+    grep -q '^  ended       horizon T = 0.01 s' "$T/out" &&
+    grep -q '^  limits      passed 2 times (run.chain_limits = warn); the first: interface 2 (bodies 2 and 3) is indented' "$T/out"; then
+	ok "run.chain_limits = warn: the run goes on and the summary counts the limits passed"
+else
+	notok "run.chain_limits = warn: the run goes on and the summary counts the limits passed" "$T/out"
+fi
+# a soft linear law: bodies 1 and 3 overlap across body 2 before any indentation passes a radius
+"$BIN" --batch "$T/cradle.preset" --set scene.law=linear --set law.k=10 --set chain.spacing=0 \
+    --set run.T=1 --set striker.v=-10 --set run.max_indent=0.99 >"$T/out" 2>&1
+rc=$?
+if [ $rc -eq 1 ] &&
+    grep -q 'the run failed: bodies 1 and 3, not neighbours, overlap by [0-9.e-]* m at t = [0-9.e-]* s: the model lets only neighbours touch' "$T/out"; then
+	ok "bodies that are not neighbours overlapping stop the run, exit 1, naming them"
+else
+	notok "bodies that are not neighbours overlapping stop the run, exit 1, naming them (got $rc)" "$T/out"
 fi
 
 [ "$fails" -eq 0 ]

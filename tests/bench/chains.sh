@@ -1,0 +1,99 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
+# chains.sh BIN OUT.md: the work of a chain's run (a benchmark, not a test),
+# in counts: instructions inside hb_sim_advance (valgrind callgrind,
+# --toggle-collect), right-hand-side evaluations, accepted steps, and the
+# run's CPU time from the batch summary (a loaded machine: compare times
+# only within a row).  Steel balls of R 10 mm, the Hertz law, rtol 1e-12,
+# atol 1e-14, no gravity:
+#  1. a touching Newton's cradle of 5 struck at 1 m/s, over 10 ms;
+#  2. a touching chain of 100 beads struck at 1 m/s over the time its
+#     solitary wave takes to cross it (100 diameters at the speed measured
+#     in tests/test_chain.c, 670 m/s: 3 ms), per bead;
+#  3. the cost of a step against N: touching chains of 10, 100 and 1,000
+#     beads struck at 1 m/s over 0.2 ms (the wave crosses about 7 beads:
+#     the same events at every N), instructions per step and per rhs;
+#     and chains 1 mm apart over 5 ms (one contact at a time, the rest in
+#     flight).
+set -u
+BIN=${1:-build/hybounce}
+OUT=${2:-build/bench/chains.md}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+cg=1
+command -v valgrind >/dev/null || cg=0
+
+cat >"$T/chain.preset" <<'P'
+[scene]
+name = bench chain
+law = hertz
+[body1]
+E = 200 GPa
+nu = 0.3
+rho = 7800 kg/m^3
+R = 10 mm
+[chain]
+n = 5
+spacing = 0 m
+[striker]
+v = -1 m/s
+[loads]
+g = 0
+[run]
+T = 10 ms
+rtol = 1e-12
+atol = 1e-14
+P
+
+# run NAME N SPACING T: one row's counts into $T/NAME.{q,ir}
+run() {
+	"$BIN" --batch "$T/chain.preset" --set chain.n="$2" --set chain.spacing="$3" \
+	    --set run.T="$4" -q >"$T/$1.q" 2>&1 || { echo "chains.sh: $1 failed" >&2; cat "$T/$1.q" >&2; exit 1; }
+	ir=-
+	if [ $cg = 1 ]; then
+		rm -f "$T/cg.out"
+		valgrind --tool=callgrind --toggle-collect=hb_sim_advance --callgrind-out-file="$T/cg.out" \
+		    "$BIN" --batch "$T/chain.preset" --set chain.n="$2" --set chain.spacing="$3" \
+		    --set run.T="$4" -q >/dev/null 2>&1
+		ir=$(awk '$1 == "summary:" || $1 == "totals:" { print $2; exit }' "$T/cg.out" 2>/dev/null)
+		[ -n "$ir" ] || ir=-
+	fi
+	echo "$ir" >"$T/$1.ir"
+}
+# field NAME: rhs steps collisions cpu_ms instructions
+field() {
+	rhs=$(awk '$1 == "evaluations" { print $2 }' "$T/$1.q")
+	steps=$(awk '$1 == "steps" && $3 == "accepted," { print $2 }' "$T/$1.q")
+	coll=$(awk '$1 == "collisions" && NF == 2 { print $2 }' "$T/$1.q")
+	cpu=$(awk '$1 == "run" && $2 == "time" { v = $3; u = $4; if (u == "us") v /= 1000; else if (u == "s") v *= 1000; printf "%.3g", v }' "$T/$1.q")
+	echo "$rhs $steps $coll $cpu $(cat "$T/$1.ir")"
+}
+
+{
+echo "hybounce chains benchmark ($(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) online processors, load average $(cut -d' ' -f1-3 /proc/loadavg))"
+echo
+echo "| run | N | T | collisions | steps | rhs | instructions (hb_sim_advance) | per bead: rhs, instructions | CPU ms (loaded) |"
+echo "|---|---|---|---|---|---|---|---|---|"
+run cradle5 5 0 10ms
+set -- $(field cradle5)
+echo "| touching cradle, struck at 1 m/s | 5 | 10 ms | $3 | $2 | $1 | $5 | - | $4 |"
+run wave100 100 0 3ms
+set -- $(field wave100)
+echo "| touching chain, the wave across it | 100 | 3 ms | $3 | $2 | $1 | $5 | $(awk -v r="$1" -v i="$5" 'BEGIN { printf "%.0f, %s", r / 100, (i == "-") ? "-" : sprintf("%.0f", i / 100) }') | $4 |"
+echo
+echo "Cost of a step against N (the same physical events at every N):"
+echo
+echo "| chain | N | T | steps | rhs | instructions | per step | per rhs |"
+echo "|---|---|---|---|---|---|---|---|"
+for n in 10 100 1000; do
+	run "t$n" "$n" 0 0.2ms
+	set -- $(field "t$n")
+	echo "| touching, struck at 1 m/s | $n | 0.2 ms | $2 | $1 | $5 | $(awk -v s="$2" -v i="$5" 'BEGIN { if (i == "-") print "-"; else printf "%.0f", i / s }') | $(awk -v r="$1" -v i="$5" 'BEGIN { if (i == "-") print "-"; else printf "%.0f", i / r }') |"
+done
+for n in 10 100 1000; do
+	run "a$n" "$n" 1mm 5ms
+	set -- $(field "a$n")
+	echo "| 1 mm apart, struck at 1 m/s | $n | 5 ms | $2 | $1 | $5 | $(awk -v s="$2" -v i="$5" 'BEGIN { if (i == "-" || s == 0) print "-"; else printf "%.0f", i / s }') | $(awk -v r="$1" -v i="$5" 'BEGIN { if (i == "-" || r == 0) print "-"; else printf "%.0f", i / r }') |"
+done
+} >"$OUT"
+cat "$OUT"
