@@ -56,6 +56,7 @@
 #include "hybounce/units.h"
 
 #include "batch.h"
+#include "batch_bodies.h"
 #include "plot_cmd.h"
 #include "plot_out.h"
 #include "report.h"
@@ -853,12 +854,20 @@ batch_run(const struct batch_options *o)
 	/* --plot: the figure's own rules, the CSVs and the preset as the others (plot_out.h) */
 	hb_outputs_init(&pol);
 	hb_outputs_input(&pol, path, "the preset being run");
+	/* --bodies: the same rules, with the CSVs and the scene saved beside them */
+	if (o->bodies != NULL) {
+		msg[0] = '\0';
+		if (batch_bodies_check(&pol, o->bodies, trace_file, coll_file, msg, sizeof msg) != 0) {
+			err(msg);
+			return 2;
+		}
+	}
 	if (o->plot != NULL) {
 		msg[0] = '\0';
-		if ((trace_file != NULL && hb_outputs_add(&pol, trace_file, "--trace", msg,
-		                                          sizeof msg) != HB_OK) ||
-		    (coll_file != NULL && hb_outputs_add(&pol, coll_file, "--collisions", msg,
-		                                         sizeof msg) != HB_OK) ||
+		if ((o->bodies == NULL && trace_file != NULL && hb_outputs_add(&pol, trace_file,
+		                                  "--trace", msg, sizeof msg) != HB_OK) ||
+		    (o->bodies == NULL && coll_file != NULL && hb_outputs_add(&pol, coll_file,
+		                                  "--collisions", msg, sizeof msg) != HB_OK) ||
 		    plot_out_parse(&po, "--plot", o->plot, msg, sizeof msg) != 0 ||
 		    plot_out_register(&po, &pol, msg, sizeof msg) != 0) {
 			err(msg);
@@ -1028,6 +1037,13 @@ batch_run(const struct batch_options *o)
 				cli_print_wrote(coll_file, &rep.target[1]);
 			if (rep.scene[0])
 				cli_print_wrote(rep.scene, &rep.target[2]);
+		}
+	}
+	if (o->bodies != NULL) {
+		msg[0] = '\0';
+		if (batch_bodies_write(&pol, o->bodies, s, msg, sizeof msg) != 0) {
+			fprintf(stderr, PROG ": --bodies: %s\n", msg);
+			status = 2;
 		}
 	}
 	if (o->plot != NULL) {
