@@ -206,6 +206,38 @@ print_body(FILE *out, int k, const struct hb_scene_body *bd)
 	        isinf(bd->mass) ? " (fixed obstacle)" : bd->mass_given ? " (given)" : "");
 }
 
+/* A chain's overrides (scene.h: body.I.*, interface.K.*, initial.body.I.*), wrapped at 79 columns. */
+static void
+print_overrides(FILE *out, const struct hb_scene *sc)
+{
+	int col = 0;
+
+	for (int i = 0; i < sc->over.n && i < HB_SCENE_MAX_OVERRIDES; i++) {
+		const struct hb_scene_override *o = &sc->over.o[i];
+		struct hb_scene_keyinfo ki;
+		char key[64], b[128];
+		int len;
+
+		snprintf(key, sizeof key, "%s%d.%s", o->kind == HB_OVERRIDE_BODY ? "body." :
+		         o->kind == HB_OVERRIDE_IFACE ? "interface." : "initial.body.", o->index, o->name);
+		if (hb_scene_get(sc, key, &ki, NULL) != HB_OK)
+			continue;
+		len = snprintf(b, sizeof b, "%s = %s", key, ki.value);
+		if (col == 0) {
+			fprintf(out, "overrides   %s", b);
+			col = 12 + len;
+		} else if (col + 2 + len > 79) {
+			fprintf(out, ",\n            %s", b);
+			col = 12 + len;
+		} else {
+			fprintf(out, ", %s", b);
+			col += 2 + len;
+		}
+	}
+	if (col > 0)
+		fprintf(out, "\n");
+}
+
 static void
 print_header(FILE *out, const char *preset, const char *path,
              const struct hb_scene *sc, const struct hb_sim_stats *st)
@@ -221,8 +253,9 @@ print_header(FILE *out, const char *preset, const char *path,
 		print_wrapped(out, "            ", sc->description);
 	print_law(out, sc);
 	if (sc->chain.n > 0)
-		fprintf(out, "system      chain of %d bodies (each body 1, the law between neighbours)%s, "
+		fprintf(out, "system      chain of %d bodies (each body 1, the law between neighbours%s)%s, "
 		        "%s apart, striker (body %d) at %s\n", sc->chain.n,
+		        sc->over.n > 0 ? ", but for the overrides" : "",
 		        sc->chain.floor ? " on a floor" : "",
 		        fmt(sc->chain.spacing, hb_unit_length, a, sizeof a), sc->chain.n,
 		        fmt(sc->chain.v, hb_unit_velocity, b, sizeof b));
@@ -232,6 +265,7 @@ print_header(FILE *out, const char *preset, const char *path,
 		fprintf(out, "system      full H_f: two finite masses on a common axis\n");
 	for (k = 0; k < (sc->chain.n > 0 ? 1 : 2); k++)
 		print_body(out, k, &sc->body[k]);
+	print_overrides(out, sc);
 	fprintf(out, "loads       g = %s, F1 = %s, F2 = %s",
 	        fmt(sc->loads.g, hb_unit_accel, a, sizeof a),
 	        fmt(sc->loads.F1, hb_unit_force, b, sizeof b),

@@ -52,6 +52,14 @@ else
 	notok "the scene written beside --collisions has [body.3] and body.5.v and gives the same run" "$T/exp/c.preset"
 fi
 
+if "$BIN" --batch "$T/c.preset" >"$T/out" 2>&1 &&
+    grep -q '^system      chain of 5 bodies (each body 1, the law between neighbours, but for the overrides), 1 mm apart' "$T/out" &&
+    grep -q '^overrides   body.3.R = 12 mm, initial.body.5.v = -2 m/s$' "$T/out"; then
+	ok "the report's header names the overrides"
+else
+	notok "the report's header names the overrides" "$T/out"
+fi
+
 # the same through --set: body 3 back to the others' radius, the striker at 1 m/s
 if "$BIN" --batch "$T/c.preset" --set body.3.R=10mm --set initial.body.5.v=-1 --quiet >"$T/out" 2>&1 &&
     grep -q '^  body 1      u = -1 m/s' "$T/out" &&
