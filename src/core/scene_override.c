@@ -26,18 +26,9 @@
 
 #define INF HUGE_VAL
 
-/* The highest index a key may name (chain.n is at most 1000). */
-#define MAX_INDEX 1000
+#define MAX_INDEX SCENE_OVERRIDE_MAX_INDEX
 
-/* A number an override of a body may hold. */
-struct field {
-	const char *name;
-	const struct hb_unit_dim *dim;
-	struct hb_unit_range range;
-	const char *help;
-};
-
-static const struct field body_fields[] = {
+static const struct scene_override_field body_fields[] = {
 	{ "E", &hb_unit_pressure, { 0, INF, 1, 1, 0 }, "Young's modulus of this body" },
 	{ "nu", &hb_unit_none, { -1, 0.5, 1, 1, 0 }, "Poisson's ratio of this body" },
 	{ "rho", &hb_unit_density, { 0, INF, 1, 1, 0 }, "density of this body; m = 4/3 pi R^3 rho" },
@@ -46,7 +37,7 @@ static const struct field body_fields[] = {
 	{ "F", &hb_unit_force, { -INF, INF, 1, 1, 0 },
 	  "constant force on this body along n1, besides gravity" },
 };
-static const struct field initial_fields[] = {
+static const struct scene_override_field initial_fields[] = {
 	{ "v", &hb_unit_velocity, { -1e5, 1e5, 0, 0, 0 }, "initial velocity of this body" },
 	{ "gap", &hb_unit_length, { 0, 1e6, 0, 0, 0 },
 	  "initial gap below this body (to the body below, or the floor); 0: touching" },
@@ -54,7 +45,14 @@ static const struct field initial_fields[] = {
 #define NBODY (int)(sizeof body_fields / sizeof body_fields[0])
 #define NINIT (int)(sizeof initial_fields / sizeof initial_fields[0])
 
-static const char *const ext_words[] = { "none", "adhesive" };
+const struct scene_override_field *
+scene_override_fields(int kind, int *n)
+{
+	*n = kind == HB_OVERRIDE_BODY ? NBODY : NINIT;
+	return kind == HB_OVERRIDE_BODY ? body_fields : initial_fields;
+}
+
+const char *const scene_override_ext_words[2] = { "none", "adhesive" };
 
 /* Parses KEY into kind, index and name; 0, or -1 if it is no override key. */
 static int
@@ -107,10 +105,10 @@ scene_override_is_section(const char *section)
 	return strncmp(section, "initial", 7) != 0 && scene_override_is_key(key);
 }
 
-static const struct field *
-field_find(int kind, const char *name)
+const struct scene_override_field *
+scene_override_field(int kind, const char *name)
 {
-	const struct field *f = kind == HB_OVERRIDE_BODY ? body_fields : initial_fields;
+	const struct scene_override_field *f = kind == HB_OVERRIDE_BODY ? body_fields : initial_fields;
 	int nf = kind == HB_OVERRIDE_BODY ? NBODY : NINIT;
 
 	for (int i = 0; i < nf; i++)
@@ -119,8 +117,8 @@ field_find(int kind, const char *name)
 	return NULL;
 }
 
-static int
-ovr_find(const struct hb_scene *sc, int kind, int index, const char *name)
+int
+scene_override_find(const struct hb_scene *sc, int kind, int index, const char *name)
 {
 	for (int i = 0; i < sc->over.n; i++)
 		if (sc->over.o[i].kind == kind && sc->over.o[i].index == index &&
@@ -138,11 +136,11 @@ ovr_remove(struct hb_scene *sc, int i)
 }
 
 /* Interface k's law and parameters before any derivation (no chain needed). */
-static const struct hb_law_type *
-iface_law(const struct hb_scene *sc, int k, double *par)
+const struct hb_law_type *
+scene_override_iface_law(const struct hb_scene *sc, int k, double *par)
 {
 	const struct hb_law_type *law = sc->law;
-	int li = ovr_find(sc, HB_OVERRIDE_IFACE, k, "law");
+	int li = scene_override_find(sc, HB_OVERRIDE_IFACE, k, "law");
 
 	if (par != NULL)
 		memcpy(par, sc->par, sizeof sc->par);
@@ -170,8 +168,8 @@ iface_law(const struct hb_scene *sc, int k, double *par)
 }
 
 /* The law parameter index of name in law (exact name), or -1. */
-static int
-param_of(const struct hb_law_type *law, const char *name)
+int
+scene_override_param(const struct hb_law_type *law, const char *name)
 {
 	int i = law != NULL ? hb_law_param_index(law, name) : -1;
 
@@ -179,8 +177,8 @@ param_of(const struct hb_law_type *law, const char *name)
 }
 
 /* "k, c, p" of a law, or the names an interface accepts. */
-static void
-iface_accepted(const struct hb_law_type *law, char *buf, size_t n)
+void
+scene_override_iface_accepted(const struct hb_law_type *law, char *buf, size_t n)
 {
 	size_t l;
 
@@ -194,7 +192,7 @@ iface_accepted(const struct hb_law_type *law, char *buf, size_t n)
 static void
 fields_accepted(int kind, char *buf, size_t n)
 {
-	const struct field *f = kind == HB_OVERRIDE_BODY ? body_fields : initial_fields;
+	const struct scene_override_field *f = kind == HB_OVERRIDE_BODY ? body_fields : initial_fields;
 	int nf = kind == HB_OVERRIDE_BODY ? NBODY : NINIT;
 	size_t l;
 
@@ -211,7 +209,7 @@ static int
 store(struct hb_scene *sc, const char *key, int kind, int index, const char *name, double value,
       struct hb_scene_error *err)
 {
-	int i = ovr_find(sc, kind, index, name);
+	int i = scene_override_find(sc, kind, index, name);
 
 	if (i < 0) {
 		char acc[160];
@@ -282,8 +280,8 @@ word_of(const char *text, char *w, size_t n)
 }
 
 /* Interface k's stiffness is derived: typing it is refused. */
-static int
-derived_error(struct hb_scene_error *err, const char *key, int k)
+int
+scene_override_derived_error(struct hb_scene_error *err, const char *key, int k)
 {
 	char pair[48];
 
@@ -294,9 +292,6 @@ derived_error(struct hb_scene_error *err, const char *key, int k)
 	return scene_error_set(err, key, "no value (give masses instead of materials to type it)",
 	    "derived from the materials of %s by Hertz contact theory", pair);
 }
-
-static int index_check(const struct hb_scene *sc, const char *key, int kind, int index,
-                       struct hb_scene_error *err);
 
 int
 scene_override_set(struct hb_scene *sc, const char *key, const char *text, const double *num,
@@ -309,10 +304,10 @@ scene_override_set(struct hb_scene *sc, const char *key, const char *text, const
 
 	if (parse(key, &kind, &index, name, sizeof name) != 0)
 		return scene_error_set(err, key, NULL, "unknown key");
-	if (sc->chain.n > 0 && (st = index_check(sc, key, kind, index, err)) != HB_OK)
+	if (sc->chain.n > 0 && (st = scene_override_index_check(sc, key, kind, index, err)) != HB_OK)
 		return st; /* (a preset's chain.n comes after its [body.I]: checked as a whole then) */
 	if (kind != HB_OVERRIDE_IFACE) {
-		const struct field *f = field_find(kind, name);
+		const struct scene_override_field *f = scene_override_field(kind, name);
 		if (f == NULL) {
 			fields_accepted(kind, acc, sizeof acc);
 			return scene_error_set(err, key, acc, "unknown key");
@@ -326,11 +321,11 @@ scene_override_set(struct hb_scene *sc, const char *key, const char *text, const
 			return st;
 		tmp = *sc;
 		if (kind == HB_OVERRIDE_BODY && strcmp(name, "mass") == 0) {
-			int r = ovr_find(&tmp, kind, index, "rho");
+			int r = scene_override_find(&tmp, kind, index, "rho");
 			if (r >= 0)
 				ovr_remove(&tmp, r);
 		} else if (kind == HB_OVERRIDE_BODY && strcmp(name, "rho") == 0) {
-			int r = ovr_find(&tmp, kind, index, "mass");
+			int r = scene_override_find(&tmp, kind, index, "mass");
 			if (r >= 0)
 				ovr_remove(&tmp, r);
 		}
@@ -369,7 +364,7 @@ scene_override_set(struct hb_scene *sc, const char *key, const char *text, const
 		if (c < 0)
 			return scene_error_set(err, key, acc, "'%s' is not accepted", w);
 		tmp = *sc;
-		if (name[0] == 'l' && iface_law(&tmp, index, NULL) != hb_law_list()[c]) {
+		if (name[0] == 'l' && scene_override_iface_law(&tmp, index, NULL) != hb_law_list()[c]) {
 			/* a new law starts from its defaults (or the scene's values of it) */
 			for (int i = tmp.over.n - 1; i >= 0; i--) {
 				const struct hb_scene_override *o = &tmp.over.o[i];
@@ -385,13 +380,13 @@ scene_override_set(struct hb_scene *sc, const char *key, const char *text, const
 	}
 	{
 		double par[HB_LAW_MAX_PARAMS];
-		const struct hb_law_type *law = iface_law(sc, index, par);
-		int pi = param_of(law, name);
+		const struct hb_law_type *law = scene_override_iface_law(sc, index, par);
+		int pi = scene_override_param(law, name);
 		struct hb_unit_range r;
 		struct hb_unit_dim dim;
 
 		if (pi < 0) {
-			iface_accepted(law, acc, sizeof acc);
+			scene_override_iface_accepted(law, acc, sizeof acc);
 			return scene_error_set(err, key, acc, "unknown key for interface %d (law %s)",
 			    index, law != NULL ? law->name : "(none)");
 		}
@@ -399,7 +394,7 @@ scene_override_set(struct hb_scene *sc, const char *key, const char *text, const
 			struct scene_chain_iface ci;
 			int dv = 0, fl;
 			if (scene_chain_iface_full(sc, index, &ci, &dv, &fl) == HB_OK && dv)
-				return derived_error(err, key, index);
+				return scene_override_derived_error(err, key, index);
 		}
 		r = hb_law_param_range(&law->params[pi]);
 		dim = hb_units_resolve(law->params[pi].dim, hb_law_exponent_p(law, par),
@@ -415,8 +410,8 @@ scene_override_set(struct hb_scene *sc, const char *key, const char *text, const
 }
 
 /* The index range of the chain's bodies or interfaces, for messages; 0 if index is in it. */
-static int
-index_check(const struct hb_scene *sc, const char *key, int kind, int index,
+int
+scene_override_index_check(const struct hb_scene *sc, const char *key, int kind, int index,
             struct hb_scene_error *err)
 {
 	char acc[96];
@@ -449,12 +444,12 @@ scene_override_get(const struct hb_scene *sc, const char *key, struct hb_scene_k
 	memset(o, 0, sizeof *o);
 	if (parse(key, &kind, &index, name, sizeof name) != 0)
 		return scene_error_set(err, key, NULL, "unknown key");
-	if ((st = index_check(sc, key, kind, index, err)) != HB_OK)
+	if ((st = scene_override_index_check(sc, key, kind, index, err)) != HB_OK)
 		return st;
 	snprintf(o->key, sizeof o->key, "%s", key);
 	snprintf(o->section, sizeof o->section, "chain");
 	if (kind != HB_OVERRIDE_IFACE) {
-		const struct field *f = field_find(kind, name);
+		const struct scene_override_field *f = scene_override_field(kind, name);
 		struct scene_chain_bodyx b;
 		if (f == NULL) {
 			fields_accepted(kind, acc, sizeof acc);
@@ -468,7 +463,7 @@ scene_override_get(const struct hb_scene *sc, const char *key, struct hb_scene_k
 		hb_units_range_str(&f->range, f->dim, o->range, sizeof o->range);
 		snprintf(o->label, sizeof o->label, "%s (body %d)", name, index);
 		snprintf(o->help, sizeof o->help, "%s%s", f->help,
-		    ovr_find(sc, kind, index, name) < 0 ? " (the chain's: type one to override)" : "");
+		    scene_override_find(sc, kind, index, name) < 0 ? " (the chain's: type one to override)" : "");
 		switch (name[0]) { /* E, nu, rho, R, mass, F; v, gap */
 		case 'E': o->number = b.has_material ? b.E : NAN; break;
 		case 'n': o->number = b.has_material ? b.nu : NAN; break;
@@ -495,9 +490,9 @@ scene_override_get(const struct hb_scene *sc, const char *key, struct hb_scene_k
 			snprintf(o->help, sizeof o->help, "contact law of interface %d; changing it "
 			    "starts from that law's values", index);
 		} else {
-			cur = ext_words[ci.ext != 0];
-			o->choices[o->nchoices++] = ext_words[1];
-			o->choices[o->nchoices++] = ext_words[0];
+			cur = scene_override_ext_words[ci.ext != 0];
+			o->choices[o->nchoices++] = scene_override_ext_words[1];
+			o->choices[o->nchoices++] = scene_override_ext_words[0];
 			snprintf(o->help, sizeof o->help, "rule R1 of interface %d: adhesive or none", index);
 		}
 		o->choice = -1;
@@ -514,9 +509,9 @@ scene_override_get(const struct hb_scene *sc, const char *key, struct hb_scene_k
 		struct scene_chain_iface ci;
 		int dv, fl, pi;
 		scene_chain_iface_full(sc, index, &ci, &dv, &fl);
-		pi = param_of(ci.law, name);
+		pi = scene_override_param(ci.law, name);
 		if (pi < 0) {
-			iface_accepted(ci.law, acc, sizeof acc);
+			scene_override_iface_accepted(ci.law, acc, sizeof acc);
 			return scene_error_set(err, key, acc, "unknown key for interface %d (law %s)",
 			    index, ci.law->name);
 		}
@@ -578,243 +573,9 @@ scene_override_pass(const struct hb_scene *sc, const char *section, const char *
 		return 2;
 	if (strcmp(name, "law") == 0 || strcmp(name, "extension") == 0)
 		return 0;
-	law = iface_law(sc, atoi(section + 10), NULL);
-	pi = param_of(law, name);
+	law = scene_override_iface_law(sc, atoi(section + 10), NULL);
+	pi = scene_override_param(law, name);
 	return pi >= 0 && (law->params[pi].flags & (HB_LAW_PARAM_EXPONENT_P | HB_LAW_PARAM_EXPONENT_N))
 	    ? 1 : 2;
 }
 
-/* ---------------------------------------------------------------- */
-/* Checks */
-
-int
-scene_override_check(const struct hb_scene *sc, struct hb_scene_error *err)
-{
-	char key[64], acc[192];
-	int st;
-
-	if (sc->over.n == 0 && !(sc->chain.n > 0 && sc->chain.floor))
-		return HB_OK;
-	for (int i = 0; i < sc->over.n; i++) {
-		const struct hb_scene_override *o = &sc->over.o[i];
-		scene_override_key(sc, i, key, sizeof key);
-		if ((st = index_check(sc, key, o->kind, o->index, err)) != HB_OK)
-			return st;
-		if (o->kind == HB_OVERRIDE_IFACE && strcmp(o->name, "law") == 0 &&
-		    iface_law(sc, o->index, NULL)->n_z != sc->law->n_z) {
-			/* the engine sizes a contact's state by the scene's law (sim.c) */
-			const struct hb_law_type *law = iface_law(sc, o->index, NULL);
-			size_t l;
-			snprintf(acc, sizeof acc, "a law with %d internal state%s, as the scene's %s:",
-			    sc->law->n_z, sc->law->n_z == 1 ? "" : "s", sc->law->name);
-			for (const struct hb_law_type *const *L = hb_law_list(); *L != NULL; L++)
-				if ((*L)->n_z == sc->law->n_z) {
-					l = strlen(acc);
-					snprintf(acc + l, sizeof acc - l, " %s", (*L)->name);
-				}
-			return scene_error_set(err, key, acc, "law %s has %d internal state%s and the "
-			    "scene's law %s %d: a chain's interfaces carry as many as the scene's law "
-			    "in this version", law->name, law->n_z, law->n_z == 1 ? "" : "s",
-			    sc->law->name, sc->law->n_z);
-		}
-		if (o->kind == HB_OVERRIDE_IFACE && strcmp(o->name, "law") != 0 &&
-		    strcmp(o->name, "extension") != 0) {
-			const struct hb_law_type *law = iface_law(sc, o->index, NULL);
-			int pi = param_of(law, o->name);
-			struct hb_unit_range r;
-			if (pi < 0) {
-				iface_accepted(law, acc, sizeof acc);
-				return scene_error_set(err, key, acc, "interface %d's law %s has no "
-				    "parameter %s", o->index, law->name, o->name);
-			}
-			r = hb_law_param_range(&law->params[pi]);
-			if (!hb_units_in_range(o->value, &r))
-				return scene_error_range(err, key, &r, NULL, "value %.6g is out of range",
-				    o->value);
-		}
-	}
-	if (sc->chain.n <= 0)
-		return HB_OK;
-	/* the bodies that have overrides */
-	for (int i = 0; i < sc->over.n; i++) {
-		const struct hb_scene_override *o = &sc->over.o[i];
-		struct scene_chain_bodyx b;
-		if (o->kind == HB_OVERRIDE_IFACE)
-			continue;
-		scene_chain_body_full(sc, o->index - 1, &b);
-		if (b.half) {
-			snprintf(key, sizeof key, "body.%d.%s", o->index,
-			    ovr_find(sc, HB_OVERRIDE_BODY, o->index, "E") >= 0 ? "E" : "nu");
-			return scene_error_set(err, key, "both E and nu, or neither",
-			    "a material needs both E and nu (body1 has no material to complete it)");
-		}
-		if (b.both) {
-			snprintf(key, sizeof key, "body.%d.mass", o->index);
-			return scene_error_set(err, key, "one of them", "give rho (with R) or mass, not both");
-		}
-		if (!(b.mass > 0) || !isfinite(b.mass)) {
-			snprintf(key, sizeof key, "body.%d.mass", o->index);
-			return scene_error_set(err, key, "a mass, or rho with a finite R",
-			    "body %d has no mass", o->index);
-		}
-		if (!isfinite(b.mass * sc->loads.g) || fabs(b.F) > SCENE_ACCEL_MAX * b.mass) {
-			struct hb_unit_range r = { -SCENE_ACCEL_MAX * b.mass, SCENE_ACCEL_MAX * b.mass, 0, 0, 0 };
-			snprintf(key, sizeof key, "body.%d.F", o->index);
-			return scene_error_range(err, key, &r, &hb_unit_force,
-			    "it would accelerate body %d beyond %g m/s^2", o->index, SCENE_ACCEL_MAX);
-		}
-	}
-	/* the interfaces that have overrides or a neighbour with one, and the floor's */
-	for (int k = !sc->chain.floor; k < sc->chain.n; k++) {
-		struct scene_chain_iface ci;
-		int dv, fl, touched = k == 0;
-		char lm[256];
-		for (int i = 0; i < sc->over.n && !touched; i++) {
-			const struct hb_scene_override *o = &sc->over.o[i];
-			touched = o->kind == HB_OVERRIDE_IFACE ? o->index == k
-			                                       : o->index == k || o->index == k + 1;
-		}
-		if (!touched)
-			continue;
-		scene_chain_iface_full(sc, k, &ci, &dv, &fl);
-		if (fl) {
-			snprintf(key, sizeof key, "interface.0.%s", ci.law->params[scene_stiffness_index(ci.law)].name);
-			return scene_error_set(err, key, "body2.E and body2.nu (the floor's material), or "
-			    "this key", "the floor (body2) has no material to derive interface 0's "
-			    "stiffness from");
-		}
-		for (int pi = 0; pi < ci.law->n_params; pi++) {
-			struct hb_unit_range r = hb_law_param_range(&ci.law->params[pi]);
-			int typed = ovr_find(sc, HB_OVERRIDE_IFACE, k, ci.law->params[pi].name) >= 0;
-			snprintf(key, sizeof key, "interface.%d.%s", k, ci.law->params[pi].name);
-			if (typed && dv && (ci.law->params[pi].flags & HB_LAW_PARAM_STIFFNESS))
-				return derived_error(err, key, k);
-			if (!hb_units_in_range(ci.par[pi], &r))
-				return scene_error_range(err, key, &r, NULL, "%s %.6g is out of range",
-				    dv && (ci.law->params[pi].flags & HB_LAW_PARAM_STIFFNESS)
-				    ? "derived value" : "value", ci.par[pi]);
-		}
-		if (ci.law->check != NULL && ci.law->check(ci.par, lm, sizeof lm) != HB_OK) {
-			int pi = 0;
-			for (int i = 0; i < ci.law->n_params; i++)
-				if (ci.law->params[i].flags & HB_LAW_PARAM_CHECKED) {
-					pi = i;
-					break;
-				}
-			snprintf(key, sizeof key, "interface.%d.%s", k, ci.law->params[pi].name);
-			return scene_error_set(err, key, lm, "value %.6g is out of range", ci.par[pi]);
-		}
-	}
-	return HB_OK;
-}
-
-/* ---------------------------------------------------------------- */
-/* Preset text */
-
-static void
-write_value(const struct hb_scene *sc, const struct hb_scene_override *o, const char *prefix,
-            struct textbuf *t)
-{
-	char v[96], u[48];
-	struct hb_unit_dim dim = hb_unit_none;
-
-	if (o->kind == HB_OVERRIDE_IFACE && strcmp(o->name, "law") == 0) {
-		textbuf_printf(t, "%slaw = %s\n", prefix, iface_law(sc, o->index, NULL)->name);
-		return;
-	}
-	if (o->kind == HB_OVERRIDE_IFACE && strcmp(o->name, "extension") == 0) {
-		textbuf_printf(t, "%sextension = %s\n", prefix, ext_words[o->value != 0]);
-		return;
-	}
-	if (o->kind == HB_OVERRIDE_IFACE) {
-		double par[HB_LAW_MAX_PARAMS];
-		const struct hb_law_type *law = iface_law(sc, o->index, par);
-		int pi = param_of(law, o->name);
-		if (pi >= 0)
-			dim = hb_units_resolve(law->params[pi].dim, hb_law_exponent_p(law, par),
-			    hb_law_exponent_n(law, par));
-	} else {
-		const struct field *f = field_find(o->kind, o->name);
-		if (f != NULL)
-			dim = *f->dim;
-	}
-	hb_units_dim_str(dim, u, sizeof u);
-	cnum_snprintf(v, sizeof v, "%.17g%s%s", o->value, u[0] ? " " : "", u);
-	textbuf_printf(t, "%s%s = %s\n", prefix, o->name, v);
-}
-
-void
-scene_override_write(const struct hb_scene *sc, const char *section, struct textbuf *t)
-{
-	char prefix[32];
-
-	if (section != NULL) {
-		if (strcmp(section, "initial") != 0)
-			return;
-		for (int idx = 1; idx <= MAX_INDEX; idx++) /* ascending bodies, each in typed order */
-			for (int i = 0; i < sc->over.n; i++)
-				if (sc->over.o[i].kind == HB_OVERRIDE_INITIAL && sc->over.o[i].index == idx) {
-					snprintf(prefix, sizeof prefix, "body.%d.", idx);
-					write_value(sc, &sc->over.o[i], prefix, t);
-				}
-		return;
-	}
-	for (int kind = HB_OVERRIDE_BODY; kind <= HB_OVERRIDE_IFACE; kind++) {
-		int last = -1;
-		for (;;) { /* the next index above last that has an override of this kind */
-			int idx = -1;
-			for (int i = 0; i < sc->over.n; i++)
-				if (sc->over.o[i].kind == kind && sc->over.o[i].index > last &&
-				    (idx < 0 || sc->over.o[i].index < idx))
-					idx = sc->over.o[i].index;
-			if (idx < 0)
-				break;
-			textbuf_printf(t, "\n[%s.%d]\n", kind == HB_OVERRIDE_BODY ? "body" : "interface", idx);
-			for (int pass = 0; pass < 2; pass++) /* an interface's law first */
-				for (int i = 0; i < sc->over.n; i++) {
-					const struct hb_scene_override *o = &sc->over.o[i];
-					int first = o->kind == HB_OVERRIDE_IFACE && (strcmp(o->name, "law") == 0 ||
-					    strcmp(o->name, "extension") == 0);
-					if (o->kind == kind && o->index == idx && first == (pass == 0))
-						write_value(sc, o, "", t);
-				}
-			last = idx;
-		}
-	}
-}
-
-/* ---------------------------------------------------------------- */
-/* The man page's PRESETS reference */
-
-static void
-mdoc_field(struct textbuf *t, const char *prefix, const struct field *f)
-{
-	char r[64];
-
-	hb_units_range_str(&f->range, f->dim, r, sizeof r);
-	textbuf_printf(t, ".It Cm %s%s\n%s.\nAccepted: %s.\n", prefix, f->name, f->help, r);
-}
-
-void
-scene_override_mdoc(struct textbuf *t, const char *section)
-{
-	if (section != NULL) { /* [initial] */
-		for (int i = 0; i < NINIT; i++)
-			mdoc_field(t, "body.I.", &initial_fields[i]);
-		textbuf_printf(t, "Default: the chain's (the striker's velocity for body n, rest "
-		    "for the others; chain.spacing).\n");
-		return;
-	}
-	textbuf_printf(t, ".It Li [body.I]\nBody I of a chain (1 the lowest, n the striker), where it "
-	    "differs from [body1]: its material, its radius, its mass (given, or 4/3 pi R^3 rho "
-	    "from its density and radius), a constant force besides gravity.\nAt most %d keys of "
-	    "[body.I], [interface.K] and [initial] body.I.* in a scene.\n"
-	    ".Bl -tag -width \"description\" -compact\n", HB_SCENE_MAX_OVERRIDES);
-	for (int i = 0; i < NBODY; i++)
-		mdoc_field(t, "", &body_fields[i]);
-	textbuf_printf(t, ".El\n.It Li [interface.K]\nInterface K of a chain (between bodies K and "
-	    "K + 1; 0 the floor's), where it differs from the scene's law:\n"
-	    ".Cm law ,\n.Cm extension\nand any parameter of its law (the law's defaults when it "
-	    "differs from the scene's).\nIts stiffness is derived from ITS two bodies' materials "
-	    "(the floor's is body2) when they have them.\n");
-}

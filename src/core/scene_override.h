@@ -18,6 +18,7 @@
 #include <stddef.h>
 
 #include "hybounce/scene.h"
+#include "hybounce/units.h"
 
 struct textbuf;
 
@@ -64,6 +65,54 @@ scene_override_key(const struct hb_scene *sc, int i, char *buf, size_t n);
 /* Preset order of an entry of an override section: law/extension 0, exponents 1, the rest 2. */
 int
 scene_override_pass(const struct hb_scene *sc, const char *section, const char *name);
+
+/* ---------------------------------------------------------------- */
+/* Shared by scene_override.c, scene_override_check.c, scene_override_text.c */
+
+/* The highest index a key may name (chain.n is at most 1000). */
+#define SCENE_OVERRIDE_MAX_INDEX 1000
+
+/* A number an override of a body (body.I.*) or of its initial state (initial.body.I.*) holds. */
+struct scene_override_field {
+	const char *name;
+	const struct hb_unit_dim *dim;
+	struct hb_unit_range range;
+	const char *help;
+};
+
+/* The fields of HB_OVERRIDE_BODY or HB_OVERRIDE_INITIAL (*n of them), and one by name (or NULL). */
+const struct scene_override_field *
+scene_override_fields(int kind, int *n);
+const struct scene_override_field *
+scene_override_field(int kind, const char *name);
+
+/* "none", "adhesive": an extension by its value. */
+extern const char *const scene_override_ext_words[2];
+
+/* The index in sc->over.o of (kind, index, name), or -1. */
+int
+scene_override_find(const struct hb_scene *sc, int kind, int index, const char *name);
+
+/* Interface k's law, and its parameters before any derivation into par (may be NULL). */
+const struct hb_law_type *
+scene_override_iface_law(const struct hb_scene *sc, int k, double *par);
+
+/* The index of law parameter name (exact), or -1. */
+int
+scene_override_param(const struct hb_law_type *law, const char *name);
+
+/* "law, extension, k, p ...": the names interface keys of law accept. */
+void
+scene_override_iface_accepted(const struct hb_law_type *law, char *buf, size_t n);
+
+/* HB_OK when (kind, index) is in the chain, else HB_EINVAL with err naming the range. */
+int
+scene_override_index_check(const struct hb_scene *sc, const char *key, int kind, int index,
+                           struct hb_scene_error *err);
+
+/* The refusal of a typed stiffness that interface k derives. */
+int
+scene_override_derived_error(struct hb_scene_error *err, const char *key, int k);
 
 /* The man page's items of [body.I] and [interface.K] (section NULL) or of [initial]'s body.I.*. */
 void
