@@ -5,7 +5,8 @@
 # same keys in --set and sweep --vary; the elastic chain with a heavier
 # ball and another striker keeps its kinetic energy 2 m (striker at 2 m/s)
 # and momentum; the scene written beside --collisions reads back to the
-# same run; keys outside the chain, unknown or derived are refused, exit 2.
+# same run; sweep --vary and fit --free reach a body's key; keys outside
+# the chain, unknown or derived are refused, exit 2.
 . "$(dirname "$0")/common.inc"
 
 cat >"$T/c.preset" <<'P'
@@ -75,6 +76,16 @@ if "$BIN" sweep "$T/c.preset" --vary body.3.R=10mm:12mm:2 --out "$T/sw" >"$T/out
 	ok "sweep --vary body.3.R: two runs, the key a column"
 else
 	notok "sweep --vary body.3.R: two runs, the key a column" "$T/out"
+fi
+
+# fit: body 3's radius from the first four impact times of the run above
+{ echo t_e; cut -d, -f2 "$T/exp/c.csv" | sed -n 2,5p; } >"$T/te.csv"
+if "$BIN" fit "$T/c.preset" --data "$T/te.csv" --free body.3.R --set body.3.R=11.5mm --quiet \
+    --out "$T/fit.preset" >"$T/out" 2>&1 &&
+    grep -Eq '^  body.3.R +0.0115 +0.012 ' "$T/out" && grep -q '^R = 0.0120000000000' "$T/fit.preset"; then
+	ok "fit --free body.3.R from 11.5 mm finds the 12 mm of the impact times"
+else
+	notok "fit --free body.3.R from 11.5 mm finds the 12 mm of the impact times" "$T/out"
 fi
 
 refused() { # NAME PATTERN ARGS...
