@@ -33,7 +33,7 @@ LIBDIR    ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
 PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
 # libhybounce.so.SOVERSION: raise it when the ABI changes incompatibly.
-SOVERSION := 2
+SOVERSION := 3
 CC        ?= gcc
 PKG_CONFIG ?= pkg-config
 

@@ -38,6 +38,11 @@ Test(paper, every_preset_is_a_solution_pair_and_keeps_energy, .timeout = 300)
 		s = run_scene(&sc);
 		arc = hb_sim_arc(s);
 		cr_assert_eq(hb_check_solution_pair(&sc, arc, msg, sizeof msg), 0, "%s: %s", name, msg);
+		if (sc.chain.n > 0) { /* a chain's work-energy identity is its bodies', not the arc's v */
+			hb_sim_free(s);
+			count++;
+			continue;
+		}
 		for (i = 0; i < hb_arc_len(arc); i++)
 			kemax = fmax(kemax, 0.5 * sc.d.m * hb_arc_at(arc, i)->v * hb_arc_at(arc, i)->v);
 		l = hb_arc_last(arc);

@@ -103,15 +103,46 @@ struct hb_scene_run {
 enum { HB_CHAIN_LIMITS_STOP = 0, HB_CHAIN_LIMITS_WARN = 1 };
 
 /*
- * A chain of n equal bodies on the axis (docs/chains.md): n = 0 for the
- * two-body scene.  Every body is body 1 of the scene, every interface has
- * the scene's law; body 1 is the lowest, body n (the striker) the highest.
+ * A chain of n bodies on the axis (docs/chains.md): n = 0 for the
+ * two-body scene.  Every body is body 1 of the scene and every interface
+ * has the scene's law, but where the overrides (struct hb_scene_overrides)
+ * say otherwise; body 1 is the lowest, body n (the striker) the highest.
  */
 struct hb_scene_chain {
 	int n;            /* bodies; 0: not a chain */
 	int floor;        /* 1: a fixed obstacle below body 1 (interface 0) */
 	double spacing;   /* gap between neighbours (and body 1 and the floor), m */
 	double v;         /* the striker's (body n's) initial velocity, m/s */
+};
+
+/*
+ * What differs from the uniform chain for one body or one interface
+ * (docs/chains.md section 7): the keys "body.I.NAME" (I = 1..n: E, nu, rho,
+ * R, mass, F), "interface.K.NAME" (law, extension, or a parameter of that
+ * interface's law) and "initial.body.I.NAME" (v, gap), read and written by
+ * hb_scene_set()/hb_scene_get() like every key.  They are kept in a table of
+ * fixed size inside the scene, so that a scene stays a plain value copied
+ * by assignment; a scene holds at most HB_SCENE_MAX_OVERRIDES of them.
+ */
+enum { HB_SCENE_MAX_OVERRIDES = 64 };
+
+enum hb_scene_override_kind {
+	HB_OVERRIDE_NONE = 0,
+	HB_OVERRIDE_BODY,    /* body.I.NAME */
+	HB_OVERRIDE_IFACE,   /* interface.K.NAME */
+	HB_OVERRIDE_INITIAL, /* initial.body.I.NAME */
+};
+
+struct hb_scene_override {
+	int kind;         /* enum hb_scene_override_kind */
+	int index;        /* body I (1 = the lowest .. n) or interface K (0 = the floor's) */
+	char name[16];    /* "R", "F", "law", "c", "v" ... */
+	double value;     /* SI; law: its index in hb_law_list(); extension: 1 adhesive, 0 none */
+};
+
+struct hb_scene_overrides {
+	int n;
+	struct hb_scene_override o[HB_SCENE_MAX_OVERRIDES]; /* o[n..] zero */
 };
 
 struct hb_scene_derived {
@@ -137,6 +168,7 @@ struct hb_scene {
 	struct hb_scene_run run;
 	struct hb_scene_chain chain;
 	struct hb_scene_derived d; /* filled by hb_scene_derive() */
+	struct hb_scene_overrides over; /* a chain's bodies and interfaces that differ */
 };
 
 /* An error of a key, as data. */

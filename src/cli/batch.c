@@ -56,6 +56,7 @@
 #include "hybounce/units.h"
 
 #include "batch.h"
+#include "batch_bodies.h"
 #include "plot_cmd.h"
 #include "plot_out.h"
 #include "report.h"
@@ -205,6 +206,38 @@ print_body(FILE *out, int k, const struct hb_scene_body *bd)
 	        isinf(bd->mass) ? " (fixed obstacle)" : bd->mass_given ? " (given)" : "");
 }
 
+/* A chain's overrides (scene.h: body.I.*, interface.K.*, initial.body.I.*), wrapped at 79 columns. */
+static void
+print_overrides(FILE *out, const struct hb_scene *sc)
+{
+	int col = 0;
+
+	for (int i = 0; i < sc->over.n && i < HB_SCENE_MAX_OVERRIDES; i++) {
+		const struct hb_scene_override *o = &sc->over.o[i];
+		struct hb_scene_keyinfo ki;
+		char key[64], b[128];
+		int len;
+
+		snprintf(key, sizeof key, "%s%d.%s", o->kind == HB_OVERRIDE_BODY ? "body." :
+		         o->kind == HB_OVERRIDE_IFACE ? "interface." : "initial.body.", o->index, o->name);
+		if (hb_scene_get(sc, key, &ki, NULL) != HB_OK)
+			continue;
+		len = snprintf(b, sizeof b, "%s = %s", key, ki.value);
+		if (col == 0) {
+			fprintf(out, "overrides   %s", b);
+			col = 12 + len;
+		} else if (col + 2 + len > 79) {
+			fprintf(out, ",\n            %s", b);
+			col = 12 + len;
+		} else {
+			fprintf(out, ", %s", b);
+			col += 2 + len;
+		}
+	}
+	if (col > 0)
+		fprintf(out, "\n");
+}
+
 static void
 print_header(FILE *out, const char *preset, const char *path,
              const struct hb_scene *sc, const struct hb_sim_stats *st)
@@ -220,8 +253,9 @@ print_header(FILE *out, const char *preset, const char *path,
 		print_wrapped(out, "            ", sc->description);
 	print_law(out, sc);
 	if (sc->chain.n > 0)
-		fprintf(out, "system      chain of %d bodies (each body 1, the law between neighbours)%s, "
+		fprintf(out, "system      chain of %d bodies (each body 1, the law between neighbours%s)%s, "
 		        "%s apart, striker (body %d) at %s\n", sc->chain.n,
+		        sc->over.n > 0 ? ", but for the overrides" : "",
 		        sc->chain.floor ? " on a floor" : "",
 		        fmt(sc->chain.spacing, hb_unit_length, a, sizeof a), sc->chain.n,
 		        fmt(sc->chain.v, hb_unit_velocity, b, sizeof b));
@@ -231,6 +265,7 @@ print_header(FILE *out, const char *preset, const char *path,
 		fprintf(out, "system      full H_f: two finite masses on a common axis\n");
 	for (k = 0; k < (sc->chain.n > 0 ? 1 : 2); k++)
 		print_body(out, k, &sc->body[k]);
+	print_overrides(out, sc);
 	fprintf(out, "loads       g = %s, F1 = %s, F2 = %s",
 	        fmt(sc->loads.g, hb_unit_accel, a, sizeof a),
 	        fmt(sc->loads.F1, hb_unit_force, b, sizeof b),
@@ -884,12 +919,20 @@ batch_run(const struct batch_options *o)
 	/* --plot: the figure's own rules, the CSVs and the preset as the others (plot_out.h) */
 	hb_outputs_init(&pol);
 	hb_outputs_input(&pol, path, "the preset being run");
+	/* --bodies: the same rules, with the CSVs and the scene saved beside them */
+	if (o->bodies != NULL) {
+		msg[0] = '\0';
+		if (batch_bodies_check(&pol, o->bodies, trace_file, coll_file, msg, sizeof msg) != 0) {
+			err(msg);
+			return 2;
+		}
+	}
 	if (o->plot != NULL) {
 		msg[0] = '\0';
-		if ((trace_file != NULL && hb_outputs_add(&pol, trace_file, "--trace", msg,
-		                                          sizeof msg) != HB_OK) ||
-		    (coll_file != NULL && hb_outputs_add(&pol, coll_file, "--collisions", msg,
-		                                         sizeof msg) != HB_OK) ||
+		if ((o->bodies == NULL && trace_file != NULL && hb_outputs_add(&pol, trace_file,
+		                                  "--trace", msg, sizeof msg) != HB_OK) ||
+		    (o->bodies == NULL && coll_file != NULL && hb_outputs_add(&pol, coll_file,
+		                                  "--collisions", msg, sizeof msg) != HB_OK) ||
 		    plot_out_parse(&po, "--plot", o->plot, msg, sizeof msg) != 0 ||
 		    plot_out_register(&po, &pol, msg, sizeof msg) != 0) {
 			err(msg);
@@ -1059,6 +1102,13 @@ batch_run(const struct batch_options *o)
 				cli_print_wrote(coll_file, &rep.target[1]);
 			if (rep.scene[0])
 				cli_print_wrote(rep.scene, &rep.target[2]);
+		}
+	}
+	if (o->bodies != NULL) {
+		msg[0] = '\0';
+		if (batch_bodies_write(&pol, o->bodies, s, msg, sizeof msg) != 0) {
+			fprintf(stderr, PROG ": --bodies: %s\n", msg);
+			status = 2;
 		}
 	}
 	if (o->plot != NULL) {

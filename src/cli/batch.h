@@ -23,6 +23,7 @@ struct batch_options {
 	const char *trace;         /* arc CSV, "-" for stdout, or NULL */
 	const char *collisions;    /* collisions CSV, "-" for stdout, or NULL */
 	const char *plot;          /* the figure of the state (plot_out.h), or NULL */
+	const char *bodies;        /* each body's final state as CSV (batch_bodies.h), or NULL */
 	int jumps;                 /* 1: print every jump's location record */
 	int check;                 /* 1: run hb_check_solution_pair and report it */
 	int quiet;                 /* 1: no header block and no collision table */

@@ -49,6 +49,7 @@ enum {
 	OPT_LIST_LAWS,
 	OPT_DATA,
 	OPT_ERROR,
+	OPT_BODIES,
 };
 
 static const struct option long_options[] = {
@@ -58,6 +59,7 @@ static const struct option long_options[] = {
 	{ "collisions",   required_argument, NULL, 'c' },
 	{ "jumps",        no_argument,       NULL, OPT_JUMPS },
 	{ "plot",         required_argument, NULL, OPT_PLOT },
+	{ "bodies",       required_argument, NULL, OPT_BODIES },
 	{ "check",        no_argument,       NULL, OPT_CHECK },
 	{ "error",        no_argument,       NULL, OPT_ERROR },
 	{ "quiet",        no_argument,       NULL, 'q' },
@@ -78,7 +80,8 @@ usage(FILE *f)
 "usage: hybounce [OPTIONS] [PRESET]     open the explorer (default preset: "
 DEFAULT_PRESET ")\n"
 "       hybounce --batch PRESET [--set KEY=VALUE]... [--trace FILE]\n"
-"                [--collisions FILE] [--plot FILE] [--jumps] [--check] [--error] [--quiet]\n"
+"                [--collisions FILE] [--bodies FILE] [--plot FILE] [--jumps] [--check]\n"
+"                [--error] [--quiet]\n"
 "       hybounce --list-presets | --list-laws | --help | --version\n"
 "       hybounce sweep PRESET --vary KEY=SPEC... --out DIR   (see hybounce sweep --help)\n"
 "       hybounce fit PRESET --data FILE --free KEY[,KEY...] [OPTIONS]\n"
@@ -100,6 +103,8 @@ DEFAULT_PRESET ")\n"
 "                          the scene is saved beside the first file as .preset.\n"
 "                          FILE - (for one of the two) is standard output, and\n"
 "                          the report then goes to standard error\n"
+"      --bodies FILE       (batch) write each body's final state as CSV to FILE:\n"
+"                          body, m, y, u, K (SI), numbered from the bottom\n"
 "      --plot FILE         (batch) draw the run's state against t (as hybounce\n"
 "                          plot --kind state) to FILE.png, .pdf, .svg or .tex\n"
 "      --jumps             (batch) print how each jump was located\n"
@@ -231,6 +236,7 @@ hybounce_main(int argc, char **argv)
 		case 'c': bo.collisions = optarg; break;
 		case OPT_JUMPS: bo.jumps = 1; break;
 		case OPT_PLOT: bo.plot = optarg; break;
+		case OPT_BODIES: bo.bodies = optarg; break;
 		case OPT_CHECK: bo.check = 1; break;
 		case OPT_ERROR: bo.error = 1; break;
 		case 'q': bo.quiet = 1; break;
@@ -296,9 +302,9 @@ hybounce_main(int argc, char **argv)
 
 	/* The explorer. */
 	if (bo.trace != NULL || bo.collisions != NULL || bo.jumps || bo.check || bo.quiet ||
-	    bo.plot != NULL || bo.error) {
+	    bo.plot != NULL || bo.error || bo.bodies != NULL) {
 		const char *o = bo.trace ? "--trace" : bo.collisions ? "--collisions"
-		              : bo.plot ? "--plot"
+		              : bo.plot ? "--plot" : bo.bodies ? "--bodies"
 		              : bo.jumps ? "--jumps" : bo.check ? "--check"
 		              : bo.error ? "--error" : "--quiet";
 

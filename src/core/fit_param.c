@@ -95,7 +95,7 @@ fit_param_init(const struct hb_scene *sc, const char *key, struct fit_param *fp,
 		fp->lo = -HUGE_VAL; /* bounded by beta through the transform */
 		fp->hi = HUGE_VAL;
 	}
-	if (strncmp(key, "body", 4) == 0) {
+	if (strncmp(key, "body", 4) == 0 && (key[4] == '1' || key[4] == '2') && key[5] == '.') {
 		const struct hb_scene_body *b = &sc->body[key[4] - '1'];
 		const char *f = key + 6;
 

@@ -42,6 +42,7 @@
 
 #include "preset_ini.h"
 #include "scene_keys.h"
+#include "scene_override.h"
 #include "textbuf.h"
 #include "cnum.h"
 
@@ -165,6 +166,9 @@ key_known(const struct hb_scene *sc, const struct preset_entry *e)
 {
 	char key[128];
 
+	entry_key(e, key);
+	if (scene_override_is_key(key)) /* [body.I], [interface.K], [initial] body.I.* */
+		return 1;
 	if (strcmp(e->section, "law") == 0) {
 		int i = hb_law_param_index(sc->law, e->name);
 		return i >= 0 && strcmp(sc->law->params[i].name, e->name) == 0;
@@ -272,10 +276,11 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, int branc
 			    "accepted: a preset without [branch] sections", file, e->line, e->section);
 		if (preset_is_branch(e->section))
 			continue;
-		if (section_index(e->section) < 0)
+		if (section_index(e->section) < 0 && !scene_override_is_section(e->section))
 			return hb_status_set(msg, n, HB_EINVAL,
 			    "%s:%d: [%s] %s: unknown section; known sections: scene, body1, body2, "
-			    "law, chain, striker, loads, initial, run", file, e->line, e->section, e->name);
+			    "law, chain, striker, loads, initial, run, and a chain's body.I and "
+			    "interface.K", file, e->line, e->section, e->name);
 		for (int j = 0; j < i; j++)
 			if (strcmp(c->e[j].section, e->section) == 0 &&
 			    strcmp(c->e[j].name, e->name) == 0)
@@ -340,6 +345,16 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, int branc
 			if ((st = apply(sc, e, file, msg, n)) != HB_OK)
 				return st;
 		}
+	/* [body.I] and [interface.K]: an interface's law first, then its exponents */
+	for (int pass = 0; pass < 3; pass++)
+		for (int i = 0; i < c->n; i++) {
+			const struct preset_entry *e = &c->e[i];
+			if (!scene_override_is_section(e->section) ||
+			    scene_override_pass(sc, e->section, e->name) != pass)
+				continue;
+			if ((st = apply(sc, e, file, msg, n)) != HB_OK)
+				return st;
+		}
 	static const char *const rest[] = { "chain", "striker", "loads", "initial", "run" };
 	for (size_t s = 0; s < sizeof rest / sizeof rest[0]; s++)
 		for (int i = 0; i < c->n; i++)
@@ -351,7 +366,9 @@ load_entries(struct collect *c, const char *file, struct hb_scene *sc, int branc
 	struct hb_scene_error err;
 	st = hb_scene_check(sc, &err);
 	if (st != HB_OK) {
-		const char *dot = strchr(err.key, '.');
+		/* a chain's body.I.NAME, interface.K.NAME: the section is all but NAME */
+		const char *dot = scene_override_is_key(err.key) && strncmp(err.key, "initial.", 8) != 0
+		    ? strrchr(err.key, '.') : strchr(err.key, '.');
 		char sec[32] = "";
 		const struct preset_entry *e = NULL;
 		if (dot == NULL || (size_t)(dot - err.key) >= sizeof sec) {

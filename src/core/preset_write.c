@@ -19,6 +19,7 @@
 
 #include "preset_ini.h"
 #include "scene_keys.h"
+#include "scene_override.h"
 #include "textbuf.h"
 #include "cnum.h"
 
@@ -55,6 +56,9 @@ hb_preset_format(const struct hb_scene *sc, char *buf, size_t n)
 	for (size_t s = 0; s < PRESET_NSECTIONS; s++) {
 		int any = strcmp(preset_sections[s], "law") == 0;
 
+		if (strcmp(preset_sections[s], "loads") == 0) /* a chain's [body.I], [interface.K] */
+			scene_override_write(sc, NULL, &o);
+
 		for (int k = 0; k < scene_nkeydefs && !any; k++) /* a section with no key is left out */
 			any = strcmp(scene_keydef_section(&scene_keydefs[k], sec, sizeof sec),
 			             preset_sections[s]) == 0 && scene_keydef_present(sc, &scene_keydefs[k]);
@@ -80,6 +84,7 @@ hb_preset_format(const struct hb_scene *sc, char *buf, size_t n)
 			scene_keydef_print(sc, kd, v, sizeof v);
 			out_entry(&o, kd->key + strlen(sec) + 1, v);
 		}
+		scene_override_write(sc, preset_sections[s], &o); /* [initial] body.I.v ... */
 	}
 	return o.len;
 }

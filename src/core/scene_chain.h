@@ -27,6 +27,36 @@ struct scene_chain_iface {
 	int ext;           /* rule R1: 1 adhesive continuation, 0 clamped */
 };
 
+/* Everything a body of a chain is given as (its overrides applied). */
+struct scene_chain_bodyx {
+	double E, nu;     /* Pa, 1: its material, when has_material */
+	double rho;       /* kg/m^3; 0 when not given */
+	double R;         /* m */
+	double mass;      /* kg: given, or 4/3 pi R^3 rho; NAN when neither */
+	double F;         /* the applied constant force other than gravity, N */
+	double v0, gap;   /* initial velocity, m/s; gap below the body, m */
+	int has_material; /* E and nu known */
+	int mass_given;   /* the mass typed rather than derived */
+	int half;         /* 1: E or nu overridden without the other and no material to complete it */
+	int both;         /* 1: rho and mass both overridden */
+};
+
+/*
+ * Body i (0-based) as the scene gives it: body1's values, then the
+ * overrides body.I.* and initial.body.I.* (I = i + 1).  HB_EINVAL for a bad i.
+ */
+int scene_chain_body_full(const struct hb_scene *sc, int i, struct scene_chain_bodyx *out);
+
+/*
+ * Interface k's law, parameters and extension as the scene gives them, and
+ * *derivable set to 1 when its stiffness follows from its pair's materials
+ * (then par holds the derived value).  *floorless set to 1 when interface 0
+ * has a floor (body2) with no material while the scene's k is derived: its
+ * stiffness is then neither derived nor typed.
+ */
+int scene_chain_iface_full(const struct hb_scene *sc, int k, struct scene_chain_iface *out,
+                           int *derivable, int *floorless);
+
 /* Body i (0 = body 1, the lowest; n - 1 the striker) of a chain scene. */
 int scene_chain_body(const struct hb_scene *sc, int i, struct scene_chain_body *out);
 

@@ -13,6 +13,7 @@
 
 #include "docs.h"
 #include "scene_keys.h"
+#include "scene_override.h"
 #include "textbuf.h"
 #include "cnum.h"
 
@@ -72,10 +73,14 @@ scene_keys_mdoc(char *buf, size_t n)
 
 		scene_keydef_section(kd, sec, sizeof sec);
 		if (strcmp(sec, prev) != 0) {
+			if (strcmp(prev, "initial") == 0)
+				scene_override_mdoc(&o, "initial");
 			if (prev[0])
 				textbuf_printf(&o, ".El\n");
 			if (strcmp(prev, "body2") == 0)
 				mdoc_laws(&o);
+			if (strcmp(prev, "striker") == 0)
+				scene_override_mdoc(&o, NULL);
 			textbuf_printf(&o, ".It Li [%s]\n.Bl -tag -width \"description\" -compact\n", sec);
 			snprintf(prev, sizeof prev, "%s", sec);
 		}

@@ -17,6 +17,7 @@
 #include "hybounce/units.h"
 
 #include "scene_keys.h"
+#include "scene_override.h"
 #include "cnum.h"
 
 #define OFF(f) offsetof(struct hb_scene, f)
@@ -591,6 +592,8 @@ scene_key_value(const struct hb_scene *sc, const char *key, double *num, const c
 	const char *base = (const char *)sc;
 	int li, ro;
 
+	if (scene_override_is_key(key))
+		return scene_override_value(sc, key, num, word);
 	if (scene_key_resolve(sc, key, &kd, &li, &ro, NULL) != HB_OK || ro)
 		return -1;
 	if (kd == NULL) {
@@ -634,6 +637,8 @@ hb_scene_get(const struct hb_scene *sc, const char *key, struct hb_scene_keyinfo
 	int li, ro, st;
 
 	memset(out, 0, sizeof *out);
+	if (scene_override_is_key(key))
+		return scene_override_get(sc, key, out, err);
 	if ((st = scene_key_resolve(sc, key, &kd, &li, &ro, err)) != HB_OK)
 		return st;
 	if (kd == NULL)

@@ -14,6 +14,7 @@
 #include "hybounce/units.h"
 
 #include "scene_keys.h"
+#include "scene_override.h"
 
 /* ---------------------------------------------------------------- */
 /* Panel rows */
@@ -21,7 +22,7 @@
 enum derived_id { D_ESTAR, D_RE, D_M1, D_M2, D_M, D_ETA, D_KH, D_K, D_XCS, D_COUNT };
 
 struct row {
-	int kind;   /* 0 key, 1 law parameter, 2 derived */
+	int kind;   /* 0 key, 1 law parameter, 2 derived, 3 a chain's override (id: its index) */
 	const struct scene_keydef *kd;
 	int id;
 };
@@ -74,6 +75,9 @@ rows_list(const struct hb_scene *sc, struct row *rows, int max)
 				continue;
 			PUSH(0, kd, 0);
 		}
+		if (strcmp(order[s], "chain") == 0 && sc->chain.n > 0) /* body.I.*, interface.K.* */
+			for (int i = 0; i < sc->over.n; i++)
+				PUSH(3, NULL, i);
 		if (strcmp(order[s], "law") == 0 && sc->law != NULL) {
 			for (int i = 0; i < sc->law->n_params; i++) {
 				if ((sc->law->params[i].flags & HB_LAW_PARAM_STIFFNESS) && sc->d.k_derived)
@@ -151,12 +155,17 @@ derived_row(const struct hb_scene *sc, int id, struct hb_scene_keyinfo *o)
 int
 hb_scene_key(const struct hb_scene *sc, int i, struct hb_scene_keyinfo *out)
 {
-	struct row rows[128];
-	int nr = rows_list(sc, rows, 128);
+	struct row rows[128 + HB_SCENE_MAX_OVERRIDES];
+	int nr = rows_list(sc, rows, 128 + HB_SCENE_MAX_OVERRIDES);
 
-	if (i < 0 || i >= nr || i >= 128)
+	if (i < 0 || i >= nr || i >= 128 + HB_SCENE_MAX_OVERRIDES)
 		return HB_EINVAL;
 	memset(out, 0, sizeof *out);
+	if (rows[i].kind == 3) {
+		char key[64];
+		scene_override_key(sc, rows[i].id, key, sizeof key);
+		return scene_override_get(sc, key, out, NULL);
+	}
 	if (rows[i].kind == 2) {
 		derived_row(sc, rows[i].id, out);
 		return HB_OK;

@@ -18,6 +18,7 @@
 #include "hybounce/units.h"
 
 #include "scene_keys.h"
+#include "scene_override.h"
 #include "cnum.h"
 
 /* Trims leading and trailing blanks of text into buf. */
@@ -182,6 +183,8 @@ hb_scene_set_text(struct hb_scene *sc, const char *key, const char *text, struct
 	double v;
 	int st, li;
 
+	if (scene_override_is_key(key)) /* body.I.*, interface.K.*, initial.body.I.* */
+		return scene_override_set(sc, key, text, NULL, err);
 	hb_scene_derive(&tmp, NULL, 0);
 	if ((st = key_lookup(&tmp, key, &kd, &li, err)) != HB_OK)
 		return st;
@@ -272,6 +275,8 @@ hb_scene_set_number(struct hb_scene *sc, const char *key, double v, struct hb_sc
 	const struct scene_keydef *kd;
 	int st, li;
 
+	if (scene_override_is_key(key))
+		return scene_override_set(sc, key, NULL, &v, err);
 	hb_scene_derive(&tmp, NULL, 0);
 	if ((st = key_lookup(&tmp, key, &kd, &li, err)) != HB_OK)
 		return st;

@@ -15,6 +15,7 @@
 #include "hybounce/units.h"
 
 #include "scene_keys.h"
+#include "scene_override.h"
 
 /* Checks number v of key against r; vs is written with dim. */
 static int
@@ -226,6 +227,8 @@ hb_scene_check(struct hb_scene *sc, struct hb_scene_error *err)
 	if ((st = check_forces(sc, err)) != HB_OK)
 		return st;
 	if ((st = check_chain(sc, err)) != HB_OK)
+		return st;
+	if ((st = scene_override_check(sc, err)) != HB_OK)
 		return st;
 	return check_law(sc, err);
 }

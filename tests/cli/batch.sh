@@ -28,7 +28,7 @@ for f in presets/*.preset; do
 		notok "batch $name prints the summary" "$T/out"
 	fi
 	if grep -q '^preset  *'"$name"' ' "$T/out" && grep -q '^law  *[a-z]*: ' "$T/out" &&
-	    grep -Eq '^system  *(reduced H_r|full H_f)' "$T/out" &&
+	    grep -Eq '^system  *(reduced H_r|full H_f|chain of [0-9]+ bodies)' "$T/out" &&
 	    grep -q '^derived     E\* = ' "$T/out" && grep -q '^run  *T = .*rtol = ' "$T/out"; then
 		ok "batch $name prints the header block"
 	else
