@@ -113,6 +113,8 @@ struct iface {
 	double Wc0;             /* Wc at the commencement of the contact in progress */
 	double xe;              /* x at the commencement of the contact in progress */
 	double te, vi;          /* commencement time and approach velocity */
+	int pushed;             /* a chain's: the contact in progress began as a touching pair
+	                           pushed together, not an impact (no e; sim_record.c) */
 };
 
 /*

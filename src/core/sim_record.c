@@ -97,7 +97,7 @@ push_collision(struct hb_sim *s)
 	c.td = s->t - I->te;
 	c.tf = NAN;
 	c.vi = I->vi;
-	c.e = I->vi != 0.0 ? -I->v / I->vi : NAN;
+	c.e = I->vi != 0.0 && !I->pushed ? -I->v / I->vi : NAN;
 	c.xcmax = I->xcmax;
 	c.Fcmax = I->Fcmax;
 	c.xcr = fabs(I->xc);
@@ -110,6 +110,24 @@ push_collision(struct hb_sim *s)
 	c.k = s->k0 + s->ia;
 	s->col[s->ncol++] = c;
 	return 0;
+}
+
+/*
+ * A chain's contact that begins at a relative velocity below 1e-6 of the
+ * fastest relative velocity of an interface in contact at that instant is
+ * a touching pair pushed together by its neighbour, not an impact: it has
+ * no coefficient of restitution (e would be v_s over a rounding error).
+ */
+static int
+pushed_into(const struct hb_sim *s, const struct iface *I)
+{
+	double vmax = 0.0;
+	int i;
+
+	for (i = 0; i < s->nif; i++)
+		if (&s->ifc[i] != I && s->ifc[i].q && fabs(s->ifc[i].v) > vmax)
+			vmax = fabs(s->ifc[i].v);
+	return fabs(I->vi) < 1e-6 * vmax;
 }
 
 /*
@@ -166,6 +184,7 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 	if (I->q) {
 		I->te = s->t;
 		I->vi = I->v;
+		I->pushed = s->chain && pushed_into(s, I);
 		I->xe = I->x;
 		I->Wc0 = I->Wc;
 		if (!s->chain) {

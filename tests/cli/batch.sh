@@ -15,7 +15,7 @@ for f in presets/*.preset; do
 	rc=$?
 	if [ "$rc" -eq 0 ]; then ok "batch $name exits 0"
 	else notok "batch $name exits 0 (got $rc)" "$T/err"; fi
-	if grep -q '^ *i  *t_e \[[a-z]*s\] .* e .*x_c^max \[[a-zA-Z]*m\].*Lambda$' "$T/out"; then
+	if grep -Eq '^ *i +(k +)?t_e \[[a-z]*s\] .* e .*x_c\^max \[[a-zA-Z]*m\].*Lambda$' "$T/out"; then
 		ok "batch $name prints the collision table header"
 	else
 		notok "batch $name prints the collision table header" "$T/out"
