@@ -367,5 +367,7 @@ hbs_stiffness(struct hb_sim *s);
 typedef int hbs_rhs_fn(double t, const double u[], double du[], void *params);
 hbs_rhs_fn *
 hbs_rhs_special(const struct hb_sim *s, const struct phase *p);
+/* ... the general one (sim_flow.c), for any scene: the same doubles */
+hbs_rhs_fn hbs_rhs;
 
 #endif

@@ -57,6 +57,28 @@ law_terms(enum rhs_law law, const double *par, int ext, double xc, const double 
 	return 0.0;
 }
 
+/*
+ * Whether the law's exponents are Hertz's p = 3/2 and n = 2 (every paper
+ * study's), for which the powers are written out (apow's own branches for
+ * them, so the same doubles); a law without p or n has them as well.
+ */
+static int
+law_hertzian(enum rhs_law law, const double *par)
+{
+	switch (law) {
+	case RL_SHCCL:
+		return par[LAW_SHCCL_P] == 1.5;
+	case RL_BWSHCCL:
+	case RL_BWMCL:
+		return par[LAW_BW_P] == 1.5 && par[LAW_BW_N] == 2.0;
+	case RL_HERTZ:
+		return par[LAW_HERTZ_P] == 1.5;
+	case RL_LINEAR:
+		return 1;
+	}
+	return 0;
+}
+
 /* The law's exponents p and n (NAN where it has none). */
 static ALWAYS_INLINE void
 law_pn(enum rhs_law law, const double *par, double *p, double *n)
@@ -84,16 +106,18 @@ law_pn(enum rhs_law law, const double *par, double *p, double *n)
 
 /*
  * In contact, layout [x], x_c, v, z (nz), W, J_Fc, J_Fe, E_e (make_layout
- * of sim_flow.c): o = 1 with x, else 0.
+ * of sim_flow.c): o = 1 with x, else 0.  hertzian: the law's exponents are
+ * 3/2 and 2 (law_hertzian, checked when the phase was set up: the scene,
+ * and so its parameters, change only by a new set-up).
  */
 static ALWAYS_INLINE int
-rhs_contact(double t, const double u[], double du[], void *params, enum rhs_law law, int nz)
+rhs_contact(double t, const double u[], double du[], void *params, enum rhs_law law, int nz,
+            int o, int hertzian)
 {
 	struct phase *p = params;
 	struct hb_sim *s = p->s;
 	const struct iface *I = s->I;
 	const double *sc = s->scale, *is = s->iscale;
-	const int o = p->L.ixc;
 	double Fer = scene_Fer_at(&s->sc, t), phi, xc, v, z[2], dz[2], pp, nn, bad = 0.0;
 	int i;
 
@@ -102,12 +126,13 @@ rhs_contact(double t, const double u[], double du[], void *params, enum rhs_law 
 	v = u[o + 1] * sc[o + 1];
 	for (i = 0; i < nz; i++)
 		z[i] = u[o + 2 + i] * sc[o + 2 + i];
-	law_pn(law, I->par, &pp, &nn);
-	/* Hertz's p = 3/2 and n = 2 (every paper study's), written out; others as they come */
-	if ((pp == 1.5 || law == RL_LINEAR) && (nn == 2.0 || !(law == RL_BWSHCCL || law == RL_BWMCL)))
-		phi = law_terms(law, I->par, I->ext, xc, z, v, s->msign, dz, 1.5, 2.0);
-	else
-		phi = law_terms(law, I->par, I->ext, xc, z, v, s->msign, dz, pp, nn);
+	if (hertzian) {
+		pp = 1.5;
+		nn = 2.0;
+	} else {
+		law_pn(law, I->par, &pp, &nn);
+	}
+	phi = law_terms(law, I->par, I->ext, xc, z, v, s->msign, dz, pp, nn);
 	PUT(o, v);
 	for (i = 0; i < nz; i++)
 		PUT(o + 2 + i, dz[i]);
@@ -144,11 +169,25 @@ rhs_flight(double t, const double u[], double du[], void *params)
 
 #undef PUT
 
-#define RHS_LAW(name, law, nz)                                                  \
-	static int name(double t, const double u[], double du[], void *params) \
-	{                                                                       \
-		return rhs_contact(t, u, du, params, law, nz);                  \
-	}
+/* rhs of law with nz components of z: without x (o = 0), with x (1); general exponents, or Hertz's */
+#define RHS_LAW(name, law, nz)                                                    \
+	static int name##_0(double t, const double u[], double du[], void *params) \
+	{                                                                         \
+		return rhs_contact(t, u, du, params, law, nz, 0, 0);              \
+	}                                                                         \
+	static int name##_1(double t, const double u[], double du[], void *params) \
+	{                                                                         \
+		return rhs_contact(t, u, du, params, law, nz, 1, 0);              \
+	}                                                                         \
+	static int name##_h0(double t, const double u[], double du[], void *params) \
+	{                                                                         \
+		return rhs_contact(t, u, du, params, law, nz, 0, 1);              \
+	}                                                                         \
+	static int name##_h1(double t, const double u[], double du[], void *params) \
+	{                                                                         \
+		return rhs_contact(t, u, du, params, law, nz, 1, 1);              \
+	}                                                                         \
+	static hbs_rhs_fn *const name[2][2] = { { name##_0, name##_1 }, { name##_h0, name##_h1 } };
 RHS_LAW(rhs_shccl, RL_SHCCL, 0)
 RHS_LAW(rhs_bwshccl, RL_BWSHCCL, 1)
 RHS_LAW(rhs_bwmcl, RL_BWMCL, 2)
@@ -171,14 +210,14 @@ hbs_rhs_special(const struct hb_sim *s, const struct phase *p)
 	      L->iJc == o + 3 + nz && L->iJe == o + 4 + nz && L->iEe == o + 5 + nz && L->dim == o + 6 + nz))
 		return NULL;
 	if (law == &hb_law_shccl)
-		return rhs_shccl;
+		return rhs_shccl[law_hertzian(RL_SHCCL, s->I->par)][o];
 	if (law == &hb_law_bwshccl)
-		return rhs_bwshccl;
+		return rhs_bwshccl[law_hertzian(RL_BWSHCCL, s->I->par)][o];
 	if (law == &hb_law_bwmcl)
-		return rhs_bwmcl;
+		return rhs_bwmcl[law_hertzian(RL_BWMCL, s->I->par)][o];
 	if (law == &hb_law_hertz)
-		return rhs_hertz;
+		return rhs_hertz[law_hertzian(RL_HERTZ, s->I->par)][o];
 	if (law == &hb_law_linear)
-		return rhs_linear;
+		return rhs_linear[law_hertzian(RL_LINEAR, s->I->par)][o];
 	return NULL;
 }
