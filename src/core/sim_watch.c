@@ -8,6 +8,17 @@
 #include "sim_impl.h"
 
 /*
+ * Whether the law's jac may be given dpsi = NULL with n_z > 0 (the engine's
+ * own Bouc-Wen laws: they skip Psi's partials, which watch() does not use;
+ * a host's law is promised NULL only when n_z = 0).
+ */
+static int
+jac_skips_psi(const struct hb_law_type *law)
+{
+	return law == &hb_law_bwshccl || law == &hb_law_bwmcl;
+}
+
+/*
  * Values of the watched functions at a scaled state: [0] the indicator of
  * the flow set C (>= 0 in C), then the law's switching functions, then v
  * (x_c extremum) and dPhi/dt (F_c extremum).  Returns their number; kinds
@@ -30,7 +41,8 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 	int nk = I->law->n_kinks && sc->run.kinks ? I->law->n_kinks : 0;
 	int all = only < 0;
 
-	hbs_unscale(p, u, y);
+	for (i = 0; i < L->nread; i++) /* the components the functions read (as rhs) */
+		y[i] = u[i] * s->scale[i];
 	v = y[L->iv];
 	kind[0] = FUN_EVENT;
 	if (!p->q) {
@@ -54,7 +66,7 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 		I->law->kinks(I->par, I->ext, xc, z, v, &f[1]);
 	f[nk + 1] = v;
 	if (all || only == nk + 2) {
-		I->law->jac(I->par, I->ext, xc, z, v, dphi, nz ? dpsi : NULL);
+		I->law->jac(I->par, I->ext, xc, z, v, dphi, nz && !jac_skips_psi(I->law) ? dpsi : NULL);
 		if (nz)
 			I->law->psi(I->par, I->ext, xc, z, v, dz);
 		vdot = (-phi + iface_Fer(s, I, t)) / I->m;
