@@ -70,13 +70,9 @@ static void
 bwmcl_jac(const double *par, int ext, double xc, const double *z, double v,
           double *dphi, double *dpsi)
 {
-	double k = par[LAW_BW_K], alpha = par[LAW_BW_ALPHA], p = par[LAW_BW_P];
 	double c = par[LAW_BW_C], z1 = z[0], psi2, g1;
 
-	dphi[0] = 0.0;
-	dphi[1] = (1.0 - alpha) * k * dspow(z1, p);
-	dphi[2] = alpha * k * dspow(z[1], p);
-	dphi[3] = 0.0;
+	law_bwmcl_dphi(par, z, dphi);
 	if (dpsi == NULL)
 		return;
 
@@ -98,9 +94,7 @@ static void
 bwmcl_kinks(const double *par, int ext, double xc, const double *z, double v,
             double *g)
 {
-	g[0] = z[0];
-	g[1] = z[1];
-	g[2] = v - bwmcl_phi(par, ext, xc, z, v) / par[LAW_BW_C];
+	law_bwmcl_kinks(par, ext, xc, z, v, g);
 }
 
 const struct hb_law_type hb_law_bwmcl = {

@@ -61,11 +61,7 @@ static void
 bwshccl_jac(const double *par, int ext, double xc, const double *z, double v,
             double *dphi, double *dpsi)
 {
-	double k = par[LAW_BW_K], alpha = par[LAW_BW_ALPHA], p = par[LAW_BW_P];
-
-	law_hc_jac(ext, alpha * k, par[LAW_BW_C], p, xc, v, &dphi[0], &dphi[2]);
-	dphi[1] = (1.0 - alpha) * k * dspow(z[0], p);
-
+	law_bwshccl_dphi(par, ext, xc, z, v, dphi);
 	if (dpsi == NULL)
 		return;
 	dpsi[0] = 0.0;
@@ -80,9 +76,7 @@ bwshccl_kinks(const double *par, int ext, double xc, const double *z,
 {
 	(void)par;
 	(void)ext;
-	g[0] = xc;
-	g[1] = z[0];
-	g[2] = v;
+	law_bwshccl_kinks(xc, z, v, g);
 }
 
 const struct hb_law_type hb_law_bwshccl = {

@@ -43,8 +43,7 @@ hertz_jac(const double *par, int ext, double xc, const double *z, double v,
 	(void)z;
 	(void)v;
 	(void)dpsi;
-	dphi[0] = law_ext_dx(ext, xc, par[K] * dspow(xc, par[P]));
-	dphi[1] = 0.0;
+	law_hertz_dphi(par, ext, xc, dphi);
 }
 
 const struct hb_law_type hb_law_hertz = {

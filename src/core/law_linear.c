@@ -42,8 +42,7 @@ linear_jac(const double *par, int ext, double xc, const double *z, double v,
 	(void)z;
 	(void)v;
 	(void)dpsi;
-	dphi[0] = law_ext_dx(ext, xc, par[K]);
-	dphi[1] = 0.0;
+	law_linear_dphi(par, ext, xc, dphi);
 }
 
 const struct hb_law_type hb_law_linear = {

@@ -43,7 +43,7 @@ shccl_jac(const double *par, int ext, double xc, const double *z, double v,
 {
 	(void)z;
 	(void)dpsi;
-	law_hc_jac(ext, par[K], par[C], par[P], xc, v, &dphi[0], &dphi[1]);
+	law_shccl_dphi(par, ext, xc, v, dphi);
 }
 
 const struct hb_law_type hb_law_shccl = {

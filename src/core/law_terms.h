@@ -126,4 +126,65 @@ law_linear_phi(const double *par, int ext, double xc, const double *z, double v)
 	return par[LAW_LINEAR_K] * law_ext_x(ext, xc);
 }
 
+/*
+ * dPhi, the partials of Phi in (x_c, z_1 .. z_nz, v), as each law's jac
+ * gives them (its dphi; the jac of law_*.c calls these).
+ */
+static inline void
+law_shccl_dphi(const double *par, int ext, double xc, double v, double *dphi)
+{
+	law_hc_jac(ext, par[LAW_SHCCL_K], par[LAW_SHCCL_C], par[LAW_SHCCL_P], xc, v, &dphi[0], &dphi[1]);
+}
+
+static inline void
+law_bwshccl_dphi(const double *par, int ext, double xc, const double *z, double v, double *dphi)
+{
+	double k = par[LAW_BW_K], alpha = par[LAW_BW_ALPHA], p = par[LAW_BW_P];
+
+	law_hc_jac(ext, alpha * k, par[LAW_BW_C], p, xc, v, &dphi[0], &dphi[2]);
+	dphi[1] = (1.0 - alpha) * k * dspow(z[0], p);
+}
+
+static inline void
+law_bwmcl_dphi(const double *par, const double *z, double *dphi)
+{
+	double k = par[LAW_BW_K], alpha = par[LAW_BW_ALPHA], p = par[LAW_BW_P];
+
+	dphi[0] = 0.0;
+	dphi[1] = (1.0 - alpha) * k * dspow(z[0], p);
+	dphi[2] = alpha * k * dspow(z[1], p);
+	dphi[3] = 0.0;
+}
+
+static inline void
+law_hertz_dphi(const double *par, int ext, double xc, double *dphi)
+{
+	dphi[0] = law_ext_dx(ext, xc, par[LAW_HERTZ_K] * dspow(xc, par[LAW_HERTZ_P]));
+	dphi[1] = 0.0;
+}
+
+static inline void
+law_linear_dphi(const double *par, int ext, double xc, double *dphi)
+{
+	dphi[0] = law_ext_dx(ext, xc, par[LAW_LINEAR_K]);
+	dphi[1] = 0.0;
+}
+
+/* The switching functions of the Bouc-Wen laws (the others': g = {x_c}, law_kinks_xc). */
+static inline void
+law_bwshccl_kinks(double xc, const double *z, double v, double *g)
+{
+	g[0] = xc;
+	g[1] = z[0];
+	g[2] = v;
+}
+
+static inline void
+law_bwmcl_kinks(const double *par, int ext, double xc, const double *z, double v, double *g)
+{
+	g[0] = z[0];
+	g[1] = z[1];
+	g[2] = v - law_bwmcl_phi(par, ext, xc, z, v) / par[LAW_BW_C];
+}
+
 #endif
