@@ -23,6 +23,7 @@
 #include "hybounce/law.h"
 
 #include "law_common.h"
+#include "law_terms.h"
 
 static const struct hb_law_param bwmcl_params[LAW_BW_NPAR] = {
 	LAW_BW_PARAMS(2.138e8, 5e7, 5e7, "Phi of the BWMCL", "Psi_1 of the BWMCL",
@@ -36,10 +37,7 @@ static const struct hb_law_param bwmcl_params[LAW_BW_NPAR] = {
 static double
 bwmcl_phi(const double *par, int ext, double xc, const double *z, double v)
 {
-	(void)ext;
-	(void)xc;
-	(void)v;
-	return law_bw_springs(par, z[1], z[0]);
+	return law_bwmcl_phi(par, ext, xc, z, v);
 }
 
 /* dz[0] = Psi_1 (for z_c1), dz[1] = Psi_2 (for z_c2). */
@@ -65,23 +63,16 @@ static void
 bwmcl_psi_mode(const double *par, int ext, double xc, const double *z, double v, int sign,
                double *dz)
 {
-	double psi2 = v - bwmcl_phi(par, ext, xc, z, v) / par[LAW_BW_C];
-
-	dz[0] = law_bw_rate_mode(par, z[0], psi2, sign);
-	dz[1] = psi2;
+	law_bwmcl_psi_mode(par, ext, xc, z, v, sign, dz);
 }
 
 static void
 bwmcl_jac(const double *par, int ext, double xc, const double *z, double v,
           double *dphi, double *dpsi)
 {
-	double k = par[LAW_BW_K], alpha = par[LAW_BW_ALPHA], p = par[LAW_BW_P];
 	double c = par[LAW_BW_C], z1 = z[0], psi2, g1;
 
-	dphi[0] = 0.0;
-	dphi[1] = (1.0 - alpha) * k * dspow(z1, p);
-	dphi[2] = alpha * k * dspow(z[1], p);
-	dphi[3] = 0.0;
+	law_bwmcl_dphi(par, z, dphi);
 	if (dpsi == NULL)
 		return;
 
@@ -103,9 +94,7 @@ static void
 bwmcl_kinks(const double *par, int ext, double xc, const double *z, double v,
             double *g)
 {
-	g[0] = z[0];
-	g[1] = z[1];
-	g[2] = v - bwmcl_phi(par, ext, xc, z, v) / par[LAW_BW_C];
+	law_bwmcl_kinks(par, ext, xc, z, v, g);
 }
 
 const struct hb_law_type hb_law_bwmcl = {

@@ -22,6 +22,7 @@
 #include "hybounce/law.h"
 
 #include "law_common.h"
+#include "law_terms.h"
 
 static const struct hb_law_param bwshccl_params[LAW_BW_NPAR] = {
 	LAW_BW_PARAMS(7.095e7, 2.409e8, 2.409e8, "Phi of the BWSHCCL", "Psi of the BWSHCCL",
@@ -34,9 +35,7 @@ static const struct hb_law_param bwshccl_params[LAW_BW_NPAR] = {
 static double
 bwshccl_phi(const double *par, int ext, double xc, const double *z, double v)
 {
-	xc = law_ext_x(ext, xc);
-	return law_bw_springs(par, xc, z[0])
-	    + par[LAW_BW_C] * apow(xc, par[LAW_BW_P]) * v;
+	return law_bwshccl_phi(par, ext, xc, z, v);
 }
 
 /* Eq. bwshc_psi: the Bouc-Wen rate driven by v_c. */
@@ -55,20 +54,14 @@ static void
 bwshccl_psi_mode(const double *par, int ext, double xc, const double *z, double v, int sign,
                  double *dz)
 {
-	(void)ext;
-	(void)xc;
-	dz[0] = law_bw_rate_mode(par, z[0], v, sign);
+	law_bwshccl_psi_mode(par, ext, xc, z, v, sign, dz);
 }
 
 static void
 bwshccl_jac(const double *par, int ext, double xc, const double *z, double v,
             double *dphi, double *dpsi)
 {
-	double k = par[LAW_BW_K], alpha = par[LAW_BW_ALPHA], p = par[LAW_BW_P];
-
-	law_hc_jac(ext, alpha * k, par[LAW_BW_C], p, xc, v, &dphi[0], &dphi[2]);
-	dphi[1] = (1.0 - alpha) * k * dspow(z[0], p);
-
+	law_bwshccl_dphi(par, ext, xc, z, v, dphi);
 	if (dpsi == NULL)
 		return;
 	dpsi[0] = 0.0;
@@ -83,9 +76,7 @@ bwshccl_kinks(const double *par, int ext, double xc, const double *z,
 {
 	(void)par;
 	(void)ext;
-	g[0] = xc;
-	g[1] = z[0];
-	g[2] = v;
+	law_bwshccl_kinks(xc, z, v, g);
 }
 
 const struct hb_law_type hb_law_bwshccl = {

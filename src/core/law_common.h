@@ -145,11 +145,18 @@ law_hc_jac(int ext, double kx, double c, double p, double xc, double v,
  * hysteretic one.
  */
 static inline double
-law_bw_springs(const double *par, double e, double h)
+law_bw_springs_p(const double *par, double e, double h, double p)
 {
-	double k = par[LAW_BW_K], alpha = par[LAW_BW_ALPHA], p = par[LAW_BW_P];
+	double k = par[LAW_BW_K], alpha = par[LAW_BW_ALPHA];
 
 	return alpha * k * spow(e, p) + (1.0 - alpha) * k * spow(h, p);
+}
+
+/* ... with the exponent p of par (the _p form takes it as an argument: a constant where inlined). */
+static inline double
+law_bw_springs(const double *par, double e, double h)
+{
+	return law_bw_springs_p(par, e, h, par[LAW_BW_P]);
 }
 
 /*
@@ -171,13 +178,19 @@ law_bw_rate(const double *par, double z, double w)
  * |w| itself when sign = 0 (then the same doubles as law_bw_rate).
  */
 static inline double
-law_bw_rate_mode(const double *par, double z, double w, int sign)
+law_bw_rate_mode_n(const double *par, double z, double w, int sign, double n)
 {
-	double n = par[LAW_BW_N];
 	double aw = sign ? (double)sign * w : fabs(w);
 
 	return par[LAW_BW_A] * w - par[LAW_BW_BETA] * spow(z, n) * aw
 	    - par[LAW_BW_GAMMA] * apow(z, n) * w;
+}
+
+/* ... with the exponent n of par. */
+static inline double
+law_bw_rate_mode(const double *par, double z, double w, int sign)
+{
+	return law_bw_rate_mode_n(par, z, w, sign, par[LAW_BW_N]);
 }
 
 /* d/dz of law_bw_rate: -beta n|z|^(n-1) |w| - gamma n z|z|^(n-2) w. */

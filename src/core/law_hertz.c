@@ -19,8 +19,9 @@
 #include "hybounce/law.h"
 
 #include "law_common.h"
+#include "law_terms.h"
 
-enum { K, P, NPAR };
+enum { K = LAW_HERTZ_K, P = LAW_HERTZ_P, NPAR = LAW_HERTZ_NPAR };
 
 static const struct hb_law_param hertz_params[NPAR] = {
 	[K] = LAW_PARAM_K(2.138e8, "stiffness of the spring, N m^-p; "
@@ -31,9 +32,7 @@ static const struct hb_law_param hertz_params[NPAR] = {
 static double
 hertz_phi(const double *par, int ext, double xc, const double *z, double v)
 {
-	(void)z;
-	(void)v;
-	return par[K] * spow(law_ext_x(ext, xc), par[P]);
+	return law_hertz_phi(par, ext, xc, z, v);
 }
 
 /* Columns (x_c, v). */
@@ -44,8 +43,7 @@ hertz_jac(const double *par, int ext, double xc, const double *z, double v,
 	(void)z;
 	(void)v;
 	(void)dpsi;
-	dphi[0] = law_ext_dx(ext, xc, par[K] * dspow(xc, par[P]));
-	dphi[1] = 0.0;
+	law_hertz_dphi(par, ext, xc, dphi);
 }
 
 const struct hb_law_type hb_law_hertz = {

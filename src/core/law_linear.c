@@ -19,8 +19,9 @@
 #include "hybounce/law.h"
 
 #include "law_common.h"
+#include "law_terms.h"
 
-enum { K, NPAR };
+enum { K = LAW_LINEAR_K, NPAR = LAW_LINEAR_NPAR };
 
 static const struct hb_law_param linear_params[NPAR] = {
 	[K] = { "k", { .kg = 1, .s = -2 }, LAW_RANGE_POSITIVE, 1e5, 0,
@@ -30,9 +31,7 @@ static const struct hb_law_param linear_params[NPAR] = {
 static double
 linear_phi(const double *par, int ext, double xc, const double *z, double v)
 {
-	(void)z;
-	(void)v;
-	return par[K] * law_ext_x(ext, xc);
+	return law_linear_phi(par, ext, xc, z, v);
 }
 
 /* Columns (x_c, v). */
@@ -43,8 +42,7 @@ linear_jac(const double *par, int ext, double xc, const double *z, double v,
 	(void)z;
 	(void)v;
 	(void)dpsi;
-	dphi[0] = law_ext_dx(ext, xc, par[K]);
-	dphi[1] = 0.0;
+	law_linear_dphi(par, ext, xc, dphi);
 }
 
 const struct hb_law_type hb_law_linear = {

@@ -19,8 +19,9 @@
 #include "hybounce/law.h"
 
 #include "law_common.h"
+#include "law_terms.h"
 
-enum { K, P, C, NPAR };
+enum { K = LAW_SHCCL_K, P = LAW_SHCCL_P, C = LAW_SHCCL_C, NPAR = LAW_SHCCL_NPAR };
 
 static const struct hb_law_param shccl_params[NPAR] = {
 	[K] = LAW_PARAM_K(4.254e8, "stiffness of the Hertz term, N m^-p; "
@@ -32,11 +33,7 @@ static const struct hb_law_param shccl_params[NPAR] = {
 static double
 shccl_phi(const double *par, int ext, double xc, const double *z, double v)
 {
-	double p = par[P];
-
-	(void)z;
-	xc = law_ext_x(ext, xc);
-	return par[K] * spow(xc, p) + par[C] * apow(xc, p) * v;
+	return law_shccl_phi(par, ext, xc, z, v);
 }
 
 /* Columns (x_c, v). */
@@ -46,7 +43,7 @@ shccl_jac(const double *par, int ext, double xc, const double *z, double v,
 {
 	(void)z;
 	(void)dpsi;
-	law_hc_jac(ext, par[K], par[C], par[P], xc, v, &dphi[0], &dphi[1]);
+	law_shccl_dphi(par, ext, xc, v, dphi);
 }
 
 const struct hb_law_type hb_law_shccl = {

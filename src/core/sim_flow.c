@@ -46,8 +46,8 @@ hbs_unscale(const struct phase *p, const double *u, double *y)
  * Returns GSL_FAILURE (a plain error: the evolver halves the step) when a
  * trial stage is not finite.
  */
-static int
-rhs(double t, const double u[], double du[], void *params)
+int
+hbs_rhs(double t, const double u[], double du[], void *params)
 {
 	struct phase *p = params;
 	struct hb_sim *s = p->s;
@@ -216,7 +216,9 @@ hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
 	p->s = s;
 	p->q = q;
 	make_layout(sc, s->I, q, &p->L);
-	p->sys = (gsl_odeiv2_system){ rhs, hbs_jacobian, (size_t)p->L.dim, p };
+	p->sys = (gsl_odeiv2_system){ hbs_rhs_special(s, p), hbs_jacobian, (size_t)p->L.dim, p };
+	if (p->sys.function == NULL)
+		p->sys.function = hbs_rhs;
 	p->d = gsl_odeiv2_driver_alloc_standard_new(&p->sys, T, 1e-6, sc->run.atol,
 	                                            sc->run.rtol, 1.0, 0.0);
 	p->loc = gsl_odeiv2_driver_alloc_standard_new(&p->sys, TL, 1e-6, sc->run.atol,

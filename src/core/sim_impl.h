@@ -438,4 +438,14 @@ hbs_after_step(struct hb_sim *s, int load_kink);
 int
 hbs_stiffness(struct hb_sim *s);
 
+/*
+ * sim_rhs.c: the right-hand side specialised for the scene's law and the
+ * phase's layout, or NULL where the general one of sim_flow.c stays.
+ */
+typedef int hbs_rhs_fn(double t, const double u[], double du[], void *params);
+hbs_rhs_fn *
+hbs_rhs_special(const struct hb_sim *s, const struct phase *p);
+/* ... the general one (sim_flow.c), for any scene: the same doubles */
+hbs_rhs_fn hbs_rhs;
+
 #endif

@@ -9,6 +9,16 @@
 #include "sim_impl.h"
 
 /*
+ * fmax of two numbers >= 0 or NaN, inline (fmax is a call into libm): the
+ * other where one is NaN, as fmax.
+ */
+static inline double
+max_abs(double a, double b)
+{
+	return isnan(a) ? b : (a < b ? b : a);
+}
+
+/*
  * The cubic Hermite interpolant of the step (t0, u0) -> (t0 + H, u1) from
  * the derivatives at its ends, at t0 + h.  Fourth-order: it only guides the
  * location of a crossing for a stepper without a continuous extension
@@ -75,7 +85,9 @@ restep(struct hb_sim *s, double h, double *u)
 			return 0;
 		}
 	memcpy(u, s->u0, sizeof s->u0);
-	gsl_odeiv2_step_reset(p->loc->s);
+	/* (GSL's rk8pd keeps nothing from one step to the next: its apply evaluates f at the start) */
+	if (p->loc->s->type != gsl_odeiv2_step_rk8pd)
+		gsl_odeiv2_step_reset(p->loc->s);
 	rc = gsl_odeiv2_step_apply(p->loc->s, s->t0, h, u, yerr, NULL, NULL, &p->sys);
 	if (rc != GSL_SUCCESS)
 		return rc;
@@ -545,7 +557,7 @@ hbs_after_step(struct hb_sim *s, int load_kink)
 		}
 	}
 	for (i = 0; i < n; i++)
-		s->gmax[i] = fmax(s->gmax[i], fmax(fabs(f0[i]), fabs(f1[i])));
+		s->gmax[i] = max_abs(s->gmax[i], max_abs(fabs(f0[i]), fabs(f1[i])));
 	if (ncand == 0) {
 		/*
 		 * GSL's evolve hands the derivative at the step's end to the next
