@@ -112,8 +112,8 @@ fi
 
 # ---- preset picker, restart ---------------------------------------------------------
 keys a o
-if wait_for a 'open a preset' 30 && wait_for a 'hertz-elastic' 10 && wait_for a 'ptfe-pom' 10; then
-	keys a Up Enter
+if wait_for a 'open a preset' 30 && wait_for a 'ptfe-pom' 10; then
+	picker_up a ptfe-pom && keys a Enter
 	if wait_for a '^ ptfe-pom ' 50 && wait_for a 'opened .*ptfe-pom\.preset' 10; then
 		ok "o opens the preset picker; Enter loads ptfe-pom"
 	else

@@ -83,9 +83,9 @@ for a in LANG=de_DE.UTF-8 LC_ALL=fr_FR.UTF-8 LANG=tr_TR.UTF-8; do
 		ok "$a: the default preset runs, plots in Braille (UTF-8 from the locale), t with a dot on the status line"
 	else notok "$a: the default preset runs with Braille plots and a dot in t" $s; fi
 
-	# o: a shipped preset (ptfe-pom is just above the current steel-on-bitumen)
+	# o: a shipped preset (ptfe-pom is above the current steel-on-bitumen)
 	keys $s o
-	if wait_for $s 'open a preset' 30 && keys $s Up && keys $s Enter &&
+	if wait_for $s 'open a preset' 30 && picker_up $s ptfe-pom && keys $s Enter &&
 	    wait_for $s '^ ptfe-pom bwshccl ' 50 && wait_for $s ' finished$' 150; then
 		ok "$a: o opens the shipped preset ptfe-pom"
 	else notok "$a: o opens the shipped preset ptfe-pom" $s; fi
