@@ -11,7 +11,6 @@
 #include <time.h>
 
 #include "canvas.h"
-#include "scene_chain.h" /* each body's half-length, as the engine binds it (src/core) */
 #include "spacetime.h"
 #include "status.h"
 #include "tui.h"
@@ -78,14 +77,15 @@ st_build(struct spacetime *st, const struct hb_sim *src)
 		return -1;
 	}
 	/*
-	 * Half-lengths: a chain's bodies as the engine binds them; the two-body
-	 * scenes' positions are measured so that the gap is their difference.
+	 * Half-lengths: a chain's bodies as the engine binds them (hb_sim_body);
+	 * the two-body scenes' positions are measured so that the gap is their
+	 * difference.
 	 */
 	if (sc->chain.n > 0) {
 		for (int b = 0; b < st->nb; b++) {
-			struct scene_chain_body cb;
-			if (scene_chain_body(sc, b, &cb) == HB_OK)
-				st->R[b] = cb.R;
+			struct hb_sim_body hb;
+			if (hb_sim_body(st->sh, b, &hb) == HB_OK)
+				st->R[b] = hb.R;
 		}
 		st->k0 = sc->chain.floor ? 0 : 1;
 	} else {
