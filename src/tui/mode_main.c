@@ -25,7 +25,7 @@ static void act_help(struct app *a) { mode_push(a, &mode_help); }
 static void act_redraw(struct app *a) { clear(); app_relayout(a); }
 
 static const struct mode_key keys[] = {
-	{ '?', KEY_F(1), CTX_ANY, act_help, "? F1", "show this help (Up/Down scroll, any other key closes it)", "help" },
+	{ '?', KEY_F(1), CTX_ANY, act_help, "? F1", "show this help (its title says how to scroll and close it)", "help" },
 	{ 'q', KEY_F(10), CTX_ANY, act_quit, "q F10", "quit, restoring the terminal", "quit" },
 	{ ' ', 0, CTX_ANY, act_play, "space", "play / pause the cursor (the run computes ahead either way)", "play" },
 	{ '.', 0, CTX_ANY, act_step_fwd, ".", "step the cursor one sample forward (pauses)", NULL },
