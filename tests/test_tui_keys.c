@@ -151,7 +151,7 @@ Test(keys, footer_fits)
 	keys_footer(&mode_sweep, CTX_CURVE, buf, sizeof buf, 79);
 	cr_assert_str_eq(buf, "o:obs <>:collision r:range L:law b:bounds p:pin m:map e:export q:close ?:keys");
 	keys_footer(&mode_sweep, CTX_MAP, buf, sizeof buf, 79);
-	cr_assert_str_eq(buf, "o:obs <>:collision m:curve e:export q:close ?:keys");
+	cr_assert_str_eq(buf, "o:obs <>:collision m:curve r:shades e:export q:close ?:keys");
 	cr_assert(keys_has_footer(&mode_main) && !keys_has_footer(&mode_prompt));
 }
 
