@@ -85,7 +85,7 @@ static const struct mode_key keys[] = {
 	  "+- under the selected collision and in the readout", NULL },
 	{ 'e', 0, CTX_ANY, act_export, "e", "export BASE-trace.csv, BASE-collisions.csv and the scene BASE.preset", "export" },
 	{ 'f', 0, CTX_ANY, act_figure, "f",
-	  "save the view as a figure, PRESET-view.png (the plots as shown, the pins, the cursor; -2, -3 ... never over an earlier one)", NULL },
+	  "save the view as a figure, PRESET-view.png (the plots as shown, the pins, the cursor, or the space-time view while V shows it; -2, -3 ... never over an earlier one)", NULL },
 	{ 'S', 0, CTX_ANY, act_sweep, "S",
 	  "sweep view: the selected parameter over a range against e, v_i, x_c^r, collisions or t_pc, computed in the background; m in it maps two keys", NULL },
 	{ 'm', 0, CTX_ANY, act_log, "m", "the message log: every message, whole", "log" },

@@ -3,12 +3,14 @@
 # The space-time view (V) in tmux at 80x24, in ASCII: on a Newton's cradle
 # of five balls 10 mm apart it draws one line per body and marks each of
 # the four contacts with # at its interface, from the top down, and shows
-# the cursor's time (the status line's); on a chain of 100 it thins the
+# the cursor's time (the status line's); f saves that view as a PNG
+# figure (one panel: the bodies and the contacts); on a chain of 100 it thins the
 # lines and says so, and still marks the contacts; V again gives the
 # plots back; K shows x, x_c and F_c of one interface at a time (k= on
 # the status line), then the run's own; the key is in the help; quitting
 # exits 0.
 . "$(dirname "$0")/common.inc"
+PY="$(pwd)/tests/cli/plot_png.py"
 
 cat >"$TMP/cradle.preset" <<'P'
 [scene]
@@ -59,6 +61,22 @@ if wait_for a '^ cradle hertz t=60 ms ' 30 && wait_for a '^ +space-time: .*; t =
 	ok "the title shows the cursor's time (End: 60 ms, as on the status line)"
 else
 	notok "the title shows the cursor's time (End: 60 ms, as on the status line)" a
+fi
+# f saves the space-time view shown: one panel, the bodies, the contacts, the cursor
+keys a f
+png=$TMP/cradle-view.png
+if wait_for a '^wrote cradle-view\.png: the space-time view \(5 bodies, 4 contacts, the cursor\)' 100 \
+   && [ -s "$png" ]; then
+	python3 "$PY" info "$png" >"$TMP/st-info.txt"
+	if grep -q '^panels 1$' "$TMP/st-info.txt" && [ "$(awk '$1 == "ink" { print $2 }' "$TMP/st-info.txt")" -gt 5000 ] \
+	   && grep -q '^legend_style 0 ' "$TMP/st-info.txt" && grep -q '^legend_style 1 ' "$TMP/st-info.txt"; then
+		ok "f saves the space-time view: one panel, the bodies' and the contacts' styles in the legend"
+	else
+		notok "f saves the space-time view: one panel, both styles in the legend"
+		grep -v frame "$TMP/st-info.txt" | sed 's/^/#   /'
+	fi
+else
+	notok "f saves the space-time view (the message, the file)" a
 fi
 keys a V
 if wait_for a '^ +(whole run|follow the cursor)' 30 && wait_for a '^space-time view off' 30; then
