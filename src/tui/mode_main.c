@@ -53,6 +53,8 @@ static const struct mode_key keys[] = {
 	  "space-time view on / off: every body's position against t, # at each contact of each interface, the cursor's time", NULL },
 	{ 'K', 0, CTX_ANY, act_iface, "K",
 	  "a chain's next interface k for the plots (x, x_c, F_c of k; k= in the status line), then each interval's own", NULL },
+	{ 'B', 0, CTX_ANY, act_body, "B",
+	  "the next body for the plots (its position y and velocity u; b= in the status line, 1 the lowest), then the run's own", NULL },
 	{ '\t', 0, CTX_ANY, act_focus, "Tab", "switch the focus: collisions table / parameter panel", "params" },
 	{ KEY_UP, 'k', CTX_ANY, act_up, "Up k", "previous row of the focused table", NULL },
 	{ KEY_DOWN, 'j', CTX_ANY, act_down, "Down j", "next row of the focused table", NULL },
