@@ -234,10 +234,9 @@ pane_map_draw(const struct app *a, const struct mode *self)
 	 */
 	for (int p = 0; p < a->npins; p++) {
 		int c, r = scene_cell(m, hb_sim_scene(a->pin[p].sim), ch, cw, &c);
-		char d[4];
+		char d[2] = { (char)('1' + p % 9), 0 }; /* APP_MAX_PINS < 10 */
 		if (r < 0)
 			continue;
-		snprintf(d, sizeof d, "%d", p + 1);
 		tui_puts(top + 1 + r, MLM + c, 1, d, A_BOLD | A_REVERSE);
 		npin_on++;
 	}
