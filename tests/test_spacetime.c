@@ -179,3 +179,48 @@ Test(spacetime, reduced_system_thinned_arc)
 	}
 	app_off(a);
 }
+
+/*
+ * B: the body whose y and u the plots show.  st_u_at is the derivative of
+ * st_y_at's cubic: the recorded velocity at each record, and in free
+ * flight (no load here) the constant velocity between records; B cycles
+ * the bodies, then the run's own, and K takes an interface instead.
+ */
+Test(spacetime, body_velocity_and_cycle)
+{
+	struct app *a = app_on("n = 3\nspacing = 1 mm", 0.01);
+	const struct spacetime *st = a->st;
+	size_t nb = (size_t)st->nb, hint = 0;
+	char buf[16];
+
+	cr_assert_eq(st->nb, 3);
+	for (size_t k = 0; k < st->nrec; k++)
+		for (int b = 0; b < st->nb; b++) {
+			double u = st->u[k * nb + (size_t)b];
+			cr_assert(fabs(st_u_at(st, b, st->t[k], &hint) - u) <= 1e-9 * (1 + fabs(u)),
+			          "record %zu body %d", k, b);
+		}
+	/* between two records in flight: the mean velocity (y1 - y0) / h */
+	for (size_t k = 0; k + 1 < st->nrec; k++) {
+		double h = st->t[k + 1] - st->t[k], t = st->t[k] + 0.37 * h;
+		double u0 = st->u[k * nb + 2], u1 = st->u[(k + 1) * nb + 2];
+		if (!(h > 0) || fabs(u0 - u1) > 1e-12)
+			continue;
+		cr_assert(fabs(st_u_at(st, 2, t, &hint) - u0) <= 1e-9, "between records %zu and %zu", k, k + 1);
+	}
+	cr_assert_eq(spacetime_body(a), -1);
+	for (int b = 0; b < 3; b++) {
+		act_body(a);
+		cr_assert_eq(spacetime_body(a), b);
+		cr_assert_eq(spacetime_iface(a), -1);
+		snprintf(buf, sizeof buf, " b=%d", b + 1);
+		cr_assert_str_eq(spacetime_state(a, buf + 8, 8), buf);
+	}
+	act_body(a);
+	cr_assert_eq(spacetime_body(a), -1, "after the last body: the run's own");
+	act_body(a);
+	act_iface(a);
+	cr_assert_eq(spacetime_body(a), -1, "K takes an interface instead of the body");
+	cr_assert_geq(spacetime_iface(a), 0);
+	app_off(a);
+}

@@ -74,8 +74,15 @@ Test(keys, every_binding_reachable)
 		int ctx[4], nc = contexts(m, ctx);
 		for (size_t i = 0; i < m->nkeys; i++) {
 			const struct mode_key *b = &m->keys[i];
-			cr_assert(b->fn != NULL, "%s: %s has no function", m->name, b->label);
 			cr_assert(b->help && b->help[0] && b->label && b->label[0]);
+			if (b->key == 0) {
+				/* "any other key" in a context: the mode's loop acts on it, no lookup finds it */
+				cr_assert(b->fn == NULL && strcmp(b->label, "other key") == 0, "%s: %s", m->name,
+				          b->help);
+				cr_assert_null(mode_binding(m, 0, b->ctx));
+				continue;
+			}
+			cr_assert(b->fn != NULL, "%s: %s has no function", m->name, b->label);
 			for (int c = 0; c < nc; c++) {
 				if (b->ctx != CTX_ANY && b->ctx != ctx[c])
 					continue;
@@ -113,6 +120,8 @@ Test(keys, names_round_trip)
 		for (size_t i = 0; i < m->nkeys; i++) {
 			char lab[64], *save, *tok;
 			int has1 = 0, has2 = m->keys[i].key2 == 0;
+			if (m->keys[i].key == 0)
+				continue; /* "other key" (every_binding_reachable) */
 			snprintf(lab, sizeof lab, "%s", m->keys[i].label);
 			for (tok = strtok_r(lab, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
 				int c = keys_from_name(tok);
@@ -142,8 +151,55 @@ Test(keys, footer_fits)
 	keys_footer(&mode_sweep, CTX_CURVE, buf, sizeof buf, 79);
 	cr_assert_str_eq(buf, "o:obs <>:collision r:range L:law b:bounds p:pin m:map e:export q:close ?:keys");
 	keys_footer(&mode_sweep, CTX_MAP, buf, sizeof buf, 79);
-	cr_assert_str_eq(buf, "o:obs <>:collision m:curve e:export q:close ?:keys");
-	cr_assert(keys_has_footer(&mode_main) && !keys_has_footer(&mode_help));
+	cr_assert_str_eq(buf, "o:obs <>:collision m:curve r:shades e:export q:close ?:keys");
+	cr_assert(keys_has_footer(&mode_main) && !keys_has_footer(&mode_prompt));
+}
+
+/*
+ * The hints in the titles of the help, the log, the pickers and the data
+ * table, and the demo's footer, are printed from the modes' tables.
+ */
+Test(keys, hints_from_tables)
+{
+	char buf[256];
+
+	cr_assert_str_eq(keys_hint(&mode_help, CTX_ANY, buf, sizeof buf),
+	                 "Up/Down/PgUp/PgDn scroll, any other key closes");
+	cr_assert_str_eq(keys_hint(&mode_log, CTX_ANY, buf, sizeof buf),
+	                 "Up/Down/PgUp/PgDn scroll, any other key closes");
+	cr_assert_str_eq(keys_hint(&mode_preset, CTX_ANY, buf, sizeof buf), "Enter opens, Esc closes");
+	cr_assert_str_eq(keys_hint(&mode_law, CTX_ANY, buf, sizeof buf), "Enter chooses, Esc closes");
+	cr_assert_str_eq(keys_hint(&mode_fit, CTX_ANY, buf, sizeof buf),
+	                 "Up/Down scroll, F fits, any other key closes");
+	cr_assert_str_eq(keys_hint(&mode_demo, CTX_DEMO_PLAY, buf, sizeof buf), "any key pauses, q quits");
+	cr_assert_str_eq(keys_hint(&mode_demo, CTX_DEMO_PAUSED, buf, sizeof buf), "any key resumes, q quits");
+	cr_assert_str_eq(keys_hint(&mode_demo, CTX_DEMO_KEY, buf, sizeof buf), "any key goes on, q quits");
+	cr_assert_str_eq(keys_hint(&mode_demo, CTX_DEMO_END, buf, sizeof buf), "q quits");
+	/* a binding not in the hint's context is left out; an empty table gives "" */
+	cr_assert_str_eq(keys_hint(&mode_prompt, CTX_ANY, buf, sizeof buf), "");
+}
+
+/* The help's labels line up in each mode's list, however long the longest. */
+Test(keys, help_labels_aligned)
+{
+	for (size_t k = 0; tui_modes[k] != NULL; k++) {
+		const struct mode *m = tui_modes[k];
+		char help[8192], *line, *save;
+		int w = keys_label_width(m), col = -1;
+		cr_assert(keys_help(m, help, sizeof help) < sizeof help);
+		cr_assert_geq(w, 9);
+		for (line = strtok_r(help, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+			if (m->opener != NULL && strncmp(line, "In ", 3) == 0)
+				continue;
+			/* the text starts one column after the label's field: a blank before, none there */
+			cr_assert(line[w] == ' ' && line[w + 1] != ' ', "mode %s: '%s' not at column %d",
+			          m->name, line, w + 1);
+			col = w + 1;
+		}
+		cr_assert_gt(col, 0);
+	}
+	/* the longest labels are wider than the old 9 columns */
+	cr_assert_eq(keys_label_width(&mode_help), (int)strlen("PgDn space"));
 }
 
 /*
@@ -156,6 +212,13 @@ holds_every_key(const char *where, const char *gen, const struct mode *m,
 {
 	for (size_t i = 0; i < m->nkeys; i++) {
 		char lab[64], *save, *tok;
+		if (m->keys[i].key == 0) {
+			cr_assert(strstr(gen, "any other key") != NULL || where[0] == 'h',
+			          "%s: mode %s's other key missing", where, m->name);
+			cr_assert(strstr(gen, m->keys[i].help + 1) != NULL, "%s: '%s' of mode %s missing",
+			          where, m->keys[i].help, m->name);
+			continue;
+		}
 		snprintf(lab, sizeof lab, "%s", m->keys[i].label);
 		for (tok = strtok_r(lab, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
 			char f[6][80];

@@ -175,12 +175,14 @@ hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out);
  * reduced one, chain.n in a chain.  hb_sim_body fills *out with body i's
  * (0-based) mass, position and velocity at the last sample (positions of
  * the two-body scenes are measured so that the gap is their difference)
- * and returns HB_OK, or HB_EINVAL for a bad index.
+ * and its half-length, and returns HB_OK, or HB_EINVAL for a bad index.
+ * A chain's gap between bodies i and i + 1 is (y[i+1] - R[i+1]) - (y[i] + R[i]).
  */
 struct hb_sim_body {
 	double m;  /* kg */
 	double y;  /* m, position of its centre */
 	double u;  /* m/s */
+	double R;  /* m, half-length along the axis (a chain's radius); 0 in the two-body scenes */
 };
 
 int

@@ -327,6 +327,7 @@ hb_sim_body(const struct hb_sim *s, int i, struct hb_sim_body *out)
 	if (i < 0 || i >= s->nbody)
 		return HB_EINVAL;
 	out->m = s->body[i].m;
+	out->R = s->body[i].l;
 	hbs_body_at(s, i, &out->y, &out->u);
 	return HB_OK;
 }

@@ -6,7 +6,8 @@
  * view's range, or against j, or the hysteresis loop of the zoomed
  * collision), every run drawn (the pinned ones and the current one, each
  * in its style and labelled by what differs), the current run's contacts
- * shaded, and the cursor as a vertical line (a point on the loop).
+ * shaded, and the cursor as a vertical line (a point on the loop).  While
+ * the space-time view (V) is shown, that view (figure_spacetime.c).
  *
  * The file is PRESET-view.png in the working folder; a second save writes
  * PRESET-view-2.png (tui_unused_name), the output policy (outputs.h)
@@ -22,10 +23,12 @@
 #include "outputs.h"
 #include "status.h"
 #include "units.h"
+#include "figure.h"
+#include "spacetime.h"
 #include "tui.h"
 #include "../cli/plot_cairo.h"
 
-enum { FIG_DPI = 150, CURSOR_STYLE = 6 /* black, dot-dash */ };
+enum { FIG_DPI = 150 };
 
 static const char *const qname[3] = { "x", "x_c", "F_c" };
 static const char *const qbase[3] = { "m", "m", "N" };
@@ -156,7 +159,7 @@ build_time(const struct app *a, struct plot_figure *f, double t0, double t1, dou
 			/* the cursor: a vertical line over the data's range */
 			double cx[2] = { tcur, tcur }, cy[2] = { lo, hi };
 
-			if (plot_series_add(p, "", cx, cy, 2, CURSOR_STYLE, 1, 0) != 0)
+			if (plot_series_add(p, "", cx, cy, 2, FIG_CURSOR_STYLE, 1, 0) != 0)
 				return -1;
 		}
 		if (a->view != VIEW_J && add_contacts(a, p, t0, t1) != 0)
@@ -171,7 +174,7 @@ build_time(const struct app *a, struct plot_figure *f, double t0, double t1, dou
 	if (a->view != VIEW_J)
 		plot_legend_add(f, "contact (q_c = 1)", -1, 0, 0);
 	if (isfinite(tcur))
-		plot_legend_add(f, cursor_label, CURSOR_STYLE, 1, 0);
+		plot_legend_add(f, cursor_label, FIG_CURSOR_STYLE, 1, 0);
 	return 0;
 }
 
@@ -244,9 +247,9 @@ build_loop(const struct app *a, struct plot_figure *f, const char *cursor_label)
 		if (col != NULL && c->j == col->j) {
 			double cx = c->xc, cy = c->Fc;
 
-			if (plot_series_add(p, "", &cx, &cy, 1, CURSOR_STYLE, 0, 1) != 0)
+			if (plot_series_add(p, "", &cx, &cy, 1, FIG_CURSOR_STYLE, 0, 1) != 0)
 				return -1;
-			plot_legend_add(f, cursor_label, CURSOR_STYLE, 0, 1);
+			plot_legend_add(f, cursor_label, FIG_CURSOR_STYLE, 0, 1);
 		}
 	}
 	if (!(xlo <= xhi))
@@ -276,7 +279,8 @@ act_figure(struct app *a)
 	char want[600], path[600], msg[512], tb[32], hw[128], cursor_label[64];
 	double t0, t1, tcur = NAN;
 	FILE *out;
-	int rc;
+	int rc, st_bodies = 0;
+	long st_contacts = 0;
 
 	if (hb_arc_len(hb_sim_arc(a->sim)) == 0) {
 		app_msg(a, 1, "figure: nothing computed yet");
@@ -303,7 +307,21 @@ act_figure(struct app *a)
 	}
 	cursor_clamp(a);
 	plot_view_range(a, &t0, &t1);
-	if (a->view == VIEW_LOOP) {
+	if (spacetime_on(a)) {
+		const struct hb_arc_sample *c = hb_arc_at(hb_sim_arc(a->sim), a->cursor);
+
+		hb_units_format(c->t, hb_unit_time, 4, tb, sizeof tb);
+		snprintf(cursor_label, sizeof cursor_label, "cursor, t = %s", tb);
+		plot_figure_init(f, 7 * 72, 5.5 * 72);
+		rc = figure_spacetime(a, f, c->t, cursor_label, &st_bodies, &st_contacts);
+		if (rc == 1) {
+			plot_figure_free(f);
+			free(f);
+			app_msg(a, 1, "figure not written: the space-time view has nothing to draw yet");
+			return;
+		}
+		snprintf(f->title, sizeof f->title, "%.26s: space-time", a->preset);
+	} else if (a->view == VIEW_LOOP) {
 		plot_figure_init(f, 5 * 72, 4.25 * 72);
 		snprintf(cursor_label, sizeof cursor_label, "cursor");
 		rc = build_loop(a, f, cursor_label);
@@ -335,6 +353,16 @@ act_figure(struct app *a)
 		if (rc != 0 && out != NULL)
 			hb_atomic_abort(&set);
 		app_msg(a, 1, "figure not written: %s", msg);
+	} else if (spacetime_on(a)) {
+		char of[32] = "";
+
+		if (st_bodies < a->st->nb)
+			snprintf(of, sizeof of, " of %d", a->st->nb);
+		app_msg(a, 0, "wrote %s%s: the space-time view (%d%s bod%s, %ld contact%s, the cursor)%s",
+		        path, how(&pol.out[0].target, hw, sizeof hw), st_bodies, of,
+		        st_bodies == 1 && !of[0] ? "y" : "ies",
+		        st_contacts, st_contacts == 1 ? "" : "s",
+		        strcmp(path, want) != 0 ? "; an earlier figure is kept" : "");
 	} else {
 		app_msg(a, 0, "wrote %s%s: the view as a figure (%d panel%s, %d run%s, the cursor)%s", path,
 		        how(&pol.out[0].target, hw, sizeof hw), f->npanels, f->npanels == 1 ? "" : "s",

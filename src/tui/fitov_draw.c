@@ -13,6 +13,7 @@
 
 #include "canvas.h"
 #include "fitov.h"
+#include "keys.h"
 #include "units.h"
 
 int
@@ -157,7 +158,6 @@ fitov_draw(const struct app *a, const struct mode *self)
 	struct rect in;
 	char line[512], what[320], m[32], s[32], dlt[32];
 
-	(void)self;
 
 	if (f == NULL || h < 6 || w < 40)
 		return;
@@ -205,6 +205,5 @@ fitov_draw(const struct app *a, const struct mode *self)
 		snprintf(line, sizeof line, "%5zu %5s %-8s %12s %12s %12s", p->row, trial, obs, m, s, dlt);
 		tui_puts(y++, in.x, in.w, line, 0);
 	}
-	tui_puts(in.y + in.h - 1, in.x, in.w,
-	         "Up/Down scroll, F fits, any other key closes", A_DIM);
+	tui_puts(in.y + in.h - 1, in.x, in.w, keys_hint(self, CTX_ANY, line, sizeof line), A_DIM);
 }

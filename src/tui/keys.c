@@ -81,10 +81,83 @@ heading(const struct mode *m, char *buf, size_t n, const char *q)
 	textbuf_printf(&t, "%s", "):");
 }
 
+/* How a binding's keys are written in a hint: its first key, or "any key" (key 0). */
+static void
+hint_key(const struct mode_key *b, char *k, size_t n)
+{
+	const char *colon = strchr(b->footer, ':');
+
+	if (b->key == 0)
+		snprintf(k, n, "%s", "any key");
+	else if (colon != NULL)
+		snprintf(k, n, "%.*s", (int)(colon - b->footer), b->footer);
+	else {
+		snprintf(k, n, "%s", b->label);
+		k[strcspn(k, " ")] = 0;
+	}
+}
+
+static const char *
+hint_word(const struct mode_key *b)
+{
+	const char *colon = strchr(b->footer, ':');
+
+	return colon != NULL ? colon + 1 : b->footer;
+}
+
+char *
+keys_hint(const struct mode *m, int ctx, char *buf, size_t n)
+{
+	struct textbuf t = { buf, n, 0 };
+	int first = 1;
+
+	if (n > 0)
+		buf[0] = 0;
+	/* one entry per word, its keys joined by '/', in the order of their first binding */
+	for (size_t i = 0; i < m->nkeys; i++) {
+		const struct mode_key *b = &m->keys[i];
+		int seen = 0, keys = 0;
+		char k[48];
+		if (b->footer == NULL || (b->ctx != CTX_ANY && b->ctx != ctx))
+			continue;
+		for (size_t j = 0; j < i && !seen; j++)
+			seen = m->keys[j].footer != NULL && (m->keys[j].ctx == CTX_ANY || m->keys[j].ctx == ctx)
+			       && strcmp(hint_word(&m->keys[j]), hint_word(b)) == 0;
+		if (seen)
+			continue;
+		textbuf_printf(&t, "%s", first ? "" : ", ");
+		first = 0;
+		for (size_t j = i; j < m->nkeys; j++) {
+			const struct mode_key *c = &m->keys[j];
+			if (c->footer == NULL || (c->ctx != CTX_ANY && c->ctx != ctx)
+			    || strcmp(hint_word(c), hint_word(b)) != 0)
+				continue;
+			hint_key(c, k, sizeof k);
+			textbuf_printf(&t, "%s%s", keys++ ? "/" : "", k);
+		}
+		textbuf_printf(&t, " %s", hint_word(b));
+	}
+	if (m->other_hint != NULL)
+		textbuf_printf(&t, "%sany other key %s", first ? "" : ", ", m->other_hint);
+	return buf;
+}
+
+int
+keys_label_width(const struct mode *m)
+{
+	int w = 9; /* "other key" */
+
+	for (size_t i = 0; i < m->nkeys; i++)
+		if ((int)strlen(m->keys[i].label) > w)
+			w = (int)strlen(m->keys[i].label);
+	return w;
+}
+
 size_t
 keys_help(const struct mode *m, char *buf, size_t n)
 {
 	struct textbuf t = { buf, n, 0 };
+	int w = keys_label_width(m);
 	char h[160];
 
 	if (n > 0)
@@ -93,9 +166,9 @@ keys_help(const struct mode *m, char *buf, size_t n)
 	if (h[0])
 		textbuf_printf(&t, "%s\n", h);
 	for (size_t i = 0; i < m->nkeys; i++)
-		textbuf_printf(&t, "%-9s %s\n", m->keys[i].label, m->keys[i].help);
+		textbuf_printf(&t, "%-*s %s\n", w, m->keys[i].label, m->keys[i].help);
 	if (m->other_help != NULL)
-		textbuf_printf(&t, "%-9s %s\n", "other key", m->other_help);
+		textbuf_printf(&t, "%-*s %s\n", w, "other key", m->other_help);
 	return t.len;
 }
 
@@ -113,7 +186,9 @@ man_list(struct textbuf *t, const struct mode *m)
 		const struct mode_key *b = &m->keys[i];
 		char lab[64], *p, *tok;
 		textbuf_printf(t, "%s", ".It");
-		snprintf(lab, sizeof lab, "%s", b->label);
+		snprintf(lab, sizeof lab, "%s", b->key == 0 ? "" : b->label);
+		if (b->key == 0)
+			textbuf_printf(t, "%s", " any other key");
 		/* each key as Ic, "Left h" reads ".It Ic Left , Ic h" */
 		for (tok = strtok_r(lab, " ", &p); tok; tok = strtok_r(NULL, " ", &p)) {
 			if (tok != lab)
@@ -170,8 +245,8 @@ md_list(struct textbuf *t, const struct mode *m)
 	for (size_t i = 0; i < m->nkeys; i++) {
 		const struct mode_key *b = &m->keys[i];
 		char lab[64], *p, *tok;
-		textbuf_printf(t, "%s", "|");
-		snprintf(lab, sizeof lab, "%s", b->label);
+		textbuf_printf(t, "%s", b->key == 0 ? "| any other key" : "|");
+		snprintf(lab, sizeof lab, "%s", b->key == 0 ? "" : b->label);
 		for (tok = strtok_r(lab, " ", &p); tok; tok = strtok_r(NULL, " ", &p)) {
 			textbuf_printf(t, "%s", tok == lab ? " `" : ", `");
 			/* a | inside a table cell ends the cell */

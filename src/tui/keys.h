@@ -24,9 +24,22 @@ int
 keys_has_footer(const struct mode *m);
 
 /*
+ * The hint of mode m in context ctx, for its title or footer: its
+ * bindings' footer words, each after its keys ("Up/Down/PgUp/PgDn scroll,
+ * Enter opens"; a key 0 binding is "any key"), then ", any other key"
+ * and its other_hint.  Returns buf.
+ */
+char *
+keys_hint(const struct mode *m, int ctx, char *buf, size_t n);
+
+/* The column the help's key labels of mode m take: its longest label, at least 9. */
+int
+keys_label_width(const struct mode *m);
+
+/*
  * The help's lines of mode m, each ending in a newline: its heading ("In
  * the sweep view (S):"; none for the explorer), then "LABEL     what it
- * does" for each key, then what any other key does.  Returns the length
+ * does" for each key (the labels padded to keys_label_width), then what any other key does.  Returns the length
  * needed (like snprintf).
  */
 size_t

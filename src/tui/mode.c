@@ -67,6 +67,8 @@ mode_binding(const struct mode *m, int key, int ctx)
 {
 	for (size_t i = 0; i < m->nkeys; i++) {
 		const struct mode_key *b = &m->keys[i];
+		if (b->key == 0)   /* "any other key": the mode's loop acts on it */
+			continue;
 		if (b->key != key && (b->key2 == 0 || b->key2 != key))
 			continue;
 		if (b->ctx != CTX_ANY && b->ctx != ctx)

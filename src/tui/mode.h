@@ -30,17 +30,29 @@ struct app;
  * mode's contexts (its context()): the explorer's parameter panel has the
  * focus or not; the sweep view shows its curve or its map.
  */
-enum key_ctx { CTX_ANY = 0, CTX_PARAMS, CTX_NOT_PARAMS, CTX_CURVE, CTX_MAP };
+enum key_ctx {
+	CTX_ANY = 0, CTX_PARAMS, CTX_NOT_PARAMS, CTX_CURVE, CTX_MAP,
+	/* a --script demo on the real screen: playing, paused, at a wait-key, ended */
+	CTX_DEMO_PLAY, CTX_DEMO_PAUSED, CTX_DEMO_KEY, CTX_DEMO_END
+};
 
 typedef void mode_fn(struct app *a);
 
 struct mode_key {
-	int key, key2;          /* curses key codes; key2 0 when none */
+	/*
+	 * curses key codes; key2 0 when none.  key 0: "any other key" in ctx
+	 * (fn NULL; the mode's loop acts on it), written "any other key"
+	 */
+	int key, key2;
 	int ctx;                /* enum key_ctx */
 	mode_fn *fn;            /* what it does */
 	const char *label;      /* how the keys are written: "Left h", "space" */
 	const char *help;       /* what it does, one line */
-	/* the footer's word ("help": "?:help"), or "KEYS:word" to write the keys otherwise; NULL: none */
+	/*
+	 * the footer's word ("help": "?:help"), or "KEYS:word" to write the keys
+	 * otherwise; NULL: none.  The same words make the mode's hint
+	 * (keys_hint: "Up/Down scroll, Enter opens") in its title.
+	 */
 	const char *footer;
 };
 
@@ -52,6 +64,7 @@ struct mode {
 	size_t nkeys;
 	/* what any other key does, for the key lists ("closes it"); NULL: nothing */
 	const char *other_help;
+	const char *other_hint; /* the same in the mode's hint ("closes"); NULL: none */
 	void (*other)(struct app *a, int ch);   /* a key not in the table; NULL: ignored */
 	int passthrough;        /* a key not in the table goes to the mode beneath instead */
 	int (*context)(const struct app *a);    /* the enum key_ctx now; NULL: CTX_ANY */
@@ -67,7 +80,7 @@ struct mode {
 extern const struct mode *const tui_modes[];
 
 extern const struct mode mode_main, mode_help, mode_log, mode_law, mode_preset, mode_prompt,
-	mode_fit, mode_sweep, mode_present;
+	mode_fit, mode_sweep, mode_present, mode_demo;
 
 /* The stack (mode.c).  mode_push: m on top (enter); mode_pop: the top off (leave). */
 void mode_push(struct app *a, const struct mode *m);

@@ -52,11 +52,11 @@ fit_other(struct app *a, int ch)
 }
 
 static const struct mode_key keys[] = {
-	{ KEY_UP, 'k', CTX_ANY, fit_up, "Up k", "scroll up a row", NULL },
-	{ KEY_DOWN, 'j', CTX_ANY, fit_down, "Down j", "scroll down a row", NULL },
+	{ KEY_UP, 'k', CTX_ANY, fit_up, "Up k", "scroll up a row", "scroll" },
+	{ KEY_DOWN, 'j', CTX_ANY, fit_down, "Down j", "scroll down a row", "scroll" },
 	{ KEY_PPAGE, 0, CTX_ANY, fit_pgup, "PgUp", "scroll up 10 rows", NULL },
 	{ KEY_NPAGE, 0, CTX_ANY, fit_pgdn, "PgDn", "scroll down 10 rows", NULL },
-	{ 'F', 0, CTX_ANY, fit_start, "F", "close the table and fit (as F in the explorer)", NULL },
+	{ 'F', 0, CTX_ANY, fit_start, "F", "close the table and fit (as F in the explorer)", "fits" },
 };
 
 const struct mode mode_fit = {
@@ -65,6 +65,7 @@ const struct mode mode_fit = {
 	.opener = "M",
 	.keys = MODE_KEYS(keys),
 	.other_help = "closes the table",
+	.other_hint = "closes",
 	.other = fit_other,
 	.draw = fitov_draw,
 };

@@ -105,16 +105,17 @@ help_other(struct app *a, int ch)
 static void
 help_draw(const struct app *a, const struct mode *self)
 {
-	(void)self;
-	textov_draw(a, " hybounce keys (Up/Down PgUp/PgDn scroll, any other key closes) ", help_lines,
-	            a->help_top);
+	char title[160], hint[120];
+
+	snprintf(title, sizeof title, " hybounce keys (%s) ", keys_hint(self, CTX_ANY, hint, sizeof hint));
+	textov_draw(a, title, help_lines, a->help_top);
 }
 
 static const struct mode_key keys[] = {
-	{ KEY_UP, 'k', CTX_ANY, help_up, "Up k", "scroll up a line", NULL },
-	{ KEY_DOWN, 'j', CTX_ANY, help_down, "Down j", "scroll down a line", NULL },
-	{ KEY_PPAGE, 0, CTX_ANY, help_pgup, "PgUp", "scroll up a page", NULL },
-	{ KEY_NPAGE, ' ', CTX_ANY, help_pgdn, "PgDn space", "scroll down a page", NULL },
+	{ KEY_UP, 'k', CTX_ANY, help_up, "Up k", "scroll up a line", "scroll" },
+	{ KEY_DOWN, 'j', CTX_ANY, help_down, "Down j", "scroll down a line", "scroll" },
+	{ KEY_PPAGE, 0, CTX_ANY, help_pgup, "PgUp", "scroll up a page", "scroll" },
+	{ KEY_NPAGE, ' ', CTX_ANY, help_pgdn, "PgDn space", "scroll down a page", "scroll" },
 };
 
 const struct mode mode_help = {
@@ -123,6 +124,7 @@ const struct mode mode_help = {
 	.opener = "? F1",
 	.keys = MODE_KEYS(keys),
 	.other_help = "closes the help (the mouse wheel scrolls it)",
+	.other_hint = "closes",
 	.other = help_other,
 	.draw = help_draw,
 	.enter = help_enter,

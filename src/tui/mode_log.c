@@ -5,7 +5,9 @@
  * scroll; any other key closes it.
  */
 #include <curses.h>
+#include <stdio.h>
 
+#include "keys.h"
 #include "mode.h"
 #include "tui.h"
 
@@ -39,9 +41,11 @@ log_other(struct app *a, int ch)
 static void
 log_draw(const struct app *a, const struct mode *self)
 {
-	(void)self;
-	textov_draw(a, " messages, oldest first (Up/Down scroll, any other key closes) ", log_lines,
-	            a->log_top);
+	char title[160], hint[120];
+
+	snprintf(title, sizeof title, " messages, oldest first (%s) ",
+	         keys_hint(self, CTX_ANY, hint, sizeof hint));
+	textov_draw(a, title, log_lines, a->log_top);
 }
 
 void
@@ -51,10 +55,10 @@ act_log(struct app *a)
 }
 
 static const struct mode_key keys[] = {
-	{ KEY_UP, 'k', CTX_ANY, log_up, "Up k", "scroll up a line (to older messages)", NULL },
-	{ KEY_DOWN, 'j', CTX_ANY, log_down, "Down j", "scroll down a line", NULL },
-	{ KEY_PPAGE, 0, CTX_ANY, log_pgup, "PgUp", "scroll up a page", NULL },
-	{ KEY_NPAGE, ' ', CTX_ANY, log_pgdn, "PgDn space", "scroll down a page", NULL },
+	{ KEY_UP, 'k', CTX_ANY, log_up, "Up k", "scroll up a line (to older messages)", "scroll" },
+	{ KEY_DOWN, 'j', CTX_ANY, log_down, "Down j", "scroll down a line", "scroll" },
+	{ KEY_PPAGE, 0, CTX_ANY, log_pgup, "PgUp", "scroll up a page", "scroll" },
+	{ KEY_NPAGE, ' ', CTX_ANY, log_pgdn, "PgDn space", "scroll down a page", "scroll" },
 };
 
 const struct mode mode_log = {
@@ -63,6 +67,7 @@ const struct mode mode_log = {
 	.opener = "m",
 	.keys = MODE_KEYS(keys),
 	.other_help = "closes the log (the mouse wheel scrolls it)",
+	.other_hint = "closes",
 	.other = log_other,
 	.draw = log_draw,
 	.enter = log_enter,

@@ -25,7 +25,7 @@ static void act_help(struct app *a) { mode_push(a, &mode_help); }
 static void act_redraw(struct app *a) { clear(); app_relayout(a); }
 
 static const struct mode_key keys[] = {
-	{ '?', KEY_F(1), CTX_ANY, act_help, "? F1", "show this help (Up/Down scroll, any other key closes it)", "help" },
+	{ '?', KEY_F(1), CTX_ANY, act_help, "? F1", "show this help (its title says how to scroll and close it)", "help" },
 	{ 'q', KEY_F(10), CTX_ANY, act_quit, "q F10", "quit, restoring the terminal", "quit" },
 	{ ' ', 0, CTX_ANY, act_play, "space", "play / pause the cursor (the run computes ahead either way)", "play" },
 	{ '.', 0, CTX_ANY, act_step_fwd, ".", "step the cursor one sample forward (pauses)", NULL },
@@ -53,6 +53,8 @@ static const struct mode_key keys[] = {
 	  "space-time view on / off: every body's position against t, # at each contact of each interface, the cursor's time", NULL },
 	{ 'K', 0, CTX_ANY, act_iface, "K",
 	  "a chain's next interface k for the plots (x, x_c, F_c of k; k= in the status line), then each interval's own", NULL },
+	{ 'B', 0, CTX_ANY, act_body, "B",
+	  "the next body for the plots (its position y and velocity u; b= in the status line, 1 the lowest), then the run's own", NULL },
 	{ '\t', 0, CTX_ANY, act_focus, "Tab", "switch the focus: collisions table / parameter panel", "params" },
 	{ KEY_UP, 'k', CTX_ANY, act_up, "Up k", "previous row of the focused table", NULL },
 	{ KEY_DOWN, 'j', CTX_ANY, act_down, "Down j", "next row of the focused table", NULL },
@@ -85,7 +87,7 @@ static const struct mode_key keys[] = {
 	  "+- under the selected collision and in the readout", NULL },
 	{ 'e', 0, CTX_ANY, act_export, "e", "export BASE-trace.csv, BASE-collisions.csv and the scene BASE.preset", "export" },
 	{ 'f', 0, CTX_ANY, act_figure, "f",
-	  "save the view as a figure, PRESET-view.png (the plots as shown, the pins, the cursor; -2, -3 ... never over an earlier one)", NULL },
+	  "save the view as a figure, PRESET-view.png (the plots as shown, the pins, the cursor, or the space-time view while V shows it; -2, -3 ... never over an earlier one)", NULL },
 	{ 'S', 0, CTX_ANY, act_sweep, "S",
 	  "sweep view: the selected parameter over a range against e, v_i, x_c^r, collisions or t_pc, computed in the background; m in it maps two keys", NULL },
 	{ 'm', 0, CTX_ANY, act_log, "m", "the message log: every message, whole", "log" },

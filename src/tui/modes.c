@@ -19,5 +19,6 @@ const struct mode *const tui_modes[] = {
 	&mode_prompt,
 	&mode_fit,
 	&mode_sweep,
+	&mode_demo,
 	NULL,
 };

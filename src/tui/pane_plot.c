@@ -386,8 +386,9 @@ pane_plot_draw(const struct app *a)
 	static const char *vname[VIEW_COUNT] = { "whole run", "follow the cursor", "zoom",
 	                                         "loop", "against j" };
 
-	if (spacetime_on(a) || (spacetime_iface(a) >= 0 && a->view != VIEW_LOOP && a->view != VIEW_J)) {
-		(spacetime_on(a) ? pane_spacetime_draw : pane_iface_draw)(a);
+	if (spacetime_on(a)
+	    || ((spacetime_iface(a) >= 0 || spacetime_body(a) >= 0) && a->view != VIEW_LOOP && a->view != VIEW_J)) {
+		(spacetime_on(a) ? pane_spacetime_draw : spacetime_body(a) >= 0 ? pane_body_draw : pane_iface_draw)(a);
 		return;
 	}
 	if (a->view == VIEW_LOOP) {

@@ -320,9 +320,9 @@ pane_status_draw(const struct app *a)
 	r = &a->L.footer;
 	if (a->nmodes == 0) {
 		/* nothing open yet */
-	} else if (a->demo_hint != NULL) {
+	} else if (a->demo_ctx != 0) {
 		/* a demo on the real screen: what the viewer's keys do now */
-		tui_puts(r->y, 0, r->w, a->demo_hint, A_BOLD);
+		tui_puts(r->y, 0, r->w, demo_hint(a, foot, sizeof foot), A_BOLD);
 	} else {
 		/* the explorer's keys (the bottom mode); the sweep view draws its own */
 		keys_footer(a->mode[0], mode_context(a, a->mode[0]), foot, sizeof foot, r->w - 1);

@@ -15,8 +15,8 @@ static const struct mode_key keys[] = {
 	{ KEY_NPAGE, 0, CTX_ANY, pick_pgdn, "PgDn", "a page down", NULL },
 	{ KEY_HOME, 'g', CTX_ANY, pick_home, "Home g", "the first entry", NULL },
 	{ KEY_END, 'G', CTX_ANY, pick_end, "End G", "the last entry", NULL },
-	{ '\n', KEY_ENTER, CTX_ANY, pick_choose, "Enter", "open the preset selected (the pins are kept)", NULL },
-	{ 27, 'q', CTX_ANY, pick_close, "Esc q", "close, choosing nothing", NULL },
+	{ '\n', KEY_ENTER, CTX_ANY, pick_choose, "Enter", "open the preset selected (the pins are kept)", "opens" },
+	{ 27, 'q', CTX_ANY, pick_close, "Esc q", "close, choosing nothing", "closes" },
 };
 
 const struct mode mode_preset = {

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "keys.h"
 #include "law.h"
 #include "mode.h"
 #include "tui.h"
@@ -133,12 +134,15 @@ pickers_draw(const struct app *a, const struct mode *self)
 	int n = count(a), h, w, rows, drows, x0 = 3, y0 = 1, top = 0, i;
 	char line[512], d[2048];
 
-	(void)self;
 	geometry(a, &h, &w, &rows, &drows);
 	if (a->pick_sel >= rows)
 		top = a->pick_sel - rows + 1;
-	box_draw(y0, x0, h, w, a->pick_kind == PICK_PRESET ? " open a preset (Enter opens, Esc closes) "
-	                                               : " contact law (Enter chooses, Esc closes) ");
+	{
+		char title[160], hint[120];
+		snprintf(title, sizeof title, " %s (%s) ", a->pick_kind == PICK_PRESET ? "open a preset" : "contact law",
+		         keys_hint(self, CTX_ANY, hint, sizeof hint));
+		box_draw(y0, x0, h, w, title);
+	}
 	/* the text inside the border; a cut entry is whole in the details below */
 	x0++;
 	w -= 2;

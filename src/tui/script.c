@@ -33,7 +33,8 @@
  * is reported with its number and nothing runs (exit 2).  After each key
  * one frame of work is done, as in the interactive loop.  On the real
  * screen a key pressed by the viewer pauses the demo and another resumes
- * it, q quits, and the end waits: the explorer is the viewer's until q.
+ * it, q quits, and the end waits: the explorer is the viewer's until q
+ * (the viewer's keys are the demo mode's table, mode_demo.c).
  * Without a terminal the script ends at its last line, or at a `q` key.
  * The man page (SCRIPTS) documents this.
  */
@@ -319,12 +320,6 @@ bad:
 
 /* ---- playing ------------------------------------------------------------------- */
 
-/* What the footer says during a demo on the real screen (app.demo_hint). */
-static const char hint_playing[] = "demo: any key pauses, q quits";
-static const char hint_paused[] = "demo paused: any key resumes, q quits";
-static const char hint_key[] = "demo: any key goes on, q quits";
-static const char hint_end[] = "end of the demo: the explorer is yours (q quits)";
-
 /*
  * The viewer paused the demo: the cursor stops, the run keeps computing,
  * until a key resumes it (q quits).  Returns the seconds paused.
@@ -337,7 +332,7 @@ paused(struct app *a)
 	int ch;
 
 	a->playing = 0;
-	a->demo_hint = hint_paused;
+	a->demo_ctx = CTX_DEMO_PAUSED;
 	while (!term_signalled() && !a->quit) {
 		app_draw(a);
 		if ((ch = getch()) != ERR && ch != KEY_MOUSE) {
@@ -345,15 +340,14 @@ paused(struct app *a)
 				app_key(a, ch);
 				continue;
 			}
-			if (ch == 'q' || ch == 'Q')
-				a->quit = 1;
+			demo_viewer_key(a, ch);
 			break;
 		}
 		if (!app_tick(a))
 			nap();
 	}
 	a->playing = was;
-	a->demo_hint = hint_playing;
+	a->demo_ctx = CTX_DEMO_PLAY;
 	return clock_seconds(CLOCK_MONOTONIC) - t0;
 }
 
@@ -375,10 +369,8 @@ frame(struct app *a)
 		app_key(a, ch);
 		return 0;
 	}
-	if (ch == 'q' || ch == 'Q') {
-		a->quit = 1;
+	if (demo_viewer_key(a, ch))
 		return 0;
-	}
 	return paused(a);
 }
 
@@ -409,7 +401,7 @@ wait_key(struct app *a)
 
 	if (!a->script_live)
 		return;
-	a->demo_hint = hint_key;
+	a->demo_ctx = CTX_DEMO_KEY;
 	while (!term_signalled() && !a->quit) {
 		app_draw(a);
 		if ((ch = getch()) != ERR && ch != KEY_MOUSE) {
@@ -417,14 +409,13 @@ wait_key(struct app *a)
 				app_key(a, ch);
 				continue;
 			}
-			if (ch == 'q' || ch == 'Q')
-				a->quit = 1;
+			demo_viewer_key(a, ch);
 			break;
 		}
 		if (!app_tick(a))
 			nap();
 	}
-	a->demo_hint = hint_playing;
+	a->demo_ctx = CTX_DEMO_PLAY;
 }
 
 /* The end of a demo on the real screen: it waits; the explorer goes on until q. */
@@ -433,14 +424,14 @@ the_end(struct app *a)
 {
 	int ch;
 
-	a->demo_hint = hint_end;
+	a->demo_ctx = CTX_DEMO_END;
 	timeout(40);
 	while (!term_signalled() && !a->quit) {
 		app_draw(a);
 		if ((ch = getch()) != ERR) {
-			if (ch != KEY_RESIZE && ch != KEY_MOUSE && a->demo_hint != NULL) {
+			if (ch != KEY_RESIZE && ch != KEY_MOUSE && a->demo_ctx != 0) {
 				/* the viewer's first key: the footer's keys again, the last caption gone */
-				a->demo_hint = NULL;
+				a->demo_ctx = 0;
 				a->caption[0] = 0;
 			}
 			app_key(a, ch);
@@ -477,7 +468,7 @@ script_run(struct app *a, const char *path, char *msg, size_t n)
 	a->colour = a->script_live ? term_colour() : 0;
 	if (a->script_live) {
 		timeout(0);
-		a->demo_hint = hint_playing;
+		a->demo_ctx = CTX_DEMO_PLAY;
 	}
 	app_relayout(a);
 	app_tick(a);

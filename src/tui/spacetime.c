@@ -11,7 +11,6 @@
 #include <time.h>
 
 #include "canvas.h"
-#include "scene_chain.h" /* each body's half-length, as the engine binds it (src/core) */
 #include "spacetime.h"
 #include "status.h"
 #include "tui.h"
@@ -78,14 +77,15 @@ st_build(struct spacetime *st, const struct hb_sim *src)
 		return -1;
 	}
 	/*
-	 * Half-lengths: a chain's bodies as the engine binds them; the two-body
-	 * scenes' positions are measured so that the gap is their difference.
+	 * Half-lengths: a chain's bodies as the engine binds them (hb_sim_body);
+	 * the two-body scenes' positions are measured so that the gap is their
+	 * difference.
 	 */
 	if (sc->chain.n > 0) {
 		for (int b = 0; b < st->nb; b++) {
-			struct scene_chain_body cb;
-			if (scene_chain_body(sc, b, &cb) == HB_OK)
-				st->R[b] = cb.R;
+			struct hb_sim_body hb;
+			if (hb_sim_body(st->sh, b, &hb) == HB_OK)
+				st->R[b] = hb.R;
 		}
 		st->k0 = sc->chain.floor ? 0 : 1;
 	} else {
@@ -253,7 +253,7 @@ act_spacetime(struct app *a)
 		return;
 	a->st->on = !a->st->on;
 	if (!a->st->on) {
-		if (a->st->iface == 0)
+		if (a->st->iface == 0 && a->st->body == 0)
 			st_reset(a->st);   /* its memory back; V again computes it afresh */
 		app_msg(a, 0, "space-time view off: the plots again");
 		return;
@@ -290,6 +290,7 @@ act_iface(struct app *a)
 	}
 	if (st_get(a) == NULL)
 		return;
+	a->st->body = 0;        /* an interface instead of a body */
 	k = a->st->iface - 1;   /* -1: the run's own */
 	k = k < 0 ? k0 : k + 1;
 	if (k >= nb) {
@@ -317,15 +318,46 @@ spacetime_iface(const struct app *a)
 	return a->st->iface - 1 < nb ? a->st->iface - 1 : -1;   /* a scene with fewer bodies now */
 }
 
+void
+act_body(struct app *a)
+{
+	int nb = hb_sim_nbodies(a->sim), b;
+
+	if (st_get(a) == NULL)
+		return;
+	a->st->iface = 0;       /* a body instead of an interface */
+	b = a->st->body;        /* the next one, 0-based; nb: the run's own */
+	if (b >= nb) {
+		a->st->body = 0;
+		if (!a->st->on)
+			st_reset(a->st);
+		app_msg(a, 0, "plots: the run's own (B: body 1)");
+		return;
+	}
+	a->st->body = b + 1;
+	app_msg(a, 0, "plots: body %d%s of %d: position y and velocity u (B: the next)", b + 1,
+	        b + 1 == nb && nb > 1 ? " (the top one)" : "", nb);
+}
+
+int
+spacetime_body(const struct app *a)
+{
+	if (a->st == NULL || a->st->body == 0)
+		return -1;
+	return a->st->body - 1 < hb_sim_nbodies(a->sim) ? a->st->body - 1 : -1;
+}
+
 char *
 spacetime_state(const struct app *a, char *buf, size_t n)
 {
-	int k = spacetime_iface(a);
+	int k = spacetime_iface(a), b = spacetime_body(a);
 
-	if (k < 0)
-		snprintf(buf, n, "%s", "");
-	else
+	if (k >= 0)
 		snprintf(buf, n, " k=%d", k);
+	else if (b >= 0)
+		snprintf(buf, n, " b=%d", b + 1);
+	else
+		snprintf(buf, n, "%s", "");
 	return buf;
 }
 
@@ -336,7 +368,7 @@ spacetime_tick(struct app *a)
 	double t0;
 	int n = 0;
 
-	if ((!spacetime_on(a) && spacetime_iface(a) < 0) || a->branch_t >= 0)
+	if ((!spacetime_on(a) && spacetime_iface(a) < 0 && spacetime_body(a) < 0) || a->branch_t >= 0)
 		return 0;   /* a branched run: the scene from t = 0 is not the run (the panes say so) */
 	if (st->src != a->sim || st->scene == NULL
 	    || memcmp(st->scene, hb_sim_scene(a->sim), st->scene_size) != 0) {
@@ -373,14 +405,14 @@ spacetime_free(struct app *a)
 	a->st = NULL;
 }
 
-double
-st_y_at(const struct spacetime *st, int b, double t, size_t *i)
+/* The last record at or before t (from the hint *i), into *i; -1 without records. */
+static long
+st_rec(const struct spacetime *st, double t, size_t *i)
 {
-	size_t nb = (size_t)st->nb, k = *i;
-	double h, s, y0, y1, m0, m1;
+	size_t k = *i;
 
 	if (st->nrec == 0)
-		return NAN;
+		return -1;
 	if (k >= st->nrec || st->t[k] > t || (k + 2 < st->nrec && st->t[k + 2] <= t)) {
 		/* not at the hint or the next one: bisect for the last record at or before t */
 		size_t lo = 0, hi = st->nrec;
@@ -396,6 +428,18 @@ st_y_at(const struct spacetime *st, int b, double t, size_t *i)
 	while (k + 1 < st->nrec && st->t[k + 1] <= t)
 		k++;
 	*i = k;
+	return (long)k;
+}
+
+double
+st_y_at(const struct spacetime *st, int b, double t, size_t *i)
+{
+	size_t nb = (size_t)st->nb, k;
+	double h, s, y0, y1, m0, m1;
+
+	if (st_rec(st, t, i) < 0)
+		return NAN;
+	k = *i;
 	if (k + 1 >= st->nrec)
 		return st->y[k * nb + (size_t)b];
 	h = st->t[k + 1] - st->t[k];
@@ -409,6 +453,30 @@ st_y_at(const struct spacetime *st, int b, double t, size_t *i)
 	/* cubic Hermite: exact for a parabola (a body in free flight under a constant load) */
 	return (2 * s * s * s - 3 * s * s + 1) * y0 + (s * s * s - 2 * s * s + s) * m0
 	       + (-2 * s * s * s + 3 * s * s) * y1 + (s * s * s - s * s) * m1;
+}
+
+double
+st_u_at(const struct spacetime *st, int b, double t, size_t *i)
+{
+	size_t nb = (size_t)st->nb, k;
+	double h, s, y0, y1, m0, m1;
+
+	if (st_rec(st, t, i) < 0)
+		return NAN;
+	k = *i;
+	if (k + 1 >= st->nrec)
+		return st->u[k * nb + (size_t)b];
+	h = st->t[k + 1] - st->t[k];
+	if (!(h > 0))
+		return st->u[(k + 1) * nb + (size_t)b];
+	s = (t - st->t[k]) / h;
+	y0 = st->y[k * nb + (size_t)b];
+	y1 = st->y[(k + 1) * nb + (size_t)b];
+	m0 = h * st->u[k * nb + (size_t)b];
+	m1 = h * st->u[(k + 1) * nb + (size_t)b];
+	/* d/dt of st_y_at's cubic: the records' velocities at both ends, linear in free flight */
+	return ((6 * s * s - 6 * s) * y0 + (3 * s * s - 4 * s + 1) * m0 + (-6 * s * s + 6 * s) * y1
+	        + (3 * s * s - 2 * s) * m1) / h;
 }
 
 double

@@ -40,6 +40,7 @@ struct st_contact {
 struct spacetime {
 	int on;
 	int iface;                  /* the interface the plots show, + 1 (0: the run's own, as recorded) */
+	int body;                   /* or the body whose y and u they show, + 1 (0: none; not with iface) */
 	const struct hb_sim *src;   /* the explorer's run this one shadows */
 	struct hb_sim *sh;          /* the shadow (NULL: none) */
 	unsigned char *scene;       /* the scene it was built from (bytes, to see an edit) */
@@ -71,7 +72,11 @@ int spacetime_on(const struct app *a);
 void act_iface(struct app *a);
 /* That interface k (docs/chains.md numbering), or -1: the run's own (each interval's). */
 int spacetime_iface(const struct app *a);
-/* " k=K" for the status line while an interface is chosen, else "".  Returns buf. */
+/* B: the body whose position and velocity the plots show: the next one, then the run's own. */
+void act_body(struct app *a);
+/* That body b (0-based, 0 the lowest), or -1: none. */
+int spacetime_body(const struct app *a);
+/* " k=K" (" b=B", 1-based) for the status line while an interface (a body) is chosen, else "".  Returns buf. */
 char *spacetime_state(const struct app *a, char *buf, size_t n);
 /* The gap of interface k at t (the records' cubic), m. */
 double st_gap_at(const struct spacetime *st, int k, double t);
@@ -84,6 +89,8 @@ void spacetime_free(struct app *a);
  * *i is a hint, the record interval last used (start at 0).
  */
 double st_y_at(const struct spacetime *st, int b, double t, size_t *i);
+/* Body b's velocity at t: the derivative of that cubic. */
+double st_u_at(const struct spacetime *st, int b, double t, size_t *i);
 /* The gap of interface k at record i, m. */
 double st_gap(const struct spacetime *st, int k, size_t i);
 
@@ -97,5 +104,7 @@ void st_ylabels(const struct axis *ay, int y, int h, const char *name);
 void st_time_range(const struct app *a, const struct spacetime *st, double *t0, double *t1);
 /* pane_iface.c: x, x_c and F_c of the chosen interface, in the plots' rectangle. */
 void pane_iface_draw(const struct app *a);
+/* pane_body.c: y and u of the chosen body, in the plots' rectangle. */
+void pane_body_draw(const struct app *a);
 
 #endif

@@ -32,10 +32,12 @@ sv_map_drop(struct sv_map *m)
 	free(m->st);
 	free(m->ry);
 	free(m->rst);
+	free(m->nb);
+	free(m->blo);
+	free(m->bhi);
+	free(m->bloc);
 	memset(m, 0, sizeof *m);
 }
-
-static int jobs_n = 1;
 
 /* Starts row m->row (its curve over key1 on the scene of key2's value). */
 static int
@@ -48,7 +50,8 @@ row_start(struct sv_map *m, int obs, long coll, char *msg, size_t n)
 		return -1;
 	if (hb_scene_get(&sc, m->key2, &ki, NULL) == 0)
 		m->x2[m->row] = ki.number;
-	m->c = hb_sweep_curve_start(&sc, m->key1, m->spec1, obs, coll, jobs_n, msg, n);
+	m->c = hb_sweep_curve_start_refined(&sc, m->key1, m->spec1, obs, coll, m->bounds ? SV_BOUND_TOL : 0,
+	                                    m->jobs, msg, n);
 	if (m->c == NULL)
 		return -1;
 	if (hb_sweep_curve_npoints(m->c) != m->n1) {
@@ -77,7 +80,8 @@ sv_map_start(struct sweep_view *v, int jobs, char *msg, size_t n)
 		         "m then maps it (across) against %s (up)", v->key);
 		return -1;
 	}
-	jobs_n = jobs;
+	m.jobs = jobs > 0 ? jobs : 1;
+	m.bounds = v->bounds;
 	snprintf(m.key1, sizeof m.key1, "%s", v->key);
 	snprintf(m.spec1, sizeof m.spec1, "%s", v->spec);
 	snprintf(m.key2, sizeof m.key2, "%s", v->prevkey);
@@ -114,7 +118,12 @@ sv_map_start(struct sweep_view *v, int jobs, char *msg, size_t n)
 	m.st = calloc((size_t)(m.n1 * m.n2), sizeof *m.st);
 	m.ry = calloc((size_t)m.n1, sizeof *m.ry);
 	m.rst = calloc((size_t)m.n1, sizeof *m.rst);
-	if (m.x1 == NULL || m.x2 == NULL || m.z == NULL || m.st == NULL || m.ry == NULL || m.rst == NULL)
+	m.nb = calloc((size_t)m.n2, sizeof *m.nb);
+	m.blo = calloc((size_t)m.n2 * SV_MAP_ROW_BOUNDS, sizeof *m.blo);
+	m.bhi = calloc((size_t)m.n2 * SV_MAP_ROW_BOUNDS, sizeof *m.bhi);
+	m.bloc = calloc((size_t)m.n2 * SV_MAP_ROW_BOUNDS, sizeof *m.bloc);
+	if (m.x1 == NULL || m.x2 == NULL || m.z == NULL || m.st == NULL || m.ry == NULL || m.rst == NULL
+	    || m.nb == NULL || m.blo == NULL || m.bhi == NULL || m.bloc == NULL)
 		term_oom();
 	for (long i = 0; i < m.n1 * m.n2; i++) {
 		m.z[i] = NAN;
@@ -131,23 +140,74 @@ sv_map_start(struct sweep_view *v, int jobs, char *msg, size_t n)
 	return 0;
 }
 
-/* Copies the row computing; once it is whole, starts the next.  1 while computing. */
+/*
+ * Fixes the shades' range from the rows done (0 .. upto - 1) once one of
+ * them has a value: their least and greatest.  Later values outside it
+ * are drawn in the end shades and counted in the legend.
+ */
+static void
+fix_range(struct sv_map *m, long upto)
+{
+	double lo = INFINITY, hi = -INFINITY;
+
+	if (m->zfixed)
+		return;
+	for (long i = 0; i < upto * m->n1; i++)
+		if (m->st[i] == HB_CURVE_DONE && isfinite(m->z[i])) {
+			lo = fmin(lo, m->z[i]);
+			hi = fmax(hi, m->z[i]);
+		}
+	if (!isfinite(lo))
+		return;
+	m->zfixed = 1;
+	m->zlo = lo;
+	m->zhi = hi;
+}
+
+int
+sv_map_rescale(struct sv_map *m)
+{
+	int was = m->zfixed;
+	double lo = m->zlo, hi = m->zhi;
+
+	m->zfixed = 0;
+	fix_range(m, m->n2);
+	if (m->zfixed) {
+		m->zrescaled = 1;
+		return 0;
+	}
+	m->zfixed = was;
+	m->zlo = lo;
+	m->zhi = hi;
+	return -1;
+}
+
+/* Copies the row computing; once it is whole (and its boundaries located), starts the next.  1 while computing. */
 int
 sv_map_tick(struct sv_map *m)
 {
 	char msg[256];
+	int locating = 0;
 
 	if (m->c == NULL)
 		return 0;
 	long k = hb_sweep_curve_poll(m->c, m->x1, m->ry, m->rst, m->n1);
+	long *nb = &m->nb[m->row];
+	double *blo = m->blo + m->row * SV_MAP_ROW_BOUNDS, *bhi = m->bhi + m->row * SV_MAP_ROW_BOUNDS;
+	int *bloc = m->bloc + m->row * SV_MAP_ROW_BOUNDS;
+
+	*nb = hb_sweep_curve_boundaries(m->c, blo, bhi, bloc, SV_MAP_ROW_BOUNDS);
+	for (long i = 0; i < *nb && i < SV_MAP_ROW_BOUNDS; i++)
+		locating |= !bloc[i];
 	memcpy(m->z + m->row * m->n1, m->ry, (size_t)m->n1 * sizeof *m->ry);
 	memcpy(m->st + m->row * m->n1, m->rst, (size_t)m->n1 * sizeof *m->rst);
 	m->done = m->row * m->n1 + k;
 	m->failed = 0;
 	for (long i = 0; i < (m->row + 1) * m->n1; i++)
 		m->failed += m->st[i] == HB_CURVE_FAILED;
-	if (k < m->n1)
+	if (k < m->n1 || locating)
 		return 1;
+	fix_range(m, m->row + 1);
 	/* the row is whole: the next one, on the same observable */
 	hb_sweep_curve_free(m->c);
 	m->c = NULL;

@@ -444,6 +444,19 @@ k_export(struct app *a)
 }
 
 static void
+k_map_shades(struct app *a)
+{
+	struct sv_map *m = &a->sv->map;
+
+	if (sv_map_rescale(m) != 0) {
+		app_msg(a, 1, "map: no value yet to take the shades' range from");
+		return;
+	}
+	app_msg(a, 0, "map: the shades' range is now %.3g .. %.3g, the values of %ld points", m->zlo, m->zhi,
+	        m->done);
+}
+
+static void
 sweep_other(struct app *a, int ch)
 {
 	char name[32];
@@ -473,8 +486,10 @@ static const struct mode_key keys[] = {
 	{ 'p', 0, CTX_CURVE, k_pin, "p", "pin the curve (up to 3, drawn as ghosts) to compare", "pin" },
 	{ 'P', 0, CTX_CURVE, k_unpin, "P", "clear the pinned curves", NULL },
 	{ 'm', 0, CTX_CURVE, k_map, "m",
-	  "the 2-D map of the observable over this key (across) and the key swept before it (up)", "map" },
+	  "the 2-D map of the observable over this key (across) and the key swept before it (up); with b on, each row's boundaries marked |", "map" },
 	{ 'm', 0, CTX_MAP, k_map, "m", "(map) back to the curve, where r R L l b p P work", "curve" },
+	{ 'r', 0, CTX_MAP, k_map_shades, "r",
+	  "(map) the shades' range to the values computed so far (it is fixed by the first row, and stays while the map computes)", "shades" },
 	{ 'e', 0, CTX_ANY, k_export, "e", "export the finished points (of the curve, or of the map) as CSV, never over an earlier export", "export" },
 	{ 'q', 27, CTX_ANY, k_close, "q Esc", "close the view (the curve keeps computing; S on the same parameter reopens it)", "close" },
 	{ 'S', 0, CTX_ANY, k_close, "S", "close the view, as q", NULL },

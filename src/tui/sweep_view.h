@@ -17,7 +17,7 @@ struct mode;
 
 struct app;
 
-enum { SV_MAX_PINS = 3, SV_MAX_BOUNDS = 64 };
+enum { SV_MAX_PINS = 3, SV_MAX_BOUNDS = 64, SV_MAP_ROW_BOUNDS = 16 };
 
 /* b: boundaries located to this fraction of the range (hb_sweep_curve_start_refined). */
 #define SV_BOUND_TOL 1e-3
@@ -37,7 +37,10 @@ struct sv_curve {
 /*
  * m: the 2-D map, the observable over the view's key (across, its range)
  * and the key swept before it (up, its range), computed one row at a time
- * by a background curve (sweep_map.c; the pane is pane_map.c).
+ * by a background curve (sweep_map.c; the pane is pane_map.c).  With b on
+ * (the view's bounds), each row locates its boundaries as the curve does.
+ * The shades' range is fixed by the first row that has a value (zfixed),
+ * so a shade means the same while the map computes.
  */
 struct sv_map {
 	int on;                  /* the view shows the map instead of the curve */
@@ -56,6 +59,14 @@ struct sv_map {
 	struct hb_sweep_curve *c;   /* the row computing */
 	double *ry;
 	int *rst;
+	int jobs;                /* threads per row */
+	int bounds;              /* rows locate their boundaries (SV_BOUND_TOL) */
+	long *nb;                /* n2: boundaries found in each row (up to SV_MAP_ROW_BOUNDS kept) */
+	double *blo, *bhi;       /* n2 * SV_MAP_ROW_BOUNDS: the parameter either side */
+	int *bloc;               /* ... 1: located, 0: bisecting */
+	int zfixed;              /* the shades' range is fixed: zlo .. zhi */
+	int zrescaled;           /* ... by r, not by the first row */
+	double zlo, zhi;
 };
 
 struct sweep_view {
@@ -87,6 +98,9 @@ int
 sv_map_write_csv(const struct sweep_view *v, const char *path, char *msg, size_t n);
 void
 sv_map_drop(struct sv_map *m);
+/* Fixes the shades' range anew, to the values computed so far; -1 when there is none. */
+int
+sv_map_rescale(struct sv_map *m);
 
 /* pane_map.c: draws the map and its legend. */
 void

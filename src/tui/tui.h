@@ -102,7 +102,7 @@ struct app {
 		struct hb_scene scene;  /* the current run's, as last seen: an edit restarts the same run */
 		double lo[3], hi[3];
 	} hold;
-	const char *demo_hint;      /* a --script demo on the real screen: the footer's text */
+	int demo_ctx;               /* a --script demo on the real screen: its CTX_DEMO_*; 0: none */
 	char caption[512];          /* a script's caption (wrapped over the message line) */
 	int caption_large;          /* ... shown large, in a box over the plots */
 	int playing;
@@ -177,6 +177,14 @@ action_fn act_play, act_step_fwd, act_step_back, act_prev_jump, act_next_jump,
 	act_search_next, act_search_prev, act_undo, act_reset;
 
 /* nav.c: the cursor and the selections (the first four: cursor.c). */
+/*
+ * The demo (mode_demo.c): the viewer's key ch in the context a->demo_ctx;
+ * returns 1 when the demo's table bound it (q quits), 0 for any other key.
+ * demo_hint: the footer's text for a->demo_ctx ("demo: any key pauses, q
+ * quits"), printed from the table.  Returns buf.
+ */
+int demo_viewer_key(struct app *a, int ch);
+char *demo_hint(const struct app *a, char *buf, size_t n);
 void cursor_set(struct app *a, size_t i);
 void cursor_clamp(struct app *a);                 /* keeps it < hb_arc_len */
 long coll_at_cursor(const struct app *a);         /* the collision at the cursor, or -1 */

@@ -76,4 +76,24 @@ if [ -z "$gone" ]; then
 else
 	notok "every file of calls.allow is still in a cycle (take off: $(echo $gone))"
 fi
+
+# The explorer reaches the engine through the public API (include/hybounce,
+# hb_ names) and the engine's text and number helpers only: no other
+# symbol of src/core (an internal function such as scene_chain_body).
+core_objs=$(ls "$BUILD_DIR"/src/core/*.o 2>/dev/null)
+if [ -n "$core_objs" ]; then
+	nm --defined-only -g $core_objs | awk 'NF == 3 { print $3 }' | LC_ALL=C sort -u >"$T/core"
+	awk '$1 == "U" { print $3, $2 }' "$T/syms" | LC_ALL=C sort -u >"$T/uses"
+	internal=$(LC_ALL=C join "$T/uses" "$T/core" | awk '
+		$1 ~ /^(hb_|HB_)/ { next }
+		$1 ~ /^(cnum_|textbuf_)/ || $1 == "csv_put_num" { next }
+		{ printf "%s%s (%s)", sep, $1, $2; sep = ", " }')
+	if [ -z "$internal" ]; then
+		ok "the explorer uses the engine's public API only (and its text/number helpers)"
+	else
+		notok "the explorer uses the engine's public API only (internal: $internal)"
+	fi
+else
+	notok "the engine's objects are in $BUILD_DIR/src/core"
+fi
 exit $((fails > 0))

@@ -109,4 +109,29 @@ if wait_exit b 50 && [ "$(cat "$TMP/b.rc")" = 0 ]; then
 else
 	notok "q during wait-key quits (rc $(cat "$TMP/b.rc" 2>/dev/null))" b
 fi
+
+# ---- a key pauses, another resumes; the footer says so, from the demo's key table ----
+printf 'caption playing\nwait 60000\ncaption never shown\n' >"$TMP/p"
+start c 80 23 --script "$TMP/p"
+if wait_for c '^demo: any key pauses, q quits' 50; then
+	keys c x
+	if wait_for c '^demo paused: any key resumes, q quits' 30; then
+		keys c x
+		if wait_for c '^demo: any key pauses, q quits' 30; then
+			ok "a key pauses the demo and another resumes it (the footer: any key pauses/resumes, q quits)"
+		else
+			notok "another key resumes the demo" c
+		fi
+	else
+		notok "a key pauses the demo (demo paused: any key resumes, q quits)" c
+	fi
+else
+	notok "a playing demo's footer: any key pauses, q quits" c
+fi
+keys c q
+if wait_exit c 50 && [ "$(cat "$TMP/c.rc")" = 0 ]; then
+	ok "q during playback quits (status 0)"
+else
+	notok "q during playback quits (rc $(cat "$TMP/c.rc" 2>/dev/null))" c
+fi
 exit $failed

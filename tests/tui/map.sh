@@ -4,8 +4,10 @@
 # c, then S on v0 sweeps v0; m maps e over v0 (across) and c (up), row by
 # row in the background; the legend gives each shade's range; e exports
 # the grid (i1,i2,KEY1,KEY2,OBS, one row per point) and a second export
-# keeps the first; X marks the current scene; m goes back to the curve;
-# quitting exits 0.
+# keeps the first; the shades' range is the first row's and stays (the
+# legend counts later values outside it; r takes all values); X marks the
+# current scene and 1 a pinned run's; m goes back to the curve; with b on,
+# the map marks its rows' boundaries |; quitting exits 0.
 . "$(dirname "$0")/common.inc"
 
 start a 80 24 --ascii
@@ -90,11 +92,67 @@ if wait_for a 'X the current scene' 30 \
 else
 	notok "the current scene is marked X on the map" a
 fi
+# the shades' range is the first row's (c = 2000), fixed: the legend's ends
+# are row 0's least and greatest e, and it counts the later values outside
+lo=$(awk -F, '$2 == 0 && $5 != "" && $5 == $5 + 0 { print $5 }' "$TMP/first.csv" | sort -g | head -n 1)
+hi=$(awk -F, '$2 == 0 && $5 != "" && $5 == $5 + 0 { print $5 }' "$TMP/first.csv" | sort -g | tail -n 1)
+out=$(awk -F, -v lo="$lo" -v hi="$hi" 'NR > 1 && $2 > 0 && $5 != "" && $5 == $5 + 0 && ($5 < lo + 0 || $5 > hi + 0) { n++ } END { print n + 0 }' "$TMP/first.csv")
+glo=$(awk -v x="$lo" 'BEGIN { printf "%.3g", x }')
+ghi=$(awk -v x="$hi" 'BEGIN { printf "%.3g", x }')
+if [ -n "$lo" ] && screen a | grep -q '(range of the first row)' \
+   && screen a | grep -Fq "@ " && screen a | grep -F "@ " | grep -Fq "..$ghi" \
+   && screen a | grep -F ". $glo.." >/dev/null \
+   && if [ "$out" -eq 0 ]; then ! screen a | grep -q 'the range: r\|above: r'; \
+      else screen a | grep -q "$out \(above\|below\) the range: r"; fi; then
+	ok "the shades' range is the first row's ($glo..$ghi), $out later values outside it counted"
+else
+	notok "the shades' range is the first row's ($glo..$ghi; $out outside)" a
+fi
+keys a r
+if wait_for a '^map: the shades. range is now ' 30 && wait_for a '\(range: r\)' 10; then
+	ok "r fixes the shades' range anew, to the values computed"
+else
+	notok "r fixes the shades' range anew" a
+fi
+# a pinned run's scene is marked with its number, as X the current one:
+# pin v0 = -0.5 m/s, then v0 = -0.9 m/s
+mapcells() { sed -n '3,22p' | grep -v -- '->' | cut -c11-55; }
+keys a q
+wait_gone a '^map: ' 30
+keys a p
+wait_for a '^pinned' 30
+keys a Enter ; keys a C-u ; keys a -l -- "-0.9 m/s" ; keys a Enter
+wait_for a ' finished$' 150
+keys a S
+if wait_for a '1 the pinned run' 30 && wait_for a 'X the current scene' 10 \
+   && [ "$(screen a | mapcells | grep -c 1)" -eq 1 ] \
+   && [ "$(screen a | mapcells | grep -c X)" -eq 1 ] \
+   && [ "$(screen a | mapcells | grep -n 1 | cut -d: -f1)" = \
+        "$(screen a | mapcells | grep -n X | cut -d: -f1)" ] \
+   && screen a | mapcells | grep -q '1.*X'; then
+	ok "the pinned run's scene is marked 1 on the map, left of the current X on the same c"
+else
+	notok "the pinned run's scene is marked 1 on the map" a
+fi
 keys a m
 if wait_for a '^sweep: e of collision 0 against initial\.v0' 30; then
 	ok "m goes back to the curve"
 else
 	notok "m goes back to the curve" a
+fi
+# boundaries (b on the curve): the map's rows locate theirs and mark them |,
+# as the curve view does; on the collision count they lie between v0's points
+keys a o ; keys a o ; keys a o
+wait_for a '^sweep: collisions against initial\.v0' 30 || notok "o to the collisions" a
+keys a b
+wait_for a '^sweep: collisions against initial\.v0 .* 4/4 done, [0-9]+ boundar' 300 || notok "b locates the curve's boundaries" a
+keys a m
+if wait_for a '^map: collisions over initial\.v0 \(across\) and law\.c \(up\) +12/12 done$' 300 \
+   && wait_for a '\| boundary, : bisecting$' 10 \
+   && [ "$(screen a | mapcells | grep -c '|')" -ge 1 ]; then
+	ok "with b on, the map marks each row's boundaries |"
+else
+	notok "with b on, the map marks each row's boundaries |" a
 fi
 keys a F10
 if wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ]; then

@@ -3,12 +3,15 @@
 # The space-time view (V) in tmux at 80x24, in ASCII: on a Newton's cradle
 # of five balls 10 mm apart it draws one line per body and marks each of
 # the four contacts with # at its interface, from the top down, and shows
-# the cursor's time (the status line's); on a chain of 100 it thins the
+# the cursor's time (the status line's); f saves that view as a PNG
+# figure (one panel: the bodies and the contacts); on a chain of 100 it thins the
 # lines and says so, and still marks the contacts; V again gives the
 # plots back; K shows x, x_c and F_c of one interface at a time (k= on
-# the status line), then the run's own; the key is in the help; quitting
+# the status line), then the run's own; B the position and velocity of one
+# body at a time (b=); the key is in the help; quitting
 # exits 0.
 . "$(dirname "$0")/common.inc"
+PY="$(pwd)/tests/cli/plot_png.py"
 
 cat >"$TMP/cradle.preset" <<'P'
 [scene]
@@ -60,6 +63,22 @@ if wait_for a '^ cradle hertz t=60 ms ' 30 && wait_for a '^ +space-time: .*; t =
 else
 	notok "the title shows the cursor's time (End: 60 ms, as on the status line)" a
 fi
+# f saves the space-time view shown: one panel, the bodies, the contacts, the cursor
+keys a f
+png=$TMP/cradle-view.png
+if wait_for a '^wrote cradle-view\.png: the space-time view \(5 bodies, 4 contacts, the cursor\)' 100 \
+   && [ -s "$png" ]; then
+	python3 "$PY" info "$png" >"$TMP/st-info.txt"
+	if grep -q '^panels 1$' "$TMP/st-info.txt" && [ "$(awk '$1 == "ink" { print $2 }' "$TMP/st-info.txt")" -gt 5000 ] \
+	   && grep -q '^legend_style 0 ' "$TMP/st-info.txt" && grep -q '^legend_style 1 ' "$TMP/st-info.txt"; then
+		ok "f saves the space-time view: one panel, the bodies' and the contacts' styles in the legend"
+	else
+		notok "f saves the space-time view: one panel, both styles in the legend"
+		grep -v frame "$TMP/st-info.txt" | sed 's/^/#   /'
+	fi
+else
+	notok "f saves the space-time view (the message, the file)" a
+fi
 keys a V
 if wait_for a '^ +(whole run|follow the cursor)' 30 && wait_for a '^space-time view off' 30; then
 	ok "V again: the plots"
@@ -86,6 +105,43 @@ if wait_for a '^ cradle hertz t=' 30 && wait_for a '^ +(whole run|follow the cur
 else
 	notok "K after the last interface: the run's own plots, no k=" a
 fi
+# B: the position y and velocity u of one body, b= on the status line; body 1
+# (the lowest) rests until the wave reaches it and leaves at -1 m/s, the
+# striker (body 5) falls at -1 m/s and stops; after the last, the run's own
+keys a B
+if wait_for a '^ cradle hertz b=1 t=' 30 && wait_for a '^ +body 1 of 5 \(the lowest\): position y and velocity u$' 30 \
+   && screen a | grep -q '^y\[mm\]' && screen a | grep -q '^u\[m/s\]' && screen a | grep -q '^ *-1\.0 '; then
+	ok "B: y and u of body 1, b=1 on the status line"
+else
+	notok "B: y and u of body 1, b=1 on the status line" a
+fi
+# body 1's u: 0 on the left of the u panel, -1 m/s on its right (it leaves last)
+u_rows() { screen a | sed -n '/^ *0\.0 /,/^ *-1\.0 /p'; }
+if [ "$(u_rows | head -n 1 | cut -c10-20 | tr -cd '*' | wc -c)" -ge 5 ] \
+   && [ "$(u_rows | tail -n 1 | rev | cut -c1-10 | tr -cd '*' | wc -c)" -ge 5 ]; then
+	ok "body 1 rests, then leaves at -1 m/s"
+else
+	notok "body 1 rests, then leaves at -1 m/s" a
+fi
+keys a B ; keys a B ; keys a B ; keys a B
+if wait_for a '^ cradle hertz b=5 t=' 30 && wait_for a '^ +body 5 of 5 \(the top one\)' 30 \
+   && [ "$(u_rows | tail -n 1 | cut -c10-20 | tr -cd '*' | wc -c)" -ge 5 ]; then
+	ok "B four times more: body 5, the striker, at -1 m/s first"
+else
+	notok "B four times more: body 5, the striker, at -1 m/s first" a
+fi
+keys a K
+if wait_for a '^ cradle hertz k=1 t=' 30 && wait_for a '^ +interface 1 \(bodies 1 and 2\)$' 30; then
+	ok "K after B: an interface instead of the body"
+else
+	notok "K after B: an interface instead of the body" a
+fi
+keys a B ; keys a B ; keys a B ; keys a B ; keys a B ; keys a B
+if wait_for a '^ cradle hertz t=' 30 && wait_for a '^ +(whole run|follow the cursor)' 30; then
+	ok "B after the last body: the run's own plots, no b="
+else
+	notok "B after the last body: the run's own plots, no b=" a
+fi
 keys a '?'
 wait_for a 'hybounce keys' 30
 n=0
@@ -94,10 +150,11 @@ while [ $n -lt 10 ] && ! screen a | grep -q 'V  *space-time view on / off'; do
 	n=$((n + 1))
 	wait_for a 'hybounce keys' 30
 done
-if screen a | grep -q 'V  *space-time view on / off' && screen a | grep -q "K  *a chain's next interface"; then
-	ok "the help lists V and K"
+if screen a | grep -q 'V  *space-time view on / off' && screen a | grep -q "K  *a chain's next interface" \
+   && screen a | grep -q "B  *the next body for the plots"; then
+	ok "the help lists V, K and B"
 else
-	notok "the help lists V and K" a
+	notok "the help lists V, K and B" a
 fi
 keys a q
 keys a q
