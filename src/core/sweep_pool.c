@@ -83,9 +83,11 @@ worker(void *arg)
 		}
 		pthread_mutex_unlock(&p->mu);
 
-		r = calloc(1, sizeof *r);
+		r = malloc(sizeof *r);   /* not calloc: msg is 256 bytes to clear */
 		c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
 		if (r != NULL) {
+			r->next = NULL;
+			r->msg[0] = '\0';
 			r->id = id;
 			r->rc = sweep_point_block_buf(p->sw, id, &wb, &r->blk, &r->failed, r->msg,
 			                          sizeof r->msg);
