@@ -241,7 +241,10 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, 
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
 	b.p[b.len] = '\0';
-	*out = b.p;
+	/* the block waits for the writer at its length, not the buffer's */
+	*out = b.len + 1 < b.cap ? realloc(b.p, b.len + 1) : b.p;
+	if (*out == NULL)
+		*out = b.p;
 	return HB_OK;
 }
 
@@ -255,4 +258,3 @@ hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed
 	sweep_wbuf_free(&w);
 	return rc;
 }
-
