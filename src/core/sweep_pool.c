@@ -138,10 +138,11 @@ held_add(struct result **l, struct result *r)
 
 /*
  * Blocks held at most: past this (a worker stalled on one point while the
- * others finish hundreds), the first is written out of order, memory stays
- * bounded and the merge takes its index.
+ * others finish thousands), the first is written out of order, memory
+ * stays bounded (a few MB) and the merge takes its index.  256 was passed
+ * at a load average of 13 on 2 cores (a worker descheduled for long).
  */
-enum { HELD_MAX = 256 };
+enum { HELD_MAX = 4096 };
 
 /* Whether held's first block can be written (under p->mu): a list of ids
  * at once, a grid's when no worker computes a point before it. */
