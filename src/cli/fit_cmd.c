@@ -126,35 +126,9 @@ usage(FILE *f)
 "N (SIGINT, SIGTERM, SIGHUP: the best point so far is written).  See hybounce(1).\n");
 }
 
-static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-static int bad_usage(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-
-static int
-bad(const char *fmt, ...)
-{
-	va_list ap;
-
-	fprintf(stderr, PROG " fit: ");
-	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
-	va_end(ap);
-	fprintf(stderr, "\n");
-	return 2;
-}
-
-/* A refusal of the command line: the message, then where usage is. */
-static int
-bad_usage(const char *fmt, ...)
-{
-	va_list ap;
-
-	fprintf(stderr, PROG " fit: ");
-	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
-	va_end(ap);
-	fprintf(stderr, "\nTry 'hybounce fit --help'.\n");
-	return 2;
-}
+/* Refusals (report.h): "hybounce fit: ...", and with where usage is. */
+#define bad(...) cli_refuse(PROG " fit", __VA_ARGS__)
+#define bad_usage(...) cli_refuse_usage(PROG " fit", "hybounce fit", __VA_ARGS__)
 
 /* Parses a positive whole number for an option. */
 static int

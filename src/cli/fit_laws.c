@@ -25,6 +25,7 @@
 #include "cnum.h"
 #include "fit_cmd.h"
 #include "plot_cmd.h"
+#include "report.h"
 #include "signals.h"
 
 #define PROG "hybounce"
@@ -85,20 +86,8 @@ for_law(const char *s, const char *law)
 	return fit_laws_prefix(s, NULL) && strncmp(s, law, l) == 0 && s[l] == ':';
 }
 
-static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-
-static int
-bad(const char *fmt, ...)
-{
-	va_list ap;
-
-	fprintf(stderr, PROG " fit: ");
-	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
-	va_end(ap);
-	fprintf(stderr, "\n");
-	return 2;
-}
+/* A refusal (report.h): "hybounce fit: ..." */
+#define bad(...) cli_refuse(PROG " fit", __VA_ARGS__)
 
 /* "shccl: law.c; bwshccl: law.c,law.alpha; ..." */
 static void

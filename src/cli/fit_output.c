@@ -23,8 +23,7 @@
 static int
 bad(const char *what, const char *why)
 {
-	fprintf(stderr, PROG " fit: %s %s; nothing written\n", what, why);
-	return 2;
+	return cli_refuse(PROG " fit", "%s %s; nothing written", what, why);
 }
 
 /* The residuals CSV: a row per data point. */

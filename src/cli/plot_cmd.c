@@ -85,20 +85,8 @@ usage(FILE *f)
 "See hybounce(1).\n");
 }
 
-static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-
-static int
-bad(const char *fmt, ...)
-{
-	va_list ap;
-
-	fprintf(stderr, PROG ": ");
-	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
-	va_end(ap);
-	fprintf(stderr, "\n");
-	return 2;
-}
+/* A refusal (report.h): "hybounce plot: ..." */
+#define bad(...) cli_refuse(PROG, __VA_ARGS__)
 
 /* A length: NUMBER with in, cm, mm or pt (px: pixels at dpi, where allowed)
  * into points; -1 when malformed. */

@@ -3,6 +3,7 @@
  * report.c - the provenance line and the "wrote" lines of the command-line
  * front ends (report.h).
  */
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -38,4 +39,43 @@ cli_print_wrote(const char *path, const struct hb_atomic_target *t)
 
 	hb_outputs_how(t, how, sizeof how);
 	fprintf(stderr, "wrote %s%s\n", path, how);
+}
+
+static int
+refuse(const char *prog, const char *usage, const char *fmt, va_list ap)
+    __attribute__((format(printf, 3, 0)));
+
+static int
+refuse(const char *prog, const char *usage, const char *fmt, va_list ap)
+{
+	fprintf(stderr, "%s: ", prog);
+	vfprintf(stderr, fmt, ap);
+	fputc('\n', stderr);
+	if (usage != NULL)
+		fprintf(stderr, "Try '%s --help'.\n", usage);
+	return 2;
+}
+
+int
+cli_refuse(const char *prog, const char *fmt, ...)
+{
+	va_list ap;
+	int rc;
+
+	va_start(ap, fmt);
+	rc = refuse(prog, NULL, fmt, ap);
+	va_end(ap);
+	return rc;
+}
+
+int
+cli_refuse_usage(const char *prog, const char *usage, const char *fmt, ...)
+{
+	va_list ap;
+	int rc;
+
+	va_start(ap, fmt);
+	rc = refuse(prog, usage, fmt, ap);
+	va_end(ap);
+	return rc;
 }

@@ -153,21 +153,8 @@ sweep_usage(FILE *f)
 "See hybounce(1).\n");
 }
 
-static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-
-#include <stdarg.h>
-static int
-bad(const char *fmt, ...)
-{
-	va_list ap;
-
-	fprintf(stderr, PROG ": ");
-	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
-	va_end(ap);
-	fprintf(stderr, "\nTry 'hybounce sweep --help'.\n");
-	return 2;
-}
+/* A refusal (report.h): "hybounce sweep: ...", then where usage is. */
+#define bad(...) cli_refuse_usage(PROG, PROG, __VA_ARGS__)
 
 static int
 parse_long(const char *t, long lo, long hi, long *out)

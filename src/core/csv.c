@@ -67,7 +67,9 @@ put_field(FILE *f, const char *s, int first)
 static void
 print_num(FILE *f, double v)
 {
-	cnum_fprintf(f, "%.17g", v == 0 ? 0.0 : v);
+	char b[CNUM_G17_MAX];
+
+	fwrite(b, 1, cnum_g17(b, v == 0 ? 0.0 : v), f);
 }
 
 void

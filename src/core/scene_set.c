@@ -118,33 +118,40 @@ static int
 store_number(struct hb_scene *tmp, const char *key, double v, const char *text,
              struct hb_scene_error *err)
 {
-	const struct scene_keydef *kd;
+	const struct scene_keydef *kd = NULL;
+	struct hb_unit_range r;
 	char vs[64];
 
+	if (strncmp(key, "law.", 4) == 0) {
+		int i = hb_law_param_index(tmp->law, key + 4);
+
+		r = hb_law_param_range(&tmp->law->params[i]);
+		if (hb_units_in_range(v, &r)) {
+			tmp->par[i] = v;
+			return HB_OK;
+		}
+	} else {
+		kd = scene_keydef_find(key);
+		if (hb_units_in_range(v, &kd->range)) {
+			switch (kd->store) {
+			case ST_DOUBLE: *(double *)((char *)tmp + kd->off) = v; break;
+			case ST_LONG: *(long *)((char *)tmp + kd->off) = (long)v; break;
+			case ST_INT: *(int *)((char *)tmp + kd->off) = (int)v; break;
+			default: break;
+			}
+			body_typed(tmp, kd);
+			return HB_OK;
+		}
+		r = kd->range;
+	}
+	/* refused: the message shows the value as typed (no text: %.17g of v),
+	 * formatted here only, not on every accepted value */
 	if (text == NULL)
 		cnum_snprintf(vs, sizeof vs, "%.17g", v);
 	else
 		snprintf(vs, sizeof vs, "%s", text);
-	if (strncmp(key, "law.", 4) == 0) {
-		int i = hb_law_param_index(tmp->law, key + 4);
-		struct hb_unit_range r = hb_law_param_range(&tmp->law->params[i]);
-		if (!hb_units_in_range(v, &r))
-			return scene_error_range(err, key, &r, NULL, "value %s is out of range", vs);
-		tmp->par[i] = v;
-		return HB_OK;
-	}
-	kd = scene_keydef_find(key);
-	if (!hb_units_in_range(v, &kd->range))
-		return scene_error_range(err, key, &kd->range, kd->dim, "value %s is out of range",
-		    vs);
-	switch (kd->store) {
-	case ST_DOUBLE: *(double *)((char *)tmp + kd->off) = v; break;
-	case ST_LONG: *(long *)((char *)tmp + kd->off) = (long)v; break;
-	case ST_INT: *(int *)((char *)tmp + kd->off) = (int)v; break;
-	default: break;
-	}
-	body_typed(tmp, kd);
-	return HB_OK;
+	return scene_error_range(err, key, &r, kd != NULL ? kd->dim : NULL,
+	                         "value %s is out of range", vs);
 }
 
 /*

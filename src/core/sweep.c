@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sweep.c - the points of a sweep: axes from "KEY=SPEC", the scene of a
- * point, the spec file, and one point run into its journal block (see
- * sweep.h).  The threads, the journal and the merge are in sweep_run.c.
+ * point and the spec file (see sweep.h).  A point run into its journal
+ * block is in sweep_block.c; the threads, the journal and the merge in
+ * sweep_pool.c, sweep_run.c and sweep_merge.c.
  *
  * Values.  Every axis value is canonical: the value read back from the
  * scene after hb_scene_set, as text a %.17g SI number or a word such as a
@@ -10,7 +11,9 @@
  * exactly those texts, so "--batch --set KEY=VALUE" with a row's values
  * reproduces the point to the bit.  A range keeps its values as the doubles
  * read back (8 bytes a value; %.17g gives the text again, the same
- * characters), a list as their texts.
+ * characters), or, when every value between its ends is the formula's
+ * double itself, computes them when asked (sweep_axis_num); a list keeps
+ * their texts.
  */
 #include <errno.h>
 #include <math.h>
@@ -37,9 +40,12 @@
 const char *
 sweep_axis_text(const struct axis *a, long i, char *buf, size_t n)
 {
-	if (a->num == NULL)
+	if (a->val != NULL)
 		return a->val[i];
-	cnum_snprintf(buf, n, "%.17g", a->num[i]);
+	if (n < CNUM_G17_MAX)
+		cnum_snprintf(buf, n, "%.17g", sweep_axis_num(a, i));
+	else
+		cnum_g17(buf, sweep_axis_num(a, i));
 	return buf;
 }
 
@@ -196,6 +202,22 @@ parse_count(const char *t, long *out)
 #define RANGE_HELP "expected KEY=FROM:TO:N, KEY=FROM:TO:N:log or KEY=V1,V2,... " \
 	"(e.g. --vary law.c=1e8:1e10:50:log, --vary initial.x0='10 um,40 um')"
 
+/* Value i of FROM:TO:N (lg: log): the ends themselves, the others from
+ * the formula; not inlined, so that every caller gets the same double. */
+__attribute__((noinline)) double
+sweep_ramp_value(double from, double to, long n, int lg, long i)
+{
+	double f = n > 1 ? (double)i / (double)(n - 1) : 0;
+
+	if (i == 0)
+		return from;
+	if (i == n - 1)
+		return to;
+	if (lg)
+		return copysign(exp(log(fabs(from)) + (log(fabs(to)) - log(fabs(from))) * f), from);
+	return from + (to - from) * f;
+}
+
 /*
  * A range FROM:TO:N[:log] into a->val; others: the points of the other
  * axes, so that a sweep over the limit is refused before a value is made.
@@ -270,11 +292,6 @@ sweep_parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_swe
 		                "< 0", a->key, a->spec);
 		goto out;
 	}
-	a->num = malloc((size_t)a->n * sizeof *a->num);
-	if (a->num == NULL) {
-		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-		goto out;
-	}
 	{
 		const struct scene_keydef *kd;
 		struct hb_scene_error e;
@@ -283,25 +300,36 @@ sweep_parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_swe
 		plain = scene_key_resolve(sc, a->key, &kd, &li, &ro, &e) == HB_OK && !ro &&
 		        (kd != NULL ? kd->store == ST_DOUBLE : li >= 0);
 	}
+	/*
+	 * A double of the scene or a law parameter between two values accepted:
+	 * %.17g of v sets v itself, in the range (an interval) of its ends.  (The
+	 * test sweep::point_scene_equals_the_set_values sets the printed values.)
+	 * When every value between the ends is such a v, none is kept: each is
+	 * computed again when asked for (sweep_axis_num), the same double.
+	 */
+	a->ramp.from = from;
+	a->ramp.to = to;
+	a->ramp.lg = lg;
+	a->ramp.on = plain;
+	for (long i = 1; plain && i < a->n - 1; i++) {
+		double v = sweep_ramp_value(from, to, a->n, lg, i);
+
+		a->ramp.on = v >= fmin(from, to) && v <= fmax(from, to);
+		if (!a->ramp.on)
+			break;
+	}
+	if (a->ramp.on)
+		goto out;
+	a->num = malloc((size_t)a->n * sizeof *a->num);
+	if (a->num == NULL) {
+		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto out;
+	}
 	for (long i = 0; i < a->n; i++) {
-		double v, f = a->n > 1 ? (double)i / (double)(a->n - 1) : 0;
+		double v = sweep_ramp_value(from, to, a->n, lg, i);
 		char t[64];
 
-		if (i == 0)
-			v = from;
-		else if (i == a->n - 1)
-			v = to;
-		else if (lg)
-			v = copysign(exp(log(fabs(from)) + (log(fabs(to)) - log(fabs(from))) * f), from);
-		else
-			v = from + (to - from) * f;
 		if (i > 0 && i < a->n - 1 && plain && v >= fmin(from, to) && v <= fmax(from, to)) {
-			/*
-			 * A double of the scene or a law parameter between two values
-			 * accepted: %.17g of v sets v itself, in the range (an interval)
-			 * of its ends.  (The test sweep::point_scene_equals_the_set_values
-			 * sets the printed values.)
-			 */
 			a->num[i] = v;
 			continue;
 		}
@@ -375,12 +403,12 @@ fast_ready(struct hb_sweep *sw)
 		struct hb_scene_error e;
 		int li = -1, ro = 0;
 
-		if (a->num == NULL || scene_key_resolve(&sc, a->key, &kd, &li, &ro, &e) != HB_OK ||
+		if (a->val != NULL || scene_key_resolve(&sc, a->key, &kd, &li, &ro, &e) != HB_OK ||
 		    ro || (kd != NULL && kd->store != ST_DOUBLE) || (kd == NULL && li < 0))
 			return;
 		a->off = kd != NULL ? kd->off : 0;
 		a->par = kd != NULL ? -1 : li;
-		if (hb_scene_set_number(&sc, a->key, a->num[0], &e) != HB_OK)
+		if (hb_scene_set_number(&sc, a->key, sweep_axis_num(a, 0), &e) != HB_OK)
 			return;
 	}
 	sw->fast_base = sc;
@@ -515,8 +543,8 @@ hb_sweep_point_value(const struct hb_sweep *sw, long id, int k, char *buf, size_
  * that its %.17g text reads back to, without the text made and parsed
  * again); a list's as its text.
  */
-static int
-point_values(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n)
+int
+sweep_point_values(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n)
 {
 	char m[512], t[64];
 
@@ -526,7 +554,7 @@ point_values(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg
 		*out = sw->fast_base;
 		for (int k = 0; k < sw->naxes; k++) {
 			const struct axis *a = &sw->ax[k];
-			double v = a->num[sweep_axis_index(sw, id, k)];
+			double v = sweep_axis_num(a, sweep_axis_index(sw, id, k));
 
 			if (a->par >= 0)
 				out->par[a->par] = v;
@@ -542,8 +570,8 @@ point_values(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg
 		long i = sweep_axis_index(sw, id, k);
 		struct hb_scene_error e;
 
-		if (a->num != NULL) {
-			if (hb_scene_set_number(out, a->key, a->num[i], &e) == HB_OK)
+		if (a->val == NULL) {
+			if (hb_scene_set_number(out, a->key, sweep_axis_num(a, i), &e) == HB_OK)
 				continue;
 			hb_scene_error_str(&e, m, sizeof m);
 		} else {
@@ -563,7 +591,7 @@ hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, c
 	char m[512], t[64];
 	int rc;
 
-	if ((rc = point_values(sw, id, out, msg, n)) != HB_OK)
+	if ((rc = sweep_point_values(sw, id, out, msg, n)) != HB_OK)
 		return rc;
 	m[0] = '\0';
 	if (hb_scene_validate(out, m, sizeof m) != HB_OK) {
@@ -642,154 +670,6 @@ hb_sweep_runs_header(const struct hb_sweep *sw, char *buf, size_t n)
 	len += (size_t)snprintf(len < n ? buf + len : NULL, len < n ? n - len : 0, "%s,cpu_s",
 	                        sw->rf.on ? ",refined" : "");
 	return len;
-}
-
-/*
- * The runs row of a finished sim (no newline); est: its error bars, when
- * sw->error (NULL: none could be had, the bars empty, why in note).
- */
-static void
-runs_row(FILE *f, const struct hb_sweep *sw, long id, const struct hb_sim *s,
-         const struct hb_error_estimate *est, const char *note, double cpu)
-{
-	int failed = hb_sim_end(s) == HB_SIM_END_FAIL;
-	char t[64];
-
-	fprintf(f, "r,%ld", id);
-	for (int k = 0; k < sw->naxes; k++) {
-		fputc(',', f);
-		csv_put_field(f, sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t));
-	}
-	fprintf(f, ",%s,", failed ? "failed" : "ok");
-	if (note != NULL && note[0] != '\0') {
-		char m[768];
-
-		snprintf(m, sizeof m, "%s; %s", hb_sim_end_str(s), note);
-		csv_put_field(f, m);
-	} else {
-		csv_put_field(f, failed && hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_sim_end_str(s));
-	}
-	for (int k = 0; k < HB_OBS_COUNT; k++) {
-		double v = hb_observable_value(s, k);
-
-		if (hb_observables[k].whole)
-			fprintf(f, ",%ld", (long)v);
-		else
-			csv_put_num(f, v);
-	}
-	for (int k = 0; sw->error && k < HB_OBS_COUNT; k++)
-		if (hb_error_observable(k))
-			csv_put_num(f, est != NULL ? est->obs[k] : NAN);
-	csv_put_num(f, cpu);
-	fputc('\n', f);
-}
-
-/* A stream on w's buffer, emptied (opened on first use). */
-static FILE *
-wbuf_stream(FILE **f, char **buf, size_t *len)
-{
-	if (*f == NULL)
-		*f = open_memstream(buf, len);
-	else if (fseeko(*f, 0, SEEK_SET) != 0)
-		return NULL;
-	return *f;
-}
-
-void
-sweep_wbuf_free(struct sweep_wbuf *w)
-{
-	if (w->coll != NULL)
-		fclose(w->coll);
-	if (w->blk != NULL)
-		fclose(w->blk);
-	free(w->cbuf);
-	free(w->bbuf);
-	memset(w, 0, sizeof *w);
-}
-
-/* See sweep_impl.h. */
-int
-sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, char **out,
-                      int *failed, char *msg, size_t n)
-{
-	double c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
-	struct hb_error_estimate est_store = { 0 }, none = { 0 }, *est = NULL;
-	struct hb_scene sc;
-	struct hb_sim *s;
-	char m[512], note[600];
-	FILE *f;
-	int rc;
-
-	*out = NULL;
-	note[0] = '\0';
-	*failed = 0;
-	/* Not validated here: hb_sim_new validates (and hb_sweep_check did). */
-	if ((rc = point_values(sw, id, &sc, msg, n)) != HB_OK)
-		return rc;
-	m[0] = '\0';
-	s = hb_sim_new(&sc, m, sizeof m);
-	if (s == NULL)
-		return hb_status_set(msg, n, HB_EINVAL, "point %ld: %s", id, m[0] ? m : "no memory");
-	(void)hb_sim_run(s);
-	*failed = hb_sim_end(s) == HB_SIM_END_FAIL;
-	/* --error: the same estimate as hybounce --batch --error (error.h) */
-	if (sw->error && !*failed) {
-		m[0] = '\0';
-		if (hb_error_estimate(s, NULL, &est_store, m, sizeof m) == HB_OK)
-			est = &est_store;
-		else
-			snprintf(note, sizeof note, "no error bars: %.500s", m);
-	}
-
-	/* The collisions exactly as --collisions writes them, each row prefixed. */
-	if ((f = wbuf_stream(&w->coll, &w->cbuf, &w->clen)) == NULL) {
-		hb_sim_free(s);
-		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-	}
-	/* flushes: cbuf holds clen bytes */
-	rc = hb_csv_stream_collisions_err(f, s, !sw->error ? NULL : est != NULL ? est : &none, m,
-	                                  sizeof m);
-	if (rc != HB_OK || w->cbuf == NULL) {
-		hb_error_free(&est_store);
-		hb_sim_free(s);
-		return hb_status_set(msg, n, HB_ENOMEM, "point %ld: collisions: %s", id, m);
-	}
-	if ((f = wbuf_stream(&w->blk, &w->bbuf, &w->blen)) == NULL) {
-		hb_error_free(&est_store);
-		hb_sim_free(s);
-		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-	}
-	{
-		const char *p = memchr(w->cbuf, '\n', w->clen), *end = w->cbuf + w->clen;
-
-		p = p ? p + 1 : end;    /* skip the header */
-		while (p < end) {
-			const char *e = memchr(p, '\n', (size_t)(end - p));
-			size_t l = e ? (size_t)(e - p) : (size_t)(end - p);
-
-			fprintf(f, "c,%ld,%.*s\n", id, (int)l, p);
-			p += l + (e != NULL);
-		}
-	}
-	runs_row(f, sw, id, s, est, note, clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0);
-	hb_error_free(&est_store);
-	hb_sim_free(s);
-	if (fflush(f) != 0 || ferror(f) || w->bbuf == NULL || (*out = malloc(w->blen + 1)) == NULL)
-		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-	memcpy(*out, w->bbuf, w->blen);
-	(*out)[w->blen] = '\0';
-	return HB_OK;
-}
-
-int
-hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed,
-                  char *msg, size_t n)
-{
-	struct sweep_wbuf w = { 0 };
-	int rc = sweep_point_block_buf(sw, id, &w, out, failed, msg, n);
-
-	sweep_wbuf_free(&w);
-	return rc;
 }
 
 const struct hb_scene *

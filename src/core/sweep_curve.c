@@ -384,9 +384,9 @@ hb_sweep_curve_boundaries(struct hb_sweep_curve *c, double *lo, double *hi, int 
 	nb = c->nbr;
 	for (long i = 0; i < nb && i < n; i++) {
 		if (lo)
-			lo[i] = c->fine->ax[0].num[c->br[i].lo];
+			lo[i] = sweep_axis_num(&c->fine->ax[0], c->br[i].lo);
 		if (hi)
-			hi[i] = c->fine->ax[0].num[c->br[i].hi];
+			hi[i] = sweep_axis_num(&c->fine->ax[0], c->br[i].hi);
 		if (located)
 			located[i] = c->br[i].hi - c->br[i].lo <= 1;
 	}

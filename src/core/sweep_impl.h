@@ -22,11 +22,28 @@ struct axis {
 	char spec[256];   /* as given, after '=' */
 	long n;           /* values (a refined axis: those of its lattice) */
 	char **val;       /* a list's n canonical texts, or NULL */
-	double *num;      /* a range's n canonical values, or NULL */
+	double *num;      /* a range's n canonical values, or NULL: a list, or ramp */
+	/* a range whose values are computed (sweep_axis_num), not kept: FROM and
+	 * TO canonical, every value between them the double of the formula */
+	struct {
+		double from, to;
+		int lg, on;
+	} ramp;
 	/* where a range's value is stored in the scene (sweep.c: fast_ready) */
 	size_t off;       /* a double at this offset of struct hb_scene, or */
 	int par;          /* law parameter par (-1: off) */
 };
+
+/* Value i of a range axis (a->val == NULL): kept or computed. */
+double
+sweep_ramp_value(double from, double to, long n, int lg, long i);
+
+static inline double
+sweep_axis_num(const struct axis *a, long i)
+{
+	return a->num != NULL ? a->num[i] : sweep_ramp_value(a->ramp.from, a->ramp.to, a->n,
+	                                                     a->ramp.lg, i);
+}
 
 /*
  * --refine (sweep_refine.c): the classes of a run that a boundary
@@ -59,7 +76,7 @@ struct hb_sweep {
 	 * When every axis is a range of a plain number (a double of the scene
 	 * or a law parameter): the base with each axis's first value set (its
 	 * flags, such as a material given, set too), into which a point writes
-	 * its values before the scene is derived once (sweep.c: point_values).
+	 * its values before the scene is derived once (sweep.c: sweep_point_values).
 	 */
 	int fast;
 	struct hb_scene fast_base;
@@ -162,18 +179,21 @@ int
 sweep_journal_lock(int fd, const char *path, char *msg, size_t n);
 
 /*
- * A worker's buffers for point blocks, reused from point to point (two
- * open_memstream(3) a point cost about 18k instructions, more than a
- * cheap point's whole run).  Zeroed to start; sweep_wbuf_free at the end.
+ * A worker's buffer for the collisions of its points, reused from point
+ * to point (an open_memstream(3) a point costs about 9k instructions).  Zeroed to start; sweep_wbuf_free at the end.
  */
 struct sweep_wbuf {
-	FILE *coll, *blk;
-	char *cbuf, *bbuf;
-	size_t clen, blen;
+	FILE *coll;
+	char *cbuf;
+	size_t clen;
 };
 
 void
 sweep_wbuf_free(struct sweep_wbuf *w);
+
+/* The base scene with the axes' values of point id, not validated. */
+int
+sweep_point_values(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n);
 
 /* hb_sweep_point_block with w's buffers; the scene is validated by hb_sim_new alone. */
 int

@@ -8,12 +8,16 @@
  * set of the atomic writer (atomic.h): a reader never sees half a file and
  * a failed merge leaves the old ones.  An incomplete folder is refused with
  * the shards that are missing or incomplete, by number, so that only those
- * are computed again.  The merge keeps 8 bytes per point (an offset and a
- * journal number), never the points' text.
+ * are computed again.  When every journal holds its points in increasing
+ * id order, each once (a sweep written in one go: the writer orders a
+ * grid's blocks), the journals are read side by side, a bit per point
+ * kept; otherwise an index of 8 bytes per point (an offset and a journal
+ * number).  Never the points' text.
  */
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -174,6 +178,45 @@ index_add(void *ctx, long id, off_t off, size_t len)
 	return HB_OK;
 }
 
+/*
+ * The first pass: whether the journals can be merged side by side, every
+ * journal sorted by id and no id twice (bits: one per point).
+ */
+struct order {
+	unsigned char *bits;
+	long *last, *blocks;   /* each journal's last id and its blocks */
+	int cur, sorted;
+	long count;
+};
+
+static int
+order_add(void *ctx, long id, off_t off, size_t len)
+{
+	struct order *o = ctx;
+
+	(void)off;
+	(void)len;
+	if (id <= o->last[o->cur] || (o->bits[id / 8] & (1u << (id % 8))))
+		o->sorted = 0;
+	o->bits[id / 8] |= (unsigned char)(1u << (id % 8));
+	o->last[o->cur] = id;
+	o->blocks[o->cur]++;
+	o->count++;
+	return HB_OK;
+}
+
+/* Merged side by side up to this many journals (a scan of the cursors a
+ * point); more, or journals out of order, take the index. */
+enum { MERGE_SIDE_MAX = 16 };
+
+/* A journal read block after block (the side-by-side merge). */
+struct cursor {
+	char *blk;
+	size_t cap, len;
+	off_t off;
+	long id, done;     /* id: the block's point, LONG_MAX: none left */
+};
+
 static int
 index_has(const void *ctx, long id)
 {
@@ -220,6 +263,33 @@ read_block(int fd, off_t off, char **buf, size_t *cap)
 		}
 		want *= 2;
 	}
+}
+
+/* A block's id: its first line's "c,ID," or "r,ID,". */
+static long
+block_id(const char *blk)
+{
+	return strtol(blk + 2, NULL, 10);
+}
+
+/* The lines of block blk into the sink or the two files. */
+static int
+emit_block(const char *blk, const struct hb_sweep_sink *sink, void *ctx, FILE *runs, FILE *coll,
+           char *msg, size_t n)
+{
+	int rc = HB_OK;
+
+	for (const char *p = blk; *p; ) {
+		const char *end = strchr(p, '\n');
+		size_t l = (size_t)(end - p) + 1;
+
+		if (sink != NULL && (rc = sink->row(ctx, p[0] == 'r', p + 2, l - 3, msg, n)) != HB_OK)
+			break;
+		if (sink == NULL)
+			fwrite(p + 2, 1, l - 2, p[0] == 'r' ? runs : coll);
+		p += l;
+	}
+	return rc;
 }
 
 /* See sweep_impl.h (from an empty run's CSV). */
@@ -337,6 +407,8 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
 {
 	const struct hb_scene *sc = sweep_base(sw);
 	struct index x = { 0 };
+	struct order od = { 0 };
+	int side = 0;      /* the journals merged side by side, no index */
 	char **names = NULL, hdr[4096], path[4200];
 	int nnames = 0, *fds = NULL, rc = HB_OK;
 	struct hb_atomic_set set;
@@ -346,13 +418,6 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
 	size_t cap = 0;
 	long np = hb_sweep_npoints(sw);
 
-	x.at = malloc((size_t)np * sizeof *x.at);
-	if (x.at == NULL) {
-		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-		goto out;
-	}
-	for (long i = 0; i < np; i++)
-		x.at[i] = INDEX_NONE;
 	if ((rc = journals_list(dir, &names, &nnames, msg, n)) != HB_OK)
 		goto out;
 	fds = malloc((size_t)(nnames + 1) * sizeof *fds);
@@ -362,6 +427,44 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
 	}
 	for (int i = 0; i < nnames; i++)
 		fds[i] = -1;
+	if (nnames <= MERGE_SIDE_MAX) {
+		od.bits = calloc((size_t)np / 8 + 1, 1);
+		od.last = malloc((size_t)(nnames + 1) * sizeof *od.last);
+		od.blocks = calloc((size_t)nnames + 1, sizeof *od.blocks);
+		if (od.bits == NULL || od.last == NULL || od.blocks == NULL) {
+			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+			goto out;
+		}
+		od.sorted = 1;
+		for (int i = 0; i < nnames && rc == HB_OK && od.sorted; i++) {
+			snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+			od.cur = i;
+			od.last[i] = -1;
+			rc = sweep_journal_scan(path, np, 0, order_add, &od, msg, n);
+		}
+		if (rc != HB_OK)
+			goto out;
+		side = od.sorted && od.count == np;
+		free(od.bits);
+		od.bits = NULL;
+	}
+	if (side) {
+		for (int i = 0; i < nnames && rc == HB_OK; i++) {
+			snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+			if (od.blocks[i] > 0 && (fds[i] = open(path, O_RDONLY | O_CLOEXEC)) < 0)
+				rc = hb_status_set(msg, n, HB_EIO, "%s: %s", path, strerror(errno));
+		}
+		if (rc != HB_OK)
+			goto out;
+		goto headers;
+	}
+	x.at = malloc((size_t)np * sizeof *x.at);
+	if (x.at == NULL) {
+		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+		goto out;
+	}
+	for (long i = 0; i < np; i++)
+		x.at[i] = INDEX_NONE;
 	for (int i = 0; i < nnames && rc == HB_OK; i++) {
 		snprintf(path, sizeof path, "%s/%s", dir, names[i]);
 		x.cur = i;
@@ -391,6 +494,7 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
 		                nnames == 1 ? "" : "s");
 		goto out;
 	}
+headers:
 	hb_sweep_runs_header(sw, hdr, sizeof hdr);
 	if ((rc = sweep_collisions_header(sc, hb_sweep_error(sw), path, sizeof path, msg, n)) != HB_OK)
 		goto out;
@@ -416,25 +520,58 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
 	fprintf(runs, "%s\n", hdr);
 	fprintf(coll, "%s\n", chdr);
 rows:
+	if (side) {
+		/* each journal's next block, side by side: the point id is the
+		 * head of exactly one of them */
+		struct cursor *cur = calloc((size_t)nnames + 1, sizeof *cur);
+
+		if (cur == NULL) {
+			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+			goto out;
+		}
+		for (int i = 0; i < nnames && rc == HB_OK; i++) {
+			cur[i].id = LONG_MAX;
+			if (od.blocks[i] > 0 && (cur[i].len = read_block(fds[i], 0, &cur[i].blk,
+			                                                 &cur[i].cap)) == 0)
+				rc = hb_status_set(msg, n, HB_EIO, "%s/%s: short read", dir, names[i]);
+			else if (od.blocks[i] > 0)
+				cur[i].id = block_id(cur[i].blk);
+		}
+		for (long id = 0; id < np && rc == HB_OK; id++) {
+			int i = 0;
+
+			while (i < nnames && cur[i].id != id)
+				i++;
+			if (i == nnames) {
+				rc = hb_status_set(msg, n, HB_EIO, "%s: point %ld: not where the journals "
+				                   "were read to hold it", dir, id);
+				break;
+			}
+			if ((rc = emit_block(cur[i].blk, sink, ctx, runs, coll, msg, n)) != HB_OK)
+				break;
+			cur[i].off += (off_t)cur[i].len;
+			cur[i].id = LONG_MAX;
+			if (++cur[i].done < od.blocks[i]) {
+				if ((cur[i].len = read_block(fds[i], cur[i].off, &cur[i].blk,
+				                             &cur[i].cap)) == 0)
+					rc = hb_status_set(msg, n, HB_EIO, "%s/%s: short read", dir, names[i]);
+				else
+					cur[i].id = block_id(cur[i].blk);
+			}
+		}
+		for (int i = 0; i < nnames; i++)
+			free(cur[i].blk);
+		free(cur);
+		goto out;
+	}
 	for (long id = 0; id < np && rc == HB_OK; id++) {
 		int fi = (int)(x.at[id] & 0xffff);
-		const char *p;
 
 		if (read_block(fds[fi], (off_t)(x.at[id] >> 16), &blk, &cap) == 0) {
 			rc = hb_status_set(msg, n, HB_EIO, "%s/%s: short read", dir, names[fi]);
 			break;
 		}
-		for (p = blk; *p; ) {
-			const char *end = strchr(p, '\n');
-			size_t l = (size_t)(end - p) + 1;
-
-			if (sink != NULL &&
-			    (rc = sink->row(ctx, p[0] == 'r', p + 2, l - 3, msg, n)) != HB_OK)
-				break;
-			if (sink == NULL)
-				fwrite(p + 2, 1, l - 2, p[0] == 'r' ? runs : coll);
-			p += l;
-		}
+		rc = emit_block(blk, sink, ctx, runs, coll, msg, n);
 	}
 out:
 	if (sink_open) {
@@ -456,6 +593,9 @@ out:
 	names_free(names, nnames);
 	free(blk);
 	free(x.at);
+	free(od.bits);
+	free(od.last);
+	free(od.blocks);
 	return rc;
 }
 

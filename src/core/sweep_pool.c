@@ -10,9 +10,13 @@
  * a few instructions per point and the writer is signalled after it is
  * released.  The results do not depend on the number of threads or the
  * order of completion: each point's bytes come from its own run alone, and
- * the files are sorted by id.
+ * the files are sorted by id.  The writer writes a grid's blocks in id
+ * order (a block waits while a point before it is still being computed),
+ * so a journal written in one go is sorted and its merge needs no index
+ * (sweep_merge.c).
  */
 #include <errno.h>
+#include <limits.h>
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,6 +46,12 @@ struct pool {
 	long next, step, np;        /* the next id (index of ids) to look at, the shard count, the points */
 	int stop;
 	struct result *head, *tail;
+	long *busy;                 /* each worker's point, LONG_MAX: none */
+};
+
+struct worker_arg {
+	struct pool *p;
+	long w;
 };
 
 /* The next point to compute, or -1 (under p->mu). */
@@ -67,7 +77,8 @@ pool_take(struct pool *p)
 static void *
 worker(void *arg)
 {
-	struct pool *p = arg;
+	struct pool *p = ((struct worker_arg *)arg)->p;
+	long w = ((struct worker_arg *)arg)->w;
 	struct sweep_wbuf wb = { 0 };   /* this worker's buffers, reused point after point */
 
 	for (;;) {
@@ -81,17 +92,21 @@ worker(void *arg)
 			sweep_wbuf_free(&wb);
 			return NULL;
 		}
+		p->busy[w] = id;
 		pthread_mutex_unlock(&p->mu);
 
-		r = calloc(1, sizeof *r);
+		r = malloc(sizeof *r);   /* not calloc: msg is 256 bytes to clear */
 		c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
 		if (r != NULL) {
+			r->next = NULL;
+			r->msg[0] = '\0';
 			r->id = id;
 			r->rc = sweep_point_block_buf(p->sw, id, &wb, &r->blk, &r->failed, r->msg,
 			                          sizeof r->msg);
 			r->cpu = clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
 		}
 		pthread_mutex_lock(&p->mu);
+		p->busy[w] = LONG_MAX;
 		if (r == NULL) {
 			p->stop = 2;  /* out of memory: the caller says so */
 		} else {
@@ -111,6 +126,39 @@ worker(void *arg)
 	}
 }
 
+/* Adds r to the list at *l, kept by increasing id. */
+static void
+held_add(struct result **l, struct result *r)
+{
+	while (*l != NULL && (*l)->id < r->id)
+		l = &(*l)->next;
+	r->next = *l;
+	*l = r;
+}
+
+/*
+ * Blocks held at most: past this (a worker stalled on one point while the
+ * others finish thousands), the first is written out of order, memory
+ * stays bounded (a few MB) and the merge takes its index.  256 was passed
+ * at a load average of 13 on 2 cores (a worker descheduled for long).
+ */
+enum { HELD_MAX = 4096 };
+
+/* Whether held's first block can be written (under p->mu): a list of ids
+ * at once, a grid's when no worker computes a point before it. */
+static int
+writable(const struct pool *p, const struct result *held, long nheld, long nth)
+{
+	if (held == NULL)
+		return 0;
+	if (p->ids != NULL || nheld >= HELD_MAX)
+		return 1;
+	for (long i = 0; i < nth; i++)
+		if (p->busy[i] < held->id)
+			return 0;
+	return 1;
+}
+
 /* See sweep_impl.h. */
 int
 sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int fd,
@@ -120,6 +168,9 @@ sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int f
               size_t n)
 {
 	struct pool p;
+	struct worker_arg *wa = NULL;
+	struct result *held = NULL;   /* finished, not written yet, by id */
+	long nheld = 0;
 	pthread_t *th = NULL;
 	long got = 0, nth = 0;
 	int rc = HB_OK, cancelled = 0;
@@ -142,12 +193,19 @@ sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int f
 	if (nth > npending)
 		nth = npending;
 	th = calloc((size_t)nth, sizeof *th);
-	if (th == NULL) {
+	wa = calloc((size_t)nth, sizeof *wa);
+	p.busy = malloc((size_t)nth * sizeof *p.busy);
+	if (th == NULL || wa == NULL || p.busy == NULL) {
 		rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+		nth = 0;
 		goto threads_done;
 	}
 	for (long i = 0; i < nth; i++)
-		if (pthread_create(&th[i], NULL, worker, &p) != 0) {
+		p.busy[i] = LONG_MAX;
+	for (long i = 0; i < nth; i++) {
+		wa[i].p = &p;
+		wa[i].w = i;
+		if (pthread_create(&th[i], NULL, worker, &wa[i]) != 0) {
 			nth = i;
 			if (nth == 0) {
 				rc = hb_status_set(msg, n, HB_ENOMEM, "cannot start a thread");
@@ -155,11 +213,15 @@ sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int f
 			}
 			break;
 		}
+	}
 	pthread_mutex_lock(&p.mu);
 	while (got < npending && rc == HB_OK) {
 		struct result *r;
 
-		while (p.head == NULL && p.stop == 0 && !cancelled) {
+		/* the finished points in held, by id; the first written when no
+		 * point before it is being computed (a grid's ids are taken in
+		 * order; a list of ids is written as it finishes) */
+		while (p.head == NULL && !writable(&p, held, nheld, nth) && p.stop == 0 && !cancelled) {
 			struct timespec until;
 
 			if (o->cancel != NULL && *o->cancel) {
@@ -178,14 +240,23 @@ sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int f
 			cancelled = 1;
 			break;
 		}
-		if (p.head == NULL) {
-			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-			break;
+		while (p.head != NULL) {
+			r = p.head;
+			p.head = r->next;
+			held_add(&held, r);
+			nheld++;
 		}
-		r = p.head;
-		p.head = r->next;
-		if (p.head == NULL)
-			p.tail = NULL;
+		p.tail = NULL;
+		if (!writable(&p, held, nheld, nth)) {
+			if (p.stop != 0) {
+				rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+				break;
+			}
+			continue;
+		}
+		r = held;
+		held = r->next;
+		nheld--;
 		pthread_mutex_unlock(&p.mu);
 		if (r->rc != HB_OK)
 			rc = hb_status_set(msg, n, r->rc, "%s", r->msg);
@@ -215,6 +286,12 @@ threads_done:
 	while (p.head) {
 		struct result *r = p.head;
 
+		p.head = r->next;
+		held_add(&held, r);
+	}
+	while (held) {
+		struct result *r = held;
+
 		/* Stopped: the points that were finishing are kept too. */
 		if (cancelled && rc == HB_OK && r->rc == HB_OK) {
 			if (sweep_write_all(fd, r->blk, strlen(r->blk)) != 0)
@@ -224,7 +301,7 @@ threads_done:
 				pr->failed += r->failed;
 			}
 		}
-		p.head = r->next;
+		held = r->next;
 		free(r->blk);
 		free(r);
 	}
@@ -232,6 +309,8 @@ threads_done:
 		rc = hb_status_set(msg, n, HB_EDONE, "stopped with %ld of %ld points done; "
 		                "the same command resumes", pr->done, pr->total);
 	free(th);
+	free(wa);
+	free(p.busy);
 	pthread_cond_destroy(&p.cv);
 	pthread_mutex_destroy(&p.mu);
 	return rc;

@@ -197,7 +197,7 @@ hb_sweep_refine(struct hb_sweep *sw, const char *spec, char *msg, size_t n)
 	for (int k = 0; k < sw->naxes; k++) {
 		const struct axis *a = &sw->ax[k];
 
-		if (a->num == NULL || a->n < 2)
+		if (a->val != NULL || a->n < 2)
 			return hb_status_set(msg, n, HB_EINVAL, "--refine %s: --vary %s=%s: a boundary "
 			                     "is bisected between values of a range; accepted: "
 			                     "FROM:TO:N or FROM:TO:N:log with N >= 2", spec, a->key,
@@ -236,6 +236,7 @@ hb_sweep_refine(struct hb_sweep *sw, const char *spec, char *msg, size_t n)
 		}
 		free(a->num);
 		a->num = t.num;
+		a->ramp = t.ramp;
 		a->n = t.n;
 	}
 	sw->max_points = save_max;

@@ -6,8 +6,8 @@
 # engine summary of docs/speed-and-accuracy.md (between the ENGINE-V2 markers), the bench's
 # own report (DIR/report.md), then, unchanged, the sections between the
 # REFERENCE-SECTIONS markers (make bench-steppers writes into them),
-# tests/bench/REPORT-figures.md (the figure and Python targets) and the
-# sweep's (DIR/sweep.txt, from make bench-sweep; kept from the old report
+# tests/bench/REPORT-figures.md (the figure and Python targets), the
+# chains' section (make bench-chains) and the sweep's (DIR/sweep.txt, from make bench-sweep; kept from the old report
 # when there is none); and DIR/studies.md, when there, into README.md
 # (STUDIES-SUMMARY) and the report (STUDIES).  Run from the top of the tree
 # (make bench-docs).
@@ -52,6 +52,13 @@ HEAD
 	# measured by hand: kept as written
 	echo
 	cat "$here/REPORT-figures.md"
+	# the chains' figures (make bench-chains writes between its CHAINS
+	# markers): kept as the report has them
+	if [ -r "$out" ] && grep -q '^## Chains (make bench-chains)$' "$out"; then
+		echo
+		sed -n '/^## Chains (make bench-chains)$/,/^## Sweeps (make bench-sweep)$/p' "$out" |
+			sed '$!b; /^## Sweeps/d' | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
+	fi
 	# the sweep's figures (make bench-sweep), last: the latest run's, else
 	# the section as the report had it
 	if [ -r "$dir/sweep.txt" ]; then

@@ -1,0 +1,260 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/*
+ * sweep_block.c - a point's journal block (see sweep_impl.h): the point
+ * run, its collisions exactly as --collisions writes them, each row
+ * prefixed "c,ID,", then its runs row "r,ID,...".  The block is built in
+ * one buffer (no stream), its numbers written by cnum_g17, the bytes of
+ * %.17g.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "hybounce/csv.h"
+#include "hybounce/error.h"
+#include "hybounce/observables.h"
+#include "hybounce/sim.h"
+#include "hybounce/status.h"
+#include "hybounce/sweep.h"
+#include "clock.h"
+#include "sweep_impl.h"
+#include "cnum.h"
+
+/*
+ * A block being built: text appended to a malloc'd buffer that becomes the
+ * block itself (no stream, no copy).  oom: a realloc failed, the text is
+ * incomplete.
+ */
+struct sbuf {
+	char *p;
+	size_t len, cap;
+	int oom;
+};
+
+/* Grows b to hold n more bytes and a '\0'; NULL when it cannot. */
+static char *
+sb_grow(struct sbuf *b, size_t n)
+{
+	size_t cap = b->cap ? b->cap : 256;
+	char *q;
+
+	while (cap < b->len + n + 1)
+		cap *= 2;
+	if (b->oom || (q = realloc(b->p, cap)) == NULL) {
+		b->oom = 1;
+		return NULL;
+	}
+	b->p = q;
+	b->cap = cap;
+	return b->p + b->len;
+}
+
+static inline char *
+sb_room(struct sbuf *b, size_t n)
+{
+	return b->len + n + 1 <= b->cap ? b->p + b->len : sb_grow(b, n);
+}
+
+static inline void
+sb_put(struct sbuf *b, const char *s, size_t n)
+{
+	char *d = sb_room(b, n);
+
+	if (d != NULL) {
+		memcpy(d, s, n);
+		b->len += n;
+	}
+}
+
+static void
+sb_long(struct sbuf *b, long v)
+{
+	char t[24];
+
+	sb_put(b, t, cnum_long(t, v));
+}
+
+/* A field as csv_put_field writes it: quoted when it holds , " CR or LF. */
+static void
+sb_field(struct sbuf *b, const char *s)
+{
+	if (strpbrk(s, ",\"\r\n") == NULL) {
+		sb_put(b, s, strlen(s));
+		return;
+	}
+	sb_put(b, "\"", 1);
+	for (; *s != '\0'; s++) {
+		if (*s == '"')
+			sb_put(b, "\"", 1);
+		sb_put(b, s, 1);
+	}
+	sb_put(b, "\"", 1);
+}
+
+/* ",v" as csv_put_num writes it: %.17g, a negative zero as 0, NaN empty. */
+static void
+sb_num(struct sbuf *b, double v)
+{
+	char *d = sb_room(b, CNUM_G17_MAX + 1);
+
+	if (d == NULL)
+		return;
+	*d = ',';
+	b->len += 1 + (isnan(v) ? 0 : cnum_g17(d + 1, v == 0 ? 0.0 : v));
+}
+
+/*
+ * The runs row of a finished sim (no newline); est: its error bars, when
+ * sw->error (NULL: none could be had, the bars empty, why in note).
+ */
+static void
+runs_row(struct sbuf *f, const struct hb_sweep *sw, long id, const struct hb_sim *s,
+         const struct hb_error_estimate *est, const char *note, double cpu)
+{
+	int failed = hb_sim_end(s) == HB_SIM_END_FAIL;
+	char t[64];
+
+	sb_put(f, "r,", 2);
+	sb_long(f, id);
+	for (int k = 0; k < sw->naxes; k++) {
+		sb_put(f, ",", 1);
+		sb_field(f, sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t));
+	}
+	if (failed)
+		sb_put(f, ",failed,", 8);
+	else
+		sb_put(f, ",ok,", 4);
+	if (note != NULL && note[0] != '\0') {
+		char m[768];
+
+		snprintf(m, sizeof m, "%s; %s", hb_sim_end_str(s), note);
+		sb_field(f, m);
+	} else {
+		sb_field(f, failed && hb_sim_errmsg(s)[0] ? hb_sim_errmsg(s) : hb_sim_end_str(s));
+	}
+	for (int k = 0; k < HB_OBS_COUNT; k++) {
+		double v = hb_observable_value(s, k);
+
+		if (hb_observables[k].whole) {
+			sb_put(f, ",", 1);
+			sb_long(f, (long)v);
+		} else {
+			sb_num(f, v);
+		}
+	}
+	for (int k = 0; sw->error && k < HB_OBS_COUNT; k++)
+		if (hb_error_observable(k))
+			sb_num(f, est != NULL ? est->obs[k] : NAN);
+	sb_num(f, cpu);
+	sb_put(f, "\n", 1);
+}
+
+void
+sweep_wbuf_free(struct sweep_wbuf *w)
+{
+	if (w->coll != NULL)
+		fclose(w->coll);
+	free(w->cbuf);
+	memset(w, 0, sizeof *w);
+}
+
+/* See sweep_impl.h. */
+int
+sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, char **out,
+                      int *failed, char *msg, size_t n)
+{
+	double c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
+	struct hb_error_estimate est_store = { 0 }, none = { 0 }, *est = NULL;
+	struct sbuf b = { 0 };
+	struct hb_scene sc;
+	struct hb_sim *s;
+	char m[512], note[600];
+	FILE *f;
+	int rc;
+
+	*out = NULL;
+	note[0] = '\0';
+	*failed = 0;
+	/* Not validated here: hb_sim_new validates (and hb_sweep_check did). */
+	if ((rc = sweep_point_values(sw, id, &sc, msg, n)) != HB_OK)
+		return rc;
+	m[0] = '\0';
+	s = hb_sim_new(&sc, m, sizeof m);
+	if (s == NULL)
+		return hb_status_set(msg, n, HB_EINVAL, "point %ld: %s", id, m[0] ? m : "no memory");
+	(void)hb_sim_run(s);
+	*failed = hb_sim_end(s) == HB_SIM_END_FAIL;
+	/* --error: the same estimate as hybounce --batch --error (error.h) */
+	if (sw->error && !*failed) {
+		m[0] = '\0';
+		if (hb_error_estimate(s, NULL, &est_store, m, sizeof m) == HB_OK)
+			est = &est_store;
+		else
+			snprintf(note, sizeof note, "no error bars: %.500s", m);
+	}
+
+	/* The collisions exactly as --collisions writes them, each row prefixed. */
+	if (w->coll == NULL)
+		w->coll = open_memstream(&w->cbuf, &w->clen);
+	f = w->coll != NULL && fseeko(w->coll, 0, SEEK_SET) == 0 ? w->coll : NULL;
+	if (f == NULL) {
+		hb_sim_free(s);
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+	}
+	/* flushes: cbuf holds clen bytes */
+	rc = hb_csv_stream_collisions_err(f, s, !sw->error ? NULL : est != NULL ? est : &none, m,
+	                                  sizeof m);
+	if (rc != HB_OK || w->cbuf == NULL) {
+		hb_error_free(&est_store);
+		hb_sim_free(s);
+		return hb_status_set(msg, n, HB_ENOMEM, "point %ld: collisions: %s", id, m);
+	}
+	{
+		const char *p = memchr(w->cbuf, '\n', w->clen), *end = w->cbuf + w->clen;
+		char pre[32];
+		size_t pl;
+
+		pre[0] = 'c';
+		pre[1] = ',';
+		pl = 2 + cnum_long(pre + 2, id);
+		pre[pl++] = ',';
+		p = p ? p + 1 : end;    /* skip the header */
+		/* the collisions, their prefixes and the runs row (~300 bytes) */
+		(void)sb_room(&b, (size_t)(end - p) + 32 * (size_t)hb_sim_ncollisions(s) + 512);
+		while (p < end) {
+			const char *e = memchr(p, '\n', (size_t)(end - p));
+			size_t l = e ? (size_t)(e - p) : (size_t)(end - p);
+
+			sb_put(&b, pre, pl);
+			sb_put(&b, p, l);
+			sb_put(&b, "\n", 1);
+			p += l + (e != NULL);
+		}
+	}
+	runs_row(&b, sw, id, s, est, note, clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0);
+	hb_error_free(&est_store);
+	hb_sim_free(s);
+	if (b.oom || b.p == NULL) {
+		free(b.p);
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+	}
+	b.p[b.len] = '\0';
+	/* the block waits for the writer at its length, not the buffer's */
+	*out = b.len + 1 < b.cap ? realloc(b.p, b.len + 1) : b.p;
+	if (*out == NULL)
+		*out = b.p;
+	return HB_OK;
+}
+
+int
+hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed,
+                  char *msg, size_t n)
+{
+	struct sweep_wbuf w = { 0 };
+	int rc = sweep_point_block_buf(sw, id, &w, out, failed, msg, n);
+
+	sweep_wbuf_free(&w);
+	return rc;
+}
