@@ -363,6 +363,10 @@ hbs_pack_sample(const struct hb_sim *s, const struct layout *L, const struct hb_
 int
 hbs_fail(struct hb_sim *s, int status, const char *why);
 
+/* A failure at interface I (a chain's limit): why, then that interface's state, not s->I's. */
+int
+hbs_fail_iface(struct hb_sim *s, const struct iface *I, int status, const char *why);
+
 int
 hbs_push_sample(struct hb_sim *s, int kind);
 

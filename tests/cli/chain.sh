@@ -151,4 +151,21 @@ else
 	notok "bodies that are not neighbours overlapping stop the run, exit 1, naming them (got $rc)" "$T/out"
 fi
 
+# a floor's interface is named with the floor, and the state given with the
+# message is that interface's, its overlap -x the indentation named
+"$BIN" --batch stacked-drop --set run.max_indent=0.1 >"$T/out" 2>&1
+rc=$?
+d=$(sed -n 's/.*interface 0 (the floor and body 1) is indented by \([0-9.e-]*\) m at t = [0-9.e-]* s, 0.1[0-9]* of the body.s radius 0.1217 m, past run.max_indent = 0.1: .*; interface 0 there (j = [0-9]*): x = -\([0-9.e-]*\) m, .*/\1 \2/p' "$T/out" | head -n 1)
+if [ $rc -eq 1 ] && [ -n "$d" ] && [ "${d% *}" = "${d#* }" ]; then
+	ok "a floor's indentation past run.max_indent names the floor and body 1, with that interface's state"
+else
+	notok "a floor's indentation past run.max_indent names the floor and body 1, with that interface's state (got $rc, '$d')" "$T/out"
+fi
+# the stacked drop's balls flatten past the default 0.1: its preset admits 0.45
+if "$BIN" --batch stacked-drop >"$T/out" 2>&1 && grep -q '^  ended       horizon T = 3 s' "$T/out"; then
+	ok "stacked-drop runs to its horizon under its run.max_indent"
+else
+	notok "stacked-drop runs to its horizon under its run.max_indent" "$T/out"
+fi
+
 [ "$fails" -eq 0 ]
