@@ -81,6 +81,7 @@ struct body {
 	                           (the two-body scenes': from their interface, hbs_body_at) */
 	double a;               /* a chain's: its constant acceleration */
 	double Fe;              /* a chain's: its applied force, constant */
+	double y0, u0;          /* a chain's: its position and velocity at t = 0 */
 	int cl;                 /* a chain's: the cluster it is in (index), -1 in flight */
 };
 

@@ -66,6 +66,7 @@ hbs_push_sample(struct hb_sim *s, int kind)
 	a.Fcmax = I->Fcmax;
 	a.Ee = I->Ee;
 	a.Wc = I->Wc;
+	a.k = s->k0 + s->ia;
 	if (arc_push(s->arc, &a))
 		return hbs_fail(s, HB_ENOMEM, "out of memory for the arc");
 	return 0;

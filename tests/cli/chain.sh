@@ -168,4 +168,33 @@ else
 	notok "stacked-drop runs to its horizon under its run.max_indent" "$T/out"
 fi
 
+# --check on a chain: energy (K + absorbed = K(0) + work of the loads) and
+# momentum as identities, each contact by its own interface's law: a
+# dissipative interface in an elastic cradle absorbs energy without a warning
+if "$BIN" --batch newtons-cradle-5 --check --set interface.2.law=shccl --set interface.2.c=2e7 \
+        >"$T/out" 2>"$T/err" && [ ! -s "$T/err" ] &&
+    grep -q '^  check       physics: ok (4 contacts, each by its interface.s law' "$T/out" &&
+    grep -q '^  check       energy: ok (K 0.01632[0-9]* J + absorbed by the interfaces 1.14[0-9]*e-05 J = K(0) 0.0163362818 J + work of the loads 0 J, to [0-9.e-]* of the largest, 0.0[0-9]* x the tolerance 1e-12)' "$T/out" &&
+    grep -q '^  check       momentum: ok (-0.0326725635973 kg m/s = -0.0326725635973 at t = 0' "$T/out"; then
+	ok "--check on a chain with a dissipative interface in an elastic cradle: energy and momentum identities, no false warning"
+else
+	notok "--check on a chain with a dissipative interface in an elastic cradle: energy and momentum identities, no false warning" "$T/out" "$T/err"
+fi
+# with gravity and a floor: the loads' work in the balance, momentum not an identity
+if "$BIN" --batch stacked-drop --check >"$T/out" 2>&1 &&
+    grep -q '^  check       energy: ok (K 2.09[0-9]* J + absorbed by the interfaces 6.72[0-9]* J = K(0) 0 J + work of the loads 8.81[0-9]* J' "$T/out" &&
+    grep -q '^  check       momentum: not an identity (the floor takes momentum)' "$T/out" &&
+    grep -q '^  check       physics: ok (6 contacts, each by its interface.s law: W within what the law allows; e of the 4 with no neighbour in contact)' "$T/out"; then
+	ok "--check on stacked-drop: the work of gravity in the energy balance; e checked on the 4 contacts with no neighbour in contact"
+else
+	notok "--check on stacked-drop: the work of gravity in the energy balance; e checked on the 4 contacts with no neighbour in contact" "$T/out"
+fi
+# the limits passed under run.chain_limits = warn are reported by --check, not failed
+if "$BIN" --batch stacked-drop --check --set run.max_indent=0.1 --set run.chain_limits=warn >"$T/out" 2>&1 &&
+    grep -q '^  check       model limits: passed [1-9][0-9]* times under run.chain_limits = warn .*the first: interface 0 (the floor and body 1) is indented' "$T/out"; then
+	ok "--check reports the model limits passed under run.chain_limits = warn"
+else
+	notok "--check reports the model limits passed under run.chain_limits = warn" "$T/out"
+fi
+
 [ "$fails" -eq 0 ]
