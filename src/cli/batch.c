@@ -253,13 +253,18 @@ print_header(FILE *out, const char *preset, const char *path,
 	if (sc->description[0])
 		print_wrapped(out, "            ", sc->description);
 	print_law(out, sc);
-	if (sc->chain.n > 0)
+	if (sc->chain.n > 0) {
+		/* chain.spacing = 0: the bodies touch */
+		if (sc->chain.spacing == 0.0)
+			snprintf(c, sizeof c, "touching");
+		else
+			snprintf(c, sizeof c, "%s apart", fmt(sc->chain.spacing, hb_unit_length, a, sizeof a));
 		fprintf(out, "system      chain of %d bodies (each body 1, the law between neighbours%s)%s, "
-		        "%s apart, striker (body %d) at %s\n", sc->chain.n,
+		        "%s, striker (body %d) at %s\n", sc->chain.n,
 		        sc->over.n > 0 ? ", but for the overrides" : "",
-		        sc->chain.floor ? " on a floor" : "",
-		        fmt(sc->chain.spacing, hb_unit_length, a, sizeof a), sc->chain.n,
+		        sc->chain.floor ? " on a floor" : "", c, sc->chain.n,
 		        fmt(sc->chain.v, hb_unit_velocity, b, sizeof b));
+	}
 	else if (d->system == HB_SCENE_REDUCED)
 		fprintf(out, "system      reduced H_r: body 2 is a fixed obstacle\n");
 	else

@@ -197,4 +197,14 @@ else
 	notok "--check reports the model limits passed under run.chain_limits = warn" "$T/out"
 fi
 
+# a touching chain's header says so, not "0 m apart"; the README's cradle figures
+if "$BIN" --batch newtons-cradle-3 >"$T/out" 2>&1 &&
+    grep -q '^system      chain of 3 bodies (.*), touching, striker (body 3) at -1 m/s$' "$T/out" &&
+    grep -q '^  body 1      u = -994.549 mm/s' "$T/out" && grep -q '^  body 2      u = -76.403 mm/s' "$T/out" &&
+    grep -q '^  body 3      u = 70.9524 mm/s' "$T/out"; then
+	ok "newtons-cradle-3: the header says touching; -0.9945, -0.0764, +0.0710 m/s as README gives"
+else
+	notok "newtons-cradle-3: the header says touching; -0.9945, -0.0764, +0.0710 m/s as README gives" "$T/out"
+fi
+
 [ "$fails" -eq 0 ]
