@@ -207,4 +207,23 @@ else
 	notok "newtons-cradle-3: the header says touching; -0.9945, -0.0764, +0.0710 m/s as README gives" "$T/out"
 fi
 
+# the run observable leaving: a sweep of the striker's velocity against the
+# balls that leave (README), and collisions.csv with the interface k
+rm -rf "$T/sw"
+if "$BIN" sweep newtons-cradle-5-shccl --set run.T=0.1 --vary 'striker.v=-1,-3' --jobs 1 --quiet \
+        --out "$T/sw" 2>"$T/err" &&
+    [ "$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "leaving") c = i; next }
+                  { printf "%s ", $c }' "$T/sw/runs.csv")" = "2 3 " ] &&
+    head -n 1 "$T/sw/collisions.csv" | grep -q '^id,i,k,t_e,'; then
+	ok "sweep --vary striker.v: leaving is 2 at 1 m/s and 3 at 3 m/s (shccl cradle); collisions.csv has k"
+else
+	notok "sweep --vary striker.v: leaving is 2 at 1 m/s and 3 at 3 m/s (shccl cradle); collisions.csv has k" "$T/err" "$T/sw/runs.csv"
+fi
+if "$BIN" --batch stacked-drop --set run.T=0.63 >"$T/out" 2>&1 && grep -q 'leaving = 2,' "$T/out" &&
+    "$BIN" --batch stacked-drop >"$T/out" 2>&1 && grep -q 'leaving = 1,' "$T/out"; then
+	ok "leaving on a floor: both balls just after the stacked drop's bounce, the tennis ball alone at 3 s"
+else
+	notok "leaving on a floor: both balls just after the stacked drop's bounce, the tennis ball alone at 3 s" "$T/out"
+fi
+
 [ "$fails" -eq 0 ]
