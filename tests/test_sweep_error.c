@@ -45,7 +45,7 @@ Test(sweep_error, spec_line_and_headers)
 	hb_sweep_runs_header(sw, h, sizeof h);
 	/* an error bar for each observable but the counts of work */
 	cr_assert(strstr(h, ",jac,collisions_err,t_pc_err,e_first_err,") != NULL, "%s", h);
-	cr_assert(strstr(h, ",x_c_end_err,cpu_s") != NULL, "%s", h);
+	cr_assert(strstr(h, ",x_c_end_err,leaving_err,cpu_s") != NULL, "%s", h);
 	cr_assert_null(strstr(h, "steps_err"));
 	cr_assert(!hb_error_observable(HB_OBS_RHS) && hb_error_observable(HB_OBS_E_FIRST));
 	/* read back from the spec */

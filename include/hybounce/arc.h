@@ -60,6 +60,8 @@ struct hb_arc_sample {
 	/* running over the whole run: */
 	double Ee;              /* int_0^t F_er v dt, the work of the applied force, J */
 	double Wc;              /* int_0^t F_c v dt, the work of the contact force, J */
+	int k;                  /* the interface the sample is of: a chain's interface (0 on
+	                           the floor), 1 in the full system, 0 in the reduced one */
 };
 
 struct hb_arc_interval {

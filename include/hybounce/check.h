@@ -110,6 +110,68 @@ hb_check_physics_flags(const struct hb_scene *sc, const struct hb_arc *arc,
 void
 hb_check_physics_summary(const struct hb_check_physics *r, char *buf, size_t n);
 
+/*
+ * A chain's run (docs/chains.md section 5), at its last sample, to the
+ * same margin (HB_CHECK_PHYS_FACTOR tol, tol = max(run.rtol, run.atol)):
+ *  - energy: the kinetic energy K of the bodies, plus what the interfaces
+ *    absorbed since t = 0 (-sum_k W_c,k: stored in the contacts in
+ *    progress and dissipated), equals K(0) plus the work of the applied
+ *    forces, sum_i F_i (y_i - y_i(0)); the residual relative to the
+ *    largest of these terms;
+ *  - momentum, on a chain without a floor: sum_i m_i u_i = its value at
+ *    t = 0 plus t sum_i F_i (equal with no load); relative to the largest
+ *    term;
+ *  - each completed contact by its own interface's law (overrides
+ *    applied): W >= 0 for a passive law, W = 0 for an elastic one,
+ *    relative to the larger of its impact energy m_k v_i^2/2 and
+ *    F_c^max x_c^max; and, for a contact during which neither neighbouring
+ *    interface was in contact (its relative motion then feels its own
+ *    force and its F_e,r alone), e <= sqrt(1 + |F_e,r| x_c^r / (m_k v_i^2/2))
+ *    (e equal to it for an elastic law); a contact begun at no approach
+ *    velocity (touching bodies) has no e to check;
+ *  - the model limits passed under run.chain_limits = warn are reported
+ *    (limits, limnote), not counted as failures.
+ * The identities are not checked on a run that failed (its bodies are
+ * not placed at the failing state): energy and momentum are then NAN.
+ */
+struct hb_check_chain {
+	double tol;          /* max(rtol, atol) */
+	double t;            /* the time checked (the last sample), s */
+	double kinetic0;     /* K(0), J */
+	double kinetic;      /* K(t), J */
+	double absorbed;     /* -sum_k W_c,k: stored + dissipated by the interfaces, J */
+	double loads;        /* the work of the applied forces, J */
+	double eresid;       /* |K + absorbed - K(0) - loads| / the largest of them; NAN: not checked */
+	int momentum;        /* 1: checked (no floor) */
+	double p0, p;        /* momentum at 0 and t, kg m/s */
+	double impulse;      /* t sum_i F_i, kg m/s */
+	double presid;       /* |p - p0 - impulse| / the largest of them; NAN: not checked */
+	size_t ncontacts;    /* completed contacts checked (W) */
+	size_t nisolated;    /* ... of which isolated, with an approach velocity (e checked) */
+	double wworst;       /* largest W violation / its energy scale (>= 0 is a violation measure) */
+	long wworst_at;      /* its collision index (struct hb_collision.i), -1 if none */
+	int wworst_k;        /* its interface */
+	double W_at;         /* its W, J */
+	double eworst;       /* largest e - bound (elastic: |e - bound|) */
+	long eworst_at;      /* its collision index, -1 if none */
+	int eworst_k;        /* its interface */
+	double e_at, e_bound;
+	long limits;         /* model limits passed (run.chain_limits = warn) */
+	const char *limnote; /* the first, in words ("" when none) */
+	int failed;          /* checks that failed (0..4) */
+};
+
+struct hb_sim;
+
+/*
+ * Fills *r for the chain run s (a scene with chain.n > 0); returns 0 when
+ * every check passes, or HB_EINVAL with one line per failure
+ * ("; "-separated) in msg.  HB_EINVAL with a message for a run that is not
+ * a chain's.
+ */
+int
+hb_check_chain(const struct hb_sim *s, struct hb_check_chain *r, char *msg, size_t n);
+
 HB_END_DECLS
 
 #endif

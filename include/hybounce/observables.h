@@ -36,6 +36,7 @@ enum hb_observable {
 	HB_OBS_X_END,          /* x, m */
 	HB_OBS_V_END,          /* v, m/s */
 	HB_OBS_X_C_END,        /* x_c, m */
+	HB_OBS_LEAVING,        /* a chain's bodies leaving it at the end (none for two bodies) */
 	HB_OBS_STEPS,          /* accepted steps */
 	HB_OBS_REJECTED,       /* rejected steps */
 	HB_OBS_RHS,            /* right-hand side evaluations */

@@ -14,11 +14,32 @@
 #include "hybounce/check.h"
 #include "hybounce/status.h"
 #include "cnum.h"
+#include "scene_chain.h"
+#include "check_impl.h"
+
+/*
+ * The law of the interface sample a is of: the scene's, or in a chain
+ * interface a->k's own (its overrides applied, its stiffness derived for
+ * its pair of bodies), so that each interface is judged by its own law.
+ */
+static const struct hb_law_type *
+law_of(const struct hb_scene *sc, const struct hb_arc_sample *a, struct scene_chain_iface *ci)
+{
+	if (sc->chain.n > 0 && scene_chain_iface(sc, a->k, ci) == HB_OK)
+		return ci->law;
+	ci->law = sc->law;
+	memcpy(ci->par, sc->par, sizeof ci->par);
+	ci->ext = sc->ext;
+	return sc->law;
+}
 
 static double
 phi_of(const struct hb_scene *sc, const struct hb_arc_sample *a)
 {
-	return sc->law->phi(sc->par, sc->ext, a->xc, a->z, a->v);
+	struct scene_chain_iface ci;
+	const struct hb_law_type *law = law_of(sc, a, &ci);
+
+	return law->phi(ci.par, ci.ext, a->xc, a->z, a->v);
 }
 
 int
@@ -41,8 +62,9 @@ int
 hb_check_solution_pair(const struct hb_scene *sc, const struct hb_arc *arc, char *msg, size_t n)
 {
 	size_t i, len = hb_arc_len(arc);
-	int nz = sc->law->n_z, k;
+	int nz, k;
 	long skipped = 0;   /* flow intervals thinned out so far */
+	struct scene_chain_iface ci;
 
 	if (len == 0)
 		return hb_status_set(msg, n, HB_EINVAL, "empty arc");
@@ -51,6 +73,7 @@ hb_check_solution_pair(const struct hb_scene *sc, const struct hb_arc *arc, char
 	for (i = 0; i < len; i++) {
 		const struct hb_arc_sample *a = hb_arc_at(arc, i), *b = i + 1 < len ? hb_arc_at(arc, i + 1) : NULL;
 
+		nz = b != NULL ? law_of(sc, b, &ci)->n_z : 0;
 		if (b != NULL) {
 			if (b->j == a->j) {
 				if (!(b->t >= a->t))
@@ -73,7 +96,7 @@ hb_check_solution_pair(const struct hb_scene *sc, const struct hb_arc *arc, char
 					                  i, a->t, a->j);
 				/* g: x, v, x_m, v_m unchanged, x_c = 0, z_c = 0, q_c = 1 - q_c, exactly */
 				if (b->x != a->x || b->v != a->v || b->xm != a->xm || b->vm != a->vm ||
-				    b->xc != 0.0 || b->q != 1 - a->q)
+				    b->xc != 0.0 || b->q != 1 - a->q || b->k != a->k)
 					return hb_status_set(msg, n, HB_EINVAL,
 					                  "sample %zu (t = %.17g, j = %ld): the post-jump state is not g of the pre-jump state",
 					                  i + 1, b->t, b->j);
@@ -243,12 +266,21 @@ static const struct {
 	{ "hertz", 1, 1 }, { "linear", 1, 1 },
 };
 
-/* Appends one failure to msg, "; "-separated. */
-static void append_msg(char *msg, size_t n, const char *fmt_, ...)
-	__attribute__((format(printf, 3, 4)));
+void
+check_law_energy(const char *name, int *passive, int *elastic)
+{
+	size_t i;
 
-static void
-append_msg(char *msg, size_t n, const char *fmt_, ...)
+	*passive = *elastic = 0;
+	for (i = 0; i < sizeof law_energy / sizeof law_energy[0]; i++)
+		if (strcmp(name, law_energy[i].name) == 0) {
+			*passive = law_energy[i].passive;
+			*elastic = law_energy[i].elastic;
+		}
+}
+
+void
+check_append_msg(char *msg, size_t n, const char *fmt_, ...)
 {
 	size_t l;
 	va_list ap;
@@ -337,11 +369,7 @@ hb_check_physics(const struct hb_scene *sc, const struct hb_arc *arc, struct hb_
 	r->emax = -INFINITY;
 	if (msg != NULL && n > 0)
 		msg[0] = '\0';
-	for (i = 0; i < sizeof law_energy / sizeof law_energy[0]; i++)
-		if (strcmp(sc->law->name, law_energy[i].name) == 0) {
-			r->passive = law_energy[i].passive;
-			r->elastic = law_energy[i].elastic;
-		}
+	check_law_energy(sc->law->name, &r->passive, &r->elastic);
 	if (len == 0 || !(m > 0.0) || !isfinite(m))
 		return 0;
 
@@ -379,7 +407,7 @@ hb_check_physics(const struct hb_scene *sc, const struct hb_arc *arc, struct hb_
 		const struct hb_arc_sample *a = hb_arc_at(arc, r->resid_at);
 
 		r->failed++;
-		append_msg(msg, n, "work-energy identity: the residual of m v^2/2 - m v0^2/2 = "
+		check_append_msg(msg, n, "work-energy identity: the residual of m v^2/2 - m v0^2/2 = "
 		           "E_e + W_c reaches %.3g of the energy scale %.3g J (t = %.9g s, "
 		           "j = %ld): the error estimate is %.3g times the tolerance %.3g asked "
 		           "(at most %g accepted)", r->resid, escale, a->t, a->j,
@@ -424,13 +452,13 @@ hb_check_physics(const struct hb_scene *sc, const struct hb_arc *arc, struct hb_
 	if (r->passive && r->wmin_at >= 0 && !(r->wmin >= -K * r->tol)) {
 		r->failed++;
 		if (r->elastic)
-			append_msg(msg, n, "elastic law: collision %ld has W = %.6g J, %.3g of its "
+			check_append_msg(msg, n, "elastic law: collision %ld has W = %.6g J, %.3g of its "
 			           "impact energy, where %s dissipates nothing: the error estimate is "
 			           "%.3g times the tolerance %.3g asked (at most %g accepted)",
 			           r->wmin_at, r->W_at, -r->wmin, sc->law->name, -r->wmin / r->tol,
 			           r->tol, K);
 		else
-			append_msg(msg, n, "passivity: collision %ld returns energy, W = %.6g J "
+			check_append_msg(msg, n, "passivity: collision %ld returns energy, W = %.6g J "
 			           "(%.3g of its impact energy), where %s can only absorb it "
 			           "(W >= 0 up to %g x the tolerance %.3g)", r->wmin_at, r->W_at,
 			           r->wmin, sc->law->name, K, r->tol);
@@ -438,12 +466,12 @@ hb_check_physics(const struct hb_scene *sc, const struct hb_arc *arc, struct hb_
 	if (r->passive && r->emax_at >= 0 && !(r->emax <= K * r->tol)) {
 		r->failed++;
 		if (r->elastic)
-			append_msg(msg, n, "restitution: collision %ld has e = %.9g where the elastic "
+			check_append_msg(msg, n, "restitution: collision %ld has e = %.9g where the elastic "
 			           "%s gives exactly %.9g: the error estimate is %.3g times the "
 			           "tolerance %.3g asked (at most %g accepted)", r->emax_at, r->e_at,
 			           sc->law->name, r->e_bound, r->emax / r->tol, r->tol, K);
 		else
-			append_msg(msg, n, "restitution: collision %ld has e = %.9g, above the %.9g "
+			check_append_msg(msg, n, "restitution: collision %ld has e = %.9g, above the %.9g "
 			           "that %s allows (it cannot give energy back, counting the applied "
 			           "force's work over the contact), beyond %g x the tolerance %.3g",
 			           r->emax_at, r->e_at, r->e_bound, sc->law->name, K, r->tol);

@@ -12,6 +12,7 @@
 
 #include "docs.h"
 #include "textbuf.h"
+#include "sim_impl.h"
 
 static const struct hb_collision *
 first(const struct hb_sim *s)
@@ -94,6 +95,48 @@ END(o_v_end, p->v, NAN)
 END(o_x_c_end, p->xc, NAN)
 #undef END
 
+/*
+ * A chain's bodies leaving it at the end (observables.h, README Chains):
+ * without a floor, counted from body 1 (the end away from the striker)
+ * up, each body that moves down (u_i < 0), out of contact with the body
+ * above, and faster than it (the gap between them opening), every body
+ * below it counting too, the striker (body n) never; on a floor, counted
+ * from the striker (body n) down, each body that moves up (u_i > 0), out
+ * of contact with the body (or floor) below and faster than it, every body
+ * above it counting too.  NAN for the two-body scenes.
+ */
+static double
+o_leaving(const struct hb_sim *s)
+{
+	int n = s->nbody, i, count = 0;
+
+	if (!s->chain || hb_arc_last(s->arc) == NULL)
+		return NAN;
+	if (s->k0 == 1) { /* no floor: interface i (index i - 1) is above body i - 1 */
+		for (i = 0; i < n - 1; i++) {
+			struct hb_sim_body b, up;
+
+			hb_sim_body(s, i, &b);
+			hb_sim_body(s, i + 1, &up);
+			if (s->ifc[i].q || !(b.u < 0.0) || !(b.u < up.u))
+				break;
+			count++;
+		}
+	} else { /* a floor: interface i (index i) is below body i */
+		for (i = n - 1; i >= 0; i--) {
+			struct hb_sim_body b, lo = { 0, 0, 0 };
+
+			hb_sim_body(s, i, &b);
+			if (i > 0)
+				hb_sim_body(s, i - 1, &lo);
+			if (s->ifc[i].q || !(b.u > 0.0) || !(b.u > lo.u))
+				break;
+			count++;
+		}
+	}
+	return (double)count;
+}
+
 #define STAT(fn, field) \
 	static double fn(const struct hb_sim *s) { return (double)hb_sim_stats(s)->field; }
 STAT(o_steps, steps)
@@ -128,6 +171,11 @@ const struct hb_observable_def hb_observables[HB_OBS_COUNT] = {
 	    0, o_v_end },
 	[HB_OBS_X_C_END] = { "x_c_end", "m", &hb_unit_length, "indentation x_c at the end", 0,
 	    o_x_c_end },
+	[HB_OBS_LEAVING] = { "leaving", "", &hb_unit_none,
+	    "a chain's bodies leaving it at the end: without a floor from body 1 up, each moving "
+	    "down, out of contact with the body above and faster than it (the striker never); on "
+	    "a floor from the striker down, each moving up, out of contact with the body or floor "
+	    "below and faster than it (none for two bodies)", 0, o_leaving },
 	[HB_OBS_STEPS] = { "steps", "", &hb_unit_none, "accepted integration steps", 1, o_steps },
 	[HB_OBS_REJECTED] = { "rejected", "", &hb_unit_none, "rejected integration steps", 1,
 	    o_rejected },

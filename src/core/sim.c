@@ -537,6 +537,7 @@ hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out)
 	out->JFe = I->JFe;
 	out->Lambda = I->JFc != 0.0 ? I->JFe / I->JFc : NAN;
 	out->complete = 0;
+	out->k = s->k0 + s->ia;
 	return 1;
 }
 

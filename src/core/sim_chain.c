@@ -255,6 +255,8 @@ hbs_chain_reset(struct hb_sim *s)
 		else
 			y += s->body[i - 1].l + cb.gap + b->l;
 		hbs_body_set(b, 0.0, y, cb.v0);
+		b->y0 = y;
+		b->u0 = cb.v0;
 	}
 	for (i = 0; i < s->nif; i++) {
 		struct iface *J = &s->ifc[i];

@@ -477,7 +477,7 @@ limit_passed(struct hb_sim *s, struct iface *I, int bit, const char *why)
 		return 0;
 	I->over |= bit;
 	if (s->sc.run.chain_limits != HB_CHAIN_LIMITS_WARN)
-		return hbs_fail(s, HB_EINVAL, why);
+		return hbs_fail_iface(s, I, HB_EINVAL, why);
 	if (s->nlim++ == 0)
 		snprintf(s->limnote, sizeof s->limnote, "%s", why);
 	return 0;
@@ -506,10 +506,16 @@ hbs_cluster_limits(struct hb_sim *s)
 		double d = fmax(fabs(I->xc), -I->x);
 
 		if (R > 0 && d > f * R) {
-			cnum_snprintf(why, sizeof why, "interface %d (bodies %d and %d) is indented by "
-			              "%.6g m at t = %.12g s, %.3g of the smaller radius %.6g m, past "
-			              "run.max_indent = %g: the model assumes small indentations",
-			              s->k0 + k, I->lo + 1, I->hi + 1, d, s->t, d / R, R, f);
+			char who[64];
+
+			if (I->lo < 0)
+				snprintf(who, sizeof who, "the floor and body %d", I->hi + 1);
+			else
+				snprintf(who, sizeof who, "bodies %d and %d", I->lo + 1, I->hi + 1);
+			cnum_snprintf(why, sizeof why, "interface %d (%s) is indented by %.6g m at "
+			              "t = %.12g s, %.3g of %s %.6g m, past run.max_indent = %g: the "
+			              "model assumes small indentations", s->k0 + k, who, d, s->t, d / R,
+			              I->lo < 0 ? "the body's radius" : "the smaller radius", R, f);
 			if ((rc = limit_passed(s, I, 1, why)))
 				return rc;
 		}

@@ -81,6 +81,7 @@ struct body {
 	                           (the two-body scenes': from their interface, hbs_body_at) */
 	double a;               /* a chain's: its constant acceleration */
 	double Fe;              /* a chain's: its applied force, constant */
+	double y0, u0;          /* a chain's: its position and velocity at t = 0 */
 	int cl;                 /* a chain's: the cluster it is in (index), -1 in flight */
 };
 
@@ -364,6 +365,10 @@ hbs_pack_sample(const struct hb_sim *s, const struct layout *L, const struct hb_
 /* sim_record.c */
 int
 hbs_fail(struct hb_sim *s, int status, const char *why);
+
+/* A failure at interface I (a chain's limit): why, then that interface's state, not s->I's. */
+int
+hbs_fail_iface(struct hb_sim *s, const struct iface *I, int status, const char *why);
 
 int
 hbs_push_sample(struct hb_sim *s, int kind);

@@ -18,6 +18,17 @@ hbs_fail(struct hb_sim *s, int status, const char *why)
 }
 
 int
+hbs_fail_iface(struct hb_sim *s, const struct iface *I, int status, const char *why)
+{
+	s->end = HB_SIM_END_FAIL;
+	cnum_snprintf(s->err, sizeof s->err,
+	         "%s; interface %d there (j = %ld): x = %.6g m, v = %.6g m/s, x_c = %.6g m, q_c = %d",
+	         why, s->k0 + (int)(I - s->ifc), s->j, I->x, I->v, I->xc, I->q);
+	snprintf(s->endmsg, sizeof s->endmsg, "failed: %s", s->err);
+	return status;
+}
+
+int
 hbs_push_sample(struct hb_sim *s, int kind)
 {
 	struct iface *I = s->I;
@@ -55,6 +66,7 @@ hbs_push_sample(struct hb_sim *s, int kind)
 	a.Fcmax = I->Fcmax;
 	a.Ee = I->Ee;
 	a.Wc = I->Wc;
+	a.k = s->k0 + s->ia;
 	if (arc_push(s->arc, &a))
 		return hbs_fail(s, HB_ENOMEM, "out of memory for the arc");
 	return 0;

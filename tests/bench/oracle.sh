@@ -50,7 +50,7 @@ record() {
 			"$bin" --batch "$p" $args --quiet --collisions "$tmp/c.csv" --trace "$tmp/t.csv" \
 				>"$tmp/sum" 2>&1
 			echo "exit $?" >"$out.counts"
-			grep -E '^ *(ended|end state|collisions|steps|evaluations|events|arc) ' "$tmp/sum" \
+			grep -E '^  (ended|end state|collisions|steps|evaluations|events|arc) ' "$tmp/sum" \
 				>>"$out.counts"
 			if [ -f "$tmp/c.csv" ]; then noprov "$tmp/c.csv" >"$out.collisions.csv"; fi
 			if [ -f "$tmp/t.csv" ]; then noprov "$tmp/t.csv" | cksum >"$out.trace.cksum"; fi

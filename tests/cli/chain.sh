@@ -151,4 +151,79 @@ else
 	notok "bodies that are not neighbours overlapping stop the run, exit 1, naming them (got $rc)" "$T/out"
 fi
 
+# a floor's interface is named with the floor, and the state given with the
+# message is that interface's, its overlap -x the indentation named
+"$BIN" --batch stacked-drop --set run.max_indent=0.1 >"$T/out" 2>&1
+rc=$?
+d=$(sed -n 's/.*interface 0 (the floor and body 1) is indented by \([0-9.e-]*\) m at t = [0-9.e-]* s, 0.1[0-9]* of the body.s radius 0.1217 m, past run.max_indent = 0.1: .*; interface 0 there (j = [0-9]*): x = -\([0-9.e-]*\) m, .*/\1 \2/p' "$T/out" | head -n 1)
+if [ $rc -eq 1 ] && [ -n "$d" ] && [ "${d% *}" = "${d#* }" ]; then
+	ok "a floor's indentation past run.max_indent names the floor and body 1, with that interface's state"
+else
+	notok "a floor's indentation past run.max_indent names the floor and body 1, with that interface's state (got $rc, '$d')" "$T/out"
+fi
+# the stacked drop's balls flatten past the default 0.1: its preset admits 0.45
+if "$BIN" --batch stacked-drop >"$T/out" 2>&1 && grep -q '^  ended       horizon T = 3 s' "$T/out"; then
+	ok "stacked-drop runs to its horizon under its run.max_indent"
+else
+	notok "stacked-drop runs to its horizon under its run.max_indent" "$T/out"
+fi
+
+# --check on a chain: energy (K + absorbed = K(0) + work of the loads) and
+# momentum as identities, each contact by its own interface's law: a
+# dissipative interface in an elastic cradle absorbs energy without a warning
+if "$BIN" --batch newtons-cradle-5 --check --set interface.2.law=shccl --set interface.2.c=2e7 \
+        >"$T/out" 2>"$T/err" && [ ! -s "$T/err" ] &&
+    grep -q '^  check       physics: ok (4 contacts, each by its interface.s law' "$T/out" &&
+    grep -q '^  check       energy: ok (K 0.01632[0-9]* J + absorbed by the interfaces 1.14[0-9]*e-05 J = K(0) 0.0163362818 J + work of the loads 0 J, to [0-9.e-]* of the largest, 0.0[0-9]* x the tolerance 1e-12)' "$T/out" &&
+    grep -q '^  check       momentum: ok (-0.0326725635973 kg m/s = -0.0326725635973 at t = 0' "$T/out"; then
+	ok "--check on a chain with a dissipative interface in an elastic cradle: energy and momentum identities, no false warning"
+else
+	notok "--check on a chain with a dissipative interface in an elastic cradle: energy and momentum identities, no false warning" "$T/out" "$T/err"
+fi
+# with gravity and a floor: the loads' work in the balance, momentum not an identity
+if "$BIN" --batch stacked-drop --check >"$T/out" 2>&1 &&
+    grep -q '^  check       energy: ok (K 2.09[0-9]* J + absorbed by the interfaces 6.72[0-9]* J = K(0) 0 J + work of the loads 8.81[0-9]* J' "$T/out" &&
+    grep -q '^  check       momentum: not an identity (the floor takes momentum)' "$T/out" &&
+    grep -q '^  check       physics: ok (6 contacts, each by its interface.s law: W within what the law allows; e of the 4 with no neighbour in contact)' "$T/out"; then
+	ok "--check on stacked-drop: the work of gravity in the energy balance; e checked on the 4 contacts with no neighbour in contact"
+else
+	notok "--check on stacked-drop: the work of gravity in the energy balance; e checked on the 4 contacts with no neighbour in contact" "$T/out"
+fi
+# the limits passed under run.chain_limits = warn are reported by --check, not failed
+if "$BIN" --batch stacked-drop --check --set run.max_indent=0.1 --set run.chain_limits=warn >"$T/out" 2>&1 &&
+    grep -q '^  check       model limits: passed [1-9][0-9]* times under run.chain_limits = warn .*the first: interface 0 (the floor and body 1) is indented' "$T/out"; then
+	ok "--check reports the model limits passed under run.chain_limits = warn"
+else
+	notok "--check reports the model limits passed under run.chain_limits = warn" "$T/out"
+fi
+
+# a touching chain's header says so, not "0 m apart"; the README's cradle figures
+if "$BIN" --batch newtons-cradle-3 >"$T/out" 2>&1 &&
+    grep -q '^system      chain of 3 bodies (.*), touching, striker (body 3) at -1 m/s$' "$T/out" &&
+    grep -q '^  body 1      u = -994.549 mm/s' "$T/out" && grep -q '^  body 2      u = -76.403 mm/s' "$T/out" &&
+    grep -q '^  body 3      u = 70.9524 mm/s' "$T/out"; then
+	ok "newtons-cradle-3: the header says touching; -0.9945, -0.0764, +0.0710 m/s as README gives"
+else
+	notok "newtons-cradle-3: the header says touching; -0.9945, -0.0764, +0.0710 m/s as README gives" "$T/out"
+fi
+
+# the run observable leaving: a sweep of the striker's velocity against the
+# balls that leave (README), and collisions.csv with the interface k
+rm -rf "$T/sw"
+if "$BIN" sweep newtons-cradle-5-shccl --set run.T=0.1 --vary 'striker.v=-1,-3' --jobs 1 --quiet \
+        --out "$T/sw" 2>"$T/err" &&
+    [ "$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "leaving") c = i; next }
+                  { printf "%s ", $c }' "$T/sw/runs.csv")" = "2 3 " ] &&
+    head -n 1 "$T/sw/collisions.csv" | grep -q '^id,i,k,t_e,'; then
+	ok "sweep --vary striker.v: leaving is 2 at 1 m/s and 3 at 3 m/s (shccl cradle); collisions.csv has k"
+else
+	notok "sweep --vary striker.v: leaving is 2 at 1 m/s and 3 at 3 m/s (shccl cradle); collisions.csv has k" "$T/err" "$T/sw/runs.csv"
+fi
+if "$BIN" --batch stacked-drop --set run.T=0.63 >"$T/out" 2>&1 && grep -q 'leaving = 2,' "$T/out" &&
+    "$BIN" --batch stacked-drop >"$T/out" 2>&1 && grep -q 'leaving = 1,' "$T/out"; then
+	ok "leaving on a floor: both balls just after the stacked drop's bounce, the tennis ball alone at 3 s"
+else
+	notok "leaving on a floor: both balls just after the stacked drop's bounce, the tennis ball alone at 3 s" "$T/out"
+fi
+
 [ "$fails" -eq 0 ]

@@ -19,7 +19,7 @@ if [ $rc -eq 0 ] && [ -f "$T/one/runs.csv" ] && [ -f "$T/one/collisions.csv" ] &
 	ok "sweep writes runs.csv, collisions.csv and sweep.preset (exit 0, stdout empty)"
 else notok "sweep writes runs.csv, collisions.csv and sweep.preset (exit $rc)" "$T/err"; fi
 if [ "$(wc -l <"$T/one/runs.csv")" -eq 7 ] &&
-    head -n 1 "$T/one/runs.csv" | grep -q '^id,initial.x0,law.c,status,message,collisions,t_pc,e_first,v_i_first,e_last,v_i_last,x_c_r_total,t_end,j_end,q_c_end,x_end,v_end,x_c_end,steps,rejected,rhs,jac,cpu_s$' &&
+    head -n 1 "$T/one/runs.csv" | grep -q '^id,initial.x0,law.c,status,message,collisions,t_pc,e_first,v_i_first,e_last,v_i_last,x_c_r_total,t_end,j_end,q_c_end,x_end,v_end,x_c_end,leaving,steps,rejected,rhs,jac,cpu_s$' &&
     [ "$(cut -d, -f1 "$T/one/runs.csv" | tail -n +2 | tr '\n' ' ')" = "0 1 2 3 4 5 " ] &&
     head -n 1 "$T/one/collisions.csv" | grep -q '^id,i,t_e,t_s,'; then
 	ok "runs.csv: one row per point sorted by id; collisions.csv: id, then the --collisions columns"
@@ -42,7 +42,7 @@ tail -n +2 "$T/one/runs.csv" | while IFS=, read -r id x0 c rest; do
 	cmp -s "$T/b.rows" "$T/s.rows" || echo "point $id: collisions differ"
 	steps=$(sed -n 's/^  steps  *\([0-9]*\) accepted, \([0-9]*\) rejected$/\1,\2/p' "$T/b.out")
 	rhs=$(sed -n 's/^  evaluations \([0-9]*\) right-hand side, \([0-9]*\) Jacobian$/\1,\2/p' "$T/b.out")
-	row=$(grep "^$id," "$T/one/runs.csv" | cut -d, -f19-22)
+	row=$(grep "^$id," "$T/one/runs.csv" | cut -d, -f20-23)
 	[ "$row" = "$steps,$rhs" ] || echo "point $id: work $row vs batch $steps,$rhs"
 	[ -s "$T/b.rows" ] || echo "point $id: no collision"
 done >"$T/diff"
@@ -199,7 +199,7 @@ for f in examples/sweeps/*.preset; do
 	rc=$?
 	rows=$(tail -n +2 "$T/ex-$name/runs.csv" 2>/dev/null | wc -l)
 	bad=$(tail -n +2 "$T/ex-$name/runs.csv" 2>/dev/null |
-	    awk -F, '$(NF-19) != "ok" || ($(NF-15) != "" && ($(NF-15) <= 0 || $(NF-15) > 1)) { n++ } END { print n + 0 }')
+	    awk -F, '$(NF-20) != "ok" || ($(NF-16) != "" && ($(NF-16) <= 0 || $(NF-16) > 1)) { n++ } END { print n + 0 }')
 	if [ $rc -eq 0 ] && [ "$rows" -ge 20 ] && [ "$bad" -eq 0 ]; then
 		ok "examples/sweeps/$name: the sweep runs ($rows points, all ok, e in (0, 1])"
 	else notok "examples/sweeps/$name: the sweep runs (exit $rc, $rows rows, $bad bad)" "$T/err"; fi

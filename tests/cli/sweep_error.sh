@@ -11,7 +11,7 @@
 P=permanent-contact-shccl
 V1="initial.x0=10um,40um"
 V2="law.c=1e9,4.3e9"
-OBS="collisions t_pc e_first v_i_first e_last v_i_last x_c_r_total t_end j_end q_c_end x_end v_end x_c_end"
+OBS="collisions t_pc e_first v_i_first e_last v_i_last x_c_r_total t_end j_end q_c_end x_end v_end x_c_end leaving"
 
 # 1. The files: the error columns, the spec line.
 "$BIN" sweep $P --vary "$V1" --vary "$V2" --error --jobs 2 --quiet --out "$T/one" 2>"$T/err"
@@ -23,8 +23,9 @@ if [ $rc -eq 0 ] && [ "$(head -n 1 "$T/one/runs.csv")" = "$want" ] &&
 	ok "sweep --error: runs.csv has OBS_err beside each observable (not the work counts), collisions.csv NAME_err, sweep.preset a '; sweep: --error' line"
 else notok "sweep --error: the files (exit $rc)" "$T/err"; show "$T/one/runs.csv" 2; fi
 # every error bar of an ok point is filled: a number, >= 0
-# (columns 23 to 35; t_pc_err, 24, is empty where there is no permanent contact)
-bad=$(awk -F, 'NR > 1 { if ($4 != "ok") n++; for (k = 23; k <= 35; k++) if (k != 24 && ($k == "" || $k < 0)) n++ } END { print n + 0 }' "$T/one/runs.csv")
+# (columns 24 to 36; t_pc_err, 25, is empty where there is no permanent contact;
+# leaving_err, 37, is empty for two bodies, which have no chain to leave)
+bad=$(awk -F, 'NR > 1 { if ($4 != "ok") n++; for (k = 24; k <= 36; k++) if (k != 25 && ($k == "" || $k < 0)) n++ } END { print n + 0 }' "$T/one/runs.csv")
 bad2=$(awk -F, 'NR > 1 && $0 !~ /^#/ { for (k = 16; k <= NF; k++) if ($k == "" || $k < 0) n++ } END { print n + 0 }' "$T/one/collisions.csv")
 if [ "$bad" -eq 0 ] && [ "$bad2" -eq 0 ]; then
 	ok "sweep --error: every error bar of every point and collision is a number >= 0"
@@ -40,7 +41,7 @@ tail -n +2 "$T/one/runs.csv" | while IFS=, read -r id x0 c rest; do
 	[ -s "$T/b.rows" ] || echo "point $id: no collision"
 	cmp -s "$T/b.rows" "$T/s.rows" || echo "point $id: collisions differ"
 	ee=$(head -n 1 "$T/s.rows" | awk -F, '{ print $(7 + 13) }')   # i, 13 values, e_err the 6th error
-	ef=$(grep "^$id," "$T/one/runs.csv" | cut -d, -f25)
+	ef=$(grep "^$id," "$T/one/runs.csv" | cut -d, -f26)
 	[ -n "$ee" ] && [ "$ee" = "$ef" ] || echo "point $id: e_first_err $ef, the first collision's e_err $ee"
 done >"$T/diff"
 if [ ! -s "$T/diff" ]; then
@@ -87,7 +88,7 @@ V="initial.v0=-1mm/s:-1m/s:5:log"
 "$BIN" sweep $EX --vary "$V" --refine e_first:0.05 --jobs 2 --quiet --out "$T/rf" 2>"$T/err" &&
 "$BIN" sweep $EX --vary "$V" --refine e_first:0.05 --error --jobs 2 --quiet --out "$T/rfe" 2>>"$T/err"
 if [ $? -eq 0 ] && cmp -s "$T/rf/boundaries.csv" "$T/rfe/boundaries.csv" &&
-    head -n 1 "$T/rfe/runs.csv" | grep -q ',x_c_end_err,refined,cpu_s$' &&
+    head -n 1 "$T/rfe/runs.csv" | grep -q ',leaving_err,refined,cpu_s$' &&
     [ "$(wc -l <"$T/rf/runs.csv")" -eq "$(wc -l <"$T/rfe/runs.csv")" ]; then
 	ok "sweep --refine --error: the same points and boundaries, the error columns before 'refined'"
 else notok "sweep --refine --error" "$T/err"; fi
