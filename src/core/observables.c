@@ -124,7 +124,7 @@ o_leaving(const struct hb_sim *s)
 		}
 	} else { /* a floor: interface i (index i) is below body i */
 		for (i = n - 1; i >= 0; i--) {
-			struct hb_sim_body b, lo = { 0, 0, 0 };
+			struct hb_sim_body b, lo = { 0 };
 
 			hb_sim_body(s, i, &b);
 			if (i > 0)
