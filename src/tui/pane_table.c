@@ -30,12 +30,16 @@ static const struct {
 	{ "x_c_max", 0 }, { "x_c_max", 1 }, { "F_c_max", 0 },
 };
 
+/* A chain's interface k (not in columns.h: a whole number, the chain's alone). */
+static const struct hb_collision_column kcol = { "k", "k", "", "interface", 0, 0, 0 };
+
 /*
  * The explorer's columns, from the table of columns.h, with their widths;
- * delta[k] 1 where column k is a difference against a pinned run.
+ * delta[k] 1 where column k is a difference against a pinned run; a
+ * chain's interface k after the index.
  */
 static int
-columns(int compare, const struct hb_collision_column **cols, int *width, int *delta)
+columns(int compare, int chain, const struct hb_collision_column **cols, int *width, int *delta)
 {
 	int n = 0;
 
@@ -57,6 +61,11 @@ columns(int compare, const struct hb_collision_column **cols, int *width, int *d
 		const struct hb_collision_column *c = &hb_collision_columns[k];
 		if (!(c->shown & HB_COLUMN_EXPLORER))
 			continue;
+		if (chain && n == 1 && n < NCOL_MAX - 1) {
+			cols[n] = &kcol;
+			delta[n] = 0;
+			width[n++] = 4;
+		}
 		cols[n] = c;
 		delta[n] = 0;
 		/* room for " LABEL[pUNIT]", or for a ratio such as -0.01122 */
@@ -85,6 +94,8 @@ static double
 value(const struct hb_collision *c, const struct hb_collision *p, const struct hb_collision_column *col,
       int delta)
 {
+	if (col == &kcol)
+		return delta ? NAN : (double)c->k;
 	if (!delta)
 		return hb_collision_value(c, col);
 	if (p == NULL || (!c->complete && strcmp(col->name, "e") == 0))
@@ -148,10 +159,12 @@ bars_row(const struct hb_collision *d, const struct hb_collision_column *const *
 
 	line[0] = 0;
 	for (int k = 0; k < ncol; k++) {
-		double v = cols[k]->index ? NAN : hb_collision_value(d, cols[k]);
+		double v = cols[k]->index || cols[k] == &kcol ? NAN : hb_collision_value(d, cols[k]);
 
 		if (cols[k]->index)
 			snprintf(cell, sizeof cell, "+-");
+		else if (cols[k] == &kcol)
+			snprintf(cell, sizeof cell, " ");
 		else if (!isfinite(v))
 			snprintf(cell, sizeof cell, "-");
 		else
@@ -170,7 +183,8 @@ pane_table_draw(const struct app *a)
 	long n = app_ncollisions(a), top, i, rows = r->h - 1, sel = a->table_sel;
 	const struct hb_sim *ps = a->compare > 0 && a->compare <= a->npins ? a->pin[a->compare - 1].sim : NULL;
 	const struct hb_collision_column *cols[NCOL_MAX];
-	int width[NCOL_MAX], delta[NCOL_MAX], ncol = columns(ps != NULL, cols, width, delta);
+	int width[NCOL_MAX], delta[NCOL_MAX];
+	int ncol = columns(ps != NULL, hb_sim_scene(a->sim)->chain.n > 0, cols, width, delta);
 	double scale[NCOL_MAX], mag[NCOL_MAX];
 	char unit[NCOL_MAX][16], line[512], cell[64];
 	int ends[NCOL_MAX + 1];
@@ -247,6 +261,8 @@ pane_table_draw(const struct app *a)
 			const char *nm = cols[k]->name;
 			if (cols[k]->index)
 				snprintf(cell, sizeof cell, "%s%ld", i == at ? ">" : " ", c->i);
+			else if (cols[k] == &kcol)
+				snprintf(cell, sizeof cell, "%d", c->k);
 			else if (!c->complete && strcmp(nm, "e") == 0 && !delta[k])
 				snprintf(cell, sizeof cell, "live");
 			else if (!c->complete && (strcmp(nm, "x_c_r") == 0 || strcmp(nm, "Lambda") == 0))

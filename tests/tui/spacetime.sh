@@ -41,6 +41,12 @@ canvas() { screen "$1" | sed -n '/space-time: /,/^t ->/p' | sed '1d;$d' | cut -c
 start a 80 24 --ascii cradle.preset
 wait_for a ' finished$' 150
 keys a space         # pause: the cursor stays where it is
+# the collision table of a chain: the interface k after i, 4 down to 1
+if wait_for a '^ +i +k +t_e\[ms\]' 30 && wait_for a '^ +0 +4 ' 10 && wait_for a '^ +3 +1 ' 10; then
+	ok "the collision table gives each contact's interface k after i"
+else
+	notok "the collision table gives each contact's interface k after i" a
+fi
 keys a V
 if wait_for a '^ +space-time: 5 bodies, # contact; t = [0-9.]+ [mu]?s$' 100 &&
    [ "$(canvas a | grep -c '\*')" -ge 5 ]; then
