@@ -45,7 +45,7 @@ for s in $STUDIES; do
 	echo "studies.sh: $s" >&2
 	"$BIN" --batch "$s" -q >"$T/q" 2>&1 || { echo "studies.sh: $s failed" >&2; exit 1; }
 	rhs=$(awk '$1 == "evaluations" { print $2 }' "$T/q")
-	rej=$(awk '$1 == "steps" { print $4 }' "$T/q")
+	rej=$(awk '$1 == "steps" && $2 != "=" { print $4 }' "$T/q")
 	ipr=-
 	if [ $cg = 1 ]; then
 		rm -f "$T/cg.out"
