@@ -189,6 +189,33 @@ if "$BIN" --batch stacked-drop --check >"$T/out" 2>&1 &&
 else
 	notok "--check on stacked-drop: the work of gravity in the energy balance; e checked on the 4 contacts with no neighbour in contact" "$T/out"
 fi
+# --check fails a chain that breaks its laws: bsimp at a loose tolerance
+# (run.limits = no runs it) makes an elastic Hertz contact of the cradle
+# absorb a large part of its energy; the solution pair holds, the physics
+# check names the law, the collision and its interface, and exits 1; the
+# run without --check warns the same on stderr and exits 0
+loose="--set run.stepper=bsimp --set run.rtol=1e-4 --set run.atol=1e-4 --set run.limits=no"
+# shellcheck disable=SC2086
+"$BIN" --batch newtons-cradle-5 -q --check $loose >"$T/out" 2>"$T/err"
+rc=$?
+if [ "$rc" -eq 1 ] &&
+    grep -q '^  check       solution pair: ok' "$T/out" &&
+    grep -q '^  check       physics: FAILED: elastic law: collision [0-9]* (interface [1-4]) has W = [0-9.e-]* J, [0-9.e-]* of its energy scale, where hertz dissipates nothing (at most 100 x the tolerance 0.0001 accepted)$' "$T/out" &&
+    grep -q '^hybounce: check failed: the computed chain fails 1 physics check; a tighter run.rtol and run.atol' "$T/err"; then
+	ok "--check fails a cradle whose elastic contact loses energy at a loose tolerance, naming the law, collision and interface (exit 1)"
+else
+	notok "--check fails a cradle whose elastic contact loses energy at a loose tolerance, naming the law, collision and interface (exit 1, got $rc)" "$T/out" "$T/err"
+fi
+# shellcheck disable=SC2086
+"$BIN" --batch newtons-cradle-5 -q $loose >"$T/out" 2>"$T/err"
+rc=$?
+if [ "$rc" -eq 0 ] &&
+    grep -q '^  warning     physics: the run breaks what it must obey: elastic law: collision [0-9]* (interface [1-4])' "$T/out" &&
+    grep -q '^hybounce: warning: the computed chain fails 1 physics check' "$T/err"; then
+	ok "the same run without --check warns of the broken law and exits 0"
+else
+	notok "the same run without --check warns of the broken law and exits 0 (got $rc)" "$T/out" "$T/err"
+fi
 # the limits passed under run.chain_limits = warn are reported by --check, not failed
 if "$BIN" --batch stacked-drop --check --set run.max_indent=0.1 --set run.chain_limits=warn >"$T/out" 2>&1 &&
     grep -q '^  check       model limits: passed [1-9][0-9]* times under run.chain_limits = warn .*the first: interface 0 (the floor and body 1) is indented' "$T/out"; then
