@@ -5,7 +5,9 @@
  * real bug would (a collision's W or e, a body's final velocity, an
  * interface's work) and the check must report that failure, and only it,
  * with a message naming what failed.  The run's internal state is reached
- * through sim_impl.h, as the engine's own code reaches it.
+ * through sim_impl.h, as the engine's own code reaches it.  And the energy
+ * the interfaces absorbed is split honestly into stored (the contacts in
+ * progress) and dissipated.
  */
 #include <math.h>
 #include <stdio.h>
@@ -70,6 +72,56 @@ Test(check_chain, elastic_cradle_passes)
 	assert_passes(s, &r);
 	cr_assert_lt(r.wworst, 1e-10, "elastic W %g of its energy scale", r.wworst);
 	cr_assert_lt(r.eworst, 1e-10, "elastic e off by %g", r.eworst);
+	/* no contact in progress at the end: nothing stored, nothing dissipated */
+	cr_assert_eq(r.stored, 0.0);
+	cr_assert_leq(fabs(r.dissipated), 1e-10 * r.kinetic0, "elastic chain dissipated %g J of %g",
+	              r.dissipated, r.kinetic0);
+	hb_sim_free(s);
+}
+
+/*
+ * Ended within the first contact (t = 1.01 ms, 10 us after the striker
+ * meets its neighbour 1 mm away): that elastic contact holds what the
+ * bodies lost, stored = K(0) - K to 1e-10 of K(0), and nothing is
+ * dissipated.
+ */
+Test(check_chain, elastic_contact_in_progress_stores_the_lost_energy)
+{
+	struct hb_scene sc;
+	struct hb_sim *s;
+	struct hb_check_chain r;
+	char msg[1400];
+
+	scene_from("[scene]\nname = cradle\nlaw = hertz\n"
+	           "[body1]\nE = 200 GPa\nnu = 0.3\nrho = 7800 kg/m^3\nR = 10 mm\n"
+	           "[chain]\nn = 3\nspacing = 1 mm\n[striker]\nv = -1 m/s\n[loads]\ng = 0\n"
+	           "[run]\nT = 1.01 ms\nrtol = 1e-12\natol = 1e-14\n", &sc);
+	s = run_scene(&sc);
+	cr_assert_eq(s->ifc[1].q != 0, 1, "the striker's contact is not in progress at the end");
+	cr_assert_eq(hb_check_chain(s, &r, msg, sizeof msg), 0, "%s", msg);
+	cr_assert_gt(r.stored, 0.01 * r.kinetic0, "stored %g J of %g", r.stored, r.kinetic0);
+	assert_rel(r.stored, r.kinetic0 - r.kinetic, 1e-10);
+	cr_assert_leq(fabs(r.dissipated), 1e-10 * r.kinetic0, "dissipated %g J", r.dissipated);
+	hb_sim_free(s);
+}
+
+/*
+ * A dissipative cradle (shccl) at its end, no contact in progress: nothing
+ * stored, and the dissipated energy is the sum of the completed
+ * contacts' W, to 1e-9.
+ */
+Test(check_chain, dissipative_cradle_dissipates_its_contacts_work)
+{
+	struct hb_sim *s = cradle("shccl");
+	struct hb_check_chain r;
+	double W = 0.0;
+
+	assert_passes(s, &r);
+	for (size_t i = 0; i < hb_sim_ncollisions(s); i++)
+		W += hb_sim_collision(s, i)->W;
+	cr_assert_gt(W, 1e-3 * r.kinetic0, "shccl absorbed %g J", W);
+	cr_assert_eq(r.stored, 0.0);
+	assert_rel(r.dissipated, W, 1e-9);
 	hb_sim_free(s);
 }
 
