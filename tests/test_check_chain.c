@@ -82,8 +82,8 @@ Test(check_chain, elastic_cradle_passes)
 /*
  * Ended within the first contact (t = 1.01 ms, 10 us after the striker
  * meets its neighbour 1 mm away): that elastic contact holds what the
- * bodies lost, stored = K(0) - K to 1e-10 of K(0), and nothing is
- * dissipated.
+ * bodies lost, stored = K(0) - K to 1e-10 of K(0), which is its Hertz
+ * potential to 1e-10 (1e-13 here), and nothing is dissipated.
  */
 Test(check_chain, elastic_contact_in_progress_stores_the_lost_energy)
 {
@@ -101,6 +101,14 @@ Test(check_chain, elastic_contact_in_progress_stores_the_lost_energy)
 	cr_assert_eq(hb_check_chain(s, &r, msg, sizeof msg), 0, "%s", msg);
 	cr_assert_gt(r.stored, 0.01 * r.kinetic0, "stored %g J of %g", r.stored, r.kinetic0);
 	assert_rel(r.stored, r.kinetic0 - r.kinetic, 1e-10);
+	/* and it is the Hertz potential of the indentation, |Phi(x_c) x_c| / (p + 1) = (2/5) k |x_c|^(5/2) */
+	{
+		const struct iface *I = &s->ifc[1];
+		double Phi = I->law->phi(I->par, I->ext, I->xc, I->z, I->v);
+
+		cr_assert_lt(I->xc, 0.0);
+		assert_rel(r.stored, fabs(Phi * I->xc) / 2.5, 1e-10);
+	}
 	cr_assert_leq(fabs(r.dissipated), 1e-10 * r.kinetic0, "dissipated %g J", r.dissipated);
 	hb_sim_free(s);
 }
