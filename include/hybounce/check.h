@@ -140,6 +140,10 @@ struct hb_check_chain {
 	double kinetic0;     /* K(0), J */
 	double kinetic;      /* K(t), J */
 	double absorbed;     /* -sum_k W_c,k: stored + dissipated by the interfaces, J */
+	double stored;       /* held by the interfaces in contact at t: int F_c dx_c of each
+	                        contact in progress, J (0 with none; NAN: not checked) */
+	double dissipated;   /* absorbed - stored: what the contacts took and did not give
+	                        back (the W of the completed ones), J (NAN: not checked) */
 	double loads;        /* the work of the applied forces, J */
 	double eresid;       /* |K + absorbed - K(0) - loads| / the largest of them; NAN: not checked */
 	int momentum;        /* 1: checked (no floor) */

@@ -677,13 +677,18 @@ print_observables(FILE *out, const struct hb_sim *s, const struct hb_error_estim
 	fprintf(out, "\n");
 }
 
-/* A chain's bodies at the end: velocity and kinetic energy of each, the totals and momentum. */
+/*
+ * A chain's bodies at the end: velocity and kinetic energy of each, the
+ * totals, the energy the interfaces hold (stored) and took for good
+ * (dissipated) (hb_check_chain; "-" on a failed run), and momentum.
+ */
 static void
 print_bodies(FILE *out, const struct hb_sim *s)
 {
-	char b1[64], b2[64];
+	char b1[64], b2[64], b3[64];
 	double K = 0.0, P = 0.0;
 	int i, n = hb_sim_nbodies(s);
+	struct hb_check_chain r;
 
 	for (i = 0; i < n; i++) {
 		struct hb_sim_body b;
@@ -698,8 +703,10 @@ print_bodies(FILE *out, const struct hb_sim *s)
 		else if (i == 5)
 			fprintf(out, "  ...\n");
 	}
-	fprintf(out, "  chain       kinetic energy %s, momentum %.9g kg m/s\n",
-	        fmt(K, hb_unit_energy, b1, sizeof b1), P);
+	hb_check_chain(s, &r, NULL, 0);
+	fprintf(out, "  chain       kinetic energy %s, stored %s, dissipated %s, momentum %.9g kg m/s\n",
+	        fmt(K, hb_unit_energy, b1, sizeof b1), fmt(r.stored, hb_unit_energy, b2, sizeof b2),
+	        fmt(r.dissipated, hb_unit_energy, b3, sizeof b3), P);
 	{
 		long nlim;
 		const char *note = hb_sim_limits(s, &nlim);

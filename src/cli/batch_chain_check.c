@@ -30,9 +30,10 @@ batch_chain_check(FILE *out, const struct hb_sim *s, int check)
 			fprintf(out, "  check       energy, momentum: not checked (the run failed)\n");
 		else {
 			fprintf(out, "  check       energy: ok (K %.9g J + absorbed by the interfaces "
-			        "%.9g J = K(0) %.9g J + work of the loads %.9g J, to %.2g of the "
-			        "largest, %.2g x the tolerance %.2g)\n", r.kinetic, r.absorbed,
-			        r.kinetic0, r.loads, r.eresid, r.eresid / r.tol, r.tol);
+			        "%.9g J (stored %.9g J, dissipated %.9g J) = K(0) %.9g J + work of "
+			        "the loads %.9g J, to %.2g of the largest, %.2g x the tolerance "
+			        "%.2g)\n", r.kinetic, r.absorbed, r.stored, r.dissipated, r.kinetic0,
+			        r.loads, r.eresid, r.eresid / r.tol, r.tol);
 			if (r.momentum)
 				fprintf(out, "  check       momentum: ok (%.12g kg m/s = %.12g at t = 0 "
 				        "+ the loads' impulse %.6g, to %.2g of the largest, %.2g x the "

@@ -122,7 +122,7 @@ check_balance(const struct hb_sim *s, struct hb_check_chain *r, char *msg, size_
 	double escale, pscale = 0.0, Fsum = 0.0, pabs = 0.0;
 	int i;
 
-	r->kinetic0 = r->kinetic = r->absorbed = r->loads = 0.0;
+	r->kinetic0 = r->kinetic = r->absorbed = r->stored = r->loads = 0.0;
 	r->p0 = r->p = 0.0;
 	for (i = 0; i < s->nbody; i++) {
 		const struct body *b = &s->body[i];
@@ -137,18 +137,26 @@ check_balance(const struct hb_sim *s, struct hb_check_chain *r, char *msg, size_
 		pabs = fmax(pabs, fmax(fabs(b->m * u), fabs(b->m * b->u0)));
 		Fsum += b->Fe;
 	}
-	for (i = 0; i < s->nif; i++)
-		r->absorbed -= s->ifc[i].Wc;
+	for (i = 0; i < s->nif; i++) {
+		const struct iface *I = &s->ifc[i];
+
+		r->absorbed -= I->Wc;
+		/* the contact in progress: int F_c dx_c since it began, held in the interface */
+		if (I->q)
+			r->stored += I->Wc0 - I->Wc;
+	}
+	r->dissipated = r->absorbed - r->stored;
 	r->impulse = r->t * Fsum;
 	escale = fmax(fmax(r->kinetic0, r->kinetic), fmax(fabs(r->absorbed), fabs(r->loads)));
 	r->eresid = escale > 0.0 ?
 		fabs(r->kinetic + r->absorbed - r->kinetic0 - r->loads) / escale : 0.0;
 	if (!(r->eresid <= K * r->tol)) {
 		r->failed++;
-		check_append_msg(msg, n, "energy: K + absorbed = %.12g J against K(0) + "
-		                 "work of the loads = %.12g J at t = %.9g s, %.3g of the energy "
-		                 "scale %.6g J (at most %g x the tolerance %.3g)",
-		                 r->kinetic + r->absorbed, r->kinetic0 + r->loads, r->t, r->eresid,
+		check_append_msg(msg, n, "energy: K + absorbed = %.12g J (K %.9g J, stored "
+		                 "%.9g J, dissipated %.9g J) against K(0) + work of the loads = "
+		                 "%.12g J at t = %.9g s, %.3g of the energy scale %.6g J (at most "
+		                 "%g x the tolerance %.3g)", r->kinetic + r->absorbed, r->kinetic,
+		                 r->stored, r->dissipated, r->kinetic0 + r->loads, r->t, r->eresid,
 		                 escale, K, r->tol);
 	}
 	if (s->k0 == 0)
@@ -179,7 +187,7 @@ hb_check_chain(const struct hb_sim *s, struct hb_check_chain *r, char *msg, size
 	r->t = last != NULL ? last->t : 0.0;
 	r->wworst_at = r->eworst_at = -1;
 	r->wworst = r->eworst = -INFINITY;
-	r->eresid = r->presid = NAN;
+	r->eresid = r->presid = r->stored = r->dissipated = NAN;
 	r->limnote = hb_sim_limits(s, &r->limits);
 	check_contacts(s, r, msg, n);
 	if (s->end != HB_SIM_END_FAIL && last != NULL && last->t == s->t)

@@ -37,7 +37,7 @@ if "$BIN" --batch c.preset --quiet --bodies b.csv >out 2>err &&
     awk -F, 'NR > 2 { K += $5; P += $2 * $4 }
              END { if (sprintf("%.6g", K) != "0.0163363" || sprintf("%.9g", P) != "-0.0326725636") exit 1 }' b.csv &&
     awk -F, '$1 == 1 { if (sprintf("%.6g", $4) != "-1") exit 1 }' b.csv &&
-    grep -q '^  chain       kinetic energy 16.3363 mJ, momentum -0.0326725636 kg m/s$' out; then
+    grep -q '^  chain       kinetic energy 16.3363 mJ, stored 0 J, dissipated [^,]*, momentum -0.0326725636 kg m/s$' out; then
 	ok "--bodies: provenance, header, three bodies whose K and m u sum to the summary's totals"
 else
 	notok "--bodies: provenance, header, three bodies whose K and m u sum to the summary's totals" b.csv
