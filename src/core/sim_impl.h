@@ -198,6 +198,7 @@ struct hb_sim {
 		int valid, n, kind[MAXFUN];
 		const struct phase *p;
 		double t, xe, u[MAXDIM], f[MAXFUN], rate;
+		double pf[2]; /* in contact: Phi and F_e,r there (the arc sample's, hbs_push_sample) */
 	} w;
 	struct cached cache[CACHE];
 	int ncache, cache_next;
