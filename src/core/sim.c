@@ -200,12 +200,10 @@ numeric_step(struct hb_sim *s)
 
 	/* a state already outside C where the interval begins jumps at once (rule R2) */
 	{
-		double f[MAXFUN];
-		int kind[MAXFUN];
+		double f0 = hbs_watch_indicator(s, p, s->t, s->u);
 
-		hbs_watch_at(s, p, s->t, s->u, f, kind, NULL);
-		if (f[0] < 0.0)
-			return hbs_jump(s, HB_LOCATE_START, 0, 0.0, f[0], f[0]);
+		if (f0 < 0.0)
+			return hbs_jump(s, HB_LOCATE_START, 0, 0.0, f0, f0);
 	}
 	nk = sc->run.kinks ? hb_scene_load_kinks(sc, t, t1, kinks, 4) : 0;
 	if (nk > 0) {

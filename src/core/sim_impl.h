@@ -401,6 +401,10 @@ int
 hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
              int *kind, double *rate);
 
+/* Only f[0] (the indicator of C) of hbs_watch_at, from the same cache. */
+double
+hbs_watch_indicator(struct hb_sim *s, const struct phase *p, double t, const double *u);
+
 /* sim_snap.c: a state on the boundary of C to the precision of the computation */
 int
 hbs_hugging(struct hb_sim *s, const double *u);

@@ -171,9 +171,9 @@ hbs_watch_one(const struct hb_sim *s, const struct phase *p, double t, const dou
 	return f[k];
 }
 
-int
-hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
-             int *kind, double *rate)
+/* The watched values at (t, u) into s->w, computed unless they are there. */
+static void
+watch_cached(struct hb_sim *s, const struct phase *p, double t, const double *u)
 {
 	size_t nu = (size_t)p->L.dim * sizeof *u;
 
@@ -186,6 +186,20 @@ hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u,
 		memcpy(s->w.u, u, nu);
 		s->w.valid = 1;
 	}
+}
+
+double
+hbs_watch_indicator(struct hb_sim *s, const struct phase *p, double t, const double *u)
+{
+	watch_cached(s, p, t, u);
+	return s->w.f[0];
+}
+
+int
+hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
+             int *kind, double *rate)
+{
+	watch_cached(s, p, t, u);
 	memcpy(f, s->w.f, (size_t)s->w.n * sizeof *f);
 	memcpy(kind, s->w.kind, (size_t)s->w.n * sizeof *kind);
 	if (rate != NULL)
