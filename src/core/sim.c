@@ -167,17 +167,18 @@ set_mode(struct hb_sim *s)
 	int m = 0;
 
 	if (p->q && I->law->psi_mode && sc->run.kinks) {
-		double y[MAXDIM], g[HB_LAW_MAX_KINKS], z[HB_LAW_MAX_Z] = { 0 };
+		double g[HB_LAW_MAX_KINKS], z[HB_LAW_MAX_Z] = { 0 };
 		const struct layout *L = &p->L;
+		const double *u = s->u0, *sc_ = s->scale;
 		int i;
 
 		if (s->mforce && s->mforce_t == s->t) {
 			m = s->mforce;
 		} else {
-			hbs_unscale(p, s->u0, y);
+			/* unscaled as hbs_unscale does, only the components read */
 			for (i = 0; i < I->law->n_z; i++)
-				z[i] = y[L->iz + i];
-			I->law->kinks(I->par, I->ext, y[L->ixc], z, y[L->iv], g);
+				z[i] = u[L->iz + i] * sc_[L->iz + i];
+			I->law->kinks(I->par, I->ext, u[L->ixc] * sc_[L->ixc], z, u[L->iv] * sc_[L->iv], g);
 			m = g[I->law->mode_kink] > 0 ? 1 : (g[I->law->mode_kink] < 0 ? -1 : 0);
 		}
 	}
@@ -199,12 +200,10 @@ numeric_step(struct hb_sim *s)
 
 	/* a state already outside C where the interval begins jumps at once (rule R2) */
 	{
-		double f[MAXFUN];
-		int kind[MAXFUN];
+		double f0 = hbs_watch_indicator(s, p, s->t, s->u);
 
-		hbs_watch_at(s, p, s->t, s->u, f, kind, NULL);
-		if (f[0] < 0.0)
-			return hbs_jump(s, HB_LOCATE_START, 0, 0.0, f[0], f[0]);
+		if (f0 < 0.0)
+			return hbs_jump(s, HB_LOCATE_START, 0, 0.0, f0, f0);
 	}
 	nk = sc->run.kinks ? hb_scene_load_kinks(sc, t, t1, kinks, 4) : 0;
 	if (nk > 0) {

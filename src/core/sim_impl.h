@@ -198,6 +198,7 @@ struct hb_sim {
 		int valid, n, kind[MAXFUN];
 		const struct phase *p;
 		double t, xe, u[MAXDIM], f[MAXFUN], rate;
+		double pf[2]; /* in contact: Phi and F_e,r there (the arc sample's, hbs_push_sample) */
 	} w;
 	struct cached cache[CACHE];
 	int ncache, cache_next;
@@ -399,6 +400,10 @@ hbs_watch_one(const struct hb_sim *s, const struct phase *p, double t, const dou
 int
 hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
              int *kind, double *rate);
+
+/* Only f[0] (the indicator of C) of hbs_watch_at, from the same cache. */
+double
+hbs_watch_indicator(struct hb_sim *s, const struct phase *p, double t, const double *u);
 
 /* sim_snap.c: a state on the boundary of C to the precision of the computation */
 int

@@ -155,18 +155,48 @@ oriented(double h, void *params)
 struct brent_fn {
 	struct hb_sim *s;
 	int bad;
+	int nmemo;          /* the bracket's ends, just evaluated, while the solver is set */
+	double mh[2], mg[2];
 };
 
 static double
 brent_value(double h, void *params)
 {
 	struct brent_fn *b = params;
-	double g = oriented(h, b->s);
+	double g;
+	int i;
+
+	for (i = 0; i < b->nmemo; i++)
+		if (h == b->mh[i]) { /* the same double oriented() gave: counted as it */
+			b->s->loc_iter++;
+			return b->mg[i];
+		}
+	g = oriented(h, b->s);
 
 	if (isfinite(g))
 		return g;
 	b->bad++;
 	return DBL_MIN;
+}
+
+/*
+ * gsl_root_fsolver_set with the ends' values gl, gu (finite) known: the
+ * solver's first look at them is answered from them (no second location
+ * step), counted in loc_iter as that look was.
+ */
+static int
+solver_set(struct brent_fn *b, gsl_function *F, double lo, double gl, double hi, double gu)
+{
+	int rc;
+
+	b->mh[0] = lo;
+	b->mg[0] = gl;
+	b->mh[1] = hi;
+	b->mg[1] = gu;
+	b->nmemo = 2;
+	rc = gsl_root_fsolver_set(b->s->root, F, lo, hi);
+	b->nmemo = 0;
+	return rc;
 }
 
 static int
@@ -178,7 +208,7 @@ brent_set(struct brent_fn *b, gsl_function *F, double lo, double hi)
 		return GSL_EBADFUNC;
 	if (!(lo < hi) || (gl < 0) == (gu < 0))
 		return GSL_EINVAL;
-	return gsl_root_fsolver_set(b->s->root, F, lo, hi);
+	return solver_set(b, F, lo, gl, hi, gu);
 }
 
 static int
@@ -208,18 +238,18 @@ brent_iterate(struct brent_fn *b)
 static int
 bracket(struct hb_sim *s, int k, int sign0, double lo, double hi, double htol, double *a, double *b)
 {
-	struct brent_fn bf = { s, 0 };
+	struct brent_fn bf = { s, 0, 0, { 0 }, { 0 } };
 	gsl_function F = { brent_value, &bf };
 	double tol = fmax(4.0 * DBL_EPSILON * fmax(fabs(s->t0 + hi), 1e-300), htol);
-	double xl = lo, xu = hi, prev = hi - lo, w;
+	double xl = lo, xu = hi, prev = hi - lo, w, gl, gu;
 	int it = 0, rc;
 
 	s->fun_target = k;
 	s->fun_sign0 = sign0;
-	if (!(oriented(lo, s) > 0) || !(oriented(hi, s) < 0))
+	if (!((gl = oriented(lo, s)) > 0) || !((gu = oriented(hi, s)) < 0))
 		return GSL_FAILURE;
 	/* the ends are known to straddle: set without brent_set's second look */
-	if ((rc = gsl_root_fsolver_set(s->root, &F, lo, hi)) != GSL_SUCCESS)
+	if ((rc = solver_set(&bf, &F, lo, gl, hi, gu)) != GSL_SUCCESS)
 		return rc;
 	while (xu - xl > tol && it++ < MAX_BRENT) {
 		if ((rc = brent_iterate(&bf)) != GSL_SUCCESS)

@@ -33,8 +33,16 @@ hbs_push_sample(struct hb_sim *s, int kind)
 {
 	struct iface *I = s->I;
 	struct hb_arc_sample a;
-	double phi = 0.0;
-
+	double phi = 0.0, Fer;
+	/*
+	 * Phi and F_e,r at a step's end were computed by the watch of that
+	 * state (hbs_watch_at), the same doubles: taken from there when it was
+	 * this state, in contact (not for a chain, whose forces the bodies'
+	 * sync may move).
+	 */
+	int watched = !s->chain && I->q && s->w.valid && s->w.p == s->cur && s->w.p->q && s->w.t == s->t
+	              && s->w.xe == I->xe
+	              && memcmp(s->w.u, s->u, (size_t)s->cur->L.dim * sizeof *s->u) == 0;
 	int rc;
 
 	if (s->chain && (rc = hbs_bodies_sync(s)))
@@ -47,7 +55,7 @@ hbs_push_sample(struct hb_sim *s, int kind)
 	a.x = I->x;
 	a.v = I->v;
 	if (I->q) {
-		phi = phi_at(s, I->xc, I->z, I->v);
+		phi = watched ? s->w.pf[0] : phi_at(s, I->xc, I->z, I->v);
 		a.xc = I->xc;
 		memcpy(a.z, I->z, sizeof a.z);
 		if (fabs(I->xc) > I->xcmax)
@@ -56,7 +64,8 @@ hbs_push_sample(struct hb_sim *s, int kind)
 			I->Fcmax = -phi;
 	}
 	a.Fc = -phi;
-	a.Fer = iface_Fer(s, I, s->t);
+	Fer = watched ? s->w.pf[1] : iface_Fer(s, I, s->t);
+	a.Fer = Fer;
 	a.xm = s->xm;
 	a.vm = s->vm;
 	a.W = I->W;

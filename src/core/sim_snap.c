@@ -72,28 +72,29 @@ hbs_snap_separation(struct hb_sim *s, double *u)
 	const struct phase *p = s->cur;
 	const struct layout *L = &p->L;
 	const struct iface *I = s->I;
-	double y[MAXDIM], z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi, v, vn, dv;
+	double z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi, v, xc, vn, dv;
 	int nz = I->law->n_z, i;
 
 	if (!p->q)
 		return 0;
-	hbs_unscale(p, u, y);
-	v = y[L->iv];
+	/* unscaled as hbs_unscale does, only the components read, v first */
+	v = u[L->iv] * s->scale[L->iv];
 	if (!(v > 0))
 		return 0;
+	xc = u[L->ixc] * s->scale[L->ixc];
 	for (i = 0; i < nz; i++)
-		z[i] = y[L->iz + i];
-	phi = phi_at(s, y[L->ixc], z, v);
+		z[i] = u[L->iz + i] * s->scale[L->iz + i];
+	phi = phi_at(s, xc, z, v);
 	if (!(phi > 0))
 		return 0;
-	I->law->jac(I->par, I->ext, y[L->ixc], z, v, dphi, NULL);
+	I->law->jac(I->par, I->ext, xc, z, v, dphi, NULL);
 	dv = dphi[nz + 1];
 	if (!(dv > 0) || phi > dv * v_noise(s, u))
 		return 0;
 	vn = v - phi / dv;
-	for (i = 0; i < 8 && phi_at(s, y[L->ixc], z, vn) > 0; i++)
+	for (i = 0; i < 8 && phi_at(s, xc, z, vn) > 0; i++)
 		vn -= ldexp(fabs(vn) * DBL_EPSILON, i);
-	if (phi_at(s, y[L->ixc], z, vn) > 0)
+	if (phi_at(s, xc, z, vn) > 0)
 		return 0;
 	u[L->iv] = vn * s->iscale[L->iv];
 	return 1;
@@ -106,17 +107,19 @@ hbs_hugging(struct hb_sim *s, const double *u)
 	const struct phase *p = s->cur;
 	const struct layout *L = &p->L;
 	const struct iface *I = s->I;
-	double y[MAXDIM], z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi;
+	double z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi, v, xc;
 	int nz = I->law->n_z, i;
 
 	if (!p->q)
 		return 0;
-	hbs_unscale(p, u, y);
-	if (!(y[L->iv] > 0))
+	/* unscaled as hbs_unscale does, only the components read, v first */
+	v = u[L->iv] * s->scale[L->iv];
+	if (!(v > 0))
 		return 0;
+	xc = u[L->ixc] * s->scale[L->ixc];
 	for (i = 0; i < nz; i++)
-		z[i] = y[L->iz + i];
-	phi = phi_at(s, y[L->ixc], z, y[L->iv]);
-	I->law->jac(I->par, I->ext, y[L->ixc], z, y[L->iv], dphi, NULL);
+		z[i] = u[L->iz + i] * s->scale[L->iz + i];
+	phi = phi_at(s, xc, z, v);
+	I->law->jac(I->par, I->ext, xc, z, v, dphi, NULL);
 	return dphi[nz + 1] > 0 && fabs(phi) <= dphi[nz + 1] * v_noise(s, u);
 }

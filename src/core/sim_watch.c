@@ -91,18 +91,19 @@ w_dphi_psi(enum wlaw w, const struct iface *I, double xc, const double *z, doubl
  * in kind[].  With rate not NULL, *rate = dI/dt, the rate of the indicator
  * (one-sided where I has a corner).  With only >= 0, only f[only] is
  * computed (the same double), and the law's partials only where it needs
- * them: a bracketing evaluates one function many times.
+ * them: a bracketing evaluates one function many times.  With pf not NULL
+ * (and all of them computed in contact), pf[0] = Phi and pf[1] = F_e,r.
  */
 static int
 watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
-      int *kind, double *rate, int only)
+      int *kind, double *rate, int only, double *pf)
 {
 	const struct hb_scene *sc = &s->sc;
 	const struct iface *I = s->I;
 	const struct layout *L = &p->L;
 	double y[MAXDIM], v, xc, z[HB_LAW_MAX_Z] = { 0 };
 	double dphi[HB_LAW_MAX_Z + 2], dz[HB_LAW_MAX_Z];
-	double phi = 0.0, vdot, d;
+	double phi = 0.0, vdot, d, Fer;
 	int i, nz = I->law->n_z;
 	int nk = I->law->n_kinks && sc->run.kinks ? I->law->n_kinks : 0;
 	int all = only < 0;
@@ -135,7 +136,12 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 	f[nk + 1] = v;
 	if (all || only == nk + 2) {
 		w_dphi_psi(w, I, xc, z, v, dphi, dz);
-		vdot = (-phi + iface_Fer(s, I, t)) / I->m;
+		Fer = iface_Fer(s, I, t);
+		vdot = (-phi + Fer) / I->m;
+		if (pf != NULL) {
+			pf[0] = phi;
+			pf[1] = Fer;
+		}
 		d = dphi[0] * v + dphi[nz + 1] * vdot;
 		for (i = 0; i < nz; i++)
 			d += dphi[1 + i] * dz[i];
@@ -150,7 +156,7 @@ int
 hbs_watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
           int *kind)
 {
-	return watch(s, p, t, u, f, kind, NULL, -1);
+	return watch(s, p, t, u, f, kind, NULL, -1, NULL);
 }
 
 double
@@ -160,26 +166,40 @@ hbs_watch_one(const struct hb_sim *s, const struct phase *p, double t, const dou
 	double f[MAXFUN];
 	int kinds[MAXFUN];
 
-	watch(s, p, t, u, f, kinds, NULL, k);
+	watch(s, p, t, u, f, kinds, NULL, k, NULL);
 	*kind = kinds[k];
 	return f[k];
 }
 
-int
-hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
-             int *kind, double *rate)
+/* The watched values at (t, u) into s->w, computed unless they are there. */
+static void
+watch_cached(struct hb_sim *s, const struct phase *p, double t, const double *u)
 {
 	size_t nu = (size_t)p->L.dim * sizeof *u;
 
 	if (!(s->w.valid && s->w.p == p && s->w.t == t && s->w.xe == s->I->xe
 	      && memcmp(s->w.u, u, nu) == 0)) {
-		s->w.n = watch(s, p, t, u, s->w.f, s->w.kind, &s->w.rate, -1);
+		s->w.n = watch(s, p, t, u, s->w.f, s->w.kind, &s->w.rate, -1, s->w.pf);
 		s->w.p = p;
 		s->w.t = t;
 		s->w.xe = s->I->xe;
 		memcpy(s->w.u, u, nu);
 		s->w.valid = 1;
 	}
+}
+
+double
+hbs_watch_indicator(struct hb_sim *s, const struct phase *p, double t, const double *u)
+{
+	watch_cached(s, p, t, u);
+	return s->w.f[0];
+}
+
+int
+hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
+             int *kind, double *rate)
+{
+	watch_cached(s, p, t, u);
 	memcpy(f, s->w.f, (size_t)s->w.n * sizeof *f);
 	memcpy(kind, s->w.kind, (size_t)s->w.n * sizeof *kind);
 	if (rate != NULL)
