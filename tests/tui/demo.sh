@@ -39,7 +39,8 @@ fi
 # ---- README's lesson runs as written (without a terminal) -------------------------
 awk '/^### Teaching$/ { on = 1 } on && /^### / && !/Teaching/ { exit } on && /^    / { sub(/^    /, ""); print }' \
     README.md >"$TMP/readme-lesson"
-echo "dump $TMP/readme-dump" >>"$TMP/readme-lesson"
+# the run computes while the lesson plays: dump its screen once it has ended
+printf 'wait-finished\ndump %s\n' "$TMP/readme-dump" >>"$TMP/readme-lesson"
 "$BIN" --script "$TMP/readme-lesson" </dev/null >"$TMP/out" 2>&1
 rc=$?
 if [ "$rc" = 0 ] && grep -q 'wait-key' "$TMP/readme-lesson" && grep -q ' coll 9 ' "$TMP/readme-dump" \
