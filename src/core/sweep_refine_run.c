@@ -61,7 +61,7 @@ struct refine_state {
 	struct node *t;     /* open addressing, cap a power of 2 */
 	size_t cap, count;
 	long *pending;         /* the round's points to compute */
-	long npending, todo_cap;
+	long npending, pending_cap;
 	int64_t jsize;      /* the journal's length */
 	int rfd;            /* the journal, to read blocks */
 	char *buf;
@@ -190,14 +190,14 @@ request(struct refine_state *r, long id, int level)
 	if ((x = node_add(r, id)) == NULL)
 		return HB_ENOMEM;
 	x->level = (signed char)level;
-	if (r->npending == r->todo_cap) {
-		long nc = r->todo_cap ? 2 * r->todo_cap : 256;
+	if (r->npending == r->pending_cap) {
+		long nc = r->pending_cap ? 2 * r->pending_cap : 256;
 		long *nt = realloc(r->pending, (size_t)nc * sizeof *nt);
 
 		if (nt == NULL)
 			return HB_ENOMEM;
 		r->pending = nt;
-		r->todo_cap = nc;
+		r->pending_cap = nc;
 	}
 	r->pending[r->npending++] = id;
 	return HB_OK;
