@@ -431,25 +431,47 @@ st_rec(const struct spacetime *st, double t, size_t *i)
 	return (long)k;
 }
 
+/*
+ * The cubic Hermite segment of body b around t (record *i to *i + 1): its
+ * parameter s in [0, 1], length h, end positions y0, y1 and scaled end
+ * velocities m0, m1.  Returns 1 with the segment, 0 with *end the value
+ * (y or u, as want_u) where there is no segment, -1 before the records.
+ */
+static int
+segment(const struct spacetime *st, int b, double t, size_t *i, int want_u, double *end,
+        double *s, double *h, double *y0, double *y1, double *m0, double *m1)
+{
+	size_t nb = (size_t)st->nb, k;
+	const double *v = want_u ? st->u : st->y;
+
+	if (st_rec(st, t, i) < 0)
+		return -1;
+	k = *i;
+	if (k + 1 >= st->nrec) {
+		*end = v[k * nb + (size_t)b];
+		return 0;
+	}
+	*h = st->t[k + 1] - st->t[k];
+	if (!(*h > 0)) {
+		*end = v[(k + 1) * nb + (size_t)b];
+		return 0;
+	}
+	*s = (t - st->t[k]) / *h;
+	*y0 = st->y[k * nb + (size_t)b];
+	*y1 = st->y[(k + 1) * nb + (size_t)b];
+	*m0 = *h * st->u[k * nb + (size_t)b];
+	*m1 = *h * st->u[(k + 1) * nb + (size_t)b];
+	return 1;
+}
+
 double
 st_y_at(const struct spacetime *st, int b, double t, size_t *i)
 {
-	size_t nb = (size_t)st->nb, k;
-	double h, s, y0, y1, m0, m1;
+	double end = NAN, h = 0, s = 0, y0 = 0, y1 = 0, m0 = 0, m1 = 0;
+	int r = segment(st, b, t, i, 0, &end, &s, &h, &y0, &y1, &m0, &m1);
 
-	if (st_rec(st, t, i) < 0)
-		return NAN;
-	k = *i;
-	if (k + 1 >= st->nrec)
-		return st->y[k * nb + (size_t)b];
-	h = st->t[k + 1] - st->t[k];
-	if (!(h > 0))
-		return st->y[(k + 1) * nb + (size_t)b];
-	s = (t - st->t[k]) / h;
-	y0 = st->y[k * nb + (size_t)b];
-	y1 = st->y[(k + 1) * nb + (size_t)b];
-	m0 = h * st->u[k * nb + (size_t)b];
-	m1 = h * st->u[(k + 1) * nb + (size_t)b];
+	if (r <= 0)
+		return r < 0 ? NAN : end;
 	/* cubic Hermite: exact for a parabola (a body in free flight under a constant load) */
 	return (2 * s * s * s - 3 * s * s + 1) * y0 + (s * s * s - 2 * s * s + s) * m0
 	       + (-2 * s * s * s + 3 * s * s) * y1 + (s * s * s - s * s) * m1;
@@ -458,22 +480,11 @@ st_y_at(const struct spacetime *st, int b, double t, size_t *i)
 double
 st_u_at(const struct spacetime *st, int b, double t, size_t *i)
 {
-	size_t nb = (size_t)st->nb, k;
-	double h, s, y0, y1, m0, m1;
+	double end = NAN, h = 0, s = 0, y0 = 0, y1 = 0, m0 = 0, m1 = 0;
+	int r = segment(st, b, t, i, 1, &end, &s, &h, &y0, &y1, &m0, &m1);
 
-	if (st_rec(st, t, i) < 0)
-		return NAN;
-	k = *i;
-	if (k + 1 >= st->nrec)
-		return st->u[k * nb + (size_t)b];
-	h = st->t[k + 1] - st->t[k];
-	if (!(h > 0))
-		return st->u[(k + 1) * nb + (size_t)b];
-	s = (t - st->t[k]) / h;
-	y0 = st->y[k * nb + (size_t)b];
-	y1 = st->y[(k + 1) * nb + (size_t)b];
-	m0 = h * st->u[k * nb + (size_t)b];
-	m1 = h * st->u[(k + 1) * nb + (size_t)b];
+	if (r <= 0)
+		return r < 0 ? NAN : end;
 	/* d/dt of st_y_at's cubic: the records' velocities at both ends, linear in free flight */
 	return ((6 * s * s - 6 * s) * y0 + (3 * s * s - 4 * s + 1) * m0 + (-6 * s * s + 6 * s) * y1
 	        + (3 * s * s - 2 * s) * m1) / h;
