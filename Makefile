@@ -364,7 +364,7 @@ check-asan: deps
 # harness (default 60), corpus grown in build/fuzz/corpus/NAME from the seeds
 # in tests/fuzz/corpus and presets/, findings (crash-*, leak-*, timeout-*) left in
 # build/fuzz/findings/.  `make fuzz-smoke` (also the last step of make check's tests/run.sh, counted in its summary)
-# runs each harness FUZZ_RUNS times (default 100000), from its seeds.
+# runs each harness FUZZ_RUNS times (default 100000; fuzz_run, a simulation per input, a fifth of that), from its seeds.
 FUZZ_CC    ?= clang
 FUZZ_TIME  ?= 60
 FUZZ_RUNS  ?= 100000
