@@ -6,7 +6,8 @@
  * How: the scene is run a second time with rk8pd at run.rtol / 100 and
  * run.atol / 100 (rtol never below HB_ERROR_RTOL_MIN), and each
  * observable's estimate is its difference from the first run, at least the
- * value's rounding.  The evidence for this choice, against the binary128
+ * value's rounding (for a time, that of t, a sum of steps: sqrt(steps)
+ * ulps of it).  The evidence for this choice, against the binary128
  * reference of tests/reference/ (study 1, the largest error over the
  * collisions; atol = rtol / 100):
  *
@@ -21,8 +22,9 @@
  * error is about a hundredth of the first's whatever the first run's
  * stepper; the work-energy residual of hb_check_physics is 3 to 3,800
  * times below the true error and is no estimate.  tests/cli/error.sh holds
- * every error bar of study 1 and the SHCCL study within [0.5, 100] x the
- * true error (measured: 0.7 to 2.7).
+ * every error bar of the five paper studies within [0.5, 100] x the true
+ * error where that is above 1e-13 (measured at the presets' tolerances:
+ * 0.81 to 21).
  *
  *     struct hb_error_estimate e;
  *     if (hb_error_estimate(s, NULL, &e, msg, sizeof msg) == HB_OK) {

@@ -73,6 +73,7 @@ hb_error_compare(const struct hb_sim *s, const struct hb_sim *t, struct hb_error
                  char *msg, size_t n)
 {
 	size_t nc = hb_sim_ncollisions(s), k;
+	double tround;
 
 	memset(e, 0, sizeof *e);
 	e->stepper = hb_sim_scene(t)->run.stepper;
@@ -88,6 +89,8 @@ hb_error_compare(const struct hb_sim *s, const struct hb_sim *t, struct hb_error
 	e->coll = calloc(nc > 0 ? nc : 1, sizeof *e->coll);
 	if (e->coll == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "error estimate: out of memory");
+	tround = sqrt((double)hb_sim_stats(s)->steps);
+	tround = (tround > 4 ? tround : 4) * DBL_EPSILON;
 	for (k = 0; k < nc; k++) {
 		const struct hb_collision *a = hb_sim_collision(s, k), *b;
 		struct hb_collision *d = &e->coll[e->ncoll];
@@ -105,13 +108,15 @@ hb_error_compare(const struct hb_sim *s, const struct hb_sim *t, struct hb_error
 			if (col->index)
 				continue;
 			dst = (double *)((char *)d + col->off);
-			/* a time, or a difference of times: a few ulps of t (the
-			 * location of an event ends on a bracket of that width) */
+			/* a time, or a difference of times: the rounding of t,
+			 * which is a sum of the steps that reach it (about
+			 * sqrt(steps) ulps), and at least a few ulps (the location
+			 * of an event ends on a bracket of that width) */
 			rnd = col->off == offsetof(struct hb_collision, te) ||
 			      col->off == offsetof(struct hb_collision, ts) ||
 			      col->off == offsetof(struct hb_collision, td) ||
 			      col->off == offsetof(struct hb_collision, tf)
-			          ? 4 * DBL_EPSILON * fabs(a->ts) : 0;
+			          ? tround * fabs(a->ts) : 0;
 			*dst = b != NULL ? bar(hb_collision_value(a, col), hb_collision_value(b, col), rnd)
 			                 : NAN;
 		}
