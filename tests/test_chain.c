@@ -343,7 +343,8 @@ solitary_wave(int n, double v, double T)
 
 			if (d > dmax[k])
 				dmax[k] = d;
-			if (pv[k] < 0 && vk >= 0 && d >= dmax[k]) {
+			/* at its largest overlap, to the rounding of positions about 1.6 m (4 ulps) */
+			if (pv[k] < 0 && vk >= 0 && d >= dmax[k] - 1e-15) {
 				tp[k] = t - vk * (t - tprev) / (vk - pv[k]);
 				if (k == kmid) {
 					double m0 = 0, m1 = 0, m2 = 0;

@@ -4,7 +4,10 @@
  *
  *  - hb_check_solution_pair: the hybrid time domain is ordered; every sample
  *    lies in the flow set C except the last before a jump, which lies in the
- *    jump set D; each post-jump state is g of the pre-jump state, exactly.
+ *    jump set D (in a chain, whose samples show one interface each, a
+ *    sample at the instant its flow interval ends may lie in D: interfaces
+ *    that reach their jump sets at one instant jump there one at a time);
+ *    each post-jump state is g of the pre-jump state, exactly.
  *  - hb_check_euler: forward Euler, started from a flow interval's initial
  *    state, converges to its final state; returns the estimated order.
  */

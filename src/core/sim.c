@@ -297,7 +297,8 @@ reset_state(struct hb_sim *s)
 	if (s->chain) {
 		hbs_chain_reset(s);
 	}
-	s->n_instant = 0;
+	for (int k = 0; k < s->nif; k++)
+		s->ifc[k].ninst = 0;
 	s->setup = 1;
 	s->resume = 0;
 	s->h1[0] = s->h1[1] = 0.0;
@@ -603,7 +604,8 @@ hb_sim_seek(struct hb_sim *s, size_t i)
 		s->col[s->ncol - 1].tf = NAN;
 	if (s->ncol > 0 && s->col[s->ncol - 1].j + 1 == s->j)
 		s->col[s->ncol - 1].tf = NAN;
-	s->n_instant = 0;
+	for (int k = 0; k < s->nif; k++)
+		s->ifc[k].ninst = 0;
 	s->err[0] = s->endmsg[0] = '\0';
 	s->end = HB_SIM_RUNNING;
 	s->setup = 1;

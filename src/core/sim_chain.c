@@ -180,14 +180,14 @@ gap_at(const struct hb_sim *s, const struct iface *I, double t, double *x, doubl
 
 	hbs_body_now(hi, t, &yh, &uh);
 	if (I->lo < 0) {
-		*x = yh - hi->l;
+		*x = yh - hi->dn;
 		*v = uh;
 	} else {
 		const struct body *lo = &s->body[I->lo];
 		double yl, ul;
 
 		hbs_body_now(lo, t, &yl, &ul);
-		*x = (yh - hi->l) - (yl + lo->l);
+		*x = (yh - hi->dn) - (yl + lo->up);
 		*v = uh - ul;
 	}
 }
@@ -215,9 +215,10 @@ hbs_body_at(const struct hb_sim *s, int i, double *y, double *u)
 	const struct hb_scene *sc = &s->sc;
 	const struct iface *I = &s->ifc[0];
 
-	if (s->chain)
+	if (s->chain) {
 		hbs_body_now(&s->body[i], s->t, y, u);
-	else if (s->nbody == 1) {
+		*y += s->body[i].y0;
+	} else if (s->nbody == 1) {
 		*y = I->x;
 		*u = I->v;
 	} else if (i == I->hi) {
@@ -237,7 +238,13 @@ hbs_chain_activate(struct hb_sim *s, int i)
 	s->I = &s->ifc[i];
 }
 
-/* The chain's state at t = 0: bodies spaced from the floor (or from 0) up, the striker moving. */
+/*
+ * The chain's state at t = 0: bodies spaced from the floor (or from 0) up,
+ * the striker moving.  A body's y is its displacement from there (y0), and
+ * a gap the difference of two displacements plus the gap at t = 0: a
+ * position in metres along a chain of 1,000 beads would carry the rounding
+ * of its length (1e-16 m), and touching beads at rest would overlap by it.
+ */
 void
 hbs_chain_reset(struct hb_sim *s)
 {
@@ -254,8 +261,10 @@ hbs_chain_reset(struct hb_sim *s)
 			y = sc->chain.floor ? b->l + cb.gap : 0.0;
 		else
 			y += s->body[i - 1].l + cb.gap + b->l;
-		hbs_body_set(b, 0.0, y, cb.v0);
+		hbs_body_set(b, 0.0, 0.0, cb.v0);
 		b->y0 = y;
+		b->dn = i == 0 && !sc->chain.floor ? 0.0 : -cb.gap;
+		b->up = 0.0;
 		b->u0 = cb.v0;
 	}
 	for (i = 0; i < s->nif; i++) {

@@ -132,7 +132,7 @@ cluster_bodies(const struct hb_sim *s, const struct cluster *C, double t, const 
 		const struct iface *I = &s->ifc[if_above(s, i)];
 		double x = I->xe + u[I->off] * c->scale[I->off], v = u[I->off + 1] * c->scale[I->off + 1];
 
-		r += s->body[i].l + x + s->body[i + 1].l;
+		r += s->body[i].up + x + s->body[i + 1].dn;
 		w += v;
 		c->by[i + 1] = r;
 		c->bu[i + 1] = w;
@@ -140,7 +140,7 @@ cluster_bodies(const struct hb_sim *s, const struct cluster *C, double t, const 
 	if (C->floor) {
 		const struct iface *I = &s->ifc[if_below(s, C->b0)];
 
-		y0 = I->xe + u[I->off] * c->scale[I->off] + s->body[C->b0].l;
+		y0 = I->xe + u[I->off] * c->scale[I->off] + s->body[C->b0].dn;
 		u0 = u[I->off + 1] * c->scale[I->off + 1];
 	} else {
 		double tau = t - C->t0;
@@ -178,12 +178,12 @@ gap_of(const struct hb_sim *s, const struct iface *I, double t, double *x, doubl
 
 	body_state(s, I->hi, t, &yh, &uh);
 	if (I->lo < 0) {
-		*x = yh - s->body[I->hi].l;
+		*x = yh - s->body[I->hi].dn;
 		*v = uh;
 		return;
 	}
 	body_state(s, I->lo, t, &yl, &ul);
-	*x = (yh - s->body[I->hi].l) - (yl + s->body[I->lo].l);
+	*x = (yh - s->body[I->hi].dn) - (yl + s->body[I->lo].up);
 	*v = uh - ul;
 }
 

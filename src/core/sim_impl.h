@@ -77,11 +77,17 @@ struct cached {
 struct body {
 	double m;               /* kg */
 	double l;               /* half-length along the axis (radius), m; 0 when unknown */
-	double y, u, tb;        /* a chain's: position and velocity of its centre at time tb
-	                           (the two-body scenes': from their interface, hbs_body_at) */
+	double y, u, tb;        /* a chain's: displacement of its centre from y0, and velocity,
+	                           at time tb (the two-body scenes': from their interface,
+	                           hbs_body_at) */
+	double dn, up;          /* a chain's: the gap below it is (y - dn) - (y' + up') of the
+	                           body below (y - dn on the floor), the gap above it likewise:
+	                           dn = -(the gap below at t = 0), up = 0, so that a gap is a
+	                           difference of displacements, exact (0) between touching
+	                           bodies at rest, however far along the chain they are */
 	double a;               /* a chain's: its constant acceleration */
 	double Fe;              /* a chain's: its applied force, constant */
-	double y0, u0;          /* a chain's: its position and velocity at t = 0 */
+	double y0, u0;          /* a chain's: its position (the origin of y) and velocity at t = 0 */
 	int cl;                 /* a chain's: the cluster it is in (index), -1 in flight */
 };
 
@@ -116,6 +122,8 @@ struct iface {
 	double te, vi;          /* commencement time and approach velocity */
 	int pushed;             /* a chain's: the contact in progress began as a touching pair
 	                           pushed together, not an impact (no e; sim_record.c) */
+	int ninst;              /* its jumps at the instant tinst (run.chatter bounds them) */
+	double tinst;
 };
 
 /*
@@ -175,8 +183,6 @@ struct hb_sim {
 	double t;
 	long j;
 	double xm, vm;
-	double t_instant;   /* time of the last jump, and jumps at it */
-	int n_instant;
 
 	/* the current flow interval */
 	int setup;          /* 1: the next work begins a new interval */

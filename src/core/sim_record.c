@@ -165,18 +165,28 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 
 	if ((rc = hbs_push_sample(s, HB_ARC_PRE_JUMP)))
 		return rc;
-	if (s->n_instant > 0 && s->t == s->t_instant)
-		s->n_instant++;
+	/*
+	 * Chatter: one interface jumping again and again at one instant.  In
+	 * a chain, several interfaces may each jump once at an instant (a
+	 * touching chain set moving), so the jumps are counted per interface.
+	 */
+	if (I->ninst > 0 && s->t == I->tinst)
+		I->ninst++;
 	else {
-		s->n_instant = 1;
-		s->t_instant = s->t;
+		I->ninst = 1;
+		I->tinst = s->t;
 	}
-	if (s->n_instant > s->sc.run.chatter) {
+	if (I->ninst > s->sc.run.chatter) {
 		char why[160];
 
-		snprintf(why, sizeof why,
-		         "%d jumps at one instant (run.chatter = %d): the run would jump without end",
-		         s->n_instant, s->sc.run.chatter);
+		if (s->chain)
+			snprintf(why, sizeof why,
+			         "%d jumps of interface %d at one instant (run.chatter = %d): the run "
+			         "would jump without end", I->ninst, s->k0 + s->ia, s->sc.run.chatter);
+		else
+			snprintf(why, sizeof why,
+			         "%d jumps at one instant (run.chatter = %d): the run would jump without end",
+			         I->ninst, s->sc.run.chatter);
 		return hbs_fail(s, HB_ECHATTER, why);
 	}
 	jr.t = s->t;
