@@ -269,4 +269,13 @@ else
 	notok "leaving on a floor: both balls just after the stacked drop's bounce, the tennis ball alone at 3 s" "$T/out"
 fi
 
+# a long touching chain: 301 beads, the wave run past the chain's end (gaps are
+# differences of displacements, exact between beads at rest, whatever their place)
+if "$BIN" --batch granular-chain --set chain.n=301 --set run.T=6ms --check -q >"$T/out" 2>&1 &&
+    grep -q '^  ended       horizon' "$T/out" && grep -q '^  check       solution pair: ok' "$T/out"; then
+	ok "a 301-bead granular chain runs 6 ms and passes --check"
+else
+	notok "a 301-bead granular chain runs 6 ms and passes --check" "$T/out"
+fi
+
 [ "$fails" -eq 0 ]
