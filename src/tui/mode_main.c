@@ -55,6 +55,8 @@ static const struct mode_key keys[] = {
 	  "a chain's next interface k for the plots (x, x_c, F_c of k; k= in the status line), then each interval's own", NULL },
 	{ 'B', 0, CTX_ANY, act_body, "B",
 	  "the next body for the plots (its position y and velocity u; b= in the status line, 1 the lowest), then the run's own", NULL },
+	{ 'i', 0, CTX_ANY, act_table_iface, "i",
+	  "a chain's collisions table: interface k's alone (k=K heads its column), each i the next k, then every interface's again", NULL },
 	{ '\t', 0, CTX_ANY, act_focus, "Tab", "switch the focus: collisions table / parameter panel", "params" },
 	{ KEY_UP, 'k', CTX_ANY, act_up, "Up k", "previous row of the focused table", NULL },
 	{ KEY_DOWN, 'j', CTX_ANY, act_down, "Down j", "next row of the focused table", NULL },
