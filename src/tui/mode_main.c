@@ -72,6 +72,8 @@ static const struct mode_key keys[] = {
 	{ '-', '_', CTX_PARAMS, act_nudge_down, "- _", "(parameter panel) divide the value by 1.1, or take the previous choice", NULL },
 	{ 'u', 0, CTX_ANY, act_undo, "u",
 	  "undo the last edit (a value or the law): the scene before it runs again, as after an edit", NULL },
+	{ 'a', 0, CTX_ANY, act_add, "a",
+	  "a chain: add a key of one body or interface the panel does not list (body.I.R, initial.body.I.v, interface.K.law ...), then its value", NULL },
 	{ 'U', 0, CTX_PARAMS, act_reset, "U",
 	  "(parameter panel) reset the selected value to the scene as opened (the preset and its --set)", NULL },
 	{ 'b', 0, CTX_ANY, act_branch, "b",

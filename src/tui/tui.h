@@ -39,7 +39,7 @@ enum view { VIEW_WHOLE = 0, VIEW_FOLLOW, VIEW_ZOOM, VIEW_LOOP, VIEW_J, VIEW_COUN
 enum focus { FOCUS_TABLE = 0, FOCUS_PARAMS };
 enum { APP_MODE_MAX = 8 };     /* modes open at once (mode.h) */
 enum pick_kind { PICK_LAW = 0, PICK_PRESET };
-enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH, PROMPT_SWEEP };
+enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH, PROMPT_SWEEP, PROMPT_ADD };
 enum { PROMPT_DATA = 16, PROMPT_FIT };  /* overlay_fit.c */
 
 /*
@@ -175,7 +175,7 @@ action_fn act_play, act_step_fwd, act_step_back, act_prev_jump, act_next_jump,
 	act_prev_section, act_next_section, act_search, act_enter,
 	act_nudge_up, act_nudge_down, act_branch, act_law, act_preset, act_restart,
 	act_pin, act_unpin, act_compare, act_study3, act_export, act_log, act_present,
-	act_search_next, act_search_prev, act_undo, act_reset, act_table_iface;
+	act_search_next, act_search_prev, act_undo, act_reset, act_table_iface, act_add;
 
 /* nav.c: the cursor and the selections (the first four: cursor.c). */
 /*
