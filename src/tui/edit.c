@@ -413,6 +413,12 @@ act_branch(struct app *a)
 {
 	char tb[32];
 
+	if (hb_sim_scene(a->sim)->chain.n > 0) {
+		/* hb_sim_branch cuts the replayed run with hb_sim_seek, which a chain's run refuses */
+		a->branch_armed = 0;
+		app_msg(a, 1, "b: a chain's run cannot branch: an edit restarts it from t = 0");
+		return;
+	}
 	cursor_clamp(a);
 	hb_units_format(a->tcur, hb_unit_time, 6, tb, sizeof tb);
 	a->branch_armed = !a->branch_armed;
