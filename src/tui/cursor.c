@@ -85,6 +85,76 @@ cursor_to_collision(struct app *a, long i)
 
 	if (c == NULL)
 		return;
-	cursor_set(a, hb_arc_find(hb_sim_arc(a->sim), c->te, c->j));
+	/*
+	 * a chain's collision ends in interval j, but other interfaces' jumps
+	 * may come between its commencement and that: its time alone places it
+	 */
+	if (hb_sim_scene(a->sim)->chain.n > 0)
+		cursor_set(a, hb_arc_find_t(hb_sim_arc(a->sim), c->te));
+	else
+		cursor_set(a, hb_arc_find(hb_sim_arc(a->sim), c->te, c->j));
 	a->table_sel = i;
+}
+
+/* ---- the collisions table's rows: every collision, or interface k's (i) ---- */
+
+int
+table_iface(const struct app *a)
+{
+	const struct hb_scene *sc = hb_sim_scene(a->sim);
+	int k = a->table_k - 1;
+
+	/* a scene opened since with fewer interfaces, or none of a chain's: all */
+	if (k < 0 || sc->chain.n == 0 || k < (sc->chain.floor ? 0 : 1) || k >= hb_sim_nbodies(a->sim))
+		return -1;
+	return k;
+}
+
+int
+table_shows(const struct app *a, long i)
+{
+	struct hb_collision live;
+	const struct hb_collision *c = app_collision(a, i, &live);
+	int k = table_iface(a);
+
+	return c != NULL && (k < 0 || c->k == k);
+}
+
+long
+table_nrows(const struct app *a)
+{
+	long n = app_ncollisions(a), r = 0;
+
+	if (table_iface(a) < 0)
+		return n;
+	for (long i = 0; i < n; i++)
+		r += table_shows(a, i);
+	return r;
+}
+
+long
+table_row_of(const struct app *a, long i)
+{
+	long r = 0;
+
+	if (table_iface(a) < 0)
+		return i;
+	for (long j = 0; j < i && j < app_ncollisions(a); j++)
+		r += table_shows(a, j);
+	return r;
+}
+
+long
+table_row_coll(const struct app *a, long r)
+{
+	long n = app_ncollisions(a);
+
+	if (r < 0)
+		return -1;
+	if (table_iface(a) < 0)
+		return r < n ? r : -1;
+	for (long i = 0; i < n; i++)
+		if (table_shows(a, i) && r-- == 0)
+			return i;
+	return -1;
 }

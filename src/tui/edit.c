@@ -14,7 +14,11 @@
  * validated first, so a refused edit
  * loses nothing.  Each edit keeps the scene before it (up to
  * APP_UNDO_MAX): u goes back to it as an edit would; U resets the selected
- * value to the scene as opened (the preset and its --set).
+ * value to the scene as opened (the preset and its --set).  On a chain, a
+ * (add) gives a body or an interface a key of its own that the panel does
+ * not list yet (body.I.NAME, interface.K.NAME, initial.body.I.NAME): an
+ * edit as any other, which adds the entry to the scene's overrides (at
+ * most HB_SCENE_MAX_OVERRIDES).
  */
 #include <curses.h>
 #include <math.h>
@@ -260,6 +264,132 @@ prompt_edit_begin(struct app *a)
 	snprintf(a->prompt_key, sizeof a->prompt_key, "%s", ki.key);
 }
 
+/* ---- a (add): a key of one body or interface of a chain ------------------ */
+
+/* The panel row of key, or -1 (an override is a row once the scene holds it). */
+static int
+param_row_of(const struct app *a, const char *key)
+{
+	struct param_row rows[256];
+	const struct hb_scene *sc = hb_sim_scene(a->sim);
+	int n = params_rows(sc, rows, 256);
+
+	for (int i = 0; i < n; i++) {
+		struct hb_scene_keyinfo ki;
+		if (rows[i].key >= 0 && hb_scene_key(sc, rows[i].key, &ki) == 0 && strcmp(ki.key, key) == 0)
+			return i;
+	}
+	return -1;
+}
+
+/* Sets an added key and selects its row, once the edit is applied. */
+static void
+add_set(struct app *a, const char *key, const char *text)
+{
+	int row;
+
+	edit_value(a, key, text);
+	if ((row = param_row_of(a, key)) >= 0)
+		a->param_sel = row;
+}
+
+static void
+add_value_done(struct app *a, const char *text, int how)
+{
+	if (how == PROMPT_CANCEL)
+		a->branch_armed = 0;
+	else if (how == PROMPT_ENTER)
+		add_set(a, a->prompt_key, text);
+}
+
+/*
+ * The key prompt's report: KEY (then its value is asked, the chain's as it
+ * stands given), or KEY = VALUE at once.  A key the scene holds already is
+ * edited as its row is; a new one needs a free entry.
+ */
+static void
+add_key_done(struct app *a, const char *text, int how)
+{
+	const struct hb_scene *sc = hb_sim_scene(a->sim);
+	struct hb_scene_keyinfo ki;
+	struct hb_scene_error err;
+	char key[sizeof a->prompt_key], emsg[512];
+	const char *eq = strchr(text, '='), *value = NULL;
+	size_t l;
+	int row;
+
+	if (how != PROMPT_ENTER) {
+		if (how == PROMPT_CANCEL)
+			a->branch_armed = 0;
+		return;
+	}
+	while (*text == ' ')
+		text++;
+	l = eq != NULL ? (size_t)(eq - text) : strlen(text);
+	while (l > 0 && text[l - 1] == ' ')
+		l--;
+	if (l == 0 || l >= sizeof key) {
+		a->branch_armed = 0;
+		app_msg(a, 1, "add: no key (body.I.NAME, interface.K.NAME or initial.body.I.NAME; a for the list)");
+		return;
+	}
+	snprintf(key, sizeof key, "%.*s", (int)l, text);
+	if (eq != NULL)
+		for (value = eq + 1; *value == ' '; value++)
+			;
+	if (strncmp(key, "body.", 5) != 0 && strncmp(key, "interface.", 10) != 0
+	    && strncmp(key, "initial.body.", 13) != 0) {
+		a->branch_armed = 0;
+		app_msg(a, 1, "add: %s is not a key of one body or interface; accepted: body.I.NAME, "
+		        "interface.K.NAME, initial.body.I.NAME (the others are rows of the panel already)", key);
+		return;
+	}
+	if (hb_scene_get(sc, key, &ki, &err) != HB_OK) {
+		a->branch_armed = 0;
+		app_msg(a, 1, "add: %s", hb_scene_error_str(&err, emsg, sizeof emsg));
+		return;
+	}
+	row = param_row_of(a, key);
+	if (row < 0 && sc->over.n >= HB_SCENE_MAX_OVERRIDES) {
+		a->branch_armed = 0;
+		app_msg(a, 1, "add: refused: %d of %d keys of single bodies and interfaces held, the most "
+		        "a scene holds; edit one of them (their rows in the chain section), or give what "
+		        "most bodies share in [body1], [law] and [chain]", sc->over.n, HB_SCENE_MAX_OVERRIDES);
+		return;
+	}
+	if (row >= 0)
+		a->param_sel = row;
+	if (value != NULL && *value != 0) {
+		add_set(a, key, value);
+		return;
+	}
+	prompt_open(a, PROMPT_EDIT, add_value_done, ki.edit, "%.47s %.47s%s%s", key, ki.range,
+	            row < 0 ? " (new: the chain's value now)" : "", a->branch_armed ? " (branch here)" : "");
+	snprintf(a->prompt_key, sizeof a->prompt_key, "%s", key);
+}
+
+/* a: asks for a key of one body or interface of a chain, then its value. */
+void
+act_add(struct app *a)
+{
+	const struct hb_scene *sc = hb_sim_scene(a->sim);
+	int n = sc->chain.n, k0 = sc->chain.floor ? 0 : 1;
+
+	if (n == 0) {
+		app_msg(a, 1, "add: a chain's keys of one body or interface only (this scene has two bodies: "
+		        "every key is a row of the panel)");
+		return;
+	}
+	if (a->focus != FOCUS_PARAMS) {
+		a->focus = FOCUS_PARAMS;
+		app_relayout(a);
+	}
+	prompt_open(a, PROMPT_ADD, add_key_done, "",
+	            "add a key of one body or interface [= VALUE] (%d of %d held): body.I.{E,nu,rho,R,mass,F}, "
+	            "initial.body.I.{v,gap} (I 1..%d), interface.K.{law,extension,PARAMETER} (K %d..%d)",
+	            sc->over.n, HB_SCENE_MAX_OVERRIDES, n, k0, n - 1);
+}
+
 /* ---- actions ---------------------------------------------------------- */
 
 void act_nudge_up(struct app *a) { nudge(a, 1); }
@@ -283,6 +413,12 @@ act_branch(struct app *a)
 {
 	char tb[32];
 
+	if (hb_sim_scene(a->sim)->chain.n > 0) {
+		/* hb_sim_branch cuts the replayed run with hb_sim_seek, which a chain's run refuses */
+		a->branch_armed = 0;
+		app_msg(a, 1, "b: a chain's run cannot branch: an edit restarts it from t = 0");
+		return;
+	}
 	cursor_clamp(a);
 	hb_units_format(a->tcur, hb_unit_time, 6, tb, sizeof tb);
 	a->branch_armed = !a->branch_armed;

@@ -42,7 +42,7 @@ cursor_follow_want(struct app *a)
 		a->cursor = i;
 		a->tcur = hb_arc_at(arc, i)->t;
 		a->want_t = -1;
-		if (coll_at_cursor(a) >= 0)
+		if (coll_at_cursor(a) >= 0 && table_shows(a, coll_at_cursor(a)))
 			a->table_sel = coll_at_cursor(a);
 	} else {
 		a->cursor = hb_arc_len(arc) - 1;

@@ -14,7 +14,7 @@ static long
 table_row_at(const struct app *a, int y)
 {
 	const struct rect *r = &a->L.table;
-	long n = app_ncollisions(a), rows = r->h - 1, top = a->table_sel - rows + 1;
+	long n = table_nrows(a), rows = r->h - 1, top = table_row_of(a, a->table_sel) - rows + 1;
 
 	if (top > n - rows)
 		top = n - rows;
@@ -24,7 +24,7 @@ table_row_at(const struct app *a, int y)
 		return -1;
 	if (top + (y - r->y - 1) >= n)
 		return -1;
-	return top + (y - r->y - 1);
+	return table_row_coll(a, top + (y - r->y - 1));
 }
 
 static int
@@ -95,7 +95,7 @@ mouse_event(struct app *a)
 			}
 			{
 				long i = coll_at_cursor(a);
-				if (i >= 0)
+				if (i >= 0 && table_shows(a, i))
 					a->table_sel = i;
 			}
 		}

@@ -16,13 +16,13 @@
 #include "cnum.h" /* ASCII case fold (src/core) */
 #include "tui.h"
 
-/* The table selection follows the cursor onto a contact. */
+/* The table selection follows the cursor onto a contact (one the table shows). */
 static void
 follow(struct app *a)
 {
 	long i = coll_at_cursor(a);
 
-	if (i >= 0)
+	if (i >= 0 && table_shows(a, i))
 		a->table_sel = i;
 }
 
@@ -54,6 +54,38 @@ jump_move(struct app *a, int dir)
 	follow(a);
 }
 
+/*
+ * A chain's collisions are listed in the order they end and overlap in
+ * time: the next (previous) one shown is the one that commences next
+ * (last) after the cursor's time, by (t_e, i); at the selected one's
+ * commencement, after (before) that one.
+ */
+static long
+chain_coll_next(struct app *a, int dir)
+{
+	const struct hb_arc *arc = hb_sim_arc(a->sim);
+	struct hb_collision live;
+	const struct hb_collision *c = table_shows(a, a->table_sel) ? app_collision(a, a->table_sel, &live) : NULL;
+	double t0 = hb_arc_at(arc, a->cursor)->t, bt = 0;
+	long i0 = -1, best = -1, nc = app_ncollisions(a);
+
+	if (c != NULL && hb_arc_find_t(arc, c->te) == a->cursor) {
+		t0 = c->te;
+		i0 = a->table_sel;
+	}
+	for (long i = 0; i < nc; i++) {
+		if (!table_shows(a, i) || (c = app_collision(a, i, &live)) == NULL)
+			continue;
+		int after = c->te > t0 || (c->te == t0 && i > i0);
+		int before = c->te < t0 || (c->te == t0 && i < i0);
+		if (dir > 0 && after && (best < 0 || c->te < bt))
+			best = i, bt = c->te;
+		if (dir < 0 && before && (best < 0 || c->te >= bt))
+			best = i, bt = c->te;
+	}
+	return best;
+}
+
 static void
 coll_move(struct app *a, int dir)
 {
@@ -67,10 +99,10 @@ coll_move(struct app *a, int dir)
 		return;
 	s = hb_arc_at(arc, a->cursor);
 	first = hb_arc_interval_at(arc, hb_arc_interval_of(arc, a->cursor))->first;
-	for (i = 0; i < nc; i++) {
+	for (i = hb_sim_scene(a->sim)->chain.n > 0 ? nc : 0; i < nc; i++) {
 		struct hb_collision live;
 		const struct hb_collision *c = app_collision(a, i, &live);
-		if (c == NULL)
+		if (c == NULL || !table_shows(a, i))
 			continue;
 		if (dir > 0 && c->j > s->j) {
 			best = i;
@@ -79,8 +111,14 @@ coll_move(struct app *a, int dir)
 		if (dir < 0 && (c->j < s->j || (c->j == s->j && a->cursor > first)))
 			best = i;
 	}
+	if (hb_sim_scene(a->sim)->chain.n > 0)
+		best = chain_coll_next(a, dir);
 	if (best < 0) {
-		app_msg(a, 0, dir > 0 ? "no later collision (yet)" : "no earlier collision");
+		if (table_iface(a) >= 0)
+			app_msg(a, 0, dir > 0 ? "no later collision of interface %d (yet; i: every interface's)"
+			        : "no earlier collision of interface %d (i: every interface's)", table_iface(a));
+		else
+			app_msg(a, 0, dir > 0 ? "no later collision (yet)" : "no earlier collision");
 		return;
 	}
 	cursor_to_collision(a, best);
@@ -152,12 +190,17 @@ void
 sel_move(struct app *a, long d)
 {
 	if (a->focus == FOCUS_TABLE) {
-		long n = app_ncollisions(a);
-		a->table_sel += d;
-		if (a->table_sel >= n)
-			a->table_sel = n - 1;
-		if (a->table_sel < 0)
-			a->table_sel = 0;
+		/* d rows of those shown (every collision, or interface k's: i) */
+		long n = table_nrows(a), r = table_row_of(a, a->table_sel), i;
+		if (!table_shows(a, a->table_sel) && d > 0)
+			r--;    /* a selection not shown: its row is the next one's */
+		r += d;
+		if (r >= n)
+			r = n - 1;
+		if (r < 0)
+			r = 0;
+		if ((i = table_row_coll(a, r)) >= 0)
+			a->table_sel = i;
 	} else {
 		struct param_row rows[256];
 		int n = params_rows(hb_sim_scene(a->sim), rows, 256), s = a->param_sel;
@@ -197,6 +240,44 @@ void act_pgup(struct app *a) { sel_move(a, -page_rows(a)); }
 void act_pgdn(struct app *a) { sel_move(a, page_rows(a)); }
 void act_top(struct app *a) { sel_move(a, -100000); }
 void act_bottom(struct app *a) { sel_move(a, 100000); }
+
+/*
+ * i: the collisions table shows a chain's interface k alone, each i the
+ * next k (k0 .. n - 1: 0 is the floor's), then every interface's again.
+ * The selection stays on a collision shown: the nearest one at or after
+ * it, else the last before it.
+ */
+void
+act_table_iface(struct app *a)
+{
+	const struct hb_scene *sc = hb_sim_scene(a->sim);
+	int nb = hb_sim_nbodies(a->sim), k0 = sc->chain.floor ? 0 : 1, k = table_iface(a);
+	long n = app_ncollisions(a), sel = -1;
+
+	if (sc->chain.n == 0 || nb - k0 < 2) {
+		a->table_k = 0;
+		app_msg(a, 1, "one interface only: the table lists every collision (i shows one interface of a chain)");
+		return;
+	}
+	k = k < 0 ? k0 : k + 1;
+	a->table_k = k < nb ? k + 1 : 0;
+	for (long i = a->table_sel; i < n && sel < 0; i++)
+		if (table_shows(a, i))
+			sel = i;
+	for (long i = a->table_sel < n ? a->table_sel : n - 1; i >= 0 && sel < 0; i--)
+		if (table_shows(a, i))
+			sel = i;
+	if (sel >= 0)
+		a->table_sel = sel;
+	if (a->table_k == 0)
+		app_msg(a, 0, "table: every interface's collisions, %ld (i: interface %d alone)", n, k0);
+	else if (k == 0)
+		app_msg(a, 0, "table: interface 0 alone (the floor and body 1), %ld of %ld collisions (i: the next)",
+		        table_nrows(a), n);
+	else
+		app_msg(a, 0, "table: interface %d alone (bodies %d and %d), %ld of %ld collisions (i: the next)",
+		        k, k, k + 1, table_nrows(a), n);
+}
 
 void
 act_focus(struct app *a)

@@ -6,7 +6,10 @@
  * and written in the header.  With compare on (c), the columns are those
  * of the comparison: each collision against the one of the same index in
  * a pinned run, with the differences (now - pinned) of t_e, e and x_c^max
- * in columns "dt_e", "de", "dx_c^max".  Drawing only.
+ * in columns "dt_e", "de", "dx_c^max".  With i on a chain the rows are
+ * those of one interface k (cursor.c: table_shows), the k column's
+ * heading "k=K" and the note "collisions: 3 of 12 (k=K)"; the units are
+ * chosen from the rows shown.  Drawing only.
  */
 #include <curses.h>
 #include <math.h>
@@ -36,10 +39,10 @@ static const struct hb_collision_column kcol = { "k", "k", "", "interface", 0, 0
 /*
  * The explorer's columns, from the table of columns.h, with their widths;
  * delta[k] 1 where column k is a difference against a pinned run; a
- * chain's interface k after the index.
+ * chain's interface k after the index, kw wide.
  */
 static int
-columns(int compare, int chain, const struct hb_collision_column **cols, int *width, int *delta)
+columns(int compare, int chain, int kw, const struct hb_collision_column **cols, int *width, int *delta)
 {
 	int n = 0;
 
@@ -64,7 +67,7 @@ columns(int compare, int chain, const struct hb_collision_column **cols, int *wi
 		if (chain && n == 1 && n < NCOL_MAX - 1) {
 			cols[n] = &kcol;
 			delta[n] = 0;
-			width[n++] = 4;
+			width[n++] = kw;
 		}
 		cols[n] = c;
 		delta[n] = 0;
@@ -180,11 +183,12 @@ void
 pane_table_draw(const struct app *a)
 {
 	const struct rect *r = &a->L.table;
-	long n = app_ncollisions(a), top, i, rows = r->h - 1, sel = a->table_sel;
+	long n = app_ncollisions(a), top, i, rows = r->h - 1, sel = a->table_sel, row;
 	const struct hb_sim *ps = a->compare > 0 && a->compare <= a->npins ? a->pin[a->compare - 1].sim : NULL;
 	const struct hb_collision_column *cols[NCOL_MAX];
-	int width[NCOL_MAX], delta[NCOL_MAX];
-	int ncol = columns(ps != NULL, hb_sim_scene(a->sim)->chain.n > 0, cols, width, delta);
+	int width[NCOL_MAX], delta[NCOL_MAX], only = table_iface(a);
+	char khead[16];
+	int ncol, kw;
 	double scale[NCOL_MAX], mag[NCOL_MAX];
 	char unit[NCOL_MAX][16], line[512], cell[64];
 	int ends[NCOL_MAX + 1];
@@ -196,6 +200,10 @@ pane_table_draw(const struct app *a)
 
 	if (r->h < 2)
 		return;
+	/* the k column's heading: "k", or "k=K" while it shows interface K alone */
+	snprintf(khead, sizeof khead, only >= 0 ? "k=%d" : "k", only);
+	kw = (int)strlen(khead) + 1 > 4 ? (int)strlen(khead) + 1 : 4;
+	ncol = columns(ps != NULL, hb_sim_scene(a->sim)->chain.n > 0, kw, cols, width, delta);
 	if (hb_arc_len(arc) > 0 && hb_arc_at(arc, a->cursor)->q) {
 		long jc = hb_arc_at(arc, a->cursor)->j;
 		for (i = 0; i < n; i++) {
@@ -208,6 +216,8 @@ pane_table_draw(const struct app *a)
 		mag[k] = 0;
 	for (i = 0; i < n; i++) {
 		const struct hb_collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
+		if (only >= 0 && !table_shows(a, i))
+			continue;
 		for (k = 0; c && k < ncol; k++) {
 			double v = value(c, p, cols[k], delta[k]);
 			if (isfinite(v) && fabs(v) > mag[k])
@@ -217,7 +227,10 @@ pane_table_draw(const struct app *a)
 	line[0] = 0;
 	for (k = 0; k < ncol; k++) {
 		char h[48];
-		if (cols[k]->unit[0]) {
+		if (cols[k] == &kcol) {
+			scale[k] = 1;
+			snprintf(h, sizeof h, "%s", khead);
+		} else if (cols[k]->unit[0]) {
 			scale[k] = hb_units_axis(mag[k] > 0 ? mag[k] : 1, cols[k]->unit, unit[k], sizeof unit[k]);
 			snprintf(h, sizeof h, "%s%s[%s]", delta[k] ? "d" : "", cols[k]->label, unit[k]);
 		} else {
@@ -230,7 +243,9 @@ pane_table_draw(const struct app *a)
 	}
 	fitov_table_note(a, -1, line, sizeof line);
 	if (ps)
-		snprintf(cell, sizeof cell, "  vs %d", a->compare);
+		snprintf(cell, sizeof cell, only >= 0 ? "  vs %d, k=%d alone" : "  vs %d", a->compare, only);
+	else if (only >= 0)
+		snprintf(cell, sizeof cell, "  collisions: %ld of %ld (k=%d)", table_nrows(a), n, only);
 	else
 		snprintf(cell, sizeof cell, "  collisions: %zu%s", hb_sim_ncollisions(a->sim),
 		         n > (long)hb_sim_ncollisions(a->sim) ? " + live" : "");
@@ -241,19 +256,26 @@ pane_table_draw(const struct app *a)
 	/* scroll so the selection is visible (and its error bars, E, under it) */
 	if (sel >= n)
 		sel = n - 1;
+	if (sel >= 0 && !table_shows(a, sel))
+		sel = -1;       /* not a row: none highlighted (the rows about where it would be) */
 	if (sel >= 0 && rows > 2) {
 		const struct hb_collision *c = app_collision(a, sel, &live);
 		bars = c != NULL && c->complete ? errbar_find(a, c->i) : NULL;
 	}
 	if (bars != NULL)
 		rows--;
-	top = layout_scroll(a->table_top, sel, rows, n);
-	for (i = top; i < n && i < top + rows; i++) {
+	top = layout_scroll(a->table_top, table_row_of(a, a->table_sel < n ? a->table_sel : n - 1), rows,
+	                    table_nrows(a));
+	for (i = 0, row = -1; i < n; i++) {
 		const struct hb_collision *c = app_collision(a, i, &live), *p = pinned(ps, i);
 		int attr = 0;
 		unsigned flag;
-		if (c == NULL)
+		if (c == NULL || (only >= 0 && !table_shows(a, i)))
 			continue;
+		if (++row < top)
+			continue;
+		if (row >= top + rows)
+			break;
 		flag = c->complete ? physics_flag(a, i) : 0;
 		line[0] = 0;
 		for (k = 0; k < ncol; k++) {
@@ -307,14 +329,16 @@ pane_table_draw(const struct app *a)
 		if (!c->complete && a->colour)
 			attr |= COLOR_PAIR(PAIR_CONTACT);
 		fit_row(line, sizeof line, ends, ncol, r->w, 0);
-		tui_puts(r->y + 1 + below + (int)(i - top), r->x, r->w, line, attr);
+		tui_puts(r->y + 1 + below + (int)(row - top), r->x, r->w, line, attr);
 		if (i == sel && bars != NULL) {
 			bars_row(bars, cols, width, scale, ncol, line, sizeof line, ends);
 			fit_row(line, sizeof line, ends, ncol, r->w, 0);
 			below = 1;
-			tui_puts(r->y + 1 + below + (int)(i - top), r->x, r->w, line, A_DIM);
+			tui_puts(r->y + 1 + below + (int)(row - top), r->x, r->w, line, A_DIM);
 		}
 	}
 	if (n == 0)
 		tui_puts(r->y + 1, r->x, r->w, "  (no collision yet)", A_DIM);
+	else if (row < 0 && only >= 0)
+		tui_puts(r->y + 1, r->x, r->w, "  (no collision of this interface yet; i: the next)", A_DIM);
 }

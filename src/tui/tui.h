@@ -39,7 +39,7 @@ enum view { VIEW_WHOLE = 0, VIEW_FOLLOW, VIEW_ZOOM, VIEW_LOOP, VIEW_J, VIEW_COUN
 enum focus { FOCUS_TABLE = 0, FOCUS_PARAMS };
 enum { APP_MODE_MAX = 8 };     /* modes open at once (mode.h) */
 enum pick_kind { PICK_LAW = 0, PICK_PRESET };
-enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH, PROMPT_SWEEP };
+enum prompt_kind { PROMPT_EDIT = 0, PROMPT_EXPORT, PROMPT_SEARCH, PROMPT_SWEEP, PROMPT_ADD };
 enum { PROMPT_DATA = 16, PROMPT_FIT };  /* overlay_fit.c */
 
 /*
@@ -114,7 +114,8 @@ struct app {
 	long zoom_i;                /* collision shown by zoom/loop (-1: the live contact) */
 
 	int focus;                  /* enum focus */
-	long table_sel, table_top;
+	long table_sel, table_top;  /* table_sel: a collision's index (shown or not) */
+	int table_k;                /* the table shows interface table_k - 1 alone (i); 0: every one */
 	int param_sel, param_top;
 
 	/*
@@ -174,7 +175,7 @@ action_fn act_play, act_step_fwd, act_step_back, act_prev_jump, act_next_jump,
 	act_prev_section, act_next_section, act_search, act_enter,
 	act_nudge_up, act_nudge_down, act_branch, act_law, act_preset, act_restart,
 	act_pin, act_unpin, act_compare, act_study3, act_export, act_log, act_present,
-	act_search_next, act_search_prev, act_undo, act_reset;
+	act_search_next, act_search_prev, act_undo, act_reset, act_table_iface, act_add;
 
 /* nav.c: the cursor and the selections (the first four: cursor.c). */
 /*
@@ -189,6 +190,18 @@ void cursor_set(struct app *a, size_t i);
 void cursor_clamp(struct app *a);                 /* keeps it < hb_arc_len */
 long coll_at_cursor(const struct app *a);         /* the collision at the cursor, or -1 */
 void cursor_to_collision(struct app *a, long i);  /* to its commencement; selects its row */
+/*
+ * The collisions table's rows (cursor.c): every collision, or with i on a
+ * chain those of one interface.  table_iface: that interface k, or -1
+ * (every one; a scene without it now).  table_shows: collision i is a row.
+ * table_nrows: the rows.  table_row_of: the row of collision i (where it
+ * would be when not shown).  table_row_coll: the collision of row r, or -1.
+ */
+int table_iface(const struct app *a);
+int table_shows(const struct app *a, long i);
+long table_nrows(const struct app *a);
+long table_row_of(const struct app *a, long i);
+long table_row_coll(const struct app *a, long r);
 double view_span(const struct app *a);
 void zoom_on(struct app *a, int view);
 void sel_move(struct app *a, long d);

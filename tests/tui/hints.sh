@@ -24,6 +24,14 @@ while [ "$n" -lt 20 ] && ! screen a | grep -q 'In the help (?, F1):'; do
 	wait_for a 'hybounce keys' 10
 	n=$((n + 1))
 done
+# ... and a line at a time until its last row, PgDn space, is on the screen too
+# (where the pages fall depends on the length of the lists before it)
+n=0
+while [ "$n" -lt 40 ] && ! screen a | grep -q 'PgDn space scroll down a page'; do
+	keys a Down
+	wait_for a 'hybounce keys' 10
+	n=$((n + 1))
+done
 # "Up k" and "PgDn space" start their text in the same column
 col_up=$(screen a | awk '/Up k  *scroll up a line/ { print index($0, "scroll up a line"); exit }')
 col_dn=$(screen a | awk '/PgDn space scroll down a page/ { print index($0, "scroll down a page"); exit }')
