@@ -70,9 +70,10 @@ check_contacts(const struct hb_sim *s, struct hb_check_chain *r, char *msg, size
 		/*
 		 * e only where its relative motion felt its own force alone: no
 		 * neighbour in contact during it, and an approach energy the
-		 * run resolves (touching bodies begin a contact at v_i = 0).
+		 * run resolves (touching bodies begin a contact at v_i = 0), and
+		 * not a touching pair pushed together (e NaN: sim_record.c).
 		 */
-		if (!whole || !(o->vi < 0.0) || !(Ei > r->tol * eref) ||
+		if (!whole || !(o->vi < 0.0) || !(Ei > r->tol * eref) || isnan(o->e) ||
 		    in_contact_during(s, i - 1, o->te, o->ts) || in_contact_during(s, i + 1, o->te, o->ts))
 			continue;
 		r->nisolated++;

@@ -6,6 +6,8 @@
  * location of the earliest crossing of a watched function on re-steps
  * (see sim_cluster.c for the method).
  */
+#include <float.h>
+
 #include "sim_impl.h"
 
 /* Whether a chain's clusters can run with the scene's stepper (explicit, bsimp, or auto). */
@@ -410,6 +412,17 @@ static int
 jump_iface(struct hb_sim *s, int i, int how, int iters, double width, double ilo, double ihi)
 {
 	hbs_chain_activate(s, i);
+	/*
+	 * A gap is a difference of displacements and carries their rounding
+	 * (1e-21 m for displacements of 10 um): a slow approach located to
+	 * the resolution of t may end where the gap reads a rounding above 0.
+	 * The pre-jump state is put on the boundary of D, x = 0, as the pair's
+	 * location puts it (the bodies then differ by that rounding).
+	 */
+	if (!s->I->q && s->I->x > 0.0 && s->I->v < 0.0 &&
+	    s->I->x <= 64.0 * DBL_EPSILON * (fabs(s->body[s->I->hi].y) +
+	                                     (s->I->lo >= 0 ? fabs(s->body[s->I->lo].y) : 0.0)))
+		s->I->x = 0.0;
 	return hbs_jump(s, how, iters, width, ilo, ihi);
 }
 
