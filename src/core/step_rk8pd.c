@@ -146,15 +146,16 @@ struct rk8pd;
 typedef int stepfn(struct rk8pd *st, double t, double h, double y[], double yerr[],
                    const double dydt_in[], double dydt_out[], const gsl_odeiv2_system *sys);
 
+/* One block of 17 vectors of pad values each (the padding zero), in this order: */
 struct rk8pd {
 	size_t dim;
 	size_t pad;   /* dim rounded up to the lanes */
 	stepfn *step; /* the copy for this dimension and these lanes */
-	double *y0;   /* y at the step's start, then the 13 stages k1..k13, the trial state, */
-	double *k;    /* the end and its estimate: pad values each, the padding zero */
-	double *ytmp;
-	double *yend;
-	double *err;
+	double *y0;   /* y at the step's start */
+	double *k;    /* the 13 stages k1..k13 */
+	double *ytmp; /* a stage's trial state */
+	double *yend; /* the step's end */
+	double *err;  /* its error estimate */
 };
 
 /* GSL's stages (ode-initval2/rk8pd.c): the trial state of stage n, the sum left to right. */
@@ -323,7 +324,7 @@ alloc_lanes(size_t dim, int lanes)
 	pad = (dim + (size_t)lanes - 1) / (size_t)lanes * (size_t)lanes;
 	st->dim = dim;
 	st->pad = pad;
-	/* 17 vectors of pad values: y0, k1..k13, ytmp, yend, err; aligned to 32 bytes (a size of whole 32s) */
+	/* the 17 vectors, aligned to 32 bytes (aligned_alloc takes a size of whole 32s) */
 	bytes = (17 * pad * sizeof(double) + 31) / 32 * 32;
 	st->y0 = aligned_alloc(32, bytes);
 	if (st->y0 == NULL)
