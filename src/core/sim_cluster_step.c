@@ -28,7 +28,7 @@ alloc_ode(struct hb_sim *s, int n)
 	                              : st == HB_STEPPER_RKCK ? gsl_odeiv2_step_rkck
 	                              : st == HB_STEPPER_DOP853 ? hb_step_dop853
 	                              : st == HB_STEPPER_BSIMP ? hb_step_bsimp_shifted
-	                              : gsl_odeiv2_step_rk8pd;
+	                              : hb_step_rk8pd;
 	int cap = c->capdim;
 
 	if (n > cap) {

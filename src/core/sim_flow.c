@@ -25,7 +25,7 @@ stepper_type(int stepper)
 	case HB_STEPPER_BSIMP: return hb_step_bsimp_shifted;
 	case HB_STEPPER_DOP853: return hb_step_dop853;
 	case HB_STEPPER_VERN98: return hb_step_vern98;
-	default: return gsl_odeiv2_step_rk8pd;
+	default: return hb_step_rk8pd;
 	}
 }
 

@@ -28,6 +28,7 @@
 #include "control.h"
 #include "step_bsimp.h"
 #include "step_dop853.h"
+#include "step_rk8pd.h"
 
 enum {
 	MAXDIM = 11,           /* x, v, x_c, z1, z2, W, JFc, JFe, E_e, x_m, v_m */

@@ -86,7 +86,7 @@ restep(struct hb_sim *s, double h, double *u)
 		}
 	memcpy(u, s->u0, sizeof s->u0);
 	/* (GSL's rk8pd keeps nothing from one step to the next: its apply evaluates f at the start) */
-	if (p->loc->s->type != gsl_odeiv2_step_rk8pd)
+	if (p->loc->s->type != hb_step_rk8pd)
 		gsl_odeiv2_step_reset(p->loc->s);
 	rc = gsl_odeiv2_step_apply(p->loc->s, s->t0, h, u, yerr, NULL, NULL, &p->sys);
 	if (rc != GSL_SUCCESS)
