@@ -22,11 +22,7 @@ alloc_ode(struct hb_sim *s, int n)
 	struct clusters *c = &s->cx;
 	const struct hb_scene *sc = &s->sc;
 	const int st = s->stepper[1]; /* the scene's, or rk8pd for auto until it goes over to bsimp */
-	const gsl_odeiv2_step_type *T = st == HB_STEPPER_RKF45 ? gsl_odeiv2_step_rkf45
-	                              : st == HB_STEPPER_RKCK ? gsl_odeiv2_step_rkck
-	                              : st == HB_STEPPER_DOP853 ? hb_step_dop853
-	                              : st == HB_STEPPER_BSIMP ? hb_step_bsimp_shifted
-	                              : gsl_odeiv2_step_rk8pd;
+	const gsl_odeiv2_step_type *T = hbs_stepper_type(st);
 	int cap = c->capdim;
 
 	if (n > cap) {

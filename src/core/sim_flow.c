@@ -14,8 +14,9 @@ hbs_explicit_stepper(int stepper)
 	       stepper == HB_STEPPER_DOP853 || stepper == HB_STEPPER_VERN98;
 }
 
-static const gsl_odeiv2_step_type *
-stepper_type(int stepper)
+/* The GSL step type of a stepper (auto's is rk8pd until it goes over to bsimp): both integrators'. */
+const gsl_odeiv2_step_type *
+hbs_stepper_type(int stepper)
 {
 	switch (stepper) {
 	case HB_STEPPER_RKF45: return gsl_odeiv2_step_rkf45;
@@ -208,7 +209,7 @@ int
 hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
 {
 	const struct hb_scene *sc = &s->sc;
-	const gsl_odeiv2_step_type *T = stepper_type(s->stepper[q]);
+	const gsl_odeiv2_step_type *T = hbs_stepper_type(s->stepper[q]);
 	/* msbdf is multistep: locate with the single-step implicit bsimp */
 	const gsl_odeiv2_step_type *TL = T == gsl_odeiv2_step_msbdf ? hb_step_bsimp_shifted : T;
 

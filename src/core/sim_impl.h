@@ -335,6 +335,8 @@ hbs_branches_cut(struct hb_sim *s, size_t i);
 /* sim_flow.c */
 int
 hbs_explicit_stepper(int stepper);
+const gsl_odeiv2_step_type *
+hbs_stepper_type(int stepper);
 
 void
 hbs_unscale(const struct phase *p, const double *u, double *y);
@@ -444,7 +446,18 @@ hbs_candidate(const struct hb_sim *s, int kind, int i, double f0, double fx)
 int
 hbs_after_step(struct hb_sim *s, int load_kink);
 
-/* sim_stiff.c */
+/*
+ * sim_stiff.c: stiffness detection per interface, for both integrators:
+ * is a check due after this step (counted as a Jacobian evaluation); the largest decaying |lambda| of
+ * interface I's contact flow into *rho (-1: none computable); the verdict
+ * on h |lambda| (1: the run goes over to bsimp now); the pair's check.
+ */
+int
+hbs_stiff_begin(struct hb_sim *s);
+int
+hbs_iface_rho(struct hb_sim *s, const struct iface *I, double minv, double *rho);
+int
+hbs_stiff_verdict(struct hb_sim *s, double hr);
 int
 hbs_stiffness(struct hb_sim *s);
 
