@@ -161,26 +161,22 @@ setup_interval(struct hb_sim *s)
 static void
 set_mode(struct hb_sim *s)
 {
-	const struct hb_scene *sc = &s->sc;
 	const struct iface *I = s->I;
 	const struct phase *p = s->cur;
 	int m = 0;
 
-	if (p->q && I->law->psi_mode && sc->run.kinks) {
-		double g[HB_LAW_MAX_KINKS], z[HB_LAW_MAX_Z] = { 0 };
+	if (p->q && s->mforce && s->mforce_t == s->t) {
+		m = s->mforce;
+	} else if (p->q) {
+		/* unscaled as hbs_unscale does, only the components read */
+		double z[HB_LAW_MAX_Z] = { 0 };
 		const struct layout *L = &p->L;
 		const double *u = s->u0, *sc_ = s->scale;
 		int i;
 
-		if (s->mforce && s->mforce_t == s->t) {
-			m = s->mforce;
-		} else {
-			/* unscaled as hbs_unscale does, only the components read */
-			for (i = 0; i < I->law->n_z; i++)
-				z[i] = u[L->iz + i] * sc_[L->iz + i];
-			I->law->kinks(I->par, I->ext, u[L->ixc] * sc_[L->ixc], z, u[L->iv] * sc_[L->iv], g);
-			m = g[I->law->mode_kink] > 0 ? 1 : (g[I->law->mode_kink] < 0 ? -1 : 0);
-		}
+		for (i = 0; i < I->law->n_z; i++)
+			z[i] = u[L->iz + i] * sc_[L->iz + i];
+		m = hbs_iface_mode(s, I, u[L->ixc] * sc_[L->ixc], z, u[L->iv] * sc_[L->iv]);
 	}
 	if (m != s->msign) {
 		s->msign = m;

@@ -269,8 +269,7 @@ hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f)
 
 		for (i = 0; i < nz; i++)
 			z[i] = u[o + 2 + i] * c->scale[o + 2 + i];
-		I->tphi = I->law->phi(I->par, I->ext, u[o] * c->scale[o], nz ? z : NULL,
-		                      u[o + 1] * c->scale[o + 1]);
+		I->tphi = hbs_iface_phi(I, u[o] * c->scale[o], nz ? z : NULL, u[o + 1] * c->scale[o + 1]);
 	}
 	for (p = 0, w = 0; p < c->nact || w < c->nwatch;) {
 		if (w >= c->nwatch || (p < c->nact && c->act[p] < c->wif[w])) {
@@ -279,32 +278,23 @@ hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f)
 			int o = I->off, nz = I->law->n_z;
 			int nk = I->law->n_kinks && s->sc.run.kinks ? I->law->n_kinks : 0;
 			double z[HB_LAW_MAX_Z] = { 0 }, xc = u[o] * c->scale[o], v = u[o + 1] * c->scale[o + 1];
-			double dphi[HB_LAW_MAX_Z + 2], dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)], dz[HB_LAW_MAX_Z];
-			double vdot, d;
+			double vdot;
 
 			for (i = 0; i < nz; i++)
 				z[i] = u[o + 2 + i] * c->scale[o + 2 + i];
 			f[n++] = -fmin(I->tphi, v);
 			if (nk) {
-				I->law->kinks(I->par, I->ext, xc, z, v, &f[n]);
+				hbs_iface_kinks(I, xc, z, v, &f[n]);
 				n += nk;
 			}
 			f[n++] = v;
 			/* dPhi/dt (its minimum is F_c's maximum), with this step's mode of Psi */
-			I->law->jac(I->par, I->ext, xc, nz ? z : NULL, v, dphi, nz ? dpsi : NULL);
-			if (nz && I->msign)
-				I->law->psi_mode(I->par, I->ext, xc, z, v, I->msign, dz);
-			else if (nz)
-				I->law->psi(I->par, I->ext, xc, z, v, dz);
 			vdot = -I->tphi * (I->ilo + I->ihi) + I->arel;
 			if (k > 0 && s->ifc[k - 1].off >= 0)
 				vdot += s->ifc[k - 1].tphi * I->ilo;
 			if (k + 1 < s->nif && s->ifc[k + 1].off >= 0)
 				vdot += s->ifc[k + 1].tphi * I->ihi;
-			d = dphi[0] * v + dphi[nz + 1] * vdot;
-			for (i = 0; i < nz; i++)
-				d += dphi[1 + i] * dz[i];
-			f[n++] = d;
+			f[n++] = hbs_iface_dphidt(I, xc, z, v, vdot, I->msign);
 		} else {
 			double x, v;
 

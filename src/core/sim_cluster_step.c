@@ -410,10 +410,10 @@ jump_iface(struct hb_sim *s, int i, int how, int iters, double width, double ilo
 }
 
 /*
- * Kinks as modes, per interface (as set_mode in sim.c for the pair): the
- * sign of each law's |w| term is frozen for the step that begins at the
- * current state, from its switching function there, so that the flow is
- * smooth inside the step; a change restarts the stepper.
+ * Kinks as modes, per interface (hbs_iface_mode, as the pair's): the sign
+ * of each law's |w| term is frozen for the step that begins at the current
+ * state, so that the flow is smooth inside the step; a change restarts
+ * the stepper.
  */
 static void
 set_modes(struct hb_sim *s)
@@ -423,13 +423,8 @@ set_modes(struct hb_sim *s)
 
 	for (p = 0; p < c->nact; p++) {
 		struct iface *I = &s->ifc[c->act[p]];
-		double g[HB_LAW_MAX_KINKS];
-		int m = 0;
+		int m = hbs_iface_mode(s, I, I->xc, I->z, I->v);
 
-		if (I->law->psi_mode && s->sc.run.kinks) {
-			I->law->kinks(I->par, I->ext, I->xc, I->z, I->v, g);
-			m = g[I->law->mode_kink] > 0 ? 1 : g[I->law->mode_kink] < 0 ? -1 : 0;
-		}
 		if (m != I->msign) {
 			I->msign = m;
 			changed = 1;
@@ -508,9 +503,7 @@ retry:
 			double a = c->f0[i], b = fend[i], hb = 0.0;
 			int it = 0;
 
-			if (!hbs_crossed(c->fkind[i], a, b))
-				continue;
-			if (c->fkind[i] != FUN_EVENT && fmax(fabs(a), fabs(b)) <= sc->run.rtol * c->gmax[i])
+			if (!hbs_candidate(s, c->fkind[i], c->gmax[i], a, b))
 				continue;
 			if ((rc = locate(s, i, a, b, &hb, &it)))
 				return rc;

@@ -386,7 +386,22 @@ hbs_finish_T(struct hb_sim *s);
 int
 hbs_flight_closed(struct hb_sim *s);
 
-/* sim_watch.c: the values of the watched functions at a scaled state, their kinds */
+/*
+ * sim_watch.c, per interface (both integrators): Phi; the switching
+ * functions into g; dPhi/dt with v' = vdot and Psi in mode msign; the mode
+ * a step begins in (the sign of the law's mode switching function, 0:
+ * none).
+ */
+double
+hbs_iface_phi(const struct iface *I, double xc, const double *z, double v);
+void
+hbs_iface_kinks(const struct iface *I, double xc, const double *z, double v, double *g);
+double
+hbs_iface_dphidt(const struct iface *I, double xc, const double *z, double v, double vdot, int msign);
+int
+hbs_iface_mode(const struct hb_sim *s, const struct iface *I, double xc, const double *z, double v);
+
+/* sim_watch.c: the values of the pair's watched functions at a scaled state, their kinds */
 int
 hbs_watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
           int *kind);
@@ -429,15 +444,17 @@ hbs_crossed(int kind, double a, double b)
 /*
  * ... and is it a candidate?  A switching or extremum function that only
  * wanders about zero at the level of the tolerance (|Psi_2| while a
- * Maxwell element creeps, dPhi/dt at rest) marks no real kink or extremum.
- * (Called for every function at every step: inline, and without fmax.)
+ * Maxwell element creeps, dPhi/dt at rest) marks no real kink or extremum:
+ * gmax is the largest |value| the function has had in the interval.  Both
+ * integrators ask it.  (Called for every function at every step: inline,
+ * and without fmax.)
  */
 static inline int
-hbs_candidate(const struct hb_sim *s, int kind, int i, double f0, double fx)
+hbs_candidate(const struct hb_sim *s, int kind, double gmax, double f0, double fx)
 {
 	double a0 = fabs(f0), ax = fabs(fx);
 
-	if (kind != FUN_EVENT && (a0 > ax ? a0 : ax) <= s->sc.run.rtol * s->gmax[i])
+	if (kind != FUN_EVENT && (a0 > ax ? a0 : ax) <= s->sc.run.rtol * gmax)
 		return 0;
 	return hbs_crossed(kind, f0, fx);
 }

@@ -3,13 +3,16 @@
  * sim_watch.c - the functions watched along a step: the indicator of the
  * flow set C, the law's switching functions, the extremum functions of x_c
  * and F_c, and the rate of the indicator; when one has crossed (see
- * sim_locate.c for how crossings are located).
+ * sim_locate.c for how crossings are located).  Per interface (Phi, the
+ * switching functions, dPhi/dt, the mode of a step): the terms both
+ * integrators watch with, the pair's (watch() below) and a chain's
+ * clusters' (hbs_cluster_watch).
  */
 #include "sim_impl.h"
 #include "law_terms.h"
 
 /*
- * The law's terms that watch() needs: inline for the engine's own laws
+ * The law's terms the watched functions need: inline for the engine's own laws
  * (law_terms.h, the functions their tables call), through the table for a
  * host's law (W_HOST).
  */
@@ -29,11 +32,11 @@ wlaw_of(const struct hb_law_type *law)
 	return law == &hb_law_linear ? W_LINEAR : W_HOST;
 }
 
-/* Phi */
-static inline double
-w_phi(enum wlaw w, const struct iface *I, double xc, const double *z, double v)
+/* Phi of interface I (per interface: both integrators watch with it) */
+double
+hbs_iface_phi(const struct iface *I, double xc, const double *z, double v)
 {
-	switch (w) {
+	switch (wlaw_of(I->law)) {
 	case W_SHCCL: return law_shccl_phi(I->par, I->ext, xc, z, v);
 	case W_BWSHCCL: return law_bwshccl_phi(I->par, I->ext, xc, z, v);
 	case W_BWMCL: return law_bwmcl_phi(I->par, I->ext, xc, z, v);
@@ -43,11 +46,11 @@ w_phi(enum wlaw w, const struct iface *I, double xc, const double *z, double v)
 	}
 }
 
-/* the switching functions into g */
-static inline void
-w_kinks(enum wlaw w, const struct iface *I, double xc, const double *z, double v, double *g)
+/* its switching functions into g */
+void
+hbs_iface_kinks(const struct iface *I, double xc, const double *z, double v, double *g)
 {
-	switch (w) {
+	switch (wlaw_of(I->law)) {
 	case W_SHCCL:
 	case W_HERTZ:
 	case W_LINEAR: g[0] = xc; break; /* law_kinks_xc */
@@ -57,31 +60,60 @@ w_kinks(enum wlaw w, const struct iface *I, double xc, const double *z, double v
 	}
 }
 
-/* dPhi into dphi and Psi into dz (Psi's partials are not needed) */
-static inline void
-w_dphi_psi(enum wlaw w, const struct iface *I, double xc, const double *z, double v, double *dphi,
-           double *dz)
+/*
+ * dPhi/dt of interface I along its flow, with v' = vdot and Psi in mode
+ * msign (0: Psi's own doubles; the pair watches with 0, a chain's
+ * clusters with the step's frozen mode): the function whose minimum is
+ * F_c's maximum.  Psi's partials are not needed.
+ */
+double
+hbs_iface_dphidt(const struct iface *I, double xc, const double *z, double v, double vdot, int msign)
 {
-	double dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)];
+	double dphi[HB_LAW_MAX_Z + 2], dz[HB_LAW_MAX_Z], dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)], d;
+	int i, nz = I->law->n_z;
 
-	switch (w) {
+	switch (wlaw_of(I->law)) {
 	case W_SHCCL: law_shccl_dphi(I->par, I->ext, xc, v, dphi); break;
 	case W_BWSHCCL:
 		law_bwshccl_dphi(I->par, I->ext, xc, z, v, dphi);
-		law_bwshccl_psi_mode(I->par, I->ext, xc, z, v, 0, dz); /* sign 0: Psi's doubles */
+		law_bwshccl_psi_mode(I->par, I->ext, xc, z, v, msign, dz); /* sign 0: Psi's doubles */
 		break;
 	case W_BWMCL:
 		law_bwmcl_dphi(I->par, z, dphi);
-		law_bwmcl_psi_mode(I->par, I->ext, xc, z, v, 0, dz);
+		law_bwmcl_psi_mode(I->par, I->ext, xc, z, v, msign, dz);
 		break;
 	case W_HERTZ: law_hertz_dphi(I->par, I->ext, xc, dphi); break;
 	case W_LINEAR: law_linear_dphi(I->par, I->ext, xc, dphi); break;
 	default:
-		I->law->jac(I->par, I->ext, xc, z, v, dphi, I->law->n_z ? dpsi : NULL);
-		if (I->law->n_z)
+		I->law->jac(I->par, I->ext, xc, z, v, dphi, nz ? dpsi : NULL);
+		if (nz && msign)
+			I->law->psi_mode(I->par, I->ext, xc, z, v, msign, dz);
+		else if (nz)
 			I->law->psi(I->par, I->ext, xc, z, v, dz);
 		break;
 	}
+	d = dphi[0] * v + dphi[nz + 1] * vdot;
+	for (i = 0; i < nz; i++)
+		d += dphi[1 + i] * dz[i];
+	return d;
+}
+
+/*
+ * Kinks as modes, per interface (both integrators): the sign of the law's
+ * |w| term (law_type.psi_mode) frozen for a step is the sign of its
+ * switching function at the step's start (0: the law has no mode, or
+ * run.kinks is off).
+ */
+int
+hbs_iface_mode(const struct hb_sim *s, const struct iface *I, double xc, const double *z, double v)
+{
+	double g[HB_LAW_MAX_KINKS];
+	int k = I->law->mode_kink;
+
+	if (!I->law->psi_mode || !s->sc.run.kinks)
+		return 0;
+	I->law->kinks(I->par, I->ext, xc, z, v, g);
+	return g[k] > 0 ? 1 : (g[k] < 0 ? -1 : 0);
 }
 
 /*
@@ -102,12 +134,10 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 	const struct iface *I = s->I;
 	const struct layout *L = &p->L;
 	double y[MAXDIM], v, xc, z[HB_LAW_MAX_Z] = { 0 };
-	double dphi[HB_LAW_MAX_Z + 2], dz[HB_LAW_MAX_Z];
 	double phi = 0.0, vdot, d, Fer;
 	int i, nz = I->law->n_z;
 	int nk = I->law->n_kinks && sc->run.kinks ? I->law->n_kinks : 0;
 	int all = only < 0;
-	enum wlaw w;
 
 	for (i = 0; i < L->nread; i++) /* the components the functions read (as rhs) */
 		y[i] = u[i] * s->scale[i];
@@ -119,7 +149,6 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 			*rate = y[L->ix] > v ? v : iface_Fer(s, I, t) / I->m;
 		return 1;
 	}
-	w = wlaw_of(I->law);
 	xc = y[L->ixc];
 	for (i = 0; i < nz; i++)
 		z[i] = y[L->iz + i];
@@ -128,23 +157,20 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 	kind[nk + 1] = FUN_XCMAX;
 	kind[nk + 2] = FUN_FCMAX;
 	if (all || only == 0 || only == nk + 2)
-		phi = w_phi(w, I, xc, z, v);
+		phi = hbs_iface_phi(I, xc, z, v);
 	if (all || only == 0)
 		f[0] = -fmin(phi, v);
 	if (nk && (all || (only >= 1 && only <= nk)))
-		w_kinks(w, I, xc, z, v, &f[1]);
+		hbs_iface_kinks(I, xc, z, v, &f[1]);
 	f[nk + 1] = v;
 	if (all || only == nk + 2) {
-		w_dphi_psi(w, I, xc, z, v, dphi, dz);
 		Fer = iface_Fer(s, I, t);
 		vdot = (-phi + Fer) / I->m;
 		if (pf != NULL) {
 			pf[0] = phi;
 			pf[1] = Fer;
 		}
-		d = dphi[0] * v + dphi[nz + 1] * vdot;
-		for (i = 0; i < nz; i++)
-			d += dphi[1 + i] * dz[i];
+		d = hbs_iface_dphidt(I, xc, z, v, vdot, 0);
 		f[nk + 2] = d;
 		if (rate != NULL)
 			*rate = phi < v ? -d : -vdot;
