@@ -81,8 +81,9 @@ pow2(double x)
 /*
  * Scales of the blocks: the speed V is the largest approach or relative
  * speed of the interfaces in contact (a wave's energy passes from one to
- * the next), each interface's indentation X from its law as in
- * hbs_scales, W ~ m V^2 / 2, impulses ~ m V; powers of 2.
+ * the next), each interface's indentation X and speed from its law
+ * (hbs_contact_scale, as the pair's), W ~ m V^2 / 2, impulses ~ m V;
+ * powers of 2.
  */
 static void
 cscales(struct hb_sim *s)
@@ -101,22 +102,9 @@ cscales(struct hb_sim *s)
 	for (p = 0; p < c->nact; p++) {
 		const struct iface *I = &s->ifc[c->act[p]];
 		int o = I->off, nz = I->law->n_z;
-		double k = NAN, pe = hb_law_exponent_p(I->law, I->par), X, Vk, F = fabs(I->Fer);
+		double X, Vk;
 
-		for (i = 0; i < I->law->n_params; i++)
-			if (I->law->params[i].flags & HB_LAW_PARAM_STIFFNESS || !strcmp(I->law->params[i].name, "k")) {
-				k = I->par[i];
-				break;
-			}
-		if (!(k > 0))
-			k = 1.0;
-		if (!(pe > 0))
-			pe = 1.0;
-		X = pow((pe + 1) * I->m * V * V / (2 * k), 1 / (pe + 1));
-		X = fmax(X, pow(F / k, 1 / pe));
-		if (!(X > 1e-15))
-			X = 1e-15;
-		Vk = fmax(V, X * sqrt(k * pow(X, pe - 1) / I->m));
+		hbs_contact_scale(I, V, I->Fer, &X, &Vk);
 		c->scale[o] = X;
 		c->scale[o + 1] = Vk;
 		for (i = 0; i < nz; i++)

@@ -243,47 +243,54 @@ hbs_set_com(struct hb_sim *s)
 		s->xm = s->vm = 0.0;
 }
 
-/* The stiffness k and exponent p of the law (k of the first stiffness param). */
-static void
-law_kp(const struct iface *I, double *k, double *p)
+/*
+ * The sizes of interface I's contact (per interface: both integrators
+ * scale with them), from its law's stiffness k (of the first stiffness
+ * parameter; 1 where it has none) and exponent p, at approach speed V
+ * under the load F: indentation X = max(((p+1) m V^2 / (2k))^(1/(p+1)),
+ * (|F|/k)^(1/p)) (at least 1e-15 m), speed max(V, X sqrt(k X^(p-1)/m)).
+ */
+void
+hbs_contact_scale(const struct iface *I, double V, double F, double *X, double *Vk)
 {
+	double k = NAN, p = hb_law_exponent_p(I->law, I->par), m = I->m, x;
 	int i;
 
-	*k = NAN;
 	for (i = 0; i < I->law->n_params; i++)
 		if (I->law->params[i].flags & HB_LAW_PARAM_STIFFNESS || !strcmp(I->law->params[i].name, "k")) {
-			*k = I->par[i];
+			k = I->par[i];
 			break;
 		}
-	*p = hb_law_exponent_p(I->law, I->par);
+	if (!(k > 0))
+		k = 1.0;
+	if (!(p > 0))
+		p = 1.0;
+	x = pow((p + 1) * m * V * V / (2 * k), 1 / (p + 1));
+	x = fmax(x, pow(fabs(F) / k, 1 / p));
+	if (!(x > 1e-15))
+		x = 1e-15;
+	*X = x;
+	*Vk = fmax(V, x * sqrt(k * pow(x, p - 1) / m));
 }
 
 /*
  * Scales of the components for this interval, from the scene's own sizes
  * (DESIGN.md section 4a).  In contact with approach speed v and load F:
- * indentation X = max(((p+1) m v^2 / (2k))^(1/(p+1)), (|F|/k)^(1/p)),
- * speed V = max(|v|, X sqrt(k X^(p-1)/m)), z ~ X, W ~ m V^2 / 2, impulses
- * ~ m V.  In flight: X = max(|x|, v^2/(2|a|)), V = max(|v|, sqrt(2|a|X)).
+ * the indentation X and speed V of hbs_contact_scale, z ~ X, W ~ m V^2 / 2,
+ * impulses ~ m V.  In flight: X = max(|x|, v^2/(2|a|)), V = max(|v|, sqrt(2|a|X)).
  */
 void
 hbs_scales(struct hb_sim *s, const struct layout *L, int q)
 {
 	struct iface *I = s->I;
 	const struct hb_scene *sc = &s->sc;
-	double m = I->m, F = fabs(iface_Fer(s, I, s->t)), X, V, k, p;
+	double m = I->m, F = fabs(iface_Fer(s, I, s->t)), X, V;
 	int i;
 
 	s->w.valid = 0; /* the watched values were of the old scales */
 
 	if (q) {
-		law_kp(I, &k, &p);
-		if (!(k > 0))
-			k = 1.0;
-		X = pow((p + 1) * m * I->v * I->v / (2 * k), 1 / (p + 1));
-		X = fmax(X, pow(F / k, 1 / p));
-		if (!(X > 1e-15))
-			X = 1e-15;
-		V = fmax(fabs(I->v), X * sqrt(k * pow(X, p - 1) / m));
+		hbs_contact_scale(I, fabs(I->v), F, &X, &V);
 	} else {
 		double acc = F / m;
 

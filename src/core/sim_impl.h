@@ -356,6 +356,10 @@ hbs_set_com(struct hb_sim *s);
 void
 hbs_scales(struct hb_sim *s, const struct layout *L, int q);
 
+/* ... and interface I's contact sizes at approach speed V under load F (both integrators) */
+void
+hbs_contact_scale(const struct iface *I, double V, double F, double *X, double *Vk);
+
 void
 hbs_pack(struct hb_sim *s, const struct layout *L, double *u);
 
