@@ -55,6 +55,7 @@
  * pre-jump ones bit for bit; a failed step leaves the arc as it was.
  */
 #include "sim_impl.h"
+#include "sim_iface.h"
 #include "clock.h"
 #include "cnum.h"
 
@@ -191,8 +192,7 @@ numeric_step(struct hb_sim *s)
 	struct phase *p = s->cur;
 	const struct hb_scene *sc = &s->sc;
 	double t = s->t, t1 = sc->run.T, kinks[4];
-	int nk, load_kink = 0, rc, tries = 0;
-	unsigned long failed0;
+	int nk, load_kink = 0, rc;
 
 	/* a state already outside C where the interval begins jumps at once (rule R2) */
 	{
@@ -214,33 +214,9 @@ numeric_step(struct hb_sim *s)
 	s->t0 = t;
 	s->hug = hbs_hugging(s, s->u0);
 	set_mode(s);
-retry:
-	failed0 = p->d->e->failed_steps;
-	rc = gsl_odeiv2_evolve_apply(p->d->e, p->d->c, p->d->s, &p->sys, &t, t1, &s->h, s->u);
-	s->st.rejected += (long)(p->d->e->failed_steps - failed0);
-	if (rc != GSL_SUCCESS) {
-		memcpy(s->u, s->u0, sizeof s->u);
-		return hbs_fail(s, HB_ENUMERIC, rc == GSL_EBADFUNC ? "the flow function failed"
-		                                              : "no acceptable step could be made (step size underflow)");
-	}
-	{
-		int i, ok = 1;
-
-		for (i = 0; i < p->L.dim; i++)
-			ok &= isfinite(s->u[i]);
-		if (!ok) {
-			/* a non-finite accepted state: never let a NaN error norm pass as small */
-			memcpy(s->u, s->u0, sizeof s->u);
-			t = s->t0;
-			s->h *= 0.25;
-			gsl_odeiv2_driver_reset(p->d);
-			if (++tries < MAX_RETRY && s->t0 + s->h > s->t0)
-				goto retry;
-			return hbs_fail(s, HB_ENUMERIC, "the state became non-finite");
-		}
-	}
-	s->st.steps++;
-	s->H = t - s->t0;
+	if ((rc = hbs_evolve(s, p->d->e, p->d->c, p->d->s, &p->sys, s->t0, s->u0, t1, &t, &s->h, s->u,
+	                     &s->H)))
+		return rc;
 	if (s->first && t < t1) /* the step this interval's start took, in units of Tc */
 		s->h1[p->q] = s->H / s->Tc;
 	s->first = 0;
@@ -249,12 +225,6 @@ retry:
 
 		/* on Phi = 0 to the noise, the interpolant's error would exceed the noise: re-step */
 		s->use_dense = !s->hug && hb_dop853_last(p->d->s, &dt0, &dh) == 0 && dt0 == s->t0;
-	}
-	if (s->H <= fmax(4.0 * DBL_EPSILON * fabs(t), 1e-13 * s->Tc)) {
-		if (++s->ntiny > MAX_TINY)
-			return hbs_fail(s, HB_ENUMERIC, "step size underflow: the error cannot be controlled");
-	} else {
-		s->ntiny = 0;
 	}
 	memcpy(s->u1, s->u, sizeof s->u);
 	if ((rc = hbs_after_step(s, load_kink && t == t1)))

@@ -41,6 +41,7 @@
  * the gaps of flying bodies once (their closing times).
  */
 #include "sim_impl.h"
+#include "sim_iface.h"
 #include "cnum.h"
 
 #define GROW(p, cap, n)                                                                 \

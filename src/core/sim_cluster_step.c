@@ -7,6 +7,7 @@
  * (see sim_cluster.c for the method).
  */
 #include "sim_impl.h"
+#include "sim_iface.h"
 
 /* Whether a chain's clusters can run with the scene's stepper (explicit, bsimp, or auto). */
 int
@@ -431,8 +432,7 @@ hbs_cluster_step(struct hb_sim *s)
 	struct clusters *c = &s->cx;
 	const struct hb_scene *sc = &s->sc;
 	double t = s->t, t1 = sc->run.T, hbest = INFINITY;
-	int i, rc, best = -1, tries = 0, iters = 0;
-	unsigned long failed0;
+	int i, rc, best = -1, iters = 0;
 
 	/* an interface already outside its flow set where the interval begins jumps at once, lowest k first */
 	for (i = 0; i < c->nf; i++)
@@ -456,32 +456,8 @@ hbs_cluster_step(struct hb_sim *s)
 	set_modes(s);
 	memcpy(c->u0, c->u, (size_t)c->dim * sizeof(double));
 	c->t0 = t;
-retry:
-	failed0 = c->ev->failed_steps;
-	rc = gsl_odeiv2_evolve_apply(c->ev, c->ctl, c->step, &c->sys, &t, t1, &c->h, c->u);
-	s->st.rejected += (long)(c->ev->failed_steps - failed0);
-	if (rc != GSL_SUCCESS) {
-		memcpy(c->u, c->u0, (size_t)c->dim * sizeof(double));
-		return hbs_fail(s, HB_ENUMERIC, "no acceptable step could be made in a cluster of contacts");
-	}
-	for (i = 0; i < c->dim; i++)
-		if (!isfinite(c->u[i])) {
-			memcpy(c->u, c->u0, (size_t)c->dim * sizeof(double));
-			t = c->t0;
-			c->h *= 0.25;
-			gsl_odeiv2_evolve_reset(c->ev);
-			if (++tries < MAX_RETRY && c->t0 + c->h > c->t0)
-				goto retry;
-			return hbs_fail(s, HB_ENUMERIC, "the state became non-finite");
-		}
-	s->st.steps++;
-	c->H = t - c->t0;
-	if (c->H <= fmax(4.0 * DBL_EPSILON * fabs(t), 1e-13 * s->Tc)) {
-		if (++s->ntiny > MAX_TINY)
-			return hbs_fail(s, HB_ENUMERIC, "step size underflow: the error cannot be controlled");
-	} else {
-		s->ntiny = 0;
-	}
+	if ((rc = hbs_evolve(s, c->ev, c->ctl, c->step, &c->sys, c->t0, c->u0, t1, &t, &c->h, c->u, &c->H)))
+		return rc;
 	/* the watched functions at the step's end against its start: the earliest crossing */
 	{
 		double *fend = c->fe;

@@ -101,7 +101,7 @@ hbs_cluster_stiffness(struct hb_sim *s)
 	for (p = 0; p < c->nact; p++) {
 		const struct iface *I = &s->ifc[c->act[p]];
 
-		if ((rc = hbs_iface_rho(s, I, I->ilo + I->ihi, &rho)) != 0)
+		if ((rc = hbs_iface_rho(s, I, I->ilo + I->ihi, &c->scale[I->off], &rho)) != 0)
 			return rc < 0 ? 0 : rc;
 	}
 	if (hbs_stiff_verdict(s, c->H * rho))

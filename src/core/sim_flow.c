@@ -30,6 +30,55 @@ hbs_stepper_type(int stepper)
 	}
 }
 
+/*
+ * One accepted step of GSL's evolver from (t0, u0) towards t1, for both
+ * integrators: the state into (*t, u), the step's length into *H, the
+ * rejections counted.  A step whose accepted state is not finite is
+ * taken again, a quarter as long, with the stepper's memory cleared
+ * (never let a NaN error norm pass as small); a run of steps at the
+ * resolution of t fails.  0, or hbs_fail's status with u = u0.
+ */
+int
+hbs_evolve(struct hb_sim *s, gsl_odeiv2_evolve *e, gsl_odeiv2_control *c, gsl_odeiv2_step *st,
+           const gsl_odeiv2_system *sys, double t0, const double *u0, double t1, double *t, double *h,
+           double *u, double *H)
+{
+	size_t n = sys->dimension, i;
+	int rc, tries = 0, ok;
+
+	for (;;) {
+		unsigned long failed0 = e->failed_steps;
+
+		rc = gsl_odeiv2_evolve_apply(e, c, st, sys, t, t1, h, u);
+		s->st.rejected += (long)(e->failed_steps - failed0);
+		if (rc != GSL_SUCCESS) {
+			memcpy(u, u0, n * sizeof *u);
+			return hbs_fail(s, HB_ENUMERIC, rc == GSL_EBADFUNC ? "the flow function failed"
+			                : "no acceptable step could be made (step size underflow)");
+		}
+		for (ok = 1, i = 0; i < n; i++)
+			ok &= isfinite(u[i]);
+		if (ok)
+			break;
+		memcpy(u, u0, n * sizeof *u);
+		*t = t0;
+		*h *= 0.25;
+		gsl_odeiv2_evolve_reset(e);
+		gsl_odeiv2_step_reset(st);
+		if (!(++tries < MAX_RETRY && t0 + *h > t0))
+			return hbs_fail(s, HB_ENUMERIC, "the state became non-finite");
+	}
+	s->st.steps++;
+	*H = *t - t0;
+	if (*H <= fmax(4.0 * DBL_EPSILON * fabs(*t), 1e-13 * s->Tc)) {
+		if (++s->ntiny > MAX_TINY)
+			return hbs_fail(s, HB_ENUMERIC, "step size underflow: the error cannot be controlled");
+	} else {
+		s->ntiny = 0;
+	}
+	return 0;
+}
+
 void
 hbs_unscale(const struct phase *p, const double *u, double *y)
 {

@@ -337,6 +337,10 @@ int
 hbs_explicit_stepper(int stepper);
 const gsl_odeiv2_step_type *
 hbs_stepper_type(int stepper);
+int
+hbs_evolve(struct hb_sim *s, gsl_odeiv2_evolve *e, gsl_odeiv2_control *c, gsl_odeiv2_step *st,
+           const gsl_odeiv2_system *sys, double t0, const double *u0, double t1, double *t, double *h,
+           double *u, double *H);
 
 void
 hbs_unscale(const struct phase *p, const double *u, double *y);
@@ -390,20 +394,7 @@ hbs_finish_T(struct hb_sim *s);
 int
 hbs_flight_closed(struct hb_sim *s);
 
-/*
- * sim_watch.c, per interface (both integrators): Phi; the switching
- * functions into g; dPhi/dt with v' = vdot and Psi in mode msign; the mode
- * a step begins in (the sign of the law's mode switching function, 0:
- * none).
- */
-double
-hbs_iface_phi(const struct iface *I, double xc, const double *z, double v);
-void
-hbs_iface_kinks(const struct iface *I, double xc, const double *z, double v, double *g);
-double
-hbs_iface_dphidt(const struct iface *I, double xc, const double *z, double v, double vdot, int msign);
-int
-hbs_iface_mode(const struct hb_sim *s, const struct iface *I, double xc, const double *z, double v);
+/* sim_iface.h: one interface's watched terms (Phi, kinks, dPhi/dt, its mode), for both integrators */
 
 /* sim_watch.c: the values of the pair's watched functions at a scaled state, their kinds */
 int
@@ -469,14 +460,15 @@ hbs_after_step(struct hb_sim *s, int load_kink);
 
 /*
  * sim_stiff.c: stiffness detection per interface, for both integrators:
- * is a check due after this step (counted as a Jacobian evaluation); the largest decaying |lambda| of
- * interface I's contact flow into *rho (-1: none computable); the verdict
- * on h |lambda| (1: the run goes over to bsimp now); the pair's check.
+ * is a check due after this step (counted as a Jacobian evaluation); the
+ * largest decaying |lambda| of interface I's contact flow (sc: the scales
+ * of its x_c, v, z...) into *rho (-1: none computable); the verdict on
+ * h |lambda| (1: the run goes over to bsimp now); the pair's check.
  */
 int
 hbs_stiff_begin(struct hb_sim *s);
 int
-hbs_iface_rho(struct hb_sim *s, const struct iface *I, double minv, double *rho);
+hbs_iface_rho(struct hb_sim *s, const struct iface *I, double minv, const double *sc, double *rho);
 int
 hbs_stiff_verdict(struct hb_sim *s, double hr);
 int
