@@ -43,6 +43,13 @@
  * stepper in contact checks the stiffness of the flow (stiffness()):
  * run.stepper = auto then goes over to bsimp for the contacts.
  *
+ * What is per interface is written once for this driver and a chain's
+ * clusters' (sim_cluster_step.c; docs/chains.md section 8a): the watched
+ * terms and the mode of a step (sim_iface.h), the noise filter of a
+ * crossing (hbs_candidate), a contact's scales (hbs_contact_scale), the
+ * stepper and one accepted step of the evolver (sim_flow.c), and the
+ * stiffness check (sim_stiff.c).
+ *
  * The state is that of a chain (docs/chains.md, sim_chain.c): bodies and
  * the interfaces between them, each interface with its own law, effective
  * mass and state (q_c, x, v, x_c, z, W, J_Fc, J_Fe, extrema, commencement
@@ -293,8 +300,8 @@ build(struct hb_sim *s, char *msg, size_t n)
 		                                      "interface it does not have");
 	if (s->chain && !hbs_chain_stepper_ok(s->sc.run.stepper))
 		return hb_status_set(msg, n, HB_EINVAL, "run.stepper: a chain's contacts run with rk8pd, "
-		                     "dop853, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once stiff); "
-		                     "accepted: those");
+		                     "dop853, vern98, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once "
+		                     "stiff); accepted: those");
 	for (q = 0; q < 2; q++)
 		s->stepper[q] = s->sc.run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : s->sc.run.stepper;
 	for (q = 0; q < 2; q++)

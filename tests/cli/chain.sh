@@ -101,13 +101,24 @@ for a in "chain.n=20" "chain.n=6 --set chain.floor=yes"; do
 	fi
 done
 
-# a chain's contacts run with rk8pd, dop853, rkf45, rkck, bsimp or auto: msbdf is refused by name
+# a chain's contacts run with rk8pd, dop853, vern98, rkf45, rkck, bsimp or auto: msbdf is refused by name
 "$BIN" --batch "$T/cradle.preset" --set run.stepper=msbdf --set run.limits=no >"$T/out" 2>&1
 rc=$?
-if [ $rc -eq 2 ] && grep -q "run.stepper: a chain's contacts run with rk8pd, dop853, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once stiff); accepted: those" "$T/out"; then
+if [ $rc -eq 2 ] && grep -q "run.stepper: a chain's contacts run with rk8pd, dop853, vern98, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once stiff); accepted: those" "$T/out"; then
 	ok "a chain with msbdf refused, exit 2"
 else
 	notok "a chain with msbdf refused, exit 2 (got $rc)" "$T/out"
+fi
+
+# vern98 runs vern98 in a chain's contacts, as for two bodies (the stepper is chosen in one
+# place for both integrators): its steps are not rk8pd's
+"$BIN" --batch "$T/cradle.preset" --set run.stepper=vern98 -q >"$T/v98" 2>&1
+"$BIN" --batch "$T/cradle.preset" --set run.stepper=rk8pd -q >"$T/rk8" 2>&1
+if grep -q '^  steps  ' "$T/v98" && grep -q '^  steps  ' "$T/rk8" &&
+    [ "$(grep '^  steps  ' "$T/v98")" != "$(grep '^  steps  ' "$T/rk8")" ]; then
+	ok "a chain with vern98 runs vern98, not rk8pd"
+else
+	notok "a chain with vern98 runs vern98, not rk8pd" "$T/v98"
 fi
 
 # the collision table and CSV of a chain name each collision's interface (k after i)
