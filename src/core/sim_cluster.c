@@ -42,7 +42,6 @@
  */
 #include "sim_impl.h"
 #include "sim_iface.h"
-#include "cnum.h"
 
 #define GROW(p, cap, n)                                                                 \
 	((n) <= (cap) ? 0 : grow_to((void **)&(p), &(cap), (n), sizeof *(p)))
@@ -453,88 +452,4 @@ hbs_cluster_jumped(struct hb_sim *s)
 	if (s->I->q)
 		s->I->xe = s->I->x; /* its gap at the commencement */
 	return 0;
-}
-
-
-/*
- * A limit passed at s->t (why in words): under run.chain_limits = stop the
- * run ends there (HB_EINVAL, keeping what was computed); under warn the
- * first is noted and each is counted.
- */
-static int
-limit_passed(struct hb_sim *s, struct iface *I, int bit, const char *why)
-{
-	if (I->over & bit)
-		return 0;
-	I->over |= bit;
-	if (s->sc.run.chain_limits != HB_CHAIN_LIMITS_WARN)
-		return hbs_fail_iface(s, I, HB_EINVAL, why);
-	if (s->nlim++ == 0)
-		snprintf(s->limnote, sizeof s->limnote, "%s", why);
-	return 0;
-}
-
-/*
- * The model's limits (docs/chains.md section 6) at the current state:
- * each interface in contact within run.max_indent of the smaller radius of
- * its bodies (its indentation |x_c| or its overlap -x, the larger), and
- * no two bodies that are not neighbours overlapping (possible only across
- * two interfaces in contact one above the other).  Linear in the
- * interfaces in contact.
- */
-int
-hbs_cluster_limits(struct hb_sim *s)
-{
-	const struct clusters *c = &s->cx;
-	const double f = s->sc.run.max_indent;
-	char why[360];
-	int p, rc;
-
-	for (p = 0; p < c->nact; p++) {
-		int k = c->act[p];
-		struct iface *I = &s->ifc[k];
-		double Rhi = s->body[I->hi].l, R = I->lo < 0 ? Rhi : fmin(Rhi, s->body[I->lo].l);
-		double d = fmax(fabs(I->xc), -I->x);
-
-		if (R > 0 && d > f * R) {
-			char who[64];
-
-			if (I->lo < 0)
-				snprintf(who, sizeof who, "the floor and body %d", I->hi + 1);
-			else
-				snprintf(who, sizeof who, "bodies %d and %d", I->lo + 1, I->hi + 1);
-			cnum_snprintf(why, sizeof why, "interface %d (%s) is indented by %.6g m at "
-			              "t = %.12g s, %.3g of %s %.6g m, past run.max_indent = %g: the "
-			              "model assumes small indentations", s->k0 + k, who, d, s->t, d / R,
-			              I->lo < 0 ? "the body's radius" : "the smaller radius", R, f);
-			if ((rc = limit_passed(s, I, 1, why)))
-				return rc;
-		}
-		if (p + 1 < c->nact && c->act[p + 1] == k + 1) {
-			const struct iface *J = &s->ifc[k + 1];
-			double gap = I->x + J->x + 2.0 * s->body[I->hi].l;
-
-			if (gap < 0) {
-				if (I->lo < 0)
-					cnum_snprintf(why, sizeof why, "the floor and body %d, not neighbours, "
-					              "overlap by %.6g m at t = %.12g s: the model lets only "
-					              "neighbours touch", J->hi + 1, -gap, s->t);
-				else
-					cnum_snprintf(why, sizeof why, "bodies %d and %d, not neighbours, overlap "
-					              "by %.6g m at t = %.12g s: the model lets only neighbours "
-					              "touch", I->lo + 1, J->hi + 1, -gap, s->t);
-				if ((rc = limit_passed(s, I, 2, why)))
-					return rc;
-			}
-		}
-	}
-	return 0;
-}
-
-const char *
-hb_sim_limits(const struct hb_sim *s, long *count)
-{
-	if (count != NULL)
-		*count = s->nlim;
-	return s->limnote;
 }

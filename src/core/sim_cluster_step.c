@@ -293,8 +293,8 @@ hbs_cluster_setup(struct hb_sim *s)
 }
 
 /* The state one step of length h from (t0, u0): into c->u1. */
-static int
-restep(struct hb_sim *s, double h)
+int
+hbs_cluster_restep(struct hb_sim *s, double h)
 {
 	struct clusters *c = &s->cx;
 
@@ -303,20 +303,31 @@ restep(struct hb_sim *s, double h)
 	return gsl_odeiv2_step_apply(c->loc, c->t0, h, c->u1, c->yerr, NULL, NULL, &c->sys);
 }
 
+/* A watched function's value at (t, u): the root finder's function for events, kinks and extrema. */
+static double
+watched(struct hb_sim *s, double t, const double *u, const void *arg)
+{
+	int fi = *(const int *)arg;
+
+	hbs_cluster_watch(s, t, u, s->cx.f1); /* scratch: the values at the trial */
+	return s->cx.f1[fi];
+}
+
 /*
- * Function fi crosses in (0, H]: the bracket [a, b] about its crossing,
- * narrowed by the Illinois method on re-steps down to a few ulps of t; *hb
- * is b (the far end, past the crossing).  Its value at a (>= 0 for an
- * event) is fa.
+ * A function val (of this kind, see hbs_crossed) crosses in (0, hend] of
+ * the step from (t0, u0): the bracket [a, b] about its crossing, narrowed
+ * by the Illinois method on re-steps down to a few ulps of t; *hb is b
+ * (the far end, past the crossing).  Its value at a (>= 0 for an event) is
+ * fa.  The clusters' events, kinks and extrema are located with it, and
+ * the model's limits (sim_limits.c).
  */
-static int
-locate(struct hb_sim *s, int fi, double fa, double fb, double *hb, int *iters)
+int
+hbs_cluster_root(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
+                 double *hb, int *iters)
 {
 	struct clusters *c = &s->cx;
-	double a = 0.0, b = c->H, tol = fmax(4.0 * DBL_EPSILON * fabs(c->t0 + c->H), 1e-14 * c->H);
-	int side = 0, it = 0, kind = c->fkind[fi];
-	double *f = c->f1; /* scratch: the values at the trial */
-
+	double a = 0.0, b = hend, tol = fmax(4.0 * DBL_EPSILON * fabs(c->t0 + hend), 1e-14 * hend), fb;
+	int side = 0, it = 0;
 	int slow = 0, flat = 0;
 
 	/*
@@ -327,10 +338,9 @@ locate(struct hb_sim *s, int fi, double fa, double fb, double *hb, int *iters)
 	 * event whose function is negative at the step's end is taken when
 	 * the next step begins.
 	 */
-	if (restep(s, b) != GSL_SUCCESS)
+	if (hbs_cluster_restep(s, b) != GSL_SUCCESS)
 		return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
-	hbs_cluster_watch(s, c->t0 + b, c->u1, f);
-	fb = f[fi];
+	fb = val(s, c->t0 + b, c->u1, arg);
 	if (!hbs_crossed(kind, fa, fb)) {
 		*hb = INFINITY;
 		*iters = 1;
@@ -362,10 +372,9 @@ locate(struct hb_sim *s, int fi, double fa, double fb, double *hb, int *iters)
 			m = b - tol;
 		if (!(m > a && m < b))
 			m = 0.5 * (a + b);
-		if (restep(s, m) != GSL_SUCCESS)
+		if (hbs_cluster_restep(s, m) != GSL_SUCCESS)
 			return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
-		hbs_cluster_watch(s, c->t0 + m, c->u1, f);
-		fm = f[fi];
+		fm = val(s, c->t0 + m, c->u1, arg);
 		it++;
 		flat = fm == fa || fm == fb;
 		/* is the crossing in (a, m]? */
@@ -469,7 +478,7 @@ hbs_cluster_step(struct hb_sim *s)
 
 			if (!hbs_candidate(s, c->fkind[i], c->gmax[i], a, b))
 				continue;
-			if ((rc = locate(s, i, a, b, &hb, &it)))
+			if ((rc = hbs_cluster_root(s, c->fkind[i], watched, &i, c->H, a, &hb, &it)))
 				return rc;
 			iters += it;
 			/* a kink or extremum at the step's start to the resolution of t: no progress to make */
@@ -481,7 +490,7 @@ hbs_cluster_step(struct hb_sim *s)
 			}
 		}
 		if (best >= 0) {
-			if (restep(s, hbest) != GSL_SUCCESS)
+			if (hbs_cluster_restep(s, hbest) != GSL_SUCCESS)
 				return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
 			memcpy(c->u, c->u1, (size_t)c->dim * sizeof(double));
 			t = c->t0 + hbest;

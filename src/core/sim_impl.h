@@ -312,8 +312,20 @@ int
 hbs_cluster_stiffness(struct hb_sim *s);
 int
 hbs_cluster_step(struct hb_sim *s);
+/*
+ * ... the state one step of length h from the step's start (t0, u0), into
+ * cx.u1; a function's crossing in (0, hend] of the step located on such
+ * re-steps (see sim_cluster_step.c)
+ */
+int
+hbs_cluster_restep(struct hb_sim *s, double h);
+typedef double hbs_val_fn(struct hb_sim *s, double t, const double *u, const void *arg);
+int
+hbs_cluster_root(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
+                 double *hb, int *iters);
 void
 hbs_cluster_sync(struct hb_sim *s);
+/* sim_limits.c: the model's limits at the end of the step just accepted, each passed located */
 int
 hbs_cluster_limits(struct hb_sim *s);
 void
