@@ -83,21 +83,20 @@ limit_passed(struct hb_sim *s, const struct limit *L)
 {
 	struct clusters *c = &s->cx;
 	struct iface *I = &s->ifc[L->k];
-	const struct iface *J = L->bit == 2 ? &s->ifc[L->k + 1] : NULL;
+	int top = L->bit == 2 ? s->ifc[L->k + 1].hi : I->hi; /* the upper body named */
 	double tl = c->t0 + L->h, t1 = s->t;
-	char why[400];
+	char why[400], who[64];
 
 	I->over |= L->bit;
 	if (hbs_cluster_restep(s, L->h) != GSL_SUCCESS)
 		return hbs_fail(s, HB_ENUMERIC, "a re-step to locate a limit failed");
+	if (I->lo < 0)
+		snprintf(who, sizeof who, "the floor and body %d", top + 1);
+	else
+		snprintf(who, sizeof who, "bodies %d and %d", I->lo + 1, top + 1);
 	if (L->bit == 1) {
-		char who[64];
 		double d = depth(s, L->k, c->u1); /* the indentation at the located instant */
 
-		if (I->lo < 0)
-			snprintf(who, sizeof who, "the floor and body %d", I->hi + 1);
-		else
-			snprintf(who, sizeof who, "bodies %d and %d", I->lo + 1, I->hi + 1);
 		cnum_snprintf(why, sizeof why, "interface %d (%s) is indented by %.6g m at t = %.12g s, "
 		              "%.3g of %s %.6g m, past run.max_indent = %g (located; %.6g m at the "
 		              "step's end, t = %.12g s): the model assumes small indentations",
@@ -105,12 +104,6 @@ limit_passed(struct hb_sim *s, const struct limit *L)
 		              I->lo < 0 ? "the body's radius" : "the smaller radius", L->R,
 		              s->sc.run.max_indent, depth(s, L->k, c->u), t1);
 	} else {
-		char who[64];
-
-		if (I->lo < 0)
-			snprintf(who, sizeof who, "the floor and body %d", J->hi + 1);
-		else
-			snprintf(who, sizeof who, "bodies %d and %d", I->lo + 1, J->hi + 1);
 		cnum_snprintf(why, sizeof why, "%s, not neighbours, begin to overlap at t = %.12g s "
 		              "(located; by %.6g m at the step's end, t = %.12g s): the model lets only "
 		              "neighbours touch", who, tl, -gap_across(s, L->k, c->u), t1);
