@@ -43,6 +43,13 @@
  * stepper in contact checks the stiffness of the flow (stiffness()):
  * run.stepper = auto then goes over to bsimp for the contacts.
  *
+ * What is per interface is written once for this driver and a chain's
+ * clusters' (sim_cluster_step.c; docs/chains.md section 8a): the watched
+ * terms and the mode of a step (sim_iface.h), the noise filter of a
+ * crossing (hbs_candidate), a contact's scales (hbs_contact_scale), the
+ * stepper and one accepted step of the evolver (sim_flow.c), and the
+ * stiffness check (sim_stiff.c).
+ *
  * The state is that of a chain (docs/chains.md, sim_chain.c): bodies and
  * the interfaces between them, each interface with its own law, effective
  * mass and state (q_c, x, v, x_c, z, W, J_Fc, J_Fe, extrema, commencement
@@ -55,6 +62,7 @@
  * pre-jump ones bit for bit; a failed step leaves the arc as it was.
  */
 #include "sim_impl.h"
+#include "sim_iface.h"
 #include "clock.h"
 #include "cnum.h"
 
@@ -161,26 +169,22 @@ setup_interval(struct hb_sim *s)
 static void
 set_mode(struct hb_sim *s)
 {
-	const struct hb_scene *sc = &s->sc;
 	const struct iface *I = s->I;
 	const struct phase *p = s->cur;
 	int m = 0;
 
-	if (p->q && I->law->psi_mode && sc->run.kinks) {
-		double g[HB_LAW_MAX_KINKS], z[HB_LAW_MAX_Z] = { 0 };
+	if (p->q && s->mforce && s->mforce_t == s->t) {
+		m = s->mforce;
+	} else if (p->q) {
+		/* unscaled as hbs_unscale does, only the components read */
+		double z[HB_LAW_MAX_Z] = { 0 };
 		const struct layout *L = &p->L;
 		const double *u = s->u0, *sc_ = s->scale;
 		int i;
 
-		if (s->mforce && s->mforce_t == s->t) {
-			m = s->mforce;
-		} else {
-			/* unscaled as hbs_unscale does, only the components read */
-			for (i = 0; i < I->law->n_z; i++)
-				z[i] = u[L->iz + i] * sc_[L->iz + i];
-			I->law->kinks(I->par, I->ext, u[L->ixc] * sc_[L->ixc], z, u[L->iv] * sc_[L->iv], g);
-			m = g[I->law->mode_kink] > 0 ? 1 : (g[I->law->mode_kink] < 0 ? -1 : 0);
-		}
+		for (i = 0; i < I->law->n_z; i++)
+			z[i] = u[L->iz + i] * sc_[L->iz + i];
+		m = hbs_iface_mode(s, I, u[L->ixc] * sc_[L->ixc], z, u[L->iv] * sc_[L->iv]);
 	}
 	if (m != s->msign) {
 		s->msign = m;
@@ -195,8 +199,7 @@ numeric_step(struct hb_sim *s)
 	struct phase *p = s->cur;
 	const struct hb_scene *sc = &s->sc;
 	double t = s->t, t1 = sc->run.T, kinks[4];
-	int nk, load_kink = 0, rc, tries = 0;
-	unsigned long failed0;
+	int nk, load_kink = 0, rc;
 
 	/* a state already outside C where the interval begins jumps at once (rule R2) */
 	{
@@ -218,33 +221,9 @@ numeric_step(struct hb_sim *s)
 	s->t0 = t;
 	s->hug = hbs_hugging(s, s->u0);
 	set_mode(s);
-retry:
-	failed0 = p->d->e->failed_steps;
-	rc = gsl_odeiv2_evolve_apply(p->d->e, p->d->c, p->d->s, &p->sys, &t, t1, &s->h, s->u);
-	s->st.rejected += (long)(p->d->e->failed_steps - failed0);
-	if (rc != GSL_SUCCESS) {
-		memcpy(s->u, s->u0, sizeof s->u);
-		return hbs_fail(s, HB_ENUMERIC, rc == GSL_EBADFUNC ? "the flow function failed"
-		                                              : "no acceptable step could be made (step size underflow)");
-	}
-	{
-		int i, ok = 1;
-
-		for (i = 0; i < p->L.dim; i++)
-			ok &= isfinite(s->u[i]);
-		if (!ok) {
-			/* a non-finite accepted state: never let a NaN error norm pass as small */
-			memcpy(s->u, s->u0, sizeof s->u);
-			t = s->t0;
-			s->h *= 0.25;
-			gsl_odeiv2_driver_reset(p->d);
-			if (++tries < MAX_RETRY && s->t0 + s->h > s->t0)
-				goto retry;
-			return hbs_fail(s, HB_ENUMERIC, "the state became non-finite");
-		}
-	}
-	s->st.steps++;
-	s->H = t - s->t0;
+	if ((rc = hbs_evolve(s, p->d->e, p->d->c, p->d->s, &p->sys, s->t0, s->u0, t1, &t, &s->h, s->u,
+	                     &s->H)))
+		return rc;
 	if (s->first && t < t1) /* the step this interval's start took, in units of Tc */
 		s->h1[p->q] = s->H / s->Tc;
 	s->first = 0;
@@ -253,12 +232,6 @@ retry:
 
 		/* on Phi = 0 to the noise, the interpolant's error would exceed the noise: re-step */
 		s->use_dense = !s->hug && hb_dop853_last(p->d->s, &dt0, &dh) == 0 && dt0 == s->t0;
-	}
-	if (s->H <= fmax(4.0 * DBL_EPSILON * fabs(t), 1e-13 * s->Tc)) {
-		if (++s->ntiny > MAX_TINY)
-			return hbs_fail(s, HB_ENUMERIC, "step size underflow: the error cannot be controlled");
-	} else {
-		s->ntiny = 0;
 	}
 	memcpy(s->u1, s->u, sizeof s->u);
 	if ((rc = hbs_after_step(s, load_kink && t == t1)))
@@ -328,8 +301,8 @@ build(struct hb_sim *s, char *msg, size_t n)
 		                                      "interface it does not have");
 	if (s->chain && !hbs_chain_stepper_ok(s->sc.run.stepper))
 		return hb_status_set(msg, n, HB_EINVAL, "run.stepper: a chain's contacts run with rk8pd, "
-		                     "dop853, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once stiff); "
-		                     "accepted: those");
+		                     "dop853, vern98, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once "
+		                     "stiff); accepted: those");
 	for (q = 0; q < 2; q++)
 		s->stepper[q] = s->sc.run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : s->sc.run.stepper;
 	for (q = 0; q < 2; q++)

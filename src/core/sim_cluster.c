@@ -41,7 +41,7 @@
  * the gaps of flying bodies once (their closing times).
  */
 #include "sim_impl.h"
-#include "cnum.h"
+#include "sim_iface.h"
 
 #define GROW(p, cap, n)                                                                 \
 	((n) <= (cap) ? 0 : grow_to((void **)&(p), &(cap), (n), sizeof *(p)))
@@ -269,8 +269,7 @@ hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f)
 
 		for (i = 0; i < nz; i++)
 			z[i] = u[o + 2 + i] * c->scale[o + 2 + i];
-		I->tphi = I->law->phi(I->par, I->ext, u[o] * c->scale[o], nz ? z : NULL,
-		                      u[o + 1] * c->scale[o + 1]);
+		I->tphi = hbs_iface_phi(I, u[o] * c->scale[o], nz ? z : NULL, u[o + 1] * c->scale[o + 1]);
 	}
 	for (p = 0, w = 0; p < c->nact || w < c->nwatch;) {
 		if (w >= c->nwatch || (p < c->nact && c->act[p] < c->wif[w])) {
@@ -279,32 +278,23 @@ hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f)
 			int o = I->off, nz = I->law->n_z;
 			int nk = I->law->n_kinks && s->sc.run.kinks ? I->law->n_kinks : 0;
 			double z[HB_LAW_MAX_Z] = { 0 }, xc = u[o] * c->scale[o], v = u[o + 1] * c->scale[o + 1];
-			double dphi[HB_LAW_MAX_Z + 2], dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)], dz[HB_LAW_MAX_Z];
-			double vdot, d;
+			double vdot;
 
 			for (i = 0; i < nz; i++)
 				z[i] = u[o + 2 + i] * c->scale[o + 2 + i];
 			f[n++] = -fmin(I->tphi, v);
 			if (nk) {
-				I->law->kinks(I->par, I->ext, xc, z, v, &f[n]);
+				hbs_iface_kinks(I, xc, z, v, &f[n]);
 				n += nk;
 			}
 			f[n++] = v;
 			/* dPhi/dt (its minimum is F_c's maximum), with this step's mode of Psi */
-			I->law->jac(I->par, I->ext, xc, nz ? z : NULL, v, dphi, nz ? dpsi : NULL);
-			if (nz && I->msign)
-				I->law->psi_mode(I->par, I->ext, xc, z, v, I->msign, dz);
-			else if (nz)
-				I->law->psi(I->par, I->ext, xc, z, v, dz);
 			vdot = -I->tphi * (I->ilo + I->ihi) + I->arel;
 			if (k > 0 && s->ifc[k - 1].off >= 0)
 				vdot += s->ifc[k - 1].tphi * I->ilo;
 			if (k + 1 < s->nif && s->ifc[k + 1].off >= 0)
 				vdot += s->ifc[k + 1].tphi * I->ihi;
-			d = dphi[0] * v + dphi[nz + 1] * vdot;
-			for (i = 0; i < nz; i++)
-				d += dphi[1 + i] * dz[i];
-			f[n++] = d;
+			f[n++] = hbs_iface_dphidt(I, xc, z, v, vdot, I->msign);
 		} else {
 			double x, v;
 
@@ -462,88 +452,4 @@ hbs_cluster_jumped(struct hb_sim *s)
 	if (s->I->q)
 		s->I->xe = s->I->x; /* its gap at the commencement */
 	return 0;
-}
-
-
-/*
- * A limit passed at s->t (why in words): under run.chain_limits = stop the
- * run ends there (HB_EINVAL, keeping what was computed); under warn the
- * first is noted and each is counted.
- */
-static int
-limit_passed(struct hb_sim *s, struct iface *I, int bit, const char *why)
-{
-	if (I->over & bit)
-		return 0;
-	I->over |= bit;
-	if (s->sc.run.chain_limits != HB_CHAIN_LIMITS_WARN)
-		return hbs_fail_iface(s, I, HB_EINVAL, why);
-	if (s->nlim++ == 0)
-		snprintf(s->limnote, sizeof s->limnote, "%s", why);
-	return 0;
-}
-
-/*
- * The model's limits (docs/chains.md section 6) at the current state:
- * each interface in contact within run.max_indent of the smaller radius of
- * its bodies (its indentation |x_c| or its overlap -x, the larger), and
- * no two bodies that are not neighbours overlapping (possible only across
- * two interfaces in contact one above the other).  Linear in the
- * interfaces in contact.
- */
-int
-hbs_cluster_limits(struct hb_sim *s)
-{
-	const struct clusters *c = &s->cx;
-	const double f = s->sc.run.max_indent;
-	char why[360];
-	int p, rc;
-
-	for (p = 0; p < c->nact; p++) {
-		int k = c->act[p];
-		struct iface *I = &s->ifc[k];
-		double Rhi = s->body[I->hi].l, R = I->lo < 0 ? Rhi : fmin(Rhi, s->body[I->lo].l);
-		double d = fmax(fabs(I->xc), -I->x);
-
-		if (R > 0 && d > f * R) {
-			char who[64];
-
-			if (I->lo < 0)
-				snprintf(who, sizeof who, "the floor and body %d", I->hi + 1);
-			else
-				snprintf(who, sizeof who, "bodies %d and %d", I->lo + 1, I->hi + 1);
-			cnum_snprintf(why, sizeof why, "interface %d (%s) is indented by %.6g m at "
-			              "t = %.12g s, %.3g of %s %.6g m, past run.max_indent = %g: the "
-			              "model assumes small indentations", s->k0 + k, who, d, s->t, d / R,
-			              I->lo < 0 ? "the body's radius" : "the smaller radius", R, f);
-			if ((rc = limit_passed(s, I, 1, why)))
-				return rc;
-		}
-		if (p + 1 < c->nact && c->act[p + 1] == k + 1) {
-			const struct iface *J = &s->ifc[k + 1];
-			double gap = I->x + J->x + 2.0 * s->body[I->hi].l;
-
-			if (gap < 0) {
-				if (I->lo < 0)
-					cnum_snprintf(why, sizeof why, "the floor and body %d, not neighbours, "
-					              "overlap by %.6g m at t = %.12g s: the model lets only "
-					              "neighbours touch", J->hi + 1, -gap, s->t);
-				else
-					cnum_snprintf(why, sizeof why, "bodies %d and %d, not neighbours, overlap "
-					              "by %.6g m at t = %.12g s: the model lets only neighbours "
-					              "touch", I->lo + 1, J->hi + 1, -gap, s->t);
-				if ((rc = limit_passed(s, I, 2, why)))
-					return rc;
-			}
-		}
-	}
-	return 0;
-}
-
-const char *
-hb_sim_limits(const struct hb_sim *s, long *count)
-{
-	if (count != NULL)
-		*count = s->nlim;
-	return s->limnote;
 }

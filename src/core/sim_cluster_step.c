@@ -9,6 +9,7 @@
 #include <float.h>
 
 #include "sim_impl.h"
+#include "sim_iface.h"
 
 /* Whether a chain's clusters can run with the scene's stepper (explicit, bsimp, or auto). */
 int
@@ -24,11 +25,7 @@ alloc_ode(struct hb_sim *s, int n)
 	struct clusters *c = &s->cx;
 	const struct hb_scene *sc = &s->sc;
 	const int st = s->stepper[1]; /* the scene's, or rk8pd for auto until it goes over to bsimp */
-	const gsl_odeiv2_step_type *T = st == HB_STEPPER_RKF45 ? gsl_odeiv2_step_rkf45
-	                              : st == HB_STEPPER_RKCK ? gsl_odeiv2_step_rkck
-	                              : st == HB_STEPPER_DOP853 ? hb_step_dop853
-	                              : st == HB_STEPPER_BSIMP ? hb_step_bsimp_shifted
-	                              : hb_step_rk8pd;
+	const gsl_odeiv2_step_type *T = hbs_stepper_type(st);
 	int cap = c->capdim;
 
 	if (n > cap) {
@@ -87,8 +84,9 @@ pow2(double x)
 /*
  * Scales of the blocks: the speed V is the largest approach or relative
  * speed of the interfaces in contact (a wave's energy passes from one to
- * the next), each interface's indentation X from its law as in
- * hbs_scales, W ~ m V^2 / 2, impulses ~ m V; powers of 2.
+ * the next), each interface's indentation X and speed from its law
+ * (hbs_contact_scale, as the pair's), W ~ m V^2 / 2, impulses ~ m V;
+ * powers of 2.
  */
 static void
 cscales(struct hb_sim *s)
@@ -107,22 +105,9 @@ cscales(struct hb_sim *s)
 	for (p = 0; p < c->nact; p++) {
 		const struct iface *I = &s->ifc[c->act[p]];
 		int o = I->off, nz = I->law->n_z;
-		double k = NAN, pe = hb_law_exponent_p(I->law, I->par), X, Vk, F = fabs(I->Fer);
+		double X, Vk;
 
-		for (i = 0; i < I->law->n_params; i++)
-			if (I->law->params[i].flags & HB_LAW_PARAM_STIFFNESS || !strcmp(I->law->params[i].name, "k")) {
-				k = I->par[i];
-				break;
-			}
-		if (!(k > 0))
-			k = 1.0;
-		if (!(pe > 0))
-			pe = 1.0;
-		X = pow((pe + 1) * I->m * V * V / (2 * k), 1 / (pe + 1));
-		X = fmax(X, pow(F / k, 1 / pe));
-		if (!(X > 1e-15))
-			X = 1e-15;
-		Vk = fmax(V, X * sqrt(k * pow(X, pe - 1) / I->m));
+		hbs_contact_scale(I, V, I->Fer, &X, &Vk);
 		c->scale[o] = X;
 		c->scale[o + 1] = Vk;
 		for (i = 0; i < nz; i++)
@@ -310,8 +295,8 @@ hbs_cluster_setup(struct hb_sim *s)
 }
 
 /* The state one step of length h from (t0, u0): into c->u1. */
-static int
-restep(struct hb_sim *s, double h)
+int
+hbs_cluster_restep(struct hb_sim *s, double h)
 {
 	struct clusters *c = &s->cx;
 
@@ -320,20 +305,31 @@ restep(struct hb_sim *s, double h)
 	return gsl_odeiv2_step_apply(c->loc, c->t0, h, c->u1, c->yerr, NULL, NULL, &c->sys);
 }
 
+/* A watched function's value at (t, u): the root finder's function for events, kinks and extrema. */
+static double
+watched(struct hb_sim *s, double t, const double *u, const void *arg)
+{
+	int fi = *(const int *)arg;
+
+	hbs_cluster_watch(s, t, u, s->cx.f1); /* scratch: the values at the trial */
+	return s->cx.f1[fi];
+}
+
 /*
- * Function fi crosses in (0, H]: the bracket [a, b] about its crossing,
- * narrowed by the Illinois method on re-steps down to a few ulps of t; *hb
- * is b (the far end, past the crossing).  Its value at a (>= 0 for an
- * event) is fa.
+ * A function val (of this kind, see hbs_crossed) crosses in (0, hend] of
+ * the step from (t0, u0): the bracket [a, b] about its crossing, narrowed
+ * by the Illinois method on re-steps down to a few ulps of t; *hb is b
+ * (the far end, past the crossing).  Its value at a (>= 0 for an event) is
+ * fa.  The clusters' events, kinks and extrema are located with it, and
+ * the model's limits (sim_limits.c).
  */
-static int
-locate(struct hb_sim *s, int fi, double fa, double fb, double *hb, int *iters)
+int
+hbs_cluster_root(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
+                 double *hb, int *iters)
 {
 	struct clusters *c = &s->cx;
-	double a = 0.0, b = c->H, tol = fmax(4.0 * DBL_EPSILON * fabs(c->t0 + c->H), 1e-14 * c->H);
-	int side = 0, it = 0, kind = c->fkind[fi];
-	double *f = c->f1; /* scratch: the values at the trial */
-
+	double a = 0.0, b = hend, tol = fmax(4.0 * DBL_EPSILON * fabs(c->t0 + hend), 1e-14 * hend), fb;
+	int side = 0, it = 0;
 	int slow = 0, flat = 0;
 
 	/*
@@ -344,10 +340,9 @@ locate(struct hb_sim *s, int fi, double fa, double fb, double *hb, int *iters)
 	 * event whose function is negative at the step's end is taken when
 	 * the next step begins.
 	 */
-	if (restep(s, b) != GSL_SUCCESS)
+	if (hbs_cluster_restep(s, b) != GSL_SUCCESS)
 		return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
-	hbs_cluster_watch(s, c->t0 + b, c->u1, f);
-	fb = f[fi];
+	fb = val(s, c->t0 + b, c->u1, arg);
 	if (!hbs_crossed(kind, fa, fb)) {
 		*hb = INFINITY;
 		*iters = 1;
@@ -379,10 +374,9 @@ locate(struct hb_sim *s, int fi, double fa, double fb, double *hb, int *iters)
 			m = b - tol;
 		if (!(m > a && m < b))
 			m = 0.5 * (a + b);
-		if (restep(s, m) != GSL_SUCCESS)
+		if (hbs_cluster_restep(s, m) != GSL_SUCCESS)
 			return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
-		hbs_cluster_watch(s, c->t0 + m, c->u1, f);
-		fm = f[fi];
+		fm = val(s, c->t0 + m, c->u1, arg);
 		it++;
 		flat = fm == fa || fm == fb;
 		/* is the crossing in (a, m]? */
@@ -427,10 +421,10 @@ jump_iface(struct hb_sim *s, int i, int how, int iters, double width, double ilo
 }
 
 /*
- * Kinks as modes, per interface (as set_mode in sim.c for the pair): the
- * sign of each law's |w| term is frozen for the step that begins at the
- * current state, from its switching function there, so that the flow is
- * smooth inside the step; a change restarts the stepper.
+ * Kinks as modes, per interface (hbs_iface_mode, as the pair's): the sign
+ * of each law's |w| term is frozen for the step that begins at the current
+ * state, so that the flow is smooth inside the step; a change restarts
+ * the stepper.
  */
 static void
 set_modes(struct hb_sim *s)
@@ -440,13 +434,8 @@ set_modes(struct hb_sim *s)
 
 	for (p = 0; p < c->nact; p++) {
 		struct iface *I = &s->ifc[c->act[p]];
-		double g[HB_LAW_MAX_KINKS];
-		int m = 0;
+		int m = hbs_iface_mode(s, I, I->xc, I->z, I->v);
 
-		if (I->law->psi_mode && s->sc.run.kinks) {
-			I->law->kinks(I->par, I->ext, I->xc, I->z, I->v, g);
-			m = g[I->law->mode_kink] > 0 ? 1 : g[I->law->mode_kink] < 0 ? -1 : 0;
-		}
 		if (m != I->msign) {
 			I->msign = m;
 			changed = 1;
@@ -465,8 +454,7 @@ hbs_cluster_step(struct hb_sim *s)
 	struct clusters *c = &s->cx;
 	const struct hb_scene *sc = &s->sc;
 	double t = s->t, t1 = sc->run.T, hbest = INFINITY;
-	int i, rc, best = -1, tries = 0, iters = 0;
-	unsigned long failed0;
+	int i, rc, best = -1, iters = 0;
 
 	/* an interface already outside its flow set where the interval begins jumps at once, lowest k first */
 	for (i = 0; i < c->nf; i++)
@@ -490,32 +478,8 @@ hbs_cluster_step(struct hb_sim *s)
 	set_modes(s);
 	memcpy(c->u0, c->u, (size_t)c->dim * sizeof(double));
 	c->t0 = t;
-retry:
-	failed0 = c->ev->failed_steps;
-	rc = gsl_odeiv2_evolve_apply(c->ev, c->ctl, c->step, &c->sys, &t, t1, &c->h, c->u);
-	s->st.rejected += (long)(c->ev->failed_steps - failed0);
-	if (rc != GSL_SUCCESS) {
-		memcpy(c->u, c->u0, (size_t)c->dim * sizeof(double));
-		return hbs_fail(s, HB_ENUMERIC, "no acceptable step could be made in a cluster of contacts");
-	}
-	for (i = 0; i < c->dim; i++)
-		if (!isfinite(c->u[i])) {
-			memcpy(c->u, c->u0, (size_t)c->dim * sizeof(double));
-			t = c->t0;
-			c->h *= 0.25;
-			gsl_odeiv2_evolve_reset(c->ev);
-			if (++tries < MAX_RETRY && c->t0 + c->h > c->t0)
-				goto retry;
-			return hbs_fail(s, HB_ENUMERIC, "the state became non-finite");
-		}
-	s->st.steps++;
-	c->H = t - c->t0;
-	if (c->H <= fmax(4.0 * DBL_EPSILON * fabs(t), 1e-13 * s->Tc)) {
-		if (++s->ntiny > MAX_TINY)
-			return hbs_fail(s, HB_ENUMERIC, "step size underflow: the error cannot be controlled");
-	} else {
-		s->ntiny = 0;
-	}
+	if ((rc = hbs_evolve(s, c->ev, c->ctl, c->step, &c->sys, c->t0, c->u0, t1, &t, &c->h, c->u, &c->H)))
+		return rc;
 	/* the watched functions at the step's end against its start: the earliest crossing */
 	{
 		double *fend = c->fe;
@@ -525,11 +489,9 @@ retry:
 			double a = c->f0[i], b = fend[i], hb = 0.0;
 			int it = 0;
 
-			if (!hbs_crossed(c->fkind[i], a, b))
+			if (!hbs_candidate(s, c->fkind[i], c->gmax[i], a, b))
 				continue;
-			if (c->fkind[i] != FUN_EVENT && fmax(fabs(a), fabs(b)) <= sc->run.rtol * c->gmax[i])
-				continue;
-			if ((rc = locate(s, i, a, b, &hb, &it)))
+			if ((rc = hbs_cluster_root(s, c->fkind[i], watched, &i, c->H, a, &hb, &it)))
 				return rc;
 			iters += it;
 			/* a kink or extremum at the step's start to the resolution of t: no progress to make */
@@ -541,7 +503,7 @@ retry:
 			}
 		}
 		if (best >= 0) {
-			if (restep(s, hbest) != GSL_SUCCESS)
+			if (hbs_cluster_restep(s, hbest) != GSL_SUCCESS)
 				return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
 			memcpy(c->u, c->u1, (size_t)c->dim * sizeof(double));
 			t = c->t0 + hbest;

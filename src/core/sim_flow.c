@@ -14,8 +14,9 @@ hbs_explicit_stepper(int stepper)
 	       stepper == HB_STEPPER_DOP853 || stepper == HB_STEPPER_VERN98;
 }
 
-static const gsl_odeiv2_step_type *
-stepper_type(int stepper)
+/* The GSL step type of a stepper (auto's is rk8pd until it goes over to bsimp): both integrators'. */
+const gsl_odeiv2_step_type *
+hbs_stepper_type(int stepper)
 {
 	switch (stepper) {
 	case HB_STEPPER_RKF45: return gsl_odeiv2_step_rkf45;
@@ -27,6 +28,55 @@ stepper_type(int stepper)
 	case HB_STEPPER_VERN98: return hb_step_vern98;
 	default: return hb_step_rk8pd;
 	}
+}
+
+/*
+ * One accepted step of GSL's evolver from (t0, u0) towards t1, for both
+ * integrators: the state into (*t, u), the step's length into *H, the
+ * rejections counted.  A step whose accepted state is not finite is
+ * taken again, a quarter as long, with the stepper's memory cleared
+ * (never let a NaN error norm pass as small); a run of steps at the
+ * resolution of t fails.  0, or hbs_fail's status with u = u0.
+ */
+int
+hbs_evolve(struct hb_sim *s, gsl_odeiv2_evolve *e, gsl_odeiv2_control *c, gsl_odeiv2_step *st,
+           const gsl_odeiv2_system *sys, double t0, const double *u0, double t1, double *t, double *h,
+           double *u, double *H)
+{
+	size_t n = sys->dimension, i;
+	int rc, tries = 0, ok;
+
+	for (;;) {
+		unsigned long failed0 = e->failed_steps;
+
+		rc = gsl_odeiv2_evolve_apply(e, c, st, sys, t, t1, h, u);
+		s->st.rejected += (long)(e->failed_steps - failed0);
+		if (rc != GSL_SUCCESS) {
+			memcpy(u, u0, n * sizeof *u);
+			return hbs_fail(s, HB_ENUMERIC, rc == GSL_EBADFUNC ? "the flow function failed"
+			                : "no acceptable step could be made (step size underflow)");
+		}
+		for (ok = 1, i = 0; i < n; i++)
+			ok &= isfinite(u[i]);
+		if (ok)
+			break;
+		memcpy(u, u0, n * sizeof *u);
+		*t = t0;
+		*h *= 0.25;
+		gsl_odeiv2_evolve_reset(e);
+		gsl_odeiv2_step_reset(st);
+		if (!(++tries < MAX_RETRY && t0 + *h > t0))
+			return hbs_fail(s, HB_ENUMERIC, "the state became non-finite");
+	}
+	s->st.steps++;
+	*H = *t - t0;
+	if (*H <= fmax(4.0 * DBL_EPSILON * fabs(*t), 1e-13 * s->Tc)) {
+		if (++s->ntiny > MAX_TINY)
+			return hbs_fail(s, HB_ENUMERIC, "step size underflow: the error cannot be controlled");
+	} else {
+		s->ntiny = 0;
+	}
+	return 0;
 }
 
 void
@@ -208,7 +258,7 @@ int
 hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
 {
 	const struct hb_scene *sc = &s->sc;
-	const gsl_odeiv2_step_type *T = stepper_type(s->stepper[q]);
+	const gsl_odeiv2_step_type *T = hbs_stepper_type(s->stepper[q]);
 	/* msbdf is multistep: locate with the single-step implicit bsimp */
 	const gsl_odeiv2_step_type *TL = T == gsl_odeiv2_step_msbdf ? hb_step_bsimp_shifted : T;
 
@@ -242,47 +292,54 @@ hbs_set_com(struct hb_sim *s)
 		s->xm = s->vm = 0.0;
 }
 
-/* The stiffness k and exponent p of the law (k of the first stiffness param). */
-static void
-law_kp(const struct iface *I, double *k, double *p)
+/*
+ * The sizes of interface I's contact (per interface: both integrators
+ * scale with them), from its law's stiffness k (of the first stiffness
+ * parameter; 1 where it has none) and exponent p, at approach speed V
+ * under the load F: indentation X = max(((p+1) m V^2 / (2k))^(1/(p+1)),
+ * (|F|/k)^(1/p)) (at least 1e-15 m), speed max(V, X sqrt(k X^(p-1)/m)).
+ */
+void
+hbs_contact_scale(const struct iface *I, double V, double F, double *X, double *Vk)
 {
+	double k = NAN, p = hb_law_exponent_p(I->law, I->par), m = I->m, x;
 	int i;
 
-	*k = NAN;
 	for (i = 0; i < I->law->n_params; i++)
 		if (I->law->params[i].flags & HB_LAW_PARAM_STIFFNESS || !strcmp(I->law->params[i].name, "k")) {
-			*k = I->par[i];
+			k = I->par[i];
 			break;
 		}
-	*p = hb_law_exponent_p(I->law, I->par);
+	if (!(k > 0))
+		k = 1.0;
+	if (!(p > 0))
+		p = 1.0;
+	x = pow((p + 1) * m * V * V / (2 * k), 1 / (p + 1));
+	x = fmax(x, pow(fabs(F) / k, 1 / p));
+	if (!(x > 1e-15))
+		x = 1e-15;
+	*X = x;
+	*Vk = fmax(V, x * sqrt(k * pow(x, p - 1) / m));
 }
 
 /*
  * Scales of the components for this interval, from the scene's own sizes
  * (DESIGN.md section 4a).  In contact with approach speed v and load F:
- * indentation X = max(((p+1) m v^2 / (2k))^(1/(p+1)), (|F|/k)^(1/p)),
- * speed V = max(|v|, X sqrt(k X^(p-1)/m)), z ~ X, W ~ m V^2 / 2, impulses
- * ~ m V.  In flight: X = max(|x|, v^2/(2|a|)), V = max(|v|, sqrt(2|a|X)).
+ * the indentation X and speed V of hbs_contact_scale, z ~ X, W ~ m V^2 / 2,
+ * impulses ~ m V.  In flight: X = max(|x|, v^2/(2|a|)), V = max(|v|, sqrt(2|a|X)).
  */
 void
 hbs_scales(struct hb_sim *s, const struct layout *L, int q)
 {
 	struct iface *I = s->I;
 	const struct hb_scene *sc = &s->sc;
-	double m = I->m, F = fabs(iface_Fer(s, I, s->t)), X, V, k, p;
+	double m = I->m, F = fabs(iface_Fer(s, I, s->t)), X, V;
 	int i;
 
 	s->w.valid = 0; /* the watched values were of the old scales */
 
 	if (q) {
-		law_kp(I, &k, &p);
-		if (!(k > 0))
-			k = 1.0;
-		X = pow((p + 1) * m * I->v * I->v / (2 * k), 1 / (p + 1));
-		X = fmax(X, pow(F / k, 1 / p));
-		if (!(X > 1e-15))
-			X = 1e-15;
-		V = fmax(fabs(I->v), X * sqrt(k * pow(X, p - 1) / m));
+		hbs_contact_scale(I, fabs(I->v), F, &X, &V);
 	} else {
 		double acc = F / m;
 

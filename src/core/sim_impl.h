@@ -319,8 +319,20 @@ int
 hbs_cluster_stiffness(struct hb_sim *s);
 int
 hbs_cluster_step(struct hb_sim *s);
+/*
+ * ... the state one step of length h from the step's start (t0, u0), into
+ * cx.u1; a function's crossing in (0, hend] of the step located on such
+ * re-steps (see sim_cluster_step.c)
+ */
+int
+hbs_cluster_restep(struct hb_sim *s, double h);
+typedef double hbs_val_fn(struct hb_sim *s, double t, const double *u, const void *arg);
+int
+hbs_cluster_root(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
+                 double *hb, int *iters);
 void
 hbs_cluster_sync(struct hb_sim *s);
+/* sim_limits.c: the model's limits at the end of the step just accepted, each passed located */
 int
 hbs_cluster_limits(struct hb_sim *s);
 void
@@ -342,6 +354,12 @@ hbs_branches_cut(struct hb_sim *s, size_t i);
 /* sim_flow.c */
 int
 hbs_explicit_stepper(int stepper);
+const gsl_odeiv2_step_type *
+hbs_stepper_type(int stepper);
+int
+hbs_evolve(struct hb_sim *s, gsl_odeiv2_evolve *e, gsl_odeiv2_control *c, gsl_odeiv2_step *st,
+           const gsl_odeiv2_system *sys, double t0, const double *u0, double t1, double *t, double *h,
+           double *u, double *H);
 
 void
 hbs_unscale(const struct phase *p, const double *u, double *y);
@@ -360,6 +378,10 @@ hbs_set_com(struct hb_sim *s);
 
 void
 hbs_scales(struct hb_sim *s, const struct layout *L, int q);
+
+/* ... and interface I's contact sizes at approach speed V under load F (both integrators) */
+void
+hbs_contact_scale(const struct iface *I, double V, double F, double *X, double *Vk);
 
 void
 hbs_pack(struct hb_sim *s, const struct layout *L, double *u);
@@ -391,7 +413,9 @@ hbs_finish_T(struct hb_sim *s);
 int
 hbs_flight_closed(struct hb_sim *s);
 
-/* sim_watch.c: the values of the watched functions at a scaled state, their kinds */
+/* sim_iface.h: one interface's watched terms (Phi, kinks, dPhi/dt, its mode), for both integrators */
+
+/* sim_watch.c: the values of the pair's watched functions at a scaled state, their kinds */
 int
 hbs_watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
           int *kind);
@@ -434,15 +458,17 @@ hbs_crossed(int kind, double a, double b)
 /*
  * ... and is it a candidate?  A switching or extremum function that only
  * wanders about zero at the level of the tolerance (|Psi_2| while a
- * Maxwell element creeps, dPhi/dt at rest) marks no real kink or extremum.
- * (Called for every function at every step: inline, and without fmax.)
+ * Maxwell element creeps, dPhi/dt at rest) marks no real kink or extremum:
+ * gmax is the largest |value| the function has had in the interval.  Both
+ * integrators ask it.  (Called for every function at every step: inline,
+ * and without fmax.)
  */
 static inline int
-hbs_candidate(const struct hb_sim *s, int kind, int i, double f0, double fx)
+hbs_candidate(const struct hb_sim *s, int kind, double gmax, double f0, double fx)
 {
 	double a0 = fabs(f0), ax = fabs(fx);
 
-	if (kind != FUN_EVENT && (a0 > ax ? a0 : ax) <= s->sc.run.rtol * s->gmax[i])
+	if (kind != FUN_EVENT && (a0 > ax ? a0 : ax) <= s->sc.run.rtol * gmax)
 		return 0;
 	return hbs_crossed(kind, f0, fx);
 }
@@ -451,7 +477,19 @@ hbs_candidate(const struct hb_sim *s, int kind, int i, double f0, double fx)
 int
 hbs_after_step(struct hb_sim *s, int load_kink);
 
-/* sim_stiff.c */
+/*
+ * sim_stiff.c: stiffness detection per interface, for both integrators:
+ * is a check due after this step (counted as a Jacobian evaluation); the
+ * largest decaying |lambda| of interface I's contact flow (sc: the scales
+ * of its x_c, v, z...) into *rho (-1: none computable); the verdict on
+ * h |lambda| (1: the run goes over to bsimp now); the pair's check.
+ */
+int
+hbs_stiff_begin(struct hb_sim *s);
+int
+hbs_iface_rho(struct hb_sim *s, const struct iface *I, double minv, const double *sc, double *rho);
+int
+hbs_stiff_verdict(struct hb_sim *s, double hr);
 int
 hbs_stiffness(struct hb_sim *s);
 

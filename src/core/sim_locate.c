@@ -528,7 +528,7 @@ crossed_at(struct hb_sim *s, int k, const double *f0, int n, const int *kind, do
 		return -1;
 	hbs_watch(s, s->cur, s->t0 + a, ua, fa, kk);
 	for (i = 0; i < n; i++)
-		if (i != k && hbs_candidate(s, kind[i], i, f0[i], fa[i])) {
+		if (i != k && hbs_candidate(s, kind[i], s->gmax[i], f0[i], fa[i])) {
 			if (cand != NULL)
 				cand[nb] = i;
 			nb++;
@@ -572,7 +572,7 @@ hbs_after_step(struct hb_sim *s, int load_kink)
 			f0[k] = s->msign * DBL_MIN;
 	}
 	for (i = 0; i < n; i++)
-		if (hbs_candidate(s, kind[i], i, f0[i], f1[i]))
+		if (hbs_candidate(s, kind[i], s->gmax[i], f0[i], f1[i]))
 			cand[ncand++] = i;
 	if (ncand == 0 || cand[0] != 0) {
 		/* the event stepped over: locate everything that crossed before the dip */
@@ -582,7 +582,7 @@ hbs_after_step(struct hb_sim *s, int load_kink)
 			s->st.dips++;
 			hi = th * s->H;
 			for (ncand = 0, i = 0; i < n; i++)
-				if (hbs_candidate(s, kind[i], i, f0[i], fx[i]))
+				if (hbs_candidate(s, kind[i], s->gmax[i], f0[i], fx[i]))
 					cand[ncand++] = i;
 		}
 	}
@@ -664,7 +664,7 @@ again:
 			int ev = 0, kk = kind[first] == FUN_KINK, fc = kind[first] == FUN_FCMAX ? first : -1;
 
 			for (i = 0; i < n; i++)
-				if (i != first && hbs_candidate(s, kind[i], i, f0[i], fb[i])) {
+				if (i != first && hbs_candidate(s, kind[i], s->gmax[i], f0[i], fb[i])) {
 					ev |= kind[i] == FUN_EVENT;
 					kk |= kind[i] == FUN_KINK;
 					if (kind[i] == FUN_FCMAX)

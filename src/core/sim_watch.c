@@ -3,86 +3,12 @@
  * sim_watch.c - the functions watched along a step: the indicator of the
  * flow set C, the law's switching functions, the extremum functions of x_c
  * and F_c, and the rate of the indicator; when one has crossed (see
- * sim_locate.c for how crossings are located).
+ * sim_locate.c for how crossings are located), for the pair's interface,
+ * from the per-interface terms (sim_iface.h) that a chain's clusters
+ * watch with too (hbs_cluster_watch).
  */
 #include "sim_impl.h"
-#include "law_terms.h"
-
-/*
- * The law's terms that watch() needs: inline for the engine's own laws
- * (law_terms.h, the functions their tables call), through the table for a
- * host's law (W_HOST).
- */
-enum wlaw { W_HOST, W_SHCCL, W_BWSHCCL, W_BWMCL, W_HERTZ, W_LINEAR };
-
-static inline enum wlaw
-wlaw_of(const struct hb_law_type *law)
-{
-	if (law == &hb_law_bwshccl)
-		return W_BWSHCCL;
-	if (law == &hb_law_bwmcl)
-		return W_BWMCL;
-	if (law == &hb_law_shccl)
-		return W_SHCCL;
-	if (law == &hb_law_hertz)
-		return W_HERTZ;
-	return law == &hb_law_linear ? W_LINEAR : W_HOST;
-}
-
-/* Phi */
-static inline double
-w_phi(enum wlaw w, const struct iface *I, double xc, const double *z, double v)
-{
-	switch (w) {
-	case W_SHCCL: return law_shccl_phi(I->par, I->ext, xc, z, v);
-	case W_BWSHCCL: return law_bwshccl_phi(I->par, I->ext, xc, z, v);
-	case W_BWMCL: return law_bwmcl_phi(I->par, I->ext, xc, z, v);
-	case W_HERTZ: return law_hertz_phi(I->par, I->ext, xc, z, v);
-	case W_LINEAR: return law_linear_phi(I->par, I->ext, xc, z, v);
-	default: return I->law->phi(I->par, I->ext, xc, z, v);
-	}
-}
-
-/* the switching functions into g */
-static inline void
-w_kinks(enum wlaw w, const struct iface *I, double xc, const double *z, double v, double *g)
-{
-	switch (w) {
-	case W_SHCCL:
-	case W_HERTZ:
-	case W_LINEAR: g[0] = xc; break; /* law_kinks_xc */
-	case W_BWSHCCL: law_bwshccl_kinks(xc, z, v, g); break;
-	case W_BWMCL: law_bwmcl_kinks(I->par, I->ext, xc, z, v, g); break;
-	default: I->law->kinks(I->par, I->ext, xc, z, v, g); break;
-	}
-}
-
-/* dPhi into dphi and Psi into dz (Psi's partials are not needed) */
-static inline void
-w_dphi_psi(enum wlaw w, const struct iface *I, double xc, const double *z, double v, double *dphi,
-           double *dz)
-{
-	double dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)];
-
-	switch (w) {
-	case W_SHCCL: law_shccl_dphi(I->par, I->ext, xc, v, dphi); break;
-	case W_BWSHCCL:
-		law_bwshccl_dphi(I->par, I->ext, xc, z, v, dphi);
-		law_bwshccl_psi_mode(I->par, I->ext, xc, z, v, 0, dz); /* sign 0: Psi's doubles */
-		break;
-	case W_BWMCL:
-		law_bwmcl_dphi(I->par, z, dphi);
-		law_bwmcl_psi_mode(I->par, I->ext, xc, z, v, 0, dz);
-		break;
-	case W_HERTZ: law_hertz_dphi(I->par, I->ext, xc, dphi); break;
-	case W_LINEAR: law_linear_dphi(I->par, I->ext, xc, dphi); break;
-	default:
-		I->law->jac(I->par, I->ext, xc, z, v, dphi, I->law->n_z ? dpsi : NULL);
-		if (I->law->n_z)
-			I->law->psi(I->par, I->ext, xc, z, v, dz);
-		break;
-	}
-}
+#include "sim_iface.h"
 
 /*
  * Values of the watched functions at a scaled state: [0] the indicator of
@@ -102,12 +28,10 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 	const struct iface *I = s->I;
 	const struct layout *L = &p->L;
 	double y[MAXDIM], v, xc, z[HB_LAW_MAX_Z] = { 0 };
-	double dphi[HB_LAW_MAX_Z + 2], dz[HB_LAW_MAX_Z];
 	double phi = 0.0, vdot, d, Fer;
 	int i, nz = I->law->n_z;
 	int nk = I->law->n_kinks && sc->run.kinks ? I->law->n_kinks : 0;
 	int all = only < 0;
-	enum wlaw w;
 
 	for (i = 0; i < L->nread; i++) /* the components the functions read (as rhs) */
 		y[i] = u[i] * s->scale[i];
@@ -119,7 +43,6 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 			*rate = y[L->ix] > v ? v : iface_Fer(s, I, t) / I->m;
 		return 1;
 	}
-	w = wlaw_of(I->law);
 	xc = y[L->ixc];
 	for (i = 0; i < nz; i++)
 		z[i] = y[L->iz + i];
@@ -128,23 +51,20 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 	kind[nk + 1] = FUN_XCMAX;
 	kind[nk + 2] = FUN_FCMAX;
 	if (all || only == 0 || only == nk + 2)
-		phi = w_phi(w, I, xc, z, v);
+		phi = hbs_iface_phi(I, xc, z, v);
 	if (all || only == 0)
 		f[0] = -fmin(phi, v);
 	if (nk && (all || (only >= 1 && only <= nk)))
-		w_kinks(w, I, xc, z, v, &f[1]);
+		hbs_iface_kinks(I, xc, z, v, &f[1]);
 	f[nk + 1] = v;
 	if (all || only == nk + 2) {
-		w_dphi_psi(w, I, xc, z, v, dphi, dz);
 		Fer = iface_Fer(s, I, t);
 		vdot = (-phi + Fer) / I->m;
 		if (pf != NULL) {
 			pf[0] = phi;
 			pf[1] = Fer;
 		}
-		d = dphi[0] * v + dphi[nz + 1] * vdot;
-		for (i = 0; i < nz; i++)
-			d += dphi[1 + i] * dz[i];
+		d = hbs_iface_dphidt(I, xc, z, v, vdot, 0);
 		f[nk + 2] = d;
 		if (rate != NULL)
 			*rate = phi < v ? -d : -vdot;

@@ -101,13 +101,24 @@ for a in "chain.n=20" "chain.n=6 --set chain.floor=yes"; do
 	fi
 done
 
-# a chain's contacts run with rk8pd, dop853, rkf45, rkck, bsimp or auto: msbdf is refused by name
+# a chain's contacts run with rk8pd, dop853, vern98, rkf45, rkck, bsimp or auto: msbdf is refused by name
 "$BIN" --batch "$T/cradle.preset" --set run.stepper=msbdf --set run.limits=no >"$T/out" 2>&1
 rc=$?
-if [ $rc -eq 2 ] && grep -q "run.stepper: a chain's contacts run with rk8pd, dop853, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once stiff); accepted: those" "$T/out"; then
+if [ $rc -eq 2 ] && grep -q "run.stepper: a chain's contacts run with rk8pd, dop853, vern98, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once stiff); accepted: those" "$T/out"; then
 	ok "a chain with msbdf refused, exit 2"
 else
 	notok "a chain with msbdf refused, exit 2 (got $rc)" "$T/out"
+fi
+
+# vern98 runs vern98 in a chain's contacts, as for two bodies (the stepper is chosen in one
+# place for both integrators): its steps are not rk8pd's
+"$BIN" --batch "$T/cradle.preset" --set run.stepper=vern98 -q >"$T/v98" 2>&1
+"$BIN" --batch "$T/cradle.preset" --set run.stepper=rk8pd -q >"$T/rk8" 2>&1
+if grep -q '^  steps  ' "$T/v98" && grep -q '^  steps  ' "$T/rk8" &&
+    [ "$(grep '^  steps  ' "$T/v98")" != "$(grep '^  steps  ' "$T/rk8")" ]; then
+	ok "a chain with vern98 runs vern98, not rk8pd"
+else
+	notok "a chain with vern98 runs vern98, not rk8pd" "$T/v98"
 fi
 
 # the collision table and CSV of a chain name each collision's interface (k after i)
@@ -122,15 +133,17 @@ fi
 
 # the model's limits: an indentation past run.max_indent of the smaller radius stops
 # the run naming the interface, its bodies, the time and the value, keeping what
-# was computed; run.chain_limits = warn notes it and goes on
+# was computed; the instant is located in the step (the indentation there is the
+# limit, 1e-05 m, to the digits printed; at the step's end it was past it);
+# run.chain_limits = warn notes it and goes on
 "$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 --set run.max_indent=0.001 >"$T/out" 2>&1
 rc=$?
 if [ $rc -eq 1 ] &&
-    grep -q 'the run failed: interface 2 (bodies 2 and 3) is indented by 1.[0-9]*e-05 m at t = 1.[0-9]*e-05 s, 0.001[0-9]* of the smaller radius 0.01 m, past run.max_indent = 0.001' "$T/out" &&
+    grep -q 'the run failed: interface 2 (bodies 2 and 3) is indented by 1e-05 m at t = 1.[0-9]*e-05 s, 0.001 of the smaller radius 0.01 m, past run.max_indent = 0.001 (located; 1.[0-9]*e-05 m at the step.s end, t = 1.[0-9]*e-05 s): the model assumes small indentations; interface 2 there (j = [0-9]*): x = -1e-05 m' "$T/out" &&
     grep -q '^  arc         [1-9][0-9]* samples' "$T/out" && grep -q '^  body 3 ' "$T/out"; then
-	ok "an indentation past run.max_indent stops the run, exit 1, naming interface, bodies, time and value"
+	ok "an indentation past run.max_indent stops the run at its located instant, exit 1, naming interface, bodies, time and value"
 else
-	notok "an indentation past run.max_indent stops the run, exit 1, naming interface, bodies, time and value (got $rc)" "$T/out"
+	notok "an indentation past run.max_indent stops the run at its located instant, exit 1, naming interface, bodies, time and value (got $rc)" "$T/out"
 fi
 if "$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 --set run.max_indent=0.001 \
         --set run.chain_limits=warn >"$T/out" 2>&1 &&
@@ -140,22 +153,34 @@ if "$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 --set run.max_indent=
 else
 	notok "run.chain_limits = warn: the run goes on and the summary counts the limits passed" "$T/out"
 fi
-# a soft linear law: bodies 1 and 3 overlap across body 2 before any indentation passes a radius
+# a soft linear law: bodies 1 and 3 come to overlap across body 2 in the same step as
+# interface 2's indentation passes 0.99 of a radius; located, the indentation comes first
+# (with every radius known, two indentations within run.max_indent < 1 of the middle
+# body's radius cannot make its neighbours overlap)
 "$BIN" --batch "$T/cradle.preset" --set scene.law=linear --set law.k=10 --set chain.spacing=0 \
     --set run.T=1 --set striker.v=-10 --set run.max_indent=0.99 >"$T/out" 2>&1
 rc=$?
 if [ $rc -eq 1 ] &&
-    grep -q 'the run failed: bodies 1 and 3, not neighbours, overlap by [0-9.e-]* m at t = [0-9.e-]* s: the model lets only neighbours touch' "$T/out"; then
-	ok "bodies that are not neighbours overlapping stop the run, exit 1, naming them"
+    grep -q 'the run failed: interface 2 (bodies 2 and 3) is indented by 0.0099 m at t = 0.00099[0-9]* s, 0.99 of the smaller radius 0.01 m, past run.max_indent = 0.99 (located; 0.02[0-9]* m at the step.s end' "$T/out"; then
+	ok "the earliest limit passed in a step is the one named: an indentation before an overlap"
 else
-	notok "bodies that are not neighbours overlapping stop the run, exit 1, naming them (got $rc)" "$T/out"
+	notok "the earliest limit passed in a step is the one named: an indentation before an overlap (got $rc)" "$T/out"
+fi
+# ... under run.chain_limits = warn the run goes on, and the overlap of bodies 1 and 3
+# is passed too: both indentations and the overlap are counted
+if "$BIN" --batch "$T/cradle.preset" --set scene.law=linear --set law.k=10 --set chain.spacing=0 \
+        --set run.T=1 --set striker.v=-10 --set run.max_indent=0.99 --set run.chain_limits=warn >"$T/out" 2>&1 &&
+    grep -q '^  limits      passed 3 times (run.chain_limits = warn); the first: interface 2 (bodies 2 and 3) is indented by 0.0099 m' "$T/out"; then
+	ok "run.chain_limits = warn: two indentations and an overlap counted"
+else
+	notok "run.chain_limits = warn: two indentations and an overlap counted" "$T/out"
 fi
 
 # a floor's interface is named with the floor, and the state given with the
 # message is that interface's, its overlap -x the indentation named
 "$BIN" --batch stacked-drop --set run.max_indent=0.1 >"$T/out" 2>&1
 rc=$?
-d=$(sed -n 's/.*interface 0 (the floor and body 1) is indented by \([0-9.e-]*\) m at t = [0-9.e-]* s, 0.1[0-9]* of the body.s radius 0.1217 m, past run.max_indent = 0.1: .*; interface 0 there (j = [0-9]*): x = -\([0-9.e-]*\) m, .*/\1 \2/p' "$T/out" | head -n 1)
+d=$(sed -n 's/.*interface 0 (the floor and body 1) is indented by \([0-9.e-]*\) m at t = [0-9.e-]* s, 0.1 of the body.s radius 0.1217 m, past run.max_indent = 0.1 (located; [0-9.e-]* m at the step.s end, t = [0-9.e-]* s): .*; interface 0 there (j = [0-9]*): x = -\([0-9.e-]*\) m, .*/\1 \2/p' "$T/out" | head -n 1)
 if [ $rc -eq 1 ] && [ -n "$d" ] && [ "${d% *}" = "${d#* }" ]; then
 	ok "a floor's indentation past run.max_indent names the floor and body 1, with that interface's state"
 else

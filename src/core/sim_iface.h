@@ -1,0 +1,121 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/*
+ * sim_iface.h - the terms of one interface's contact that both flow
+ * integrators watch with (private to the engine): Phi, the law's
+ * switching functions, dPhi/dt, and the mode a step begins in.  The
+ * pair's watched functions (sim_watch.c) and a chain's clusters'
+ * (sim_cluster.c) call them for each interface in contact; inline, as
+ * they are evaluated at every step and every trial of a location.
+ */
+#ifndef HYBOUNCE_SIM_IFACE_H
+#define HYBOUNCE_SIM_IFACE_H
+
+#include "sim_impl.h"
+#include "law_terms.h"
+
+/*
+ * The law's terms the watched functions need: inline for the engine's own laws
+ * (law_terms.h, the functions their tables call), through the table for a
+ * host's law (W_HOST).
+ */
+enum wlaw { W_HOST, W_SHCCL, W_BWSHCCL, W_BWMCL, W_HERTZ, W_LINEAR };
+
+static inline enum wlaw
+wlaw_of(const struct hb_law_type *law)
+{
+	if (law == &hb_law_bwshccl)
+		return W_BWSHCCL;
+	if (law == &hb_law_bwmcl)
+		return W_BWMCL;
+	if (law == &hb_law_shccl)
+		return W_SHCCL;
+	if (law == &hb_law_hertz)
+		return W_HERTZ;
+	return law == &hb_law_linear ? W_LINEAR : W_HOST;
+}
+
+/* Phi of interface I (per interface: both integrators watch with it) */
+static inline double
+hbs_iface_phi(const struct iface *I, double xc, const double *z, double v)
+{
+	switch (wlaw_of(I->law)) {
+	case W_SHCCL: return law_shccl_phi(I->par, I->ext, xc, z, v);
+	case W_BWSHCCL: return law_bwshccl_phi(I->par, I->ext, xc, z, v);
+	case W_BWMCL: return law_bwmcl_phi(I->par, I->ext, xc, z, v);
+	case W_HERTZ: return law_hertz_phi(I->par, I->ext, xc, z, v);
+	case W_LINEAR: return law_linear_phi(I->par, I->ext, xc, z, v);
+	default: return I->law->phi(I->par, I->ext, xc, z, v);
+	}
+}
+
+/* its switching functions into g */
+static inline void
+hbs_iface_kinks(const struct iface *I, double xc, const double *z, double v, double *g)
+{
+	switch (wlaw_of(I->law)) {
+	case W_SHCCL:
+	case W_HERTZ:
+	case W_LINEAR: g[0] = xc; break; /* law_kinks_xc */
+	case W_BWSHCCL: law_bwshccl_kinks(xc, z, v, g); break;
+	case W_BWMCL: law_bwmcl_kinks(I->par, I->ext, xc, z, v, g); break;
+	default: I->law->kinks(I->par, I->ext, xc, z, v, g); break;
+	}
+}
+
+/*
+ * dPhi/dt of interface I along its flow, with v' = vdot and Psi in mode
+ * msign (0: Psi's own doubles; the pair watches with 0, a chain's
+ * clusters with the step's frozen mode): the function whose minimum is
+ * F_c's maximum.  Psi's partials are not needed.
+ */
+static inline double
+hbs_iface_dphidt(const struct iface *I, double xc, const double *z, double v, double vdot, int msign)
+{
+	double dphi[HB_LAW_MAX_Z + 2], dz[HB_LAW_MAX_Z], dpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)], d;
+	int i, nz = I->law->n_z;
+
+	switch (wlaw_of(I->law)) {
+	case W_SHCCL: law_shccl_dphi(I->par, I->ext, xc, v, dphi); break;
+	case W_BWSHCCL:
+		law_bwshccl_dphi(I->par, I->ext, xc, z, v, dphi);
+		law_bwshccl_psi_mode(I->par, I->ext, xc, z, v, msign, dz); /* sign 0: Psi's doubles */
+		break;
+	case W_BWMCL:
+		law_bwmcl_dphi(I->par, z, dphi);
+		law_bwmcl_psi_mode(I->par, I->ext, xc, z, v, msign, dz);
+		break;
+	case W_HERTZ: law_hertz_dphi(I->par, I->ext, xc, dphi); break;
+	case W_LINEAR: law_linear_dphi(I->par, I->ext, xc, dphi); break;
+	default:
+		I->law->jac(I->par, I->ext, xc, z, v, dphi, nz ? dpsi : NULL);
+		if (nz && msign)
+			I->law->psi_mode(I->par, I->ext, xc, z, v, msign, dz);
+		else if (nz)
+			I->law->psi(I->par, I->ext, xc, z, v, dz);
+		break;
+	}
+	d = dphi[0] * v + dphi[nz + 1] * vdot;
+	for (i = 0; i < nz; i++)
+		d += dphi[1 + i] * dz[i];
+	return d;
+}
+
+/*
+ * Kinks as modes, per interface (both integrators): the sign of the law's
+ * |w| term (law_type.psi_mode) frozen for a step is the sign of its
+ * switching function at the step's start (0: the law has no mode, or
+ * run.kinks is off).
+ */
+static inline int
+hbs_iface_mode(const struct hb_sim *s, const struct iface *I, double xc, const double *z, double v)
+{
+	double g[HB_LAW_MAX_KINKS];
+	int k = I->law->mode_kink;
+
+	if (!I->law->psi_mode || !s->sc.run.kinks)
+		return 0;
+	I->law->kinks(I->par, I->ext, xc, z, v, g);
+	return g[k] > 0 ? 1 : (g[k] < 0 ? -1 : 0);
+}
+
+#endif
