@@ -167,6 +167,24 @@ sweep_journal_scan(const char *path, long npoints, int trunc,
 int
 sweep_write_all(int fd, const char *p, size_t len);
 
+/*
+ * hb_sweep_prepare_dir_with, and what it made (*made): SWEEP_MADE_DIR, the
+ * folder; SWEEP_MADE_SPEC, its sweep.preset.
+ */
+enum { SWEEP_MADE_DIR = 1, SWEEP_MADE_SPEC = 2, SWEEP_MADE_JOURNAL = 4 };
+int
+sweep_prepare_dir(const struct hb_sweep *sw, const char *dir, const char *provenance, int *made,
+                  char *msg, size_t n);
+
+/*
+ * After a point was refused (HB_EINVAL: bad input), removes what this call
+ * made (made: SWEEP_MADE_*; SWEEP_MADE_JOURNAL: the journal jpath held no
+ * point before), so that a refused sweep leaves no folder behind, as one
+ * refused before it runs.
+ */
+void
+sweep_refused_undo(const char *dir, int made, const char *jpath);
+
 /* DIR/points.journal for one shard, DIR/shard-K-of-N.journal otherwise. */
 void
 sweep_journal_name(char *buf, size_t n, const char *dir, long k, long nshards);
@@ -195,10 +213,30 @@ sweep_wbuf_free(struct sweep_wbuf *w);
 int
 sweep_point_values(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n);
 
-/* hb_sweep_point_block with w's buffers; the scene is validated by hb_sim_new alone. */
+/*
+ * HB_EINVAL with the message of a point whose scene is refused: "point ID
+ * (KEY=VALUE ...): why" (hb_sweep_check's, and a run's).
+ */
 int
-sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, char **out,
-                      int *failed, char *msg, size_t n);
+sweep_point_refused(const struct hb_sweep *sw, long id, const char *why, char *msg, size_t n);
+
+/*
+ * hb_sweep_point_block with w's buffers.  The scene is validated once, by
+ * hb_sim_new: a refused point is HB_EINVAL with sweep_point_refused's
+ * message (a sweep that runs is not checked point by point before).
+ */
+struct sweep_block {
+	char *p;        /* the block, len bytes and a '\0', in a buffer of cap bytes */
+	size_t len, cap;
+	int failed;     /* the run failed (a row with its message) */
+	double cpu;     /* the point's CPU time, s (its runs row's cpu_s) */
+};
+
+/* The block is built in b->p (cap bytes, may be NULL), grown as needed;
+ * the buffer stays the caller's whatever the outcome. */
+int
+sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
+                      struct sweep_block *b, char *msg, size_t n);
 
 /* The base scene of a sweep (the preset and --set, before any axis). */
 const struct hb_scene *
