@@ -242,6 +242,26 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
 const struct hb_scene *
 sweep_base(const struct hb_sweep *sw);
 
+/* The shards of a folder (sweep_shards.c). */
+
+/* The names of the journals in dir (malloc'd, *count of them; sweep_names_free). */
+int
+sweep_journals_list(const char *dir, char ***names, int *count, char *msg, size_t n);
+void
+sweep_names_free(char **names, int count);
+
+/* The shard count of the journals when they all name the same one, else 0. */
+long
+sweep_shards_of_names(char *const *names, int count);
+
+/*
+ * HB_EINVAL with "2 of 4 shards incomplete: shard 1 (not started), shard 3
+ * (3 of 5 points); 8 of 20 points missing" in msg, from have(ctx, id).
+ */
+int
+sweep_shards_missing_msg(const char *dir, long np, long ns, int (*have)(const void *, long),
+                         const void *ctx, long missing, char *msg, size_t n);
+
 /*
  * hb_sweep_merge_shards for a sweep in hand, which DIR/sweep.preset holds
  * (hb_sweep_prepare_dir checked it): its values are not made again.
