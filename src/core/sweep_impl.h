@@ -139,14 +139,16 @@ sweep_refine_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, ch
  * below np that done does not hold, npending of them), appending each
  * block to the journal fd (jpath in messages) in the order they complete,
  * then calling got(ctx, id, blk, len) when got is not NULL; pr is
- * counted and reported (o->progress).  Returns HB_OK, HB_EDONE (cancelled;
- * the points in hand are journaled), or an error with msg.
+ * counted and reported (o->progress).  *ordered (may be NULL): 1 when every
+ * block went to the journal in increasing id order.  Returns HB_OK, HB_EDONE
+ * (cancelled; the points in hand are journaled), or an error with msg.
  */
 int
 sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int fd,
               const char *jpath, const long *ids, long nids, const unsigned char *done,
               long first, long step, long npending, struct hb_sweep_progress *pr, double t0,
-              int (*got)(void *, long, const char *, size_t), void *ctx, char *msg, size_t n);
+              int (*got)(void *, long, const char *, size_t), void *ctx, int *ordered,
+              char *msg, size_t n);
 
 /* The whole of a file into a malloc'd string (*len bytes), read once and
  * bounded (input.h).  NULL with msg on failure; errno ENOENT when absent. */
@@ -265,9 +267,12 @@ sweep_shards_missing_msg(const char *dir, long np, long ns, int (*have)(const vo
 /*
  * hb_sweep_merge_shards for a sweep in hand, which DIR/sweep.preset holds
  * (hb_sweep_prepare_dir checked it): its values are not made again.
+ * whole: the folder's one journal, points.journal, is known to hold every
+ * point once, in id order (hb_sweep_run wrote it so in one go), so it is
+ * not read a first time to find that out.
  */
 int
-sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
+sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, int whole,
                  const struct hb_sweep_sink *sink, void *ctx, char *msg, size_t n);
 
 #endif

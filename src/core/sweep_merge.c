@@ -153,7 +153,12 @@ read_block(int fd, off_t off, char **buf, size_t *cap)
 static long
 block_id(const char *blk)
 {
-	return strtol(blk + 2, NULL, 10);
+	long id = 0;
+
+	/* "c,ID," or "r,ID,": the digits the writer put there */
+	for (const char *p = blk + 2; *p >= '0' && *p <= '9'; p++)
+		id = id * 10 + (*p - '0');
+	return id;
 }
 
 /* The lines of block blk into the sink or the two files. */
@@ -280,13 +285,13 @@ hb_sweep_merge_to(const char *dir, long nshards, const struct hb_sweep_sink *sin
 		                     "sweep %s/" SWEEP_SPEC_NAME " --out %s, which resumes it", dir,
 		                     dir, dir);
 	}
-	rc = sweep_merge_into(sw, dir, nshards, sink, ctx, msg, n);
+	rc = sweep_merge_into(sw, dir, nshards, 0, sink, ctx, msg, n);
 	hb_sweep_free(sw);
 	return rc;
 }
 
 int
-sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
+sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, int whole,
                  const struct hb_sweep_sink *sink, void *ctx, char *msg, size_t n)
 {
 	const struct hb_scene *sc = sweep_base(sw);
@@ -311,7 +316,16 @@ sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
 	}
 	for (int i = 0; i < nnames; i++)
 		fds[i] = -1;
-	if (nnames <= MERGE_SIDE_MAX) {
+	if (whole && nnames == 1 && strcmp(names[0], "points.journal") == 0) {
+		/* written whole and in order by the run that merges it */
+		od.blocks = calloc(1, sizeof *od.blocks);
+		if (od.blocks == NULL) {
+			rc = hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+			goto out;
+		}
+		od.blocks[0] = np;
+		side = 1;
+	} else if (nnames <= MERGE_SIDE_MAX) {
 		od.bits = calloc((size_t)np / 8 + 1, 1);
 		od.last = malloc((size_t)(nnames + 1) * sizeof *od.last);
 		od.blocks = calloc((size_t)nnames + 1, sizeof *od.blocks);

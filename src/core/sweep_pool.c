@@ -168,18 +168,20 @@ int
 sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int fd,
               const char *jpath, const long *ids, long nids, const unsigned char *done,
               long first, long step, long npending, struct hb_sweep_progress *pr, double t0,
-              int (*got_block)(void *, long, const char *, size_t), void *ctx, char *msg,
-              size_t n)
+              int (*got_block)(void *, long, const char *, size_t), void *ctx, int *ordered,
+              char *msg, size_t n)
 {
 	struct pool p;
 	struct worker_arg *wa = NULL;
 	struct result *held = NULL;   /* finished, not written yet, by id */
 	long nheld = 0;
 	pthread_t *th = NULL;
-	long got = 0, nth = 0;
+	long got = 0, nth = 0, last = -1;
 	int rc = HB_OK, cancelled = 0;
 
 	memset(&p, 0, sizeof p);
+	if (ordered != NULL)
+		*ordered = 1;
 	if (ids != NULL)
 		npending = nids;
 	if (npending <= 0)
@@ -270,6 +272,9 @@ sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int f
 		         (rc = got_block(ctx, r->id, r->b.p, r->b.len)) != HB_OK)
 			rc = hb_status_set(msg, n, rc, "%s: point %ld: no runs row", jpath, r->id);
 		else {
+			if (r->id < last && ordered != NULL)
+				*ordered = 0;
+			last = r->id;
 			got++;
 			pr->done++;
 			pr->failed += r->b.failed;

@@ -445,7 +445,7 @@ compute(struct refine_state *r, const struct hb_sweep_options *o, int fd, const 
 	qsort(r->pending, (size_t)r->npending, sizeof *r->pending, cmp_long);
 	pr->total += r->npending;
 	rc = sweep_compute(r->sw, o, fd, jpath, r->pending, r->npending, NULL, 0, 1, r->npending, pr, t0,
-	                   got_block, r, msg, n);
+	                   got_block, r, NULL, msg, n);
 	r->npending = 0;
 	return rc;
 }

@@ -377,7 +377,7 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 	struct doneset ds = { 0 };
 	long npending = 0;
 	char jpath[4200];
-	int fd = -1, rc, made = 0;
+	int fd = -1, rc, made = 0, ordered = 0;
 	double t0 = clock_seconds(CLOCK_MONOTONIC);
 
 	memset(&pr, 0, sizeof pr);
@@ -449,7 +449,7 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 		if (ds.count == 0)
 			made |= SWEEP_MADE_JOURNAL;   /* no point before: this call's */
 		rc = sweep_compute(sw, o, fd, jpath, NULL, 0, ds.bits, k, ns, npending, &pr, t0,
-		                   NULL, NULL, msg, n);
+		                   NULL, NULL, &ordered, msg, n);
 		if (close(fd) != 0 && rc == HB_OK)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 		fd = -1;
@@ -468,7 +468,10 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 		fd = -1;
 	}
 	if (ns == 1) {
-		if ((rc = sweep_merge_into(sw, o->dir, 0, o->sink, o->sink_ctx, msg, n)) == HB_OK &&
+		/* every point written by this call, in id order: the merge need not check */
+		int whole = ds.count == 0 && npending == np && ordered;
+
+		if ((rc = sweep_merge_into(sw, o->dir, 0, whole, o->sink, o->sink_ctx, msg, n)) == HB_OK &&
 		    unlink(jpath) != 0 &&
 		    errno != ENOENT)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
