@@ -6,14 +6,19 @@
  *
  * Journal.  Each shard appends to its own journal (points.journal for a
  * one-machine sweep, shard-K-of-N.journal otherwise) one block per point,
- * in the order the points complete: its collision rows "c,ID,...", then
+ * a grid's in id order (sweep_pool.c): its collision rows "c,ID,...", then
  * its runs row "r,ID,...", the whole block in one write(2) from the
  * calling thread.  A block counts once its runs row is complete (ends in a
  * newline); a SIGKILL can leave at most one partial block at the end, which
  * the next start cuts off before it appends.  Nothing is cached in memory
  * but one bit per point (the workers take the next id not in the journal
- * from those bits), and the merge keeps 8 bytes per point, so memory
+ * from those bits), and the merge reads sorted journals side by side (an
+ * index of 8 bytes a point only for journals out of order), so memory
  * stays flat in the number of points computed.
+ *
+ * Each point's scene is validated once, by its run (hb_sim_new); a refused
+ * point stops the sweep (HB_EINVAL) and what the call began is removed
+ * (sweep_refused_undo).
  *
  * The worker threads are in sweep_pool.c; a refined sweep (--refine) in
  * sweep_refine_run.c.
