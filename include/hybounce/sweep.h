@@ -5,7 +5,7 @@
  *
  *     struct hb_sweep *sw = hb_sweep_new(&scene, msg, sizeof msg);  // preset + --set
  *     hb_sweep_vary(sw, "law.c=1e8:1e10:50:log", msg, sizeof msg);
- *     hb_sweep_check(sw, msg, sizeof msg);           // every point valid?
+ *     hb_sweep_check(sw, msg, sizeof msg);           // every point valid? (optional)
  *     hb_sweep_run(sw, &opts, msg, sizeof msg);     // DIR/runs.csv, collisions.csv
  *     hb_sweep_free(sw);
  *
@@ -166,7 +166,9 @@ hb_sweep_npoints(const struct hb_sweep *sw);
 /*
  * Checks that every point's scene is valid (combinations included, e.g.
  * gamma in [-beta, beta] when both vary).  HB_EINVAL names the first bad
- * point, its values and the reason.
+ * point, its values and the reason.  hb_sweep_run checks each point once,
+ * in its run, with the same message: this is for refusing a sweep before
+ * anything runs (--emit), at the cost of a second check of every point.
  */
 int
 hb_sweep_check(const struct hb_sweep *sw, char *msg, size_t n);
@@ -277,9 +279,13 @@ hb_sweep_prepare_dir_with(const struct hb_sweep *sw, const char *dir, const char
  * A one-shard sweep then writes runs.csv and collisions.csv (hb_sweep_merge)
  * and removes its journal.  The journal is locked (flock) while the shard
  * runs: a second run of the same shard gets HB_EIO ("another process is
- * computing these points") and leaves it alone.  Returns HB_OK (failed points included),
- * HB_EDONE (cancelled, see sweep_options), HB_EINVAL (bad DIR), HB_EIO or
- * HB_ENOMEM.
+ * computing these points") and leaves it alone.  Each point's scene is
+ * checked once, in its run: a bad one stops the sweep with HB_EINVAL and
+ * hb_sweep_check's message, and what this call began (the folder, its
+ * sweep.preset, a journal that held no point) is removed, but for a shard
+ * of several.  Returns HB_OK (failed points included), HB_EDONE
+ * (cancelled, see sweep_options), HB_EINVAL (bad DIR, a bad point), HB_EIO
+ * or HB_ENOMEM.
  */
 int
 hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *msg, size_t n);

@@ -348,11 +348,16 @@ plot_draw_dir(const char *plot, const char *dir)
 /* ------------------------------------------------------------------ */
 /* Input                                                               */
 
-/* The preset, the --set values and the axes; NULL after printing why (exit 2). */
+/*
+ * The preset, the --set values and the axes; NULL after printing why (exit
+ * 2).  check: every point's scene checked now (--emit, which writes jobs
+ * and runs none); a sweep that runs checks each point once, in its run
+ * (hb_sim_new), and is refused with the same message.
+ */
 static struct hb_sweep *
 build(const char *preset, const char *const *sets, int nsets,
       const char *const *varies, int nvaries, const char *out, long max_points,
-      const char *refine, int error)
+      const char *refine, int error, int check)
 {
 	char path[4096], spec[4200], msg[4096], more[128];
 	struct hb_scene sc;
@@ -419,7 +424,7 @@ build(const char *preset, const char *const *sets, int nsets,
 		return NULL;
 	}
 	msg[0] = '\0';
-	if (hb_sweep_check(sw, msg, sizeof msg) != HB_OK) {
+	if (check && hb_sweep_check(sw, msg, sizeof msg) != HB_OK) {
 		fprintf(stderr, PROG ": %s\n", msg);
 		hb_sweep_free(sw);
 		return NULL;
@@ -656,7 +661,8 @@ sweep_main(int argc, char **argv)
 		             : "--sshlogin goes with --emit parallel");
 		goto done;
 	}
-	sw = build(argv[optind], sets, nsets, varies, nvaries, out, max_points, refine, error);
+	sw = build(argv[optind], sets, nsets, varies, nvaries, out, max_points, refine, error,
+	           emit != NULL);
 	if (sw == NULL)
 		goto done;      /* exit 2: build said why */
 	if (hb_sweep_refined(sw) && (emit != NULL || shard_n > 1)) {

@@ -585,25 +585,31 @@ sweep_point_values(const struct hb_sweep *sw, long id, struct hb_scene *out, cha
 	return HB_OK;
 }
 
+/* See sweep_impl.h. */
+int
+sweep_point_refused(const struct hb_sweep *sw, long id, const char *why, char *msg, size_t n)
+{
+	char vals[512] = "", t[64];
+	size_t l = 0;
+
+	for (int k = 0; k < sw->naxes && l < sizeof vals; k++)
+		l += (size_t)snprintf(vals + l, sizeof vals - l, "%s%s=%s", k ? " " : "",
+		                      sw->ax[k].key,
+		                      sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t));
+	return hb_status_set(msg, n, HB_EINVAL, "point %ld (%s): %s", id, vals, why);
+}
+
 int
 hb_sweep_point_scene(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n)
 {
-	char m[512], t[64];
+	char m[512];
 	int rc;
 
 	if ((rc = sweep_point_values(sw, id, out, msg, n)) != HB_OK)
 		return rc;
 	m[0] = '\0';
-	if (hb_scene_validate(out, m, sizeof m) != HB_OK) {
-		char vals[512] = "";
-		size_t l = 0;
-
-		for (int k = 0; k < sw->naxes && l < sizeof vals; k++)
-			l += (size_t)snprintf(vals + l, sizeof vals - l, "%s%s=%s", k ? " " : "",
-			                      sw->ax[k].key,
-			                      sweep_axis_text(&sw->ax[k], sweep_axis_index(sw, id, k), t, sizeof t));
-		return hb_status_set(msg, n, HB_EINVAL, "point %ld (%s): %s", id, vals, m);
-	}
+	if (hb_scene_validate(out, m, sizeof m) != HB_OK)
+		return sweep_point_refused(sw, id, m, msg, n);
 	return HB_OK;
 }
 

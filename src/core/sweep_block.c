@@ -162,32 +162,33 @@ sweep_wbuf_free(struct sweep_wbuf *w)
 
 /* See sweep_impl.h. */
 int
-sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, char **out,
-                      int *failed, char *msg, size_t n)
+sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
+                      struct sweep_block *out, char *msg, size_t n)
 {
 	double c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
 	struct hb_error_estimate est_store = { 0 }, none = { 0 }, *est = NULL;
-	struct sbuf b = { 0 };
+	struct sbuf b = { out->p, 0, out->cap, 0 };
 	struct hb_scene sc;
 	struct hb_sim *s;
 	char m[512], note[600];
 	FILE *f;
 	int rc;
 
-	*out = NULL;
+	out->len = 0;
+	out->failed = 0;
+	out->cpu = 0;
 	note[0] = '\0';
-	*failed = 0;
-	/* Not validated here: hb_sim_new validates (and hb_sweep_check did). */
+	/* Validated once, by hb_sim_new; its refusal names the point as hb_sweep_check does. */
 	if ((rc = sweep_point_values(sw, id, &sc, msg, n)) != HB_OK)
 		return rc;
 	m[0] = '\0';
 	s = hb_sim_new(&sc, m, sizeof m);
 	if (s == NULL)
-		return hb_status_set(msg, n, HB_EINVAL, "point %ld: %s", id, m[0] ? m : "no memory");
+		return sweep_point_refused(sw, id, m[0] ? m : "no memory", msg, n);
 	(void)hb_sim_run(s);
-	*failed = hb_sim_end(s) == HB_SIM_END_FAIL;
+	out->failed = hb_sim_end(s) == HB_SIM_END_FAIL;
 	/* --error: the same estimate as hybounce --batch --error (error.h) */
-	if (sw->error && !*failed) {
+	if (sw->error && !out->failed) {
 		m[0] = '\0';
 		if (hb_error_estimate(s, NULL, &est_store, m, sizeof m) == HB_OK)
 			est = &est_store;
@@ -233,18 +234,17 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, 
 			p += l + (e != NULL);
 		}
 	}
-	runs_row(&b, sw, id, s, est, note, clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0);
+	out->cpu = clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
+	runs_row(&b, sw, id, s, est, note, out->cpu);
 	hb_error_free(&est_store);
 	hb_sim_free(s);
-	if (b.oom || b.p == NULL) {
-		free(b.p);
+	/* the buffer is the caller's, grown or not, whatever happened */
+	out->p = b.p;
+	out->cap = b.cap;
+	if (b.oom || b.p == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-	}
 	b.p[b.len] = '\0';
-	/* the block waits for the writer at its length, not the buffer's */
-	*out = b.len + 1 < b.cap ? realloc(b.p, b.len + 1) : b.p;
-	if (*out == NULL)
-		*out = b.p;
+	out->len = b.len;
 	return HB_OK;
 }
 
@@ -253,8 +253,13 @@ hb_sweep_point_block(const struct hb_sweep *sw, long id, char **out, int *failed
                   char *msg, size_t n)
 {
 	struct sweep_wbuf w = { 0 };
-	int rc = sweep_point_block_buf(sw, id, &w, out, failed, msg, n);
+	struct sweep_block b = { 0 };
+	int rc = sweep_point_block_buf(sw, id, &w, &b, msg, n);
 
 	sweep_wbuf_free(&w);
+	*failed = b.failed;
+	*out = rc == HB_OK ? b.p : NULL;
+	if (rc != HB_OK)
+		free(b.p);
 	return rc;
 }

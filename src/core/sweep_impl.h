@@ -139,14 +139,16 @@ sweep_refine_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, ch
  * below np that done does not hold, npending of them), appending each
  * block to the journal fd (jpath in messages) in the order they complete,
  * then calling got(ctx, id, blk, len) when got is not NULL; pr is
- * counted and reported (o->progress).  Returns HB_OK, HB_EDONE (cancelled;
- * the points in hand are journaled), or an error with msg.
+ * counted and reported (o->progress).  *ordered (may be NULL): 1 when every
+ * block went to the journal in increasing id order.  Returns HB_OK, HB_EDONE
+ * (cancelled; the points in hand are journaled), or an error with msg.
  */
 int
 sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int fd,
               const char *jpath, const long *ids, long nids, const unsigned char *done,
               long first, long step, long npending, struct hb_sweep_progress *pr, double t0,
-              int (*got)(void *, long, const char *, size_t), void *ctx, char *msg, size_t n);
+              int (*got)(void *, long, const char *, size_t), void *ctx, int *ordered,
+              char *msg, size_t n);
 
 /* The whole of a file into a malloc'd string (*len bytes), read once and
  * bounded (input.h).  NULL with msg on failure; errno ENOENT when absent. */
@@ -166,6 +168,24 @@ sweep_journal_scan(const char *path, long npoints, int trunc,
 /* write(2) of the whole of p (EINTR retried); 0, or -1 with errno. */
 int
 sweep_write_all(int fd, const char *p, size_t len);
+
+/*
+ * hb_sweep_prepare_dir_with, and what it made (*made): SWEEP_MADE_DIR, the
+ * folder; SWEEP_MADE_SPEC, its sweep.preset.
+ */
+enum { SWEEP_MADE_DIR = 1, SWEEP_MADE_SPEC = 2, SWEEP_MADE_JOURNAL = 4 };
+int
+sweep_prepare_dir(const struct hb_sweep *sw, const char *dir, const char *provenance, int *made,
+                  char *msg, size_t n);
+
+/*
+ * After a point was refused (HB_EINVAL: bad input), removes what this call
+ * made (made: SWEEP_MADE_*; SWEEP_MADE_JOURNAL: the journal jpath held no
+ * point before), so that a refused sweep leaves no folder behind, as one
+ * refused before it runs.
+ */
+void
+sweep_refused_undo(const char *dir, int made, const char *jpath);
 
 /* DIR/points.journal for one shard, DIR/shard-K-of-N.journal otherwise. */
 void
@@ -195,21 +215,64 @@ sweep_wbuf_free(struct sweep_wbuf *w);
 int
 sweep_point_values(const struct hb_sweep *sw, long id, struct hb_scene *out, char *msg, size_t n);
 
-/* hb_sweep_point_block with w's buffers; the scene is validated by hb_sim_new alone. */
+/*
+ * HB_EINVAL with the message of a point whose scene is refused: "point ID
+ * (KEY=VALUE ...): why" (hb_sweep_check's, and a run's).
+ */
 int
-sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w, char **out,
-                      int *failed, char *msg, size_t n);
+sweep_point_refused(const struct hb_sweep *sw, long id, const char *why, char *msg, size_t n);
+
+/*
+ * hb_sweep_point_block with w's buffers.  The scene is validated once, by
+ * hb_sim_new: a refused point is HB_EINVAL with sweep_point_refused's
+ * message (a sweep that runs is not checked point by point before).
+ */
+struct sweep_block {
+	char *p;        /* the block, len bytes and a '\0', in a buffer of cap bytes */
+	size_t len, cap;
+	int failed;     /* the run failed (a row with its message) */
+	double cpu;     /* the point's CPU time, s (its runs row's cpu_s) */
+};
+
+/* The block is built in b->p (cap bytes, may be NULL), grown as needed;
+ * the buffer stays the caller's whatever the outcome. */
+int
+sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
+                      struct sweep_block *b, char *msg, size_t n);
 
 /* The base scene of a sweep (the preset and --set, before any axis). */
 const struct hb_scene *
 sweep_base(const struct hb_sweep *sw);
 
+/* The shards of a folder (sweep_shards.c). */
+
+/* The names of the journals in dir (malloc'd, *count of them; sweep_names_free). */
+int
+sweep_journals_list(const char *dir, char ***names, int *count, char *msg, size_t n);
+void
+sweep_names_free(char **names, int count);
+
+/* The shard count of the journals when they all name the same one, else 0. */
+long
+sweep_shards_of_names(char *const *names, int count);
+
+/*
+ * HB_EINVAL with "2 of 4 shards incomplete: shard 1 (not started), shard 3
+ * (3 of 5 points); 8 of 20 points missing" in msg, from have(ctx, id).
+ */
+int
+sweep_shards_missing_msg(const char *dir, long np, long ns, int (*have)(const void *, long),
+                         const void *ctx, long missing, char *msg, size_t n);
+
 /*
  * hb_sweep_merge_shards for a sweep in hand, which DIR/sweep.preset holds
  * (hb_sweep_prepare_dir checked it): its values are not made again.
+ * whole: the folder's one journal, points.journal, is known to hold every
+ * point once, in id order (hb_sweep_run wrote it so in one go), so it is
+ * not read a first time to find that out.
  */
 int
-sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards,
+sweep_merge_into(const struct hb_sweep *sw, const char *dir, long nshards, int whole,
                  const struct hb_sweep_sink *sink, void *ctx, char *msg, size_t n);
 
 #endif

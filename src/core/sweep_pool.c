@@ -4,9 +4,11 @@
  * sweep_compute).
  *
  * Workers take the next id under a mutex, run the point on their own scene
- * and sim (hb_sweep_point_block), and queue the block (the queue is
+ * and sim (sweep_point_block_buf), and queue the block (the queue is
  * unbounded: a worker never waits for the writer); the calling thread
- * writes blocks to the journal and reports progress.  The mutex is held for
+ * writes blocks to the journal, reports progress and hands the result, its
+ * block's buffer with it, back to the workers (the spare list), so that a
+ * point in steady state allocates nothing of the sweep's own.  The mutex is held for
  * a few instructions per point and the writer is signalled after it is
  * released.  The results do not depend on the number of threads or the
  * order of completion: each point's bytes come from its own run alone, and
@@ -30,9 +32,8 @@
 struct result {
 	struct result *next;
 	long id;
-	char *blk;
-	int failed, rc;
-	double cpu;
+	struct sweep_block b;   /* its buffer reused by the next point that takes this result */
+	int rc;
 	char msg[256];
 };
 
@@ -46,6 +47,7 @@ struct pool {
 	long next, step, np;        /* the next id (index of ids) to look at, the shard count, the points */
 	int stop;
 	struct result *head, *tail;
+	struct result *spare;       /* written results, their buffers kept for the next points */
 	long *busy;                 /* each worker's point, LONG_MAX: none */
 };
 
@@ -84,7 +86,6 @@ worker(void *arg)
 	for (;;) {
 		struct result *r;
 		long id;
-		double c0;
 
 		pthread_mutex_lock(&p->mu);
 		if (p->stop || (id = pool_take(p)) < 0) {
@@ -93,17 +94,20 @@ worker(void *arg)
 			return NULL;
 		}
 		p->busy[w] = id;
+		if ((r = p->spare) != NULL)
+			p->spare = r->next;
 		pthread_mutex_unlock(&p->mu);
 
-		r = malloc(sizeof *r);   /* not calloc: msg is 256 bytes to clear */
-		c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
+		if (r == NULL && (r = malloc(sizeof *r)) != NULL) {
+			/* not calloc: msg is 256 bytes to clear */
+			r->b.p = NULL;
+			r->b.cap = 0;
+		}
 		if (r != NULL) {
 			r->next = NULL;
 			r->msg[0] = '\0';
 			r->id = id;
-			r->rc = sweep_point_block_buf(p->sw, id, &wb, &r->blk, &r->failed, r->msg,
-			                          sizeof r->msg);
-			r->cpu = clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
+			r->rc = sweep_point_block_buf(p->sw, id, &wb, &r->b, r->msg, sizeof r->msg);
 		}
 		pthread_mutex_lock(&p->mu);
 		p->busy[w] = LONG_MAX;
@@ -164,18 +168,20 @@ int
 sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int fd,
               const char *jpath, const long *ids, long nids, const unsigned char *done,
               long first, long step, long npending, struct hb_sweep_progress *pr, double t0,
-              int (*got_block)(void *, long, const char *, size_t), void *ctx, char *msg,
-              size_t n)
+              int (*got_block)(void *, long, const char *, size_t), void *ctx, int *ordered,
+              char *msg, size_t n)
 {
 	struct pool p;
 	struct worker_arg *wa = NULL;
 	struct result *held = NULL;   /* finished, not written yet, by id */
 	long nheld = 0;
 	pthread_t *th = NULL;
-	long got = 0, nth = 0;
+	long got = 0, nth = 0, last = -1;
 	int rc = HB_OK, cancelled = 0;
 
 	memset(&p, 0, sizeof p);
+	if (ordered != NULL)
+		*ordered = 1;
 	if (ids != NULL)
 		npending = nids;
 	if (npending <= 0)
@@ -260,23 +266,26 @@ sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int f
 		pthread_mutex_unlock(&p.mu);
 		if (r->rc != HB_OK)
 			rc = hb_status_set(msg, n, r->rc, "%s", r->msg);
-		else if (sweep_write_all(fd, r->blk, strlen(r->blk)) != 0)
+		else if (sweep_write_all(fd, r->b.p, r->b.len) != 0)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 		else if (got_block != NULL &&
-		         (rc = got_block(ctx, r->id, r->blk, strlen(r->blk))) != HB_OK)
+		         (rc = got_block(ctx, r->id, r->b.p, r->b.len)) != HB_OK)
 			rc = hb_status_set(msg, n, rc, "%s: point %ld: no runs row", jpath, r->id);
 		else {
+			if (r->id < last && ordered != NULL)
+				*ordered = 0;
+			last = r->id;
 			got++;
 			pr->done++;
-			pr->failed += r->failed;
-			pr->point_cpu += r->cpu;
+			pr->failed += r->b.failed;
+			pr->point_cpu += r->b.cpu;
 			pr->elapsed = clock_seconds(CLOCK_MONOTONIC) - t0;
 			if (o->progress)
 				o->progress(o->ctx, pr);
 		}
-		free(r->blk);
-		free(r);
 		pthread_mutex_lock(&p.mu);
+		r->next = p.spare;
+		p.spare = r;
 	}
 	p.stop = p.stop ? p.stop : rc != HB_OK || cancelled;
 	pthread_mutex_unlock(&p.mu);
@@ -294,15 +303,22 @@ threads_done:
 
 		/* Stopped: the points that were finishing are kept too. */
 		if (cancelled && rc == HB_OK && r->rc == HB_OK) {
-			if (sweep_write_all(fd, r->blk, strlen(r->blk)) != 0)
+			if (sweep_write_all(fd, r->b.p, r->b.len) != 0)
 				rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 			else {
 				pr->done++;
-				pr->failed += r->failed;
+				pr->failed += r->b.failed;
 			}
 		}
 		held = r->next;
-		free(r->blk);
+		free(r->b.p);
+		free(r);
+	}
+	while (p.spare) {
+		struct result *r = p.spare;
+
+		p.spare = r->next;
+		free(r->b.p);
 		free(r);
 	}
 	if (cancelled && rc == HB_OK)

@@ -445,7 +445,7 @@ compute(struct refine_state *r, const struct hb_sweep_options *o, int fd, const 
 	qsort(r->pending, (size_t)r->npending, sizeof *r->pending, cmp_long);
 	pr->total += r->npending;
 	rc = sweep_compute(r->sw, o, fd, jpath, r->pending, r->npending, NULL, 0, 1, r->npending, pr, t0,
-	                   got_block, r, msg, n);
+	                   got_block, r, NULL, msg, n);
 	r->npending = 0;
 	return rc;
 }
@@ -460,14 +460,14 @@ sweep_refine_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, ch
 	long *cells = NULL, ncells = 0, *next = NULL, *e = NULL, ne = 0, st[2], nrows = 0;
 	long np = hb_sweep_npoints(sw);
 	char jpath[4200], path[4200];
-	int fd = -1, rc, d = sw->naxes;
+	int fd = -1, rc, d = sw->naxes, made = 0, computing = 0;
 	double t0 = clock_seconds(CLOCK_MONOTONIC);
 
 	memset(&r, 0, sizeof r);
 	memset(&pr, 0, sizeof pr);
 	r.sw = sw;
 	r.rfd = -1;
-	if ((rc = hb_sweep_prepare_dir_with(sw, o->dir, o->provenance, msg, n)) != HB_OK)
+	if ((rc = sweep_prepare_dir(sw, o->dir, o->provenance, &made, msg, n)) != HB_OK)
 		return rc;
 	sweep_journal_name(jpath, sizeof jpath, o->dir, 0, 1);
 	if (access(jpath, F_OK) != 0 && errno == ENOENT) {
@@ -507,11 +507,14 @@ sweep_refine_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, ch
 	if (rc != HB_OK)
 		goto out;
 	r.jsize = (int64_t)lseek(fd, 0, SEEK_END);
+	if (r.count == 0)
+		made |= SWEEP_MADE_JOURNAL;   /* no point before: this call's */
 	pr.resumed = pr.done = pr.total = (long)r.count;
 	if (o->progress)
 		o->progress(o->ctx, &pr);
 
 	strides(sw, st);
+	computing = 1;   /* an HB_EINVAL from here to the files is a refused point */
 	/* Round 0: the grid, then its mixed cells. */
 	for (long g = 0; g < sweep_refine_grid_points(sw) && rc == HB_OK; g++)
 		rc = request(&r, sweep_refine_grid_id(sw, g), 0);
@@ -571,6 +574,7 @@ sweep_refine_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, ch
 		next = NULL;
 		ncells = nn;
 	}
+	computing = 0;
 	if (close(fd) != 0) {
 		fd = -1;
 		rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
@@ -601,6 +605,9 @@ sweep_refine_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, ch
 				s->resolution = 1.0 / (double)(sw->ax[k].n - 1);
 	}
 out:
+	/* A refused point (bad input): a sweep begun by this call leaves nothing. */
+	if (rc == HB_EINVAL && computing && (made & SWEEP_MADE_JOURNAL))
+		sweep_refused_undo(o->dir, made, jpath);
 	if (fd >= 0)
 		close(fd);
 	if (r.rfd >= 0)

@@ -6,14 +6,19 @@
  *
  * Journal.  Each shard appends to its own journal (points.journal for a
  * one-machine sweep, shard-K-of-N.journal otherwise) one block per point,
- * in the order the points complete: its collision rows "c,ID,...", then
+ * a grid's in id order (sweep_pool.c): its collision rows "c,ID,...", then
  * its runs row "r,ID,...", the whole block in one write(2) from the
  * calling thread.  A block counts once its runs row is complete (ends in a
  * newline); a SIGKILL can leave at most one partial block at the end, which
  * the next start cuts off before it appends.  Nothing is cached in memory
  * but one bit per point (the workers take the next id not in the journal
- * from those bits), and the merge keeps 8 bytes per point, so memory
+ * from those bits), and the merge reads sorted journals side by side (an
+ * index of 8 bytes a point only for journals out of order), so memory
  * stays flat in the number of points computed.
+ *
+ * Each point's scene is validated once, by its run (hb_sim_new); a refused
+ * point stops the sweep (HB_EINVAL) and what the call began is removed
+ * (sweep_refused_undo).
  *
  * The worker threads are in sweep_pool.c; a refined sweep (--refine) in
  * sweep_refine_run.c.
@@ -152,16 +157,29 @@ int
 hb_sweep_prepare_dir_with(const struct hb_sweep *sw, const char *dir, const char *provenance,
                           char *msg, size_t n)
 {
+	int made;
+
+	return sweep_prepare_dir(sw, dir, provenance, &made, msg, n);
+}
+
+/* See sweep_impl.h. */
+int
+sweep_prepare_dir(const struct hb_sweep *sw, const char *dir, const char *provenance, int *made,
+                  char *msg, size_t n)
+{
 	char path[4096];
 	struct stat st;
 	size_t len, have_len;
 	char *want, *have;
 	int rc;
 
+	*made = 0;
 	if (dir == NULL || dir[0] == '\0')
 		return hb_status_set(msg, n, HB_EINVAL, "--out: empty folder name; expected a "
 		                  "folder for runs.csv and collisions.csv");
-	if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+	if (mkdir(dir, 0777) == 0)
+		*made |= SWEEP_MADE_DIR;
+	else if (errno != EEXIST)
 		return hb_status_set(msg, n, HB_EINVAL, "--out %s: cannot create the folder: %s",
 		                  dir, strerror(errno));
 	if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
@@ -224,7 +242,25 @@ hb_sweep_prepare_dir_with(const struct hb_sweep *sw, const char *dir, const char
 	}
 	rc = hb_atomic_write_file(path, want, len, msg, n);
 	free(want);
+	if (rc == HB_OK)
+		*made |= SWEEP_MADE_SPEC;
 	return rc;
+}
+
+/* See sweep_impl.h. */
+void
+sweep_refused_undo(const char *dir, int made, const char *jpath)
+{
+	char path[4096];
+
+	if (made & SWEEP_MADE_JOURNAL)
+		(void)unlink(jpath);
+	if (made & SWEEP_MADE_SPEC) {
+		snprintf(path, sizeof path, "%s/" SWEEP_SPEC_NAME, dir);
+		(void)unlink(path);
+	}
+	if (made & SWEEP_MADE_DIR)
+		(void)rmdir(dir);   /* only when empty: nothing of anyone else's goes */
 }
 
 /* ------------------------------------------------------------------ */
@@ -346,7 +382,7 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 	struct doneset ds = { 0 };
 	long npending = 0;
 	char jpath[4200];
-	int fd = -1, rc;
+	int fd = -1, rc, made = 0, ordered = 0;
 	double t0 = clock_seconds(CLOCK_MONOTONIC);
 
 	memset(&pr, 0, sizeof pr);
@@ -363,7 +399,7 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 			                     "accepted: --refine without --shard");
 		return sweep_refine_run(sw, o, msg, n);
 	}
-	if ((rc = hb_sweep_prepare_dir_with(sw, o->dir, o->provenance, msg, n)) != HB_OK)
+	if ((rc = sweep_prepare_dir(sw, o->dir, o->provenance, &made, msg, n)) != HB_OK)
 		return rc;
 	sweep_journal_name(jpath, sizeof jpath, o->dir, k, ns);
 	if (ns == 1 && access(jpath, F_OK) != 0 && errno == ENOENT) {
@@ -415,11 +451,20 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 				rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 			goto out;
 		}
+		if (ds.count == 0)
+			made |= SWEEP_MADE_JOURNAL;   /* no point before: this call's */
 		rc = sweep_compute(sw, o, fd, jpath, NULL, 0, ds.bits, k, ns, npending, &pr, t0,
-		                   NULL, NULL, msg, n);
+		                   NULL, NULL, &ordered, msg, n);
 		if (close(fd) != 0 && rc == HB_OK)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));
 		fd = -1;
+		/*
+		 * A refused point (bad input): a sweep begun by this call leaves
+		 * nothing.  A shard leaves what it made: the others may be running
+		 * in the folder (--emit checks every point before it writes a job).
+		 */
+		if (rc == HB_EINVAL && ns == 1)
+			sweep_refused_undo(o->dir, made, jpath);
 		if (rc != HB_OK)
 			goto out;
 	}
@@ -428,7 +473,10 @@ hb_sweep_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, char *
 		fd = -1;
 	}
 	if (ns == 1) {
-		if ((rc = sweep_merge_into(sw, o->dir, 0, o->sink, o->sink_ctx, msg, n)) == HB_OK &&
+		/* every point written by this call, in id order: the merge need not check */
+		int whole = ds.count == 0 && npending == np && ordered;
+
+		if ((rc = sweep_merge_into(sw, o->dir, 0, whole, o->sink, o->sink_ctx, msg, n)) == HB_OK &&
 		    unlink(jpath) != 0 &&
 		    errno != ENOENT)
 			rc = hb_status_set(msg, n, HB_EIO, "%s: %s", jpath, strerror(errno));

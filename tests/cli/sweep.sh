@@ -132,6 +132,23 @@ rc=$?
 if [ $rc -eq 2 ] && grep -q 'point 0 (law.beta=1000000000 law.gamma=2000000000)' "$T/err" && [ ! -e "$T/combo" ]; then
 	ok "an invalid combination of values is exit 2 and names the point"
 else notok "an invalid combination of values is exit 2 (exit $rc)" "$T/err"; fi
+# Each point is checked once, in its run: a bad point after good ones is
+# refused with the same message, and what the sweep had begun goes (an
+# empty folder given stays, empty).
+mkdir "$T/combo2"
+"$BIN" sweep permanent-contact-bwshccl --vary "law.beta=5e9,1e9" --vary "law.gamma=2e9" \
+    --jobs 1 --out "$T/combo1" 2>"$T/err1"
+rc1=$?
+"$BIN" sweep permanent-contact-bwshccl --vary "law.beta=5e9,1e9" --vary "law.gamma=2e9" \
+    --jobs 2 --out "$T/combo2" 2>"$T/err2"
+rc2=$?
+if [ $rc1 -eq 2 ] && [ $rc2 -eq 2 ] &&
+   grep -q 'point 1 (law.beta=1000000000 law.gamma=2000000000): law.gamma: ' "$T/err1" &&
+   [ "$(grep '^hybounce sweep: ' "$T/err1")" = "$(grep '^hybounce sweep: ' "$T/err2")" ] &&
+   [ ! -e "$T/combo1" ] && [ -d "$T/combo2" ] &&
+   [ -z "$(ls -A "$T/combo2")" ]; then
+	ok "a bad point after good ones: exit 2, the same message, nothing left behind"
+else notok "a bad point after good ones (exit $rc1, $rc2; $(ls -A "$T/combo2" 2>&1 | tr '\n' ' '))" "$T/err1"; fi
 
 # 8. A point that fails numerically is a row with its message, not a failed sweep.
 "$BIN" sweep steel-on-bitumen --vary "run.h_max=0,1e-300" --set run.T=0.1 --quiet \

@@ -129,6 +129,14 @@ for args in "--refine nosuch" "--refine e_first:0" "--refine e_first:2" "--refin
 	else notok "$args: exit 2 (got $rc)" "$T/err"; fi
 	rm -rf "$T/bad"
 done
+# A refused point of the grid (each is validated in its run): exit 2, named, nothing left.
+"$BIN" sweep permanent-contact-bwshccl --vary "law.beta=5e9:1e9:3" --set law.gamma=2e9 \
+    --refine e_first:0.1 --jobs 2 --quiet --out "$T/rbad" 2>"$T/err"
+rc=$?
+if [ $rc -eq 2 ] && [ ! -e "$T/rbad" ] &&
+   grep -q 'point 16 (law.beta=1000000000): law.gamma: ' "$T/err"; then
+	ok "a refined sweep with a bad point: exit 2 naming it, no folder left"
+else notok "a refined sweep with a bad point (exit $rc)" "$T/err"; fi
 "$BIN" sweep --merge "$T/r" >/dev/null 2>"$T/err"
 if [ $? -ne 0 ] && grep -q 'refined sweep' "$T/err"; then
 	ok "--merge of a refined folder says the folder's own command resumes it"
