@@ -139,7 +139,6 @@ def sweep(base, vary=None, jobs=None, dir=None, max_points=None, error=False):  
         lib.hb_sweep_error_from_preset(sw, _b(run.preset_text))
     if error:
         lib.hb_sweep_set_error(sw, 1)
-    check(lib.hb_sweep_check(sw, msg, MSG), msg)
     n = lib.hb_sweep_runs_header(sw, ffi.NULL, 0)
     hdr = ffi.new("char[]", n + 1)
     lib.hb_sweep_runs_header(sw, hdr, n + 1)

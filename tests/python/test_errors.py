@@ -43,6 +43,12 @@ def test_a_bad_sweep_or_fit_raises_with_the_message():
         hybounce.fit("steel-on-bitumen", [0.05, 0.13, 0.2], ["law.nope"])
 
 
+def test_a_sweep_with_a_bad_point_raises_naming_it():
+    # each point is validated once, where it runs: the error names the point
+    with pytest.raises(hybounce.InputError, match=r"point 1 \(law\.beta=1000000000 law\.gamma=2000000000\): law\.gamma"):
+        hybounce.sweep("permanent-contact-bwshccl", ["law.beta=5e9,1e9", "law.gamma=2e9"], jobs=1)
+
+
 def test_reading_before_a_run_is_an_error():
     with pytest.raises(hybounce.HybounceError, match="run()"):
         hybounce.Run("steel-on-bitumen").collisions
