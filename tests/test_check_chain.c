@@ -24,15 +24,11 @@
 static struct hb_sim *
 cradle(const char *law)
 {
-	char ini[1024];
+	struct hb_scene sc;
 
-	snprintf(ini, sizeof ini,
-	         "[scene]\nname = cradle\nlaw = %s\n"
-	         "[body1]\nE = 200 GPa\nnu = 0.3\nrho = 7800 kg/m^3\nR = 10 mm\n%s"
-	         "[chain]\nn = 3\nspacing = 1 mm\n[striker]\nv = -1 m/s\n[loads]\ng = 0\n"
-	         "[run]\nT = 0.01\nrtol = 1e-12\natol = 1e-14\n",
-	         law, strcmp(law, "shccl") == 0 ? "[law]\nc = 2e7\n" : "");
-	return run_ini(ini);
+	steel_chain(&sc, law, strcmp(law, "shccl") == 0 ? "c = 2e7\n" : "", "n = 3\nspacing = 1 mm",
+	            -1.0, 0.0, 0.01);
+	return run_scene(&sc);
 }
 
 static void
@@ -92,10 +88,7 @@ Test(check_chain, elastic_contact_in_progress_stores_the_lost_energy)
 	struct hb_check_chain r;
 	char msg[1400];
 
-	scene_from("[scene]\nname = cradle\nlaw = hertz\n"
-	           "[body1]\nE = 200 GPa\nnu = 0.3\nrho = 7800 kg/m^3\nR = 10 mm\n"
-	           "[chain]\nn = 3\nspacing = 1 mm\n[striker]\nv = -1 m/s\n[loads]\ng = 0\n"
-	           "[run]\nT = 1.01 ms\nrtol = 1e-12\natol = 1e-14\n", &sc);
+	steel_chain(&sc, "hertz", "", "n = 3\nspacing = 1 mm", -1.0, 0.0, 1.01e-3);
 	s = run_scene(&sc);
 	cr_assert_eq(s->ifc[1].q != 0, 1, "the striker's contact is not in progress at the end");
 	cr_assert_eq(hb_check_chain(s, &r, msg, sizeof msg), 0, "%s", msg);

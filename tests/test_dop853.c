@@ -12,59 +12,12 @@
 #include <gsl/gsl_odeiv2.h>
 
 #include "step_dop853.h"
-
-static long nfev;
-
-/* y1' = y1 cos t (y1 = exp(sin t)); y2' = y3, y3' = -y2 (y2 = sin t, y3 = cos t). */
-static int
-f(double t, const double y[], double dy[], void *params)
-{
-	(void)params;
-	nfev++;
-	dy[0] = y[0] * cos(t);
-	dy[1] = y[2];
-	dy[2] = -y[1];
-	return GSL_SUCCESS;
-}
-
-static void
-exact(double t, double y[3])
-{
-	y[0] = exp(sin(t));
-	y[1] = sin(t);
-	y[2] = cos(t);
-}
-
-static double
-maxerr(double t, const double y[3])
-{
-	double e[3];
-
-	exact(t, e);
-	return fmax(fabs(y[0] - e[0]), fmax(fabs(y[1] - e[1]), fabs(y[2] - e[2])));
-}
-
-/* Global error at t = 2 with n fixed steps. */
-static double
-fixed_steps(int n)
-{
-	gsl_odeiv2_system sys = { f, NULL, 3, NULL };
-	gsl_odeiv2_step *st = gsl_odeiv2_step_alloc(hb_step_dop853, 3);
-	double y[3], yerr[3], t = 0.0, h = 2.0 / n;
-	int i;
-
-	exact(0.0, y);
-	for (i = 0; i < n; i++) {
-		cr_assert_eq(gsl_odeiv2_step_apply(st, t, h, y, yerr, NULL, NULL, &sys), GSL_SUCCESS);
-		t = (i + 1) * h;
-	}
-	gsl_odeiv2_step_free(st);
-	return maxerr(2.0, y);
-}
+#include "steptest.h"
 
 Test(dop853, order_8)
 {
-	double e1 = fixed_steps(8), e2 = fixed_steps(16), order = log2(e1 / e2);
+	double e1 = fixed_steps(hb_step_dop853, 2.0, 8), e2 = fixed_steps(hb_step_dop853, 2.0, 16);
+	double order = log2(e1 / e2);
 
 	cr_expect(order > 7.5 && order < 9.0, "observed order %.3f (errors %.3g, %.3g)", order, e1, e2);
 	cr_expect_lt(e2, 1e-9, "error with 16 steps %.3g", e2);
@@ -137,27 +90,9 @@ Test(dop853, first_same_as_last)
 /* Under GSL's driver with its standard control: DOP853 and rk8pd agree with the solution. */
 Test(dop853, agrees_with_rk8pd)
 {
-	const gsl_odeiv2_step_type *types[2] = { hb_step_dop853, gsl_odeiv2_step_rk8pd };
-	gsl_odeiv2_system sys = { f, NULL, 3, NULL };
-	double yend[2][3];
 	long evals[2];
-	int k;
 
-	for (k = 0; k < 2; k++) {
-		gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, types[k], 1e-3, 1e-12, 1e-12);
-		double t = 0.0, y[3];
-
-		exact(0.0, y);
-		nfev = 0;
-		cr_assert_eq(gsl_odeiv2_driver_apply(d, &t, 20.0, y), GSL_SUCCESS);
-		evals[k] = nfev;
-		cr_expect_lt(maxerr(20.0, y), 1e-9, "%s: error %.3g at t = 20", types[k]->name,
-		             maxerr(20.0, y));
-		memcpy(yend[k], y, sizeof y);
-		gsl_odeiv2_driver_free(d);
-	}
-	cr_expect_lt(fabs(yend[0][0] - yend[1][0]), 1e-9);
-	cr_expect_lt(fabs(yend[0][1] - yend[1][1]), 1e-9);
+	agrees_with_gsl_rk8pd(hb_step_dop853, evals);
 	cr_expect_gt(evals[0], 0);
 	cr_expect_gt(evals[1], 0);
 }

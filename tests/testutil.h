@@ -156,4 +156,56 @@ run_ini(const char *ini)
 	return run_scene(&sc);
 }
 
+/*
+ * Steel balls (R 10 mm) in a chain: LAW between them with LAWKEYS (a [law]
+ * section's lines, "" for none), the [chain] lines CHAIN, the top ball
+ * struck at v (m/s), gravity g (m/s^2), run for T (s) at rtol 1e-12, atol
+ * 1e-14.  Fails the test on error.
+ */
+static inline void
+steel_chain(struct hb_scene *sc, const char *law, const char *lawkeys, const char *chain, double v,
+            double g, double T)
+{
+	char ini[2048];
+
+	snprintf(ini, sizeof ini,
+	         "[scene]\nname = chain\nlaw = %s\n"
+	         "[body1]\nE = 200 GPa\nnu = 0.3\nrho = 7800 kg/m^3\nR = 10 mm\n%s%s"
+	         "[chain]\n%s\n[striker]\nv = %.17g\n[loads]\ng = %.17g\n"
+	         "[run]\nT = %.17g\nrtol = 1e-12\natol = 1e-14\n",
+	         law, *lawkeys ? "[law]\n" : "", lawkeys, chain, v, g, T);
+	scene_from(ini, sc);
+}
+
+/*
+ * Relative tolerances of a comparison of two runs' collisions, a field
+ * each (0: that field is not compared).
+ */
+struct coll_tol {
+	double te, td, vi, e, xcmax, Fcmax;
+};
+
+/* Run got has as many collisions as run want, each the same within tol. */
+static inline void
+assert_collisions_match(const struct hb_sim *got, const struct hb_sim *want, struct coll_tol tol)
+{
+	cr_assert_eq(hb_sim_ncollisions(got), hb_sim_ncollisions(want));
+	for (size_t i = 0; i < hb_sim_ncollisions(got); i++) {
+		const struct hb_collision *a = hb_sim_collision(got, i), *b = hb_sim_collision(want, i);
+
+		if (tol.te > 0)
+			assert_rel(a->te, b->te, tol.te);
+		if (tol.td > 0)
+			assert_rel(a->td, b->td, tol.td);
+		if (tol.vi > 0)
+			assert_rel(a->vi, b->vi, tol.vi);
+		if (tol.e > 0)
+			assert_rel(a->e, b->e, tol.e);
+		if (tol.xcmax > 0)
+			assert_rel(a->xcmax, b->xcmax, tol.xcmax);
+		if (tol.Fcmax > 0)
+			assert_rel(a->Fcmax, b->Fcmax, tol.Fcmax);
+	}
+}
+
 #endif

@@ -24,22 +24,7 @@
 #include "batch_bodies.h"
 #include "report.h"
 #include "cnum.h"
-
-/* PATH with the extension of its last component replaced by ".preset" (as the CSV export does). */
-static int
-beside(const char *path, char *out, size_t n)
-{
-	const char *slash = strrchr(path, '/');
-	const char *base = slash != NULL ? slash + 1 : path;
-	const char *dot = strrchr(base, '.');
-	size_t stem = dot != NULL && dot != base ? (size_t)(dot - path) : strlen(path);
-
-	if (stem + 8 > n)
-		return -1;
-	memcpy(out, path, stem);
-	strcpy(out + stem, ".preset");
-	return 0;
-}
+#include "csv_impl.h" /* csv_scene_path: the scene beside an export (src/core) */
 
 int
 batch_bodies_check(struct hb_outputs *pol, const char *path, const char *trace, const char *coll,
@@ -56,7 +41,7 @@ batch_bodies_check(struct hb_outputs *pol, const char *path, const char *trace, 
 	    (coll != NULL && hb_outputs_add(pol, coll, "--collisions", msg, n) != HB_OK))
 		return -1;
 	if ((trace != NULL || coll != NULL) &&
-	    beside(trace != NULL ? trace : coll, scene, sizeof scene) == 0 &&
+	    csv_scene_path(trace != NULL ? trace : coll, scene, sizeof scene) == 0 &&
 	    hb_outputs_add(pol, scene, "the scene saved beside the CSV", msg, n) != HB_OK)
 		return -1;
 	return hb_outputs_add(pol, path, "--bodies", msg, n) == HB_OK ? 0 : -1;

@@ -237,21 +237,12 @@ int
 plot_write_run(struct plot_out *o, const struct hb_outputs *pol, enum plot_kind kind,
                const struct hb_sim *s, char *msg, size_t n)
 {
-	struct plot_figure *fig = malloc(sizeof *fig);
-	int rc;
+	struct plot_figure *fig = plot_out_figure(o, msg, n);
 
-	if (fig == NULL) {
-		cnum_snprintf(msg, n, "%s %s: out of memory", o->opt, o->path);
+	if (fig == NULL)
 		return -1;
-	}
-	if (plot_build(fig, kind, s, 252, -1, NULL, 0, msg, n) != 0) {
-		free(fig);
-		return -1;
-	}
-	rc = plot_out_write(o, pol, fig, msg, n);
-	plot_figure_free(fig);
-	free(fig);
-	return rc;
+	return plot_out_finish(o, pol, fig, plot_build(fig, kind, s, 252, -1, NULL, 0, msg, n), msg,
+	                       n);
 }
 
 enum { MAX_RUNS = PLOT_MAX_SERIES };

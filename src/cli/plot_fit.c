@@ -233,19 +233,9 @@ int
 plot_write_fit(struct plot_out *o, const struct hb_outputs *pol, const struct hb_fit_result *r,
                const struct hb_fit_data *d, char *msg, size_t n)
 {
-	struct plot_figure *fig = malloc(sizeof *fig);
-	int rc;
+	struct plot_figure *fig = plot_out_figure(o, msg, n);
 
-	if (fig == NULL) {
-		cnum_snprintf(msg, n, "%s %s: out of memory", o->opt, o->path);
+	if (fig == NULL)
 		return -1;
-	}
-	if (plot_build_fit(fig, r, d, 252, -1, msg, n) != 0) {
-		free(fig);
-		return -1;
-	}
-	rc = plot_out_write(o, pol, fig, msg, n);
-	plot_figure_free(fig);
-	free(fig);
-	return rc;
+	return plot_out_finish(o, pol, fig, plot_build_fit(fig, r, d, 252, -1, msg, n), msg, n);
 }

@@ -4,6 +4,7 @@
  * `hybounce plot --out` and the --plot of batch, sweep and fit
  * (plot_out.h).
  */
+#include <stdlib.h>
 #include <string.h>
 
 #include "hybounce/atomic.h"
@@ -132,4 +133,30 @@ plot_out_write(struct plot_out *o, const struct hb_outputs *pol, struct plot_fig
 			                ? &pol->out[o->datslot].target : &none);
 	}
 	return 0;
+}
+
+struct plot_figure *
+plot_out_figure(const struct plot_out *o, char *msg, size_t n)
+{
+	struct plot_figure *fig = malloc(sizeof *fig);
+
+	if (fig == NULL)
+		cnum_snprintf(msg, n, "%s %s: out of memory", o->opt, o->path);
+	return fig;
+}
+
+int
+plot_out_finish(struct plot_out *o, const struct hb_outputs *pol, struct plot_figure *fig,
+                int built, char *msg, size_t n)
+{
+	int rc;
+
+	if (built != 0) {
+		free(fig);
+		return -1;
+	}
+	rc = plot_out_write(o, pol, fig, msg, n);
+	plot_figure_free(fig);
+	free(fig);
+	return rc;
 }

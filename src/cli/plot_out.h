@@ -58,4 +58,16 @@ int
 plot_out_write(struct plot_out *o, const struct hb_outputs *pol, struct plot_figure *fig,
                char *msg, size_t n);
 
+/* A figure to build for o (malloc'd); NULL with msg ("--plot FILE: out of memory"). */
+struct plot_figure *
+plot_out_figure(const struct plot_out *o, char *msg, size_t n);
+
+/*
+ * After fig (from plot_out_figure) was built (built: the build's 0, or -1
+ * with msg): writes it (plot_out_write) and frees it.  0, or -1 with msg.
+ */
+int
+plot_out_finish(struct plot_out *o, const struct hb_outputs *pol, struct plot_figure *fig,
+                int built, char *msg, size_t n);
+
 #endif

@@ -268,9 +268,8 @@ hb_csv_stream_collisions_err(FILE *f, const struct hb_sim *s,
 	return stream_done(f, write_collisions_err(f, s, err), msg, n);
 }
 
-/* PATH with the extension of its last component replaced by ".preset". */
-static int
-scene_path(const char *path, char *out, size_t n)
+int
+csv_scene_path(const char *path, char *out, size_t n)
 {
 	const char *slash = strrchr(path, '/');
 	const char *base = slash != NULL ? slash + 1 : path;
@@ -336,7 +335,7 @@ plan(const struct hb_csv_export_opts *o, struct hb_csv_export_report *r, char *m
 					goto out;
 				}
 				snprintf(r->scene, sizeof r->scene, "%s", o->scene);
-			} else if (scene_path(csv[k], r->scene, sizeof r->scene) != 0) {
+			} else if (csv_scene_path(csv[k], r->scene, sizeof r->scene) != 0) {
 				st = hb_status_set(msg, n, HB_EIO, "%s: %s", csv[k],
 				                   strerror(ENAMETOOLONG));
 				goto out;

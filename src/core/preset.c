@@ -584,6 +584,24 @@ hb_preset_open(const char *path, const char *const *sets, int nsets, struct hb_s
 	return open_text(path, sets, nsets, sc, NULL, NULL, NULL, msg, n);
 }
 
+/*
+ * Resolves preset NAME into path (pn bytes); on failure a status whose
+ * message names the preset (the resolver's message names it too: a long
+ * name is shown by its start here).
+ */
+static int
+resolve_named(const char *name, char *path, size_t pn, char *msg, size_t n)
+{
+	char m[4096];
+	int st;
+
+	m[0] = '\0';
+	if ((st = hb_preset_resolve(name, path, pn, m, sizeof m)) != HB_OK)
+		return hb_status_set(msg, n, st, "preset '%.*s%s': %s", strlen(name) > 72 ? 60 : 72,
+		    name, strlen(name) > 72 ? "..." : "", m[0] ? m : "not found");
+	return HB_OK;
+}
+
 int
 hb_preset_open_named(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
                      char *path, size_t pn, char *msg, size_t n)
@@ -595,15 +613,9 @@ int
 hb_preset_open_text(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
                     char *path, size_t pn, char **text, char *msg, size_t n)
 {
-	char m[4096];
-	int st;
+	int st = resolve_named(name, path, pn, msg, n);
 
-	m[0] = '\0';
-	/* the resolver's message names the preset too: a long name is shown by its start here */
-	if ((st = hb_preset_resolve(name, path, pn, m, sizeof m)) != HB_OK)
-		return hb_status_set(msg, n, st, "preset '%.*s%s': %s", strlen(name) > 72 ? 60 : 72,
-		    name, strlen(name) > 72 ? "..." : "", m[0] ? m : "not found");
-	return open_text(path, sets, nsets, sc, text, NULL, NULL, msg, n);
+	return st != HB_OK ? st : open_text(path, sets, nsets, sc, text, NULL, NULL, msg, n);
 }
 
 int
@@ -611,14 +623,10 @@ hb_preset_open_branched(const char *name, const char *const *sets, int nsets, st
                         struct hb_branch **br, size_t *nbr, char *path, size_t pn, char *msg,
                         size_t n)
 {
-	char m[4096];
 	int st;
 
 	*br = NULL;
 	*nbr = 0;
-	m[0] = '\0';
-	if ((st = hb_preset_resolve(name, path, pn, m, sizeof m)) != HB_OK)
-		return hb_status_set(msg, n, st, "preset '%.*s%s': %s", strlen(name) > 72 ? 60 : 72,
-		    name, strlen(name) > 72 ? "..." : "", m[0] ? m : "not found");
-	return open_text(path, sets, nsets, sc, NULL, br, nbr, msg, n);
+	st = resolve_named(name, path, pn, msg, n);
+	return st != HB_OK ? st : open_text(path, sets, nsets, sc, NULL, br, nbr, msg, n);
 }

@@ -6,12 +6,13 @@
 #include <gsl/gsl_errno.h>
 
 #include "step_bsimp.h"
+#include "step_common.h"
 
 struct shifted {
+	double *y;                    /* first (step_common.h): y for evaluations */
 	gsl_odeiv2_step *inner;
 	const gsl_odeiv2_system *sys; /* the system in y, during apply */
 	gsl_odeiv2_system wsys;       /* the same system in w = y + shift */
-	double *y;                    /* y for evaluations */
 	size_t dim;
 };
 
@@ -45,18 +46,14 @@ wjacobian(double t, const double w[], double *dfdw, double dfdt[], void *params)
 static void *
 shifted_alloc(size_t dim)
 {
-	struct shifted *st = calloc(1, sizeof *st);
+	struct shifted *st = step_state_alloc(sizeof *st, 1, dim);
 
 	if (st == NULL)
 		return NULL;
 	st->dim = dim;
-	st->y = malloc(dim * sizeof *st->y);
 	st->inner = gsl_odeiv2_step_alloc(gsl_odeiv2_step_bsimp, dim);
-	if (st->y == NULL || st->inner == NULL) {
-		if (st->inner)
-			gsl_odeiv2_step_free(st->inner);
-		free(st->y);
-		free(st);
+	if (st->inner == NULL) {
+		step_state_free(st);
 		return NULL;
 	}
 	st->wsys = (gsl_odeiv2_system){ wfunction, wjacobian, dim, st };
@@ -112,8 +109,7 @@ shifted_free(void *state)
 	struct shifted *st = state;
 
 	gsl_odeiv2_step_free(st->inner);
-	free(st->y);
-	free(st);
+	step_state_free(st);
 }
 
 static const gsl_odeiv2_step_type shifted_type = {

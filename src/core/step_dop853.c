@@ -35,6 +35,7 @@
 
 #include <gsl/gsl_errno.h>
 
+#include "step_common.h"
 #include "step_dop853.h"
 
 enum { NSTAGE = 16 };
@@ -189,6 +190,7 @@ static const double D[4][12] = {
 static const int DJ[12] = { 0, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15 };
 
 struct dop853 {
+	double *mem;        /* first: the block of every vector below (step_common.h) */
 	size_t dim;
 	double *k[NSTAGE];  /* the stages, dim values each */
 	double *y0;         /* the last step's start */
@@ -268,21 +270,15 @@ eval(const gsl_odeiv2_system *sys, double t, const double *y, double *f)
 static void *
 dop853_alloc(size_t dim)
 {
-	struct dop853 *st = calloc(1, sizeof *st);
-	double *mem;
+	struct dop853 *st = step_state_alloc(sizeof *st, NSTAGE + 3 + 8, dim);
 	int i;
 
 	if (st == NULL)
 		return NULL;
-	mem = calloc((NSTAGE + 3 + 8) * dim, sizeof *mem);
-	if (mem == NULL) {
-		free(st);
-		return NULL;
-	}
 	st->dim = dim;
 	for (i = 0; i < NSTAGE; i++)
-		st->k[i] = mem + (size_t)i * dim;
-	st->y0 = mem + (size_t)NSTAGE * dim;
+		st->k[i] = st->mem + (size_t)i * dim;
+	st->y0 = st->mem + (size_t)NSTAGE * dim;
 	st->y1 = st->y0 + dim;
 	st->ytmp = st->y1 + dim;
 	for (i = 0; i < 8; i++)
@@ -433,33 +429,6 @@ dop853_reset(void *state, size_t dim)
 	return GSL_SUCCESS;
 }
 
-static unsigned int
-dop853_order(void *state)
-{
-	(void)state;
-	return 8;
-}
-
-static int
-dop853_set_driver(void *state, const gsl_odeiv2_driver *d)
-{
-	(void)state;
-	(void)d;
-	return GSL_SUCCESS;
-}
-
-static void
-dop853_free(void *state)
-{
-	struct dop853 *st = state;
-
-	free(st->k[0]);
-	free(st);
-}
-
-static const gsl_odeiv2_step_type dop853_type = {
-	"dop853", 0, 1, dop853_alloc, dop853_apply, dop853_set_driver,
-	dop853_reset, dop853_order, dop853_free,
-};
+STEP_TYPE(dop853_type, "dop853", 0, 1, dop853_alloc, dop853_apply, dop853_reset, step_order8);
 
 const gsl_odeiv2_step_type *const hb_step_dop853 = &dop853_type;

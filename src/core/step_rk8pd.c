@@ -38,6 +38,7 @@
 
 #include <gsl/gsl_errno.h>
 
+#include "step_common.h"
 #include "step_rk8pd.h"
 
 /* GSL's Prince-Dormand constants (ode-initval2/rk8pd.c), under its names. */
@@ -148,6 +149,7 @@ typedef int stepfn(struct rk8pd *st, double t, double h, double y[], double yerr
 
 /* One block of 17 vectors of pad values each (the padding zero), in this order: */
 struct rk8pd {
+	double *mem;  /* first: the block of every vector below (step_common.h) */
 	size_t dim;
 	size_t pad;   /* dim rounded up to the lanes */
 	stepfn *step; /* the copy for this dimension and these lanes */
@@ -326,7 +328,7 @@ alloc_lanes(size_t dim, int lanes)
 	st->pad = pad;
 	/* the 17 vectors, aligned to 32 bytes (aligned_alloc takes a size of whole 32s) */
 	bytes = (17 * pad * sizeof(double) + 31) / 32 * 32;
-	st->y0 = aligned_alloc(32, bytes);
+	st->mem = st->y0 = aligned_alloc(32, bytes);
 	if (st->y0 == NULL)
 		goto fail;
 	memset(st->y0, 0, bytes);
@@ -368,46 +370,9 @@ rk8pd_apply(void *state, size_t dim, double t, double h, double y[], double yerr
 	return st->step(st, t, h, y, yerr, dydt_in, dydt_out, sys);
 }
 
-static int
-rk8pd_reset(void *state, size_t dim)
-{
-	(void)state;
-	(void)dim;
-	return GSL_SUCCESS; /* nothing is kept from one step to the next */
-}
-
-static unsigned int
-rk8pd_order(void *state)
-{
-	(void)state;
-	return 8;
-}
-
-static int
-rk8pd_set_driver(void *state, const gsl_odeiv2_driver *d)
-{
-	(void)state;
-	(void)d;
-	return GSL_SUCCESS;
-}
-
-static void
-rk8pd_free(void *state)
-{
-	struct rk8pd *st = state;
-
-	free(st->y0);
-	free(st);
-}
-
-/* (name, can use dydt_in, gives exact dydt_out: as GSL's rk8pd) */
-static const gsl_odeiv2_step_type rk8pd_type = {
-	"rk8pd", 1, 1, rk8pd_alloc, rk8pd_apply, rk8pd_set_driver, rk8pd_reset, rk8pd_order, rk8pd_free,
-};
-
-static const gsl_odeiv2_step_type rk8pd2_type = {
-	"rk8pd", 1, 1, rk8pd2_alloc, rk8pd_apply, rk8pd_set_driver, rk8pd_reset, rk8pd_order, rk8pd_free,
-};
+/* can use dydt_in, gives exact dydt_out: as GSL's rk8pd; nothing is kept from one step to the next */
+STEP_TYPE(rk8pd_type, "rk8pd", 1, 1, rk8pd_alloc, rk8pd_apply, step_reset_none, step_order8);
+STEP_TYPE(rk8pd2_type, "rk8pd", 1, 1, rk8pd2_alloc, rk8pd_apply, step_reset_none, step_order8);
 
 const gsl_odeiv2_step_type *const hb_step_rk8pd = &rk8pd_type;
 const gsl_odeiv2_step_type *const hb_step_rk8pd_2lanes = &rk8pd2_type;

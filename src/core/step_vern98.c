@@ -31,6 +31,7 @@
 
 #include <gsl/gsl_errno.h>
 
+#include "step_common.h"
 #include "step_vern98.h"
 
 enum { NSTAGE = 16, MAXTERM = 10 };
@@ -200,6 +201,7 @@ static const struct row E8 = { 10, { 0, 7, 8, 9, 10, 11, 12, 13, 14, 15 }, {
 } };
 
 struct vern98 {
+	double *mem;           /* first: the block of every vector below (step_common.h) */
 	size_t dim;
 	double *k[NSTAGE + 1]; /* the stages, dim values each; k[16]: f at the end */
 	double *y0;            /* the last step's start */
@@ -270,21 +272,15 @@ eval(const gsl_odeiv2_system *sys, double t, const double *y, double *f)
 static void *
 vern98_alloc(size_t dim)
 {
-	struct vern98 *st = calloc(1, sizeof *st);
-	double *mem;
+	struct vern98 *st = step_state_alloc(sizeof *st, NSTAGE + 1 + 3, dim);
 	int i;
 
 	if (st == NULL)
 		return NULL;
-	mem = calloc((NSTAGE + 1 + 3) * dim, sizeof *mem);
-	if (mem == NULL) {
-		free(st);
-		return NULL;
-	}
 	st->dim = dim;
 	for (i = 0; i <= NSTAGE; i++)
-		st->k[i] = mem + (size_t)i * dim;
-	st->y0 = mem + (size_t)(NSTAGE + 1) * dim;
+		st->k[i] = st->mem + (size_t)i * dim;
+	st->y0 = st->mem + (size_t)(NSTAGE + 1) * dim;
 	st->y1 = st->y0 + dim;
 	st->ytmp = st->y1 + dim;
 	return st;
@@ -366,30 +362,6 @@ vern98_reset(void *state, size_t dim)
 	return GSL_SUCCESS;
 }
 
-static unsigned int
-vern98_order(void *state)
-{
-	(void)state;
-	return 9;
-}
-
-static int
-vern98_set_driver(void *state, const gsl_odeiv2_driver *d)
-{
-	(void)state;
-	(void)d;
-	return GSL_SUCCESS;
-}
-
-static void
-vern98_free(void *state)
-{
-	struct vern98 *st = state;
-
-	free(st->k[0]);
-	free(st);
-}
-
 void
 hb_vern98_tableau(double a[16][16], double c[16], double b[16], double e[16])
 {
@@ -407,9 +379,6 @@ hb_vern98_tableau(double a[16][16], double c[16], double b[16], double e[16])
 		e[E8.j[m]] = E8.a[m];
 }
 
-static const gsl_odeiv2_step_type vern98_type = {
-	"vern98", 0, 1, vern98_alloc, vern98_apply, vern98_set_driver,
-	vern98_reset, vern98_order, vern98_free,
-};
+STEP_TYPE(vern98_type, "vern98", 0, 1, vern98_alloc, vern98_apply, vern98_reset, step_order9);
 
 const gsl_odeiv2_step_type *const hb_step_vern98 = &vern98_type;

@@ -44,6 +44,24 @@ undo_push(struct app *a, const struct hb_scene *before, const char *what)
 	a->nundo++;
 }
 
+/* An edit applied: the runs labelled anew, the scene before kept for u unless undoing. */
+static void
+applied(struct app *a, const struct hb_scene *before, const char *what, int undo)
+{
+	app_label_runs(a);
+	if (!undo)
+		undo_push(a, before, what);
+}
+
+/* The run restarted from t = 0: no branch, the cursor at the start. */
+static void
+from_start(struct app *a)
+{
+	a->branch_t = -1;
+	a->nbranches = 0;
+	cursor_set(a, 0);
+}
+
 /*
  * Applies a changed scene: from t = 0 (the default), or at the cursor
  * after b.  An applied edit is kept for u unless undoing (undo 1).
@@ -76,12 +94,8 @@ apply_scene_how(struct app *a, const struct hb_scene *sc_in, const char *what, i
 
 			if (hb_sim_set_scene(a->sim, &sc, &rs, emsg + 256, sizeof emsg - 256) == HB_OK &&
 			    (rs || hb_sim_restart(a->sim) == HB_OK)) {
-				app_label_runs(a);
-				if (!undo)
-					undo_push(a, &before, what);
-				a->branch_t = -1;
-				a->nbranches = 0;
-				cursor_set(a, 0);
+				applied(a, &before, what, undo);
+				from_start(a);
 				app_msg(a, 1, "%s: cannot branch here (%.200s); the run restarted from t = 0",
 				        what, emsg);
 				return;
@@ -91,13 +105,9 @@ apply_scene_how(struct app *a, const struct hb_scene *sc_in, const char *what, i
 			app_msg(a, 1, "refused (old value kept): %s", emsg);
 			return;
 		}
-		app_label_runs(a);
-		if (!undo)
-			undo_push(a, &before, what);
+		applied(a, &before, what, undo);
 		if (restarted) {
-			a->branch_t = -1;
-			a->nbranches = 0;
-			cursor_set(a, 0);
+			from_start(a);
 			app_msg(a, 0, "%s: cannot branch here (a change of the law in contact, the bodies or the initial state); the run restarted from t = 0",
 			        what);
 		} else {
@@ -120,14 +130,10 @@ apply_scene_how(struct app *a, const struct hb_scene *sc_in, const char *what, i
 			app_msg(a, 1, "refused (old value kept): %s", emsg);
 			return;
 		}
-		app_label_runs(a);
-		if (!undo)
-			undo_push(a, &before, what);
-		a->branch_t = -1;
-		a->nbranches = 0;
+		applied(a, &before, what, undo);
 		a->want_t = a->tcur;
 		a->playing = 0;
-		cursor_set(a, 0);
+		from_start(a);
 		a->tcur = a->want_t;
 		app_msg(a, 0, "%s: the run restarted from t = 0 (b: branch here)", what);
 	}

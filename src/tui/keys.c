@@ -172,11 +172,21 @@ keys_help(const struct mode *m, char *buf, size_t n)
 	return t.len;
 }
 
+/* help as a sentence's start: its first letter capitalised, into out (n bytes).  Returns out. */
+static const char *
+sentence(const char *help, char *out, size_t n)
+{
+	snprintf(out, n, "%s", help);
+	if (out[0] >= 'a' && out[0] <= 'z')
+		out[0] = (char)(out[0] - 'a' + 'A');
+	return out;
+}
+
 /* One mode's mdoc list. */
 static void
 man_list(struct textbuf *t, const struct mode *m)
 {
-	char h[160];
+	char h[160], h2[320];
 
 	heading(m, h, sizeof h, "");
 	if (h[0])
@@ -202,21 +212,10 @@ man_list(struct textbuf *t, const struct mode *m)
 			textbuf_printf(t, "%s", tok);
 		}
 		textbuf_printf(t, "%s", "\n");
-		{
-			char h2[320];
-			snprintf(h2, sizeof h2, "%s", b->help);
-			if (h2[0] >= 'a' && h2[0] <= 'z')
-				h2[0] = (char)(h2[0] - 'a' + 'A');
-			textbuf_printf(t, "%s.\n", h2);
-		}
+		textbuf_printf(t, "%s.\n", sentence(b->help, h2, sizeof h2));
 	}
-	if (m->other_help != NULL) {
-		char h2[320];
-		snprintf(h2, sizeof h2, "%s", m->other_help);
-		if (h2[0] >= 'a' && h2[0] <= 'z')
-			h2[0] = (char)(h2[0] - 'a' + 'A');
-		textbuf_printf(t, ".It any other key\n%s.\n", h2);
-	}
+	if (m->other_help != NULL)
+		textbuf_printf(t, ".It any other key\n%s.\n", sentence(m->other_help, h2, sizeof h2));
 	textbuf_printf(t, "%s", ".El\n");
 }
 

@@ -9,21 +9,29 @@
  * contacts, spacetime.c, whose j is the arc's) the arc's own samples are
  * k's and are drawn; elsewhere x_c and F_c of k are 0 (rule: F_c = -q_c
  * Phi, q_c = 0 in flight), and x is the gap between its two bodies from
- * the buffer's positions, one point a pixel column.  Pinned runs are not
- * drawn here.
+ * the buffer's positions, one point a pixel column (pane_stack.c).
+ * Pinned runs are not drawn here.
  */
-#include <curses.h>
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 #include "canvas.h"
-#include "layout.h"
 #include "spacetime.h"
-#include "term.h"
 #include "tui.h"
 
-enum { LM = 9, NQ = 3 };
+struct iface {
+	int k;
+	const struct hb_arc *arc;
+};
+
+/* The gap of interface k at t from the records (no hint: st_gap_at keeps none). */
+static double
+gap_at(const struct spacetime *st, int k, int q, double t, size_t *hint)
+{
+	(void)q;
+	(void)hint;
+	return st_gap_at(st, k, t);
+}
 
 static double
 qv(const struct hb_arc_sample *p, int q)
@@ -42,25 +50,18 @@ contact_first(const struct hb_arc *arc, const struct st_contact *c)
 	return i;
 }
 
-/* The range of quantity q of interface k over [t0, t1] (0 included). */
+/* The range of quantity q of interface ctx->k over [t0, t1] (0 included). */
 static void
-q_range(const struct spacetime *st, const struct hb_arc *arc, int k, int q, double t0, double t1,
-        int pw, double *lo, double *hi)
+q_range(const struct spacetime *st, const void *ctx, int q, double t0, double t1, int pw,
+        double *lo, double *hi)
 {
-	double tl = st->t[st->nrec - 1];
+	const struct iface *f = ctx;
+	const struct hb_arc *arc = f->arc;
+	int k = f->k;
 
 	*lo = *hi = 0;
 	if (q == 0)
-		for (int px = 0; px < pw; px++) {
-			double t = t0 + (t1 - t0) * px / (pw > 1 ? pw - 1 : 1), x;
-			if (t > tl)
-				break;
-			x = st_gap_at(st, k, t);
-			if (isfinite(x)) {
-				*lo = fmin(*lo, x);
-				*hi = fmax(*hi, x);
-			}
-		}
+		st_fn_widen(st, gap_at, k, 0, t0, t1, pw, lo, hi);
 	for (size_t i = 0; i < st->nc; i++) {
 		const struct st_contact *c = &st->c[i];
 		if (c->k != k || c->t1 < t0 || c->t0 > t1)
@@ -78,29 +79,17 @@ q_range(const struct spacetime *st, const struct hb_arc *arc, int k, int q, doub
 }
 
 static void
-q_draw(const struct spacetime *st, const struct hb_arc *arc, struct canvas *c, int k, int q,
-       double t0, double t1)
+q_draw(const struct spacetime *st, const void *ctx, struct canvas *c, int q, double t0, double t1)
 {
-	double tl = st->t[st->nrec - 1], te = fmin(t1, tl), pt = 0, py = 0;
-	int have = 0;
+	const struct iface *f = ctx;
+	const struct hb_arc *arc = f->arc;
+	double te = fmin(t1, st->t[st->nrec - 1]);
+	int k = f->k;
 
-	if (q == 0) {
-		for (int px = 0; px < c->pw; px++) {
-			double t = t0 + (t1 - t0) * px / (c->pw > 1 ? c->pw - 1 : 1), x;
-			if (t > tl)
-				break;
-			x = st_gap_at(st, k, t);
-			if (!isfinite(x))
-				continue;
-			if (have)
-				canvas_line(c, pt, py, t, x, 1);
-			pt = t;
-			py = x;
-			have = 1;
-		}
-	} else if (te > t0) {
+	if (q == 0)
+		st_fn_draw(st, c, gap_at, k, 0, t0, t1);
+	else if (te > t0)
 		canvas_line(c, t0, 0, te, 0, 1);   /* 0 out of contact */
-	}
 	for (size_t i = 0; i < st->nc; i++) {
 		const struct st_contact *ct = &st->c[i];
 		const struct hb_arc_sample *o = NULL;
@@ -120,52 +109,14 @@ q_draw(const struct spacetime *st, const struct hb_arc *arc, struct canvas *c, i
 void
 pane_iface_draw(const struct app *a)
 {
-	static const char *name[NQ] = { "x", "x_c", "F_c" }, *base[NQ] = { "m", "m", "N" };
-	const struct rect *r = &a->L.plots;
-	const struct spacetime *st = a->st;
-	const struct hb_arc *arc = hb_sim_arc(a->sim);
-	int cw = r->w - LM, hs[NQ], y = r->y + 1, k = spacetime_iface(a), curcol = -1;
-	double t0, t1, tc = hb_arc_len(arc) ? hb_arc_at(arc, a->cursor)->t : 0;
-	char title[160], line[1024];
-	struct axis ax;
+	const struct iface f = { spacetime_iface(a), hb_sim_arc(a->sim) };
+	const struct stack_plots sp = { 3, { "x", "x_c", "F_c" }, { "m", "m", "N" }, 'K', &f,
+		                        q_range, q_draw };
+	char title[160];
 
-	if (cw < 10 || r->h < 3 + NQ)
-		return;
-	if (k == 0)
+	if (f.k == 0)
 		snprintf(title, sizeof title, "interface 0 (floor and body 1)");
 	else
-		snprintf(title, sizeof title, "interface %d (bodies %d and %d)", k, k, k + 1);
-	if (a->branch_t >= 0 || st == NULL || st->failed || st->nrec == 0) {
-		snprintf(title + strlen(title), sizeof title - strlen(title), ": %s",
-		         a->branch_t >= 0 ? "not for a branched run (K: back)" : "computing...");
-		tui_puts(r->y, LM, cw, title, A_BOLD);
-		return;
-	}
-	if (hb_sim_end(st->sh) == HB_SIM_RUNNING)
-		snprintf(title + strlen(title), sizeof title - strlen(title), "; computing %.0f%%",
-		         100 * st->t[st->nrec - 1] / (st->T > 0 ? st->T : 1));
-	tui_puts(r->y, LM, cw, title, A_BOLD);
-	st_time_range(a, st, &t0, &t1);
-	layout_stack(r->h - 1, NQ, 1, hs);
-	for (int q = 0; q < NQ; q++) {
-		double lo, hi;
-		struct axis ay;
-		struct canvas *c = canvas_new(cw, hs[q], a->braille);
-
-		if (c == NULL)
-			term_oom();
-		q_range(st, arc, k, q, t0, t1, c->pw, &lo, &hi);
-		canvas_axis(lo, hi, hs[q] / 2 + 2, base[q], &ay);
-		canvas_range(c, t0, t1, ay.lo, ay.hi);
-		q_draw(st, arc, c, k, q, t0, t1);
-		curcol = canvas_col(c, tc);
-		st_blit(a, c, y, r->x + LM, curcol);
-		st_ylabels(&ay, y, hs[q], name[q]);
-		canvas_free(c);
-		y += hs[q];
-	}
-	canvas_axis(t0, t1, cw / 10 > 2 ? cw / 10 : 2, "s", &ax);
-	canvas_axis_line(&ax, t0, t1, cw, line, sizeof line);
-	tui_puts(y, r->x + LM, cw, line, 0);
-	tui_puts(y, 0, LM - 1, "t ->", A_BOLD);
+		snprintf(title, sizeof title, "interface %d (bodies %d and %d)", f.k, f.k, f.k + 1);
+	pane_stack_draw(a, title, sizeof title, &sp);
 }

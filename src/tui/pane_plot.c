@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "blit.h"
 #include "canvas.h"
 #include "term.h"
 #include "tui.h"
@@ -132,43 +133,22 @@ sample_span(const struct app *a, const struct hb_arc *arc, double lo, double hi,
 	*i1 = i + 2 < n ? i + 2 : n;
 }
 
-/*
- * Copies a canvas to the screen at (y, x); the cursor column highlighted.
- * Cells go in as wide characters (add_wch): a Braille cell as a string
- * would be decoded again byte by byte, the larger part of a frame's cost.
- */
+/* The current run's ink bold, the pins' in their colours (dim without colours). */
+static void
+plot_style(int ink, int colour, attr_t *attr, short *pair)
+{
+	if (colour) {
+		*pair = (short)(PAIR_INK1 + ink - 1);
+		*attr = ink == 1 ? A_BOLD : 0;
+	} else if (ink > 1) {
+		*attr = A_DIM;
+	}
+}
+
 static void
 blit(const struct app *a, const struct canvas *c, int y, int x, int curcol)
 {
-	char cell[8];
-
-	for (int r = 0; r < c->h; r++)
-		for (int k = 0; k < c->w; k++) {
-			int ink = canvas_cell(c, k, r, cell);
-			attr_t attr = 0;
-			short pair = 0;
-			wchar_t wc[2] = { (unsigned char)cell[0], 0 };
-			cchar_t cc;
-
-			if (ink > 0 && a->colour) {
-				pair = (short)(PAIR_INK1 + ink - 1);
-				attr = ink == 1 ? A_BOLD : 0;
-			} else if (ink > 1) {
-				attr = A_DIM;
-			}
-			if (k == curcol) {
-				if (cell[0] == ' ')
-					wc[0] = ':';
-				attr |= A_REVERSE;
-			}
-			if (wc[0] == ' ' && attr == 0 && pair == 0)
-				continue;
-			if ((unsigned char)cell[0] == 0xE2)   /* U+2800 + m (canvas_cell) */
-				wc[0] = (wchar_t)(0x2800 + (((unsigned char)cell[1] - 0xA0) << 6) +
-				                  ((unsigned char)cell[2] - 0x80));
-			setcchar(&cc, wc, attr, pair, NULL);
-			mvadd_wch(y + r, x + k, &cc);
-		}
+	blit_canvas(c, y, x, curcol, a->colour, plot_style);
 }
 
 static void

@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "blit.h"
 #include "canvas.h"
 #include "spacetime.h"
 #include "term.h"
@@ -22,38 +23,22 @@
 
 enum { LM = 9, INK_BODY = 1, INK_CONTACT = 2 };
 
+/* The contacts bold (in their colour), the bodies in the current run's. */
+static void
+st_style(int ink, int colour, attr_t *attr, short *pair)
+{
+	if (ink == INK_CONTACT) {
+		*attr = A_BOLD;
+		*pair = colour ? PAIR_CONTACT : 0;
+	} else if (colour) {
+		*pair = PAIR_INK1;
+	}
+}
+
 void
 st_blit(const struct app *a, const struct canvas *c, int y, int x, int curcol)
 {
-	char cell[8];
-
-	for (int r = 0; r < c->h; r++)
-		for (int k = 0; k < c->w; k++) {
-			int ink = canvas_cell(c, k, r, cell);
-			attr_t attr = 0;
-			short pair = 0;
-			wchar_t wc[2] = { (unsigned char)cell[0], 0 };
-			cchar_t cc;
-
-			if (ink == INK_CONTACT) {
-				attr = A_BOLD;
-				pair = a->colour ? PAIR_CONTACT : 0;
-			} else if (ink > 0 && a->colour) {
-				pair = PAIR_INK1;
-			}
-			if (k == curcol) {
-				if (cell[0] == ' ')
-					wc[0] = ':';
-				attr |= A_REVERSE;
-			}
-			if (wc[0] == ' ' && attr == 0 && pair == 0)
-				continue;
-			if ((unsigned char)cell[0] == 0xE2)   /* U+2800 + m (canvas_cell) */
-				wc[0] = (wchar_t)(0x2800 + (((unsigned char)cell[1] - 0xA0) << 6) +
-				                  ((unsigned char)cell[2] - 0x80));
-			setcchar(&cc, wc, attr, pair, NULL);
-			mvadd_wch(y + r, x + k, &cc);
-		}
+	blit_canvas(c, y, x, curcol, a->colour, st_style);
 }
 
 /* The y axis: its top and bottom ticks and the name (with the unit), in the left margin. */

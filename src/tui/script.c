@@ -321,18 +321,14 @@ bad:
 /* ---- playing ------------------------------------------------------------------- */
 
 /*
- * The viewer paused the demo: the cursor stops, the run keeps computing,
- * until a key resumes it (q quits).  Returns the seconds paused.
+ * Draws and ticks the explorer until the viewer presses a key (a resize is
+ * handled and waited past), which goes to demo_viewer_key.
  */
-static double
-paused(struct app *a)
+static void
+await_viewer_key(struct app *a)
 {
-	double t0 = clock_seconds(CLOCK_MONOTONIC);
-	int was = a->playing;
 	int ch;
 
-	a->playing = 0;
-	a->demo_ctx = CTX_DEMO_PAUSED;
 	while (!term_signalled() && !a->quit) {
 		app_draw(a);
 		if ((ch = getch()) != ERR && ch != KEY_MOUSE) {
@@ -346,6 +342,21 @@ paused(struct app *a)
 		if (!app_tick(a))
 			nap();
 	}
+}
+
+/*
+ * The viewer paused the demo: the cursor stops, the run keeps computing,
+ * until a key resumes it (q quits).  Returns the seconds paused.
+ */
+static double
+paused(struct app *a)
+{
+	double t0 = clock_seconds(CLOCK_MONOTONIC);
+	int was = a->playing;
+
+	a->playing = 0;
+	a->demo_ctx = CTX_DEMO_PAUSED;
+	await_viewer_key(a);
 	a->playing = was;
 	a->demo_ctx = CTX_DEMO_PLAY;
 	return clock_seconds(CLOCK_MONOTONIC) - t0;
@@ -397,24 +408,10 @@ wait_ms(struct app *a, double ms)
 static void
 wait_key(struct app *a)
 {
-	int ch;
-
 	if (!a->script_live)
 		return;
 	a->demo_ctx = CTX_DEMO_KEY;
-	while (!term_signalled() && !a->quit) {
-		app_draw(a);
-		if ((ch = getch()) != ERR && ch != KEY_MOUSE) {
-			if (ch == KEY_RESIZE) {
-				app_key(a, ch);
-				continue;
-			}
-			demo_viewer_key(a, ch);
-			break;
-		}
-		if (!app_tick(a))
-			nap();
-	}
+	await_viewer_key(a);
 	a->demo_ctx = CTX_DEMO_PLAY;
 }
 

@@ -102,6 +102,32 @@ struct axis;
 void st_ylabels(const struct axis *ay, int y, int h, const char *name);
 /* The time axis: the plots' in the follow and zoom views, else the whole run. */
 void st_time_range(const struct app *a, const struct spacetime *st, double *t0, double *t1);
+/*
+ * pane_stack.c: a pane of nq plots against t stacked over the plots' time
+ * axis.  range sets [*lo, *hi] of plot q over [t0, t1] (pw pixel columns),
+ * draw draws it; ctx is theirs; key is the key that leaves the pane.
+ */
+enum { STACK_MAXQ = 4 };
+struct stack_plots {
+	int nq;
+	const char *name[STACK_MAXQ], *unit[STACK_MAXQ];
+	int key;
+	const void *ctx;
+	void (*range)(const struct spacetime *st, const void *ctx, int q, double t0, double t1,
+	              int pw, double *lo, double *hi);
+	void (*draw)(const struct spacetime *st, const void *ctx, struct canvas *c, int q, double t0,
+	             double t1);
+};
+/* Draws the pane under title (a buffer of tn bytes, added to: computing, ...). */
+void pane_stack_draw(const struct app *a, char *title, size_t tn, const struct stack_plots *sp);
+/* A value of who (a body, an interface) at t from the records; *hint as st_y_at's. */
+typedef double st_fn(const struct spacetime *st, int who, int q, double t, size_t *hint);
+/* Widens [*lo, *hi] to fn's finite values at the pixel columns of [t0, t1] within the records. */
+void st_fn_widen(const struct spacetime *st, st_fn *fn, int who, int q, double t0, double t1,
+                 int pw, double *lo, double *hi);
+/* Draws fn through the pixel columns of [t0, t1] within the records. */
+void st_fn_draw(const struct spacetime *st, struct canvas *c, st_fn *fn, int who, int q, double t0,
+                double t1);
 /* pane_iface.c: x, x_c and F_c of the chosen interface, in the plots' rectangle. */
 void pane_iface_draw(const struct app *a);
 /* pane_body.c: y and u of the chosen body, in the plots' rectangle. */

@@ -346,6 +346,20 @@ app_set_law(struct app *a, const char *law);
 /* Pickers (pickers.c): the list of the open picker (a->pick_kind); its modes: pick_law.c, pick_preset.c. */
 action_fn pick_up, pick_down, pick_pgup, pick_pgdn, pick_home, pick_end, pick_close, pick_choose;
 void pickers_draw(const struct app *a, const struct mode *self);
+/*
+ * A picker's key table (mode.h's mode_key; curses.h and mode.h where it is
+ * expanded): the moves through the list, Enter (what it does: HELP, its
+ * footer word WORD) and Esc q.
+ */
+#define PICK_KEYS(help, word)                                                                  \
+	{ KEY_UP, 'k', CTX_ANY, pick_up, "Up k", "the previous entry", NULL },                 \
+	{ KEY_DOWN, 'j', CTX_ANY, pick_down, "Down j", "the next entry", NULL },               \
+	{ KEY_PPAGE, 0, CTX_ANY, pick_pgup, "PgUp", "a page up", NULL },                        \
+	{ KEY_NPAGE, 0, CTX_ANY, pick_pgdn, "PgDn", "a page down", NULL },                      \
+	{ KEY_HOME, 'g', CTX_ANY, pick_home, "Home g", "the first entry", NULL },              \
+	{ KEY_END, 'G', CTX_ANY, pick_end, "End G", "the last entry", NULL },                  \
+	{ '\n', KEY_ENTER, CTX_ANY, pick_choose, "Enter", help, word },                        \
+	{ 27, 'q', CTX_ANY, pick_close, "Esc q", "close, choosing nothing", "closes" }
 
 /* Scripted mode (script.c).  Returns the exit status. */
 int

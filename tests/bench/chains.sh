@@ -23,27 +23,8 @@ trap 'rm -rf "$T"' EXIT
 cg=1
 command -v valgrind >/dev/null || cg=0
 
-cat >"$T/chain.preset" <<'P'
-[scene]
-name = bench chain
-law = hertz
-[body1]
-E = 200 GPa
-nu = 0.3
-rho = 7800 kg/m^3
-R = 10 mm
-[chain]
-n = 5
-spacing = 0 m
-[striker]
-v = -1 m/s
-[loads]
-g = 0
-[run]
-T = 10 ms
-rtol = 1e-12
-atol = 1e-14
-P
+. "$(dirname "$0")/../chain.inc"
+steel_chain 'bench chain' 5 '0 m' '10 ms' >"$T/chain.preset"
 
 # run NAME N SPACING T: one row's counts into $T/NAME.{q,ir}
 run() {

@@ -6,28 +6,9 @@
 # refused (exit 2, nothing written) as the same file as the scene saved
 # beside --collisions, the preset being run, or standard output.
 . "$(dirname "$0")/common.inc"
+. "$(dirname "$0")/../chain.inc"
 
-cat >"$T/c.preset" <<'P'
-[scene]
-name = cradle of three
-law = hertz
-[body1]
-E = 200 GPa
-nu = 0.3
-rho = 7800 kg/m^3
-R = 10 mm
-[chain]
-n = 3
-spacing = 1 mm
-[striker]
-v = -1 m/s
-[loads]
-g = 0
-[run]
-T = 10 ms
-rtol = 1e-12
-atol = 1e-14
-P
+steel_chain 'cradle of three' 3 '1 mm' '10 ms' >"$T/c.preset"
 
 cd "$T" || exit 1
 if "$BIN" --batch c.preset --quiet --bodies b.csv >out 2>err &&

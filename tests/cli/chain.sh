@@ -7,28 +7,9 @@
 # several contacts at once run together, the model's limits stop the run (or
 # are noted), and what a chain cannot run yet is refused with the key named.
 . "$(dirname "$0")/common.inc"
+. "$(dirname "$0")/../chain.inc"
 
-cat >"$T/cradle.preset" <<'P'
-[scene]
-name = cradle of three
-law = hertz
-[body1]
-E = 200 GPa
-nu = 0.3
-rho = 7800 kg/m^3
-R = 10 mm
-[chain]
-n = 3
-spacing = 1 mm
-[striker]
-v = -1 m/s
-[loads]
-g = 0
-[run]
-T = 10 ms
-rtol = 1e-12
-atol = 1e-14
-P
+steel_chain 'cradle of three' 3 '1 mm' '10 ms' >"$T/cradle.preset"
 
 if "$BIN" --batch "$T/cradle.preset" --check >"$T/out" 2>&1 &&
     grep -q '^system      chain of 3 bodies (each body 1, the law between neighbours), 1 mm apart, striker (body 3) at -1 m/s$' "$T/out" &&

@@ -8,30 +8,12 @@
 # same run; sweep --vary and fit --free reach a body's key; keys outside
 # the chain, unknown or derived are refused, exit 2.
 . "$(dirname "$0")/common.inc"
+. "$(dirname "$0")/../chain.inc"
 
-cat >"$T/c.preset" <<'P'
-[scene]
-name = cradle of five with a heavy ball
-law = hertz
-[body1]
-E = 200 GPa
-nu = 0.3
-rho = 7800 kg/m^3
-R = 10 mm
-[chain]
-n = 5
-spacing = 1 mm
-[body.3]
+steel_chain 'cradle of five with a heavy ball' 5 '1 mm' '50 ms' '[body.3]
 R = 12 mm
 [initial]
-body.5.v = -2 m/s
-[loads]
-g = 0
-[run]
-T = 50 ms
-rtol = 1e-12
-atol = 1e-14
-P
+body.5.v = -2 m/s' >"$T/c.preset"
 
 mkdir "$T/exp"
 # 2 m with m = 4/3 pi (10 mm)^3 7800 kg/m^3 = 32.6725636 g

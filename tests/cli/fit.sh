@@ -9,45 +9,9 @@
 #
 #     sh tests/cli/fit.sh --update-readme   rewrites the README example's output
 . "$(dirname "$0")/common.inc"
-ROOT=$(pwd)
 
 # --- the README's worked example, run as written in a folder of its own -----
-mkdir "$T/readme"
-ln -s "$ROOT/examples" "$ROOT/presets" "$T/readme/"
-sed -n '/^<!-- FIT-EXAMPLE-BEGIN -->$/,/^<!-- FIT-EXAMPLE-END -->$/p' README.md |
-	sed '1,2d' | sed '$d' | sed '$d' | sed 's/^    //' >"$T/block"
-# the command: the lines from "$ " up to the last one ending in a backslash
-awk '/^\$ /{on=1} on{print; if ($0 !~ /\\$/) exit}' "$T/block" | sed 's/^\$ //' >"$T/cmd"
-n=$(wc -l <"$T/cmd")
-sed "1,${n}d" "$T/block" >"$T/expected"
-if [ "$n" -ge 1 ] && [ -s "$T/expected" ]; then
-	cmd=$(sed "s|build/hybounce|$BIN|" "$T/cmd")
-	(cd "$T/readme" && env -u HYBOUNCE_PRESETS sh -c "$cmd") >"$T/got.raw"
-	rc=$?
-	sed 's/ *$//' "$T/got.raw" >"$T/got"
-	if [ "${1:-}" = --update-readme ] && [ "$rc" -eq 0 ]; then
-		# the README with the example's output replaced by this run's
-		awk -v cmdlines="$n" -v got="$T/got" '
-			/^<!-- FIT-EXAMPLE-BEGIN -->$/ { print; inb = 1; k = 0; next }
-			inb && /^    \$ / { c = 1 }
-			inb && c && k < cmdlines { print; k++; if (k == cmdlines) {
-				while ((getline l < got) > 0) print (l == "" ? "" : "    " l)
-				print ""; skip = 1 } next }
-			/^<!-- FIT-EXAMPLE-END -->$/ { inb = 0; skip = 0; print; next }
-			skip { next }
-			{ print }' README.md >"$T/README.new" && cp "$T/README.new" README.md
-		echo "# README.md: the fit example's output rewritten"
-		cp "$T/got" "$T/expected"
-	fi
-	if [ "$rc" -eq 0 ] && cmp -s "$T/got" "$T/expected"; then
-		ok "the README's fit example runs as written and prints what the README shows"
-	else
-		notok "the README's fit example runs as written and prints what the README shows (exit $rc; sh tests/cli/fit.sh --update-readme rewrites it)"
-		diff "$T/expected" "$T/got" | head -20 | sed 's/^/# /'
-	fi
-else
-	notok "the README has a fit example between FIT-EXAMPLE markers"
-fi
+readme_example FIT-EXAMPLE 'fit example' tests/cli/fit.sh "${1:-}"
 if [ -f "$T/readme/fitted.preset" ] &&
 	grep -q '^c = 5002.15' "$T/readme/fitted.preset" &&
 	grep -q '^alpha = 0.29988' "$T/readme/fitted.preset"; then

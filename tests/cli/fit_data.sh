@@ -15,7 +15,6 @@
 # shows:
 #     sh tests/cli/fit_data.sh --update-readme   rewrites that output
 . "$(dirname "$0")/common.inc"
-ROOT=$(pwd)
 
 command -v python3 >/dev/null 2>&1 || { echo "1..0 # SKIP python3 is not installed"; exit 0; }
 
@@ -161,41 +160,7 @@ else
 fi
 
 # --- the README's example of heights, run as written in a folder of its own --
-mkdir "$T/readme"
-ln -s "$ROOT/examples" "$ROOT/presets" "$T/readme/"
-sed -n '/^<!-- FIT-DATA-EXAMPLE-BEGIN -->$/,/^<!-- FIT-DATA-EXAMPLE-END -->$/p' README.md |
-	sed '1,2d' | sed '$d' | sed '$d' | sed 's/^    //' >"$T/block"
-# the command: the lines from "$ " up to the last one ending in a backslash
-awk '/^\$ /{on=1} on{print; if ($0 !~ /\\$/) exit}' "$T/block" | sed 's/^\$ //' >"$T/cmd"
-n=$(wc -l <"$T/cmd")
-sed "1,${n}d" "$T/block" >"$T/expected"
-if [ "$n" -ge 1 ]; then
-	cmd=$(sed "s|build/hybounce|$BIN|" "$T/cmd")
-	(cd "$T/readme" && env -u HYBOUNCE_PRESETS sh -c "$cmd") >"$T/got.raw"
-	rc=$?
-	sed 's/ *$//' "$T/got.raw" >"$T/got"
-	if [ "${1:-}" = --update-readme ] && [ "$rc" -eq 0 ]; then
-		awk -v cmdlines="$n" -v got="$T/got" '
-			/^<!-- FIT-DATA-EXAMPLE-BEGIN -->$/ { print; inb = 1; k = 0; next }
-			inb && /^    \$ / { c = 1 }
-			inb && c && k < cmdlines { print; k++; if (k == cmdlines) {
-				while ((getline l < got) > 0) print (l == "" ? "" : "    " l)
-				print ""; skip = 1 } next }
-			/^<!-- FIT-DATA-EXAMPLE-END -->$/ { inb = 0; skip = 0; print; next }
-			skip { next }
-			{ print }' README.md >"$T/README.new" && cp "$T/README.new" README.md
-		echo "# README.md: the example of heights rewritten"
-		cp "$T/got" "$T/expected"
-	fi
-	if [ "$rc" -eq 0 ] && [ -s "$T/expected" ] && cmp -s "$T/got" "$T/expected"; then
-		ok "the README's example of heights runs as written and prints what the README shows"
-	else
-		notok "the README's example of heights runs as written and prints what the README shows (exit $rc; sh tests/cli/fit_data.sh --update-readme rewrites it)"
-		diff "$T/expected" "$T/got" | head -20 | sed 's/^/# /'
-	fi
-else
-	notok "the README has an example of heights between FIT-DATA-EXAMPLE markers"
-fi
+readme_example FIT-DATA-EXAMPLE 'example of heights' tests/cli/fit_data.sh "${1:-}"
 # and its estimates are those of the truth, within a standard error
 if [ -f "$T/readme/heights-fit.preset" ] && awk '
 	/^  law.c / && !hc { c = ($3 - 5000) / $4; hc = 1 }

@@ -19,15 +19,7 @@
 # the host defines (30).
 . "$(dirname "$0")/common.inc"
 
-case $BIN in
-"$(pwd)"/*) BUILD=$(dirname "${BIN#"$(pwd)"/}") ;;
-*) BUILD=$(dirname "$BIN") ;;
-esac
-DEST=$T/dest
-MAKEFLAGS= MAKELEVEL= make -s BUILD="$BUILD" DESTDIR="$DEST" install >"$T/install.log" 2>&1
-rc=$?
-pc=$(find "$DEST" -name hybounce.pc | head -n 1)
-LIB=$(dirname "$(dirname "${pc:-$DEST/none/x}")")
+install_dest
 if [ "$rc" -eq 0 ] && [ -f "$LIB/libhybounce.a" ] && [ -e "$LIB/libhybounce.so" ]; then
 	ok "make install into a DESTDIR"
 else

@@ -9,19 +9,8 @@
 # all.  Also: the core keeps no mutable static state (re-entrancy).
 . "$(dirname "$0")/common.inc"
 
-# The build folder of $BIN, relative to the repository when inside it.
-case $BIN in
-"$(pwd)"/*) BUILD=$(dirname "${BIN#"$(pwd)"/}") ;;
-*) BUILD=$(dirname "$BIN") ;;
-esac
-DEST=$T/dest
-# The PREFIX the build was made for (make's default unless given): installed
-# with it, so that nothing is rebuilt.
-MAKEFLAGS= MAKELEVEL= make -s BUILD="$BUILD" DESTDIR="$DEST" install >"$T/install.log" 2>&1
-rc=$?
-pc=$(find "$DEST" -name hybounce.pc | head -n 1)
+install_dest
 PREFIX=$(sed -n 's/^prefix=//p' "$pc" 2>/dev/null)
-LIB=$(dirname "$(dirname "${pc:-$DEST/none/x}")")
 if [ "$rc" -eq 0 ] && [ -n "$pc" ] && [ -n "$PREFIX" ]; then ok "make install into a DESTDIR (prefix $PREFIX)"
 else notok "make install into a DESTDIR (exit $rc)" "$T/install.log"; fi
 

@@ -6,20 +6,7 @@
  * run would stop here with the name.  The library must keep calling its
  * own (hidden and, in libhybounce.a, local: Makefile).
  */
-#include <stdio.h>
-#include <stdlib.h>
-
-
-static void
-trap(const char *name)
-{
-	fprintf(stderr, "host: the library called the host's %s\n", name);
-	abort();
-}
-
-#define HOST_NAME(f) \
-	void f(void); \
-	void f(void) { trap(#f); }
+#include "host_name.h"
 
 HOST_NAME(arc_new)
 HOST_NAME(arc_free)

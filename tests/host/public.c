@@ -6,20 +6,7 @@
  * calls must stay inside the library (libhybounce.so is linked with
  * -Bsymbolic-functions: Makefile).  The host program calls none of them.
  */
-#include <stdio.h>
-#include <stdlib.h>
-
-
-static void
-trap(const char *name)
-{
-	fprintf(stderr, "host: the library called the host's %s\n", name);
-	abort();
-}
-
-#define HOST_NAME(f) \
-	void f(void); \
-	void f(void) { trap(#f); }
+#include "host_name.h"
 
 HOST_NAME(hb_atomic_add)
 HOST_NAME(hb_atomic_begin)

@@ -5,28 +5,12 @@
 # (Enter, a new value) changes that body alone and restarts the run, and
 # the status line says so.
 . tests/tui/common.inc
+. tests/chain.inc
 
-cat >"$TMP/c.preset" <<'P'
-[scene]
-name = cradle of five with a heavy ball
-law = hertz
-[body1]
-E = 200 GPa
-nu = 0.3
-rho = 7800 kg/m^3
-R = 10 mm
-[chain]
-n = 5
-spacing = 1 mm
-[body.3]
+steel_chain 'cradle of five with a heavy ball' 5 '1 mm' '50 ms' '[body.3]
 R = 12 mm
 [initial]
-body.5.v = -2 m/s
-[loads]
-g = 0
-[run]
-T = 50 ms
-P
+body.5.v = -2 m/s' '' >"$TMP/c.preset"
 
 start a 120 50 c.preset
 wait_for a 'collisions' 100

@@ -11,29 +11,10 @@
 # body at a time (b=); the key is in the help; quitting
 # exits 0.
 . "$(dirname "$0")/common.inc"
+. "$(dirname "$0")/../chain.inc"
 PY="$(pwd)/tests/cli/plot_png.py"
 
-cat >"$TMP/cradle.preset" <<'P'
-[scene]
-name = cradle
-law = hertz
-[body1]
-E = 200 GPa
-nu = 0.3
-rho = 7800 kg/m^3
-R = 10 mm
-[chain]
-n = 5
-spacing = 10 mm
-[striker]
-v = -1 m/s
-[loads]
-g = 0
-[run]
-T = 60 ms
-rtol = 1e-12
-atol = 1e-14
-P
+steel_chain cradle 5 '10 mm' '60 ms' >"$TMP/cradle.preset"
 
 # rows of the view's canvas (below its title, above the t axis)
 canvas() { screen "$1" | sed -n '/space-time: /,/^t ->/p' | sed '1d;$d' | cut -c10-; }
