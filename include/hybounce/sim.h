@@ -208,7 +208,18 @@ hb_sim_limits(const struct hb_sim *s, long *count);
  */
 int
 hb_sim_seek(struct hb_sim *s, size_t i);
-/* (A chain's run cannot be continued from an earlier sample yet: HB_EINVAL.) */
+/*
+ * A chain's run is recomputed from t = 0 to the sample (the engine is
+ * deterministic), so that it goes on after it bit for bit as the run
+ * that was not cut: a seek back costs the run up to the sample; one into
+ * the last unit of work (a flight, or one step of the contacts) costs
+ * nothing.  What that unit computed after the sample is given back by the
+ * next hb_sim_advance; until then hb_sim_body gives the bodies at the
+ * sample's t on their parabolas and hb_sim_contact_live reports none.  An
+ * arc that was thinned (run.max_samples) holds again, before the sample,
+ * what the replay kept.  HB_EINVAL too when the chain's scene changed
+ * part-way (hb_sim_errmsg says so).
+ */
 
 /*
  * Adopts new scene values for what is computed from now on (after the
