@@ -188,3 +188,127 @@ Test(seek_chain, stacked_drop)
 {
 	seek_preset("stacked-drop");
 }
+
+/* ---- branches (sim.h: hb_sim_branch) on a chain ---- */
+
+/* The sample of the k-th post-jump (k = 1, 2, ...). */
+static size_t
+post_jump(const struct hb_arc *arc, int k)
+{
+	size_t i = 0;
+
+	while (k-- > 0 && (i = next_kind(arc, i, HB_ARC_POST_JUMP)) > 0)
+		;
+	cr_assert(i > 0);
+	return i;
+}
+
+/*
+ * Branches a straight run of the preset at sample i with the key set to
+ * the value: the run up to the branch is the straight run's, the edit
+ * changes the table after it, and a fresh simulator taking the recorded
+ * branch gives the same run bit for bit.
+ */
+static void
+branch_preset(const char *name, size_t (*where)(const struct hb_arc *), const char *key,
+              const char *value)
+{
+	struct hb_scene sc, sc2;
+	struct hb_sim *a, *b, *c;
+	const struct hb_branch *br;
+	size_t i, k, nc = 0;
+	int restarted = -1, same = -1, differ = 0;
+	char msg[512];
+
+	scene_preset(name, &sc);
+	a = run_scene(&sc);
+	b = run_scene(&sc);
+	i = where(hb_sim_arc(a));
+	sc2 = sc;
+	cr_assert_eq(hb_scene_set(&sc2, key, value, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_sim_branch(b, i, &sc2, &restarted, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(restarted, 0, "%s: %s = %s at sample %zu continues the run", name, key, value, i);
+	cr_assert_eq(hb_sim_nbranches(b), 1);
+	br = hb_sim_branch_get(b, 0);
+	/* the branch is at the sample, or where the unit of work holding it ends */
+	cr_assert(br->j > hb_arc_at(hb_sim_arc(a), i)->j ||
+	          (br->j == hb_arc_at(hb_sim_arc(a), i)->j && br->t >= hb_arc_at(hb_sim_arc(a), i)->t));
+	cr_assert_eq(hb_sim_run(b), HB_OK, "%s", hb_sim_errmsg(b));
+	/* before the branch: the straight run's samples */
+	for (k = 0; k < hb_arc_len(hb_sim_arc(a)); k++) {
+		const struct hb_arc_sample *x = hb_arc_at(hb_sim_arc(a), k);
+
+		if (x->j > br->j || (x->j == br->j && x->t > br->t))
+			break;
+		cr_assert(same_sample(x, hb_arc_at(hb_sim_arc(b), k)), "%s: sample %zu before the branch", name, k);
+	}
+	cr_assert(k > 1);
+	/* the collisions completed before it are the straight run's; one after it differs */
+	for (k = 0; k < hb_sim_ncollisions(a) && k < hb_sim_ncollisions(b); k++) {
+		if (hb_sim_collision(a, k)->j < br->j) {
+			struct hb_collision x = *hb_sim_collision(b, k);
+
+			x.tf = hb_sim_collision(a, k)->tf; /* the flight after it ends after the branch */
+			cr_assert(same_collision(hb_sim_collision(a, k), &x),
+			          "%s: collision %zu, before the branch", name, k);
+			nc++;
+		} else if (!same_collision(hb_sim_collision(a, k), hb_sim_collision(b, k))) {
+			differ = 1;
+		}
+	}
+	cr_assert(nc > 0 || hb_arc_at(hb_sim_arc(a), i)->j < 8);
+	cr_assert(differ || hb_sim_ncollisions(a) != hb_sim_ncollisions(b),
+	          "%s: %s = %s changes the table after the branch", name, key, value);
+	/* taken again by a fresh simulator (what --batch does with the export): the same run */
+	c = hb_sim_new(&sc, msg, sizeof msg);
+	cr_assert_not_null(c, "%s", msg);
+	cr_assert_eq(hb_sim_branch_at(c, br, &same, &restarted, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(same, 1);
+	cr_assert_eq(restarted, 0);
+	cr_assert_eq(hb_sim_run(c), HB_OK, "%s", hb_sim_errmsg(c));
+	assert_same_run(b, c, "the branch taken again");
+	/* a change of the initial state cannot continue: the run begins again with it */
+	sc2 = sc;
+	cr_assert_eq(hb_scene_set(&sc2, "striker.v", "-0.5 m/s", msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_sim_branch(c, i, &sc2, &restarted, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(restarted, 1);
+	cr_assert_eq(hb_sim_nbranches(c), 0);
+	cr_assert_eq(hb_arc_len(hb_sim_arc(c)), 1);
+	hb_sim_free(a);
+	hb_sim_free(b);
+	hb_sim_free(c);
+}
+
+static size_t
+second_collision(const struct hb_arc *arc)
+{
+	return post_jump(arc, 2);   /* the second contact begins */
+}
+
+static size_t
+fortieth_jump(const struct hb_arc *arc)
+{
+	return post_jump(arc, 40);
+}
+
+static size_t
+first_flight(const struct hb_arc *arc)
+{
+	return next_kind(arc, 0, HB_ARC_PRE_JUMP) / 2;  /* inside the striker's flight */
+}
+
+Test(seek_chain, branch_cradle_at_second_collision)
+{
+	branch_preset("newtons-cradle-5", second_collision, "body.1.mass", "10 g");
+}
+
+Test(seek_chain, branch_granular_chain)
+{
+	branch_preset("granular-chain", fortieth_jump, "body.1.mass", "1 g");
+}
+
+/* Inside a flight: the branch begins where the flight ends (a chain's state is known there). */
+Test(seek_chain, branch_in_a_flight)
+{
+	branch_preset("granular-chain", first_flight, "body.1.mass", "1 g");
+}

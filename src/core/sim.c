@@ -620,9 +620,17 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 		*restarted = 0;
 	if ((rc = hb_scene_validate(&nsc, msg, n)) != 0)
 		return rc;
-	restart = nsc.d.system != s->sc.d.system || s->chain || nsc.chain.n > 0 ||
-	          memcmp(&nsc.init, &s->sc.init, sizeof nsc.init) != 0 ||
-	          (s->I->q && (nsc.law != s->sc.law || nsc.ext != s->sc.ext || !same_bodies(&nsc, &s->sc)));
+	if (s->pend.active && (rc = hbs_pend_flush(s)) != 0) /* a chain goes on from the unit's end */
+		return hb_status_set(msg, n, rc, "%s", s->err);
+	if (s->chain || nsc.chain.n > 0)
+		restart = !s->chain || nsc.chain.n == 0 || !hbs_chain_continues(s, &nsc);
+	else
+		restart = nsc.d.system != s->sc.d.system ||
+		          memcmp(&nsc.init, &s->sc.init, sizeof nsc.init) != 0 ||
+		          (s->I->q && (nsc.law != s->sc.law || nsc.ext != s->sc.ext ||
+		                       !same_bodies(&nsc, &s->sc)));
+	if (!restart && s->chain)
+		hbs_chain_settle_flying(s); /* the new accelerations act from now on */
 	{
 		/* build for the new scene aside: on failure the simulator is exactly as it was */
 		struct hb_scene old = s->sc;
@@ -657,7 +665,10 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 	/* continue from the last sample with the new values (hb_sim_branch records it) */
 	if (s->unrec_t < 0)
 		s->unrec_t = hb_arc_at(s->arc, hb_arc_len(s->arc) - 1)->t;
-	return hb_sim_seek(s, hb_arc_len(s->arc) - 1);
+	rc = hb_sim_seek(s, hb_arc_len(s->arc) - 1);
+	if (rc == HB_OK && s->chain && s->end == HB_SIM_RUNNING)
+		s->setup = 1; /* a chain's next interval begins with the new constants */
+	return rc;
 }
 
 int

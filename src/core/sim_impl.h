@@ -388,6 +388,11 @@ void
 hbs_branches_clear(struct hb_sim *s);
 void
 hbs_branches_cut(struct hb_sim *s, size_t i);
+/* ... whether a chain's run goes on with a new scene (else it restarts); its flying bodies settled at t */
+int
+hbs_chain_continues(const struct hb_sim *s, const struct hb_scene *nsc);
+void
+hbs_chain_settle_flying(struct hb_sim *s);
 
 /* sim_flow.c */
 int

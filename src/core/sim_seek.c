@@ -199,6 +199,8 @@ hbs_chain_seek(struct hb_sim *s, size_t i)
 			         "sample at t = %s s, j = %ld%s%.400s", tb, at.j, why[0] ? ": " : "", why);
 			return HB_EINVAL;
 		}
+	} else {
+		hbs_branches_cut(s, i); /* a branch after the sample goes with what follows it */
 	}
 	if ((rc = put_aside(s, i)) != 0) {
 		snprintf(s->err, sizeof s->err, rc == HB_ENOMEM ? "out of memory for a seek"
