@@ -208,7 +208,18 @@ hb_sim_limits(const struct hb_sim *s, long *count);
  */
 int
 hb_sim_seek(struct hb_sim *s, size_t i);
-/* (A chain's run cannot be continued from an earlier sample yet: HB_EINVAL.) */
+/*
+ * A chain's run is recomputed from t = 0 to the sample (the engine is
+ * deterministic), so that it goes on after it bit for bit as the run
+ * that was not cut: a seek back costs the run up to the sample; one into
+ * the last unit of work (a flight, or one step of the contacts) costs
+ * nothing.  What that unit computed after the sample is given back by the
+ * next hb_sim_advance; until then hb_sim_body gives the bodies at the
+ * sample's t on their parabolas and hb_sim_contact_live reports none.  An
+ * arc that was thinned (run.max_samples) holds again, before the sample,
+ * what the replay kept.  HB_EINVAL too when the chain's scene changed
+ * part-way (hb_sim_errmsg says so).
+ */
 
 /*
  * Adopts new scene values for what is computed from now on (after the
@@ -217,7 +228,13 @@ hb_sim_seek(struct hb_sim *s, size_t i);
  * hb_sim_branch is the reproducible way).  The new scene is validated first; on error
  * nothing changes.  Changing the law or the bodies while the last sample is
  * in contact (or changing the initial conditions or the system) restarts
- * the run from t = 0, and *restarted says so (may be NULL).
+ * the run from t = 0, and *restarted says so (may be NULL).  A chain
+ * restarts when the change is of the number of bodies, the floor, any
+ * body's initial velocity, gap or radius, the mass or load of a body in
+ * contact, or the law or extension of an interface in contact; otherwise
+ * it goes on, its flying bodies taking their new accelerations from the
+ * last sample's t.  After a chain's hb_sim_seek the run goes on from the
+ * end of the unit of work that holds the sample (see hb_sim_seek).
  */
 int
 hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, char *msg, size_t n);
@@ -252,7 +269,10 @@ struct hb_branch {
  * and *restarted (may be NULL) says so.  Returns HB_OK, HB_EINVAL (a bad
  * index or scene, or the replayed run does not reach the sample) or
  * HB_ENOMEM; on an error other than a bad scene the run is as far as the
- * replay got.  Costs a run from t = 0 to the sample.
+ * replay got.  Costs a run from t = 0 to the sample.  A chain's branch
+ * begins at the end of the unit of work (a flight, or a step of the
+ * contacts, with its jump) that holds sample i, and is recorded there
+ * (hb_sim_branch_get): the chain's state is known there.
  */
 int
 hb_sim_branch(struct hb_sim *s, size_t i, const struct hb_scene *sc, int *restarted, char *msg,

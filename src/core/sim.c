@@ -278,6 +278,7 @@ reset_state(struct hb_sim *s)
 	s->ncol = 0;
 	s->ncol_total = 0;
 	s->stepper[1] = sc->run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : sc->run.stepper;
+	hbs_pend_drop(s);
 	arc_truncate(s->arc, 0);
 	{
 		struct hb_sim_stats keep = s->st;
@@ -286,8 +287,15 @@ reset_state(struct hb_sim *s)
 		s->st.ncomp = keep.ncomp;
 		memcpy(s->st.comp, keep.comp, sizeof s->st.comp);
 	}
+	s->unit_n = 0;
 	hbs_push_sample(s, HB_ARC_START);
 	hbs_branches_clear(s);
+}
+
+void
+hbs_reset_state(struct hb_sim *s)
+{
+	reset_state(s);
 }
 
 static int
@@ -382,6 +390,7 @@ hb_sim_free(struct hb_sim *s)
 	hbs_cluster_free(s);
 	free(s->br);
 	free(s->col);
+	free(s->pend.s);
 	free(s);
 }
 
@@ -392,6 +401,10 @@ hb_sim_advance(struct hb_sim *s, long max_steps, double max_seconds)
 	long work0 = s->work;
 	int rc = 0;
 
+	if (s->pend.active) { /* a chain's seek kept the rest of a unit's outputs aside: first those */
+		if ((rc = hbs_pend_flush(s)) != 0 || s->end != HB_SIM_RUNNING)
+			return rc;
+	}
 	if (s->end != HB_SIM_RUNNING)
 		return HB_EDONE;
 	while (s->end == HB_SIM_RUNNING) {
@@ -400,6 +413,7 @@ hb_sim_advance(struct hb_sim *s, long max_steps, double max_seconds)
 		if (max_seconds > 0 && ((s->work - work0) & 7) == 0 &&
 		    clock_seconds(CLOCK_MONOTONIC) - start >= max_seconds)
 			break;
+		s->unit_n = 0;
 		if (s->chain) { /* a chain: its flights and its clusters of contacts (sim_cluster.c) */
 			if (s->setup && (rc = hbs_cluster_setup(s)))
 				break;
@@ -490,7 +504,7 @@ int
 hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out)
 {
 	const struct iface *I = s->I;
-	if (!I->q)
+	if (!I->q || s->pend.active) /* (after a chain's seek, the state is the unit's end: none) */
 		return 0;
 	memset(out, 0, sizeof *out);
 	out->i = s->ncol_total;
@@ -521,10 +535,8 @@ hb_sim_seek(struct hb_sim *s, size_t i)
 	const struct hb_arc_sample *a;
 	const struct hb_arc_interval *iv;
 
-	if (s->chain) { /* a chain's arc does not hold its bodies yet */
-		snprintf(s->err, sizeof s->err, "a chain's run cannot be continued from an earlier sample");
-		return HB_EINVAL;
-	}
+	if (s->chain) /* replayed to the sample (sim_seek.c) */
+		return hbs_chain_seek(s, i);
 	if (i >= hb_arc_len(s->arc))
 		return HB_EINVAL;
 	hbs_branches_cut(s, i);
@@ -608,9 +620,17 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 		*restarted = 0;
 	if ((rc = hb_scene_validate(&nsc, msg, n)) != 0)
 		return rc;
-	restart = nsc.d.system != s->sc.d.system || s->chain || nsc.chain.n > 0 ||
-	          memcmp(&nsc.init, &s->sc.init, sizeof nsc.init) != 0 ||
-	          (s->I->q && (nsc.law != s->sc.law || nsc.ext != s->sc.ext || !same_bodies(&nsc, &s->sc)));
+	if (s->pend.active && (rc = hbs_pend_flush(s)) != 0) /* a chain goes on from the unit's end */
+		return hb_status_set(msg, n, rc, "%s", s->err);
+	if (s->chain || nsc.chain.n > 0)
+		restart = !s->chain || nsc.chain.n == 0 || !hbs_chain_continues(s, &nsc);
+	else
+		restart = nsc.d.system != s->sc.d.system ||
+		          memcmp(&nsc.init, &s->sc.init, sizeof nsc.init) != 0 ||
+		          (s->I->q && (nsc.law != s->sc.law || nsc.ext != s->sc.ext ||
+		                       !same_bodies(&nsc, &s->sc)));
+	if (!restart && s->chain)
+		hbs_chain_settle_flying(s); /* the new accelerations act from now on */
 	{
 		/* build for the new scene aside: on failure the simulator is exactly as it was */
 		struct hb_scene old = s->sc;
@@ -645,7 +665,10 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 	/* continue from the last sample with the new values (hb_sim_branch records it) */
 	if (s->unrec_t < 0)
 		s->unrec_t = hb_arc_at(s->arc, hb_arc_len(s->arc) - 1)->t;
-	return hb_sim_seek(s, hb_arc_len(s->arc) - 1);
+	rc = hb_sim_seek(s, hb_arc_len(s->arc) - 1);
+	if (rc == HB_OK && s->chain && s->end == HB_SIM_RUNNING)
+		s->setup = 1; /* a chain's next interval begins with the new constants */
+	return rc;
 }
 
 int

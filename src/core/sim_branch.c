@@ -16,14 +16,76 @@
  * for bit: what `hybounce --batch` does with a preset that records
  * branches (preset.h: hb_preset_open_branched).
  *
+ * A chain (sim_seek.c) is cut at the end of the unit of work that holds
+ * the sample, where its state is known, and the branch is recorded there;
+ * whether it goes on or restarts is hbs_chain_continues's rule.
+ *
  * A change of scene that did not go through here (hb_sim_set_scene that
  * continues the run, or a seek back past a branch) is remembered by its
  * time: hb_sim_unrecorded() says the run is no longer described by its
  * first scene and branches.
  */
 #include "sim_impl.h"
+#include "scene_chain.h"
 
 #include "cnum.h"
+
+/*
+ * A chain's run goes on with scene nsc from its current state unless that
+ * changes what the state was computed from or what is in contact (as the
+ * two-body scenes' rule): the number of bodies, the floor, the system, any
+ * body's initial velocity, gap or radius (its position at t = 0), the mass
+ * or load of a body in contact, or the law or extension of an interface in
+ * contact.  Then 0: the run begins again from t = 0.
+ */
+int
+hbs_chain_continues(const struct hb_sim *s, const struct hb_scene *nsc)
+{
+	const struct hb_scene *o = &s->sc;
+	int i;
+
+	if (nsc->chain.n != o->chain.n || nsc->chain.floor != o->chain.floor ||
+	    nsc->d.system != o->d.system || memcmp(&nsc->init, &o->init, sizeof nsc->init) != 0)
+		return 0;
+	for (i = 0; i < s->nbody; i++) {
+		struct scene_chain_body a, b;
+
+		if (scene_chain_body(o, i, &a) != HB_OK || scene_chain_body(nsc, i, &b) != HB_OK)
+			return 0;
+		if (a.v0 != b.v0 || a.gap != b.gap || a.R != b.R)
+			return 0;
+		if (s->body[i].cl >= 0 && (a.m != b.m || a.F != b.F))
+			return 0;
+	}
+	for (i = 0; i < s->nif; i++) {
+		struct scene_chain_iface a, b;
+
+		if (!s->ifc[i].q)
+			continue;
+		if (scene_chain_iface(o, s->k0 + i, &a) != HB_OK ||
+		    scene_chain_iface(nsc, s->k0 + i, &b) != HB_OK || a.law != b.law || a.ext != b.ext)
+			return 0;
+	}
+	return 1;
+}
+
+/*
+ * Before a chain's bodies take new constants: each flying body's (y, u)
+ * moved to the current t on its parabola, so that a new acceleration acts
+ * from now on (a body in contact keeps its mass and load).
+ */
+void
+hbs_chain_settle_flying(struct hb_sim *s)
+{
+	for (int i = 0; i < s->nbody; i++) {
+		double y, u;
+
+		if (s->body[i].cl >= 0)
+			continue;
+		hbs_body_now(&s->body[i], s->t, &y, &u);
+		hbs_body_set(&s->body[i], s->t, y, u);
+	}
+}
 
 /* Forgets every branch: the run is its scene from t = 0 again. */
 void
@@ -95,6 +157,7 @@ branch_at(struct hb_sim *s, const struct hb_branch *b, int *same_state, int *res
           char *msg, size_t n)
 {
 	const struct hb_arc_sample *a;
+	struct hb_branch nb;
 	double unrec = s->unrec_t;
 	long i;
 	int rc;
@@ -121,13 +184,31 @@ branch_at(struct hb_sim *s, const struct hb_branch *b, int *same_state, int *res
 	if (same_state != NULL)
 		*same_state = a->x == b->x && a->v == b->v && a->xc == b->xc && a->q == b->q;
 	if ((rc = hb_sim_seek(s, (size_t)i)) != HB_OK)
-		return hb_status_set(msg, n, rc, "cannot cut the run at its sample %ld", i);
+		return hb_status_set(msg, n, rc, "cannot cut the run at its sample %ld%s%s", i,
+		                     s->err[0] ? ": " : "", s->err);
+	nb = *b;
+	if (s->pend.active) {
+		/*
+		 * A chain's state is known where a unit of work ends (sim_seek.c):
+		 * the branch begins at the end of the one that holds the sample
+		 * (the rest of its flight, its jump), and is recorded there.
+		 */
+		if ((rc = hbs_pend_flush(s)) != HB_OK)
+			return hb_status_set(msg, n, rc, "%s", s->err);
+		a = hb_arc_last(s->arc);
+		nb.t = a->t;
+		nb.j = a->j;
+		nb.x = a->x;
+		nb.v = a->v;
+		nb.xc = a->xc;
+		nb.q = a->q;
+	}
 	if ((rc = hb_sim_set_scene(s, &b->sc, restarted, msg, n)) != HB_OK)
 		return rc;
 	if (*restarted)
 		return HB_OK;   /* hb_sim_set_scene began the run again with b->sc */
 	s->unrec_t = unrec; /* set_scene marked the change; here it is recorded */
-	return push(s, b) == 0 ? HB_OK : hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+	return push(s, &nb) == 0 ? HB_OK : hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 }
 
 int

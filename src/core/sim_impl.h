@@ -238,6 +238,28 @@ struct hb_sim {
 	struct hb_branch *br;
 	size_t nbr, brcap;
 	double unrec_t;             /* -1, or the first t the scene changed unrecorded */
+
+	/*
+	 * sim_seek.c: a chain's seek.  unit_n counts the samples the last unit
+	 * of work pushed (hb_sim_advance's, or reset_state's start); what that
+	 * unit pushed after the sample a seek cut at is kept aside (pend) and
+	 * given back, unchanged, before any further work.
+	 */
+	size_t unit_n;
+	struct {
+		int active;
+		struct hb_arc_sample *s;    /* the samples after the cut, in order */
+		size_t n, cap;
+		int has_jump, has_col, tf_row;
+		struct hb_arc_jump jr;      /* the unit's jump, when its post-jump sample is aside */
+		struct hb_collision col;    /* the collision that jump completed */
+		double tf;                  /* the flight time that jump gave row tf_row (-1: none) */
+		double t;                   /* the simulator's t and j after the unit */
+		long j;
+		enum hb_sim_end end;
+		char err[640];
+		char endmsg[700];
+	} pend;
 };
 
 static inline double
@@ -345,11 +367,32 @@ hbs_chain_flight(struct hb_sim *s);
 double
 hbs_flight_event(double x, double v, double a);
 
+/*
+ * sim_seek.c: a chain's hb_sim_seek (replayed from t = 0 to the unit of
+ * work that pushed the sample, the rest of that unit's outputs kept
+ * aside); those outputs given back (before any work, a seek or a change of
+ * scene); forgotten (a restart).  hbs_reset_state is sim.c's start of a
+ * run at t = 0.
+ */
+int
+hbs_chain_seek(struct hb_sim *s, size_t i);
+int
+hbs_pend_flush(struct hb_sim *s);
+void
+hbs_pend_drop(struct hb_sim *s);
+void
+hbs_reset_state(struct hb_sim *s);
+
 /* sim_branch.c */
 void
 hbs_branches_clear(struct hb_sim *s);
 void
 hbs_branches_cut(struct hb_sim *s, size_t i);
+/* ... whether a chain's run goes on with a new scene (else it restarts); its flying bodies settled at t */
+int
+hbs_chain_continues(const struct hb_sim *s, const struct hb_scene *nsc);
+void
+hbs_chain_settle_flying(struct hb_sim *s);
 
 /* sim_flow.c */
 int

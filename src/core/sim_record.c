@@ -78,6 +78,7 @@ hbs_push_sample(struct hb_sim *s, int kind)
 	a.k = s->k0 + s->ia;
 	if (arc_push(s->arc, &a))
 		return hbs_fail(s, HB_ENOMEM, "out of memory for the arc");
+	s->unit_n++;
 	return 0;
 }
 

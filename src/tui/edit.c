@@ -84,6 +84,7 @@ apply_scene_how(struct app *a, const struct hb_scene *sc_in, const char *what, i
 		size_t at = a->cursor;
 		const struct hb_arc_sample *s = hb_arc_at(hb_sim_arc(a->sim), at);
 		long j = s->j;
+		double s_t = s->t;
 
 		/* replayed from t = 0 to the cursor: the same run --batch makes of the export */
 		rc = hb_sim_branch(a->sim, at, &sc, &restarted, emsg, sizeof emsg);
@@ -108,7 +109,7 @@ apply_scene_how(struct app *a, const struct hb_scene *sc_in, const char *what, i
 		applied(a, &before, what, undo);
 		if (restarted) {
 			from_start(a);
-			app_msg(a, 0, "%s: cannot branch here (a change of the law in contact, the bodies or the initial state); the run restarted from t = 0",
+			app_msg(a, 0, "%s: cannot branch here (a change of the law in contact, of the bodies in contact, a radius or the initial state); the run restarted from t = 0",
 			        what);
 		} else {
 			const struct hb_branch *b0 = hb_sim_branch_get(a->sim, 0);
@@ -117,6 +118,13 @@ apply_scene_how(struct app *a, const struct hb_scene *sc_in, const char *what, i
 			a->branch_t = b0 != NULL ? b0->t : -1;
 			a->branch_j = b0 != NULL ? b0->j : 0;
 			cursor_set(a, at < hb_arc_len(hb_sim_arc(a->sim)) ? at : hb_arc_len(hb_sim_arc(a->sim)) - 1);
+			if (b0 != NULL && hb_sim_nbranches(a->sim) > 0 &&
+			    hb_sim_branch_get(a->sim, hb_sim_nbranches(a->sim) - 1)->t > s_t) {
+				/* a chain's branch begins where the flight or step holding the cursor ends */
+				hb_units_format(hb_sim_branch_get(a->sim, hb_sim_nbranches(a->sim) - 1)->t,
+				                hb_unit_time, 6, tb, sizeof tb);
+				j = hb_sim_branch_get(a->sim, hb_sim_nbranches(a->sim) - 1)->j;
+			}
 			app_msg(a, 0, "%s from t = %s, j = %ld (branch here): the run continues from the cursor; an export records the branch and --batch replays it",
 			        what, tb, j);
 		}
@@ -419,12 +427,6 @@ act_branch(struct app *a)
 {
 	char tb[32];
 
-	if (hb_sim_scene(a->sim)->chain.n > 0) {
-		/* hb_sim_branch cuts the replayed run with hb_sim_seek, which a chain's run refuses */
-		a->branch_armed = 0;
-		app_msg(a, 1, "b: a chain's run cannot branch: an edit restarts it from t = 0");
-		return;
-	}
 	cursor_clamp(a);
 	hb_units_format(a->tcur, hb_unit_time, 6, tb, sizeof tb);
 	a->branch_armed = !a->branch_armed;

@@ -1,0 +1,211 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/*
+ * sim_seek.c - a chain's run continued from one of its samples (sim.h:
+ * hb_sim_seek), the same run after it, bit for bit.
+ *
+ * A chain's state at a sample is more than the sample: every body's
+ * (y, u, tb), every interface's state, the clusters and their centres of
+ * mass, the integrator's step and stiffness counts.  The engine is
+ * deterministic, so the state is not kept but recomputed: the run is begun
+ * again from t = 0 with its scene and advanced one unit of work at a time
+ * (a flight, or one step of the clusters, each with the jump it may end
+ * in) until it has pushed the sample.  A unit may push more samples after
+ * it (a flight's, the post-jump sample after the pre-jump one, the end
+ * after the last step); those, with the jump record and the collision
+ * they come with, are kept aside and given back unchanged before any
+ * further work (hbs_pend_flush), so that the run goes on as if it had not
+ * been cut.  Until then the arc, the collisions and the end are as at the
+ * sample, the simulator's t and j the sample's (hb_sim_body: the bodies at
+ * that t on their parabolas); the contact in progress is not reported.
+ * A seek within the last unit of work needs no replay.
+ *
+ * Cost: a seek back costs the run from t = 0 to the sample (the time it
+ * took to compute); memory: the outputs of one unit of work (at most
+ * FLIGHT_SAMPLES + 1 samples).  A thinned arc (run.max_samples) holds,
+ * after a replay, the samples before the cut that it had thinned out: the
+ * sample cut at may then have a greater index than it had.
+ */
+#include "sim_impl.h"
+
+#include "cnum.h"
+
+void
+hbs_pend_drop(struct hb_sim *s)
+{
+	s->pend.active = 0;
+	s->pend.n = 0;
+}
+
+int
+hbs_pend_flush(struct hb_sim *s)
+{
+	size_t k;
+
+	if (!s->pend.active)
+		return 0;
+	s->pend.active = 0;
+	s->t = s->pend.t;
+	s->j = s->pend.j;
+	for (k = 0; k < s->pend.n; k++) {
+		if (s->pend.has_jump && s->pend.s[k].kind == HB_ARC_POST_JUMP &&
+		    arc_push_jump(s->arc, &s->pend.jr))
+			return hbs_fail(s, HB_ENOMEM, "out of memory for the jump records");
+		if (arc_push(s->arc, &s->pend.s[k]))
+			return hbs_fail(s, HB_ENOMEM, "out of memory for the arc");
+	}
+	if (s->pend.has_col) { /* its row was there: the array has room */
+		s->col[s->ncol++] = s->pend.col;
+		s->ncol_total++;
+	}
+	if (s->pend.tf_row >= 0 && (size_t)s->pend.tf_row < s->ncol)
+		s->col[s->pend.tf_row].tf = s->pend.tf;
+	s->end = s->pend.end;
+	memcpy(s->err, s->pend.err, sizeof s->err);
+	memcpy(s->endmsg, s->pend.endmsg, sizeof s->endmsg);
+	s->pend.n = 0;
+	return 0;
+}
+
+/* Puts the samples after i (all of the last unit of work's) aside, with what they bring. */
+static int
+put_aside(struct hb_sim *s, size_t i)
+{
+	size_t n = hb_arc_len(s->arc), m = n - 1 - i, k;
+	const struct hb_arc_sample *pre = NULL;
+
+	if (m == 0)
+		return 0;
+	if (m > s->pend.cap) {
+		struct hb_arc_sample *p = realloc(s->pend.s, m * sizeof *p);
+
+		if (p == NULL)
+			return HB_ENOMEM;
+		s->pend.s = p;
+		s->pend.cap = m;
+	}
+	s->pend.n = m;
+	s->pend.has_jump = s->pend.has_col = 0;
+	s->pend.tf_row = -1;
+	for (k = 0; k < m; k++) {
+		s->pend.s[k] = *hb_arc_at(s->arc, i + 1 + k);
+		if (s->pend.s[k].kind == HB_ARC_POST_JUMP) {
+			s->pend.has_jump = 1;
+			pre = hb_arc_at(s->arc, i + k);   /* the pre-jump sample before it */
+		}
+	}
+	if (s->pend.has_jump) {
+		size_t nj = hb_arc_njumps(s->arc);
+
+		if (nj == 0 || hb_arc_jump_at(s->arc, nj - 1)->j != pre->j)
+			return HB_EINVAL;
+		s->pend.jr = *hb_arc_jump_at(s->arc, nj - 1);
+		if (s->pend.jr.from_q) {
+			/* the contact that jump ended: its collision was the unit's */
+			if (s->ncol == 0 || s->col[s->ncol - 1].j != pre->j)
+				return HB_EINVAL;
+			s->pend.col = s->col[s->ncol - 1];
+			s->pend.has_col = 1;
+		} else {
+			/* a contact begun: the flight of its interface since its last collision */
+			size_t r = s->ncol;
+
+			while (r > 0 && s->col[r - 1].k != pre->k)
+				r--;
+			if (r > 0 && !isnan(s->col[r - 1].tf)) {
+				s->pend.tf_row = (int)(r - 1);
+				s->pend.tf = s->col[r - 1].tf;
+			}
+		}
+	}
+	/* nothing can fail from here */
+	if (s->pend.has_col) {
+		s->ncol--;
+		s->ncol_total--;
+	}
+	if (s->pend.tf_row >= 0)
+		s->col[s->pend.tf_row].tf = NAN;
+	s->pend.t = s->t;
+	s->pend.j = s->j;
+	s->pend.end = s->end;
+	memcpy(s->pend.err, s->err, sizeof s->err);
+	memcpy(s->pend.endmsg, s->endmsg, sizeof s->endmsg);
+	arc_truncate(s->arc, i + 1);
+	s->t = hb_arc_at(s->arc, i)->t;
+	s->j = hb_arc_at(s->arc, i)->j;
+	s->end = HB_SIM_RUNNING;
+	s->err[0] = s->endmsg[0] = '\0';
+	s->pend.active = 1;
+	return 0;
+}
+
+/* The sample of the last unit of work at (t, j) of this kind; hb_arc_len when none. */
+static size_t
+in_last_unit(const struct hb_sim *s, const struct hb_arc_sample *at)
+{
+	size_t n = hb_arc_len(s->arc), k;
+
+	for (k = n - s->unit_n; k < n; k++) {
+		const struct hb_arc_sample *a = hb_arc_at(s->arc, k);
+
+		if (a->t == at->t && a->j == at->j && a->kind == at->kind)
+			return k;
+	}
+	return n;
+}
+
+/* 1 when sample a is after (t, j) in hybrid-time order. */
+static int
+past(const struct hb_arc_sample *a, double t, long j)
+{
+	return a->j > j || (a->j == j && a->t > t);
+}
+
+int
+hbs_chain_seek(struct hb_sim *s, size_t i)
+{
+	struct hb_arc_sample at;
+	size_t n;
+	int rc;
+
+	if ((rc = hbs_pend_flush(s)) != 0)
+		return rc;
+	n = hb_arc_len(s->arc);
+	if (i >= n)
+		return HB_EINVAL;
+	at = *hb_arc_at(s->arc, i);
+	if (i + s->unit_n < n) {
+		/* before the last unit of work: the run again from t = 0 to the unit that pushes it */
+		if (s->nbr > 0 || s->unrec_t >= 0) {
+			snprintf(s->err, sizeof s->err, "a chain's run whose scene changed part-way "
+			         "cannot be continued from an earlier sample");
+			return HB_EINVAL;
+		}
+		hbs_reset_state(s);
+		for (;;) {
+			i = in_last_unit(s, &at);
+			n = hb_arc_len(s->arc);
+			if (i < n || past(hb_arc_last(s->arc), at.t, at.j) || s->end != HB_SIM_RUNNING)
+				break;
+			rc = hb_sim_advance(s, 1, 0.0);
+			if (rc != HB_OK && rc != HB_EDONE)
+				break;
+		}
+		if (i == n) {
+			char tb[40], why[sizeof s->err];
+
+			cnum_snprintf(tb, sizeof tb, "%.17g", at.t);
+			memcpy(why, s->err, sizeof why);
+			snprintf(s->err, sizeof s->err, "the chain's run replayed from t = 0 has no "
+			         "sample at t = %s s, j = %ld%s%.400s", tb, at.j, why[0] ? ": " : "", why);
+			return HB_EINVAL;
+		}
+	} else {
+		hbs_branches_cut(s, i); /* a branch after the sample goes with what follows it */
+	}
+	if ((rc = put_aside(s, i)) != 0) {
+		snprintf(s->err, sizeof s->err, rc == HB_ENOMEM ? "out of memory for a seek"
+		         : "a chain's unit of work has no jump record before its post-jump sample");
+		return rc;
+	}
+	return 0;
+}
