@@ -3,8 +3,9 @@
  * sim_cluster_step.c - a chain's clusters of contacts: a flow interval
  * begun (the blocks of the ODE laid out, scaled and packed, the earliest
  * closing of a gap between flying bodies), one accepted step, and the
- * location of the earliest crossing of a watched function on re-steps
- * (see sim_cluster.c for the method).
+ * location of the earliest crossing of a watched function on re-steps,
+ * with the engine's root finder (sim_root.c; see sim_cluster.c for the
+ * method).
  */
 #include <float.h>
 
@@ -316,22 +317,76 @@ watched(struct hb_sim *s, double t, const double *u, const void *arg)
 }
 
 /*
- * A function val (of this kind, see hbs_crossed) crosses in (0, hend] of
- * the step from (t0, u0): the bracket [a, b] about its crossing, narrowed
- * by the Illinois method on re-steps down to a few ulps of t; *hb is b
- * (the far end, past the crossing).  Its value at a (>= 0 for an event) is
- * fa.  The clusters' events, kinks and extrema are located with it, and
- * the model's limits (sim_limits.c).
+ * A function of a chain's clusters to locate, as the root finder sees it
+ * (struct hbs_root): val's value on a re-step to h, oriented as the pair's
+ * (sim_locate.c's oriented_value).  The last values asked are kept: the
+ * root finder asks the bracket's ends again, and a re-step of the clusters
+ * is a step of the method.
+ */
+#define CMEMO 8
+struct cfun {
+	struct hb_sim *s;
+	int kind, sign0;
+	hbs_val_fn *val;
+	const void *arg;
+	double fa;          /* its value at the step's start */
+	int n, next;
+	double mh[CMEMO], mg[CMEMO];
+};
+
+static double
+cfun_value(double h, void *ctx)
+{
+	struct cfun *f = ctx;
+	struct clusters *c = &f->s->cx;
+	double v;
+	int i;
+
+	for (i = 0; i < f->n; i++)
+		if (f->mh[i] == h)
+			return f->mg[i];
+	if (c->t0 + h == c->t0)
+		v = f->fa; /* the step's start */
+	else if (hbs_cluster_restep(f->s, h) != GSL_SUCCESS)
+		return NAN;
+	else
+		v = f->val(f->s, c->t0 + h, c->u1, f->arg);
+	if (f->kind == FUN_EVENT)
+		v = v >= 0.0 ? fmax(v, DBL_MIN) : v;
+	else {
+		v *= f->sign0;
+		v = v > 0.0 ? v : (v == 0.0 ? DBL_MIN : v);
+	}
+	i = f->next;
+	f->next = (f->next + 1) % CMEMO;
+	if (f->n < CMEMO)
+		f->n++;
+	f->mh[i] = h;
+	f->mg[i] = v;
+	return v;
+}
+
+/*
+ * A function val (of this kind, see hbs_crossed; fa at the step's start,
+ * gmax the largest |value| it has had) crosses in (0, hend] of the step
+ * from (t0, u0): the crossed end b of its bracket, located on re-steps by
+ * the engine's root finder (sim_root.c, as the pair's) down to a few ulps
+ * of t (the stalls of Brent's method closed for every kind of function),
+ * into *hb; the evaluations into *iters.  The clusters' events,
+ * kinks and extrema are located with it, and the model's limits
+ * (sim_limits.c).
  */
 int
-hbs_cluster_root(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
-                 double *hb, int *iters)
+hbs_cluster_locate(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
+                   double gmax, double *hb, int *iters)
 {
 	struct clusters *c = &s->cx;
-	double a = 0.0, b = hend, tol = fmax(4.0 * DBL_EPSILON * fabs(c->t0 + hend), 1e-14 * hend), fb;
-	int side = 0, it = 0;
-	int slow = 0, flat = 0;
+	struct cfun f = { s, kind, kind == FUN_EVENT || fa > 0.0 ? 1 : -1, val, arg, fa, 0, 0, { 0 }, { 0 } };
+	struct hbs_root r = { cfun_value, &f, iters, s->root, c->t0, hend, 1,
+	                      100.0 * DBL_EPSILON * gmax };
+	double a, g;
 
+	*iters = 0;
 	/*
 	 * The far end as the re-steps see it: the accepted step's length is
 	 * t - t0, which may differ from the h it was taken with by rounding,
@@ -340,64 +395,15 @@ hbs_cluster_root(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, d
 	 * event whose function is negative at the step's end is taken when
 	 * the next step begins.
 	 */
-	if (hbs_cluster_restep(s, b) != GSL_SUCCESS)
+	(*iters)++;
+	if (isnan(g = cfun_value(hend, &f)))
 		return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
-	fb = val(s, c->t0 + b, c->u1, arg);
-	if (!hbs_crossed(kind, fa, fb)) {
+	if (!(g < 0.0)) {
 		*hb = INFINITY;
-		*iters = 1;
 		return 0;
 	}
-	it = 1;
-
-	while (b - a > tol && it < 200) {
-		double m, fm, w = b - a;
-		int in_b;
-
-		/*
-		 * Regula falsi with the Illinois halving, and a bisection after a
-		 * trial that did not halve the bracket or that found the value of
-		 * an end again (a gap computed from positions moves in steps of
-		 * their ulps): at least a halving every two trials.  A trial is
-		 * never nearer an end than tol, so that the bracket closes once
-		 * the root is found; a touching gap, which leaves C at once, is
-		 * tried first at a + tol.
-		 */
-		m = fa != fb ? b - fb * (b - a) / (fb - fa) : 0.5 * (a + b);
-		if (!(m > a && m < b) || slow || flat)
-			m = 0.5 * (a + b);
-		if (fa == 0.0 && kind == FUN_EVENT && it == 1)
-			m = a + tol;
-		if (m - a < tol)
-			m = a + tol;
-		if (b - m < tol)
-			m = b - tol;
-		if (!(m > a && m < b))
-			m = 0.5 * (a + b);
-		if (hbs_cluster_restep(s, m) != GSL_SUCCESS)
-			return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
-		fm = val(s, c->t0 + m, c->u1, arg);
-		it++;
-		flat = fm == fa || fm == fb;
-		/* is the crossing in (a, m]? */
-		in_b = kind == FUN_EVENT ? fm < 0.0 : (fm > 0.0) == (fb > 0.0) || fm == 0.0;
-		if (in_b) {
-			b = m;
-			fb = fm;
-			if (side == -1)
-				fa *= 0.5;
-			side = -1;
-		} else {
-			a = m;
-			fa = fm;
-			if (side == 1)
-				fb *= 0.5;
-			side = 1;
-		}
-		slow = b - a > 0.5 * w;
-	}
-	*hb = b;
-	*iters = it;
+	if (hbs_root_bracket(&r, 0.0, hend, 1e-14 * hend, &a, hb) != 0)
+		return hbs_fail(s, HB_ENUMERIC, "event location failed (no bracket)");
 	return 0;
 }
 
@@ -491,7 +497,8 @@ hbs_cluster_step(struct hb_sim *s)
 
 			if (!hbs_candidate(s, c->fkind[i], c->gmax[i], a, b))
 				continue;
-			if ((rc = hbs_cluster_root(s, c->fkind[i], watched, &i, c->H, a, &hb, &it)))
+			if ((rc = hbs_cluster_locate(s, c->fkind[i], watched, &i, c->H, a,
+			                             fmax(c->gmax[i], fmax(fabs(a), fabs(b))), &hb, &it)))
 				return rc;
 			iters += it;
 			/* a kink or extremum at the step's start to the resolution of t: no progress to make */

@@ -322,14 +322,15 @@ hbs_cluster_step(struct hb_sim *s);
 /*
  * ... the state one step of length h from the step's start (t0, u0), into
  * cx.u1; a function's crossing in (0, hend] of the step located on such
- * re-steps (see sim_cluster_step.c)
+ * re-steps with the engine's root finder (sim_root.c; see
+ * sim_cluster_step.c)
  */
 int
 hbs_cluster_restep(struct hb_sim *s, double h);
 typedef double hbs_val_fn(struct hb_sim *s, double t, const double *u, const void *arg);
 int
-hbs_cluster_root(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
-                 double *hb, int *iters);
+hbs_cluster_locate(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
+                   double gmax, double *hb, int *iters);
 void
 hbs_cluster_sync(struct hb_sim *s);
 /* sim_limits.c: the model's limits at the end of the step just accepted, each passed located */
@@ -472,6 +473,24 @@ hbs_candidate(const struct hb_sim *s, int kind, double gmax, double f0, double f
 		return 0;
 	return hbs_crossed(kind, f0, fx);
 }
+
+/*
+ * sim_root.c: the root finder both integrators locate with.  A function of
+ * the time h into a step, oriented: value > 0 where it has not crossed (an
+ * exact zero counts as not crossed), < 0 where it has, NAN where the state
+ * at h cannot be computed; every evaluation counted in *iter.
+ */
+struct hbs_root {
+	double (*value)(double h, void *ctx);
+	void *ctx;
+	int *iter;
+	gsl_root_fsolver *solver; /* Brent's */
+	double t0, H;       /* the step's start and length */
+	int stall;          /* 1: its stalls are closed (see sim_root.c) */
+	double noise;       /* ... where its value is zero to rounding */
+};
+int
+hbs_root_bracket(struct hbs_root *r, double lo, double hi, double htol, double *a, double *b);
 
 /* sim_locate.c: acts on the accepted step (t0, u0) -> (t0 + H, u1) */
 int
