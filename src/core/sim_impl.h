@@ -201,6 +201,7 @@ struct hb_sim {
 
 	/* location workspace */
 	double t0, H, u0[MAXDIM], u1[MAXDIM];
+	double ut[MAXDIM];  /* a root finder's iterate (oriented_value; its unread tail stale, not read) */
 	struct {            /* the watched values at the last state hbs_watch_at was asked */
 		int valid, n, kind[MAXFUN];
 		const struct phase *p;

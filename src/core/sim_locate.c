@@ -20,18 +20,19 @@ max_abs(double a, double b)
 
 /*
  * The cubic Hermite interpolant of the step (t0, u0) -> (t0 + H, u1) from
- * the derivatives at its ends, at t0 + h.  Fourth-order: it only guides the
- * location of a crossing for a stepper without a continuous extension
- * (see locate_on_steps); no located point is taken from it.
+ * the derivatives at its ends, at t0 + h: its first n components.
+ * Fourth-order: it only guides the location of a crossing for a stepper
+ * without a continuous extension (see locate_on_steps); no located point
+ * is taken from it.
  */
 static void
-hermite(const struct hb_sim *s, double h, double *u)
+hermite(const struct hb_sim *s, double h, double *u, int n)
 {
 	double th = h / s->H, th2 = th * th, th3 = th2 * th;
 	double a0 = 2 * th3 - 3 * th2 + 1, b0 = (th3 - 2 * th2 + th) * s->H;
 	double a1 = 3 * th2 - 2 * th3, b1 = (th3 - th2) * s->H;
 
-	for (int i = 0; i < s->cur->L.dim; i++)
+	for (int i = 0; i < n; i++)
 		u[i] = a0 * s->u0[i] + b0 * s->f0[i] + a1 * s->u1[i] + b1 * s->f1[i];
 }
 
@@ -47,9 +48,14 @@ hermite_setup(struct hb_sim *s)
 	return p->sys.function(s->t0 + s->H, s->u1, s->f1, p->sys.params);
 }
 
-/* The state one step of length h from (t0, u0), cached. */
+/*
+ * The state one step of length h from (t0, u0), cached; on the Hermite
+ * interpolant, only its first n components (what the watched functions
+ * and the sticking snap read: [0, nread) at a root finder's iterate, the
+ * rest of u left as it was), else all.
+ */
 static int
-restep(struct hb_sim *s, double h, double *u)
+restep_n(struct hb_sim *s, double h, double *u, int n)
 {
 	struct phase *p = s->cur;
 	double yerr[MAXDIM];
@@ -65,11 +71,13 @@ restep(struct hb_sim *s, double h, double *u)
 	}
 	if (s->use_dense || s->use_herm) {
 		/* on the step's continuous extension, or its Hermite interpolant: no evaluation of f */
+		if (!s->use_herm)
+			n = p->L.dim;
 		if (s->use_herm)
-			hermite(s, h, u);
+			hermite(s, h, u, n);
 		else if ((rc = hb_dop853_dense(p->d->s, s->t0 + h, u)) != GSL_SUCCESS)
 			return rc;
-		for (i = 0; i < p->L.dim; i++)
+		for (i = 0; i < n; i++)
 			if (!isfinite(u[i]))
 				return GSL_FAILURE;
 		if (p->q) {
@@ -109,6 +117,13 @@ restep(struct hb_sim *s, double h, double *u)
 	return 0;
 }
 
+/* The whole state one step of length h from (t0, u0) (restep_n). */
+static int
+restep(struct hb_sim *s, double h, double *u)
+{
+	return restep_n(s, h, u, s->cur->L.dim);
+}
+
 /*
  * The oriented value of the target function at h for Brent: > 0 where it
  * has not crossed yet (an exact zero counts as not crossed), < 0 where it
@@ -119,12 +134,12 @@ static double
 oriented_value(double h, void *ctx)
 {
 	struct hb_sim *s = ctx;
-	double u[MAXDIM], val;
+	double *u = s->ut, val;
 	int kind;
 
 	if (s->fun_target != 0 && s->t0 + h == s->t0) /* 0 is the indicator, the event */
 		return DBL_MIN; /* the step's start has not crossed (a mode's side is its sign there) */
-	if (restep(s, h, u))
+	if (restep_n(s, h, u, s->cur->L.nread))
 		return NAN;
 	val = hbs_watch_one(s, s->cur, s->t0 + h, u, s->fun_target, &kind);
 	if (kind == FUN_EVENT)
