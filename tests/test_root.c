@@ -6,7 +6,9 @@
  * either side; a stall (a root of high multiplicity, zero to rounding
  * over a band far wider than ulps) closed by its probes to ulps, where
  * Brent's own steps run out of iterations far wider, or stopped once
- * both ends are zero to the function's noise; ends that do not straddle and values that cannot be
+ * both ends are zero to the function's noise; bisection (the chains'
+ * fallback) keeping its ends' sides on a function that crosses back and
+ * forth; ends that do not straddle and values that cannot be
  * computed refused without GSL's error handler.
  */
 #include <float.h>
@@ -145,4 +147,26 @@ Test(root, refused_without_gsl_handler)
 	cr_assert_neq(bracket(nan_inside, 1, &a, &b, &it), 0);
 	cr_assert_eq(handler_called, 0, "GSL's error handler was called %d times", handler_called);
 	gsl_set_error_handler(old);
+}
+
+/* crossing back and forth 41 times in [0, 1]: > 0 at 0, < 0 at 1 */
+static double
+wavy(double h, void *ctx)
+{
+	(void)ctx;
+	return orient(cos(41.0 * M_PI * h));
+}
+
+Test(root, bisection_keeps_its_ends_sides)
+{
+	gsl_root_fsolver *solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+	double a = -1, b = -1, tol = 4.0 * DBL_EPSILON * 2.0;
+	int it = 0;
+	struct hbs_root r = { wavy, NULL, &it, solver, 1.0, 1.0, 1, 0.0 };
+
+	cr_assert_eq(hbs_root_bisect(&r, 0.0, 1.0, 0.0, &a, &b), 0);
+	cr_assert(wavy(a, NULL) > 0 && wavy(b, NULL) < 0, "[%.17g, %.17g]", a, b);
+	cr_assert(b - a <= tol, "width %g", b - a);
+	cr_assert_neq(hbs_root_bisect(&r, 0.0, 2.0 / 41.0, 0.0, &a, &b), 0, "ends on the same side");
+	gsl_root_fsolver_free(solver);
 }

@@ -101,6 +101,8 @@ hbs_cluster_free(struct hb_sim *s)
 	free(c->scale);
 	free(c->iscale);
 	free(c->yerr);
+	free(c->d0);
+	free(c->d1);
 	free(c->f0);
 	free(c->f1);
 	free(c->fe);

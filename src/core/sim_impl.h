@@ -155,6 +155,9 @@ struct clusters {
 	gsl_odeiv2_system sys;
 	int built_dim, built_stepper;
 	double h, H, t0;
+	double *d0, *d1;        /* the derivatives at the step's start and at its end hh (the Hermite guide) */
+	int hd0;                /* 1: d0 is the current step's */
+	double hh;              /* the end d1 is at (NAN: none) */
 	double tfree;           /* the earliest closing of a gap between two flying bodies */
 	int ifree;              /* ... its interface (index), -1: none */
 };
@@ -476,6 +479,24 @@ hbs_candidate(const struct hb_sim *s, int kind, double gmax, double f0, double f
 }
 
 /*
+ * The cubic Hermite interpolant of a step of length H from (u0, its
+ * derivative d0) to (u1, d1), at h into it: its first n components into u.
+ * Fourth-order: both integrators' locations are guided by it (a stepper
+ * without a continuous extension), and take no located point from it.
+ */
+static inline void
+hbs_hermite(double h, double H, int n, const double *u0, const double *d0, const double *u1,
+            const double *d1, double *u)
+{
+	double th = h / H, th2 = th * th, th3 = th2 * th;
+	double a0 = 2 * th3 - 3 * th2 + 1, b0 = (th3 - 2 * th2 + th) * H;
+	double a1 = 3 * th2 - 2 * th3, b1 = (th3 - th2) * H;
+
+	for (int i = 0; i < n; i++)
+		u[i] = a0 * u0[i] + b0 * d0[i] + a1 * u1[i] + b1 * d1[i];
+}
+
+/*
  * sim_root.c: the root finder both integrators locate with.  A function of
  * the time h into a step, oriented: value > 0 where it has not crossed (an
  * exact zero counts as not crossed), < 0 where it has, NAN where the state
@@ -492,6 +513,8 @@ struct hbs_root {
 };
 int
 hbs_root_bracket(struct hbs_root *r, double lo, double hi, double htol, double *a, double *b);
+int
+hbs_root_bisect(struct hbs_root *r, double lo, double hi, double htol, double *a, double *b);
 
 /* sim_locate.c: acts on the accepted step (t0, u0) -> (t0 + H, u1) */
 int

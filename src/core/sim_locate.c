@@ -18,24 +18,6 @@ max_abs(double a, double b)
 	return isnan(a) ? b : (a < b ? b : a);
 }
 
-/*
- * The cubic Hermite interpolant of the step (t0, u0) -> (t0 + H, u1) from
- * the derivatives at its ends, at t0 + h: its first n components.
- * Fourth-order: it only guides the location of a crossing for a stepper
- * without a continuous extension (see locate_on_steps); no located point
- * is taken from it.
- */
-static void
-hermite(const struct hb_sim *s, double h, double *u, int n)
-{
-	double th = h / s->H, th2 = th * th, th3 = th2 * th;
-	double a0 = 2 * th3 - 3 * th2 + 1, b0 = (th3 - 2 * th2 + th) * s->H;
-	double a1 = 3 * th2 - 2 * th3, b1 = (th3 - th2) * s->H;
-
-	for (int i = 0; i < n; i++)
-		u[i] = a0 * s->u0[i] + b0 * s->f0[i] + a1 * s->u1[i] + b1 * s->f1[i];
-}
-
 /* Sets the Hermite interpolant of the step up (two evaluations of f): 0, or the rhs' error. */
 static int
 hermite_setup(struct hb_sim *s)
@@ -74,7 +56,7 @@ restep_n(struct hb_sim *s, double h, double *u, int n)
 		if (!s->use_herm)
 			n = p->L.dim;
 		if (s->use_herm)
-			hermite(s, h, u, n);
+			hbs_hermite(h, s->H, n, s->u0, s->f0, s->u1, s->f1, u); /* a guide only (locate_on_steps) */
 		else if ((rc = hb_dop853_dense(p->d->s, s->t0 + h, u)) != GSL_SUCCESS)
 			return rc;
 		for (i = 0; i < n; i++)

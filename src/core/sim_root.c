@@ -193,3 +193,35 @@ hbs_root_bracket(struct hbs_root *r, double lo, double hi, double htol, double *
 	*b = xu;
 	return 0;
 }
+
+/*
+ * Brackets a crossing of r's function in [lo, hi] (not crossed at lo,
+ * crossed at hi) by bisection down to a few ulps of t, or to htol: slow,
+ * but its ends keep their sides whatever the function does between them
+ * (the fallback where hbs_root_bracket's ends came out the other way
+ * round).  Returns 0, with the bracket in *a, *b.
+ */
+int
+hbs_root_bisect(struct hbs_root *r, double lo, double hi, double htol, double *a, double *b)
+{
+	double tol = fmax(4.0 * DBL_EPSILON * fmax(fabs(r->t0 + hi), 1e-300), htol), g;
+	int it = 0;
+
+	if (!(counted(r, lo) > 0) || !(counted(r, hi) < 0))
+		return GSL_FAILURE;
+	while (hi - lo > tol && it++ < 2 * MAX_BRENT) {
+		double m = 0.5 * (lo + hi);
+
+		if (!(m > lo && m < hi))
+			break;
+		if (!isfinite(g = counted(r, m)))
+			return GSL_FAILURE;
+		if (g > 0)
+			lo = m;
+		else
+			hi = m;
+	}
+	*a = lo;
+	*b = hi;
+	return 0;
+}
