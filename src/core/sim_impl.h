@@ -324,10 +324,10 @@ hbs_cluster_stiffness(struct hb_sim *s);
 int
 hbs_cluster_step(struct hb_sim *s);
 /*
- * ... the state one step of length h from the step's start (t0, u0), into
- * cx.u1; a function's crossing in (0, hend] of the step located on such
- * re-steps with the engine's root finder (sim_root.c; see
- * sim_cluster_step.c)
+ * sim_cluster_locate.c: the state one step of length h from the step's
+ * start (t0, u0), into cx.u1; a function's crossing in (0, hend] of the
+ * step located on such re-steps with the engine's root finder
+ * (sim_root.c)
  */
 int
 hbs_cluster_restep(struct hb_sim *s, double h);

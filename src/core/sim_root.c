@@ -5,7 +5,7 @@
  * oriented value (struct hbs_root).  The pair's location (sim_locate.c)
  * asks it for the watched functions of its phase, on re-steps, on the
  * step's continuous extension or on its Hermite interpolant; a chain's
- * clusters (sim_cluster_step.c) for the watched functions of every
+ * clusters (sim_cluster_locate.c) for the watched functions of every
  * interface in contact and for the model's limits (sim_limits.c), on
  * re-steps of the clusters' ODE.
  */
