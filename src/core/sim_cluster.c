@@ -28,8 +28,8 @@
  * F_c,k, its neighbours' forces in dv_k/dt); for one in flight
  * next to a cluster the indicator max(x_k, v_k) of its gap (an event).
  * A crossing is bracketed on re-steps from the step's start (one step of
- * the same method of length h) by the Illinois method down to a few ulps
- * of t; the earliest wins, the lowest k on a tie.  A gap between two
+ * the same method of length h) by the engine's root finder (sim_root.c,
+ * the pair's) down to a few ulps of t; the earliest wins, the lowest k on a tie.  A gap between two
  * flying bodies closes at a time known in closed form when the interval
  * begins: it is a target of the steps.  An event ends the interval at the
  * bracket's end in D, and the jump (sim_record.c) rebuilds the clusters;
@@ -101,6 +101,8 @@ hbs_cluster_free(struct hb_sim *s)
 	free(c->scale);
 	free(c->iscale);
 	free(c->yerr);
+	free(c->d0);
+	free(c->d1);
 	free(c->f0);
 	free(c->f1);
 	free(c->fe);

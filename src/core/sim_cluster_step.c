@@ -2,9 +2,9 @@
 /*
  * sim_cluster_step.c - a chain's clusters of contacts: a flow interval
  * begun (the blocks of the ODE laid out, scaled and packed, the earliest
- * closing of a gap between flying bodies), one accepted step, and the
- * location of the earliest crossing of a watched function on re-steps
- * (see sim_cluster.c for the method).
+ * closing of a gap between flying bodies), and one accepted step with
+ * the earliest crossing of a watched function (located by
+ * sim_cluster_locate.c; see sim_cluster.c for the method).
  */
 #include <float.h>
 
@@ -30,7 +30,7 @@ alloc_ode(struct hb_sim *s, int n)
 
 	if (n > cap) {
 		int m = cap > 0 ? cap : 16;
-		double **arr[] = { &c->u, &c->u0, &c->u1, &c->scale, &c->iscale, &c->yerr };
+		double **arr[] = { &c->u, &c->u0, &c->u1, &c->scale, &c->iscale, &c->yerr, &c->d0, &c->d1 };
 
 		while (m < n)
 			m *= 2;
@@ -294,17 +294,6 @@ hbs_cluster_setup(struct hb_sim *s)
 	return 0;
 }
 
-/* The state one step of length h from (t0, u0): into c->u1. */
-int
-hbs_cluster_restep(struct hb_sim *s, double h)
-{
-	struct clusters *c = &s->cx;
-
-	memcpy(c->u1, c->u0, (size_t)c->dim * sizeof(double));
-	gsl_odeiv2_step_reset(c->loc);
-	return gsl_odeiv2_step_apply(c->loc, c->t0, h, c->u1, c->yerr, NULL, NULL, &c->sys);
-}
-
 /* A watched function's value at (t, u): the root finder's function for events, kinks and extrema. */
 static double
 watched(struct hb_sim *s, double t, const double *u, const void *arg)
@@ -313,92 +302,6 @@ watched(struct hb_sim *s, double t, const double *u, const void *arg)
 
 	hbs_cluster_watch(s, t, u, s->cx.f1); /* scratch: the values at the trial */
 	return s->cx.f1[fi];
-}
-
-/*
- * A function val (of this kind, see hbs_crossed) crosses in (0, hend] of
- * the step from (t0, u0): the bracket [a, b] about its crossing, narrowed
- * by the Illinois method on re-steps down to a few ulps of t; *hb is b
- * (the far end, past the crossing).  Its value at a (>= 0 for an event) is
- * fa.  The clusters' events, kinks and extrema are located with it, and
- * the model's limits (sim_limits.c).
- */
-int
-hbs_cluster_root(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
-                 double *hb, int *iters)
-{
-	struct clusters *c = &s->cx;
-	double a = 0.0, b = hend, tol = fmax(4.0 * DBL_EPSILON * fabs(c->t0 + hend), 1e-14 * hend), fb;
-	int side = 0, it = 0;
-	int slow = 0, flat = 0;
-
-	/*
-	 * The far end as the re-steps see it: the accepted step's length is
-	 * t - t0, which may differ from the h it was taken with by rounding,
-	 * so that a crossing at the level of round-off may not be there for
-	 * the re-steps.  Then there is none to locate (*hb = INFINITY): an
-	 * event whose function is negative at the step's end is taken when
-	 * the next step begins.
-	 */
-	if (hbs_cluster_restep(s, b) != GSL_SUCCESS)
-		return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
-	fb = val(s, c->t0 + b, c->u1, arg);
-	if (!hbs_crossed(kind, fa, fb)) {
-		*hb = INFINITY;
-		*iters = 1;
-		return 0;
-	}
-	it = 1;
-
-	while (b - a > tol && it < 200) {
-		double m, fm, w = b - a;
-		int in_b;
-
-		/*
-		 * Regula falsi with the Illinois halving, and a bisection after a
-		 * trial that did not halve the bracket or that found the value of
-		 * an end again (a gap computed from positions moves in steps of
-		 * their ulps): at least a halving every two trials.  A trial is
-		 * never nearer an end than tol, so that the bracket closes once
-		 * the root is found; a touching gap, which leaves C at once, is
-		 * tried first at a + tol.
-		 */
-		m = fa != fb ? b - fb * (b - a) / (fb - fa) : 0.5 * (a + b);
-		if (!(m > a && m < b) || slow || flat)
-			m = 0.5 * (a + b);
-		if (fa == 0.0 && kind == FUN_EVENT && it == 1)
-			m = a + tol;
-		if (m - a < tol)
-			m = a + tol;
-		if (b - m < tol)
-			m = b - tol;
-		if (!(m > a && m < b))
-			m = 0.5 * (a + b);
-		if (hbs_cluster_restep(s, m) != GSL_SUCCESS)
-			return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
-		fm = val(s, c->t0 + m, c->u1, arg);
-		it++;
-		flat = fm == fa || fm == fb;
-		/* is the crossing in (a, m]? */
-		in_b = kind == FUN_EVENT ? fm < 0.0 : (fm > 0.0) == (fb > 0.0) || fm == 0.0;
-		if (in_b) {
-			b = m;
-			fb = fm;
-			if (side == -1)
-				fa *= 0.5;
-			side = -1;
-		} else {
-			a = m;
-			fa = fm;
-			if (side == 1)
-				fb *= 0.5;
-			side = 1;
-		}
-		slow = b - a > 0.5 * w;
-	}
-	*hb = b;
-	*iters = it;
-	return 0;
 }
 
 /* Interface J in flight at (t, its bodies set there): x, v into the struct, then the jump into contact. */
@@ -478,6 +381,8 @@ hbs_cluster_step(struct hb_sim *s)
 	set_modes(s);
 	memcpy(c->u0, c->u, (size_t)c->dim * sizeof(double));
 	c->t0 = t;
+	c->hd0 = 0;
+	c->hh = NAN;
 	if ((rc = hbs_evolve(s, c->ev, c->ctl, c->step, &c->sys, c->t0, c->u0, t1, &t, &c->h, c->u, &c->H)))
 		return rc;
 	/* the watched functions at the step's end against its start: the earliest crossing */
@@ -491,7 +396,8 @@ hbs_cluster_step(struct hb_sim *s)
 
 			if (!hbs_candidate(s, c->fkind[i], c->gmax[i], a, b))
 				continue;
-			if ((rc = hbs_cluster_root(s, c->fkind[i], watched, &i, c->H, a, &hb, &it)))
+			if ((rc = hbs_cluster_locate(s, c->fkind[i], watched, &i, c->H, a,
+			                             fmax(c->gmax[i], fmax(fabs(a), fabs(b))), &hb, &it)))
 				return rc;
 			iters += it;
 			/* a kink or extremum at the step's start to the resolution of t: no progress to make */

@@ -6,6 +6,22 @@
  * sim_stiff.c's, as for the pair; sim_cluster.c for the clusters' flow).
  */
 #include "sim_impl.h"
+#include "sim_iface.h"
+
+/* The clusters' Jacobian, scaled: an entry scaled and added (hbs_iface_jac_block's put). */
+struct cjset {
+	double *dfdu;
+	int n;
+	const double *sc, *is;
+};
+
+static void
+cjset(void *ctx, int row, int col, double val)
+{
+	struct cjset *j = ctx;
+
+	j->dfdu[row * j->n + col] += val * j->sc[col] * j->is[row];
+}
 
 /*
  * The Jacobian of hbs_cluster_rhs in scaled variables: per interface in
@@ -41,22 +57,12 @@ hbs_cluster_jacobian(double t, const double u[], double *dfdu, double dfdt[], vo
 	for (p = 0; p < c->nact; p++) {
 		int kk = c->act[p];
 		const struct iface *I = &s->ifc[kk];
-		int o = I->off, nz = I->law->n_z, col[HB_LAW_MAX_Z + 2];
-		double v = u[o + 1] * sc[o + 1];
+		int o = I->off, nz = I->law->n_z;
+		struct jrows r = { o, o + 1, o + 2, o + 2 + nz, o + 3 + nz };
+		struct cjset js = { dfdu, n, sc, is };
 
-		col[0] = o;
-		for (i = 0; i < nz; i++)
-			col[1 + i] = o + 2 + i;
-		col[nz + 1] = o + 1;
-		SET(o, o + 1, 1.0);
-		for (k = 0; k < nz + 2; k++) {
-			SET(o + 1, col[k], -I->tdphi[k] * (I->ilo + I->ihi));
-			for (i = 0; i < nz; i++)
-				SET(o + 2 + i, col[k], I->tdpsi[i * (nz + 2) + k]);
-			SET(o + 2 + nz, col[k], I->tdphi[k] * v);
-			SET(o + 3 + nz, col[k], -I->tdphi[k]);
-		}
-		SET(o + 2 + nz, o + 1, I->tphi);
+		hbs_iface_jac_block(I, &r, u[o + 1] * sc[o + 1], I->tphi, I->tdphi, I->tdpsi, I->ilo + I->ihi, 1.0,
+		                    cjset, &js);
 		/* the neighbours' forces in this interface's v row */
 		for (int d = -1; d <= 1; d += 2) {
 			const struct iface *J;

@@ -5,6 +5,7 @@
  * the packing of the canonical state (see sim.c for the method).
  */
 #include "sim_impl.h"
+#include "sim_iface.h"
 #include "step_vern98.h"
 
 int
@@ -157,7 +158,21 @@ Fer_rate(const struct hb_sim *s, const struct iface *I, double t)
 	return (iface_Fer(s, I, t + h) - iface_Fer(s, I, t - h)) / (2 * h);
 }
 
-/* The Jacobian of rhs, for the implicit steppers; the law's partials. */
+/* The pair's Jacobian, unscaled: an entry set (hbs_iface_jac_block's put). */
+struct jset {
+	double *J;
+	int n;
+};
+
+static void
+jset(void *ctx, int row, int col, double val)
+{
+	struct jset *j = ctx;
+
+	j->J[row * j->n + col] = val;
+}
+
+/* The Jacobian of rhs, for the implicit steppers; the law's partials (the contact's block per interface). */
 int
 hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *params)
 {
@@ -181,22 +196,11 @@ hbs_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *para
 		const double *z = nz ? &y[L->iz] : NULL;
 		double v = y[L->iv];
 		double phi = I->law->phi(I->par, I->ext, y[L->ixc], z, v);
-		int col[HB_LAW_MAX_Z + 2];
+		struct jrows r = { L->ixc, L->iv, L->iz, L->iW, L->iJc };
+		struct jset js = { J, n };
 
 		I->law->jac(I->par, I->ext, y[L->ixc], z, v, dphi, nz ? dpsi : NULL);
-		col[0] = L->ixc;
-		for (i = 0; i < nz; i++)
-			col[1 + i] = L->iz + i;
-		col[nz + 1] = L->iv;
-		J[L->ixc * n + L->iv] = 1.0;
-		for (k = 0; k < nz + 2; k++) {
-			J[L->iv * n + col[k]] = -dphi[k] / m;
-			J[L->iW * n + col[k]] = dphi[k] * v;
-			J[L->iJc * n + col[k]] = -dphi[k];
-			for (i = 0; i < nz; i++)
-				J[(L->iz + i) * n + col[k]] = dpsi[i * (nz + 2) + k];
-		}
-		J[L->iW * n + L->iv] += phi;
+		hbs_iface_jac_block(I, &r, v, phi, dphi, dpsi, 1.0, m, jset, &js);
 		dt[L->iJe] = Ferdot;
 	}
 	J[L->iEe * n + L->iv] = iface_Fer(s, I, t);

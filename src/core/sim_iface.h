@@ -2,10 +2,12 @@
 /*
  * sim_iface.h - the terms of one interface's contact that both flow
  * integrators watch with (private to the engine): Phi, the law's
- * switching functions, dPhi/dt, and the mode a step begins in.  The
- * pair's watched functions (sim_watch.c) and a chain's clusters'
- * (sim_cluster.c) call them for each interface in contact; inline, as
- * they are evaluated at every step and every trial of a location.
+ * switching functions, dPhi/dt, the mode a step begins in, and the
+ * contact's block of the flow's Jacobian.  The pair's watched functions
+ * (sim_watch.c) and a chain's clusters' (sim_cluster.c) call them for
+ * each interface in contact, as do both Jacobians (sim_flow.c,
+ * sim_cluster_stiff.c); inline, as they are evaluated at every step and
+ * every trial of a location.
  */
 #ifndef HYBOUNCE_SIM_IFACE_H
 #define HYBOUNCE_SIM_IFACE_H
@@ -116,6 +118,42 @@ hbs_iface_mode(const struct hb_sim *s, const struct iface *I, double xc, const d
 		return 0;
 	I->law->kinks(I->par, I->ext, xc, z, v, g);
 	return g[k] > 0 ? 1 : (g[k] < 0 ? -1 : 0);
+}
+
+/* Where interface I's contact block sits in a flow's state: the rows (and columns) of its terms. */
+struct jrows {
+	int ixc, iv, iz, iW, iJc;
+};
+
+/*
+ * Interface I's contact block of the Jacobian of the flow (both
+ * integrators' Jacobians, for bsimp), unscaled, from Phi and its partials
+ * dphi (columns x_c, z..., v) and Psi's dpsi at the state (v its relative
+ * velocity): dx_c'/dv = 1; the v row -dphi vnum / vden (the pair's 1 / m,
+ * a chain's 1 / m_lo + 1 / m_hi over 1); the z rows dpsi; the W row
+ * dphi v (+ Phi in column v); the J_Fc row -dphi.  Each entry once,
+ * through put (the pair's sets it, a chain's scales and adds it); the
+ * neighbours' forces in a chain's v rows are the chain's own.
+ */
+static inline void
+hbs_iface_jac_block(const struct iface *I, const struct jrows *r, double v, double phi, const double *dphi,
+                    const double *dpsi, double vnum, double vden,
+                    void (*put)(void *ctx, int row, int col, double val), void *ctx)
+{
+	int nz = I->law->n_z, col[HB_LAW_MAX_Z + 2], i, k;
+
+	col[0] = r->ixc;
+	for (i = 0; i < nz; i++)
+		col[1 + i] = r->iz + i;
+	col[nz + 1] = r->iv;
+	put(ctx, r->ixc, r->iv, 1.0);
+	for (k = 0; k < nz + 2; k++) {
+		put(ctx, r->iv, col[k], -dphi[k] * vnum / vden);
+		put(ctx, r->iW, col[k], k == nz + 1 ? dphi[k] * v + phi : dphi[k] * v);
+		put(ctx, r->iJc, col[k], -dphi[k]);
+		for (i = 0; i < nz; i++)
+			put(ctx, r->iz + i, col[k], dpsi[i * (nz + 2) + k]);
+	}
 }
 
 #endif

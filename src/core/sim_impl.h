@@ -155,6 +155,9 @@ struct clusters {
 	gsl_odeiv2_system sys;
 	int built_dim, built_stepper;
 	double h, H, t0;
+	double *d0, *d1;        /* the derivatives at the step's start and at its end hh (the Hermite guide) */
+	int hd0;                /* 1: d0 is the current step's */
+	double hh;              /* the end d1 is at (NAN: none) */
 	double tfree;           /* the earliest closing of a gap between two flying bodies */
 	int ifree;              /* ... its interface (index), -1: none */
 };
@@ -201,6 +204,7 @@ struct hb_sim {
 
 	/* location workspace */
 	double t0, H, u0[MAXDIM], u1[MAXDIM];
+	double ut[MAXDIM];  /* a root finder's iterate (oriented_value; its unread tail stale, not read) */
 	struct {            /* the watched values at the last state hbs_watch_at was asked */
 		int valid, n, kind[MAXFUN];
 		const struct phase *p;
@@ -342,16 +346,17 @@ hbs_cluster_stiffness(struct hb_sim *s);
 int
 hbs_cluster_step(struct hb_sim *s);
 /*
- * ... the state one step of length h from the step's start (t0, u0), into
- * cx.u1; a function's crossing in (0, hend] of the step located on such
- * re-steps (see sim_cluster_step.c)
+ * sim_cluster_locate.c: the state one step of length h from the step's
+ * start (t0, u0), into cx.u1; a function's crossing in (0, hend] of the
+ * step located on such re-steps with the engine's root finder
+ * (sim_root.c)
  */
 int
 hbs_cluster_restep(struct hb_sim *s, double h);
 typedef double hbs_val_fn(struct hb_sim *s, double t, const double *u, const void *arg);
 int
-hbs_cluster_root(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
-                 double *hb, int *iters);
+hbs_cluster_locate(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
+                   double gmax, double *hb, int *iters);
 void
 hbs_cluster_sync(struct hb_sim *s);
 /* sim_limits.c: the model's limits at the end of the step just accepted, each passed located */
@@ -515,6 +520,44 @@ hbs_candidate(const struct hb_sim *s, int kind, double gmax, double f0, double f
 		return 0;
 	return hbs_crossed(kind, f0, fx);
 }
+
+/*
+ * The cubic Hermite interpolant of a step of length H from (u0, its
+ * derivative d0) to (u1, d1), at h into it: its first n components into u.
+ * Fourth-order: both integrators' locations are guided by it (a stepper
+ * without a continuous extension), and take no located point from it.
+ */
+static inline void
+hbs_hermite(double h, double H, int n, const double *u0, const double *d0, const double *u1,
+            const double *d1, double *u)
+{
+	double th = h / H, th2 = th * th, th3 = th2 * th;
+	double a0 = 2 * th3 - 3 * th2 + 1, b0 = (th3 - 2 * th2 + th) * H;
+	double a1 = 3 * th2 - 2 * th3, b1 = (th3 - th2) * H;
+
+	for (int i = 0; i < n; i++)
+		u[i] = a0 * u0[i] + b0 * d0[i] + a1 * u1[i] + b1 * d1[i];
+}
+
+/*
+ * sim_root.c: the root finder both integrators locate with.  A function of
+ * the time h into a step, oriented: value > 0 where it has not crossed (an
+ * exact zero counts as not crossed), < 0 where it has, NAN where the state
+ * at h cannot be computed; every evaluation counted in *iter.
+ */
+struct hbs_root {
+	double (*value)(double h, void *ctx);
+	void *ctx;
+	int *iter;
+	gsl_root_fsolver *solver; /* Brent's */
+	double t0, H;       /* the step's start and length */
+	int stall;          /* 1: its stalls are closed (see sim_root.c) */
+	double noise;       /* ... where its value is zero to rounding */
+};
+int
+hbs_root_bracket(struct hbs_root *r, double lo, double hi, double htol, double *a, double *b);
+int
+hbs_root_bisect(struct hbs_root *r, double lo, double hi, double htol, double *a, double *b);
 
 /* sim_locate.c: acts on the accepted step (t0, u0) -> (t0 + H, u1) */
 int

@@ -7,7 +7,7 @@
  * -x, the larger), and no two bodies that are not neighbours overlapping
  * (possible only across two interfaces in contact one above the other).
  * The instant a limit is passed is found as the clusters' events are, on
- * re-steps from the step's start (hbs_cluster_root), to a few ulps of t.
+ * re-steps from the step's start (hbs_cluster_locate), to a few ulps of t.
  */
 #include "sim_impl.h"
 #include "cnum.h"
@@ -65,7 +65,7 @@ locate_limit(struct hb_sim *s, struct limit *L)
 	L->h = 0.0;
 	if (!(fa >= 0.0) || !(hend > 0.0))
 		return 0;
-	if ((rc = hbs_cluster_root(s, FUN_EVENT, margin, L, hend, fa, &hb, &it)))
+	if ((rc = hbs_cluster_locate(s, FUN_EVENT, margin, L, hend, fa, 0.0, &hb, &it)))
 		return rc;
 	L->h = isfinite(hb) ? hb : hend;
 	return 0;

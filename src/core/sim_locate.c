@@ -2,8 +2,8 @@
 /*
  * sim_locate.c - location on a step: where a watched function (sim_watch.c)
  * crosses, on re-steps, on the step's continuous extension (dop853) or
- * guided by its Hermite interpolant (the other steppers), with a bracketing
- * root finder; the dip test for events stepped over (see sim.c for the
+ * guided by its Hermite interpolant (the other steppers), with the
+ * engine's bracketing root finder (sim_root.c); the dip test for events stepped over (see sim.c for the
  * method).
  */
 #include "sim_impl.h"
@@ -18,23 +18,6 @@ max_abs(double a, double b)
 	return isnan(a) ? b : (a < b ? b : a);
 }
 
-/*
- * The cubic Hermite interpolant of the step (t0, u0) -> (t0 + H, u1) from
- * the derivatives at its ends, at t0 + h.  Fourth-order: it only guides the
- * location of a crossing for a stepper without a continuous extension
- * (see locate_on_steps); no located point is taken from it.
- */
-static void
-hermite(const struct hb_sim *s, double h, double *u)
-{
-	double th = h / s->H, th2 = th * th, th3 = th2 * th;
-	double a0 = 2 * th3 - 3 * th2 + 1, b0 = (th3 - 2 * th2 + th) * s->H;
-	double a1 = 3 * th2 - 2 * th3, b1 = (th3 - th2) * s->H;
-
-	for (int i = 0; i < s->cur->L.dim; i++)
-		u[i] = a0 * s->u0[i] + b0 * s->f0[i] + a1 * s->u1[i] + b1 * s->f1[i];
-}
-
 /* Sets the Hermite interpolant of the step up (two evaluations of f): 0, or the rhs' error. */
 static int
 hermite_setup(struct hb_sim *s)
@@ -47,9 +30,14 @@ hermite_setup(struct hb_sim *s)
 	return p->sys.function(s->t0 + s->H, s->u1, s->f1, p->sys.params);
 }
 
-/* The state one step of length h from (t0, u0), cached. */
+/*
+ * The state one step of length h from (t0, u0), cached; on the Hermite
+ * interpolant, only its first n components (what the watched functions
+ * and the sticking snap read: [0, nread) at a root finder's iterate, the
+ * rest of u left as it was), else all.
+ */
 static int
-restep(struct hb_sim *s, double h, double *u)
+restep_n(struct hb_sim *s, double h, double *u, int n)
 {
 	struct phase *p = s->cur;
 	double yerr[MAXDIM];
@@ -65,11 +53,13 @@ restep(struct hb_sim *s, double h, double *u)
 	}
 	if (s->use_dense || s->use_herm) {
 		/* on the step's continuous extension, or its Hermite interpolant: no evaluation of f */
+		if (!s->use_herm)
+			n = p->L.dim;
 		if (s->use_herm)
-			hermite(s, h, u);
+			hbs_hermite(h, s->H, n, s->u0, s->f0, s->u1, s->f1, u); /* a guide only (locate_on_steps) */
 		else if ((rc = hb_dop853_dense(p->d->s, s->t0 + h, u)) != GSL_SUCCESS)
 			return rc;
-		for (i = 0; i < p->L.dim; i++)
+		for (i = 0; i < n; i++)
 			if (!isfinite(u[i]))
 				return GSL_FAILURE;
 		if (p->q) {
@@ -109,21 +99,29 @@ restep(struct hb_sim *s, double h, double *u)
 	return 0;
 }
 
+/* The whole state one step of length h from (t0, u0) (restep_n). */
+static int
+restep(struct hb_sim *s, double h, double *u)
+{
+	return restep_n(s, h, u, s->cur->L.dim);
+}
+
 /*
  * The oriented value of the target function at h for Brent: > 0 where it
  * has not crossed yet (an exact zero counts as not crossed), < 0 where it
- * has; NAN where the state there cannot be computed.  Not counted in
- * loc_iter (oriented() is).
+ * has; NAN where the state there cannot be computed (struct hbs_root's
+ * value).  Not counted in loc_iter (oriented() is).
  */
 static double
-oriented_value(double h, struct hb_sim *s)
+oriented_value(double h, void *ctx)
 {
-	double u[MAXDIM], val;
+	struct hb_sim *s = ctx;
+	double *u = s->ut, val;
 	int kind;
 
 	if (s->fun_target != 0 && s->t0 + h == s->t0) /* 0 is the indicator, the event */
 		return DBL_MIN; /* the step's start has not crossed (a mode's side is its sign there) */
-	if (restep(s, h, u))
+	if (restep_n(s, h, u, s->cur->L.nread))
 		return NAN;
 	val = hbs_watch_one(s, s->cur, s->t0 + h, u, s->fun_target, &kind);
 	if (kind == FUN_EVENT)
@@ -134,189 +132,26 @@ oriented_value(double h, struct hb_sim *s)
 
 /* oriented_value(), counted as one evaluation of the location. */
 static double
-oriented(double h, void *params)
+oriented(double h, struct hb_sim *s)
 {
-	struct hb_sim *s = params;
-
 	s->loc_iter++;
 	return oriented_value(h, s);
 }
 
 /*
- * GSL's root solvers call their error handler (process-wide, the host's:
- * GSL's default aborts) for a function value that is not finite and for a
- * bracket whose ends do not straddle the root.  Both are expected here (a
- * re-step that fails; a bracket that Brent left with its ends' signs the
- * other way round), so the solver never sees them: it is given
- * brent_value(), which turns a value that is not finite into DBL_MIN and
- * counts it in bad (brent_iterate returns what GSL would have: GSL_EBADFUNC),
- * and is (re)set through brent_set(), which checks the ends first.
- */
-struct brent_fn {
-	struct hb_sim *s;
-	int bad;
-	int nmemo;          /* the bracket's ends, just evaluated, while the solver is set */
-	double mh[2], mg[2];
-};
-
-static double
-brent_value(double h, void *params)
-{
-	struct brent_fn *b = params;
-	double g;
-	int i;
-
-	for (i = 0; i < b->nmemo; i++)
-		if (h == b->mh[i]) { /* the same double oriented() gave: counted as it */
-			b->s->loc_iter++;
-			return b->mg[i];
-		}
-	g = oriented(h, b->s);
-
-	if (isfinite(g))
-		return g;
-	b->bad++;
-	return DBL_MIN;
-}
-
-/*
- * gsl_root_fsolver_set with the ends' values gl, gu (finite) known: the
- * solver's first look at them is answered from them (no second location
- * step), counted in loc_iter as that look was.
- */
-static int
-solver_set(struct brent_fn *b, gsl_function *F, double lo, double gl, double hi, double gu)
-{
-	int rc;
-
-	b->mh[0] = lo;
-	b->mg[0] = gl;
-	b->mh[1] = hi;
-	b->mg[1] = gu;
-	b->nmemo = 2;
-	rc = gsl_root_fsolver_set(b->s->root, F, lo, hi);
-	b->nmemo = 0;
-	return rc;
-}
-
-static int
-brent_set(struct brent_fn *b, gsl_function *F, double lo, double hi)
-{
-	double gl = oriented_value(lo, b->s), gu = oriented_value(hi, b->s);
-
-	if (!isfinite(gl) || !isfinite(gu))
-		return GSL_EBADFUNC;
-	if (!(lo < hi) || (gl < 0) == (gu < 0))
-		return GSL_EINVAL;
-	return solver_set(b, F, lo, gl, hi, gu);
-}
-
-static int
-brent_iterate(struct brent_fn *b)
-{
-	int rc;
-
-	b->bad = 0;
-	rc = gsl_root_fsolver_iterate(b->s->root);
-	return rc == GSL_SUCCESS && b->bad ? GSL_EBADFUNC : rc;
-}
-
-/*
- * Brackets the crossing of function k in [lo, hi] (not crossed at lo,
- * crossed at hi) down to a few ulps of t, or to htol if that is wider.
- * Brent's method proposes the points.  For a switching or extremum
- * function, where it stalls (its estimate of the root is good, but its
- * steps from it are of one ulp, so that the far end only moves by
- * bisection, every other iteration: Psi_2 = v - Phi/c while a Maxwell
- * element creeps, two equal terms, is zero to rounding over a band far
- * wider than ulps), the bracket is closed by evaluating at tol/2 on either
- * side of the estimate, or just beyond the root the secant of those two
- * gives, or else at least halved.  The indicator keeps Brent's own steps, whose
- * crossing the separation that rounding cannot fake relies on (see
- * snap_separation).  Returns 0, with the bracket in *a, *b.
+ * Brackets the crossing of function k (side sign0 at the step's start) in
+ * [lo, hi] with the engine's root finder (sim_root.c) on restep()'s states;
+ * its evaluations counted in loc_iter.
  */
 static int
 bracket(struct hb_sim *s, int k, int sign0, double lo, double hi, double htol, double *a, double *b)
 {
-	struct brent_fn bf = { s, 0, 0, { 0 }, { 0 } };
-	gsl_function F = { brent_value, &bf };
-	double tol = fmax(4.0 * DBL_EPSILON * fmax(fabs(s->t0 + hi), 1e-300), htol);
-	double xl = lo, xu = hi, prev = hi - lo, w, gl, gu;
-	int it = 0, rc;
+	struct hbs_root r = { oriented_value, s, &s->loc_iter, s->root, s->t0, s->H, k != 0,
+	                      100.0 * DBL_EPSILON * s->gmax[k] };
 
 	s->fun_target = k;
 	s->fun_sign0 = sign0;
-	if (!((gl = oriented(lo, s)) > 0) || !((gu = oriented(hi, s)) < 0))
-		return GSL_FAILURE;
-	/* the ends are known to straddle: set without brent_set's second look */
-	if ((rc = solver_set(&bf, &F, lo, gl, hi, gu)) != GSL_SUCCESS)
-		return rc;
-	while (xu - xl > tol && it++ < MAX_BRENT) {
-		if ((rc = brent_iterate(&bf)) != GSL_SUCCESS)
-			return rc;
-		xl = gsl_root_fsolver_x_lower(s->root);
-		xu = gsl_root_fsolver_x_upper(s->root);
-		if (k != 0 && xu - xl > tol && xu - xl > 0.5 * prev) {
-			double r = gsl_root_fsolver_root(s->root);
-			double p1 = fmax(xl, r - 0.5 * tol), p2 = fmin(xu, r + 0.5 * tol);
-			double g1 = oriented(p1, s), g2 = oriented(p2, s);
-
-			if (!isfinite(g1) || !isfinite(g2))
-				return GSL_FAILURE;
-			if (g1 > 0 && g2 < 0) {
-				xl = p1;
-				xu = p2;
-				break;
-			}
-			if (g1 < 0)
-				xu = p1;
-			else
-				xl = p2;
-			w = xu - xl;
-			if (w > tol && g1 != g2) {
-				/* the root the two probes' secant gives, and a point just beyond it */
-				double r2 = p1 - g1 * (p2 - p1) / (g2 - g1);
-				double q = g1 > 0 ? r2 + 0.5 * tol : r2 - 0.5 * tol, gq;
-
-				if (q > xl && q < xu) {
-					if (!isfinite(gq = oriented(q, s)))
-						return GSL_FAILURE;
-					if (gq > 0)
-						xl = q;
-					else
-						xu = q;
-				}
-			}
-			if (xu - xl > tol && xu - xl > 0.5 * w) { /* else a bisection: the bracket at least halves */
-				double m = 0.5 * (xl + xu), gm = oriented(m, s);
-
-				if (!isfinite(gm))
-					return GSL_FAILURE;
-				if (gm > 0)
-					xl = m;
-				else
-					xu = m;
-			}
-			if (xu - xl <= tol)
-				break;
-			if ((rc = brent_set(&bf, &F, xl, xu)) != GSL_SUCCESS)
-				return rc;
-		}
-		prev = xu - xl;
-		if (k != 0 && xu - xl <= 1e-6 * s->H) {
-			/* both ends zero to rounding: located as closely as the function can be computed */
-			double noise = 100.0 * DBL_EPSILON * s->gmax[k];
-
-			if (fabs(oriented(xl, s)) <= noise && fabs(oriented(xu, s)) <= noise)
-				break;
-		}
-	}
-	/* the ends as (not crossed, crossed) */
-	if (!(oriented(xl, s) > 0 && oriented(xu, s) < 0))
-		return GSL_FAILURE;
-	*a = xl;
-	*b = xu;
-	return 0;
+	return hbs_root_bracket(&r, lo, hi, htol, a, b);
 }
 
 /* Accepts the state at h (a located point) as the current state and restarts the stepper. */
