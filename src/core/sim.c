@@ -60,11 +60,16 @@
  * Invariants: the arc's samples are all in C except each pre-jump sample,
  * which is in D by hb_check_in_D's test; post-jump samples are g of the
  * pre-jump ones bit for bit; a failed step leaves the arc as it was.
+ *
+ * This file is the run: begun at t = 0 (hbs_reset_state) and advanced
+ * (hb_sim_advance: a pair's flow intervals set up and stepped here, a
+ * chain's units of work in sim_chain.c and sim_cluster*.c).  A simulator
+ * made, given a new scene, restarted, freed and read: sim_life.c; a run
+ * continued from one of its samples: sim_seek.c.
  */
 #include "sim_impl.h"
 #include "sim_iface.h"
 #include "clock.h"
-#include "cnum.h"
 
 /*
  * A flow interval continued after hb_sim_seek (or hb_sim_set_scene) from inside
@@ -247,8 +252,13 @@ numeric_step(struct hb_sim *s)
 	return 0;
 }
 
-static void
-reset_state(struct hb_sim *s)
+/*
+ * The run begun again at t = 0 from the scene's initial state, the arc
+ * holding its first sample (hb_sim_new, hb_sim_restart, a restart by
+ * hb_sim_set_scene, a chain's replay in sim_seek.c).
+ */
+void
+hbs_reset_state(struct hb_sim *s)
 {
 	struct iface *I = s->I;
 	const struct hb_scene *sc = &s->sc;
@@ -290,108 +300,6 @@ reset_state(struct hb_sim *s)
 	s->unit_n = 0;
 	hbs_push_sample(s, HB_ARC_START);
 	hbs_branches_clear(s);
-}
-
-void
-hbs_reset_state(struct hb_sim *s)
-{
-	reset_state(s);
-}
-
-static int
-build(struct hb_sim *s, char *msg, size_t n)
-{
-	int q;
-
-	if ((q = hbs_chain_bind(s)) != 0)
-		return q == HB_ENOMEM ? hb_status_set(msg, n, HB_ENOMEM, "out of memory for the chain")
-		                      : hb_status_set(msg, n, q, "the chain's scene names a body or "
-		                                      "interface it does not have");
-	if (s->chain && !hbs_chain_stepper_ok(s->sc.run.stepper))
-		return hb_status_set(msg, n, HB_EINVAL, "run.stepper: a chain's contacts run with rk8pd, "
-		                     "dop853, vern98, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once "
-		                     "stiff); accepted: those");
-	for (q = 0; q < 2; q++)
-		s->stepper[q] = s->sc.run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : s->sc.run.stepper;
-	for (q = 0; q < 2; q++)
-		if (hbs_phase_alloc(s, &s->ph[q], q))
-			return hb_status_set(msg, n, HB_ENOMEM, "out of memory for the integrator");
-	{
-		const char *names[MAXDIM];
-		const struct layout *L = &s->ph[1].L;
-		int i;
-
-		for (i = 0; i < MAXDIM; i++)
-			names[i] = "";
-		if (L->ix >= 0) names[L->ix] = "x";
-		names[L->ixc] = "x_c";
-		names[L->iv] = "v";
-		for (i = 0; i < s->I->law->n_z; i++)
-			names[L->iz + i] = i ? "z_c2" : (s->I->law->n_z > 1 ? "z_c1" : "z_c");
-		names[L->iW] = "W";
-		names[L->iJc] = "J_Fc";
-		names[L->iJe] = "J_Fe";
-		names[L->iEe] = "E_e";
-		if (L->ixm >= 0) {
-			names[L->ixm] = "x_m";
-			names[L->ivm] = "v_m";
-		}
-		/* the names depend on the law only through n_z: keep per-sim copies */
-		for (i = 0; i < HB_SIM_MAXCOMP; i++)
-			s->st.comp[i] = i < L->dim ? names[i] : NULL;
-	}
-	return 0;
-}
-
-struct hb_sim *
-hb_sim_new(const struct hb_scene *sc, char *msg, size_t n)
-{
-	struct hb_sim *s;
-
-	s = calloc(1, sizeof *s);
-	if (s == NULL) {
-		hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-		return NULL;
-	}
-	s->sc = *sc;
-	if (hb_scene_validate(&s->sc, msg, n) != 0) {
-		free(s);
-		return NULL;
-	}
-	s->arc = arc_new((size_t)s->sc.run.max_samples);
-	s->root = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-	if (s->arc == NULL || s->root == NULL || build(s, msg, n) != 0) {
-		if (s->arc == NULL || s->root == NULL)
-			hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-		hb_sim_free(s);
-		return NULL;
-	}
-	reset_state(s);
-	return s;
-}
-
-void
-hb_sim_free(struct hb_sim *s)
-{
-	if (s == NULL)
-		return;
-	hbs_phase_free(&s->ph[0]);
-	hbs_phase_free(&s->ph[1]);
-	if (s->root)
-		gsl_root_fsolver_free(s->root);
-	if (s->eig)
-		gsl_eigen_nonsymm_free(s->eig);
-	if (s->Jdyn)
-		gsl_matrix_free(s->Jdyn);
-	if (s->lambda)
-		gsl_vector_complex_free(s->lambda);
-	arc_free(s->arc);
-	hbs_chain_free(s);
-	hbs_cluster_free(s);
-	free(s->br);
-	free(s->col);
-	free(s->pend.s);
-	free(s);
 }
 
 int
@@ -444,236 +352,4 @@ int
 hb_sim_run(struct hb_sim *s)
 {
 	return hb_sim_advance(s, 0, 0.0);
-}
-
-enum hb_sim_end
-hb_sim_end(const struct hb_sim *s)
-{
-	return s->end;
-}
-
-const char *
-hb_sim_end_str(const struct hb_sim *s)
-{
-	return s->end == HB_SIM_RUNNING ? "running" : s->endmsg;
-}
-
-const char *
-hb_sim_errmsg(const struct hb_sim *s)
-{
-	return s->err;
-}
-
-const struct hb_scene *
-hb_sim_scene(const struct hb_sim *s)
-{
-	return &s->sc;
-}
-
-const struct hb_arc *
-hb_sim_arc(const struct hb_sim *s)
-{
-	return s->arc;
-}
-
-const struct hb_sim_stats *
-hb_sim_stats(const struct hb_sim *s)
-{
-	return &s->st;
-}
-
-size_t
-hb_sim_ncollisions(const struct hb_sim *s)
-{
-	return s->ncol;
-}
-
-long
-hb_sim_collisions_total(const struct hb_sim *s)
-{
-	return s->ncol_total;
-}
-
-const struct hb_collision *
-hb_sim_collision(const struct hb_sim *s, size_t i)
-{
-	return i < s->ncol ? &s->col[i] : NULL;
-}
-
-int
-hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out)
-{
-	const struct iface *I = s->I;
-	if (!I->q || s->pend.active) /* (after a chain's seek, the state is the unit's end: none) */
-		return 0;
-	memset(out, 0, sizeof *out);
-	out->i = s->ncol_total;
-	out->j = s->j;
-	out->te = I->te;
-	out->ts = s->t;
-	out->td = s->t - I->te;
-	out->tf = NAN;
-	out->vi = I->vi;
-	out->e = I->vi != 0.0 ? -I->v / I->vi : NAN;
-	out->xcmax = I->xcmax;
-	out->Fcmax = I->Fcmax;
-	out->xcr = fabs(I->xc);
-	out->xcr_sum = (s->ncol > 0 ? s->col[s->ncol - 1].xcr_sum : 0.0) + out->xcr;
-	out->W = I->W;
-	out->JFc = I->JFc;
-	out->JFe = I->JFe;
-	out->Lambda = I->JFc != 0.0 ? I->JFe / I->JFc : NAN;
-	out->complete = 0;
-	out->k = s->k0 + s->ia;
-	return 1;
-}
-
-int
-hb_sim_seek(struct hb_sim *s, size_t i)
-{
-	struct iface *I = s->I;
-	const struct hb_arc_sample *a;
-	const struct hb_arc_interval *iv;
-
-	if (s->chain) /* replayed to the sample (sim_seek.c) */
-		return hbs_chain_seek(s, i);
-	if (i >= hb_arc_len(s->arc))
-		return HB_EINVAL;
-	hbs_branches_cut(s, i);
-	/*
-	 * The step to continue with: the one the controller proposes where the
-	 * simulator stands at that sample (an edit at the run's end, a seek
-	 * to it), else the one the run took from that sample.
-	 */
-	s->resume_h = 0.0;
-	if (i + 1 < hb_arc_len(s->arc) && hb_arc_at(s->arc, i + 1)->j == hb_arc_at(s->arc, i)->j)
-		s->resume_h = hb_arc_at(s->arc, i + 1)->t - hb_arc_at(s->arc, i)->t;
-	else if (i + 1 == hb_arc_len(s->arc) && s->end == HB_SIM_RUNNING && !s->setup
-	         && s->t == hb_arc_at(s->arc, i)->t && s->j == hb_arc_at(s->arc, i)->j && s->h > 0)
-		s->resume_h = s->h;
-	arc_truncate(s->arc, i + 1);
-	a = hb_arc_at(s->arc, i);
-	iv = hb_arc_interval_at(s->arc, hb_arc_interval_of(s->arc, i));
-	/* continuing inside the interval (not at its pre-jump end) */
-	s->resume = a->kind != HB_ARC_PRE_JUMP;
-	s->resume_first = iv->first;
-	s->resume_last = i;
-	s->t = a->t;
-	s->j = a->j;
-	I->q = a->q;
-	I->x = a->x;
-	I->v = a->v;
-	I->xc = a->xc;
-	memcpy(I->z, a->z, sizeof I->z);
-	s->xm = a->xm;
-	s->vm = a->vm;
-	I->W = a->W;
-	I->JFc = a->JFc;
-	I->JFe = a->JFe;
-	I->xcmax = a->xcmax;
-	I->Fcmax = a->Fcmax;
-	I->Ee = a->Ee;
-	I->Wc = a->Wc;
-	I->Wc0 = a->Wc + a->W;
-	I->xe = a->x - a->xc;
-	if (I->q) {
-		const struct hb_arc_sample *f = hb_arc_at(s->arc, iv->first);
-
-		I->te = f->t;
-		I->vi = f->v;
-	}
-	while (s->ncol > 0 && s->col[s->ncol - 1].j >= s->j)
-		s->ncol--;
-	s->ncol_total = s->ncol > 0 ? s->col[s->ncol - 1].i + 1 : 0;
-	if (s->ncol > 0 && s->col[s->ncol - 1].j + 1 >= s->j && !I->q)
-		s->col[s->ncol - 1].tf = NAN;
-	if (s->ncol > 0 && s->col[s->ncol - 1].j + 1 == s->j)
-		s->col[s->ncol - 1].tf = NAN;
-	for (int k = 0; k < s->nif; k++)
-		s->ifc[k].ninst = 0;
-	s->err[0] = s->endmsg[0] = '\0';
-	s->end = HB_SIM_RUNNING;
-	s->setup = 1;
-	if (s->t >= s->sc.run.T)
-		hbs_finish_T(s);
-	else if (s->j >= s->sc.run.J) {
-		s->end = HB_SIM_END_J;
-		cnum_snprintf(s->endmsg, sizeof s->endmsg, "jump cap J = %ld reached at t = %.9g s",
-		         s->sc.run.J, s->t);
-	}
-	return 0;
-}
-
-static int
-same_bodies(const struct hb_scene *a, const struct hb_scene *b)
-{
-	return a->d.m1 == b->d.m1 && a->d.m2 == b->d.m2 && a->d.system == b->d.system;
-}
-
-int
-hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, char *msg, size_t n)
-{
-	struct hb_scene nsc = *sc;
-	int restart, rc;
-
-	if (restarted)
-		*restarted = 0;
-	if ((rc = hb_scene_validate(&nsc, msg, n)) != 0)
-		return rc;
-	if (s->pend.active && (rc = hbs_pend_flush(s)) != 0) /* a chain goes on from the unit's end */
-		return hb_status_set(msg, n, rc, "%s", s->err);
-	if (s->chain || nsc.chain.n > 0)
-		restart = !s->chain || nsc.chain.n == 0 || !hbs_chain_continues(s, &nsc);
-	else
-		restart = nsc.d.system != s->sc.d.system ||
-		          memcmp(&nsc.init, &s->sc.init, sizeof nsc.init) != 0 ||
-		          (s->I->q && (nsc.law != s->sc.law || nsc.ext != s->sc.ext ||
-		                       !same_bodies(&nsc, &s->sc)));
-	if (!restart && s->chain)
-		hbs_chain_settle_flying(s); /* the new accelerations act from now on */
-	{
-		/* build for the new scene aside: on failure the simulator is exactly as it was */
-		struct hb_scene old = s->sc;
-		struct phase oldph[2] = { s->ph[0], s->ph[1] };
-		int oldstepper[2] = { s->stepper[0], s->stepper[1] };
-		int oldbuilt[2] = { s->built[0], s->built[1] };
-		struct hb_sim_stats oldst = s->st;
-
-		s->sc = nsc;
-		memset(s->ph, 0, sizeof s->ph);
-		if (build(s, msg, n) != 0) {
-			hbs_phase_free(&s->ph[0]);
-			hbs_phase_free(&s->ph[1]);
-			s->sc = old;
-			hbs_chain_bind(s); /* no larger than the arrays it had: cannot fail */
-			memcpy(s->ph, oldph, sizeof s->ph);
-			memcpy(s->stepper, oldstepper, sizeof s->stepper);
-			memcpy(s->built, oldbuilt, sizeof s->built);
-			s->st = oldst;
-			return HB_ENOMEM;
-		}
-		hbs_phase_free(&oldph[0]);
-		hbs_phase_free(&oldph[1]);
-	}
-	arc_set_max(s->arc, (size_t)nsc.run.max_samples);
-	if (restart) {
-		reset_state(s);
-		if (restarted)
-			*restarted = 1;
-		return 0;
-	}
-	/* continue from the last sample with the new values (hb_sim_branch records it) */
-	if (s->unrec_t < 0)
-		s->unrec_t = hb_arc_at(s->arc, hb_arc_len(s->arc) - 1)->t;
-	rc = hb_sim_seek(s, hb_arc_len(s->arc) - 1);
-	if (rc == HB_OK && s->chain && s->end == HB_SIM_RUNNING)
-		s->setup = 1; /* a chain's next interval begins with the new constants */
-	return rc;
-}
-
-int
-hb_sim_restart(struct hb_sim *s)
-{
-	reset_state(s);
-	return 0;
 }

@@ -3,7 +3,9 @@
  * sim_impl.h - what the files of the simulator share (private to the engine):
  * the state of a run (struct hb_sim), the layouts and phases of the flow
  * intervals, and the functions one file calls in another.  sim.c holds the
- * driver and the public API (its header comment describes the method).
+ * driver (its header comment describes the method), sim_life.c a
+ * simulator's making, change of scene, freeing and accessors, sim_seek.c
+ * hb_sim_seek.
  */
 #ifndef HYBOUNCE_SIM_IMPL_H
 #define HYBOUNCE_SIM_IMPL_H
@@ -245,7 +247,7 @@ struct hb_sim {
 
 	/*
 	 * sim_seek.c: a chain's seek.  unit_n counts the samples the last unit
-	 * of work pushed (hb_sim_advance's, or reset_state's start); what that
+	 * of work pushed (hb_sim_advance's, or hbs_reset_state's start); what that
 	 * unit pushed after the sample a seek cut at is kept aside (pend) and
 	 * given back, unchanged, before any further work.
 	 */
@@ -373,14 +375,12 @@ double
 hbs_flight_event(double x, double v, double a);
 
 /*
- * sim_seek.c: a chain's hb_sim_seek (replayed from t = 0 to the unit of
+ * sim_seek.c: hb_sim_seek (a chain's replayed from t = 0 to the unit of
  * work that pushed the sample, the rest of that unit's outputs kept
  * aside); those outputs given back (before any work, a seek or a change of
  * scene); forgotten (a restart).  hbs_reset_state is sim.c's start of a
  * run at t = 0.
  */
-int
-hbs_chain_seek(struct hb_sim *s, size_t i);
 int
 hbs_pend_flush(struct hb_sim *s);
 void

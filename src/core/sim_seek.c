@@ -1,7 +1,11 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
- * sim_seek.c - a chain's run continued from one of its samples (sim.h:
+ * sim_seek.c - a run continued from one of its samples (sim.h:
  * hb_sim_seek), the same run after it, bit for bit.
+ *
+ * A pair's (one interface's) state is its sample: it is restored from it,
+ * and the flow interval the sample is in goes on from there (hb_sim_seek,
+ * at the end of this file).
  *
  * A chain's state at a sample is more than the sample: every body's
  * (y, u, tb), every interface's state, the clusters and their centres of
@@ -160,8 +164,9 @@ past(const struct hb_arc_sample *a, double t, long j)
 	return a->j > j || (a->j == j && a->t > t);
 }
 
-int
-hbs_chain_seek(struct hb_sim *s, size_t i)
+/* A chain's seek: the run replayed from t = 0 to the unit of work that pushed sample i. */
+static int
+chain_seek(struct hb_sim *s, size_t i)
 {
 	struct hb_arc_sample at;
 	size_t n;
@@ -206,6 +211,87 @@ hbs_chain_seek(struct hb_sim *s, size_t i)
 		snprintf(s->err, sizeof s->err, rc == HB_ENOMEM ? "out of memory for a seek"
 		         : "a chain's unit of work has no jump record before its post-jump sample");
 		return rc;
+	}
+	return 0;
+}
+
+/*
+ * hb_sim_seek: a pair's run (one interface) goes on from the sample itself,
+ * which holds its whole state; the flow interval is resumed from inside
+ * (sim.c's resume_interval) unless the sample is a pre-jump one.
+ */
+int
+hb_sim_seek(struct hb_sim *s, size_t i)
+{
+	struct iface *I = s->I;
+	const struct hb_arc_sample *a;
+	const struct hb_arc_interval *iv;
+
+	if (s->chain) /* replayed to the sample (sim_seek.c) */
+		return chain_seek(s, i);
+	if (i >= hb_arc_len(s->arc))
+		return HB_EINVAL;
+	hbs_branches_cut(s, i);
+	/*
+	 * The step to continue with: the one the controller proposes where the
+	 * simulator stands at that sample (an edit at the run's end, a seek
+	 * to it), else the one the run took from that sample.
+	 */
+	s->resume_h = 0.0;
+	if (i + 1 < hb_arc_len(s->arc) && hb_arc_at(s->arc, i + 1)->j == hb_arc_at(s->arc, i)->j)
+		s->resume_h = hb_arc_at(s->arc, i + 1)->t - hb_arc_at(s->arc, i)->t;
+	else if (i + 1 == hb_arc_len(s->arc) && s->end == HB_SIM_RUNNING && !s->setup
+	         && s->t == hb_arc_at(s->arc, i)->t && s->j == hb_arc_at(s->arc, i)->j && s->h > 0)
+		s->resume_h = s->h;
+	arc_truncate(s->arc, i + 1);
+	a = hb_arc_at(s->arc, i);
+	iv = hb_arc_interval_at(s->arc, hb_arc_interval_of(s->arc, i));
+	/* continuing inside the interval (not at its pre-jump end) */
+	s->resume = a->kind != HB_ARC_PRE_JUMP;
+	s->resume_first = iv->first;
+	s->resume_last = i;
+	s->t = a->t;
+	s->j = a->j;
+	I->q = a->q;
+	I->x = a->x;
+	I->v = a->v;
+	I->xc = a->xc;
+	memcpy(I->z, a->z, sizeof I->z);
+	s->xm = a->xm;
+	s->vm = a->vm;
+	I->W = a->W;
+	I->JFc = a->JFc;
+	I->JFe = a->JFe;
+	I->xcmax = a->xcmax;
+	I->Fcmax = a->Fcmax;
+	I->Ee = a->Ee;
+	I->Wc = a->Wc;
+	I->Wc0 = a->Wc + a->W;
+	I->xe = a->x - a->xc;
+	if (I->q) {
+		const struct hb_arc_sample *f = hb_arc_at(s->arc, iv->first);
+
+		I->te = f->t;
+		I->vi = f->v;
+	}
+	while (s->ncol > 0 && s->col[s->ncol - 1].j >= s->j)
+		s->ncol--;
+	s->ncol_total = s->ncol > 0 ? s->col[s->ncol - 1].i + 1 : 0;
+	if (s->ncol > 0 && s->col[s->ncol - 1].j + 1 >= s->j && !I->q)
+		s->col[s->ncol - 1].tf = NAN;
+	if (s->ncol > 0 && s->col[s->ncol - 1].j + 1 == s->j)
+		s->col[s->ncol - 1].tf = NAN;
+	for (int k = 0; k < s->nif; k++)
+		s->ifc[k].ninst = 0;
+	s->err[0] = s->endmsg[0] = '\0';
+	s->end = HB_SIM_RUNNING;
+	s->setup = 1;
+	if (s->t >= s->sc.run.T)
+		hbs_finish_T(s);
+	else if (s->j >= s->sc.run.J) {
+		s->end = HB_SIM_END_J;
+		cnum_snprintf(s->endmsg, sizeof s->endmsg, "jump cap J = %ld reached at t = %.9g s",
+		         s->sc.run.J, s->t);
 	}
 	return 0;
 }
