@@ -22,9 +22,9 @@
  *
  * [branch N] sections (a run that changed its values part-way) are read
  * by preset_branch.c, for hb_preset_open_branched only; the other openers
- * refuse them.  Writing is in preset_write.c.
+ * refuse them.  Opening a preset (its file read once, --set applied, the
+ * whole validated) is in preset_open.c; writing is in preset_write.c.
  */
-#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <pthread.h>
@@ -35,7 +35,6 @@
 #include <ini.h>
 
 #include "hybounce/atomic.h"
-#include "hybounce/input.h"
 #include "hybounce/preset.h"
 #include "hybounce/status.h"
 #include "hybounce/units.h"
@@ -126,12 +125,18 @@ collect_handler(void *user, const char *section, const char *name, const char *v
 	return 1;
 }
 
+void
+preset_entries_free(struct preset_entry *e, int n)
+{
+	for (int i = 0; i < n; i++)
+		free(e[i].value);
+	free(e);
+}
+
 static void
 collect_free(struct collect *c)
 {
-	for (int i = 0; i < c->n; i++)
-		free(c->e[i].value);
-	free(c->e);
+	preset_entries_free(c->e, c->n);
 	c->e = NULL;
 	c->n = 0;
 }
@@ -425,13 +430,9 @@ preset_ini_end(const struct preset_ini_saved *sv)
 	pthread_mutex_unlock(&ini_lock);
 }
 
-/*
- * Loads the text; with keep, [branch N] sections are taken and every entry
- * is handed back in *keep (collect_free it), else they are refused.
- */
-static int
-load_text(const char *text, const char *name, struct hb_scene *sc, struct collect *keep,
-          char *msg, size_t n)
+int
+preset_load_text(const char *text, const char *name, struct hb_scene *sc,
+                 struct preset_entry **keep, int *nkeep, char *msg, size_t n)
 {
 	struct collect c = { 0 };
 	struct source src = { text, 0, 0 };
@@ -473,9 +474,10 @@ load_text(const char *text, const char *name, struct hb_scene *sc, struct collec
 		    "as in presets/*.preset", name);
 	else
 		st = load_entries(&c, name, sc, keep != NULL, msg, n);
-	if (st == HB_OK && keep != NULL)
-		*keep = c;
-	else
+	if (st == HB_OK && keep != NULL) {
+		*keep = c.e;
+		*nkeep = c.n;
+	} else
 		collect_free(&c);
 	return st;
 }
@@ -483,150 +485,5 @@ load_text(const char *text, const char *name, struct hb_scene *sc, struct collec
 int
 hb_preset_load_string(const char *text, const char *name, struct hb_scene *sc, char *msg, size_t n)
 {
-	return load_text(text, name, sc, NULL, msg, n);
-}
-
-/* Reads a whole file into a malloc'd string, once, bounded (input.h). */
-static int
-read_file(const char *path, char **out, char *msg, size_t n)
-{
-	char *buf = NULL;
-	size_t len = 0;
-	int st = hb_input_read(path, HB_INPUT_PRESET_MAX, &buf, &len, msg, n);
-
-	if (st != HB_OK)
-		return st;
-	if (strlen(buf) != len) {
-		free(buf);
-		return hb_status_set(msg, n, HB_EINVAL, "%s: not a text file (contains NUL bytes); "
-		    "expected a preset: text lines [section] and key = value", path);
-	}
-	*out = buf;
-	return HB_OK;
-}
-
-int
-hb_preset_load(const char *path, struct hb_scene *sc, char *msg, size_t n)
-{
-	char *text = NULL;
-	int st = read_file(path, &text, msg, n);
-
-	if (st != HB_OK)
-		return st;
-	st = hb_preset_load_string(text, path, sc, msg, n);
-	free(text);
-	return st;
-}
-
-/* "KEY=VALUE" applied to sc; the key is trimmed of blanks. */
-static int
-apply_set(struct hb_scene *sc, const char *arg, char *msg, size_t n)
-{
-	struct hb_scene_error err;
-	char key[128], m[512];
-	const char *eq = strchr(arg, '='), *k0 = arg, *k1;
-
-	if (eq == NULL)
-		return hb_status_set(msg, n, HB_EINVAL, "--set '%s': expected KEY=VALUE, e.g. "
-		    "--set law.c=0.4 or --set initial.x0='40 um'", arg);
-	k1 = eq;
-	while (k0 < k1 && isspace((unsigned char)*k0))
-		k0++;
-	while (k1 > k0 && isspace((unsigned char)k1[-1]))
-		k1--;
-	if (k1 == k0 || (size_t)(k1 - k0) >= sizeof key)
-		return hb_status_set(msg, n, HB_EINVAL, "--set '%s': expected KEY=VALUE with a key "
-		    "such as law.c, body1.R, initial.x0, run.rtol, scene.law", arg);
-	memcpy(key, k0, (size_t)(k1 - k0));
-	key[k1 - k0] = '\0';
-	if (hb_scene_set_text(sc, key, eq + 1, &err) != HB_OK) {
-		/* a long argument is shown by its start, so that the reason stays in sight */
-		int shown = strlen(arg) > 72 ? 60 : 72;
-		return hb_status_set(msg, n, HB_EINVAL, "--set %.*s%s: %s", shown, arg,
-		    strlen(arg) > 72 ? "..." : "", hb_scene_error_str(&err, m, sizeof m));
-	}
-	return HB_OK;
-}
-
-/*
- * Loads path (read once), applies sets, validates; the text read goes to
- * *text when asked.  With br, [branch N] sections are read into *br
- * (preset_branch.c) on top of the scene with its sets; else refused.
- */
-static int
-open_text(const char *path, const char *const *sets, int nsets, struct hb_scene *sc,
-          char **text, struct hb_branch **br, size_t *nbr, char *msg, size_t n)
-{
-	char m[512], *buf = NULL;
-	struct collect c = { 0 };
-	int st = read_file(path, &buf, msg, n);
-
-	if (st == HB_OK)
-		st = load_text(buf, path, sc, br != NULL ? &c : NULL, msg, n);
-	for (int i = 0; st == HB_OK && i < nsets; i++)
-		st = apply_set(sc, sets[i], msg, n);
-	if (st == HB_OK && (st = hb_scene_validate(sc, m, sizeof m)) != HB_OK)
-		hb_status_set(msg, n, st, "%s: %s", path, m);
-	if (st == HB_OK && br != NULL)
-		st = preset_branches_read(c.e, c.n, path, sc, br, nbr, msg, n);
-	collect_free(&c);
-	if (st == HB_OK && text != NULL)
-		*text = buf;
-	else
-		free(buf);
-	return st;
-}
-
-int
-hb_preset_open(const char *path, const char *const *sets, int nsets, struct hb_scene *sc,
-            char *msg, size_t n)
-{
-	return open_text(path, sets, nsets, sc, NULL, NULL, NULL, msg, n);
-}
-
-/*
- * Resolves preset NAME into path (pn bytes); on failure a status whose
- * message names the preset (the resolver's message names it too: a long
- * name is shown by its start here).
- */
-static int
-resolve_named(const char *name, char *path, size_t pn, char *msg, size_t n)
-{
-	char m[4096];
-	int st;
-
-	m[0] = '\0';
-	if ((st = hb_preset_resolve(name, path, pn, m, sizeof m)) != HB_OK)
-		return hb_status_set(msg, n, st, "preset '%.*s%s': %s", strlen(name) > 72 ? 60 : 72,
-		    name, strlen(name) > 72 ? "..." : "", m[0] ? m : "not found");
-	return HB_OK;
-}
-
-int
-hb_preset_open_named(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
-                     char *path, size_t pn, char *msg, size_t n)
-{
-	return hb_preset_open_text(name, sets, nsets, sc, path, pn, NULL, msg, n);
-}
-
-int
-hb_preset_open_text(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
-                    char *path, size_t pn, char **text, char *msg, size_t n)
-{
-	int st = resolve_named(name, path, pn, msg, n);
-
-	return st != HB_OK ? st : open_text(path, sets, nsets, sc, text, NULL, NULL, msg, n);
-}
-
-int
-hb_preset_open_branched(const char *name, const char *const *sets, int nsets, struct hb_scene *sc,
-                        struct hb_branch **br, size_t *nbr, char *path, size_t pn, char *msg,
-                        size_t n)
-{
-	int st;
-
-	*br = NULL;
-	*nbr = 0;
-	st = resolve_named(name, path, pn, msg, n);
-	return st != HB_OK ? st : open_text(path, sets, nsets, sc, NULL, br, nbr, msg, n);
+	return preset_load_text(text, name, sc, NULL, NULL, msg, n);
 }

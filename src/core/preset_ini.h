@@ -48,6 +48,20 @@ struct preset_entry {
 	int line;
 };
 
+/*
+ * Loads a preset's text onto sc (preset.c); name is the file's for the
+ * messages.  With keep, [branch N] sections are taken and every entry is
+ * handed back in *keep, *nkeep (preset_entries_free them); else they are
+ * refused.  Returns 0, or a status with "NAME:LINE: ..." in msg.
+ */
+int
+preset_load_text(const char *text, const char *name, struct hb_scene *sc,
+                 struct preset_entry **keep, int *nkeep, char *msg, size_t n);
+
+/* Frees entries e[0..n) and their values (e may be NULL). */
+void
+preset_entries_free(struct preset_entry *e, int n);
+
 /* The scene's sections, in the order a preset is written (preset.c). */
 enum { PRESET_NSECTIONS = 9 };
 extern const char *const preset_sections[PRESET_NSECTIONS];
