@@ -205,15 +205,8 @@ hbs_cluster_rhs(double t, const double u[], double du[], void *params)
 
 	(void)t;
 	s->st.rhs++;
-	for (p = 0; p < c->nact; p++) {
-		struct iface *I = &s->ifc[c->act[p]];
-		int o = I->off, nz = I->law->n_z;
-		double z[HB_LAW_MAX_Z];
-
-		for (i = 0; i < nz; i++)
-			z[i] = u[o + 2 + i] * sc[o + 2 + i];
-		I->tphi = I->law->phi(I->par, I->ext, u[o] * sc[o], nz ? z : NULL, u[o + 1] * sc[o + 1]);
-	}
+	for (p = 0; p < c->nact; p++)
+		hbs_cluster_law(&s->ifc[c->act[p]], u, sc, 0);
 #define PUT(k, val) (du[k] = (val) * is[k], bad += 0.0 * du[k])
 	for (p = 0; p < c->nact; p++) {
 		int k = c->act[p];

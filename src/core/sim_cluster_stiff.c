@@ -42,17 +42,8 @@ hbs_cluster_jacobian(double t, const double u[], double *dfdu, double dfdt[], vo
 	s->st.jac++;
 	memset(dfdu, 0, (size_t)n * (size_t)n * sizeof *dfdu);
 	memset(dfdt, 0, (size_t)n * sizeof *dfdt);
-	for (p = 0; p < c->nact; p++) {
-		struct iface *I = &s->ifc[c->act[p]];
-		int o = I->off, nz = I->law->n_z;
-		double z[HB_LAW_MAX_Z];
-
-		for (i = 0; i < nz; i++)
-			z[i] = u[o + 2 + i] * sc[o + 2 + i];
-		I->law->jac(I->par, I->ext, u[o] * sc[o], nz ? z : NULL, u[o + 1] * sc[o + 1], I->tdphi,
-		            nz ? I->tdpsi : NULL);
-		I->tphi = I->law->phi(I->par, I->ext, u[o] * sc[o], nz ? z : NULL, u[o + 1] * sc[o + 1]);
-	}
+	for (p = 0; p < c->nact; p++)
+		hbs_cluster_law(&s->ifc[c->act[p]], u, sc, 1);
 #define SET(r, col, val) (dfdu[(r) * n + (col)] += (val) * sc[col] * is[r])
 	for (p = 0; p < c->nact; p++) {
 		int kk = c->act[p];
