@@ -12,20 +12,7 @@
 #include "hybounce/error.h"
 #include "hybounce/status.h"
 #include "hybounce/sweep.h"
-#include "testutil.h"
-
-static struct hb_sweep *
-sweep_of(const char *preset)
-{
-	struct hb_scene sc;
-	char msg[512];
-	struct hb_sweep *sw;
-
-	scene_preset(preset, &sc);
-	sw = hb_sweep_new(&sc, msg, sizeof msg);
-	cr_assert_not_null(sw, "%s", msg);
-	return sw;
-}
+#include "sweeptest.h"
 
 Test(sweep_error, spec_line_and_headers)
 {
@@ -70,9 +57,8 @@ Test(sweep_error, point_equals_the_estimate)
 {
 	struct hb_sweep *sw = sweep_of("permanent-contact-shccl");
 	struct hb_error_estimate est;
-	struct hb_scene sc;
 	struct hb_sim *s;
-	char *blk, *coll = NULL, msg[512], line[8192];
+	char *blk, *coll = NULL, msg[512];
 	size_t len = 0;
 	int failed;
 	FILE *f;
@@ -81,28 +67,17 @@ Test(sweep_error, point_equals_the_estimate)
 	hb_sweep_set_error(sw, 1);
 	cr_assert_eq(hb_sweep_point_block(sw, 1, &blk, &failed, msg, sizeof msg), HB_OK, "%s", msg);
 	cr_assert_eq(failed, 0);
-	scene_preset("permanent-contact-shccl", &sc);
-	cr_assert_eq(hb_scene_set(&sc, "initial.x0", "30um", msg, sizeof msg), HB_OK);
-	s = hb_sim_new(&sc, msg, sizeof msg);
-	cr_assert_not_null(s);
-	hb_sim_run(s);
+	s = plain_run_with("permanent-contact-shccl", "initial.x0", "30um");
 	cr_assert_eq(hb_error_estimate(s, NULL, &est, msg, sizeof msg), HB_OK, "%s", msg);
 	f = open_memstream(&coll, &len);
 	cr_assert_eq(hb_csv_stream_collisions_err(f, s, &est, msg, sizeof msg), HB_OK);
 	fclose(f);
 	{
-		const char *p = strchr(coll, '\n') + 1, *q = blk;
+		const char *q;
 		char want[64];
 
 		cr_assert(hb_sim_ncollisions(s) > 0);
-		while (*p) {
-			const char *e = strchr(p, '\n');
-
-			snprintf(line, sizeof line, "c,1,%.*s\n", (int)(e - p), p);
-			cr_assert_eq(strncmp(q, line, strlen(line)), 0, "block '%.60s' vs '%s'", q, line);
-			q += strlen(line);
-			p = e + 1;
-		}
+		q = block_has_collisions(blk, coll);
 		cr_assert(strncmp(q, "r,1,", 4) == 0, "%s", q);
 		/* the runs row holds the estimate's e_first error, as %.17g */
 		snprintf(want, sizeof want, ",%.17g,", est.obs[HB_OBS_E_FIRST]);
