@@ -41,6 +41,7 @@
  * the gaps of flying bodies once (their closing times).
  */
 #include "sim_impl.h"
+#include "sim_cluster_law.h"
 #include "sim_iface.h"
 
 #define GROW(p, cap, n)                                                                 \

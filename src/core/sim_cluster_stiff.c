@@ -6,6 +6,7 @@
  * sim_stiff.c's, as for the pair; sim_cluster.c for the clusters' flow).
  */
 #include "sim_impl.h"
+#include "sim_cluster_law.h"
 #include "sim_iface.h"
 
 /* The clusters' Jacobian, scaled: an entry scaled and added (hbs_iface_jac_block's put). */

@@ -343,25 +343,6 @@ hbs_chain_stepper_ok(int stepper);
 /* sim_cluster_stiff.c: the clusters' Jacobian (bsimp), their stiffness check */
 int
 hbs_cluster_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *params);
-/*
- * The law of interface I (in contact) at the clusters' scaled state u
- * (scales sc): its block (x_c, v, z) unscaled, Phi into I->tphi and, with
- * jac, Phi's and psi's derivatives first (I->tdphi, I->tdpsi).  One for
- * the right-hand side (sim_cluster.c) and the Jacobian.
- */
-static inline void
-hbs_cluster_law(struct iface *I, const double *u, const double *sc, int jac)
-{
-	int o = I->off, nz = I->law->n_z, i;
-	double z[HB_LAW_MAX_Z];
-
-	for (i = 0; i < nz; i++)
-		z[i] = u[o + 2 + i] * sc[o + 2 + i];
-	if (jac)
-		I->law->jac(I->par, I->ext, u[o] * sc[o], nz ? z : NULL, u[o + 1] * sc[o + 1], I->tdphi,
-		            nz ? I->tdpsi : NULL);
-	I->tphi = I->law->phi(I->par, I->ext, u[o] * sc[o], nz ? z : NULL, u[o + 1] * sc[o + 1]);
-}
 int
 hbs_cluster_stiffness(struct hb_sim *s);
 int
