@@ -57,24 +57,52 @@ cursor_clamp(struct app *a)
 		a->cursor = n - 1;
 }
 
-long
-coll_at_cursor(const struct app *a)
+/*
+ * Collision i is in progress at the cursor.  A two-body scene's contact is
+ * the flow interval j the cursor's sample lies in.  A chain's interfaces
+ * are in contact side by side, and a collision ends in the interval of its
+ * separation, with other interfaces' jumps between: its times place it,
+ * t_e <= t <= t_s (t_s is now for the contact in progress).
+ */
+int
+coll_in_progress(const struct app *a, long i)
 {
 	const struct hb_arc *arc = hb_sim_arc(a->sim);
 	const struct hb_arc_sample *s;
+	struct hb_collision live;
+	const struct hb_collision *c = app_collision(a, i, &live);
 
-	if (hb_arc_len(arc) == 0)
-		return -1;
+	if (c == NULL || hb_arc_len(arc) == 0)
+		return 0;
 	s = hb_arc_at(arc, a->cursor);
-	if (!s->q)
-		return -1;
+	if (hb_sim_scene(a->sim)->chain.n > 0)
+		return c->te <= s->t && s->t <= c->ts;
+	return s->q && c->j == s->j;
+}
+
+/*
+ * The collision at the cursor among the table's rows, or -1: the one in
+ * progress there (on a chain, of those in progress the one that commenced
+ * last).
+ */
+long
+coll_at_cursor(const struct app *a)
+{
+	long best = -1;
+	double bt = 0;
+
 	for (long i = 0; i < app_ncollisions(a); i++) {
 		struct hb_collision live;
 		const struct hb_collision *c = app_collision(a, i, &live);
-		if (c && c->j == s->j)
+
+		if (c == NULL || !table_shows(a, i) || !coll_in_progress(a, i))
+			continue;
+		if (hb_sim_scene(a->sim)->chain.n == 0)
 			return i;
+		if (best < 0 || c->te >= bt)
+			best = i, bt = c->te;
 	}
-	return -1;
+	return best;
 }
 
 void

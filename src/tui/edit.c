@@ -414,6 +414,8 @@ act_enter(struct app *a)
 {
 	if (a->focus == FOCUS_PARAMS) {
 		prompt_edit_begin(a);
+	} else if (table_iface(a) >= 0 && !table_shows(a, a->table_sel)) {
+		app_msg(a, 1, "interface %d has no collision (yet; i: every interface's)", table_iface(a));
 	} else if (app_ncollisions(a) > 0) {
 		a->playing = 0;
 		a->zoom_i = a->table_sel;

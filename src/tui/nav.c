@@ -172,6 +172,10 @@ zoom_on(struct app *a, int view)
 	}
 	if (i >= app_ncollisions(a))
 		i = app_ncollisions(a) - 1;
+	if (!table_shows(a, i)) {
+		app_msg(a, 1, "interface %d has no collision (yet; i: every interface's)", table_iface(a));
+		return;
+	}
 	a->zoom_i = i;
 	a->view = view;
 	a->table_sel = i;

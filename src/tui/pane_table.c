@@ -193,9 +193,7 @@ pane_table_draw(const struct app *a)
 	char unit[NCOL_MAX][16], line[512], cell[64];
 	int ends[NCOL_MAX + 1];
 	int k, focused = a->focus == FOCUS_TABLE, below = 0;
-	long at = -1;
 	const struct hb_collision *bars = NULL;
-	const struct hb_arc *arc = hb_sim_arc(a->sim);
 	struct hb_collision live;
 
 	if (r->h < 2)
@@ -204,14 +202,6 @@ pane_table_draw(const struct app *a)
 	snprintf(khead, sizeof khead, only >= 0 ? "k=%d" : "k", only);
 	kw = (int)strlen(khead) + 1 > 4 ? (int)strlen(khead) + 1 : 4;
 	ncol = columns(ps != NULL, hb_sim_scene(a->sim)->chain.n > 0, kw, cols, width, delta);
-	if (hb_arc_len(arc) > 0 && hb_arc_at(arc, a->cursor)->q) {
-		long jc = hb_arc_at(arc, a->cursor)->j;
-		for (i = 0; i < n; i++) {
-			const struct hb_collision *c = app_collision(a, i, &live);
-			if (c && c->j == jc)
-				at = i;
-		}
-	}
 	for (k = 0; k < ncol; k++)
 		mag[k] = 0;
 	for (i = 0; i < n; i++) {
@@ -282,7 +272,7 @@ pane_table_draw(const struct app *a)
 			double v = value(c, p, cols[k], delta[k]);
 			const char *nm = cols[k]->name;
 			if (cols[k]->index)
-				snprintf(cell, sizeof cell, "%s%ld", i == at ? ">" : " ", c->i);
+				snprintf(cell, sizeof cell, "%s%ld", coll_in_progress(a, i) ? ">" : " ", c->i);
 			else if (cols[k] == &kcol)
 				snprintf(cell, sizeof cell, "%d", c->k);
 			else if (!c->complete && strcmp(nm, "e") == 0 && !delta[k])

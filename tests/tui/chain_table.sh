@@ -6,8 +6,11 @@
 # k=1, one row, the message says 1 of 4), each i the next, after k = 4
 # every interface's again; } from t = 0 with interface 2 shown puts the
 # cursor at that interface's collision, and then } and { find no later
-# nor earlier one (its own only: the others are not rows); on a two-body scene
-# i says there is one interface and leaves the table whole.
+# nor earlier one (its own only: the others are not rows), its row marked >
+# though other interfaces are in contact at that time too; cut at 1.002 ms,
+# with interface 1 (no collision yet) shown, Enter says so instead of
+# zooming on a row not shown; on a two-body scene i says there is one
+# interface and leaves the table whole.
 . "$(dirname "$0")/common.inc"
 
 # rows of the table: "  I  K ..." (the cursor's row ">I")
@@ -49,6 +52,12 @@ keys a g
 wait_for a '^#0 t=0 ' 30 || notok "g: the cursor to t = 0" a
 keys a '}'
 if wait_for a '^#[0-9]+ t=1(\.0[0-9]*)? ms j=[0-9]+ q_c=1 ' 30; then
+	# the cursor's row is marked: collision 2 is in progress there (so are 0 and 1, not rows)
+	if rows a | grep -Eq '^ +>2 +2 '; then
+		ok "} with interface 2 shown: its row marked > at the cursor, beside other interfaces' contacts"
+	else
+		notok "} with interface 2 shown: its row marked > at the cursor, beside other interfaces' contacts" a
+	fi
 	keys a '}'
 	if wait_for a 'no later collision of interface 2' 30; then
 		keys a '{'
@@ -80,6 +89,28 @@ else
 fi
 keys a q
 wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ] || notok "the explorer quits with 0" a
+
+# cut at 1.002 ms, the cursor at the end (G): interfaces 4, 3 and 2 in contact, interface 1
+# not yet; the table's one row, the live contact, is marked in progress; with interface 1
+# shown there is no row, and Enter says so instead of zooming on a row not shown
+start c 80 24 newtons-cradle-5 --set run.T=1.002ms
+wait_for c 'finished' 100 || notok "newtons-cradle-5 runs to 1.002 ms" c
+keys c G
+if wait_for c '^#[0-9]+ t=1\.002 ms ' 30 && [ "$(nrows c)" -eq 1 ] && rows c | grep -Eq '^ +>0 +[234] .* live '; then
+	ok "at 1.002 ms, the cursor at the end: the live contact's row marked >"
+else
+	notok "at 1.002 ms, the cursor at the end: the live contact's row marked >" c
+fi
+keys c i
+wait_for c 'table: interface 1 alone \(bodies 1 and 2\), 0 of 1 collisions' 30 || notok "i: interface 1 alone, no row" c
+keys c Enter
+if wait_for c 'interface 1 has no collision \(yet; i: every interface' 30 && ! screen c | grep -q 'zoom'; then
+	ok "Enter with interface 1 shown and no row: the message, no zoom"
+else
+	notok "Enter with interface 1 shown and no row: the message, no zoom" c
+fi
+keys c q
+wait_exit c 50 || notok "the explorer quits" c
 
 start b 80 24 hertz-elastic
 wait_for b 'finished' 100 || notok "hertz-elastic runs" b
