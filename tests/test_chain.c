@@ -469,6 +469,57 @@ Test(chain, stacked_drop_approaches_the_rigid_sequential_limit)
 	cr_assert_lt(prev, 1e-6, "at k = 1e10 N/m the top ball is %.3g m/s from the limit", prev);
 }
 
+/*
+ * A touching cradle of five cut 30 us after the strike: several interfaces
+ * are in contact side by side, and hb_sim_contacts_live and
+ * hb_sim_contact_live_nth give each, by increasing k, with its values so
+ * far; hb_sim_contact_live's is one of them.  Run on to 10 ms, every
+ * contact has ended: none.  In a two-body scene, the one of
+ * hb_sim_contact_live.
+ */
+Test(chain, contacts_in_progress_side_by_side)
+{
+	struct hb_scene sc;
+	struct hb_sim *s;
+	struct hb_collision c, one;
+	size_t n;
+	int found = 0, prevk = -1;
+
+	chain_scene(&sc, "n = 5\nspacing = 0 m", -1.0, 0.0, 3e-5);
+	s = run_scene(&sc);
+	n = hb_sim_contacts_live(s);
+	cr_assert(n >= 2 && n <= 4, "%zu contacts in progress 30 us after the strike", n);
+	cr_assert_eq(hb_sim_contact_live(s, &one), 1);
+	for (size_t i = 0; i < n; i++) {
+		cr_assert_eq(hb_sim_contact_live_nth(s, i, &c), 1, "contact %zu of %zu", i, n);
+		cr_assert(c.k > prevk && c.k >= 1 && c.k <= 4, "contact %zu: interface %d after %d", i, c.k, prevk);
+		cr_assert(!c.complete && c.te <= c.ts && c.ts == hb_arc_last(hb_sim_arc(s))->t && c.Fcmax > 0,
+		          "contact %zu (k = %d): t_e %.17g, t_s %.17g, F_c^max %g", i, c.k, c.te, c.ts, c.Fcmax);
+		cr_assert_eq(c.i, hb_sim_collisions_total(s) + (long)i);
+		found += c.k == one.k && c.te == one.te && c.vi == one.vi;
+		prevk = c.k;
+	}
+	cr_assert_eq(found, 1, "hb_sim_contact_live's (k = %d) is one of them", one.k);
+	cr_assert_eq(hb_sim_contact_live_nth(s, n, &c), 0);
+	hb_sim_free(s);
+
+	chain_scene(&sc, "n = 5\nspacing = 0 m", -1.0, 0.0, 0.01);
+	s = run_scene(&sc);
+	cr_assert_eq(hb_sim_contacts_live(s), 0);
+	cr_assert_eq(hb_sim_contact_live_nth(s, 0, &c), 0);
+	hb_sim_free(s);
+
+	scene_from("[scene]\nname = pair\nlaw = hertz\n"
+	           "[body1]\nE = 200 GPa\nnu = 0.3\nrho = 7800 kg/m^3\nR = 10 mm\n"
+	           "[body2]\nE = 200 GPa\nnu = 0.3\nR = inf\n"
+	           "[loads]\ng = 9.81\n[initial]\nx0 = 5 mm\n[run]\nT = 0.03197\n", &sc);
+	s = run_scene(&sc);
+	cr_assert_eq(hb_sim_contacts_live(s), (size_t)hb_sim_contact_live(s, &one));
+	cr_assert_eq(hb_sim_contact_live_nth(s, 0, &c), hb_sim_contact_live(s, &one));
+	cr_assert_eq(hb_sim_contact_live_nth(s, 1, &c), 0);
+	hb_sim_free(s);
+}
+
 /* The collision of a two-body chain is the full system's with x0 = the spacing. */
 Test(chain, two_bodies_are_the_full_system)
 {

@@ -170,6 +170,21 @@ int
 hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out);
 
 /*
+ * Every contact in progress: a chain's interfaces may be in contact side
+ * by side.  hb_sim_contacts_live counts them (0 or 1 in a two-body scene);
+ * hb_sim_contact_live_nth fills *out with the n-th, in increasing
+ * interface number k (complete = 0, i = hb_sim_collisions_total + n: a
+ * provisional number, as collisions are numbered in the order they end),
+ * and returns 1, or 0 when there are not that many.  On a chain
+ * hb_sim_contact_live gives one of them: the interface the run last
+ * jumped at.
+ */
+size_t
+hb_sim_contacts_live(const struct hb_sim *s);
+int
+hb_sim_contact_live_nth(const struct hb_sim *s, size_t n, struct hb_collision *out);
+
+/*
  * The bodies of the run's chain, numbered from the bottom up: 2 in the
  * full system (body 1 of the chain is the scene's body 2), 1 in the
  * reduced one, chain.n in a chain.  hb_sim_body fills *out with body i's

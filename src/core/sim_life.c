@@ -161,14 +161,12 @@ hb_sim_collision(const struct hb_sim *s, size_t i)
 	return i < s->ncol ? &s->col[i] : NULL;
 }
 
-int
-hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out)
+/* The values so far of interface I's contact in progress (I->q), as collision i. */
+static void
+contact_live(const struct hb_sim *s, const struct iface *I, long i, struct hb_collision *out)
 {
-	const struct iface *I = s->I;
-	if (!I->q || s->pend.active) /* (after a chain's seek, the state is the unit's end: none) */
-		return 0;
 	memset(out, 0, sizeof *out);
-	out->i = s->ncol_total;
+	out->i = i;
 	out->j = s->j;
 	out->te = I->te;
 	out->ts = s->t;
@@ -185,8 +183,47 @@ hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out)
 	out->JFe = I->JFe;
 	out->Lambda = I->JFc != 0.0 ? I->JFe / I->JFc : NAN;
 	out->complete = 0;
-	out->k = s->k0 + s->ia;
+	out->k = s->k0 + (int)(I - s->ifc);
+}
+
+int
+hb_sim_contact_live(const struct hb_sim *s, struct hb_collision *out)
+{
+	if (!s->I->q || s->pend.active) /* (after a chain's seek, the state is the unit's end: none) */
+		return 0;
+	contact_live(s, s->I, s->ncol_total, out);
 	return 1;
+}
+
+size_t
+hb_sim_contacts_live(const struct hb_sim *s)
+{
+	size_t n = 0;
+
+	if (s->pend.active)
+		return 0;
+	if (!s->chain)
+		return s->I->q ? 1 : 0;
+	for (int i = 0; i < s->nif; i++)
+		n += s->ifc[i].q != 0;
+	return n;
+}
+
+int
+hb_sim_contact_live_nth(const struct hb_sim *s, size_t n, struct hb_collision *out)
+{
+	size_t r = 0;
+
+	if (s->pend.active)
+		return 0;
+	if (!s->chain)
+		return n == 0 ? hb_sim_contact_live(s, out) : 0;
+	for (int i = 0; i < s->nif; i++)
+		if (s->ifc[i].q && r++ == n) {
+			contact_live(s, &s->ifc[i], s->ncol_total + (long)n, out);
+			return 1;
+		}
+	return 0;
 }
 
 static int

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * cursor.c - the primitives of the time cursor and of the run's
- * collisions (the completed ones and the live one), which the panes, the
+ * collisions (the completed ones and those in progress: a chain's
+ * interfaces may be in contact side by side), which the panes, the
  * modes and nav.c's moves all use.  They read the run and set the cursor,
  * and call no other file of the explorer (tests/cli/calls.sh).
  */
@@ -10,9 +11,7 @@
 long
 app_ncollisions(const struct app *a)
 {
-	struct hb_collision live;
-
-	return (long)hb_sim_ncollisions(a->sim) + (hb_sim_contact_live(a->sim, &live) ? 1 : 0);
+	return (long)(hb_sim_ncollisions(a->sim) + hb_sim_contacts_live(a->sim));
 }
 
 const struct hb_collision *
@@ -24,7 +23,7 @@ app_collision(const struct app *a, long i, struct hb_collision *live)
 		return NULL;
 	if ((size_t)i < nc)
 		return hb_sim_collision(a->sim, (size_t)i);
-	if ((size_t)i == nc && hb_sim_contact_live(a->sim, live))
+	if (hb_sim_contact_live_nth(a->sim, (size_t)i - nc, live))
 		return live;
 	return NULL;
 }

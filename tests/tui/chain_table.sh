@@ -8,7 +8,8 @@
 # cursor at that interface's collision, and then } and { find no later
 # nor earlier one (its own only: the others are not rows), its row marked >
 # though other interfaces are in contact at that time too; cut at 1.002 ms,
-# with interface 1 (no collision yet) shown, Enter says so instead of
+# the three contacts in progress are three live rows, and with interface 1
+# (no collision yet) shown, Enter says so instead of
 # zooming on a row not shown; on a two-body scene i says there is one
 # interface and leaves the table whole.
 . "$(dirname "$0")/common.inc"
@@ -90,19 +91,20 @@ fi
 keys a q
 wait_exit a 50 && [ "$(cat "$TMP/a.rc")" = 0 ] || notok "the explorer quits with 0" a
 
-# cut at 1.002 ms, the cursor at the end (G): interfaces 4, 3 and 2 in contact, interface 1
-# not yet; the table's one row, the live contact, is marked in progress; with interface 1
+# cut at 1.002 ms, the cursor at the end (G): interfaces 4, 3 and 2 in contact side by side,
+# interface 1 not yet: three live rows (k 2, 3, 4), each marked in progress; with interface 1
 # shown there is no row, and Enter says so instead of zooming on a row not shown
 start c 80 24 newtons-cradle-5 --set run.T=1.002ms
 wait_for c 'finished' 100 || notok "newtons-cradle-5 runs to 1.002 ms" c
 keys c G
-if wait_for c '^#[0-9]+ t=1\.002 ms ' 30 && [ "$(nrows c)" -eq 1 ] && rows c | grep -Eq '^ +>0 +[234] .* live '; then
-	ok "at 1.002 ms, the cursor at the end: the live contact's row marked >"
+if wait_for c '^#[0-9]+ t=1\.002 ms ' 30 && [ "$(nrows c)" -eq 3 ] && [ "$(rows c | grep -c '^ *>.* live ')" -eq 3 ] &&
+    [ "$(rows c | awk '{ print $2 }' | tr '\n' ' ')" = "2 3 4 " ]; then
+	ok "at 1.002 ms, the cursor at the end: three contacts in progress, k 2 3 4, each live and marked >"
 else
-	notok "at 1.002 ms, the cursor at the end: the live contact's row marked >" c
+	notok "at 1.002 ms, the cursor at the end: three contacts in progress, k 2 3 4, each live and marked >" c
 fi
 keys c i
-wait_for c 'table: interface 1 alone \(bodies 1 and 2\), 0 of 1 collisions' 30 || notok "i: interface 1 alone, no row" c
+wait_for c 'table: interface 1 alone \(bodies 1 and 2\), 0 of 3 collisions' 30 || notok "i: interface 1 alone, no row" c
 keys c Enter
 if wait_for c 'interface 1 has no collision \(yet; i: every interface' 30 && ! screen c | grep -q 'zoom'; then
 	ok "Enter with interface 1 shown and no row: the message, no zoom"
