@@ -376,6 +376,44 @@ class Run:
         return pandas.DataFrame({k: c[k] for k in collision_columns()})
 
     @property
+    def bodies(self):
+        """The bodies at the run's last sample, from the bottom up, as
+        --bodies writes them: a structured array with fields body (1 ..),
+        m (kg), y (m, the centre's position), u (m/s) and K (J, the
+        kinetic energy m u^2 / 2): 2 bodies in the full system, 1 in the
+        reduced one, chain.n in a chain (a copy: computed)."""
+        sim = self._need()
+        n = lib.hb_sim_nbodies(sim.ptr)
+        out = np.zeros(n, dtype=[("body", "i4"), ("m", "f8"), ("y", "f8"), ("u", "f8"), ("K", "f8")])
+        b = ffi.new("struct hb_sim_body *")
+        for i in range(n):
+            if lib.hb_sim_body(sim.ptr, i, b) != 0:
+                raise HybounceError("body %d: not available" % (i + 1))
+            out[i] = (i + 1, b.m, b.y, b.u, 0.5 * b.m * b.u * b.u)
+        return out
+
+    def chain_balance(self):
+        """A chain's balance at the run's last sample, as the batch
+        summary's "chain" line and --check compute it (hb_check_chain):
+        {"kinetic", "stored", "dissipated", "absorbed", "loads", "kinetic0"}
+        in J, {"momentum", "momentum0", "impulse"} in kg m/s (the momentum
+        is checked only without a floor), the residuals "energy_resid" and
+        "momentum_resid" (relative; nan where not checked) and "ok" (every
+        identity of --check holds) with "message" (why not; "" when ok).
+        InputError for a scene that is not a chain."""
+        sim = self._need()
+        r = ffi.new("struct hb_check_chain *")
+        msg = msgbuf()
+        rc = lib.hb_check_chain(sim.ptr, r, msg, MSG)
+        if rc != 0 and lib.hb_sim_scene(sim.ptr).chain.n == 0:
+            raise error(rc, text(msg))
+        return {"kinetic": r.kinetic, "stored": r.stored, "dissipated": r.dissipated,
+                "absorbed": r.absorbed, "loads": r.loads, "kinetic0": r.kinetic0,
+                "momentum": r.p, "momentum0": r.p0, "impulse": r.impulse,
+                "energy_resid": r.eresid, "momentum_resid": r.presid if r.momentum else math.nan,
+                "ok": rc == 0, "message": text(msg) if rc != 0 else ""}
+
+    @property
     def ended(self):
         """Why the run ended, in words ("horizon T = 0.5 s reached at j = 25")."""
         return text(lib.hb_sim_end_str(self._need().ptr))
