@@ -1,32 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
- * sim_record.c - samples, collision records, the jump map g and the ends of a run (see sim.c for the method).
+ * sim_record.c - samples, collision records and the jump map g (see sim.c for the method); how
+ * a run ends: sim_end.c.
  */
 #include "sim_impl.h"
-#include "cnum.h"
-
-int
-hbs_fail(struct hb_sim *s, int status, const char *why)
-{
-	struct iface *I = s->I;
-	s->end = HB_SIM_END_FAIL;
-	cnum_snprintf(s->err, sizeof s->err,
-	         "%s at (t = %.12g s, j = %ld): x = %.6g m, v = %.6g m/s, x_c = %.6g m, q_c = %d",
-	         why, s->t, s->j, I->x, I->v, I->xc, I->q);
-	snprintf(s->endmsg, sizeof s->endmsg, "failed: %s", s->err);
-	return status;
-}
-
-int
-hbs_fail_iface(struct hb_sim *s, const struct iface *I, int status, const char *why)
-{
-	s->end = HB_SIM_END_FAIL;
-	cnum_snprintf(s->err, sizeof s->err,
-	         "%s; interface %d there (j = %ld): x = %.6g m, v = %.6g m/s, x_c = %.6g m, q_c = %d",
-	         why, s->k0 + (int)(I - s->ifc), s->j, I->x, I->v, I->xc, I->q);
-	snprintf(s->endmsg, sizeof s->endmsg, "failed: %s", s->err);
-	return status;
-}
 
 int
 hbs_push_sample(struct hb_sim *s, int kind)
@@ -238,18 +215,7 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 	if ((rc = hbs_push_sample(s, HB_ARC_POST_JUMP)))
 		return rc;
 	s->setup = 1;
-	if (s->j >= s->sc.run.J) {
-		s->end = HB_SIM_END_J;
-		cnum_snprintf(s->endmsg, sizeof s->endmsg,
-		         "jump cap J = %ld reached at t = %.9g s", s->sc.run.J, s->t);
-	}
+	if (s->j >= s->sc.run.J)
+		hbs_finish_J(s);
 	return 0;
-}
-
-void
-hbs_finish_T(struct hb_sim *s)
-{
-	s->end = HB_SIM_END_T;
-	cnum_snprintf(s->endmsg, sizeof s->endmsg, "horizon T = %.9g s reached at j = %ld",
-	         s->sc.run.T, s->j);
 }
