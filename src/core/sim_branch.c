@@ -31,6 +31,29 @@
 
 #include "cnum.h"
 
+/* The state a branch records of its sample, field by field (same names in struct hb_arc_sample). */
+#define BRANCH_STATE(X) X(x) X(v) X(xc) X(q)
+
+/* Branch b begins at sample a: its (t, j) and state (b's scene is left as it is). */
+static void
+branch_from(struct hb_branch *b, const struct hb_arc_sample *a)
+{
+#define COPY(f) b->f = a->f;
+	b->t = a->t;
+	b->j = a->j;
+	BRANCH_STATE(COPY)
+#undef COPY
+}
+
+/* 1 when sample a's state is the one branch b recorded, to the bit. */
+static int
+branch_state_is(const struct hb_branch *b, const struct hb_arc_sample *a)
+{
+#define SAME(f) && a->f == b->f
+	return 1 BRANCH_STATE(SAME);
+#undef SAME
+}
+
 /* The first sample of the arc at exactly (t, j), or -1. */
 static long
 find_sample(const struct hb_arc *arc, double t, long j)
@@ -85,7 +108,7 @@ branch_at(struct hb_sim *s, const struct hb_branch *b, int *same_state, int *res
 	}
 	a = hb_arc_at(s->arc, (size_t)i);
 	if (same_state != NULL)
-		*same_state = a->x == b->x && a->v == b->v && a->xc == b->xc && a->q == b->q;
+		*same_state = branch_state_is(b, a);
 	if ((rc = hb_sim_seek(s, (size_t)i)) != HB_OK)
 		return hb_status_set(msg, n, rc, "cannot cut the run at its sample %ld%s%s", i,
 		                     s->err[0] ? ": " : "", s->err);
@@ -98,13 +121,7 @@ branch_at(struct hb_sim *s, const struct hb_branch *b, int *same_state, int *res
 		 */
 		if ((rc = hbs_pend_flush(s)) != HB_OK)
 			return hb_status_set(msg, n, rc, "%s", s->err);
-		a = hb_arc_last(s->arc);
-		nb.t = a->t;
-		nb.j = a->j;
-		nb.x = a->x;
-		nb.v = a->v;
-		nb.xc = a->xc;
-		nb.q = a->q;
+		branch_from(&nb, hb_arc_last(s->arc));
 	}
 	if ((rc = hb_sim_set_scene(s, &b->sc, restarted, msg, n)) != HB_OK)
 		return rc;
@@ -132,7 +149,6 @@ hb_sim_branch(struct hb_sim *s, size_t i, const struct hb_scene *sc, int *restar
 {
 	struct hb_branch nb, *keep = NULL;
 	struct hb_scene chk = *sc;
-	const struct hb_arc_sample *a;
 	size_t nkeep = 0;
 	int rc = HB_OK, rs = 0;
 
@@ -143,13 +159,7 @@ hb_sim_branch(struct hb_sim *s, size_t i, const struct hb_scene *sc, int *restar
 		                     hb_arc_len(s->arc));
 	if ((rc = hb_scene_validate(&chk, msg, n)) != HB_OK)
 		return rc;
-	a = hb_arc_at(s->arc, i);
-	nb.t = a->t;
-	nb.j = a->j;
-	nb.x = a->x;
-	nb.v = a->v;
-	nb.xc = a->xc;
-	nb.q = a->q;
+	branch_from(&nb, hb_arc_at(s->arc, i));
 	nb.sc = chk;
 	/* the branches before the sample stay; those at or after it are replaced */
 	while (nkeep < s->nbr && (s->br[nkeep].t < nb.t || (s->br[nkeep].t == nb.t && s->br[nkeep].j < nb.j)))

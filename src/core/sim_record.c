@@ -4,6 +4,7 @@
  * a run ends: sim_end.c.
  */
 #include "sim_impl.h"
+#include "sim_sample.h"
 
 int
 hbs_push_sample(struct hb_sim *s, int kind)
@@ -27,31 +28,18 @@ hbs_push_sample(struct hb_sim *s, int kind)
 	memset(&a, 0, sizeof a);
 	a.t = s->t;
 	a.j = s->j;
-	a.q = I->q;
 	a.kind = kind;
-	a.x = I->x;
-	a.v = I->v;
 	if (I->q) {
 		phi = watched ? s->w.pf[0] : phi_at(s, I->xc, I->z, I->v);
-		a.xc = I->xc;
-		memcpy(a.z, I->z, sizeof a.z);
 		if (fabs(I->xc) > I->xcmax)
 			I->xcmax = fabs(I->xc);
 		if (-phi > I->Fcmax)
 			I->Fcmax = -phi;
 	}
+	hbs_sample_put(&a, I, s); /* the state (sim_sample.h), extrema updated */
 	a.Fc = -phi;
 	Fer = watched ? s->w.pf[1] : iface_Fer(s, I, s->t);
 	a.Fer = Fer;
-	a.xm = s->xm;
-	a.vm = s->vm;
-	a.W = I->W;
-	a.JFc = I->JFc;
-	a.JFe = I->JFe;
-	a.xcmax = I->xcmax;
-	a.Fcmax = I->Fcmax;
-	a.Ee = I->Ee;
-	a.Wc = I->Wc;
 	a.k = s->k0 + s->ia;
 	if (arc_push(s->arc, &a))
 		return hbs_fail(s, HB_ENOMEM, "out of memory for the arc");

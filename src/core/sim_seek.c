@@ -30,6 +30,7 @@
  * sample cut at may then have a greater index than it had.
  */
 #include "sim_impl.h"
+#include "sim_sample.h"
 
 #include "cnum.h"
 
@@ -143,20 +144,7 @@ hb_sim_seek(struct hb_sim *s, size_t i)
 	s->resume_last = i;
 	s->t = a->t;
 	s->j = a->j;
-	I->q = a->q;
-	I->x = a->x;
-	I->v = a->v;
-	I->xc = a->xc;
-	memcpy(I->z, a->z, sizeof I->z);
-	s->xm = a->xm;
-	s->vm = a->vm;
-	I->W = a->W;
-	I->JFc = a->JFc;
-	I->JFe = a->JFe;
-	I->xcmax = a->xcmax;
-	I->Fcmax = a->Fcmax;
-	I->Ee = a->Ee;
-	I->Wc = a->Wc;
+	hbs_sample_get(I, s, a); /* the state the sample holds (sim_sample.h), then what follows from it */
 	I->Wc0 = a->Wc + a->W;
 	I->xe = a->x - a->xc;
 	if (I->q) {
