@@ -35,10 +35,10 @@
 #include "hybounce/status.h"
 #include "arc_impl.h"
 #include "control.h"
-#include "sim_body.h"
 #include "step_bsimp.h"
 #include "step_dop853.h"
 #include "step_rk8pd.h"
+#include "sim_body.h"
 
 enum {
 	MAXDIM = 11,           /* x, v, x_c, z1, z2, W, JFc, JFe, E_e, x_m, v_m */
