@@ -11,7 +11,8 @@
 # not listed is in a cycle (a new cycle: the calls among the files in
 # cycles are shown) and when a listed file is no longer in one (take it off
 # the list: the list only shrinks).  It prints each part's files in cycles
-# and the counts.  Needs the objects of the build that HYBOUNCE_BIN is in.
+# and the counts.  Needs the objects of the build that HYBOUNCE_BIN is in
+# (those of a source that is gone are left out); run from the repository root.
 . "$(dirname "$0")/common.inc"
 BUILD_DIR=$(dirname "$BIN")
 ALLOW="$(dirname "$0")/calls.allow"
@@ -20,10 +21,12 @@ command -v nm >/dev/null || { echo "not ok - nm is not installed"; exit 1; }
 # syms PART: "D PART/FILE SYMBOL" for each definition, "U PART/FILE SYMBOL"
 # for each use, of the objects of src/PART
 syms() {
-	set -- "$1" "$BUILD_DIR"/src/"$1"/*.o
-	[ -f "$2" ] || return 0
 	part=$1
-	shift
+	set --
+	for o in "$BUILD_DIR"/src/"$part"/*.o; do   # not an object left from a removed source
+		[ -f "src/$part/$(basename "$o" .o).c" ] && set -- "$@" "$o"
+	done
+	[ $# -gt 0 ] || return 0
 	{ nm -A --defined-only -g "$@"; nm -A -u "$@"; } | awk -v part="$part" '{
 		f = $1; sub(/:.*/, "", f); sub(/.*\//, "", f); sub(/\.o$/, ".c", f)
 		if ($(NF - 1) == "U") print "U", part "/" f, $NF
