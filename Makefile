@@ -4,6 +4,7 @@
 #   make            build build/hybounce
 #   make run        install missing packages, build, open the explorer on the default preset
 #   make check      install missing packages, build, run every test and the fuzz smoke
+#   make lint-cycles   no cycle of calls among the source files (also part of make check)
 #   make fuzz       the libFuzzer campaign, FUZZ_TIME seconds per harness (tests/fuzz)
 #   make check-asan the unit tests under AddressSanitizer + UBSan
 #   make bench      the work-precision benchmark (report in build/bench/)
@@ -449,6 +450,14 @@ golden: $(UNIT)
 
 lint-man:
 	mandoc -Tlint -W warning man/hybounce.1
+
+# Calls among the files of the engine, the explorer and the command line
+# point one way: no file calls, through others, back into itself
+# (tests/cli/calls.sh, part of make check; tests/cli/calls.allow lists the
+# files still in a cycle).
+.PHONY: lint-cycles
+lint-cycles: $(BIN)
+	@HYBOUNCE_BIN=$(BIN) sh tests/cli/calls.sh
 
 install: $(BIN) lib
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(MANPREFIX)/man1 $(DESTDIR)$(DATADIR)/presets

@@ -21,6 +21,8 @@
  * double, and the writer checks that reading a branch back gives its
  * scene; where it does not, the branch lists every key, and where even
  * that fails, the header says the file does not reproduce the run.
+ * hb_preset_format_run writes the whole run so (its first scene by
+ * preset_write.c's hb_preset_format).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -34,6 +36,12 @@
 #include "preset_ini.h"
 #include "textbuf.h"
 #include "cnum.h"
+
+#ifdef HYBOUNCE_VERSION
+#define HB_PRESET_VERSION HYBOUNCE_VERSION
+#else
+#define HB_PRESET_VERSION "(unknown version)"
+#endif
 
 /* One key of a branch: "law.c" = "44000 N s/m", at line (0 when written). */
 struct kv {
@@ -305,7 +313,7 @@ enum { MAXKV = 256 };
  * when reading it back gives b's scene, else 0 (the section is written
  * all the same).
  */
-int
+static int
 preset_branch_format(struct textbuf *o, int k, const struct hb_scene *before,
                      const struct hb_branch *b)
 {
@@ -357,4 +365,79 @@ done:
 	free(ka);
 	free(out);
 	return exact;
+}
+
+/* ---- a run as a preset --------------------------------------------------- */
+
+/* hb_preset_format's text less its first line (the header), appended to o. */
+static void
+body_of(struct textbuf *o, const struct hb_scene *sc)
+{
+	size_t len = hb_preset_format(sc, NULL, 0);
+	char *buf = malloc(len + 1);
+	const char *nl;
+
+	if (buf == NULL) {
+		o->len += len;   /* as textbuf does when the text does not fit */
+		return;
+	}
+	hb_preset_format(sc, buf, len + 1);
+	nl = strchr(buf, '\n');
+	textbuf_printf(o, "%s", nl != NULL ? nl + 1 : buf);
+	free(buf);
+}
+
+size_t
+hb_preset_format_run(const struct hb_sim *s, char *buf, size_t n)
+{
+	struct textbuf o = { buf, n, 0 };
+	size_t nb = hb_sim_nbranches(s);
+	double un = hb_sim_unrecorded(s);
+	char tb[48];
+	int exact = 1;
+
+	if (nb == 0 && un < 0)
+		return hb_preset_format(hb_sim_scene(s), buf, n);
+	if (buf != NULL && n > 0)
+		buf[0] = '\0';
+	if (un >= 0) {
+		hb_units_format_exact(un, hb_unit_time, tb, sizeof tb);
+		textbuf_printf(&o, "; hybounce %s preset: does NOT reproduce the run: its values "
+		    "changed at t = %s in a way a preset cannot record; these are the values at its "
+		    "end\n", HB_PRESET_VERSION, tb);
+		body_of(&o, hb_sim_scene(s));
+		return o.len;
+	}
+	/* the branches first, to know whether each reads back; the header then goes before them */
+	{
+		struct textbuf b = { NULL, 0, 0 };
+		char *bbuf;
+
+		for (size_t k = 0; k < nb; k++)
+			exact &= preset_branch_format(&b, (int)k + 1, k ? &hb_sim_branch_get(s, k - 1)->sc
+			                                               : hb_sim_scene0(s), hb_sim_branch_get(s, k));
+		bbuf = malloc(b.len + 1);
+		if (bbuf != NULL) {
+			b = (struct textbuf){ bbuf, b.len + 1, 0 };
+			for (size_t k = 0; k < nb; k++)
+				preset_branch_format(&b, (int)k + 1, k ? &hb_sim_branch_get(s, k - 1)->sc
+				                                       : hb_sim_scene0(s), hb_sim_branch_get(s, k));
+		}
+		if (exact)
+			textbuf_printf(&o, "; hybounce %s preset: a run with %zu branch%s: the scene below "
+			    "from t = 0, then each [branch N] from its sample (t, j) on with the values it "
+			    "names; hybounce --batch and the explorer replay them exactly\n",
+			    HB_PRESET_VERSION, nb, nb == 1 ? "" : "es");
+		else
+			textbuf_printf(&o, "; hybounce %s preset: does NOT reproduce the run exactly: a "
+			    "[branch N] below does not read back to the values the run took there\n",
+			    HB_PRESET_VERSION);
+		body_of(&o, hb_sim_scene0(s));
+		if (bbuf != NULL)
+			textbuf_printf(&o, "%s", bbuf);
+		else
+			o.len += b.len;
+		free(bbuf);
+	}
+	return o.len;
 }

@@ -84,13 +84,4 @@ preset_branches_read(const struct preset_entry *e, int n, const char *file,
                      const struct hb_scene *sc, struct hb_branch **br, size_t *nbr, char *msg,
                      size_t mn);
 
-/*
- * Appends "[branch k]" for branch b (before: the scene before it) to o;
- * returns 1 when reading the section back gives b's scene, else 0.
- */
-struct textbuf;
-int
-preset_branch_format(struct textbuf *o, int k, const struct hb_scene *before,
-                     const struct hb_branch *b);
-
 #endif

@@ -3,9 +3,9 @@
  * preset_write.c - scenes written as presets (preset.h): every value in SI
  * with %.17g and its unit, so that loading the file reproduces the scene
  * bit for bit, written by the atomic writer (atomic.h): a temporary name
- * in its folder, flushed to disk and renamed.  A run with branches is
- * written as its first scene and a [branch N] section per branch
- * (preset_branch.c).
+ * in its folder, flushed to disk and renamed.  A run (hb_preset_format_run),
+ * with its branches, is preset_branch.c's, which writes each scene with
+ * hb_preset_format.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,7 +13,6 @@
 
 #include "hybounce/atomic.h"
 #include "hybounce/preset.h"
-#include "hybounce/sim.h"
 #include "hybounce/status.h"
 #include "hybounce/units.h"
 
@@ -22,12 +21,6 @@
 #include "scene_override.h"
 #include "textbuf.h"
 #include "cnum.h"
-
-#ifdef HYBOUNCE_VERSION
-#define HB_PRESET_VERSION HYBOUNCE_VERSION
-#else
-#define HB_PRESET_VERSION "(unknown version)"
-#endif
 
 /*
  * "key = VALUE".  A value that begins with ';' or '#' is written right
@@ -102,77 +95,4 @@ hb_preset_save(const char *path, const struct hb_scene *sc, char *msg, size_t n)
 	st = hb_atomic_write_file(path, buf, len, msg, n);
 	free(buf);
 	return st == HB_OK ? HB_OK : HB_EIO;
-}
-
-/* hb_preset_format's text less its first line (the header), appended to o. */
-static void
-body_of(struct textbuf *o, const struct hb_scene *sc)
-{
-	size_t len = hb_preset_format(sc, NULL, 0);
-	char *buf = malloc(len + 1);
-	const char *nl;
-
-	if (buf == NULL) {
-		o->len += len;   /* as textbuf does when the text does not fit */
-		return;
-	}
-	hb_preset_format(sc, buf, len + 1);
-	nl = strchr(buf, '\n');
-	textbuf_printf(o, "%s", nl != NULL ? nl + 1 : buf);
-	free(buf);
-}
-
-size_t
-hb_preset_format_run(const struct hb_sim *s, char *buf, size_t n)
-{
-	struct textbuf o = { buf, n, 0 };
-	size_t nb = hb_sim_nbranches(s);
-	double un = hb_sim_unrecorded(s);
-	char tb[48];
-	int exact = 1;
-
-	if (nb == 0 && un < 0)
-		return hb_preset_format(hb_sim_scene(s), buf, n);
-	if (buf != NULL && n > 0)
-		buf[0] = '\0';
-	if (un >= 0) {
-		hb_units_format_exact(un, hb_unit_time, tb, sizeof tb);
-		textbuf_printf(&o, "; hybounce %s preset: does NOT reproduce the run: its values "
-		    "changed at t = %s in a way a preset cannot record; these are the values at its "
-		    "end\n", HB_PRESET_VERSION, tb);
-		body_of(&o, hb_sim_scene(s));
-		return o.len;
-	}
-	/* the branches first, to know whether each reads back; the header then goes before them */
-	{
-		struct textbuf b = { NULL, 0, 0 };
-		char *bbuf;
-
-		for (size_t k = 0; k < nb; k++)
-			exact &= preset_branch_format(&b, (int)k + 1, k ? &hb_sim_branch_get(s, k - 1)->sc
-			                                               : hb_sim_scene0(s), hb_sim_branch_get(s, k));
-		bbuf = malloc(b.len + 1);
-		if (bbuf != NULL) {
-			b = (struct textbuf){ bbuf, b.len + 1, 0 };
-			for (size_t k = 0; k < nb; k++)
-				preset_branch_format(&b, (int)k + 1, k ? &hb_sim_branch_get(s, k - 1)->sc
-				                                       : hb_sim_scene0(s), hb_sim_branch_get(s, k));
-		}
-		if (exact)
-			textbuf_printf(&o, "; hybounce %s preset: a run with %zu branch%s: the scene below "
-			    "from t = 0, then each [branch N] from its sample (t, j) on with the values it "
-			    "names; hybounce --batch and the explorer replay them exactly\n",
-			    HB_PRESET_VERSION, nb, nb == 1 ? "" : "es");
-		else
-			textbuf_printf(&o, "; hybounce %s preset: does NOT reproduce the run exactly: a "
-			    "[branch N] below does not read back to the values the run took there\n",
-			    HB_PRESET_VERSION);
-		body_of(&o, hb_sim_scene0(s));
-		if (bbuf != NULL)
-			textbuf_printf(&o, "%s", bbuf);
-		else
-			o.len += b.len;
-		free(bbuf);
-	}
-	return o.len;
 }

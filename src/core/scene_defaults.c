@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
- * scene_defaults.c - the default scene (from the key table), the derived
- * values of a scene, and the names of the steppers (see scene.h).
+ * scene_defaults.c - the default scene (from the key table) and the derived
+ * values of a scene (see scene.h); the names of the steppers:
+ * scene_stepper.c.
  *
  * Bodies.  A body is given by its material (E and nu) or not, and by its
  * mass or by rho and R.  A body 2 of infinite mass (mass = inf, or R = inf
@@ -20,32 +21,6 @@
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
 #endif
-
-/* ---------------------------------------------------------------- */
-/* Steppers */
-
-static const char *const stepper_names[HB_STEPPER_COUNT] = {
-	"rk8pd", "rkf45", "rkck", "msbdf", "rk4imp", "bsimp", "auto", "dop853", "vern98",
-};
-
-const char *
-hb_scene_stepper_name(int stepper)
-{
-	if (stepper < 0 || stepper >= HB_STEPPER_COUNT)
-		return "?";
-	return stepper_names[stepper];
-}
-
-int
-hb_scene_stepper_find(const char *name)
-{
-	if (name == NULL)
-		return -1;
-	for (int i = 0; i < HB_STEPPER_COUNT; i++)
-		if (strcmp(stepper_names[i], name) == 0)
-			return i;
-	return -1;
-}
 
 /* ---------------------------------------------------------------- */
 /* Defaults and derived values */

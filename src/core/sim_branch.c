@@ -18,114 +18,40 @@
  *
  * A chain (sim_seek.c) is cut at the end of the unit of work that holds
  * the sample, where its state is known, and the branch is recorded there;
- * whether it goes on or restarts is hbs_chain_continues's rule.
+ * whether it goes on or restarts is hbs_chain_continues's rule (sim_chain.c).
  *
  * A change of scene that did not go through here (hb_sim_set_scene that
  * continues the run, or a seek back past a branch) is remembered by its
  * time: hb_sim_unrecorded() says the run is no longer described by its
- * first scene and branches.
+ * first scene and branches.  The record itself (the first scene, the
+ * branches, that time) is sim_branch_log.c's; this file is above the
+ * run, its seek and its change of scene, and none of them calls it.
  */
 #include "sim_impl.h"
-#include "scene_chain.h"
 
 #include "cnum.h"
 
-/*
- * A chain's run goes on with scene nsc from its current state unless that
- * changes what the state was computed from or what is in contact (as the
- * two-body scenes' rule): the number of bodies, the floor, the system, any
- * body's initial velocity, gap or radius (its position at t = 0), the mass
- * or load of a body in contact, or the law or extension of an interface in
- * contact.  Then 0: the run begins again from t = 0.
- */
-int
-hbs_chain_continues(const struct hb_sim *s, const struct hb_scene *nsc)
+/* The state a branch records of its sample, field by field (same names in struct hb_arc_sample). */
+#define BRANCH_STATE(X) X(x) X(v) X(xc) X(q)
+
+/* Branch b begins at sample a: its (t, j) and state (b's scene is left as it is). */
+static void
+branch_from(struct hb_branch *b, const struct hb_arc_sample *a)
 {
-	const struct hb_scene *o = &s->sc;
-	int i;
-
-	if (nsc->chain.n != o->chain.n || nsc->chain.floor != o->chain.floor ||
-	    nsc->d.system != o->d.system || memcmp(&nsc->init, &o->init, sizeof nsc->init) != 0)
-		return 0;
-	for (i = 0; i < s->nbody; i++) {
-		struct scene_chain_body a, b;
-
-		if (scene_chain_body(o, i, &a) != HB_OK || scene_chain_body(nsc, i, &b) != HB_OK)
-			return 0;
-		if (a.v0 != b.v0 || a.gap != b.gap || a.R != b.R)
-			return 0;
-		if (s->body[i].cl >= 0 && (a.m != b.m || a.F != b.F))
-			return 0;
-	}
-	for (i = 0; i < s->nif; i++) {
-		struct scene_chain_iface a, b;
-
-		if (!s->ifc[i].q)
-			continue;
-		if (scene_chain_iface(o, s->k0 + i, &a) != HB_OK ||
-		    scene_chain_iface(nsc, s->k0 + i, &b) != HB_OK || a.law != b.law || a.ext != b.ext)
-			return 0;
-	}
-	return 1;
+#define COPY(f) b->f = a->f;
+	b->t = a->t;
+	b->j = a->j;
+	BRANCH_STATE(COPY)
+#undef COPY
 }
 
-/*
- * Before a chain's bodies take new constants: each flying body's (y, u)
- * moved to the current t on its parabola, so that a new acceleration acts
- * from now on (a body in contact keeps its mass and load).
- */
-void
-hbs_chain_settle_flying(struct hb_sim *s)
-{
-	for (int i = 0; i < s->nbody; i++) {
-		double y, u;
-
-		if (s->body[i].cl >= 0)
-			continue;
-		hbs_body_now(&s->body[i], s->t, &y, &u);
-		hbs_body_set(&s->body[i], s->t, y, u);
-	}
-}
-
-/* Forgets every branch: the run is its scene from t = 0 again. */
-void
-hbs_branches_clear(struct hb_sim *s)
-{
-	s->sc0 = s->sc;
-	s->nbr = 0;
-	s->unrec_t = -1;
-}
-
-/* Drops the branches taken after sample i (the run was cut there). */
-void
-hbs_branches_cut(struct hb_sim *s, size_t i)
-{
-	const struct hb_arc_sample *a = hb_arc_at(s->arc, i);
-	size_t k = s->nbr;
-
-	while (k > 0 && (s->br[k - 1].t > a->t || (s->br[k - 1].t == a->t && s->br[k - 1].j > a->j)))
-		k--;
-	if (s->unrec_t > a->t)
-		s->unrec_t = -1;     /* that change was after the cut: gone with it */
-	if (k < s->nbr && s->unrec_t < 0)
-		s->unrec_t = a->t;   /* the run goes on with the scene of a dropped branch */
-	s->nbr = k;
-}
-
+/* 1 when sample a's state is the one branch b recorded, to the bit. */
 static int
-push(struct hb_sim *s, const struct hb_branch *b)
+branch_state_is(const struct hb_branch *b, const struct hb_arc_sample *a)
 {
-	if (s->nbr == s->brcap) {
-		size_t cap = s->brcap ? 2 * s->brcap : 4;
-		struct hb_branch *nb = realloc(s->br, cap * sizeof *nb);
-
-		if (nb == NULL)
-			return -1;
-		s->br = nb;
-		s->brcap = cap;
-	}
-	s->br[s->nbr++] = *b;
-	return 0;
+#define SAME(f) && a->f == b->f
+	return 1 BRANCH_STATE(SAME);
+#undef SAME
 }
 
 /* The first sample of the arc at exactly (t, j), or -1. */
@@ -182,7 +108,7 @@ branch_at(struct hb_sim *s, const struct hb_branch *b, int *same_state, int *res
 	}
 	a = hb_arc_at(s->arc, (size_t)i);
 	if (same_state != NULL)
-		*same_state = a->x == b->x && a->v == b->v && a->xc == b->xc && a->q == b->q;
+		*same_state = branch_state_is(b, a);
 	if ((rc = hb_sim_seek(s, (size_t)i)) != HB_OK)
 		return hb_status_set(msg, n, rc, "cannot cut the run at its sample %ld%s%s", i,
 		                     s->err[0] ? ": " : "", s->err);
@@ -195,20 +121,14 @@ branch_at(struct hb_sim *s, const struct hb_branch *b, int *same_state, int *res
 		 */
 		if ((rc = hbs_pend_flush(s)) != HB_OK)
 			return hb_status_set(msg, n, rc, "%s", s->err);
-		a = hb_arc_last(s->arc);
-		nb.t = a->t;
-		nb.j = a->j;
-		nb.x = a->x;
-		nb.v = a->v;
-		nb.xc = a->xc;
-		nb.q = a->q;
+		branch_from(&nb, hb_arc_last(s->arc));
 	}
 	if ((rc = hb_sim_set_scene(s, &b->sc, restarted, msg, n)) != HB_OK)
 		return rc;
 	if (*restarted)
 		return HB_OK;   /* hb_sim_set_scene began the run again with b->sc */
 	s->unrec_t = unrec; /* set_scene marked the change; here it is recorded */
-	return push(s, &nb) == 0 ? HB_OK : hb_status_set(msg, n, HB_ENOMEM, "out of memory");
+	return hbs_branches_push(s, &nb) == 0 ? HB_OK : hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 }
 
 int
@@ -229,7 +149,6 @@ hb_sim_branch(struct hb_sim *s, size_t i, const struct hb_scene *sc, int *restar
 {
 	struct hb_branch nb, *keep = NULL;
 	struct hb_scene chk = *sc;
-	const struct hb_arc_sample *a;
 	size_t nkeep = 0;
 	int rc = HB_OK, rs = 0;
 
@@ -240,13 +159,7 @@ hb_sim_branch(struct hb_sim *s, size_t i, const struct hb_scene *sc, int *restar
 		                     hb_arc_len(s->arc));
 	if ((rc = hb_scene_validate(&chk, msg, n)) != HB_OK)
 		return rc;
-	a = hb_arc_at(s->arc, i);
-	nb.t = a->t;
-	nb.j = a->j;
-	nb.x = a->x;
-	nb.v = a->v;
-	nb.xc = a->xc;
-	nb.q = a->q;
+	branch_from(&nb, hb_arc_at(s->arc, i));
 	nb.sc = chk;
 	/* the branches before the sample stay; those at or after it are replaced */
 	while (nkeep < s->nbr && (s->br[nkeep].t < nb.t || (s->br[nkeep].t == nb.t && s->br[nkeep].j < nb.j)))
@@ -276,28 +189,4 @@ hb_sim_branch(struct hb_sim *s, size_t i, const struct hb_scene *sc, int *restar
 out:
 	free(keep);
 	return rc;
-}
-
-size_t
-hb_sim_nbranches(const struct hb_sim *s)
-{
-	return s->nbr;
-}
-
-const struct hb_branch *
-hb_sim_branch_get(const struct hb_sim *s, size_t k)
-{
-	return k < s->nbr ? &s->br[k] : NULL;
-}
-
-const struct hb_scene *
-hb_sim_scene0(const struct hb_sim *s)
-{
-	return &s->sc0;
-}
-
-double
-hb_sim_unrecorded(const struct hb_sim *s)
-{
-	return s->unrec_t;
 }

@@ -3,7 +3,8 @@
  * sim_chain.c - the chain a scene describes (docs/chains.md section 1):
  * its bodies, from the bottom up, and its interfaces, each bound to its law
  * and with its effective mass; the bodies' positions, velocities and loads
- * at the current state.
+ * at the current state; whether a run goes on with a new scene from its
+ * current state (else it begins again), its flying bodies settled first.
  *
  * The two-body scenes are two chains:
  *  - the full system H_f: N = 2 bodies, no floor, interface 1 between them;
@@ -161,16 +162,6 @@ hbs_chain_free(struct hb_sim *s)
 	s->capbody = s->capif = 0;
 }
 
-/* Body b's position and velocity at t: its parabola from the time tb its (y, u) are of. */
-void
-hbs_body_now(const struct body *b, double t, double *y, double *u)
-{
-	double tau = t - b->tb;
-
-	*y = b->y + tau * (b->u + 0.5 * b->a * tau);
-	*u = b->u + b->a * tau;
-}
-
 /* Gap and relative velocity of interface I at t from the bodies' parabolas. */
 static void
 gap_at(const struct hb_sim *s, const struct iface *I, double t, double *x, double *v)
@@ -190,15 +181,6 @@ gap_at(const struct hb_sim *s, const struct iface *I, double t, double *x, doubl
 		*x = (yh - hi->dn) - (yl + lo->up);
 		*v = uh - ul;
 	}
-}
-
-/* Sets body b to (y, u) at t. */
-void
-hbs_body_set(struct body *b, double t, double y, double u)
-{
-	b->y = y;
-	b->u = u;
-	b->tb = t;
 }
 
 int
@@ -323,6 +305,63 @@ hbs_chain_settle(struct hb_sim *s, int i, double t)
 	if (J->lo >= 0) {
 		hbs_body_now(&s->body[J->lo], t, &y, &u);
 		hbs_body_set(&s->body[J->lo], t, y, u);
+	}
+}
+
+/*
+ * A chain's run goes on with scene nsc from its current state unless that
+ * changes what the state was computed from or what is in contact (as the
+ * two-body scenes' rule): the number of bodies, the floor, the system, any
+ * body's initial velocity, gap or radius (its position at t = 0), the mass
+ * or load of a body in contact, or the law or extension of an interface in
+ * contact.  Then 0: the run begins again from t = 0.
+ */
+int
+hbs_chain_continues(const struct hb_sim *s, const struct hb_scene *nsc)
+{
+	const struct hb_scene *o = &s->sc;
+	int i;
+
+	if (nsc->chain.n != o->chain.n || nsc->chain.floor != o->chain.floor ||
+	    nsc->d.system != o->d.system || memcmp(&nsc->init, &o->init, sizeof nsc->init) != 0)
+		return 0;
+	for (i = 0; i < s->nbody; i++) {
+		struct scene_chain_body a, b;
+
+		if (scene_chain_body(o, i, &a) != HB_OK || scene_chain_body(nsc, i, &b) != HB_OK)
+			return 0;
+		if (a.v0 != b.v0 || a.gap != b.gap || a.R != b.R)
+			return 0;
+		if (s->body[i].cl >= 0 && (a.m != b.m || a.F != b.F))
+			return 0;
+	}
+	for (i = 0; i < s->nif; i++) {
+		struct scene_chain_iface a, b;
+
+		if (!s->ifc[i].q)
+			continue;
+		if (scene_chain_iface(o, s->k0 + i, &a) != HB_OK ||
+		    scene_chain_iface(nsc, s->k0 + i, &b) != HB_OK || a.law != b.law || a.ext != b.ext)
+			return 0;
+	}
+	return 1;
+}
+
+/*
+ * Before a chain's bodies take new constants: each flying body's (y, u)
+ * moved to the current t on its parabola, so that a new acceleration acts
+ * from now on (a body in contact keeps its mass and load).
+ */
+void
+hbs_chain_settle_flying(struct hb_sim *s)
+{
+	for (int i = 0; i < s->nbody; i++) {
+		double y, u;
+
+		if (s->body[i].cl >= 0)
+			continue;
+		hbs_body_now(&s->body[i], s->t, &y, &u);
+		hbs_body_set(&s->body[i], s->t, y, u);
 	}
 }
 

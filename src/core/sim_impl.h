@@ -5,7 +5,14 @@
  * intervals, and the functions one file calls in another.  sim.c holds the
  * driver (its header comment describes the method), sim_life.c a
  * simulator's making, change of scene, freeing and accessors, sim_seek.c
- * hb_sim_seek.
+ * hb_sim_seek, sim_branch.c hb_sim_branch.
+ *
+ * The files call one another one way (make lint-cycles): a branch seeks,
+ * sets the scene and advances; a change of scene seeks and restarts; a
+ * seek replays (advances) and restarts; the run advances.  What several
+ * of them keep is below them all: the outputs a seek keeps aside
+ * (sim_pend.c), the record of the branches (sim_branch_log.c), a run's
+ * ends (sim_end.c), a chain's bodies (sim_body.h).
  */
 #ifndef HYBOUNCE_SIM_IMPL_H
 #define HYBOUNCE_SIM_IMPL_H
@@ -31,6 +38,7 @@
 #include "step_bsimp.h"
 #include "step_dop853.h"
 #include "step_rk8pd.h"
+#include "sim_body.h"
 
 enum {
 	MAXDIM = 11,           /* x, v, x_c, z1, z2, W, JFc, JFe, E_e, x_m, v_m */
@@ -65,33 +73,6 @@ enum fun_kind { FUN_EVENT, FUN_KINK, FUN_XCMAX, FUN_FCMAX };
 struct cached {
 	double h;
 	double u[MAXDIM];
-};
-
-/*
- * The chain (docs/chains.md section 1): bodies 1..N from the bottom up
- * (body[0] is body 1) and the interfaces between them, interface 0 on the
- * floor when there is one.  The two-body scenes are N = 2 without a floor
- * (the full system: chain body 1 is the scene's body 2, the lower one) and
- * N = 1 on the floor (the reduced system); a [chain] scene has chain.n
- * bodies.  One interface at a time is in contact, integrated in its own
- * coordinates (docs/chains.md section 8, a cluster of one contact); see
- * sim_chain.c for how the bodies follow.
- */
-struct body {
-	double m;               /* kg */
-	double l;               /* half-length along the axis (radius), m; 0 when unknown */
-	double y, u, tb;        /* a chain's: displacement of its centre from y0, and velocity,
-	                           at time tb (the two-body scenes': from their interface,
-	                           hbs_body_at) */
-	double dn, up;          /* a chain's: the gap below it is (y - dn) - (y' + up') of the
-	                           body below (y - dn on the floor), the gap above it likewise:
-	                           dn = -(the gap below at t = 0), up = 0, so that a gap is a
-	                           difference of displacements, exact (0) between touching
-	                           bodies at rest, however far along the chain they are */
-	double a;               /* a chain's: its constant acceleration */
-	double Fe;              /* a chain's: its applied force, constant */
-	double y0, u0;          /* a chain's: its position (the origin of y) and velocity at t = 0 */
-	int cl;                 /* a chain's: the cluster it is in (index), -1 in flight */
 };
 
 struct iface {
@@ -239,14 +220,14 @@ struct hb_sim {
 	gsl_matrix *Jdyn;
 	gsl_vector_complex *lambda;
 
-	/* sim_branch.c: the run as its first scene and the branches taken since */
+	/* sim_branch_log.c: the run as its first scene and the branches taken since */
 	struct hb_scene sc0;        /* the scene the run began with at t = 0 */
 	struct hb_branch *br;
 	size_t nbr, brcap;
 	double unrec_t;             /* -1, or the first t the scene changed unrecorded */
 
 	/*
-	 * sim_seek.c: a chain's seek.  unit_n counts the samples the last unit
+	 * sim_seek.c, sim_pend.c: a chain's seek.  unit_n counts the samples the last unit
 	 * of work pushed (hb_sim_advance's, or hbs_reset_state's start); what that
 	 * unit pushed after the sample a seek cut at is kept aside (pend) and
 	 * given back, unchanged, before any further work.
@@ -316,10 +297,6 @@ void
 hbs_chain_gap(const struct hb_sim *s, int i, double t, double *x, double *v);
 void
 hbs_chain_settle(struct hb_sim *s, int i, double t);
-void
-hbs_body_now(const struct body *b, double t, double *y, double *u);
-void
-hbs_body_set(struct body *b, double t, double y, double u);
 
 /*
  * sim_cluster.c: a chain's interfaces in contact, integrated together
@@ -375,25 +352,29 @@ double
 hbs_flight_event(double x, double v, double a);
 
 /*
- * sim_seek.c: hb_sim_seek (a chain's replayed from t = 0 to the unit of
- * work that pushed the sample, the rest of that unit's outputs kept
- * aside); those outputs given back (before any work, a seek or a change of
- * scene); forgotten (a restart).  hbs_reset_state is sim.c's start of a
- * run at t = 0.
+ * sim_pend.c: the outputs of a chain's unit of work after the sample a
+ * seek cut at (sim_seek.c), kept aside; given back (before any work, a
+ * seek or a change of scene); forgotten (a restart).
  */
+int
+hbs_pend_put_aside(struct hb_sim *s, size_t i);
 int
 hbs_pend_flush(struct hb_sim *s);
 void
 hbs_pend_drop(struct hb_sim *s);
+/* sim.c: the run begun at t = 0 (a new simulator, a restart, a chain's replay in sim_seek.c) */
 void
 hbs_reset_state(struct hb_sim *s);
 
-/* sim_branch.c */
+/* sim_branch_log.c: the branches taken, forgotten, cut at sample i, one recorded (-1: no memory) */
 void
 hbs_branches_clear(struct hb_sim *s);
 void
 hbs_branches_cut(struct hb_sim *s, size_t i);
-/* ... whether a chain's run goes on with a new scene (else it restarts); its flying bodies settled at t */
+int
+hbs_branches_push(struct hb_sim *s, const struct hb_branch *b);
+/* sim_chain.c: whether a chain's run goes on with a new scene (else it restarts); its
+ * flying bodies settled at t */
 int
 hbs_chain_continues(const struct hb_sim *s, const struct hb_scene *nsc);
 void
@@ -440,22 +421,21 @@ hbs_unpack(struct hb_sim *s, const struct phase *p, double t, const double *u);
 void
 hbs_pack_sample(const struct hb_sim *s, const struct layout *L, const struct hb_arc_sample *a, double *u);
 
-/* sim_record.c */
+/* sim_end.c: the run failed (status returned), at interface I (a chain's limit), ended at T or J */
 int
 hbs_fail(struct hb_sim *s, int status, const char *why);
-
-/* A failure at interface I (a chain's limit): why, then that interface's state, not s->I's. */
 int
 hbs_fail_iface(struct hb_sim *s, const struct iface *I, int status, const char *why);
-
-int
-hbs_push_sample(struct hb_sim *s, int kind);
-
-int
-hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, double ihi);
-
 void
 hbs_finish_T(struct hb_sim *s);
+void
+hbs_finish_J(struct hb_sim *s);
+
+/* sim_record.c */
+int
+hbs_push_sample(struct hb_sim *s, int kind);
+int
+hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, double ihi);
 
 /* sim_flight.c */
 int

@@ -1,32 +1,10 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
- * sim_record.c - samples, collision records, the jump map g and the ends of a run (see sim.c for the method).
+ * sim_record.c - samples, collision records and the jump map g (see sim.c for the method); how
+ * a run ends: sim_end.c.
  */
 #include "sim_impl.h"
-#include "cnum.h"
-
-int
-hbs_fail(struct hb_sim *s, int status, const char *why)
-{
-	struct iface *I = s->I;
-	s->end = HB_SIM_END_FAIL;
-	cnum_snprintf(s->err, sizeof s->err,
-	         "%s at (t = %.12g s, j = %ld): x = %.6g m, v = %.6g m/s, x_c = %.6g m, q_c = %d",
-	         why, s->t, s->j, I->x, I->v, I->xc, I->q);
-	snprintf(s->endmsg, sizeof s->endmsg, "failed: %s", s->err);
-	return status;
-}
-
-int
-hbs_fail_iface(struct hb_sim *s, const struct iface *I, int status, const char *why)
-{
-	s->end = HB_SIM_END_FAIL;
-	cnum_snprintf(s->err, sizeof s->err,
-	         "%s; interface %d there (j = %ld): x = %.6g m, v = %.6g m/s, x_c = %.6g m, q_c = %d",
-	         why, s->k0 + (int)(I - s->ifc), s->j, I->x, I->v, I->xc, I->q);
-	snprintf(s->endmsg, sizeof s->endmsg, "failed: %s", s->err);
-	return status;
-}
+#include "sim_sample.h"
 
 int
 hbs_push_sample(struct hb_sim *s, int kind)
@@ -50,31 +28,18 @@ hbs_push_sample(struct hb_sim *s, int kind)
 	memset(&a, 0, sizeof a);
 	a.t = s->t;
 	a.j = s->j;
-	a.q = I->q;
 	a.kind = kind;
-	a.x = I->x;
-	a.v = I->v;
 	if (I->q) {
 		phi = watched ? s->w.pf[0] : phi_at(s, I->xc, I->z, I->v);
-		a.xc = I->xc;
-		memcpy(a.z, I->z, sizeof a.z);
 		if (fabs(I->xc) > I->xcmax)
 			I->xcmax = fabs(I->xc);
 		if (-phi > I->Fcmax)
 			I->Fcmax = -phi;
 	}
+	hbs_sample_put(&a, I, s); /* the state (sim_sample.h), extrema updated */
 	a.Fc = -phi;
 	Fer = watched ? s->w.pf[1] : iface_Fer(s, I, s->t);
 	a.Fer = Fer;
-	a.xm = s->xm;
-	a.vm = s->vm;
-	a.W = I->W;
-	a.JFc = I->JFc;
-	a.JFe = I->JFe;
-	a.xcmax = I->xcmax;
-	a.Fcmax = I->Fcmax;
-	a.Ee = I->Ee;
-	a.Wc = I->Wc;
 	a.k = s->k0 + s->ia;
 	if (arc_push(s->arc, &a))
 		return hbs_fail(s, HB_ENOMEM, "out of memory for the arc");
@@ -238,18 +203,7 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 	if ((rc = hbs_push_sample(s, HB_ARC_POST_JUMP)))
 		return rc;
 	s->setup = 1;
-	if (s->j >= s->sc.run.J) {
-		s->end = HB_SIM_END_J;
-		cnum_snprintf(s->endmsg, sizeof s->endmsg,
-		         "jump cap J = %ld reached at t = %.9g s", s->sc.run.J, s->t);
-	}
+	if (s->j >= s->sc.run.J)
+		hbs_finish_J(s);
 	return 0;
-}
-
-void
-hbs_finish_T(struct hb_sim *s)
-{
-	s->end = HB_SIM_END_T;
-	cnum_snprintf(s->endmsg, sizeof s->endmsg, "horizon T = %.9g s reached at j = %ld",
-	         s->sc.run.T, s->j);
 }

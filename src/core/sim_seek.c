@@ -17,7 +17,7 @@
  * it (a flight's, the post-jump sample after the pre-jump one, the end
  * after the last step); those, with the jump record and the collision
  * they come with, are kept aside and given back unchanged before any
- * further work (hbs_pend_flush), so that the run goes on as if it had not
+ * further work (sim_pend.c), so that the run goes on as if it had not
  * been cut.  Until then the arc, the collisions and the end are as at the
  * sample, the simulator's t and j the sample's (hb_sim_body: the bodies at
  * that t on their parabolas); the contact in progress is not reported.
@@ -30,117 +30,9 @@
  * sample cut at may then have a greater index than it had.
  */
 #include "sim_impl.h"
+#include "sim_sample.h"
 
 #include "cnum.h"
-
-void
-hbs_pend_drop(struct hb_sim *s)
-{
-	s->pend.active = 0;
-	s->pend.n = 0;
-}
-
-int
-hbs_pend_flush(struct hb_sim *s)
-{
-	size_t k;
-
-	if (!s->pend.active)
-		return 0;
-	s->pend.active = 0;
-	s->t = s->pend.t;
-	s->j = s->pend.j;
-	for (k = 0; k < s->pend.n; k++) {
-		if (s->pend.has_jump && s->pend.s[k].kind == HB_ARC_POST_JUMP &&
-		    arc_push_jump(s->arc, &s->pend.jr))
-			return hbs_fail(s, HB_ENOMEM, "out of memory for the jump records");
-		if (arc_push(s->arc, &s->pend.s[k]))
-			return hbs_fail(s, HB_ENOMEM, "out of memory for the arc");
-	}
-	if (s->pend.has_col) { /* its row was there: the array has room */
-		s->col[s->ncol++] = s->pend.col;
-		s->ncol_total++;
-	}
-	if (s->pend.tf_row >= 0 && (size_t)s->pend.tf_row < s->ncol)
-		s->col[s->pend.tf_row].tf = s->pend.tf;
-	s->end = s->pend.end;
-	memcpy(s->err, s->pend.err, sizeof s->err);
-	memcpy(s->endmsg, s->pend.endmsg, sizeof s->endmsg);
-	s->pend.n = 0;
-	return 0;
-}
-
-/* Puts the samples after i (all of the last unit of work's) aside, with what they bring. */
-static int
-put_aside(struct hb_sim *s, size_t i)
-{
-	size_t n = hb_arc_len(s->arc), m = n - 1 - i, k;
-	const struct hb_arc_sample *pre = NULL;
-
-	if (m == 0)
-		return 0;
-	if (m > s->pend.cap) {
-		struct hb_arc_sample *p = realloc(s->pend.s, m * sizeof *p);
-
-		if (p == NULL)
-			return HB_ENOMEM;
-		s->pend.s = p;
-		s->pend.cap = m;
-	}
-	s->pend.n = m;
-	s->pend.has_jump = s->pend.has_col = 0;
-	s->pend.tf_row = -1;
-	for (k = 0; k < m; k++) {
-		s->pend.s[k] = *hb_arc_at(s->arc, i + 1 + k);
-		if (s->pend.s[k].kind == HB_ARC_POST_JUMP) {
-			s->pend.has_jump = 1;
-			pre = hb_arc_at(s->arc, i + k);   /* the pre-jump sample before it */
-		}
-	}
-	if (s->pend.has_jump) {
-		size_t nj = hb_arc_njumps(s->arc);
-
-		if (nj == 0 || hb_arc_jump_at(s->arc, nj - 1)->j != pre->j)
-			return HB_EINVAL;
-		s->pend.jr = *hb_arc_jump_at(s->arc, nj - 1);
-		if (s->pend.jr.from_q) {
-			/* the contact that jump ended: its collision was the unit's */
-			if (s->ncol == 0 || s->col[s->ncol - 1].j != pre->j)
-				return HB_EINVAL;
-			s->pend.col = s->col[s->ncol - 1];
-			s->pend.has_col = 1;
-		} else {
-			/* a contact begun: the flight of its interface since its last collision */
-			size_t r = s->ncol;
-
-			while (r > 0 && s->col[r - 1].k != pre->k)
-				r--;
-			if (r > 0 && !isnan(s->col[r - 1].tf)) {
-				s->pend.tf_row = (int)(r - 1);
-				s->pend.tf = s->col[r - 1].tf;
-			}
-		}
-	}
-	/* nothing can fail from here */
-	if (s->pend.has_col) {
-		s->ncol--;
-		s->ncol_total--;
-	}
-	if (s->pend.tf_row >= 0)
-		s->col[s->pend.tf_row].tf = NAN;
-	s->pend.t = s->t;
-	s->pend.j = s->j;
-	s->pend.end = s->end;
-	memcpy(s->pend.err, s->err, sizeof s->err);
-	memcpy(s->pend.endmsg, s->endmsg, sizeof s->endmsg);
-	arc_truncate(s->arc, i + 1);
-	s->t = hb_arc_at(s->arc, i)->t;
-	s->j = hb_arc_at(s->arc, i)->j;
-	s->end = HB_SIM_RUNNING;
-	s->err[0] = s->endmsg[0] = '\0';
-	s->pend.active = 1;
-	return 0;
-}
 
 /* The sample of the last unit of work at (t, j) of this kind; hb_arc_len when none. */
 static size_t
@@ -207,7 +99,7 @@ chain_seek(struct hb_sim *s, size_t i)
 	} else {
 		hbs_branches_cut(s, i); /* a branch after the sample goes with what follows it */
 	}
-	if ((rc = put_aside(s, i)) != 0) {
+	if ((rc = hbs_pend_put_aside(s, i)) != 0) {
 		snprintf(s->err, sizeof s->err, rc == HB_ENOMEM ? "out of memory for a seek"
 		         : "a chain's unit of work has no jump record before its post-jump sample");
 		return rc;
@@ -252,20 +144,7 @@ hb_sim_seek(struct hb_sim *s, size_t i)
 	s->resume_last = i;
 	s->t = a->t;
 	s->j = a->j;
-	I->q = a->q;
-	I->x = a->x;
-	I->v = a->v;
-	I->xc = a->xc;
-	memcpy(I->z, a->z, sizeof I->z);
-	s->xm = a->xm;
-	s->vm = a->vm;
-	I->W = a->W;
-	I->JFc = a->JFc;
-	I->JFe = a->JFe;
-	I->xcmax = a->xcmax;
-	I->Fcmax = a->Fcmax;
-	I->Ee = a->Ee;
-	I->Wc = a->Wc;
+	hbs_sample_get(I, s, a); /* the state the sample holds (sim_sample.h), then what follows from it */
 	I->Wc0 = a->Wc + a->W;
 	I->xe = a->x - a->xc;
 	if (I->q) {
@@ -288,10 +167,7 @@ hb_sim_seek(struct hb_sim *s, size_t i)
 	s->setup = 1;
 	if (s->t >= s->sc.run.T)
 		hbs_finish_T(s);
-	else if (s->j >= s->sc.run.J) {
-		s->end = HB_SIM_END_J;
-		cnum_snprintf(s->endmsg, sizeof s->endmsg, "jump cap J = %ld reached at t = %.9g s",
-		         s->sc.run.J, s->t);
-	}
+	else if (s->j >= s->sc.run.J)
+		hbs_finish_J(s);
 	return 0;
 }
