@@ -17,6 +17,11 @@
  * Exit status: 0 the sweep is complete (points that failed numerically are
  * rows with their message); 1 it could not be completed (I/O, memory, an
  * incomplete merge); 2 bad input (also --merge of a folder without a sweep).
+ *
+ * This file holds the command line: its options, --help, and the order of
+ * what the command does with them (a merge, --emit, or a run).  The input
+ * is read by sweep_input.c, the progress drawn by sweep_progress.c, the
+ * files written named and --plot drawn by sweep_output.c (sweep_cmd.h).
  */
 #include <errno.h>
 #include <signal.h>
@@ -26,24 +31,16 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 #include <unistd.h>
 
-#include "hybounce/atomic.h"
-#include "hybounce/input.h"
-#include "hybounce/outputs.h"
-#include "hybounce/preset.h"
-#include "hybounce/scene.h"
 #include "hybounce/status.h"
 #include "hybounce/sweep.h"
 
 #include "sweep_cli.h"
-#include "plot_cmd.h"
-#include "plot_out.h"
+#include "sweep_cmd.h"
 #include "sweep_hdf5.h"
 #include "report.h"
 #include "signals.h"
-#include "clock.h"
 
 #define PROG "hybounce sweep"
 
@@ -176,260 +173,6 @@ online_cpus(void)
 	long n = sysconf(_SC_NPROCESSORS_ONLN);
 
 	return n < 1 ? 1 : n;
-}
-
-/* ------------------------------------------------------------------ */
-/* Progress                                                            */
-
-struct progress {
-	long resumed, total;   /* points found done at the start, points of the shard */
-	int tty, quiet;
-	double step;       /* fraction between lines without a terminal */
-	double next;       /* next fraction to report */
-	double last_draw;  /* s, for the terminal bar */
-};
-
-static void
-fmt_eta(double s, char *buf, size_t n)
-{
-	long t = (long)(s + 0.5);
-
-	if (s != s || s < 0 || s > 1e8)
-		snprintf(buf, n, "--:--");
-	else if (t >= 3600)
-		snprintf(buf, n, "%ld:%02ld:%02ld", t / 3600, t / 60 % 60, t % 60);
-	else
-		snprintf(buf, n, "%ld:%02ld", t / 60, t % 60);
-}
-
-static void
-on_progress(void *ctx, const struct hb_sweep_progress *p)
-{
-	struct progress *g = ctx;
-	long computed = p->done - p->resumed;
-	double frac = p->total ? (double)p->done / (double)p->total : 1;
-	double rate = p->elapsed > 0 ? (double)computed / p->elapsed : 0;
-	double eta = rate > 0 ? (double)(p->total - p->done) / rate : -1;
-	char e[32];
-
-	if (computed == 0) {
-		g->resumed = p->resumed;
-		g->total = p->total;
-	}
-	if (g->quiet)
-		return;
-	if (computed == 0) {
-		if (p->resumed > 0)
-			fprintf(stderr, "sweep: resuming: %ld of %ld points already done\n",
-			        p->resumed, p->total);
-		return;
-	}
-	fmt_eta(eta, e, sizeof e);
-	if (g->tty) {
-		double now = clock_seconds(CLOCK_MONOTONIC);
-		int w = 30, fill = (int)(frac * w);
-
-		if (p->done < p->total && now - g->last_draw < 0.1)
-			return;
-		g->last_draw = now;
-		fprintf(stderr, "\r[%.*s%*s] %ld/%ld %3.0f%%  %.1f points/s  ETA %s  failed %ld\033[K",
-		        fill, "##############################", w - fill, "", p->done,
-		        p->total, 100 * frac, rate, e, p->failed);
-		if (p->done == p->total)
-			fputc('\n', stderr);
-		return;
-	}
-	if (frac + 1e-12 < g->next && p->done < p->total)
-		return;
-	while (g->next <= frac + 1e-12)
-		g->next += g->step;
-	fprintf(stderr, "sweep: %ld/%ld points (%.0f%%), %.1f points/s, ETA %s, %ld failed\n",
-	        p->done, p->total, 100 * frac, rate, e, p->failed);
-}
-
-/* ------------------------------------------------------------------ */
-/* Output                                                              */
-
-/* How DIR/runs.csv and DIR/collisions.csv will be written (before). */
-struct dir_targets {
-	char path[3][4200];
-	struct hb_atomic_target t[3];
-	int nfiles;    /* 3 with a refined sweep's boundaries.csv */
-};
-
-static void
-probe_dir(const char *dir, struct dir_targets *d, int refined, int hdf5)
-{
-	static const char *const names[2][3] = {
-		{ "runs.csv", "collisions.csv", "boundaries.csv" },
-		{ SWEEP_HDF5_NAME, "boundaries.csv", "" },
-	};
-	char m[256];
-
-	d->nfiles = (hdf5 ? 1 : 2) + refined;
-	for (int k = 0; k < d->nfiles; k++) {
-		snprintf(d->path[k], sizeof d->path[k], "%s/%s", dir, names[hdf5][k]);
-		if (hb_atomic_probe(d->path[k], &d->t[k], m, sizeof m) != HB_OK)
-			memset(&d->t[k], 0, sizeof d->t[k]);
-	}
-}
-
-/*
- * "wrote DIR/runs.csv (replaced the existing file)" ... (outputs.h); a
- * sweep found complete writes nothing: "kept DIR/runs.csv ...".
- */
-static void
-print_wrote_dir(const struct dir_targets *d, int unchanged)
-{
-	for (int k = 0; k < d->nfiles; k++) {
-		if (unchanged) {
-			fprintf(stderr, "kept %s (the sweep was complete)\n", d->path[k]);
-			continue;
-		}
-		cli_print_wrote(d->path[k], &d->t[k]);
-	}
-}
-
-/* ------------------------------------------------------------------ */
-/* --plot FILE: the figure of the sweep in dir (plot_out.h)           */
-
-/* The figure's path, by the output rules, before anything runs: 0, or 2 after saying why. */
-static int
-plot_check(const char *plot, const char *dir)
-{
-	struct plot_out po;
-	struct hb_outputs pol;
-	char m[3][4200], msg[4200];
-
-	hb_outputs_init(&pol);
-	snprintf(m[0], sizeof m[0], "%s/runs.csv", dir);
-	snprintf(m[1], sizeof m[1], "%s/collisions.csv", dir);
-	snprintf(m[2], sizeof m[2], "%s/sweep.preset", dir);
-	hb_outputs_input(&pol, m[0], "the sweep's runs.csv");
-	hb_outputs_input(&pol, m[1], "the sweep's collisions.csv");
-	hb_outputs_input(&pol, m[2], "the sweep's sweep.preset");
-	msg[0] = '\0';
-	if (plot_out_parse(&po, "--plot", plot, msg, sizeof msg) != 0 ||
-	    plot_out_register(&po, &pol, msg, sizeof msg) != 0)
-		return bad("%s", msg);
-	return 0;
-}
-
-/* Draws the sweep in dir to plot: 0, or 2 after saying why. */
-static int
-plot_draw_dir(const char *plot, const char *dir)
-{
-	struct plot_out po;
-	struct hb_outputs pol;
-	struct plot_figure *fig = malloc(sizeof *fig);
-	char msg[4200];
-	int status = 0;
-
-	if (fig == NULL)
-		return bad("--plot %s: out of memory", plot);
-	hb_outputs_init(&pol);
-	msg[0] = '\0';
-	if (plot_out_parse(&po, "--plot", plot, msg, sizeof msg) != 0) {
-		free(fig);
-		return bad("%s", msg);
-	}
-	if (plot_build_sweep(fig, dir, NULL, NULL, 0, 252, -1, &pol, msg, sizeof msg) != 0) {
-		free(fig);
-		return bad("--plot %s: %s", plot, msg);
-	}
-	if (plot_out_register(&po, &pol, msg, sizeof msg) != 0 ||
-	    plot_out_write(&po, &pol, fig, msg, sizeof msg) != 0)
-		status = bad("%s", msg);
-	plot_figure_free(fig);
-	free(fig);
-	return status;
-}
-
-/* ------------------------------------------------------------------ */
-/* Input                                                               */
-
-/*
- * The preset, the --set values and the axes; NULL after printing why (exit
- * 2).  check: every point's scene checked now (--emit, which writes jobs
- * and runs none); a sweep that runs checks each point once, in its run
- * (hb_sim_new), and is refused with the same message.
- */
-static struct hb_sweep *
-build(const char *preset, const char *const *sets, int nsets,
-      const char *const *varies, int nvaries, const char *out, long max_points,
-      const char *refine, int error, int check)
-{
-	char path[4096], spec[4200], msg[4096], more[128];
-	struct hb_scene sc;
-	struct hb_sweep *sw;
-	char *text = NULL;
-
-	msg[0] = '\0';
-	/* Read once (a pipe or FIFO works), bounded; the scene and the axes come from it. */
-	if (hb_preset_open_text(preset, sets, nsets, &sc, path, sizeof path, &text, msg,
-	                        sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": %s\n", msg[0] ? msg : preset);
-		return NULL;
-	}
-	sw = hb_sweep_new(&sc, msg, sizeof msg);
-	if (sw == NULL) {
-		fprintf(stderr, PROG ": %s\n", msg);
-		free(text);
-		return NULL;
-	}
-	/*
-	 * Work bounded: at most max_points unless asked for.  The folder's own
-	 * sweep.preset (a shard of --emit, a resume) was allowed when it was made.
-	 */
-	snprintf(spec, sizeof spec, "%s/sweep.preset", out);
-	if (max_points == 0 && hb_outputs_same_file(path, spec))
-		max_points = 1000000000L;
-	snprintf(more, sizeof more, "--max-points N allows up to N (at most 1000000000)");
-	hb_sweep_set_max_points(sw, max_points ? max_points : HB_SWEEP_MAX_POINTS, more);
-	msg[0] = '\0';
-	if (hb_sweep_vary_from_preset(sw, text, path, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": %s\n", msg);
-		free(text);
-		hb_sweep_free(sw);
-		return NULL;
-	}
-	for (int i = 0; i < nvaries; i++) {
-		msg[0] = '\0';
-		if (hb_sweep_vary(sw, varies[i], msg, sizeof msg) != HB_OK) {
-			fprintf(stderr, PROG ": %s\n", msg);
-			free(text);
-			hb_sweep_free(sw);
-			return NULL;
-		}
-	}
-	/* --error: the command line's, or the preset's line */
-	hb_sweep_error_from_preset(sw, text);
-	if (error)
-		hb_sweep_set_error(sw, 1);
-	/* --refine after every axis: the command line's, else the preset's line */
-	msg[0] = '\0';
-	if (hb_sweep_npoints(sw) > 0 &&
-	    (refine != NULL ? hb_sweep_refine(sw, refine, msg, sizeof msg)
-	                    : hb_sweep_refine_from_preset(sw, text, path, msg, sizeof msg)) != HB_OK) {
-		fprintf(stderr, PROG ": %s\n", msg);
-		free(text);
-		hb_sweep_free(sw);
-		return NULL;
-	}
-	free(text);
-	if (hb_sweep_npoints(sw) == 0) {
-		bad("nothing to vary: expected --vary KEY=SPEC (e.g. --vary "
-		    "law.c=1e8:1e10:20:log), or a preset with '; sweep: --vary' lines");
-		hb_sweep_free(sw);
-		return NULL;
-	}
-	msg[0] = '\0';
-	if (check && hb_sweep_check(sw, msg, sizeof msg) != HB_OK) {
-		fprintf(stderr, PROG ": %s\n", msg);
-		hb_sweep_free(sw);
-		return NULL;
-	}
-	return sw;
 }
 
 int
@@ -587,11 +330,11 @@ sweep_main(int argc, char **argv)
 			             "--shards N, --format, --plot FILE and --quiet");
 			goto done;
 		}
-		if (plot != NULL && plot_check(plot, merge) != 0)
+		if (plot != NULL && sweep_plot_check(plot, merge) != 0)
 			goto done;   /* exit 2 */
-		struct dir_targets dt;
+		struct sweep_dir_targets dt;
 
-		probe_dir(merge, &dt, 0, hdf5);
+		sweep_probe_dir(merge, &dt, 0, hdf5);
 		msg[0] = '\0';
 		if (hdf5 && (h5 = sweep_hdf5_new(merge, msg, sizeof msg)) == NULL) {
 			fprintf(stderr, PROG ": %s\n", msg);
@@ -619,8 +362,8 @@ sweep_main(int argc, char **argv)
 			goto done;
 		}
 		if (!quiet)
-			print_wrote_dir(&dt, 0);
-		status = plot != NULL ? plot_draw_dir(plot, merge) : 0;
+			sweep_print_wrote_dir(&dt, 0);
+		status = plot != NULL ? sweep_plot_draw(plot, merge) : 0;
 		goto done;
 	}
 	if (optind >= argc) {
@@ -649,7 +392,7 @@ sweep_main(int argc, char **argv)
 		               "(--merge DIR --plot FILE)");
 		goto done;
 	}
-	if (plot != NULL && plot_check(plot, out) != 0)
+	if (plot != NULL && sweep_plot_check(plot, out) != 0)
 		goto done;   /* exit 2 */
 	if (emit != NULL && slurm_opt != NULL && strcmp(emit, "slurm") != 0) {
 		status = bad("--emit %s: %s goes with --emit slurm", emit, slurm_opt);
@@ -661,8 +404,8 @@ sweep_main(int argc, char **argv)
 		             : "--sshlogin goes with --emit parallel");
 		goto done;
 	}
-	sw = build(argv[optind], sets, nsets, varies, nvaries, out, max_points, refine, error,
-	           emit != NULL);
+	sw = sweep_build(argv[optind], sets, nsets, varies, nvaries, out, max_points, refine,
+	                 error, emit != NULL);
 	if (sw == NULL)
 		goto done;      /* exit 2: build said why */
 	if (hb_sweep_refined(sw) && (emit != NULL || shard_n > 1)) {
@@ -694,10 +437,10 @@ sweep_main(int argc, char **argv)
 	}
 
 	{
-		struct progress g = { 0 };
+		struct sweep_progress g = { 0 };
 		struct hb_sweep_options o = { 0 };
 		struct hb_sweep_refine_stats rs = { 0 };
-		struct dir_targets dt;
+		struct sweep_dir_targets dt;
 
 		g.tty = isatty(STDERR_FILENO);
 		g.quiet = quiet;
@@ -707,7 +450,7 @@ sweep_main(int argc, char **argv)
 		o.jobs = (int)(jobs ? jobs : online_cpus());
 		o.shard_k = shard_k;
 		o.shard_n = shard_n;
-		o.progress = on_progress;
+		o.progress = sweep_on_progress;
 		o.ctx = &g;
 		o.provenance = cli_provenance();
 		o.refine_stats = &rs;
@@ -715,7 +458,7 @@ sweep_main(int argc, char **argv)
 		 * journaled, exit 128 + N (signals.h). */
 		cli_signals_watch();
 		o.cancel = &cli_signal;
-		probe_dir(out, &dt, hb_sweep_refined(sw), hdf5);
+		sweep_probe_dir(out, &dt, hb_sweep_refined(sw), hdf5);
 		msg[0] = '\0';
 		if (hdf5 && (h5 = sweep_hdf5_new(out, msg, sizeof msg)) == NULL) {
 			fprintf(stderr, PROG ": %s\n", msg);
@@ -743,12 +486,12 @@ sweep_main(int argc, char **argv)
 				fprintf(stderr, "sweep: shard %ld of %ld done in %s; merge the shards "
 				        "with: hybounce sweep --merge %s\n", shard_k, shard_n, out, out);
 			else
-				print_wrote_dir(&dt, g.total > 0 && g.resumed == g.total);
+				sweep_print_wrote_dir(&dt, g.total > 0 && g.resumed == g.total);
 			if (rs.runs > 0)
 				sweep_refine_summary(stderr, sw, &rs);
 		}
 		if (status == HB_OK && plot != NULL)
-			status = plot_draw_dir(plot, out);
+			status = sweep_plot_draw(plot, out);
 	}
 done:
 	sweep_hdf5_free(h5);

@@ -2,8 +2,10 @@
 /*
  * scene.c - the applied loads of a scene and their closed forms (see
  * scene.h).  The scene's defaults and derived values are in
- * scene_defaults.c, its keys in scene_keys.c (table, typed access),
- * scene_set.c (reading a value), scene_validate.c and scene_panel.c.
+ * scene_defaults.c, its keys in scene_keys.c (table), scene_keys_text.c
+ * (a value as text), scene_keyinfo.c (typed access), scene_error.c (errors
+ * as data), scene_set.c (reading a value), scene_validate.c and
+ * scene_panel.c.
  *
  * Loads (paper, second study, eqs. ramp .. u_2), generalised by constant
  * forces F1, F2 and gravity g along -n1:
