@@ -206,7 +206,6 @@ batch_run(const struct batch_options *o)
 {
 	struct hb_scene sc;
 	char path[1024], msg[4096]; /* the resolver names a refused preset whole */
-	struct hb_collision live;
 	struct hb_sim *s;
 	struct hb_csv_export_opts eo = { 0 };
 	struct plot_out po;
@@ -214,7 +213,7 @@ batch_run(const struct batch_options *o)
 	struct hb_error_estimate est_store, *est = NULL;
 	struct hb_branch *br = NULL;
 	size_t nbr = 0;
-	int status = 0, have_live, rc, sig = 0;
+	int status = 0, rc, sig = 0;
 	const int trace_out = is_stdout(o->trace), coll_out = is_stdout(o->collisions);
 	/* The files to export; "-" goes to stdout after them. */
 	const char *trace_file = trace_out ? NULL : o->trace;
@@ -326,7 +325,6 @@ batch_run(const struct batch_options *o)
 	}
 
 	/* The header comes after the run: the tolerance scales are set per contact. */
-	have_live = hb_sim_contact_live(s, &live);
 	if (!o->quiet) {
 		/* the scene from t = 0, then where the branches the preset records begin */
 		batch_print_header(out, o->preset, path, hb_sim_scene0(s), hb_sim_stats(s));
@@ -337,7 +335,7 @@ batch_run(const struct batch_options *o)
 			        "[branch %zu]\n", k + 1, batch_fmt(hb_sim_branch_get(s, k)->t,
 			        hb_unit_time, tb, sizeof tb), hb_sim_branch_get(s, k)->j, k + 1);
 		}
-		batch_print_table(out, s, have_live ? &live : NULL, est);
+		batch_print_table(out, s, est);
 	}
 	if (o->jumps)
 		batch_print_jumps(out, hb_sim_arc(s));

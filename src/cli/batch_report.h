@@ -43,13 +43,12 @@ batch_print_header(FILE *out, const char *preset, const char *path,
                    const struct hb_scene *sc, const struct hb_sim_stats *st);
 
 /*
- * The table of s's completed collisions and, below a rule, the contact in
- * progress (live may be NULL); with est (--error), the error bars of each
- * value after it.
+ * The table of s's completed collisions and, below a rule, the contacts in
+ * progress (a chain's side by side, by increasing interface); with est
+ * (--error), the error bars of each value after it.
  */
 void
-batch_print_table(FILE *out, const struct hb_sim *s, const struct hb_collision *live,
-                  const struct hb_error_estimate *est);
+batch_print_table(FILE *out, const struct hb_sim *s, const struct hb_error_estimate *est);
 
 /* --jumps: the location record of every jump of the arc a. */
 void

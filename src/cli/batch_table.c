@@ -151,17 +151,27 @@ col_head(const struct col *c, char *buf, size_t n)
 
 /*
  * Prints the table of the completed collisions and, below a rule, the
- * contact in progress (live may be NULL).
+ * contacts in progress (a chain's interfaces may be in contact side by
+ * side), by increasing interface.
  */
 static void print_error_table(FILE *out, const struct hb_sim *s, const struct col *cols,
                               int ncols, const struct hb_error_estimate *est);
 
+/* Row r: completed collision r, then the contacts in progress (in *live); NULL past them. */
+static const struct hb_collision *
+row(const struct hb_sim *s, size_t r, size_t nc, struct hb_collision *live)
+{
+	if (r < nc)
+		return hb_sim_collision(s, r);
+	return hb_sim_contact_live_nth(s, r - nc, live) ? live : NULL;
+}
+
 void
-batch_print_table(FILE *out, const struct hb_sim *s, const struct hb_collision *live,
-            const struct hb_error_estimate *est)
+batch_print_table(FILE *out, const struct hb_sim *s, const struct hb_error_estimate *est)
 {
 	struct col cols[NCOLS_MAX];
-	size_t nc = hb_sim_ncollisions(s), r;
+	size_t nc = hb_sim_ncollisions(s), nlive = hb_sim_contacts_live(s), r;
+	struct hb_collision live;
 	char buf[64];
 	int c, w;
 	const int ncols = cols_from_table(cols, hb_sim_scene(s)->chain.n > 0);
@@ -169,12 +179,12 @@ batch_print_table(FILE *out, const struct hb_sim *s, const struct hb_collision *
 	for (c = 0; c < ncols; c++) {
 		double mag = 0;
 
-		/* Units from the completed collisions; the live row only when alone. */
-		for (r = 0; r <= nc; r++) {
-			const struct hb_collision *k = r < nc ? hb_sim_collision(s, r) : live;
+		/* Units from the completed collisions; the live rows only when alone. */
+		for (r = 0; r < nc + nlive; r++) {
+			const struct hb_collision *k = row(s, r, nc, &live);
 			double v;
 
-			if (k == NULL || col_whole(&cols[c]) || (r == nc && nc > 0))
+			if (k == NULL || col_whole(&cols[c]) || (r >= nc && nc > 0))
 				continue;
 			v = fabs(col_get(&cols[c], k));
 			if (isfinite(v) && v > mag)
@@ -184,8 +194,8 @@ batch_print_table(FILE *out, const struct hb_sim *s, const struct hb_collision *
 			col_choose(&cols[c], mag);
 		col_head(&cols[c], buf, sizeof buf);
 		w = (int)strlen(buf);
-		for (r = 0; r <= nc; r++) {
-			const struct hb_collision *k = r < nc ? hb_sim_collision(s, r) : live;
+		for (r = 0; r < nc + nlive; r++) {
+			const struct hb_collision *k = row(s, r, nc, &live);
 
 			if (k == NULL)
 				continue;
@@ -206,19 +216,17 @@ batch_print_table(FILE *out, const struct hb_sim *s, const struct hb_collision *
 		fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 	}
 	fprintf(out, "\n");
-	for (r = 0; r < nc; r++) {
-		const struct hb_collision *k = hb_sim_collision(s, r);
+	for (r = 0; r < nc + nlive; r++) {
+		const struct hb_collision *k = row(s, r, nc, &live);
 
+		if (k == NULL)
+			break;
+		if (r == nc && nlive == 1)
+			fprintf(out, "contact in progress (values so far; t_s is the last sample):\n");
+		else if (r == nc)
+			fprintf(out, "contacts in progress, %zu (values so far; t_s is the last sample):\n", nlive);
 		for (c = 0; c < ncols; c++) {
 			col_cell(&cols[c], k, buf, sizeof buf);
-			fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
-		}
-		fprintf(out, "\n");
-	}
-	if (live != NULL) {
-		fprintf(out, "contact in progress (values so far; t_s is the last sample):\n");
-		for (c = 0; c < ncols; c++) {
-			col_cell(&cols[c], live, buf, sizeof buf);
 			fprintf(out, "%s%*s", c ? "  " : "", cols[c].width, buf);
 		}
 		fprintf(out, "\n");

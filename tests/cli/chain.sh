@@ -4,8 +4,8 @@
 # body's velocity and kinetic energy and the chain's totals (Newton's cradle
 # of three: the bottom ball leaves with the striker's velocity, or most of it
 # when the balls touch), --set reaches the chain keys, --check passes,
-# several contacts at once run together, the model's limits stop the run (or
-# are noted), and what a chain cannot run yet is refused with the key named.
+# several contacts at once run together (and a cut lists those in progress),
+# the model's limits stop the run (or are noted), and what a chain cannot run yet is refused with the key named.
 . "$(dirname "$0")/common.inc"
 . "$(dirname "$0")/../chain.inc"
 
@@ -273,6 +273,16 @@ if "$BIN" --batch stacked-drop --set run.T=0.63 >"$T/out" 2>&1 && grep -q 'leavi
 	ok "leaving on a floor: both balls just after the stacked drop's bounce, the tennis ball alone at 3 s"
 else
 	notok "leaving on a floor: both balls just after the stacked drop's bounce, the tennis ball alone at 3 s" "$T/out"
+fi
+
+# cut while three interfaces are in contact side by side: the table lists the three
+# contacts in progress by increasing k
+if "$BIN" --batch newtons-cradle-5 --set run.T=1.002ms >"$T/out" 2>&1 &&
+    grep -q '^contacts in progress, 3 (values so far; t_s is the last sample):$' "$T/out" &&
+    [ "$(sed -n '/^contacts in progress/,/^$/p' "$T/out" | awk 'NF > 2 && $1 ~ /^[0-9]+$/ { print $1 "/" $2 }' | tr '\n' ' ')" = "0/2 1/3 2/4 " ]; then
+	ok "a cradle cut at 1.002 ms: three contacts in progress, k 2, 3, 4"
+else
+	notok "a cradle cut at 1.002 ms: three contacts in progress, k 2, 3, 4" "$T/out"
 fi
 
 # a long touching chain: 301 beads, the wave run past the chain's end (gaps are
