@@ -19,7 +19,9 @@ hbs_cluster_restep(struct hb_sim *s, double h)
 
 	memcpy(c->u1, c->u0, (size_t)c->dim * sizeof(double));
 	gsl_odeiv2_step_reset(c->loc);
-	return gsl_odeiv2_step_apply(c->loc, c->t0, h, c->u1, c->yerr, NULL, NULL, &c->sys);
+	/* the step's own slope at the start, where known (the re-steps' type is the step's) */
+	return gsl_odeiv2_step_apply(c->loc, c->t0, h, c->u1, c->yerr,
+	                             known_at(&c->known, c->t0, c->u0), NULL, &c->sys);
 }
 
 /*
@@ -79,8 +81,9 @@ cfun_value(double h, void *ctx)
 
 /*
  * The derivatives at the step's start and at (t0 + hend, the state u) for
- * the Hermite guide, computed once a step (and once more for another
- * end: a limit located after an event's point): 0, or the rhs' error.
+ * the Hermite guide, once a step (and once more for another end: a limit
+ * located after an event's point), evaluated where the step has not
+ * evaluated them already: 0, or the rhs' error.
  */
 static int
 hermite_setup(struct hb_sim *s, double hend)
@@ -89,13 +92,13 @@ hermite_setup(struct hb_sim *s, double hend)
 	int rc;
 
 	if (!c->hd0) {
-		if ((rc = hbs_cluster_rhs(c->t0, c->u0, c->d0, s)) != GSL_SUCCESS)
+		if ((rc = known_eval(&c->known, &c->sys, c->t0, c->u0, c->d0)) != GSL_SUCCESS)
 			return rc;
 		c->hd0 = 1;
 	}
 	if (!(c->hh == hend)) {
 		c->hh = NAN;
-		if ((rc = hbs_cluster_rhs(c->t0 + hend, c->u, c->d1, s)) != GSL_SUCCESS)
+		if ((rc = known_eval(&c->known, &c->sys, c->t0 + hend, c->u, c->d1)) != GSL_SUCCESS)
 			return rc;
 		c->hh = hend;
 	}
