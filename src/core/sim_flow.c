@@ -46,7 +46,8 @@ hbs_evolve(struct hb_sim *s, struct known_f *k, gsl_odeiv2_evolve *e, gsl_odeiv2
            double *t, double *h, double *u, double *H)
 {
 	size_t n = sys->dimension, i;
-	int rc, tries = 0, ok;
+	int rc, tries = 0;
+	double fin;
 
 	for (;;) {
 		unsigned long failed0 = e->failed_steps;
@@ -60,9 +61,10 @@ hbs_evolve(struct hb_sim *s, struct known_f *k, gsl_odeiv2_evolve *e, gsl_odeiv2
 			return hbs_fail(s, HB_ENUMERIC, rc == GSL_EBADFUNC ? "the flow function failed"
 			                : "no acceptable step could be made (step size underflow)");
 		}
-		for (ok = 1, i = 0; i < n; i++)
-			ok &= isfinite(u[i]);
-		if (ok)
+		/* 0 x u is 0 where u is finite, NaN where it is not: the sum is 0 where all are */
+		for (fin = 0.0, i = 0; i < n; i++)
+			fin += 0.0 * u[i];
+		if (fin == 0.0)
 			break;
 		memcpy(u, u0, n * sizeof *u);
 		*t = t0;
