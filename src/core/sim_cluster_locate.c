@@ -113,7 +113,8 @@ hermite_setup(struct hb_sim *s, double hend)
  * pair's) down to a few ulps of t (the stalls of Brent's method closed for
  * every kind of function), into *hb; the evaluations into *iters.  An
  * event (and a limit) is first found on the step's cubic Hermite
- * interpolant (two evaluations of f a step), as the pair's under a GSL
+ * interpolant (its slopes at the step's ends, the step's own where it
+ * evaluated them, known.h, else evaluated), as the pair's under a GSL
  * stepper (sim_locate.c, locate_on_steps); kinks and extrema are not (on
  * the BWMCL cradle that took 11% more evaluations: a switching function
  * zero to rounding over a band sends the guide astray).  The clusters'

@@ -78,7 +78,7 @@ restep_n(struct hb_sim *s, double h, double *u, int n)
 			return 0;
 		}
 	memcpy(u, s->u0, sizeof s->u0);
-	/* (GSL's rk8pd keeps nothing from one step to the next: its apply evaluates f at the start) */
+	/* (rk8pd keeps nothing from one step to the next: nothing to reset) */
 	if (p->loc->s->type != hb_step_rk8pd)
 		gsl_odeiv2_step_reset(p->loc->s);
 	/* the step's own slope at the start, where known (its type takes it as f there) */
