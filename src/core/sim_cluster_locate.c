@@ -11,17 +11,38 @@
 
 #include "sim_impl.h"
 
-/* The state one step of length h from (t0, u0): into c->u1. */
+/*
+ * The state one step of length h from (t0, u0): into c->u1.  The last
+ * CCACHE of the step are kept: the location of each function that
+ * crossed re-steps to the step's end, and often to the same points as
+ * another's.
+ */
 int
 hbs_cluster_restep(struct hb_sim *s, double h)
 {
 	struct clusters *c = &s->cx;
+	size_t n = (size_t)c->dim;
+	int i, rc;
 
-	memcpy(c->u1, c->u0, (size_t)c->dim * sizeof(double));
+	for (i = 0; i < c->nrs; i++)
+		if (c->rsh[i] == h) {
+			memcpy(c->u1, c->rsu + (size_t)i * n, n * sizeof(double));
+			return GSL_SUCCESS;
+		}
+	memcpy(c->u1, c->u0, n * sizeof(double));
 	gsl_odeiv2_step_reset(c->loc);
 	/* the step's own slope at the start, where known (the re-steps' type is the step's) */
-	return gsl_odeiv2_step_apply(c->loc, c->t0, h, c->u1, c->yerr,
-	                             known_at(&c->known, c->t0, c->u0), NULL, &c->sys);
+	rc = gsl_odeiv2_step_apply(c->loc, c->t0, h, c->u1, c->yerr, known_at(&c->known, c->t0, c->u0),
+	                           NULL, &c->sys);
+	if (rc != GSL_SUCCESS)
+		return rc;
+	i = c->rsnext;
+	c->rsnext = (c->rsnext + 1) % CCACHE;
+	if (c->nrs < CCACHE)
+		c->nrs++;
+	c->rsh[i] = h;
+	memcpy(c->rsu + (size_t)i * n, c->u1, n * sizeof(double));
+	return GSL_SUCCESS;
 }
 
 /*

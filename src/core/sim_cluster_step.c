@@ -41,6 +41,13 @@ alloc_ode(struct hb_sim *s, int n)
 				return HB_ENOMEM;
 			*arr[i] = q;
 		}
+		{
+			double *q = realloc(c->rsu, (size_t)CCACHE * (size_t)m * sizeof(double));
+
+			if (q == NULL)
+				return HB_ENOMEM;
+			c->rsu = q;
+		}
 		c->capdim = m;
 	}
 	if (c->built_dim == n && c->built_stepper == st && c->step != NULL) {
@@ -385,6 +392,7 @@ hbs_cluster_step(struct hb_sim *s)
 	c->t0 = t;
 	c->hd0 = 0;
 	c->hh = NAN;
+	c->nrs = c->rsnext = 0;
 	if ((rc = hbs_evolve(s, &c->known, c->ev, c->ctl, c->step, &c->sys, c->t0, c->u0, t1, &t, &c->h,
 	                     c->u, &c->H)))
 		return rc;

@@ -37,6 +37,7 @@ enum {
 	MAXDIM = 11,           /* x, v, x_c, z1, z2, W, JFc, JFe, E_e, x_m, v_m */
 	MAXFUN = HB_LAW_MAX_KINKS + 3,
 	CACHE = 96,
+	CCACHE = 16,           /* re-steps of a chain's step kept */
 	FLIGHT_SAMPLES = 48,   /* samples drawn along a closed-form flight, for plots */
 	MAX_BRENT = 100,
 	MAX_RETRY = 60,        /* retries of a step that produced a non-finite state */
@@ -162,6 +163,8 @@ struct clusters {
 	double *d0, *d1;        /* the derivatives at the step's start and at its end hh (the Hermite guide) */
 	int hd0;                /* 1: d0 is the current step's */
 	double hh;              /* the end d1 is at (NAN: none) */
+	double *rsu, rsh[CCACHE]; /* the step's re-steps kept (CCACHE states of capdim) and their h */
+	int nrs, rsnext;        /* ... how many, the next to replace */
 	struct known_f known;   /* f where ev's steps have evaluated it (known.h) */
 	double tfree;           /* the earliest closing of a gap between two flying bodies */
 	int ifree;              /* ... its interface (index), -1: none */
