@@ -226,8 +226,8 @@ numeric_step(struct hb_sim *s)
 	s->t0 = t;
 	s->hug = hbs_hugging(s, s->u0);
 	set_mode(s);
-	if ((rc = hbs_evolve(s, p->d->e, p->d->c, p->d->s, &p->sys, s->t0, s->u0, t1, &t, &s->h, s->u,
-	                     &s->H)))
+	if ((rc = hbs_evolve(s, &p->known, p->d->e, p->d->c, p->d->s, &p->sys, s->t0, s->u0, t1, &t,
+	                     &s->h, s->u, &s->H)))
 		return rc;
 	if (s->first && t < t1) /* the step this interval's start took, in units of Tc */
 		s->h1[p->q] = s->H / s->Tc;

@@ -104,6 +104,7 @@ hbs_cluster_free(struct hb_sim *s)
 	free(c->yerr);
 	free(c->d0);
 	free(c->d1);
+	free(c->rsu);
 	free(c->f0);
 	free(c->f1);
 	free(c->fe);

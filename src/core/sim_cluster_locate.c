@@ -11,15 +11,38 @@
 
 #include "sim_impl.h"
 
-/* The state one step of length h from (t0, u0): into c->u1. */
+/*
+ * The state one step of length h from (t0, u0): into c->u1.  The last
+ * CCACHE of the step are kept: the location of each function that
+ * crossed re-steps to the step's end, and often to the same points as
+ * another's.
+ */
 int
 hbs_cluster_restep(struct hb_sim *s, double h)
 {
 	struct clusters *c = &s->cx;
+	size_t n = (size_t)c->dim;
+	int i, rc;
 
-	memcpy(c->u1, c->u0, (size_t)c->dim * sizeof(double));
+	for (i = 0; i < c->nrs; i++)
+		if (c->rsh[i] == h) {
+			memcpy(c->u1, c->rsu + (size_t)i * n, n * sizeof(double));
+			return GSL_SUCCESS;
+		}
+	memcpy(c->u1, c->u0, n * sizeof(double));
 	gsl_odeiv2_step_reset(c->loc);
-	return gsl_odeiv2_step_apply(c->loc, c->t0, h, c->u1, c->yerr, NULL, NULL, &c->sys);
+	/* the step's own slope at the start, where known (the re-steps' type is the step's) */
+	rc = gsl_odeiv2_step_apply(c->loc, c->t0, h, c->u1, c->yerr, known_at(&c->known, c->t0, c->u0),
+	                           NULL, &c->sys);
+	if (rc != GSL_SUCCESS)
+		return rc;
+	i = c->rsnext;
+	c->rsnext = (c->rsnext + 1) % CCACHE;
+	if (c->nrs < CCACHE)
+		c->nrs++;
+	c->rsh[i] = h;
+	memcpy(c->rsu + (size_t)i * n, c->u1, n * sizeof(double));
+	return GSL_SUCCESS;
 }
 
 /*
@@ -79,8 +102,9 @@ cfun_value(double h, void *ctx)
 
 /*
  * The derivatives at the step's start and at (t0 + hend, the state u) for
- * the Hermite guide, computed once a step (and once more for another
- * end: a limit located after an event's point): 0, or the rhs' error.
+ * the Hermite guide, once a step (and once more for another end: a limit
+ * located after an event's point), evaluated where the step has not
+ * evaluated them already: 0, or the rhs' error.
  */
 static int
 hermite_setup(struct hb_sim *s, double hend)
@@ -89,13 +113,13 @@ hermite_setup(struct hb_sim *s, double hend)
 	int rc;
 
 	if (!c->hd0) {
-		if ((rc = hbs_cluster_rhs(c->t0, c->u0, c->d0, s)) != GSL_SUCCESS)
+		if ((rc = known_eval(&c->known, &c->sys, c->t0, c->u0, c->d0)) != GSL_SUCCESS)
 			return rc;
 		c->hd0 = 1;
 	}
 	if (!(c->hh == hend)) {
 		c->hh = NAN;
-		if ((rc = hbs_cluster_rhs(c->t0 + hend, c->u, c->d1, s)) != GSL_SUCCESS)
+		if ((rc = known_eval(&c->known, &c->sys, c->t0 + hend, c->u, c->d1)) != GSL_SUCCESS)
 			return rc;
 		c->hh = hend;
 	}
@@ -110,7 +134,8 @@ hermite_setup(struct hb_sim *s, double hend)
  * pair's) down to a few ulps of t (the stalls of Brent's method closed for
  * every kind of function), into *hb; the evaluations into *iters.  An
  * event (and a limit) is first found on the step's cubic Hermite
- * interpolant (two evaluations of f a step), as the pair's under a GSL
+ * interpolant (its slopes at the step's ends, the step's own where it
+ * evaluated them, known.h, else evaluated), as the pair's under a GSL
  * stepper (sim_locate.c, locate_on_steps); kinks and extrema are not (on
  * the BWMCL cradle that took 11% more evaluations: a switching function
  * zero to rounding over a band sends the guide astray).  The clusters'

@@ -41,6 +41,13 @@ alloc_ode(struct hb_sim *s, int n)
 				return HB_ENOMEM;
 			*arr[i] = q;
 		}
+		{
+			double *q = realloc(c->rsu, (size_t)CCACHE * (size_t)m * sizeof(double));
+
+			if (q == NULL)
+				return HB_ENOMEM;
+			c->rsu = q;
+		}
 		c->capdim = m;
 	}
 	if (c->built_dim == n && c->built_stepper == st && c->step != NULL) {
@@ -65,6 +72,7 @@ alloc_ode(struct hb_sim *s, int n)
 		return HB_ENOMEM;
 	}
 	c->sys = (gsl_odeiv2_system){ hbs_cluster_rhs, hbs_cluster_jacobian, (size_t)n, s };
+	known_init(&c->known, c->ev, c->step);
 	c->built_dim = n;
 	c->built_stepper = st;
 	return 0;
@@ -120,6 +128,7 @@ cscales(struct hb_sim *s)
 		c->scale[i] = pow2(c->scale[i]);
 		c->iscale[i] = 1.0 / c->scale[i];
 	}
+	known_forget(&c->known); /* f of the scaled variables */
 }
 
 /*
@@ -383,7 +392,9 @@ hbs_cluster_step(struct hb_sim *s)
 	c->t0 = t;
 	c->hd0 = 0;
 	c->hh = NAN;
-	if ((rc = hbs_evolve(s, c->ev, c->ctl, c->step, &c->sys, c->t0, c->u0, t1, &t, &c->h, c->u, &c->H)))
+	c->nrs = c->rsnext = 0;
+	if ((rc = hbs_evolve(s, &c->known, c->ev, c->ctl, c->step, &c->sys, c->t0, c->u0, t1, &t, &c->h,
+	                     c->u, &c->H)))
 		return rc;
 	/* the watched functions at the step's end against its start: the earliest crossing */
 	{

@@ -34,32 +34,37 @@ hbs_stepper_type(int stepper)
 /*
  * One accepted step of GSL's evolver from (t0, u0) towards t1, for both
  * integrators: the state into (*t, u), the step's length into *H, the
- * rejections counted.  A step whose accepted state is not finite is
- * taken again, a quarter as long, with the stepper's memory cleared
- * (never let a NaN error norm pass as small); a run of steps at the
- * resolution of t fails.  0, or hbs_fail's status with u = u0.
+ * rejections counted; what the step evaluated of f kept in k (known.h).
+ * A step whose accepted state is not finite is taken again, a quarter as
+ * long, with the stepper's memory cleared (never let a NaN error norm pass
+ * as small); a run of steps at the resolution of t fails.  0, or
+ * hbs_fail's status with u = u0.
  */
 int
-hbs_evolve(struct hb_sim *s, gsl_odeiv2_evolve *e, gsl_odeiv2_control *c, gsl_odeiv2_step *st,
-           const gsl_odeiv2_system *sys, double t0, const double *u0, double t1, double *t, double *h,
-           double *u, double *H)
+hbs_evolve(struct hb_sim *s, struct known_f *k, gsl_odeiv2_evolve *e, gsl_odeiv2_control *c,
+           gsl_odeiv2_step *st, const gsl_odeiv2_system *sys, double t0, const double *u0, double t1,
+           double *t, double *h, double *u, double *H)
 {
 	size_t n = sys->dimension, i;
-	int rc, tries = 0, ok;
+	int rc, tries = 0;
+	double fin;
 
 	for (;;) {
 		unsigned long failed0 = e->failed_steps;
 
 		rc = gsl_odeiv2_evolve_apply(e, c, st, sys, t, t1, h, u);
+		if (rc == GSL_SUCCESS)
+			known_keep(k, t0);
 		s->st.rejected += (long)(e->failed_steps - failed0);
 		if (rc != GSL_SUCCESS) {
 			memcpy(u, u0, n * sizeof *u);
 			return hbs_fail(s, HB_ENUMERIC, rc == GSL_EBADFUNC ? "the flow function failed"
 			                : "no acceptable step could be made (step size underflow)");
 		}
-		for (ok = 1, i = 0; i < n; i++)
-			ok &= isfinite(u[i]);
-		if (ok)
+		/* 0 x u is 0 where u is finite, NaN where it is not: the sum is 0 where all are */
+		for (fin = 0.0, i = 0; i < n; i++)
+			fin += 0.0 * u[i];
+		if (fin == 0.0)
 			break;
 		memcpy(u, u0, n * sizeof *u);
 		*t = t0;
@@ -282,6 +287,7 @@ hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
 		hbs_phase_free(p);
 		return HB_ENOMEM;
 	}
+	known_init(&p->known, p->d->e, p->d->s);
 	return 0;
 }
 
@@ -341,6 +347,8 @@ hbs_scales(struct hb_sim *s, const struct layout *L, int q)
 	int i;
 
 	s->w.valid = 0; /* the watched values were of the old scales */
+	known_forget(&s->ph[0].known); /* and f, of the scaled variables */
+	known_forget(&s->ph[1].known);
 
 	if (q) {
 		hbs_contact_scale(I, fabs(I->v), F, &X, &V);

@@ -35,6 +35,7 @@
 #include "hybounce/status.h"
 #include "arc_impl.h"
 #include "control.h"
+#include "known.h"
 #include "step_bsimp.h"
 #include "step_dop853.h"
 #include "step_rk8pd.h"
@@ -44,6 +45,7 @@ enum {
 	MAXDIM = 11,           /* x, v, x_c, z1, z2, W, JFc, JFe, E_e, x_m, v_m */
 	MAXFUN = HB_LAW_MAX_KINKS + 3,
 	CACHE = 96,
+	CCACHE = 16,           /* re-steps of a chain's step kept */
 	FLIGHT_SAMPLES = 48,   /* samples drawn along a closed-form flight, for plots */
 	MAX_BRENT = 100,
 	MAX_RETRY = 60,        /* retries of a step that produced a non-finite state */
@@ -65,6 +67,7 @@ struct phase {
 	gsl_odeiv2_system sys;
 	gsl_odeiv2_driver *d;    /* stepper, control and evolver */
 	gsl_odeiv2_driver *loc;  /* single steps for event location */
+	struct known_f known;    /* f where d's steps have evaluated it (known.h) */
 };
 
 /* Kinds of the functions watched along a step. */
@@ -141,6 +144,9 @@ struct clusters {
 	double *d0, *d1;        /* the derivatives at the step's start and at its end hh (the Hermite guide) */
 	int hd0;                /* 1: d0 is the current step's */
 	double hh;              /* the end d1 is at (NAN: none) */
+	double *rsu, rsh[CCACHE]; /* the step's re-steps kept (CCACHE states of capdim) and their h */
+	int nrs, rsnext;        /* ... how many, the next to replace */
+	struct known_f known;   /* f where ev's steps have evaluated it (known.h) */
 	double tfree;           /* the earliest closing of a gap between two flying bodies */
 	int ifree;              /* ... its interface (index), -1: none */
 };
@@ -386,9 +392,9 @@ hbs_explicit_stepper(int stepper);
 const gsl_odeiv2_step_type *
 hbs_stepper_type(int stepper);
 int
-hbs_evolve(struct hb_sim *s, gsl_odeiv2_evolve *e, gsl_odeiv2_control *c, gsl_odeiv2_step *st,
-           const gsl_odeiv2_system *sys, double t0, const double *u0, double t1, double *t, double *h,
-           double *u, double *H);
+hbs_evolve(struct hb_sim *s, struct known_f *k, gsl_odeiv2_evolve *e, gsl_odeiv2_control *c,
+           gsl_odeiv2_step *st, const gsl_odeiv2_system *sys, double t0, const double *u0, double t1,
+           double *t, double *h, double *u, double *H);
 
 void
 hbs_unscale(const struct phase *p, const double *u, double *y);

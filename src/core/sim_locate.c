@@ -18,16 +18,19 @@ max_abs(double a, double b)
 	return isnan(a) ? b : (a < b ? b : a);
 }
 
-/* Sets the Hermite interpolant of the step up (two evaluations of f): 0, or the rhs' error. */
+/*
+ * Sets the Hermite interpolant of the step up (f at its ends, where the
+ * step has not evaluated it already): 0, or the rhs' error.
+ */
 static int
 hermite_setup(struct hb_sim *s)
 {
 	struct phase *p = s->cur;
 	int rc;
 
-	if ((rc = p->sys.function(s->t0, s->u0, s->f0, p->sys.params)) != GSL_SUCCESS)
+	if ((rc = known_eval(&p->known, &p->sys, s->t0, s->u0, s->f0)) != GSL_SUCCESS)
 		return rc;
-	return p->sys.function(s->t0 + s->H, s->u1, s->f1, p->sys.params);
+	return known_eval(&p->known, &p->sys, s->t0 + s->H, s->u1, s->f1);
 }
 
 /*
@@ -75,10 +78,14 @@ restep_n(struct hb_sim *s, double h, double *u, int n)
 			return 0;
 		}
 	memcpy(u, s->u0, sizeof s->u0);
-	/* (GSL's rk8pd keeps nothing from one step to the next: its apply evaluates f at the start) */
+	/* (rk8pd keeps nothing from one step to the next: nothing to reset) */
 	if (p->loc->s->type != hb_step_rk8pd)
 		gsl_odeiv2_step_reset(p->loc->s);
-	rc = gsl_odeiv2_step_apply(p->loc->s, s->t0, h, u, yerr, NULL, NULL, &p->sys);
+	/* the step's own slope at the start, where known (its type takes it as f there) */
+	rc = gsl_odeiv2_step_apply(p->loc->s, s->t0, h, u, yerr,
+	                           p->loc->s->type == p->d->s->type ?
+	                           known_at(&p->known, s->t0, s->u0) : NULL,
+	                           NULL, &p->sys);
 	if (rc != GSL_SUCCESS)
 		return rc;
 	/* a step whose error estimate is not finite was not made (bsimp's divergence) */

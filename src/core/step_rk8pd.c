@@ -376,3 +376,11 @@ STEP_TYPE(rk8pd2_type, "rk8pd", 1, 1, rk8pd2_alloc, rk8pd_apply, step_reset_none
 
 const gsl_odeiv2_step_type *const hb_step_rk8pd = &rk8pd_type;
 const gsl_odeiv2_step_type *const hb_step_rk8pd_2lanes = &rk8pd2_type;
+
+const double *
+hb_rk8pd_end(const gsl_odeiv2_step *st)
+{
+	if (st->type != hb_step_rk8pd && st->type != hb_step_rk8pd_2lanes)
+		return NULL;
+	return ((const struct rk8pd *)st->state)->yend;
+}

@@ -28,4 +28,12 @@ extern const gsl_odeiv2_step_type *const hb_step_rk8pd;
 /* The same with two lanes whatever the processor (for the tests: both copies are compared with GSL). */
 extern const gsl_odeiv2_step_type *const hb_step_rk8pd_2lanes;
 
+/*
+ * The state the last successful apply of st returned (where its dydt_out
+ * was evaluated), kept until st's next apply; NULL for a step of another
+ * type.
+ */
+const double *
+hb_rk8pd_end(const gsl_odeiv2_step *st);
+
 #endif
