@@ -288,6 +288,7 @@ hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
 		return HB_ENOMEM;
 	}
 	known_init(&p->known, p->d->e, p->d->s);
+	p->fer_t = NAN;
 	return 0;
 }
 

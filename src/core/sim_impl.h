@@ -68,6 +68,7 @@ struct phase {
 	gsl_odeiv2_driver *d;    /* stepper, control and evolver */
 	gsl_odeiv2_driver *loc;  /* single steps for event location */
 	struct known_f known;    /* f where d's steps have evaluated it (known.h) */
+	double fer_t, fer;       /* a ramp's F_e,r at fer_t, the last t the rhs asked (sim_rhs.c) */
 };
 
 /* Kinds of the functions watched along a step. */
