@@ -166,7 +166,7 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
                       struct sweep_block *out, char *msg, size_t n)
 {
 	double c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
-	struct hb_error_estimate est_store = { 0 }, none = { 0 }, *est = NULL;
+	struct hb_error_estimate est_store, none, *est = NULL;
 	struct sbuf b = { out->p, 0, out->cap, 0 };
 	struct hb_scene sc;
 	struct hb_sim *s;
@@ -174,6 +174,10 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
 	FILE *f;
 	int rc;
 
+	if (sw->error) {   /* (only --error uses them: ~200 bytes to clear) */
+		memset(&est_store, 0, sizeof est_store);
+		memset(&none, 0, sizeof none);
+	}
 	out->len = 0;
 	out->failed = 0;
 	out->cpu = 0;
@@ -201,6 +205,8 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
 		w->coll = open_memstream(&w->cbuf, &w->clen);
 	f = w->coll != NULL && fseeko(w->coll, 0, SEEK_SET) == 0 ? w->coll : NULL;
 	if (f == NULL) {
+		if (sw->error)
+			hb_error_free(&est_store);
 		hb_sim_free(s);
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
@@ -208,7 +214,8 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
 	rc = hb_csv_stream_collisions_err(f, s, !sw->error ? NULL : est != NULL ? est : &none, m,
 	                                  sizeof m);
 	if (rc != HB_OK || w->cbuf == NULL) {
-		hb_error_free(&est_store);
+		if (sw->error)
+			hb_error_free(&est_store);
 		hb_sim_free(s);
 		return hb_status_set(msg, n, HB_ENOMEM, "point %ld: collisions: %s", id, m);
 	}
@@ -236,7 +243,8 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
 	}
 	out->cpu = clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
 	runs_row(&b, sw, id, s, est, note, out->cpu);
-	hb_error_free(&est_store);
+	if (sw->error)
+		hb_error_free(&est_store);
 	hb_sim_free(s);
 	/* the buffer is the caller's, grown or not, whatever happened */
 	out->p = b.p;
