@@ -210,6 +210,7 @@ struct sweep_wbuf {
 	FILE *coll;
 	char *cbuf;
 	size_t clen;
+	struct hb_sim *sim;   /* the last point's, made again for the next (hbs_sim_renew) */
 };
 
 void
