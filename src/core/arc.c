@@ -232,6 +232,15 @@ arc_truncate(struct hb_arc *a, size_t keep)
 }
 
 void
+arc_clear(struct hb_arc *a, size_t max_samples)
+{
+	a->n = a->niv = a->nj = 0;
+	a->thinned = 0;
+	a->skipped = 0;
+	a->max = max_samples < 1024 ? 1024 : max_samples;
+}
+
+void
 arc_set_max(struct hb_arc *a, size_t max_samples)
 {
 	a->max = max_samples < 1024 ? 1024 : max_samples;

@@ -21,6 +21,9 @@ int arc_push_jump(struct hb_arc *a, const struct hb_arc_jump *jr);
 /* Keeps samples [0, keep) and the jumps whose post-jump sample is kept. */
 void arc_truncate(struct hb_arc *a, size_t keep);
 
+/* Empty again, as arc_new(max_samples) makes it, its buffers kept. */
+void arc_clear(struct hb_arc *a, size_t max_samples);
+
 /* Changes the memory bound (thins at once if needed). */
 void arc_set_max(struct hb_arc *a, size_t max_samples);
 

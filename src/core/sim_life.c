@@ -4,12 +4,14 @@
  * (hb_sim_new: the scene validated, the integrators and the chain's arrays
  * built, the run begun at t = 0), given a new scene part-way
  * (hb_sim_set_scene: built aside, then the run begun again or continued
- * from its last sample), restarted and freed; and what it reports
+ * from its last sample), restarted, freed or made again for a new scene in
+ * its own memory (hbs_sim_renew, sim_life.h); and what it reports
  * (its end, error, scene, arc, statistics, collisions, the contact in
  * progress).  The run itself is sim.c's (hb_sim_advance); a seek is
  * sim_seek.c's.
  */
 #include "sim_impl.h"
+#include "sim_life.h"
 
 static int
 build(struct hb_sim *s, char *msg, size_t n)
@@ -83,28 +85,63 @@ hb_sim_new(const struct hb_scene *sc, char *msg, size_t n)
 	return s;
 }
 
-void
-hb_sim_free(struct hb_sim *s)
+/* Frees what s holds but its own block, its arc and its root finder. */
+static void
+release(struct hb_sim *s)
 {
-	if (s == NULL)
-		return;
 	hbs_phase_free(&s->ph[0]);
 	hbs_phase_free(&s->ph[1]);
-	if (s->root)
-		gsl_root_fsolver_free(s->root);
 	if (s->eig)
 		gsl_eigen_nonsymm_free(s->eig);
 	if (s->Jdyn)
 		gsl_matrix_free(s->Jdyn);
 	if (s->lambda)
 		gsl_vector_complex_free(s->lambda);
-	arc_free(s->arc);
 	hbs_chain_free(s);
 	hbs_cluster_free(s);
 	free(s->br);
 	free(s->col);
 	free(s->pend.s);
+}
+
+void
+hb_sim_free(struct hb_sim *s)
+{
+	if (s == NULL)
+		return;
+	release(s);
+	if (s->root)
+		gsl_root_fsolver_free(s->root);
+	arc_free(s->arc);
 	free(s);
+}
+
+/* See sim_life.h. */
+struct hb_sim *
+hbs_sim_renew(struct hb_sim *s, const struct hb_scene *sc, char *msg, size_t n)
+{
+	struct hb_arc *arc;
+	gsl_root_fsolver *root;
+
+	release(s);
+	arc = s->arc;
+	root = s->root;
+	/* as calloc left it for hb_sim_new, the kept three apart */
+	memset(s, 0, sizeof *s);
+	s->arc = arc;
+	s->root = root;
+	s->sc = *sc;
+	if (hb_scene_validate(&s->sc, msg, n) != 0) {
+		hb_sim_free(s);
+		return NULL;
+	}
+	arc_clear(s->arc, (size_t)s->sc.run.max_samples);
+	if (build(s, msg, n) != 0) {
+		hb_sim_free(s);
+		return NULL;
+	}
+	hbs_reset_state(s);
+	return s;
 }
 
 enum hb_sim_end

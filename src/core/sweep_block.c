@@ -4,7 +4,9 @@
  * run, its collisions exactly as --collisions writes them, each row
  * prefixed "c,ID,", then its runs row "r,ID,...".  The block is built in
  * one buffer (no stream), its numbers written by cnum_g17, the bytes of
- * %.17g.
+ * %.17g.  A worker runs its points on one simulator, made again for each
+ * (hbs_sim_renew: no allocator round trip of its block, its arc's buffers
+ * and its root finder; the run the same to the byte, tests/test_sim_renew.c).
  */
 #include <math.h>
 #include <stdio.h>
@@ -20,6 +22,7 @@
 #include "hybounce/sweep.h"
 #include "clock.h"
 #include "sweep_impl.h"
+#include "sim_life.h"
 #include "cnum.h"
 
 /*
@@ -157,6 +160,7 @@ sweep_wbuf_free(struct sweep_wbuf *w)
 	if (w->coll != NULL)
 		fclose(w->coll);
 	free(w->cbuf);
+	hb_sim_free(w->sim);
 	memset(w, 0, sizeof *w);
 }
 
@@ -166,7 +170,7 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
                       struct sweep_block *out, char *msg, size_t n)
 {
 	double c0 = clock_seconds(CLOCK_THREAD_CPUTIME_ID);
-	struct hb_error_estimate est_store = { 0 }, none = { 0 }, *est = NULL;
+	struct hb_error_estimate est_store, none, *est = NULL;
 	struct sbuf b = { out->p, 0, out->cap, 0 };
 	struct hb_scene sc;
 	struct hb_sim *s;
@@ -174,6 +178,10 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
 	FILE *f;
 	int rc;
 
+	if (sw->error) {   /* (only --error uses them: ~200 bytes to clear) */
+		memset(&est_store, 0, sizeof est_store);
+		memset(&none, 0, sizeof none);
+	}
 	out->len = 0;
 	out->failed = 0;
 	out->cpu = 0;
@@ -182,7 +190,8 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
 	if ((rc = sweep_point_values(sw, id, &sc, msg, n)) != HB_OK)
 		return rc;
 	m[0] = '\0';
-	s = hb_sim_new(&sc, m, sizeof m);
+	/* the worker's simulator made again in its own memory (on failure freed, NULL) */
+	s = w->sim = w->sim != NULL ? hbs_sim_renew(w->sim, &sc, m, sizeof m) : hb_sim_new(&sc, m, sizeof m);
 	if (s == NULL)
 		return sweep_point_refused(sw, id, m[0] ? m : "no memory", msg, n);
 	(void)hb_sim_run(s);
@@ -201,15 +210,16 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
 		w->coll = open_memstream(&w->cbuf, &w->clen);
 	f = w->coll != NULL && fseeko(w->coll, 0, SEEK_SET) == 0 ? w->coll : NULL;
 	if (f == NULL) {
-		hb_sim_free(s);
+		if (sw->error)
+			hb_error_free(&est_store);
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
 	}
 	/* flushes: cbuf holds clen bytes */
 	rc = hb_csv_stream_collisions_err(f, s, !sw->error ? NULL : est != NULL ? est : &none, m,
 	                                  sizeof m);
 	if (rc != HB_OK || w->cbuf == NULL) {
-		hb_error_free(&est_store);
-		hb_sim_free(s);
+		if (sw->error)
+			hb_error_free(&est_store);
 		return hb_status_set(msg, n, HB_ENOMEM, "point %ld: collisions: %s", id, m);
 	}
 	{
@@ -236,8 +246,8 @@ sweep_point_block_buf(const struct hb_sweep *sw, long id, struct sweep_wbuf *w,
 	}
 	out->cpu = clock_seconds(CLOCK_THREAD_CPUTIME_ID) - c0;
 	runs_row(&b, sw, id, s, est, note, out->cpu);
-	hb_error_free(&est_store);
-	hb_sim_free(s);
+	if (sw->error)
+		hb_error_free(&est_store);
 	/* the buffer is the caller's, grown or not, whatever happened */
 	out->p = b.p;
 	out->cap = b.cap;

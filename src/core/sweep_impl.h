@@ -29,7 +29,7 @@ struct axis {
 		double from, to;
 		int lg, on;
 	} ramp;
-	/* where a range's value is stored in the scene (sweep.c: fast_ready) */
+	/* where a range's value is stored in the scene (sweep_axis.c: fast_ready) */
 	size_t off;       /* a double at this offset of struct hb_scene, or */
 	int par;          /* law parameter par (-1: off) */
 };
@@ -81,6 +81,10 @@ struct hb_sweep {
 	int fast;
 	struct hb_scene fast_base;
 };
+
+/* Frees an axis's values and clears it. */
+void
+sweep_axis_free(struct axis *a);
 
 /* The canonical text of value i of axis a (in buf for a range's number). */
 const char *
@@ -206,6 +210,7 @@ struct sweep_wbuf {
 	FILE *coll;
 	char *cbuf;
 	size_t clen;
+	struct hb_sim *sim;   /* the last point's, made again for the next (hbs_sim_renew) */
 };
 
 void

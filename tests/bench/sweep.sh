@@ -13,7 +13,9 @@
 #     installed): a sweep of N identical points (the preset's own x0) against
 #     N x the engine's instructions of one batch run of the preset that
 #     writes the same collisions (hb_sim_new, hb_sim_advance, hb_sim_free,
-#     hb_csv_stream_collisions); the whole command, and per point beyond the
+#     hb_csv_stream_collisions; in the sweep also hbs_sim_renew, which makes
+#     a worker's simulator again for its next point); the whole command, and
+#     per point beyond the
 #     first N/6 (start-up left out); target < 3 %.  Beside it the CPU time
 #     of the whole command beyond the points' own cpu_s (timings: noisy on a
 #     loaded machine);
@@ -21,7 +23,8 @@
 #     (hard-slow-impact-shccl, nonunique-separation, nonunique-rest), split
 #     into the sweep's own work (all but the point's functions, counted in
 #     the sweep: the target) and what the point's functions cost more in the
-#     sweep than in a batch run (the allocator's state after earlier points);
+#     sweep than in a batch run (the allocator's state after earlier points;
+#     less, the allocations a renewed simulator keeps);
 #  3. memory: the peak resident set of sweeps of M/10 and M points of the
 #     one-collision restitution example, and the bytes per point between them
 #     (the files are streamed: what is kept per point);
@@ -140,7 +143,7 @@ elif command -v valgrind >/dev/null 2>&1; then
 	P=permanent-contact-shccl
 	x0=$(sed -n 's/^x0 *= *//p' "$HYBOUNCE_PRESETS/$P.preset" | head -n 1)
 	n1=$((NI / 6))
-	TOGGLE="--toggle-collect=hb_sim_new --toggle-collect=hb_sim_advance --toggle-collect=hb_sim_free --toggle-collect=hb_csv_stream_collisions"
+	TOGGLE="--toggle-collect=hb_sim_new --toggle-collect=hbs_sim_renew --toggle-collect=hb_sim_advance --toggle-collect=hb_sim_free --toggle-collect=hb_csv_stream_collisions"
 	e=$(instr -b $P -c -)
 	own=$(instr sweep $P --vary "initial.x0=$x0:$x0:$NI" --jobs 1 --quiet --out "$T/i0")
 	TOGGLE="--toggle-collect=hb_sim_advance"
@@ -164,7 +167,7 @@ elif command -v valgrind >/dev/null 2>&1; then
 	# there than in a fresh process: the allocator's state after earlier
 	# points), and the rest, the sweep's own work (scene, check, rows,
 	# journal, merge)
-	OWN="--toggle-collect=hb_sim_new --toggle-collect=hb_sim_advance --toggle-collect=hb_sim_free --toggle-collect=hb_csv_stream_collisions_err"
+	OWN="--toggle-collect=hb_sim_new --toggle-collect=hbs_sim_renew --toggle-collect=hb_sim_advance --toggle-collect=hb_sim_free --toggle-collect=hb_csv_stream_collisions_err"
 	cheap="hard-slow-impact-shccl nonunique-separation nonunique-rest"
 	[ $smoke = 1 ] && cheap=nonunique-rest
 	echo "   per point beyond start-up on the cheapest presets: the sweep's own work (target < 3 %),"
