@@ -36,19 +36,6 @@
 #include "scene_keys.h"
 #include "cnum.h"
 
-/* See sweep_impl.h. */
-const char *
-sweep_axis_text(const struct axis *a, long i, char *buf, size_t n)
-{
-	if (a->val != NULL)
-		return a->val[i];
-	if (n < CNUM_G17_MAX)
-		cnum_snprintf(buf, n, "%.17g", sweep_axis_num(a, i));
-	else
-		cnum_g17(buf, sweep_axis_num(a, i));
-	return buf;
-}
-
 struct hb_sweep *
 hb_sweep_new(const struct hb_scene *base, char *msg, size_t n)
 {

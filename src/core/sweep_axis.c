@@ -19,6 +19,19 @@
 #include "sweep_impl.h"
 
 /* See sweep_impl.h. */
+const char *
+sweep_axis_text(const struct axis *a, long i, char *buf, size_t n)
+{
+	if (a->val != NULL)
+		return a->val[i];
+	if (n < CNUM_G17_MAX)
+		cnum_snprintf(buf, n, "%.17g", sweep_axis_num(a, i));
+	else
+		cnum_g17(buf, sweep_axis_num(a, i));
+	return buf;
+}
+
+/* See sweep_impl.h. */
 void
 sweep_axis_free(struct axis *a)
 {
