@@ -4,7 +4,7 @@
  * spec file and the runs header (see sweep.h); its axes from "KEY=SPEC" are
  * made in sweep_axis.c.  A point run into its journal
  * block is in sweep_block.c; the threads, the journal and the merge in
- * sweep_pool.c, sweep_run.c and sweep_merge.c.
+ * sweep_pool.c, sweep_run.c, sweep_journal.c and sweep_merge.c.
  *
  * Values.  Every axis value is canonical: the value read back from the
  * scene after hb_scene_set, as text a %.17g SI number or a word such as a

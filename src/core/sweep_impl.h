@@ -154,6 +154,8 @@ sweep_compute(const struct hb_sweep *sw, const struct hb_sweep_options *o, int f
               int (*got)(void *, long, const char *, size_t), void *ctx, int *ordered,
               char *msg, size_t n);
 
+/* ---- the folder and its journals (sweep_journal.c) ---- */
+
 /* The whole of a file into a malloc'd string (*len bytes), read once and
  * bounded (input.h).  NULL with msg on failure; errno ENOENT when absent. */
 char *
