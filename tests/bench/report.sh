@@ -59,8 +59,9 @@ HEAD
 		sed -n '/^## Chains (make bench-chains)$/,/^## Sweeps (make bench-sweep)$/p' "$out" |
 			sed '$!b; /^## Sweeps/d' | sed -e :a -e '/^\n*$/{$d;N;ba' -e '}'
 	fi
-	# the sweep's figures (make bench-sweep), last: the latest run's, else
-	# the section as the report had it
+	# the sweep's figures (make bench-sweep), last: the latest run's and
+	# the subsections written by hand after it, else the section as the
+	# report had it
 	if [ -r "$dir/sweep.txt" ]; then
 		echo
 		echo '## Sweeps (make bench-sweep)'
@@ -73,6 +74,15 @@ HEAD
 		echo '```'
 		cat "$dir/sweep.txt"
 		echo '```'
+		# the subsections written by hand below it (what each change did): kept
+		if [ -r "$out" ]; then
+			sed -n '/^## Sweeps (make bench-sweep)$/,$p' "$out" | sed -n '/^### /,$p' >"$kept.sweep"
+			if [ -s "$kept.sweep" ]; then
+				echo
+				cat "$kept.sweep"
+			fi
+			rm -f "$kept.sweep"
+		fi
 	elif [ -r "$out" ]; then
 		echo
 		sed -n '/^## Sweeps (make bench-sweep)$/,$p' "$out"
