@@ -115,6 +115,22 @@ col_choose(struct col *c, double mag)
 		c->dec = 7;
 }
 
+/*
+ * A contact in progress has its own magnitudes (its values so far: x_c^r
+ * is its indentation now, v_i of a contact begun at rest is tiny), while
+ * the column's unit and decimals come from the completed collisions: in
+ * fixed notation its value would read 0 or spread over many digits.  1
+ * when v (in the column's unit) reads in it: 0, or a nonzero digit among
+ * its decimals and under 1e6.
+ */
+static int
+fixed_fits(const struct col *c, double v)
+{
+	double a = fabs(v);
+
+	return a == 0 || (a >= 0.5 * pow(10, -c->dec) && a < 1e6);
+}
+
 static void
 col_cell(const struct col *c, const struct hb_collision *k, char *buf, size_t n)
 {
@@ -134,7 +150,7 @@ col_cell(const struct col *c, const struct hb_collision *k, char *buf, size_t n)
 		v = NAN;
 	if (isnan(v))
 		snprintf(buf, n, "-");
-	else if (c->sci)
+	else if (c->sci || (!k->complete && !fixed_fits(c, v / c->scale)))
 		snprintf(buf, n, "%.4e", v / c->scale);
 	else
 		snprintf(buf, n, "%.*f", c->dec, v / c->scale);

@@ -84,4 +84,22 @@ fi
 if ! grep -q 'stiff' "$T/out"; then ok "batch on the first study says nothing of stiffness"
 else notok "batch on the first study says nothing of stiffness" "$T/out"; fi
 
+# a run cut in a contact: its row has its own magnitudes (x_c^r is the indentation
+# now, millions of the completed rows' fm): in the column's unit, as 7.9112e+09,
+# not as a run of ten digits and more; a value that would read 0 likewise
+"$BIN" --batch hertz-elastic --set run.T=0.0959s >"$T/out" 2>&1
+live=$(sed -n '/^contact in progress/{n;p;}' "$T/out")
+if [ -n "$live" ] && echo "$live" | awk '{ for (i = 1; i <= NF; i++) if (length($i) > 11) bad = 1 } END { exit bad }' &&
+    echo "$live" | grep -Eq ' 7\.9112e\+09 '; then
+	ok "a contact in progress: its values in the column's unit, in scientific notation where fixed would not read"
+else
+	notok "a contact in progress: its values in the column's unit, in scientific notation where fixed would not read" "$T/out"
+fi
+"$BIN" --batch steel-on-bitumen >"$T/out" 2>&1
+if sed -n '/^contact in progress/{n;p;}' "$T/out" | grep -Eq '^12 .* -8\.97[0-9]+e-14 '; then
+	ok "the first study's permanent contact: v_i in mm/s as -8.97e-14, not -0.00"
+else
+	notok "the first study's permanent contact: v_i in mm/s as -8.97e-14, not -0.00" "$T/out"
+fi
+
 [ "$fails" -eq 0 ]
