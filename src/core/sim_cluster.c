@@ -106,7 +106,6 @@ hbs_cluster_free(struct hb_sim *s)
 	free(c->d1);
 	free(c->rsu);
 	free(c->f0);
-	free(c->f1);
 	free(c->fe);
 	free(c->gmax);
 	free(c->fkind);
@@ -245,6 +244,50 @@ hbs_cluster_rhs(double t, const double u[], double du[], void *params)
 	return GSL_SUCCESS;
 }
 
+/* Phi of interface I (in contact) at the clusters' scaled state u. */
+static inline double
+iface_phi(const struct clusters *c, const struct iface *I, const double *u)
+{
+	int o = I->off, nz = I->law->n_z, i;
+	double z[HB_LAW_MAX_Z];
+
+	for (i = 0; i < nz; i++)
+		z[i] = u[o + 2 + i] * c->scale[o + 2 + i];
+	return hbs_iface_phi(I, u[o] * c->scale[o], nz ? z : NULL, u[o + 1] * c->scale[o + 1]);
+}
+
+/* Interface I's (x_c, z, v), unscaled from u; z zero past its n_z. */
+static inline void
+iface_state(const struct clusters *c, const struct iface *I, const double *u, double *xc, double *z,
+            double *v)
+{
+	int o = I->off, nz = I->law->n_z, i;
+
+	for (i = 0; i < HB_LAW_MAX_Z; i++)
+		z[i] = i < nz ? u[o + 2 + i] * c->scale[o + 2 + i] : 0.0;
+	*xc = u[o] * c->scale[o];
+	*v = u[o + 1] * c->scale[o + 1];
+}
+
+/*
+ * dPhi/dt of interface k (its minimum is F_c's maximum), with this step's
+ * mode of Psi, from the Phi of k (phi) and of its neighbours k - 1 (plo)
+ * and k + 1 (phi_hi), these read only where they are in contact.
+ */
+static inline double
+iface_dphidt(const struct hb_sim *s, int k, double xc, const double *z, double v, double phi, double plo,
+             double phi_hi)
+{
+	const struct iface *I = &s->ifc[k];
+	double vdot = -phi * (I->ilo + I->ihi) + I->arel;
+
+	if (k > 0 && s->ifc[k - 1].off >= 0)
+		vdot += plo * I->ilo;
+	if (k + 1 < s->nif && s->ifc[k + 1].off >= 0)
+		vdot += phi_hi * I->ihi;
+	return hbs_iface_dphidt(I, xc, z, v, vdot, I->msign);
+}
+
 /*
  * The watched functions at (t, u), interface by interface in increasing
  * k (see the header comment); their kinds and interfaces were laid out by
@@ -261,43 +304,79 @@ hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f)
 			cluster_bodies(s, &c->cl[i], t, u);
 	for (p = 0; p < c->nact; p++) { /* the forces first: dPhi/dt needs the neighbours' */
 		struct iface *I = &s->ifc[c->act[p]];
-		int o = I->off, nz = I->law->n_z;
-		double z[HB_LAW_MAX_Z];
 
-		for (i = 0; i < nz; i++)
-			z[i] = u[o + 2 + i] * c->scale[o + 2 + i];
-		I->tphi = hbs_iface_phi(I, u[o] * c->scale[o], nz ? z : NULL, u[o + 1] * c->scale[o + 1]);
+		I->tphi = iface_phi(c, I, u);
 	}
 	for (p = 0, w = 0; p < c->nact || w < c->nwatch;) {
 		if (w >= c->nwatch || (p < c->nact && c->act[p] < c->wif[w])) {
 			int k = c->act[p++];
 			const struct iface *I = &s->ifc[k];
-			int o = I->off, nz = I->law->n_z;
 			int nk = I->law->n_kinks && s->sc.run.kinks ? I->law->n_kinks : 0;
-			double z[HB_LAW_MAX_Z] = { 0 }, xc = u[o] * c->scale[o], v = u[o + 1] * c->scale[o + 1];
-			double vdot;
+			double z[HB_LAW_MAX_Z], xc, v;
 
-			for (i = 0; i < nz; i++)
-				z[i] = u[o + 2 + i] * c->scale[o + 2 + i];
+			iface_state(c, I, u, &xc, z, &v);
 			f[n++] = -fmin(I->tphi, v);
 			if (nk) {
 				hbs_iface_kinks(I, xc, z, v, &f[n]);
 				n += nk;
 			}
 			f[n++] = v;
-			/* dPhi/dt (its minimum is F_c's maximum), with this step's mode of Psi */
-			vdot = -I->tphi * (I->ilo + I->ihi) + I->arel;
-			if (k > 0 && s->ifc[k - 1].off >= 0)
-				vdot += s->ifc[k - 1].tphi * I->ilo;
-			if (k + 1 < s->nif && s->ifc[k + 1].off >= 0)
-				vdot += s->ifc[k + 1].tphi * I->ihi;
-			f[n++] = hbs_iface_dphidt(I, xc, z, v, vdot, I->msign);
+			f[n++] = iface_dphidt(s, k, xc, z, v, I->tphi, k > 0 ? s->ifc[k - 1].tphi : 0.0,
+			                      k + 1 < s->nif ? s->ifc[k + 1].tphi : 0.0);
 		} else {
 			double x, v;
 
 			gap_of(s, &s->ifc[c->wif[w++]], t, &x, &v);
 			f[n++] = fmax(x, v);
 		}
+	}
+}
+
+/*
+ * Watched function fi alone at (t, u): the same double as
+ * hbs_cluster_watch's f[fi], from the state of its interface (and of its
+ * neighbours in contact for dPhi/dt, of the clusters its gap's bodies are
+ * in for a gap) only.  The root finder asks one function many times.
+ */
+double
+hbs_cluster_watch_one(struct hb_sim *s, double t, const double *u, int fi)
+{
+	struct clusters *c = &s->cx;
+	int k = c->fif[fi], j;
+	const struct iface *I = &s->ifc[k];
+	double z[HB_LAW_MAX_Z], xc, v;
+
+	if (I->off < 0) { /* a gap in flight next to a cluster */
+		double x, w;
+		int bl = I->lo >= 0 ? s->body[I->lo].cl : -1, bh = s->body[I->hi].cl;
+
+		if (bh >= 0)
+			cluster_bodies(s, &c->cl[bh], t, u);
+		if (bl >= 0 && bl != bh)
+			cluster_bodies(s, &c->cl[bl], t, u);
+		gap_of(s, I, t, &x, &w);
+		return fmax(x, w);
+	}
+	switch (c->fkind[fi]) {
+	case FUN_EVENT:
+		return -fmin(iface_phi(c, I, u), u[I->off + 1] * c->scale[I->off + 1]);
+	case FUN_XCMAX:
+		return u[I->off + 1] * c->scale[I->off + 1];
+	case FUN_KINK: {
+		double g[HB_LAW_MAX_KINKS];
+
+		for (j = 1; c->fkind[fi - j] == FUN_KINK; j++) /* its index among its interface's */
+			;
+		iface_state(c, I, u, &xc, z, &v);
+		hbs_iface_kinks(I, xc, z, v, g);
+		return g[j - 1];
+	}
+	default: /* FUN_FCMAX */
+		iface_state(c, I, u, &xc, z, &v);
+		return iface_dphidt(s, k, xc, z, v, iface_phi(c, I, u),
+		                    k > 0 && s->ifc[k - 1].off >= 0 ? iface_phi(c, &s->ifc[k - 1], u) : 0.0,
+		                    k + 1 < s->nif && s->ifc[k + 1].off >= 0 ? iface_phi(c, &s->ifc[k + 1], u)
+		                                                             : 0.0);
 	}
 }
 

@@ -190,7 +190,7 @@ ensure_f(struct hb_sim *s, int nf)
 	}
 	if (nf > c->capf) {
 		int m = c->capf > 0 ? c->capf : 16;
-		double **d[] = { &c->f0, &c->f1, &c->fe, &c->gmax };
+		double **d[] = { &c->f0, &c->fe, &c->gmax };
 		int **k[] = { &c->fkind, &c->fif };
 
 		while (m < nf)
@@ -307,10 +307,7 @@ hbs_cluster_setup(struct hb_sim *s)
 static double
 watched(struct hb_sim *s, double t, const double *u, const void *arg)
 {
-	int fi = *(const int *)arg;
-
-	hbs_cluster_watch(s, t, u, s->cx.f1); /* scratch: the values at the trial */
-	return s->cx.f1[fi];
+	return hbs_cluster_watch_one(s, t, u, *(const int *)arg);
 }
 
 /* Interface J in flight at (t, its bodies set there): x, v into the struct, then the jump into contact. */

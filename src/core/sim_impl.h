@@ -132,7 +132,7 @@ struct clusters {
 	struct cluster *cl;
 	int *wif;               /* the interfaces in flight next to a cluster, ascending */
 	int capact, capcl, capwif, capdim, capf;
-	double *u, *u0, *u1, *scale, *iscale, *f0, *f1, *fe, *gmax, *yerr;
+	double *u, *u0, *u1, *scale, *iscale, *f0, *fe, *gmax, *yerr;
 	double *by, *bu;        /* scratch: the bodies' (y, u) of the clusters at a state */
 	int capb;
 	int *fkind, *fif;       /* each watched function's kind and interface (index) */
@@ -318,6 +318,9 @@ int
 hbs_cluster_rhs(double t, const double u[], double du[], void *params);
 void
 hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f);
+/* Its f[fi] alone (the same double), from only the state that function reads. */
+double
+hbs_cluster_watch_one(struct hb_sim *s, double t, const double *u, int fi);
 void
 hbs_cluster_unpack(struct hb_sim *s, double t, const double *u);
 int
