@@ -91,10 +91,10 @@ CAIRO_SONAME := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir cairo 2>/
                   2>/dev/null | sed -n 's/^ *SONAME *//p')
 PNG_SONAME   := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir libpng 2>/dev/null)/libpng.so" \
                   2>/dev/null | sed -n 's/^ *SONAME *//p')
-# libhdf5 (hybounce sweep --format hdf5): its headers for sweep_hdf5.o (as
-# system headers), the serial library opened with dlopen when a sweep first
-# asks for it (src/cli/sweep_hdf5.c says why), under the soname of the
-# hdf5-serial pkg-config finds.
+# libhdf5 (hybounce sweep --format hdf5): its headers for sweep_hdf5.o and
+# sweep_hdf5_load.o (as system headers), the serial library opened with
+# dlopen when a sweep first asks for it (src/cli/sweep_hdf5_load.c says
+# why), under the soname of the hdf5-serial pkg-config finds.
 HDF5_PC     := $(shell $(PKG_CONFIG) --exists hdf5-serial 2>/dev/null && echo hdf5-serial || echo hdf5)
 HDF5_CFLAGS := $(patsubst -I%,-isystem %,$(shell $(PKG_CONFIG) --cflags $(HDF5_PC) 2>/dev/null))
 HDF5_LIBDIR := $(patsubst -L%,%,$(firstword $(shell $(PKG_CONFIG) --libs-only-L $(HDF5_PC) 2>/dev/null)))
@@ -190,7 +190,8 @@ $(BUILD)/tests/%.o: tests/%.c
 $(BUILD)/src/core/onset.o: CORE_CFLAGS += $(AUBIO_CFLAGS)
 $(BUILD)/src/core/onset_aubio.o: CORE_CFLAGS += $(AUBIO_CFLAGS) \
     $(if $(AUBIO_SONAME),-DAUBIO_SONAME='"$(AUBIO_SONAME)"')
-$(BUILD)/src/cli/sweep_hdf5.o: CPPFLAGS += $(HDF5_CFLAGS) \
+$(BUILD)/src/cli/sweep_hdf5.o: CPPFLAGS += $(HDF5_CFLAGS)
+$(BUILD)/src/cli/sweep_hdf5_load.o: CPPFLAGS += $(HDF5_CFLAGS) \
     $(if $(HDF5_SONAME),-DHDF5_SONAME='"$(HDF5_SONAME)"')
 $(BUILD)/src/cli/plot_cairo.o: CPPFLAGS += $(CAIRO_CFLAGS) \
     $(if $(CAIRO_SONAME),-DCAIRO_SONAME='"$(CAIRO_SONAME)"') \

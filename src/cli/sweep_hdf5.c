@@ -16,21 +16,17 @@
  * `provenance` (the command).  h5py reads a dataset as a NumPy structured
  * array, which pandas.DataFrame takes as it is.
  *
- * libhdf5 is opened with dlopen(3) when a sweep first asks for it, as
- * plot_cairo.c does cairo: linked into the program, its relocations would
- * be paid at every start of `hybounce --batch`.  Its functions are typed
- * from its own headers; the macros that call into the library
+ * libhdf5 is opened with dlopen(3) when a sweep first asks for it
+ * (sweep_hdf5_load.c); the macros that call into the library
  * (H5F_ACC_TRUNC, H5T_NATIVE_DOUBLE ...) are spelled out here.
  *
  * The file is written under a temporary name beside sweep.h5 (the atomic
  * writer's: sweep.h5.hbtmp-PID-XXXXXX), flushed to disk and renamed over
  * it once complete; a failed merge leaves no sweep.h5.
  */
-#include <dlfcn.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
-#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -53,88 +49,15 @@
 #include "cnum.h"
 #include "report.h"
 #include "sweep_hdf5.h"
-
-#ifndef HDF5_SONAME
-#define HDF5_SONAME "libhdf5_serial.so.103"
-#endif
+#include "sweep_hdf5_api.h"
 
 #define CHUNK 4096        /* rows a chunk (and in memory) */
 #define MAXCOLS 128
-
-#define H5_FUNCS(X)                                                            \
-	X(H5open) X(H5Eset_auto2) X(H5Fcreate) X(H5Fclose) X(H5Screate_simple)   \
-	X(H5Screate) X(H5Sclose) X(H5Pcreate) X(H5Pset_chunk) X(H5Pset_deflate) \
-	X(H5Pset_shuffle) X(H5Pclose) X(H5Tcreate) X(H5Tinsert) X(H5Tcopy)      \
-	X(H5Tset_size) X(H5Tset_cset) X(H5Tclose) X(H5Dcreate2) X(H5Dset_extent) \
-	X(H5Dget_space) X(H5Sselect_hyperslab) X(H5Dwrite) X(H5Dclose)          \
-	X(H5Acreate2) X(H5Awrite) X(H5Aclose)
-
-struct h5_api {
-#define X(name) __typeof__(&name) name;
-	H5_FUNCS(X)
-#undef X
-	hid_t *native_double, *native_int64, *c_s1, *dataset_create;
-};
-
-static pthread_once_t h5_once = PTHREAD_ONCE_INIT;
-static struct h5_api H;
-static int h5_loaded;
-static char h5_why[256];
 
 /* H5F_ACC_TRUNC, H5S_UNLIMITED, H5T_VARIABLE without the header's calls */
 #define ACC_TRUNC 0x0002u
 #define UNLIMITED ((hsize_t)(-1))
 #define VARIABLE ((size_t)(-1))
-
-static void
-load(void)
-{
-	void *h = dlopen(HDF5_SONAME, RTLD_NOW | RTLD_LOCAL);
-
-	if (h == NULL) {
-		const char *e = dlerror();
-
-		snprintf(h5_why, sizeof h5_why, "%s", e != NULL ? e : HDF5_SONAME);
-		return;
-	}
-#define X(name)                                                                \
-	{                                                                      \
-		void *p_ = dlsym(h, #name);                                    \
-		if (p_ == NULL) {                                              \
-			snprintf(h5_why, sizeof h5_why, "%s has no %s", HDF5_SONAME, #name); \
-			return;                                                \
-		}                                                              \
-		memcpy(&H.name, &p_, sizeof p_);                               \
-	}
-	H5_FUNCS(X)
-#undef X
-	H.native_double = dlsym(h, "H5T_NATIVE_DOUBLE_g");
-	H.native_int64 = dlsym(h, "H5T_NATIVE_INT64_g");
-	H.c_s1 = dlsym(h, "H5T_C_S1_g");
-	H.dataset_create = dlsym(h, "H5P_CLS_DATASET_CREATE_ID_g");
-	if (H.native_double == NULL || H.native_int64 == NULL || H.c_s1 == NULL ||
-	    H.dataset_create == NULL) {
-		snprintf(h5_why, sizeof h5_why, "%s lacks its type globals", HDF5_SONAME);
-		return;
-	}
-	if (H.H5open() < 0) {
-		snprintf(h5_why, sizeof h5_why, "%s: H5open failed", HDF5_SONAME);
-		return;
-	}
-	H.H5Eset_auto2(H5E_DEFAULT, NULL, NULL);   /* errors come back as messages */
-	h5_loaded = 1;   /* the handle stays open for the life of the process */
-}
-
-int
-sweep_hdf5_available(char *msg, size_t n)
-{
-	pthread_once(&h5_once, load);
-	if (h5_loaded)
-		return HB_OK;
-	return hb_status_set(msg, n, HB_EINVAL, "--format hdf5: libhdf5 cannot be loaded (%s); "
-	                     "install it (Debian: libhdf5-103-1, with libhdf5-dev) or use "
-	                     "--format csv", h5_why);
-}
 
 /* ------------------------------------------------------------------ */
 /* One dataset: its columns, the compound type, a chunk of rows in memory */
@@ -296,14 +219,14 @@ static int
 put_attr(struct sweep_hdf5 *h, hid_t obj, const char *name, const char *const *v, int count)
 {
 	hsize_t dim = (hsize_t)count;
-	hid_t sp = count < 0 ? H.H5Screate(H5S_SCALAR) : H.H5Screate_simple(1, &dim, NULL);
-	hid_t a = sp < 0 ? -1 : H.H5Acreate2(obj, name, h->vstr, sp, H5P_DEFAULT, H5P_DEFAULT);
-	int rc = a >= 0 && H.H5Awrite(a, h->vstr, v) >= 0 ? 0 : -1;
+	hid_t sp = count < 0 ? h5api.H5Screate(H5S_SCALAR) : h5api.H5Screate_simple(1, &dim, NULL);
+	hid_t a = sp < 0 ? -1 : h5api.H5Acreate2(obj, name, h->vstr, sp, H5P_DEFAULT, H5P_DEFAULT);
+	int rc = a >= 0 && h5api.H5Awrite(a, h->vstr, v) >= 0 ? 0 : -1;
 
 	if (a >= 0)
-		H.H5Aclose(a);
+		h5api.H5Aclose(a);
 	if (sp >= 0)
-		H.H5Sclose(sp);
+		h5api.H5Sclose(sp);
 	return rc;
 }
 
@@ -326,29 +249,29 @@ table_create(struct sweep_hdf5 *h, struct table *t, char *msg, size_t n)
 	t->buf = calloc(CHUNK, t->size);
 	if (t->buf == NULL)
 		return hb_status_set(msg, n, HB_ENOMEM, "out of memory");
-	t->type = H.H5Tcreate(H5T_COMPOUND, t->size);
+	t->type = h5api.H5Tcreate(H5T_COMPOUND, t->size);
 	for (int k = 0; t->type >= 0 && k < t->ncols; k++)
-		if (H.H5Tinsert(t->type, t->col[k], t->off[k],
+		if (h5api.H5Tinsert(t->type, t->col[k], t->off[k],
 		                t->kind[k] == COL_TEXT ? h->vstr
-		                : t->kind[k] == COL_INT ? *H.native_int64 : *H.native_double) < 0) {
-			H.H5Tclose(t->type);
+		                : t->kind[k] == COL_INT ? *h5api.native_int64 : *h5api.native_double) < 0) {
+			h5api.H5Tclose(t->type);
 			t->type = -1;
 		}
-	sp = H.H5Screate_simple(1, &dim, &maxdim);
-	pl = H.H5Pcreate(*H.dataset_create);
-	if (t->type < 0 || sp < 0 || pl < 0 || H.H5Pset_chunk(pl, 1, &chunk) < 0 ||
-	    H.H5Pset_shuffle(pl) < 0 || H.H5Pset_deflate(pl, 4) < 0 ||
-	    (t->dset = H.H5Dcreate2(h->file, t->name, t->type, sp, H5P_DEFAULT, pl,
+	sp = h5api.H5Screate_simple(1, &dim, &maxdim);
+	pl = h5api.H5Pcreate(*h5api.dataset_create);
+	if (t->type < 0 || sp < 0 || pl < 0 || h5api.H5Pset_chunk(pl, 1, &chunk) < 0 ||
+	    h5api.H5Pset_shuffle(pl) < 0 || h5api.H5Pset_deflate(pl, 4) < 0 ||
+	    (t->dset = h5api.H5Dcreate2(h->file, t->name, t->type, sp, H5P_DEFAULT, pl,
 	                            H5P_DEFAULT)) < 0) {
 		if (sp >= 0)
-			H.H5Sclose(sp);
+			h5api.H5Sclose(sp);
 		if (pl >= 0)
-			H.H5Pclose(pl);
+			h5api.H5Pclose(pl);
 		return hb_status_set(msg, n, HB_EIO, "%s: cannot create the dataset /%s", h->path,
 		                     t->name);
 	}
-	H.H5Sclose(sp);
-	H.H5Pclose(pl);
+	h5api.H5Sclose(sp);
+	h5api.H5Pclose(pl);
 	if (put_attr(h, t->dset, "columns", (const char *const *)t->col, t->ncols) < 0 ||
 	    put_attr(h, t->dset, "units", t->unit, t->ncols) < 0)
 		return hb_status_set(msg, n, HB_EIO, "%s: cannot write the attributes of /%s",
@@ -382,16 +305,16 @@ table_flush(struct sweep_hdf5 *h, struct table *t, char *msg, size_t n)
 	size = t->rows + (hsize_t)t->nbuf;
 	start = t->rows;
 	count = (hsize_t)t->nbuf;
-	ok = H.H5Dset_extent(t->dset, &size) >= 0;
-	fs = ok ? H.H5Dget_space(t->dset) : -1;
-	ms = H.H5Screate_simple(1, &count, NULL);
+	ok = h5api.H5Dset_extent(t->dset, &size) >= 0;
+	fs = ok ? h5api.H5Dget_space(t->dset) : -1;
+	ms = h5api.H5Screate_simple(1, &count, NULL);
 	ok = ok && fs >= 0 && ms >= 0 &&
-	     H.H5Sselect_hyperslab(fs, H5S_SELECT_SET, &start, NULL, &count, NULL) >= 0 &&
-	     H.H5Dwrite(t->dset, t->type, ms, fs, H5P_DEFAULT, t->buf) >= 0;
+	     h5api.H5Sselect_hyperslab(fs, H5S_SELECT_SET, &start, NULL, &count, NULL) >= 0 &&
+	     h5api.H5Dwrite(t->dset, t->type, ms, fs, H5P_DEFAULT, t->buf) >= 0;
 	if (fs >= 0)
-		H.H5Sclose(fs);
+		h5api.H5Sclose(fs);
 	if (ms >= 0)
-		H.H5Sclose(ms);
+		h5api.H5Sclose(ms);
 	table_free_strings(t);
 	t->rows = size;
 	t->nbuf = 0;
@@ -469,10 +392,10 @@ sink_begin(void *ctx, const char *runs_header, const char *coll_header, char *ms
 	}
 	close(fd);
 	h->created = 1;
-	h->file = H.H5Fcreate(h->tmp, ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-	h->vstr = H.H5Tcopy(*H.c_s1);
-	if (h->file < 0 || h->vstr < 0 || H.H5Tset_size(h->vstr, VARIABLE) < 0 ||
-	    H.H5Tset_cset(h->vstr, H5T_CSET_UTF8) < 0) {
+	h->file = h5api.H5Fcreate(h->tmp, ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+	h->vstr = h5api.H5Tcopy(*h5api.c_s1);
+	if (h->file < 0 || h->vstr < 0 || h5api.H5Tset_size(h->vstr, VARIABLE) < 0 ||
+	    h5api.H5Tset_cset(h->vstr, H5T_CSET_UTF8) < 0) {
 		free(text);
 		return hb_status_set(msg, n, HB_EIO, "%s: cannot create an HDF5 file there", h->tmp);
 	}
@@ -533,15 +456,15 @@ sink_end(void *ctx, int ok, char *msg, size_t n)
 		struct table *t = k ? &h->coll : &h->runs;
 
 		if (t->dset >= 0)
-			H.H5Dclose(t->dset);
+			h5api.H5Dclose(t->dset);
 		if (t->type >= 0)
-			H.H5Tclose(t->type);
+			h5api.H5Tclose(t->type);
 		t->dset = t->type = -1;
 	}
 	if (h->vstr >= 0)
-		H.H5Tclose(h->vstr);
+		h5api.H5Tclose(h->vstr);
 	h->vstr = -1;
-	if (h->file >= 0 && H.H5Fclose(h->file) < 0 && ok && rc == HB_OK)
+	if (h->file >= 0 && h5api.H5Fclose(h->file) < 0 && ok && rc == HB_OK)
 		rc = hb_status_set(msg, n, HB_EIO, "%s: cannot close it (disk full?)", h->tmp);
 	h->file = -1;
 	if (ok && rc == HB_OK && h->created) {

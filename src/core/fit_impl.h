@@ -89,4 +89,47 @@ fit_numerical(const struct hb_scene *sc, const struct hb_fit_data *d, int jobs,
               const gsl_vector *f, const double *meas, const double *sd, double *dtheta,
               double *rtol, long *runs, double *cpu, double *span, char *msg, size_t n);
 
+/* The context of the solver's callbacks (fit_resid.c), held in struct hb_fit (fit.c). */
+struct fit_ctx {
+	const struct hb_scene *sc;
+	const struct hb_fit_data *d;
+	const struct fit_param *fp;
+	int np;
+	size_t npts;
+	int jobs;
+	double *meas, *sd;    /* per point */
+	double h_rel;         /* finite-difference step, relative */
+	long runs;
+	/* the last f evaluation, reused by df at the same x */
+	double *last_u, *last_r;
+	int have_last;
+	struct hb_scene *scs;    /* np + 1 scenes */
+	double *y;            /* (np + 1) * npts simulated values */
+	int *fail;
+	/*
+	 * Jacobian columns run beside an evaluation of f on cores that would
+	 * wait otherwise (see fit_resid_f): columns 0 .. spec_n - 1 at spec_u.
+	 */
+	int cores;            /* threads the runs may use (jobs resolved) */
+	int spec_n;
+	double *spec_u, *spec_y;  /* np; np * npts */
+	int *spec_fail;           /* np */
+	long per;             /* runs per scene: trials, or drops */
+	double cpu, span;     /* CPU seconds of every run; their span on the threads */
+};
+
+/* Simulates the scenes for parameter vectors u[0..ns-1] into c->y. */
+int
+fit_eval_many(struct fit_ctx *c, const double *const *u, int ns, char *msg, size_t n);
+
+/* GSL's residual function f at x and its Jacobian J (params: struct fit_ctx). */
+int
+fit_resid_f(const gsl_vector *x, void *params, gsl_vector *f);
+int
+fit_resid_df(const gsl_vector *x, void *params, gsl_matrix *J);
+
+/* Standard errors and correlations of theta at u from J into r (see fit_resid.c). */
+void
+fit_errors(const gsl_matrix *J, struct fit_ctx *c, const double *u, struct hb_fit_result *r);
+
 #endif

@@ -17,8 +17,8 @@
  * The rounds depend on nothing but the points' classes, so a restart reads
  * the journal's points (their classes from their runs rows), plays the
  * rounds again and computes only the points that the journal lacks.
- * Memory: about 48 bytes a computed point (a hash table of the points),
- * never the points' text.
+ * Memory: about 48 bytes a computed point (a hash table of the points,
+ * sweep_refine_table.c), never the points' text.
  *
  * The files.  runs.csv and collisions.csv hold the computed points sorted
  * by id (ids of the lattice, as in the uniform sweep FROM:TO:M), runs.csv
@@ -43,112 +43,16 @@
 #include "clock.h"
 #include "csv_impl.h"
 #include "sweep_impl.h"
+#include "sweep_refine_table.h"
 
 #define BOUNDARIES_NAME "boundaries.csv"
-
-struct node {
-	long id;            /* -1: an empty slot */
-	double v;           /* the observable */
-	long cls;           /* its class (sweep_refine_class) */
-	int64_t off;        /* the block in the journal */
-	uint32_t len;
-	signed char level;  /* the round that asked for it; -1: not (yet) asked */
-	unsigned char have; /* computed: v and cls known */
-};
-
-struct refine_state {
-	const struct hb_sweep *sw;
-	struct node *t;     /* open addressing, cap a power of 2 */
-	size_t cap, count;
-	long *pending;         /* the round's points to compute */
-	long npending, pending_cap;
-	int64_t jsize;      /* the journal's length */
-	int rfd;            /* the journal, to read blocks */
-	char *buf;
-	size_t buf_cap;
-	int err;            /* what stopped the journal's scan */
-};
-
-static size_t
-slot(const struct refine_state *r, long id)
-{
-	return (size_t)(((uint64_t)id * 0x9E3779B97F4A7C15ull) >> 17) & (r->cap - 1);
-}
-
-static struct node *
-node_get(const struct refine_state *r, long id)
-{
-	if (r->cap == 0)
-		return NULL;
-	for (size_t i = slot(r, id);; i = (i + 1) & (r->cap - 1)) {
-		if (r->t[i].id == id)
-			return &r->t[i];
-		if (r->t[i].id < 0)
-			return NULL;
-	}
-}
-
-/* A new node for id (not there yet); NULL: no memory.  Pointers held before are stale. */
-static struct node *
-node_add(struct refine_state *r, long id)
-{
-	size_t i;
-
-	if (2 * (r->count + 1) > r->cap) {
-		size_t oc = r->cap, nc = oc ? 2 * oc : 1024;
-		struct node *ot = r->t, *nt = malloc(nc * sizeof *nt);
-
-		if (nt == NULL)
-			return NULL;
-		for (size_t k = 0; k < nc; k++)
-			nt[k].id = -1;
-		r->t = nt;
-		r->cap = nc;
-		for (size_t k = 0; k < oc; k++)
-			if (ot[k].id >= 0) {
-				for (i = slot(r, ot[k].id); nt[i].id >= 0; i = (i + 1) & (nc - 1))
-					;
-				nt[i] = ot[k];
-			}
-		free(ot);
-	}
-	for (i = slot(r, id); r->t[i].id >= 0; i = (i + 1) & (r->cap - 1))
-		;
-	memset(&r->t[i], 0, sizeof r->t[i]);
-	r->t[i].id = id;
-	r->t[i].level = -1;
-	r->count++;
-	return &r->t[i];
-}
-
-/* A point's block has been journaled at r->jsize (or read from the journal at off). */
-static int
-note_block(struct refine_state *r, long id, const char *blk, size_t len, int64_t off)
-{
-	struct node *x = node_get(r, id);
-	double v;
-	int failed;
-
-	if (x != NULL && x->have)
-		return HB_OK;   /* the first copy wins */
-	if (sweep_block_observable(r->sw, blk, len, r->sw->rf.obs, &v, &failed) != HB_OK)
-		return HB_EINVAL;
-	if (x == NULL && (x = node_add(r, id)) == NULL)
-		return HB_ENOMEM;
-	x->v = v;
-	x->cls = sweep_refine_class(&r->sw->rf, v, failed);
-	x->off = off;
-	x->len = (uint32_t)len;
-	x->have = 1;
-	return HB_OK;
-}
 
 /* sweep_compute's callback: the block was just appended to the journal. */
 static int
 got_block(void *ctx, long id, const char *blk, size_t len)
 {
 	struct refine_state *r = ctx;
-	int rc = note_block(r, id, blk, len, r->jsize);
+	int rc = sweep_refine_note(r, id, blk, len, r->jsize);
 
 	r->jsize += (int64_t)len;
 	return rc;
@@ -173,34 +77,7 @@ seen_block(void *ctx, long id, off_t off, size_t len)
 	if (pread(r->rfd, r->buf, len, off) != (ssize_t)len)
 		return r->err = HB_EIO;
 	r->buf[len] = '\0';
-	return r->err = note_block(r, id, r->buf, len, (int64_t)off);
-}
-
-/* Round `level` needs point id: to compute unless the journal has it. */
-static int
-request(struct refine_state *r, long id, int level)
-{
-	struct node *x = node_get(r, id);
-
-	if (x != NULL) {
-		if (x->level < 0)
-			x->level = (signed char)level;
-		return HB_OK;
-	}
-	if ((x = node_add(r, id)) == NULL)
-		return HB_ENOMEM;
-	x->level = (signed char)level;
-	if (r->npending == r->pending_cap) {
-		long nc = r->pending_cap ? 2 * r->pending_cap : 256;
-		long *nt = realloc(r->pending, (size_t)nc * sizeof *nt);
-
-		if (nt == NULL)
-			return HB_ENOMEM;
-		r->pending = nt;
-		r->pending_cap = nc;
-	}
-	r->pending[r->npending++] = id;
-	return HB_OK;
+	return r->err = sweep_refine_note(r, id, r->buf, len, (int64_t)off);
 }
 
 /* Lattice strides: one axis 1; two axes M2 and 1. */
@@ -221,12 +98,12 @@ mixed(const struct refine_state *r, long c, long s)
 	strides(r->sw, st);
 	for (int m = 0; m < (1 << d); m++) {
 		long id = c;
-		const struct node *x;
+		const struct refine_node *x;
 
 		for (int k = 0; k < d; k++)
 			if (m & (1 << k))
 				id += s * st[k];
-		x = node_get(r, id);
+		x = sweep_refine_node_get(r, id);
 		if (x == NULL || !x->have)
 			return 0;   /* cannot happen: a round computes every corner */
 		if (m == 0)
@@ -260,7 +137,8 @@ edges(const struct refine_state *r, const long *cells, long ncells, long **out)
 		for (int k = 0; k < d; k++)
 			for (int a = 0; a < (d == 2 ? 2 : 1); a++) {
 				long p = cells[i] + (d == 2 ? a * st[1 - k] : 0);
-				const struct node *x = node_get(r, p), *y = node_get(r, p + st[k]);
+				const struct refine_node *x = sweep_refine_node_get(r, p);
+				const struct refine_node *y = sweep_refine_node_get(r, p + st[k]);
 
 				if (x && y && x->cls != y->cls)
 					e[ne++] = p * 2 + k;
@@ -350,7 +228,7 @@ write_files(struct refine_state *r, const char *dir, const long *e, long ne, lon
 		fprintf(coll, "%s\n", chdr);
 	}
 	for (long i = 0; i < nid && rc == HB_OK; i++) {
-		const struct node *x = node_get(r, ids[i]);
+		const struct refine_node *x = sweep_refine_node_get(r, ids[i]);
 		const char *p;
 
 		if (x->len + 1 > r->buf_cap) {
@@ -412,8 +290,8 @@ write_files(struct refine_state *r, const char *dir, const long *e, long ne, lon
 			fputc(',', bnd);
 			fputs(sweep_axis_text(&sw->ax[j], sweep_axis_index(sw, a, j), t, sizeof t), bnd);
 		}
-		csv_put_num(bnd, node_get(r, a)->v);
-		csv_put_num(bnd, node_get(r, b)->v);
+		csv_put_num(bnd, sweep_refine_node_get(r, a)->v);
+		csv_put_num(bnd, sweep_refine_node_get(r, b)->v);
 		fputc('\n', bnd);
 	}
 out:
@@ -517,7 +395,7 @@ sweep_refine_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, ch
 	computing = 1;   /* an HB_EINVAL from here to the files is a refused point */
 	/* Round 0: the grid, then its mixed cells. */
 	for (long g = 0; g < sweep_refine_grid_points(sw) && rc == HB_OK; g++)
-		rc = request(&r, sweep_refine_grid_id(sw, g), 0);
+		rc = sweep_refine_request(&r, sweep_refine_grid_id(sw, g), 0);
 	if (rc == HB_OK)
 		rc = compute(&r, o, fd, jpath, &pr, t0, msg, n);
 	if (rc != HB_OK)
@@ -548,7 +426,7 @@ sweep_refine_run(const struct hb_sweep *sw, const struct hb_sweep_options *o, ch
 				long id = cells[i] + (q % 3) * h * (d == 1 ? 1 : st[1]) +
 				          (d == 2 ? (q / 3) * h * st[0] : 0);
 
-				rc = request(&r, id, lv);
+				rc = sweep_refine_request(&r, id, lv);
 			}
 		if (rc == HB_OK)
 			rc = compute(&r, o, fd, jpath, &pr, t0, msg, n);
