@@ -250,7 +250,7 @@ hybounce_main(int argc, char **argv)
 			free(sets);
 			return 0;
 		case 'V':
-			/* "hybounce 0.2.0 (commit 1a2b3c4)": the release, then the
+			/* "hybounce 0.2.0 (commit HASH)": the release, then the
 			 * commit of the engine it runs (version.h) */
 			printf("hybounce %d.%d.%d (commit %s)\n", HB_VERSION_MAJOR, HB_VERSION_MINOR,
 			    HB_VERSION_PATCH, hb_version_commit());

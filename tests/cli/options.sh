@@ -16,7 +16,7 @@ else notok "--help mentions every option (exit $rc, missing:$missing)"; fi
 "$BIN" -h >"$T/h" 2>&1
 if cmp -s "$T/h" "$T/help"; then ok "-h is --help"; else notok "-h is --help"; fi
 
-# "hybounce 0.2.0 (commit 1a2b3c4)": the VERSION file's number, then the
+# "hybounce 0.2.0 (commit HASH)": the VERSION file's number, then the
 # commit (abbreviated, -dirty for a modified tree; unknown outside git)
 want=$(cat VERSION)
 got=$("$BIN" --version 2>&1)
