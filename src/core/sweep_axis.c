@@ -425,29 +425,37 @@ hb_sweep_vary(struct hb_sweep *sw, const char *arg, char *msg, size_t n)
 	return HB_OK;
 }
 
+/* See sweep_impl.h. */
 int
-hb_sweep_vary_from_preset(struct hb_sweep *sw, const char *text, const char *name,
-                       char *msg, size_t n)
+sweep_tagged_lines(struct hb_sweep *sw, const char *text, const char *name, const char *tag,
+                   int (*take)(struct hb_sweep *, const char *, char *, size_t), char *msg, size_t n)
 {
 	const char *p = text;
+	size_t tl = strlen(tag);
 	int line = 0;
-	static const char tag[] = "; sweep: --vary ";
 
 	while (*p) {
 		const char *end = strchr(p, '\n');
 		size_t len = end ? (size_t)(end - p) : strlen(p);
 
 		line++;
-		if (len > strlen(tag) && strncmp(p, tag, strlen(tag)) == 0) {
+		if (len > tl && strncmp(p, tag, tl) == 0) {
 			char arg[512], m[512];
 
-			snprintf(arg, sizeof arg, "%.*s", (int)(len - strlen(tag)), p + strlen(tag));
+			snprintf(arg, sizeof arg, "%.*s", (int)(len - tl), p + tl);
 			m[0] = '\0';
-			if (hb_sweep_vary(sw, arg, m, sizeof m) != HB_OK)
+			if (take(sw, arg, m, sizeof m) != HB_OK)
 				return hb_status_set(msg, n, HB_EINVAL, "%s:%d: %s", name, line, m);
 		}
 		p = end ? end + 1 : p + len;
 	}
 	return HB_OK;
+}
+
+int
+hb_sweep_vary_from_preset(struct hb_sweep *sw, const char *text, const char *name,
+                       char *msg, size_t n)
+{
+	return sweep_tagged_lines(sw, text, name, "; sweep: --vary ", hb_sweep_vary, msg, n);
 }
 

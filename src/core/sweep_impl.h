@@ -98,6 +98,15 @@ sweep_axis_index(const struct hb_sweep *sw, long id, int k);
 void
 sweep_check_scene(const struct hb_sweep *sw, int k, struct hb_scene *sc);
 
+/*
+ * Each line of a preset's text that begins with tag ("; sweep: --vary "),
+ * its rest given to take (hb_sweep_vary, hb_sweep_refine); a refusal as
+ * "NAME:LINE: why" (name stands for the file).
+ */
+int
+sweep_tagged_lines(struct hb_sweep *sw, const char *text, const char *name, const char *tag,
+                   int (*take)(struct hb_sweep *, const char *, char *, size_t), char *msg, size_t n);
+
 /* A range FROM:TO:N[:log] (a->spec) into a->num; others: the other axes' points. */
 int
 sweep_parse_range(struct axis *a, const struct hb_scene *sc, const struct hb_sweep *sw,

@@ -251,25 +251,7 @@ int
 hb_sweep_refine_from_preset(struct hb_sweep *sw, const char *text, const char *name,
                             char *msg, size_t n)
 {
-	const char *p = text;
-	int line = 0;
-
-	while (*p) {
-		const char *end = strchr(p, '\n');
-		size_t len = end ? (size_t)(end - p) : strlen(p), tl = strlen(REFINE_TAG);
-
-		line++;
-		if (len > tl && strncmp(p, REFINE_TAG, tl) == 0) {
-			char arg[256], m[512];
-
-			snprintf(arg, sizeof arg, "%.*s", (int)(len - tl), p + tl);
-			m[0] = '\0';
-			if (hb_sweep_refine(sw, arg, m, sizeof m) != HB_OK)
-				return hb_status_set(msg, n, HB_EINVAL, "%s:%d: %s", name, line, m);
-		}
-		p = end ? end + 1 : p + len;
-	}
-	return HB_OK;
+	return sweep_tagged_lines(sw, text, name, REFINE_TAG, hb_sweep_refine, msg, n);
 }
 
 int
