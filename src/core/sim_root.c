@@ -19,6 +19,21 @@ counted(struct hbs_root *r, double h)
 	return r->value(h, r->ctx);
 }
 
+/* The function at x moves the bracket's end on its side there: xl (not crossed) or xu. */
+static int
+move_end(struct hbs_root *r, double x, double *xl, double *xu)
+{
+	double g = counted(r, x);
+
+	if (!isfinite(g))
+		return GSL_FAILURE;
+	if (g > 0)
+		*xl = x;
+	else
+		*xu = x;
+	return GSL_SUCCESS;
+}
+
 /*
  * GSL's root solvers call their error handler (process-wide, the host's:
  * GSL's default aborts) for a function value that is not finite and for a
@@ -153,27 +168,14 @@ hbs_root_bracket(struct hbs_root *r, double lo, double hi, double htol, double *
 			if (w > tol && g1 != g2) {
 				/* the root the two probes' secant gives, and a point just beyond it */
 				double r2 = p1 - g1 * (p2 - p1) / (g2 - g1);
-				double q = g1 > 0 ? r2 + 0.5 * tol : r2 - 0.5 * tol, gq;
+				double q = g1 > 0 ? r2 + 0.5 * tol : r2 - 0.5 * tol;
 
-				if (q > xl && q < xu) {
-					if (!isfinite(gq = counted(r, q)))
-						return GSL_FAILURE;
-					if (gq > 0)
-						xl = q;
-					else
-						xu = q;
-				}
-			}
-			if (xu - xl > tol && xu - xl > 0.5 * w) { /* else a bisection: the bracket at least halves */
-				double m = 0.5 * (xl + xu), gm = counted(r, m);
-
-				if (!isfinite(gm))
+				if (q > xl && q < xu && move_end(r, q, &xl, &xu) != GSL_SUCCESS)
 					return GSL_FAILURE;
-				if (gm > 0)
-					xl = m;
-				else
-					xu = m;
 			}
+			/* else a bisection: the bracket at least halves */
+			if (xu - xl > tol && xu - xl > 0.5 * w && move_end(r, 0.5 * (xl + xu), &xl, &xu) != GSL_SUCCESS)
+				return GSL_FAILURE;
 			if (xu - xl <= tol)
 				break;
 			if ((rc = brent_set(&bf, &F, xl, xu)) != GSL_SUCCESS)
@@ -204,7 +206,7 @@ hbs_root_bracket(struct hbs_root *r, double lo, double hi, double htol, double *
 int
 hbs_root_bisect(struct hbs_root *r, double lo, double hi, double htol, double *a, double *b)
 {
-	double tol = fmax(4.0 * DBL_EPSILON * fmax(fabs(r->t0 + hi), 1e-300), htol), g;
+	double tol = fmax(4.0 * DBL_EPSILON * fmax(fabs(r->t0 + hi), 1e-300), htol);
 	int it = 0;
 
 	if (!(counted(r, lo) > 0) || !(counted(r, hi) < 0))
@@ -214,12 +216,8 @@ hbs_root_bisect(struct hbs_root *r, double lo, double hi, double htol, double *a
 
 		if (!(m > lo && m < hi))
 			break;
-		if (!isfinite(g = counted(r, m)))
+		if (move_end(r, m, &lo, &hi) != GSL_SUCCESS)
 			return GSL_FAILURE;
-		if (g > 0)
-			lo = m;
-		else
-			hi = m;
 	}
 	*a = lo;
 	*b = hi;
