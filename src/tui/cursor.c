@@ -57,19 +57,17 @@ cursor_clamp(struct app *a)
 }
 
 /*
- * Collision i is in progress at the cursor.  A two-body scene's contact is
+ * Collision c is in progress at the cursor.  A two-body scene's contact is
  * the flow interval j the cursor's sample lies in.  A chain's interfaces
  * are in contact side by side, and a collision ends in the interval of its
  * separation, with other interfaces' jumps between: its times place it,
  * t_e <= t <= t_s (t_s is now for the contact in progress).
  */
 int
-coll_in_progress(const struct app *a, long i)
+coll_in_progress(const struct app *a, const struct hb_collision *c)
 {
 	const struct hb_arc *arc = hb_sim_arc(a->sim);
 	const struct hb_arc_sample *s;
-	struct hb_collision live;
-	const struct hb_collision *c = app_collision(a, i, &live);
 
 	if (c == NULL || hb_arc_len(arc) == 0)
 		return 0;
@@ -87,14 +85,14 @@ coll_in_progress(const struct app *a, long i)
 long
 coll_at_cursor(const struct app *a)
 {
-	long best = -1;
+	long best = -1, n = app_ncollisions(a);
 	double bt = 0;
 
-	for (long i = 0; i < app_ncollisions(a); i++) {
+	for (long i = 0; i < n; i++) {
 		struct hb_collision live;
 		const struct hb_collision *c = app_collision(a, i, &live);
 
-		if (c == NULL || !table_shows(a, i) || !coll_in_progress(a, i))
+		if (c == NULL || !table_shows(a, i) || !coll_in_progress(a, c))
 			continue;
 		if (hb_sim_scene(a->sim)->chain.n == 0)
 			return i;
@@ -162,11 +160,11 @@ table_nrows(const struct app *a)
 long
 table_row_of(const struct app *a, long i)
 {
-	long r = 0;
+	long r = 0, n = app_ncollisions(a);
 
 	if (table_iface(a) < 0)
 		return i;
-	for (long j = 0; j < i && j < app_ncollisions(a); j++)
+	for (long j = 0; j < i && j < n; j++)
 		r += table_shows(a, j);
 	return r;
 }

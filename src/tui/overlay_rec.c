@@ -76,7 +76,7 @@ fitov_plot_recording(const struct app *a, struct canvas *c, double t0, double t1
 		if (t >= t0 && t <= t1)
 			canvas_mark(c, canvas_col(c, t), 0, 'o', 3);
 	}
-	for (long i = 0; i < app_ncollisions(a); i++) {
+	for (long i = 0, n = app_ncollisions(a); i < n; i++) {
 		const struct hb_collision *col = app_collision(a, i, &live);
 
 		if (col != NULL && col->te >= t0 && col->te <= t1)

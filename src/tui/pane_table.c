@@ -272,7 +272,7 @@ pane_table_draw(const struct app *a)
 			double v = value(c, p, cols[k], delta[k]);
 			const char *nm = cols[k]->name;
 			if (cols[k]->index)
-				snprintf(cell, sizeof cell, "%s%ld", coll_in_progress(a, i) ? ">" : " ", c->i);
+				snprintf(cell, sizeof cell, "%s%ld", coll_in_progress(a, c) ? ">" : " ", c->i);
 			else if (cols[k] == &kcol)
 				snprintf(cell, sizeof cell, "%d", c->k);
 			else if (!c->complete && strcmp(nm, "e") == 0 && !delta[k])

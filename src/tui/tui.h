@@ -189,7 +189,7 @@ char *demo_hint(const struct app *a, char *buf, size_t n);
 void cursor_set(struct app *a, size_t i);
 void cursor_clamp(struct app *a);                 /* keeps it < hb_arc_len */
 long coll_at_cursor(const struct app *a);         /* the row's collision at the cursor, or -1 */
-int coll_in_progress(const struct app *a, long i); /* collision i is in progress at the cursor */
+int coll_in_progress(const struct app *a, const struct hb_collision *c); /* c is in progress at the cursor */
 void cursor_to_collision(struct app *a, long i);  /* to its commencement; selects its row */
 /*
  * The collisions table's rows (cursor.c): every collision, or with i on a
