@@ -68,16 +68,16 @@ check_preset(const char *name, struct seen *n)
 		struct clusters *c = &s->cx;
 
 		cr_assert_eq(hb_sim_advance(s, 1, 0.0), HB_OK, "%s: %s", name, hb_sim_errmsg(s));
-		if (s->setup || c->nact == 0 || c->dim == 0 || !(s->t > c->t0))
+		if (s->setup || c->nact == 0 || c->dim == 0 || !(s->t > s->t0))
 			continue; /* no clusters' step just taken, or their layout is to be made again */
 		all = realloc(all, (size_t)c->nf * sizeof *all);
 		mid = realloc(mid, (size_t)c->dim * sizeof *mid);
 		cr_assert(all != NULL && mid != NULL);
 		for (int i = 0; i < c->dim; i++)
-			mid[i] = 0.5 * (c->u0[i] + c->u[i]);
-		compare_at(s, s->t, c->u, all, n);
-		compare_at(s, c->t0, c->u0, all, n);
-		compare_at(s, 0.5 * (c->t0 + s->t), mid, all, n);
+			mid[i] = 0.5 * (s->u0[i] + s->u[i]);
+		compare_at(s, s->t, s->u, all, n);
+		compare_at(s, s->t0, s->u0, all, n);
+		compare_at(s, 0.5 * (s->t0 + s->t), mid, all, n);
 	}
 	cr_assert_neq(hb_sim_end(s), HB_SIM_RUNNING, "%s did not end in %ld steps", name, steps);
 	free(all);

@@ -3,8 +3,8 @@
  * known.c - the right-hand side where the step just accepted evaluated it
  * (see known.h).
  *
- * Where it saves: a re-step of the location from the step's start (the
- * pair's restep, a chain's hbs_cluster_restep) evaluated f at the start
+ * Where it saves: a re-step of the location from the step's start (sim_restep.c)
+ * evaluated f at the start
  * again, one evaluation in 13 of rk8pd's; a Hermite guide evaluated f at
  * both ends of the step.  What it costs: a few stores a step, and a
  * comparison of the state where a location asks.

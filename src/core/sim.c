@@ -43,12 +43,14 @@
  * stepper in contact checks the stiffness of the flow (stiffness()):
  * run.stepper = auto then goes over to bsimp for the contacts.
  *
- * What is per interface is written once for this driver and a chain's
- * clusters' (sim_cluster_step.c; docs/chains.md section 8a): the watched
- * terms and the mode of a step (sim_iface.h), the noise filter of a
- * crossing (hbs_candidate), a contact's scales (hbs_contact_scale), the
- * stepper and one accepted step of the evolver (sim_flow.c), and the
- * stiffness check (sim_stiff.c).
+ * This driver steps every numeric flow interval: a two-body scene's, in
+ * the layouts of sim_flow.c, and a chain's clusters of contacts, whose
+ * system sim_cluster*.c builds (docs/chains.md section 8a): what the
+ * driver asks of a system (its right-hand side, its watched functions,
+ * the state unpacked, a jump) is the phase's.  What is per interface is
+ * written once for both systems: the watched terms and the mode of a step
+ * (sim_iface.h), a contact's scales (hbs_contact_scale), the stiffness of
+ * one interface's flow (sim_stiff.c).
  *
  * The state is that of a chain (docs/chains.md, sim_chain.c): bodies and
  * the interfaces between them, each interface with its own law, effective
@@ -122,7 +124,7 @@ setup_interval(struct hb_sim *s)
 	s->setup = 0;
 	s->ntiny = 0;
 	s->msign = s->mforce = 0;
-	memset(s->gmax, 0, sizeof s->gmax);
+	memset(s->gmax, 0, (size_t)s->dim.f * sizeof *s->gmax);
 	s->vmax = fabs(I->v);
 	s->closed = !I->q && (s->chain || ((sc->run.reduce & HB_REDUCE_FLIGHT) &&
 	            hb_scene_Fer_constant(sc, s->t, sc->run.T) &&
@@ -197,7 +199,11 @@ set_mode(struct hb_sim *s)
 	}
 }
 
-/* One accepted step of the numeric phase, with what follows from it. */
+/*
+ * One accepted step of the numeric phase, with what follows from it: the
+ * pair's, and a chain's clusters in contact (sim_cluster_step.c begins
+ * their step).
+ */
 static int
 numeric_step(struct hb_sim *s)
 {
@@ -206,26 +212,33 @@ numeric_step(struct hb_sim *s)
 	double t = s->t, t1 = sc->run.T, kinks[4];
 	int nk, load_kink = 0, rc;
 
-	/* a state already outside C where the interval begins jumps at once (rule R2) */
-	{
+	if (s->chain) {
+		int jumped = 0;
+
+		if ((rc = hbs_cluster_step_begin(s, &t1, &jumped)) || jumped)
+			return rc;
+	} else {
+		/* a state already outside C where the interval begins jumps at once (rule R2) */
 		double f0 = hbs_watch_indicator(s, p, s->t, s->u);
 
 		if (f0 < 0.0)
 			return hbs_jump(s, HB_LOCATE_START, 0, 0.0, f0, f0);
-	}
-	nk = sc->run.kinks ? hb_scene_load_kinks(sc, t, t1, kinks, 4) : 0;
-	if (nk > 0) {
-		t1 = kinks[0];
-		load_kink = 1;
+		nk = sc->run.kinks ? hb_scene_load_kinks(sc, t, t1, kinks, 4) : 0;
+		if (nk > 0) {
+			t1 = kinks[0];
+			load_kink = 1;
+		}
 	}
 	if (p->q && sc->run.h_max > 0 && t + sc->run.h_max < t1) {
 		t1 = t + sc->run.h_max;
 		load_kink = 0;
 	}
-	memcpy(s->u0, s->u, sizeof s->u);
+	memcpy(s->u0, s->u, (size_t)p->L.dim * sizeof *s->u);
 	s->t0 = t;
-	s->hug = hbs_hugging(s, s->u0);
-	set_mode(s);
+	if (!s->chain) {
+		s->hug = hbs_hugging(s, s->u0);
+		set_mode(s);
+	}
 	if ((rc = hbs_evolve(s, &p->known, p->d->e, p->d->c, p->d->s, &p->sys, s->t0, s->u0, t1, &t,
 	                     &s->h, s->u, &s->H)))
 		return rc;
@@ -238,10 +251,11 @@ numeric_step(struct hb_sim *s)
 		/* on Phi = 0 to the noise, the interpolant's error would exceed the noise: re-step */
 		s->use_dense = !s->hug && hb_dop853_last(p->d->s, &dt0, &dh) == 0 && dt0 == s->t0;
 	}
-	memcpy(s->u1, s->u, sizeof s->u);
+	memcpy(s->u1, s->u, (size_t)p->L.dim * sizeof *s->u);
 	if ((rc = hbs_after_step(s, load_kink && t == t1)))
 		return rc;
-	if (s->end == HB_SIM_RUNNING && !s->setup && (rc = hbs_stiffness(s)))
+	if (s->end == HB_SIM_RUNNING && !s->setup &&
+	    (rc = s->chain ? hbs_cluster_stiffness(s) : hbs_stiffness(s)))
 		return rc;
 	if (s->end == HB_SIM_RUNNING && !s->setup && s->t >= sc->run.T) {
 		/* the horizon: the last sample is the end */
@@ -326,7 +340,7 @@ hb_sim_advance(struct hb_sim *s, long max_steps, double max_seconds)
 			if (s->setup && (rc = hbs_cluster_setup(s)))
 				break;
 			s->work++;
-			rc = s->cx.nact ? hbs_cluster_step(s) : hbs_chain_flight(s);
+			rc = s->cx.nact ? numeric_step(s) : hbs_chain_flight(s);
 			if (rc)
 				break;
 			continue;

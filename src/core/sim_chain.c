@@ -253,7 +253,7 @@ hbs_chain_reset(struct hb_sim *s)
 		struct iface *J = &s->ifc[i];
 
 		memset(&J->q, 0, sizeof *J - offsetof(struct iface, q));
-		J->over = J->msign = 0;
+		J->over = J->msign = J->mforce = 0;
 		gap_at(s, J, 0.0, &J->x, &J->v);
 	}
 	hbs_chain_activate(s, s->nif - 1);
@@ -263,7 +263,7 @@ hbs_chain_reset(struct hb_sim *s)
 	for (i = 0; i < s->nif; i++)
 		s->ifc[i].off = -1;
 	s->cx.nact = s->cx.ncl = s->cx.nwatch = s->cx.dim = 0;
-	s->cx.h = 0.0;
+	s->h = 0.0;
 	s->nlim = 0;
 	s->limnote[0] = '\0';
 }

@@ -7,7 +7,8 @@
  * maximal runs of bodies joined by interfaces in contact, with the floor
  * when its interface is in contact.  Every interface in contact carries a
  * block (x_c, v, z..., W, J_Fc, J_Fe) in one ODE, integrated in scaled
- * variables by the scene's explicit stepper (rk8pd by default):
+ * variables by the engine's driver (sim.c, sim_locate.c) with the scene's
+ * stepper (rk8pd by default, bsimp once stiff under auto):
  *
  *     x_c,k' = v_k,   z_k' = Psi_k,   W_k' = Phi_k v_k,   J_Fc,k' = -Phi_k,
  *     J_Fe,k' = F_e,r,k,
@@ -27,9 +28,8 @@
  * stepper restarts), v_k (the extremum of x_c,k) and dPhi_k/dt (that of
  * F_c,k, its neighbours' forces in dv_k/dt); for one in flight
  * next to a cluster the indicator max(x_k, v_k) of its gap (an event).
- * A crossing is bracketed on re-steps from the step's start (one step of
- * the same method of length h) by the engine's root finder (sim_root.c,
- * the pair's) down to a few ulps of t; the earliest wins, the lowest k on a tie.  A gap between two
+ * A crossing is located by the engine's driver as a two-body contact's
+ * (sim_locate.c); the earliest wins, the lowest k on a tie.  A gap between two
  * flying bodies closes at a time known in closed form when the interval
  * begins: it is a target of the steps.  An event ends the interval at the
  * bracket's end in D, and the jump (sim_record.c) rebuilds the clusters;
@@ -85,29 +85,9 @@ hbs_cluster_free(struct hb_sim *s)
 {
 	struct clusters *c = &s->cx;
 
-	if (c->step)
-		gsl_odeiv2_step_free(c->step);
-	if (c->loc)
-		gsl_odeiv2_step_free(c->loc);
-	if (c->ctl)
-		gsl_odeiv2_control_free(c->ctl);
-	if (c->ev)
-		gsl_odeiv2_evolve_free(c->ev);
 	free(c->act);
 	free(c->cl);
 	free(c->wif);
-	free(c->u);
-	free(c->u0);
-	free(c->u1);
-	free(c->scale);
-	free(c->iscale);
-	free(c->yerr);
-	free(c->d0);
-	free(c->d1);
-	free(c->rsu);
-	free(c->f0);
-	free(c->fe);
-	free(c->gmax);
 	free(c->fkind);
 	free(c->fif);
 	free(c->by);
@@ -133,7 +113,7 @@ cluster_bodies(const struct hb_sim *s, const struct cluster *C, double t, const 
 	c->bu[C->b0] = 0.0;
 	for (i = C->b0; i < C->b1; i++) {
 		const struct iface *I = &s->ifc[if_above(s, i)];
-		double x = I->xe + u[I->off] * c->scale[I->off], v = u[I->off + 1] * c->scale[I->off + 1];
+		double x = I->xe + u[I->off] * s->scale[I->off], v = u[I->off + 1] * s->scale[I->off + 1];
 
 		r += s->body[i].up + x + s->body[i + 1].dn;
 		w += v;
@@ -143,8 +123,8 @@ cluster_bodies(const struct hb_sim *s, const struct cluster *C, double t, const 
 	if (C->floor) {
 		const struct iface *I = &s->ifc[if_below(s, C->b0)];
 
-		y0 = I->xe + u[I->off] * c->scale[I->off] + s->body[C->b0].dn;
-		u0 = u[I->off + 1] * c->scale[I->off + 1];
+		y0 = I->xe + u[I->off] * s->scale[I->off] + s->body[C->b0].dn;
+		u0 = u[I->off + 1] * s->scale[I->off + 1];
 	} else {
 		double tau = t - C->t0;
 
@@ -200,7 +180,7 @@ hbs_cluster_rhs(double t, const double u[], double du[], void *params)
 {
 	struct hb_sim *s = params;
 	const struct clusters *c = &s->cx;
-	const double *sc = c->scale, *is = c->iscale;
+	const double *sc = s->scale, *is = s->iscale;
 	double bad = 0.0;
 	int p, i;
 
@@ -246,27 +226,27 @@ hbs_cluster_rhs(double t, const double u[], double du[], void *params)
 
 /* Phi of interface I (in contact) at the clusters' scaled state u. */
 static inline double
-iface_phi(const struct clusters *c, const struct iface *I, const double *u)
+iface_phi(const struct hb_sim *s, const struct iface *I, const double *u)
 {
 	int o = I->off, nz = I->law->n_z, i;
 	double z[HB_LAW_MAX_Z];
 
 	for (i = 0; i < nz; i++)
-		z[i] = u[o + 2 + i] * c->scale[o + 2 + i];
-	return hbs_iface_phi(I, u[o] * c->scale[o], nz ? z : NULL, u[o + 1] * c->scale[o + 1]);
+		z[i] = u[o + 2 + i] * s->scale[o + 2 + i];
+	return hbs_iface_phi(I, u[o] * s->scale[o], nz ? z : NULL, u[o + 1] * s->scale[o + 1]);
 }
 
 /* Interface I's (x_c, z, v), unscaled from u; z zero past its n_z. */
 static inline void
-iface_state(const struct clusters *c, const struct iface *I, const double *u, double *xc, double *z,
+iface_state(const struct hb_sim *s, const struct iface *I, const double *u, double *xc, double *z,
             double *v)
 {
 	int o = I->off, nz = I->law->n_z, i;
 
 	for (i = 0; i < HB_LAW_MAX_Z; i++)
-		z[i] = i < nz ? u[o + 2 + i] * c->scale[o + 2 + i] : 0.0;
-	*xc = u[o] * c->scale[o];
-	*v = u[o + 1] * c->scale[o + 1];
+		z[i] = i < nz ? u[o + 2 + i] * s->scale[o + 2 + i] : 0.0;
+	*xc = u[o] * s->scale[o];
+	*v = u[o + 1] * s->scale[o + 1];
 }
 
 /*
@@ -305,7 +285,7 @@ hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f)
 	for (p = 0; p < c->nact; p++) { /* the forces first: dPhi/dt needs the neighbours' */
 		struct iface *I = &s->ifc[c->act[p]];
 
-		I->tphi = iface_phi(c, I, u);
+		I->tphi = iface_phi(s, I, u);
 	}
 	for (p = 0, w = 0; p < c->nact || w < c->nwatch;) {
 		if (w >= c->nwatch || (p < c->nact && c->act[p] < c->wif[w])) {
@@ -314,7 +294,7 @@ hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f)
 			int nk = I->law->n_kinks && s->sc.run.kinks ? I->law->n_kinks : 0;
 			double z[HB_LAW_MAX_Z], xc, v;
 
-			iface_state(c, I, u, &xc, z, &v);
+			iface_state(s, I, u, &xc, z, &v);
 			f[n++] = -fmin(I->tphi, v);
 			if (nk) {
 				hbs_iface_kinks(I, xc, z, v, &f[n]);
@@ -359,23 +339,23 @@ hbs_cluster_watch_one(struct hb_sim *s, double t, const double *u, int fi)
 	}
 	switch (c->fkind[fi]) {
 	case FUN_EVENT:
-		return -fmin(iface_phi(c, I, u), u[I->off + 1] * c->scale[I->off + 1]);
+		return -fmin(iface_phi(s, I, u), u[I->off + 1] * s->scale[I->off + 1]);
 	case FUN_XCMAX:
-		return u[I->off + 1] * c->scale[I->off + 1];
+		return u[I->off + 1] * s->scale[I->off + 1];
 	case FUN_KINK: {
 		double g[HB_LAW_MAX_KINKS];
 
 		for (j = 1; c->fkind[fi - j] == FUN_KINK; j++) /* its index among its interface's */
 			;
-		iface_state(c, I, u, &xc, z, &v);
+		iface_state(s, I, u, &xc, z, &v);
 		hbs_iface_kinks(I, xc, z, v, g);
 		return g[j - 1];
 	}
 	default: /* FUN_FCMAX */
-		iface_state(c, I, u, &xc, z, &v);
-		return iface_dphidt(s, k, xc, z, v, iface_phi(c, I, u),
-		                    k > 0 && s->ifc[k - 1].off >= 0 ? iface_phi(c, &s->ifc[k - 1], u) : 0.0,
-		                    k + 1 < s->nif && s->ifc[k + 1].off >= 0 ? iface_phi(c, &s->ifc[k + 1], u)
+		iface_state(s, I, u, &xc, z, &v);
+		return iface_dphidt(s, k, xc, z, v, iface_phi(s, I, u),
+		                    k > 0 && s->ifc[k - 1].off >= 0 ? iface_phi(s, &s->ifc[k - 1], u) : 0.0,
+		                    k + 1 < s->nif && s->ifc[k + 1].off >= 0 ? iface_phi(s, &s->ifc[k + 1], u)
 		                                                             : 0.0);
 	}
 }
@@ -392,14 +372,14 @@ hbs_cluster_unpack(struct hb_sim *s, double t, const double *u)
 		struct iface *I = &s->ifc[c->act[p]];
 		int o = I->off, nz = I->law->n_z;
 
-		I->xc = u[o] * c->scale[o];
-		I->v = u[o + 1] * c->scale[o + 1];
+		I->xc = u[o] * s->scale[o];
+		I->v = u[o + 1] * s->scale[o + 1];
 		I->x = I->xe + I->xc;
 		for (i = 0; i < nz; i++)
-			I->z[i] = u[o + 2 + i] * c->scale[o + 2 + i];
-		I->W = u[o + 2 + nz] * c->scale[o + 2 + nz];
-		I->JFc = u[o + 3 + nz] * c->scale[o + 3 + nz];
-		I->JFe = u[o + 4 + nz] * c->scale[o + 4 + nz];
+			I->z[i] = u[o + 2 + i] * s->scale[o + 2 + i];
+		I->W = u[o + 2 + nz] * s->scale[o + 2 + nz];
+		I->JFc = u[o + 3 + nz] * s->scale[o + 3 + nz];
+		I->JFe = u[o + 4 + nz] * s->scale[o + 4 + nz];
 		I->Wc = I->Wc0 - I->W;
 		if (fabs(I->xc) > I->xcmax)
 			I->xcmax = fabs(I->xc);
@@ -433,7 +413,7 @@ hbs_cluster_sync(struct hb_sim *s)
 	for (i = 0; i < c->ncl; i++) {
 		const struct cluster *C = &c->cl[i];
 
-		cluster_bodies(s, C, s->t, c->u);
+		cluster_bodies(s, C, s->t, s->u);
 		for (b = C->b0; b <= C->b1; b++)
 			hbs_body_set(&s->body[b], s->t, c->by[b], c->bu[b]);
 	}

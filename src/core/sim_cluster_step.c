@@ -1,10 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim_cluster_step.c - a chain's clusters of contacts: a flow interval
- * begun (the blocks of the ODE laid out, scaled and packed, the earliest
- * closing of a gap between flying bodies), and one accepted step with
- * the earliest crossing of a watched function (located by
- * sim_cluster_locate.c; see sim_cluster.c for the method).
+ * begun (the blocks of the ODE laid out, scaled and packed into the
+ * engine's arrays, its phase made for the engine's driver, the earliest
+ * closing of a gap between flying bodies), what begins each step (a jump
+ * due at once, the step's target, the modes), and an interface's jump
+ * (the steps and the location are the engine's, sim.c and sim_locate.c;
+ * see sim_cluster.c for the method).
  */
 #include <float.h>
 
@@ -18,63 +20,29 @@ hbs_chain_stepper_ok(int stepper)
 	return stepper == HB_STEPPER_AUTO || stepper == HB_STEPPER_BSIMP || hbs_explicit_stepper(stepper);
 }
 
-/* (Re)allocates the ODE's workspace for dimension n. */
+/*
+ * The driver of the clusters' ODE of dimension n (the engine's, sim.c and
+ * sim_locate.c, stepping a phase of this system), made again where the
+ * dimension or the stepper changed; room for nf watched functions.
+ */
 static int
-alloc_ode(struct hb_sim *s, int n)
+build_phase(struct hb_sim *s, int n, int nf)
 {
 	struct clusters *c = &s->cx;
-	const struct hb_scene *sc = &s->sc;
 	const int st = s->stepper[1]; /* the scene's, or rk8pd for auto until it goes over to bsimp */
-	const gsl_odeiv2_step_type *T = hbs_stepper_type(st);
-	int cap = c->capdim;
 
-	if (n > cap) {
-		int m = cap > 0 ? cap : 16;
-		double **arr[] = { &c->u, &c->u0, &c->u1, &c->scale, &c->iscale, &c->yerr, &c->d0, &c->d1 };
-
-		while (m < n)
-			m *= 2;
-		for (size_t i = 0; i < sizeof arr / sizeof arr[0]; i++) {
-			double *q = realloc(*arr[i], (size_t)m * sizeof(double));
-
-			if (q == NULL)
-				return HB_ENOMEM;
-			*arr[i] = q;
-		}
-		{
-			double *q = realloc(c->rsu, (size_t)CCACHE * (size_t)m * sizeof(double));
-
-			if (q == NULL)
-				return HB_ENOMEM;
-			c->rsu = q;
-		}
-		c->capdim = m;
-	}
-	if (c->built_dim == n && c->built_stepper == st && c->step != NULL) {
-		gsl_odeiv2_control_init(c->ctl, sc->run.atol, sc->run.rtol, 1.0, 0.0);
-		return 0;
-	}
-	if (c->step)
-		gsl_odeiv2_step_free(c->step);
-	if (c->loc)
-		gsl_odeiv2_step_free(c->loc);
-	if (c->ev)
-		gsl_odeiv2_evolve_free(c->ev);
-	c->step = gsl_odeiv2_step_alloc(T, (size_t)n);
-	c->loc = gsl_odeiv2_step_alloc(T, (size_t)n);
-	c->ev = gsl_odeiv2_evolve_alloc((size_t)n);
-	if (c->ctl == NULL)
-		c->ctl = gsl_odeiv2_control_standard_new(sc->run.atol, sc->run.rtol, 1.0, 0.0);
-	else
-		gsl_odeiv2_control_init(c->ctl, sc->run.atol, sc->run.rtol, 1.0, 0.0);
-	if (c->step == NULL || c->loc == NULL || c->ev == NULL || c->ctl == NULL) {
-		c->built_dim = 0;
+	if (hbs_work_reserve(s, n, nf))
 		return HB_ENOMEM;
+	if (c->built_dim != n || c->built_stepper != st || s->cph.d == NULL) {
+		gsl_odeiv2_system sys = { hbs_cluster_rhs, hbs_cluster_jacobian, (size_t)n, s };
+
+		c->built_dim = 0;
+		if (hbs_phase_alloc_sys(s, &s->cph, &sys))
+			return HB_ENOMEM;
+		c->built_dim = n;
+		c->built_stepper = st;
 	}
-	c->sys = (gsl_odeiv2_system){ hbs_cluster_rhs, hbs_cluster_jacobian, (size_t)n, s };
-	known_init(&c->known, c->ev, c->step);
-	c->built_dim = n;
-	c->built_stepper = st;
+	s->cur = &s->cph;
 	return 0;
 }
 
@@ -116,19 +84,20 @@ cscales(struct hb_sim *s)
 		double X, Vk;
 
 		hbs_contact_scale(I, V, I->Fer, &X, &Vk);
-		c->scale[o] = X;
-		c->scale[o + 1] = Vk;
+		s->scale[o] = X;
+		s->scale[o + 1] = Vk;
 		for (i = 0; i < nz; i++)
-			c->scale[o + 2 + i] = X;
-		c->scale[o + 2 + nz] = 0.5 * I->m * Vk * Vk;
-		c->scale[o + 3 + nz] = I->m * Vk;
-		c->scale[o + 4 + nz] = I->m * Vk;
+			s->scale[o + 2 + i] = X;
+		s->scale[o + 2 + nz] = 0.5 * I->m * Vk * Vk;
+		s->scale[o + 3 + nz] = I->m * Vk;
+		s->scale[o + 4 + nz] = I->m * Vk;
 	}
 	for (i = 0; i < c->dim; i++) {
-		c->scale[i] = pow2(c->scale[i]);
-		c->iscale[i] = 1.0 / c->scale[i];
+		s->scale[i] = pow2(s->scale[i]);
+		s->iscale[i] = 1.0 / s->scale[i];
 	}
-	known_forget(&c->known); /* f of the scaled variables */
+	s->w.valid = 0; /* the watched values were of the old scales */
+	known_forget(&s->cph.known); /* f of the scaled variables */
 }
 
 /*
@@ -169,9 +138,9 @@ free_gaps(struct hb_sim *s)
 	}
 }
 
-/* Room for nf watched functions and the bodies' scratch. */
+/* Room for the bodies' scratch. */
 static int
-ensure_f(struct hb_sim *s, int nf)
+ensure_bodies(struct hb_sim *s)
 {
 	struct clusters *c = &s->cx;
 
@@ -188,27 +157,18 @@ ensure_f(struct hb_sim *s, int nf)
 		c->bu = bu;
 		c->capb = s->nbody;
 	}
-	if (nf > c->capf) {
+	if (c->capf < c->nf) {
 		int m = c->capf > 0 ? c->capf : 16;
-		double **d[] = { &c->f0, &c->fe, &c->gmax };
-		int **k[] = { &c->fkind, &c->fif };
+		int *k, *f;
 
-		while (m < nf)
+		while (m < c->nf)
 			m *= 2;
-		for (size_t i = 0; i < sizeof d / sizeof d[0]; i++) {
-			double *q = realloc(*d[i], (size_t)m * sizeof(double));
-
-			if (q == NULL)
-				return HB_ENOMEM;
-			*d[i] = q;
-		}
-		for (size_t i = 0; i < sizeof k / sizeof k[0]; i++) {
-			int *q = realloc(*k[i], (size_t)m * sizeof(int));
-
-			if (q == NULL)
-				return HB_ENOMEM;
-			*k[i] = q;
-		}
+		if ((k = realloc(c->fkind, (size_t)m * sizeof *k)) == NULL)
+			return HB_ENOMEM;
+		c->fkind = k;
+		if ((f = realloc(c->fif, (size_t)m * sizeof *f)) == NULL)
+			return HB_ENOMEM;
+		c->fif = f;
 		c->capf = m;
 	}
 	return 0;
@@ -239,10 +199,10 @@ hbs_cluster_setup(struct hb_sim *s)
 		nf += 3 + (I->law->n_kinks && s->sc.run.kinks ? I->law->n_kinks : 0);
 	}
 	nf += c->nwatch;
-	if (alloc_ode(s, n) || ensure_f(s, nf))
+	c->nf = nf;
+	if (build_phase(s, n, nf) || ensure_bodies(s))
 		return hbs_fail(s, HB_ENOMEM, "out of memory for the clusters' integrator");
 	c->dim = n;
-	c->nf = nf;
 	/* the functions' kinds and interfaces, in the order hbs_cluster_watch computes them */
 	{
 		int q = 0, w = 0, f = 0;
@@ -252,6 +212,7 @@ hbs_cluster_setup(struct hb_sim *s)
 				const struct iface *I = &s->ifc[c->act[q]];
 				int nk = I->law->n_kinks && s->sc.run.kinks ? I->law->n_kinks : 0;
 
+				s->ifc[c->act[q]].fo = f;
 				c->fif[f] = c->act[q];
 				c->fkind[f++] = FUN_EVENT;
 				for (i = 0; i < nk; i++) {
@@ -274,20 +235,21 @@ hbs_cluster_setup(struct hb_sim *s)
 		const struct iface *I = &s->ifc[c->act[p]];
 		int o = I->off, nz = I->law->n_z;
 
-		c->u[o] = I->xc * c->iscale[o];
-		c->u[o + 1] = I->v * c->iscale[o + 1];
+		s->u[o] = I->xc * s->iscale[o];
+		s->u[o + 1] = I->v * s->iscale[o + 1];
 		for (i = 0; i < nz; i++)
-			c->u[o + 2 + i] = I->z[i] * c->iscale[o + 2 + i];
-		c->u[o + 2 + nz] = I->W * c->iscale[o + 2 + nz];
-		c->u[o + 3 + nz] = I->JFc * c->iscale[o + 3 + nz];
-		c->u[o + 4 + nz] = I->JFe * c->iscale[o + 4 + nz];
+			s->u[o + 2 + i] = I->z[i] * s->iscale[o + 2 + i];
+		s->u[o + 2 + nz] = I->W * s->iscale[o + 2 + nz];
+		s->u[o + 3 + nz] = I->JFc * s->iscale[o + 3 + nz];
+		s->u[o + 4 + nz] = I->JFe * s->iscale[o + 4 + nz];
 	}
 	for (i = 0; i < nf; i++)
-		c->gmax[i] = 0.0;
-	hbs_cluster_watch(s, s->t, c->u, c->f0);
+		s->gmax[i] = 0.0;
+	s->first = 0;
+	s->hug = 0;
+	s->use_dense = s->use_herm = 0;
 	free_gaps(s);
-	gsl_odeiv2_evolve_reset(c->ev);
-	gsl_odeiv2_step_reset(c->step);
+	gsl_odeiv2_driver_reset(s->cph.d);
 	{
 		/* the first step: 1e-2 of the fastest contact's time scale X / V */
 		double Tc = INFINITY;
@@ -295,24 +257,17 @@ hbs_cluster_setup(struct hb_sim *s)
 		for (p = 0; p < c->nact; p++) {
 			const struct iface *I = &s->ifc[c->act[p]];
 
-			Tc = fmin(Tc, c->scale[I->off] / c->scale[I->off + 1]);
+			Tc = fmin(Tc, s->scale[I->off] / s->scale[I->off + 1]);
 		}
-		c->h = c->h > 0 && c->h < 1e-2 * Tc ? c->h : 1e-2 * Tc;
+		s->h = s->h > 0 && s->h < 1e-2 * Tc ? s->h : 1e-2 * Tc; /* or the last interval's last */
 		s->Tc = Tc;
 	}
 	return 0;
 }
 
-/* A watched function's value at (t, u): the root finder's function for events, kinks and extrema. */
-static double
-watched(struct hb_sim *s, double t, const double *u, const void *arg)
-{
-	return hbs_cluster_watch_one(s, t, u, *(const int *)arg);
-}
-
 /* Interface J in flight at (t, its bodies set there): x, v into the struct, then the jump into contact. */
-static int
-jump_iface(struct hb_sim *s, int i, int how, int iters, double width, double ilo, double ihi)
+int
+hbs_cluster_jump(struct hb_sim *s, int i, int how, int iters, double width, double ilo, double ihi)
 {
 	hbs_chain_activate(s, i);
 	/*
@@ -332,8 +287,9 @@ jump_iface(struct hb_sim *s, int i, int how, int iters, double width, double ilo
 /*
  * Kinks as modes, per interface (hbs_iface_mode, as the pair's): the sign
  * of each law's |w| term is frozen for the step that begins at the current
- * state, so that the flow is smooth inside the step; a change restarts
- * the stepper.
+ * state, so that the flow is smooth inside the step, the side a crossing
+ * located at this instant went over to (I->mforce); a change restarts the
+ * stepper.
  */
 static void
 set_modes(struct hb_sim *s)
@@ -343,129 +299,47 @@ set_modes(struct hb_sim *s)
 
 	for (p = 0; p < c->nact; p++) {
 		struct iface *I = &s->ifc[c->act[p]];
-		int m = hbs_iface_mode(s, I, I->xc, I->z, I->v);
+		int m = I->mforce && I->mforce_t == s->t ? I->mforce : hbs_iface_mode(s, I, I->xc, I->z, I->v);
 
 		if (m != I->msign) {
 			I->msign = m;
 			changed = 1;
 		}
 	}
-	if (changed) {
-		gsl_odeiv2_evolve_reset(c->ev);
-		gsl_odeiv2_step_reset(c->step);
-	}
+	if (changed)
+		gsl_odeiv2_driver_reset(s->cph.d);
 }
 
-/* One accepted step of a chain's clusters, with what follows from it. */
+/* See sim_impl.h. */
 int
-hbs_cluster_step(struct hb_sim *s)
+hbs_cluster_step_begin(struct hb_sim *s, double *t1, int *jumped)
 {
 	struct clusters *c = &s->cx;
-	const struct hb_scene *sc = &s->sc;
-	double t = s->t, t1 = sc->run.T, hbest = INFINITY;
-	int i, rc, best = -1, iters = 0;
+	double *f0 = s->lf0;
+	int i, n;
 
 	/* an interface already outside its flow set where the interval begins jumps at once, lowest k first */
-	for (i = 0; i < c->nf; i++)
-		if (c->fkind[i] == FUN_EVENT && c->f0[i] < 0.0) {
-			hbs_cluster_unpack(s, s->t, c->u);
-			return jump_iface(s, c->fif[i], HB_LOCATE_START, 0, 0.0, c->f0[i], c->f0[i]);
+	*jumped = 1;
+	n = hbs_watch_at(s, s->cur, s->t, s->u, f0, s->lkind, NULL);
+	for (i = 0; i < n; i++)
+		if (s->lkind[i] == FUN_EVENT && f0[i] < 0.0) {
+			hbs_cluster_unpack(s, s->t, s->u);
+			return hbs_cluster_jump(s, c->fif[i], HB_LOCATE_START, 0, 0.0, f0[i], f0[i]);
 		}
-	if (c->ifree >= 0 && c->tfree < t1)
-		t1 = c->tfree;
-	if (t >= t1 && c->ifree >= 0 && c->tfree <= t) { /* a free gap closes now */
+	if (c->ifree >= 0 && c->tfree < *t1)
+		*t1 = c->tfree;
+	if (s->t >= *t1 && c->ifree >= 0 && c->tfree <= s->t) { /* a free gap closes now */
 		double x, v;
 
-		hbs_cluster_unpack(s, s->t, c->u);
+		hbs_cluster_unpack(s, s->t, s->u);
 		hbs_cluster_sync(s);
 		hbs_chain_settle(s, c->ifree, s->t);
 		hbs_chain_gap(s, c->ifree, s->t, &x, &v);
 		s->ifc[c->ifree].x = x;
 		s->ifc[c->ifree].v = v;
-		return jump_iface(s, c->ifree, HB_LOCATE_CLOSED_FORM, 0, 0.0, fmax(x, v), fmax(x, v));
+		return hbs_cluster_jump(s, c->ifree, HB_LOCATE_CLOSED_FORM, 0, 0.0, fmax(x, v), fmax(x, v));
 	}
+	*jumped = 0;
 	set_modes(s);
-	memcpy(c->u0, c->u, (size_t)c->dim * sizeof(double));
-	c->t0 = t;
-	c->hd0 = 0;
-	c->hh = NAN;
-	c->nrs = c->rsnext = 0;
-	if ((rc = hbs_evolve(s, &c->known, c->ev, c->ctl, c->step, &c->sys, c->t0, c->u0, t1, &t, &c->h,
-	                     c->u, &c->H)))
-		return rc;
-	/* the watched functions at the step's end against its start: the earliest crossing */
-	{
-		double *fend = c->fe;
-
-		hbs_cluster_watch(s, t, c->u, fend);
-		for (i = 0; i < c->nf; i++) {
-			double a = c->f0[i], b = fend[i], hb = 0.0;
-			int it = 0;
-
-			if (!hbs_candidate(s, c->fkind[i], c->gmax[i], a, b))
-				continue;
-			if ((rc = hbs_cluster_locate(s, c->fkind[i], watched, &i, c->H, a,
-			                             fmax(c->gmax[i], fmax(fabs(a), fabs(b))), &hb, &it)))
-				return rc;
-			iters += it;
-			/* a kink or extremum at the step's start to the resolution of t: no progress to make */
-			if (c->fkind[i] != FUN_EVENT && hb <= fmax(8.0 * DBL_EPSILON * fabs(c->t0 + c->H), 1e-13 * c->H))
-				continue;
-			if (hb < hbest) {
-				hbest = hb;
-				best = i;
-			}
-		}
-		if (best >= 0) {
-			if (hbs_cluster_restep(s, hbest) != GSL_SUCCESS)
-				return hbs_fail(s, HB_ENUMERIC, "a re-step to locate an event failed");
-			memcpy(c->u, c->u1, (size_t)c->dim * sizeof(double));
-			t = c->t0 + hbest;
-			hbs_cluster_watch(s, t, c->u, fend);
-			/*
-			 * A kink or an extremum located within the resolution of t
-			 * just past an event (Hertz separates where its kink at
-			 * x_c = 0 is): the state is out of C there, so the event is
-			 * taken (the lowest k first).
-			 */
-			if (c->fkind[best] != FUN_EVENT)
-				for (i = 0; i < c->nf; i++)
-					if (c->fkind[i] == FUN_EVENT && c->f0[i] >= 0.0 && fend[i] < 0.0) {
-						best = i;
-						break;
-					}
-		}
-		for (i = 0; i < c->nf; i++) {
-			c->gmax[i] = fmax(c->gmax[i], fabs(fend[i]));
-			c->f0[i] = fend[i];
-		}
-	}
-	hbs_cluster_unpack(s, t, c->u);
-	if ((rc = hbs_cluster_limits(s)))
-		return rc;
-	if (best >= 0)
-		s->st.located++;
-	if (best >= 0 && c->fkind[best] == FUN_EVENT) {
-		double fb = c->f0[best];
-
-		return jump_iface(s, c->fif[best], HB_LOCATE_BRENT, iters, 0.0, fb, fb);
-	}
-	if (best >= 0 && c->fkind[best] == FUN_KINK)
-		s->st.kinks++;
-	if (best >= 0) { /* a kink or an extremum: the step ends there, the stepper restarts */
-		gsl_odeiv2_evolve_reset(c->ev);
-		gsl_odeiv2_step_reset(c->step);
-		if (c->fkind[best] == FUN_XCMAX || c->fkind[best] == FUN_FCMAX)
-			return hbs_push_sample(s, HB_ARC_EXTREMUM);
-	}
-	if ((rc = hbs_push_sample(s, HB_ARC_STEP)))
-		return rc;
-	if ((rc = hbs_cluster_stiffness(s)))
-		return rc;
-	if (s->t >= sc->run.T) {
-		if ((rc = hbs_push_sample(s, HB_ARC_END)))
-			return rc;
-		hbs_finish_T(s);
-	}
 	return 0;
 }

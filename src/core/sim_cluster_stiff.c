@@ -35,7 +35,7 @@ hbs_cluster_jacobian(double t, const double u[], double *dfdu, double dfdt[], vo
 {
 	struct hb_sim *s = params;
 	const struct clusters *c = &s->cx;
-	const double *sc = c->scale, *is = c->iscale;
+	const double *sc = s->scale, *is = s->iscale;
 	const int n = c->dim;
 	int p, i, k;
 
@@ -99,10 +99,10 @@ hbs_cluster_stiffness(struct hb_sim *s)
 	for (p = 0; p < c->nact; p++) {
 		const struct iface *I = &s->ifc[c->act[p]];
 
-		if ((rc = hbs_iface_rho(s, I, I->ilo + I->ihi, &c->scale[I->off], &rho)) != 0)
+		if ((rc = hbs_iface_rho(s, I, I->ilo + I->ihi, &s->scale[I->off], &rho)) != 0)
 			return rc < 0 ? 0 : rc;
 	}
-	if (hbs_stiff_verdict(s, c->H * rho))
+	if (hbs_stiff_verdict(s, s->H * rho))
 		s->setup = 1;
 	return 0;
 }

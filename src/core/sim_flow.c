@@ -263,26 +263,19 @@ hbs_phase_free(struct phase *p)
 	p->d = p->loc = NULL;
 }
 
-int
-hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
+/* The drivers of phase p, of its system p->sys, for stepper st: 0, or HB_ENOMEM (none). */
+static int
+phase_drivers(struct hb_sim *s, struct phase *p, int st)
 {
 	const struct hb_scene *sc = &s->sc;
-	const gsl_odeiv2_step_type *T = hbs_stepper_type(s->stepper[q]);
+	const gsl_odeiv2_step_type *T = hbs_stepper_type(st);
 	/* msbdf is multistep: locate with the single-step implicit bsimp */
 	const gsl_odeiv2_step_type *TL = T == gsl_odeiv2_step_msbdf ? hb_step_bsimp_shifted : T;
 
-	hbs_phase_free(p);
-	p->s = s;
-	p->q = q;
-	make_layout(sc, s->I, q, &p->L);
-	p->sys = (gsl_odeiv2_system){ hbs_rhs_special(s, p), hbs_jacobian, (size_t)p->L.dim, p };
-	if (p->sys.function == NULL)
-		p->sys.function = hbs_rhs;
 	p->d = gsl_odeiv2_driver_alloc_standard_new(&p->sys, T, 1e-6, sc->run.atol,
 	                                            sc->run.rtol, 1.0, 0.0);
 	p->loc = gsl_odeiv2_driver_alloc_standard_new(&p->sys, TL, 1e-6, sc->run.atol,
 	                                              sc->run.rtol, 1.0, 0.0);
-	s->built[q] = s->stepper[q];
 	if (p->d == NULL || p->loc == NULL || hb_control_cautious(p->d, sc->run.atol, sc->run.rtol)) {
 		hbs_phase_free(p);
 		return HB_ENOMEM;
@@ -290,6 +283,37 @@ hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
 	known_init(&p->known, p->d->e, p->d->s);
 	p->fer_t = NAN;
 	return 0;
+}
+
+int
+hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q)
+{
+	hbs_phase_free(p);
+	p->s = s;
+	p->q = q;
+	make_layout(&s->sc, s->I, q, &p->L);
+	p->sys = (gsl_odeiv2_system){ hbs_rhs_special(s, p), hbs_jacobian, (size_t)p->L.dim, p };
+	if (p->sys.function == NULL)
+		p->sys.function = hbs_rhs;
+	s->built[q] = s->stepper[q];
+	return phase_drivers(s, p, s->stepper[q]);
+}
+
+/*
+ * A phase whose ODE is sys (of sys->dimension components, every one read
+ * by its watched functions), in contact: a chain's clusters.
+ */
+int
+hbs_phase_alloc_sys(struct hb_sim *s, struct phase *p, const gsl_odeiv2_system *sys)
+{
+	int n = (int)sys->dimension;
+
+	hbs_phase_free(p);
+	p->s = s;
+	p->q = 1;
+	p->L = (struct layout){ n, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, n };
+	p->sys = *sys;
+	return phase_drivers(s, p, s->stepper[1]);
 }
 
 void

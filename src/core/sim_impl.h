@@ -74,10 +74,6 @@ struct phase {
 /* Kinds of the functions watched along a step. */
 enum fun_kind { FUN_EVENT, FUN_KINK, FUN_XCMAX, FUN_FCMAX };
 
-struct cached {
-	double h;
-	double u[MAXDIM];
-};
 
 struct iface {
 	const struct hb_law_type *law;
@@ -97,6 +93,9 @@ struct iface {
 	double tdphi[HB_LAW_MAX_Z + 2]; /* a chain's: Phi's and Psi's partials there (scratch) */
 	double tdpsi[HB_LAW_MAX_Z * (HB_LAW_MAX_Z + 2)];
 	int msign;              /* a chain's: the sign of its law's mode term, frozen for a step */
+	int mforce;             /* a chain's: the sign the mode takes at t = mforce_t (a located crossing) */
+	double mforce_t;
+	int fo;                 /* a chain's: its first watched function (index; sim_cluster_step.c) */
 	int over;               /* a chain's: the model limits passed in this contact (1 indentation,
 	                           2 non-neighbours above it) */
 
@@ -131,23 +130,11 @@ struct clusters {
 	int *act;               /* the interfaces in contact (index into ifc), ascending */
 	struct cluster *cl;
 	int *wif;               /* the interfaces in flight next to a cluster, ascending */
-	int capact, capcl, capwif, capdim, capf;
-	double *u, *u0, *u1, *scale, *iscale, *f0, *fe, *gmax, *yerr;
+	int capact, capcl, capwif, capf;
 	double *by, *bu;        /* scratch: the bodies' (y, u) of the clusters at a state */
 	int capb;
 	int *fkind, *fif;       /* each watched function's kind and interface (index) */
-	gsl_odeiv2_step *step, *loc;
-	gsl_odeiv2_control *ctl;
-	gsl_odeiv2_evolve *ev;
-	gsl_odeiv2_system sys;
-	int built_dim, built_stepper;
-	double h, H, t0;
-	double *d0, *d1;        /* the derivatives at the step's start and at its end hh (the Hermite guide) */
-	int hd0;                /* 1: d0 is the current step's */
-	double hh;              /* the end d1 is at (NAN: none) */
-	double *rsu, rsh[CCACHE]; /* the step's re-steps kept (CCACHE states of capdim) and their h */
-	int nrs, rsnext;        /* ... how many, the next to replace */
-	struct known_f known;   /* f where ev's steps have evaluated it (known.h) */
+	int built_dim, built_stepper; /* what the driver of the phase (hb_sim.cph) was made for */
 	double tfree;           /* the earliest closing of a gap between two flying bodies */
 	int ifree;              /* ... its interface (index), -1: none */
 };
@@ -182,31 +169,45 @@ struct hb_sim {
 	int setup;          /* 1: the next work begins a new interval */
 	int closed;         /* 1: closed-form flight */
 	struct phase ph[2]; /* numeric flight, contact */
+	struct phase cph;   /* a chain's clusters in contact (sim_cluster_step.c) */
 	struct phase *cur;
-	double scale[MAXDIM];
-	double iscale[MAXDIM]; /* 1 / scale, exact: every scale is a power of 2 */
-	double u[MAXDIM];   /* scaled ODE state */
+	/*
+	 * The arrays of the flow interval's ODE (sim_work.c): of dim.u
+	 * components, of dim.f watched functions, sized for the pair or for a
+	 * chain's clusters.
+	 */
+	struct {
+		int u, f, ncache;
+		double *buf;
+		int *ibuf;
+	} dim;
+	double *scale;
+	double *iscale;     /* 1 / scale, exact: every scale is a power of 2 */
+	double *u;          /* scaled ODE state */
 	double h;           /* step size suggestion */
 	double Tc;          /* time scale of the interval */
 	int ntiny;
-	double gmax[MAXFUN]; /* largest |value| of each watched function in the interval */
+	double *gmax;       /* largest |value| of each watched function in the interval */
 	double vmax;        /* largest |v| in the contact */
 
 	/* location workspace */
-	double t0, H, u0[MAXDIM], u1[MAXDIM];
-	double ut[MAXDIM];  /* a root finder's iterate (oriented_value; its unread tail stale, not read) */
+	double t0, H, *u0, *u1;
+	double *ut;         /* a root finder's iterate (oriented_value; its unread tail stale, not read) */
+	double *yerr, *ua, *ub, *uc; /* scratch states of the location */
+	double *lf0, *lf1, *lfa, *lfb; /* scratch watched values of the location */
+	int *lkind, *lka, *cand, *cand0; /* ... their kinds, the candidates */
 	struct {            /* the watched values at the last state hbs_watch_at was asked */
-		int valid, n, kind[MAXFUN];
+		int valid, n, *kind;
 		const struct phase *p;
-		double t, xe, u[MAXDIM], f[MAXFUN], rate;
+		double t, xe, *u, *f, rate;
 		double pf[2]; /* in contact: Phi and F_e,r there (the arc sample's, hbs_push_sample) */
 	} w;
-	struct cached cache[CACHE];
+	double *cache_h, *cache_u; /* the re-steps of the step (dim.ncache of them) */
 	int ncache, cache_next;
-	int fun_target, fun_sign0;
+	int fun_target, fun_kind, fun_sign0; /* the function located (sim_locate.c) */
 	int use_dense;      /* 1: restep() reads the last step's continuous extension */
 	int use_herm;       /* 1: restep() reads the cubic Hermite interpolant of the step */
-	double f0[MAXDIM], f1[MAXDIM]; /* its derivatives at the step's ends (scaled) */
+	double *f0, *f1;    /* its derivatives at the step's ends (scaled) */
 	int hug;            /* 1: the step began on Phi = 0 to the noise, receding (see snap_separation) */
 	int msign;          /* the frozen sign of the law's mode kink in this step (0: none) */
 	int resume;         /* 1: the next interval continues one cut by hb_sim_seek (see resume_interval) */
@@ -332,20 +333,17 @@ int
 hbs_cluster_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *params);
 int
 hbs_cluster_stiffness(struct hb_sim *s);
-int
-hbs_cluster_step(struct hb_sim *s);
 /*
- * sim_cluster_locate.c: the state one step of length h from the step's
- * start (t0, u0), into cx.u1; a function's crossing in (0, hend] of the
- * step located on such re-steps with the engine's root finder
- * (sim_root.c)
+ * sim_cluster_step.c: what begins a step of the clusters (the interval's
+ * first state already out of C, a gap between flying bodies closing now:
+ * the jump is taken, *jumped = 1; else the step's target into *t1 and
+ * the modes of the step set); interface i's jump into or out of contact
+ * at the current state (the located instant)
  */
 int
-hbs_cluster_restep(struct hb_sim *s, double h);
-typedef double hbs_val_fn(struct hb_sim *s, double t, const double *u, const void *arg);
+hbs_cluster_step_begin(struct hb_sim *s, double *t1, int *jumped);
 int
-hbs_cluster_locate(struct hb_sim *s, int kind, hbs_val_fn *val, const void *arg, double hend, double fa,
-                   double gmax, double *hb, int *iters);
+hbs_cluster_jump(struct hb_sim *s, int i, int how, int iters, double width, double ilo, double ihi);
 void
 hbs_cluster_sync(struct hb_sim *s);
 /* sim_limits.c: the model's limits at the end of the step just accepted, each passed located */
@@ -390,6 +388,26 @@ hbs_chain_continues(const struct hb_sim *s, const struct hb_scene *nsc);
 void
 hbs_chain_settle_flying(struct hb_sim *s);
 
+/* sim_work.c: room for an ODE of nu components and nf watched functions; freed */
+int
+hbs_work_reserve(struct hb_sim *s, int nu, int nf);
+void
+hbs_work_free(struct hb_sim *s);
+
+/*
+ * sim_restep.c: the state one step of length h from the step's start
+ * (t0, u0) (sim_locate.c), its first n components where it is read from
+ * the Hermite guide, cached for the step; a function of the state's
+ * crossing in (0, hend] of the step located on such re-steps with the
+ * engine's root finder (sim_root.c): a chain's limits (sim_limits.c)
+ */
+int
+hbs_restep_n(struct hb_sim *s, double h, double *u, int n);
+typedef double hbs_val_fn(struct hb_sim *s, double t, const double *u, const void *arg);
+int
+hbs_locate_fn(struct hb_sim *s, hbs_val_fn *val, const void *arg, double hend, double fa, double *hb,
+              int *iters);
+
 /* sim_flow.c */
 int
 hbs_explicit_stepper(int stepper);
@@ -411,6 +429,9 @@ hbs_phase_free(struct phase *p);
 
 int
 hbs_phase_alloc(struct hb_sim *s, struct phase *p, int q);
+/* ... a phase of the system sys (a chain's clusters) stepped by the scene's stepper[1] */
+int
+hbs_phase_alloc_sys(struct hb_sim *s, struct phase *p, const gsl_odeiv2_system *sys);
 
 void
 hbs_set_com(struct hb_sim *s);
@@ -455,11 +476,11 @@ hbs_flight_closed(struct hb_sim *s);
 
 /* sim_watch.c: the values of the pair's watched functions at a scaled state, their kinds */
 int
-hbs_watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
+hbs_watch(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
           int *kind);
 /* ... the value of function k alone (the same double), its kind in *kind */
 double
-hbs_watch_one(const struct hb_sim *s, const struct phase *p, double t, const double *u, int k,
+hbs_watch_one(struct hb_sim *s, const struct phase *p, double t, const double *u, int k,
               int *kind);
 
 /*

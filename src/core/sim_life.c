@@ -28,6 +28,8 @@ build(struct hb_sim *s, char *msg, size_t n)
 		                     "stiff); accepted: those");
 	for (q = 0; q < 2; q++)
 		s->stepper[q] = s->sc.run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : s->sc.run.stepper;
+	if (hbs_work_reserve(s, MAXDIM, MAXFUN))
+		return hb_status_set(msg, n, HB_ENOMEM, "out of memory for the integrator");
 	for (q = 0; q < 2; q++)
 		if (hbs_phase_alloc(s, &s->ph[q], q))
 			return hb_status_set(msg, n, HB_ENOMEM, "out of memory for the integrator");
@@ -91,6 +93,8 @@ release(struct hb_sim *s)
 {
 	hbs_phase_free(&s->ph[0]);
 	hbs_phase_free(&s->ph[1]);
+	hbs_phase_free(&s->cph);
+	hbs_work_free(s);
 	if (s->eig)
 		gsl_eigen_nonsymm_free(s->eig);
 	if (s->Jdyn)
@@ -313,6 +317,7 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 		}
 		hbs_phase_free(&oldph[0]);
 		hbs_phase_free(&oldph[1]);
+		s->cx.built_dim = 0; /* a chain's clusters' driver: of the old tolerances */
 	}
 	arc_set_max(s->arc, (size_t)nsc.run.max_samples);
 	if (restart) {

@@ -7,7 +7,7 @@
  * -x, the larger), and no two bodies that are not neighbours overlapping
  * (possible only across two interfaces in contact one above the other).
  * The instant a limit is passed is found as the clusters' events are, on
- * re-steps from the step's start (hbs_cluster_locate), to a few ulps of t.
+ * re-steps from the step's start (hbs_locate_fn), to a few ulps of t.
  */
 #include "sim_impl.h"
 #include "cnum.h"
@@ -24,7 +24,7 @@ static double
 depth(const struct hb_sim *s, int k, const double *u)
 {
 	const struct iface *I = &s->ifc[k];
-	double xc = u[I->off] * s->cx.scale[I->off];
+	double xc = u[I->off] * s->scale[I->off];
 
 	return fmax(fabs(xc), -(I->xe + xc));
 }
@@ -34,7 +34,7 @@ static double
 gap_across(const struct hb_sim *s, int k, const double *u)
 {
 	const struct iface *I = &s->ifc[k], *J = &s->ifc[k + 1];
-	const double *sc = s->cx.scale;
+	const double *sc = s->scale;
 
 	return (I->xe + u[I->off] * sc[I->off]) + (J->xe + u[J->off] * sc[J->off]) + 2.0 * s->body[I->hi].l;
 }
@@ -58,14 +58,13 @@ margin(struct hb_sim *s, double t, const double *u, const void *arg)
 static int
 locate_limit(struct hb_sim *s, struct limit *L)
 {
-	struct clusters *c = &s->cx;
-	double hend = s->t - c->t0, fa = margin(s, c->t0, c->u0, L), hb;
+	double hend = s->t - s->t0, fa = margin(s, s->t0, s->u0, L), hb;
 	int it, rc;
 
 	L->h = 0.0;
 	if (!(fa >= 0.0) || !(hend > 0.0))
 		return 0;
-	if ((rc = hbs_cluster_locate(s, FUN_EVENT, margin, L, hend, fa, 0.0, &hb, &it)))
+	if ((rc = hbs_locate_fn(s, margin, L, hend, fa, &hb, &it)))
 		return rc;
 	L->h = isfinite(hb) ? hb : hend;
 	return 0;
@@ -81,37 +80,36 @@ locate_limit(struct hb_sim *s, struct limit *L)
 static int
 limit_passed(struct hb_sim *s, const struct limit *L)
 {
-	struct clusters *c = &s->cx;
 	struct iface *I = &s->ifc[L->k];
 	int top = L->bit == 2 ? s->ifc[L->k + 1].hi : I->hi; /* the upper body named */
-	double tl = c->t0 + L->h, t1 = s->t;
+	double tl = s->t0 + L->h, t1 = s->t, *ul = s->ut;
 	char why[400], who[64];
 
 	I->over |= L->bit;
-	if (hbs_cluster_restep(s, L->h) != GSL_SUCCESS)
+	if (hbs_restep_n(s, L->h, ul, s->cur->L.dim) != GSL_SUCCESS)
 		return hbs_fail(s, HB_ENUMERIC, "a re-step to locate a limit failed");
 	if (I->lo < 0)
 		snprintf(who, sizeof who, "the floor and body %d", top + 1);
 	else
 		snprintf(who, sizeof who, "bodies %d and %d", I->lo + 1, top + 1);
 	if (L->bit == 1) {
-		double d = depth(s, L->k, c->u1); /* the indentation at the located instant */
+		double d = depth(s, L->k, ul); /* the indentation at the located instant */
 
 		cnum_snprintf(why, sizeof why, "interface %d (%s) is indented by %.6g m at t = %.12g s, "
 		              "%.3g of %s %.6g m, past run.max_indent = %g (located; %.6g m at the "
 		              "step's end, t = %.12g s): the model assumes small indentations",
 		              s->k0 + L->k, who, d, tl, d / L->R,
 		              I->lo < 0 ? "the body's radius" : "the smaller radius", L->R,
-		              s->sc.run.max_indent, depth(s, L->k, c->u), t1);
+		              s->sc.run.max_indent, depth(s, L->k, s->u), t1);
 	} else {
 		cnum_snprintf(why, sizeof why, "%s, not neighbours, begin to overlap at t = %.12g s "
 		              "(located; by %.6g m at the step's end, t = %.12g s): the model lets only "
-		              "neighbours touch", who, tl, -gap_across(s, L->k, c->u), t1);
+		              "neighbours touch", who, tl, -gap_across(s, L->k, s->u), t1);
 	}
 	if (s->sc.run.chain_limits != HB_CHAIN_LIMITS_WARN) {
 		/* the run ends at the located instant */
-		memcpy(c->u, c->u1, (size_t)c->dim * sizeof(double));
-		hbs_cluster_unpack(s, tl, c->u);
+		memcpy(s->u, ul, (size_t)s->cx.dim * sizeof *ul);
+		hbs_cluster_unpack(s, tl, s->u);
 		return hbs_fail_iface(s, I, HB_EINVAL, why);
 	}
 	if (s->nlim++ == 0)
@@ -142,9 +140,9 @@ hbs_cluster_limits(struct hb_sim *s)
 			struct limit cand[2];
 			int nc = 0, i;
 
-			if (!(I->over & 1) && R > 0 && depth(s, k, c->u) > f * R)
+			if (!(I->over & 1) && R > 0 && depth(s, k, s->u) > f * R)
 				cand[nc++] = (struct limit){ k, 1, R, 0.0 };
-			if (!(I->over & 2) && p + 1 < c->nact && c->act[p + 1] == k + 1 && gap_across(s, k, c->u) < 0)
+			if (!(I->over & 2) && p + 1 < c->nact && c->act[p + 1] == k + 1 && gap_across(s, k, s->u) < 0)
 				cand[nc++] = (struct limit){ k, 2, R, 0.0 };
 			for (i = 0; i < nc; i++) {
 				if ((rc = locate_limit(s, &cand[i])))

@@ -33,84 +33,11 @@ hermite_setup(struct hb_sim *s)
 	return known_eval(&p->known, &p->sys, s->t0 + s->H, s->u1, s->f1);
 }
 
-/*
- * The state one step of length h from (t0, u0), cached; on the Hermite
- * interpolant, only its first n components (what the watched functions
- * and the sticking snap read: [0, nread) at a root finder's iterate, the
- * rest of u left as it was), else all.
- */
-static int
-restep_n(struct hb_sim *s, double h, double *u, int n)
-{
-	struct phase *p = s->cur;
-	double yerr[MAXDIM];
-	int i, rc;
-
-	if (s->t0 + h == s->t0) { /* h below the resolution of t: the start (bsimp refuses such a step) */
-		memcpy(u, s->u0, sizeof s->u0);
-		return 0;
-	}
-	if (h == s->H) {
-		memcpy(u, s->u1, sizeof s->u1);
-		return 0;
-	}
-	if (s->use_dense || s->use_herm) {
-		/* on the step's continuous extension, or its Hermite interpolant: no evaluation of f */
-		if (!s->use_herm)
-			n = p->L.dim;
-		if (s->use_herm)
-			hbs_hermite(h, s->H, n, s->u0, s->f0, s->u1, s->f1, u); /* a guide only (locate_on_steps) */
-		else if ((rc = hb_dop853_dense(p->d->s, s->t0 + h, u)) != GSL_SUCCESS)
-			return rc;
-		for (i = 0; i < n; i++)
-			if (!isfinite(u[i]))
-				return GSL_FAILURE;
-		if (p->q) {
-			hbs_snap_stick(s, u);
-			if (s->hug)
-				hbs_snap_separation(s, u);
-		}
-		return 0;
-	}
-	for (i = 0; i < s->ncache; i++)
-		if (s->cache[i].h == h) {
-			memcpy(u, s->cache[i].u, sizeof s->u0);
-			return 0;
-		}
-	memcpy(u, s->u0, sizeof s->u0);
-	/* (rk8pd keeps nothing from one step to the next: nothing to reset) */
-	if (p->loc->s->type != hb_step_rk8pd)
-		gsl_odeiv2_step_reset(p->loc->s);
-	/* the step's own slope at the start, where known (its type takes it as f there) */
-	rc = gsl_odeiv2_step_apply(p->loc->s, s->t0, h, u, yerr,
-	                           p->loc->s->type == p->d->s->type ?
-	                           known_at(&p->known, s->t0, s->u0) : NULL,
-	                           NULL, &p->sys);
-	if (rc != GSL_SUCCESS)
-		return rc;
-	/* a step whose error estimate is not finite was not made (bsimp's divergence) */
-	for (i = 0; i < p->L.dim; i++)
-		if (!isfinite(u[i]) || !isfinite(yerr[i]))
-			return GSL_FAILURE;
-	if (p->q) {
-		hbs_snap_stick(s, u);
-		if (s->hug)
-			hbs_snap_separation(s, u);
-	}
-	i = s->cache_next;
-	s->cache_next = (s->cache_next + 1) % CACHE;
-	if (s->ncache < CACHE)
-		s->ncache++;
-	s->cache[i].h = h;
-	memcpy(s->cache[i].u, u, sizeof s->u0);
-	return 0;
-}
-
 /* The whole state one step of length h from (t0, u0) (restep_n). */
 static int
 restep(struct hb_sim *s, double h, double *u)
 {
-	return restep_n(s, h, u, s->cur->L.dim);
+	return hbs_restep_n(s, h, u, s->cur->L.dim);
 }
 
 /*
@@ -126,9 +53,9 @@ oriented_value(double h, void *ctx)
 	double *u = s->ut, val;
 	int kind;
 
-	if (s->fun_target != 0 && s->t0 + h == s->t0) /* 0 is the indicator, the event */
+	if (s->fun_kind != FUN_EVENT && s->t0 + h == s->t0)
 		return DBL_MIN; /* the step's start has not crossed (a mode's side is its sign there) */
-	if (restep_n(s, h, u, s->cur->L.nread))
+	if (hbs_restep_n(s, h, u, s->cur->L.nread))
 		return NAN;
 	val = hbs_watch_one(s, s->cur, s->t0 + h, u, s->fun_target, &kind);
 	if (kind == FUN_EVENT)
@@ -148,28 +75,47 @@ oriented(double h, struct hb_sim *s)
 /*
  * Brackets the crossing of function k (side sign0 at the step's start) in
  * [lo, hi] with the engine's root finder (sim_root.c) on restep()'s states;
- * its evaluations counted in loc_iter.
+ * its evaluations counted in loc_iter.  The pair's indicator keeps Brent's
+ * own steps (see sim_root.c); a chain's clusters close the stalls of every
+ * function, and where Brent's bracket closes on a crossing the other way
+ * (a gap at the level of its rounding crosses back and forth) bisect.
  */
 static int
 bracket(struct hb_sim *s, int k, int sign0, double lo, double hi, double htol, double *a, double *b)
 {
-	struct hbs_root r = { oriented_value, s, &s->loc_iter, s->root, s->t0, s->H, k != 0,
-	                      100.0 * DBL_EPSILON * s->gmax[k] };
+	int kind = s->lkind[k];
+	struct hbs_root r = { oriented_value, s, &s->loc_iter, s->root, s->t0, s->H,
+	                      s->chain || kind != FUN_EVENT, 100.0 * DBL_EPSILON * s->gmax[k] };
+	int rc;
 
 	s->fun_target = k;
+	s->fun_kind = kind;
 	s->fun_sign0 = sign0;
-	return hbs_root_bracket(&r, lo, hi, htol, a, b);
+	rc = hbs_root_bracket(&r, lo, hi, htol, a, b);
+	if (rc != 0 && s->chain && hbs_root_bisect(&r, lo, hi, htol, a, b) == 0)
+		rc = 0;
+	return rc;
+}
+
+/* The state at (t, u) unpacked: the pair's interface, or a chain's clusters. */
+static void
+unpack(struct hb_sim *s, double t, const double *u)
+{
+	if (s->chain)
+		hbs_cluster_unpack(s, t, u);
+	else
+		hbs_unpack(s, s->cur, t, u);
 }
 
 /* Accepts the state at h (a located point) as the current state and restarts the stepper. */
 static void
 accept_at(struct hb_sim *s, double h)
 {
-	double u[MAXDIM];
+	double *u = s->uc;
 
 	restep(s, h, u);
-	memcpy(s->u, u, sizeof u);
-	hbs_unpack(s, s->cur, s->t0 + h, u);
+	memcpy(s->u, u, (size_t)s->cur->L.dim * sizeof *u);
+	unpack(s, s->t0 + h, u);
 	gsl_odeiv2_driver_reset(s->cur->d);
 }
 
@@ -188,8 +134,8 @@ static double
 dip(struct hb_sim *s, const double *f0, const double *f1, double r0, double r1, double *fx)
 {
 	struct phase *p = s->cur;
-	double H = s->H, d0, d1, c2, c3, th[2], u[MAXDIM];
-	int kind[MAXFUN], nt, i;
+	double H = s->H, d0, d1, c2, c3, th[2], *u = s->ua;
+	int *kind = s->lka, nt, i;
 
 	if (!(f0[0] >= 0.0 && f1[0] >= 0.0))
 		return 0.0;
@@ -236,12 +182,21 @@ real_point(struct hb_sim *s, int event, double hi, double *a, double *b)
 	int tries;
 
 	s->use_dense = 0;
-	if (!event) {
-		double u[MAXDIM];
-		int kind;
+	if (event < 0) {
+		double *u = s->uc, *f = s->lfa;
+		int i, n;
 
-		if (restep(s, *b, u) != 0 || !(hbs_watch_one(s, s->cur, s->t0 + *b, u, 0, &kind) >= 0.0))
+		if (restep(s, *b, u) != 0)
 			goto keep;
+		if (!s->chain) { /* the pair's indicator alone */
+			if (!(hbs_watch_one(s, s->cur, s->t0 + *b, u, 0, &i) >= 0.0))
+				goto keep;
+			return;
+		}
+		n = hbs_watch(s, s->cur, s->t0 + *b, u, f, s->lka);
+		for (i = 0; i < n; i++)
+			if (s->lka[i] == FUN_EVENT && !(f[i] >= 0.0))
+				goto keep;
 		return;
 	}
 	for (tries = 0; tries < 5; tries++, w *= 64.0) {
@@ -251,7 +206,7 @@ real_point(struct hb_sim *s, int event, double hi, double *a, double *b)
 			up = hi;
 		if (tries == 4)
 			lo = 0.0;
-		if (bracket(s, 0, 1, lo, up, 0.0, &ra, &rb) == 0) {
+		if (bracket(s, event, 1, lo, up, 0.0, &ra, &rb) == 0) {
 			*a = ra;
 			*b = rb;
 			return;
@@ -302,6 +257,7 @@ locate_on_steps(struct hb_sim *s, int k, int sign0, double hi, double htol, doub
 	int tries;
 
 	s->fun_target = k;
+	s->fun_kind = s->lkind[k];
 	s->fun_sign0 = sign0;
 	s->use_herm = 1;
 	xl = fmax(0.0, x0 - d);
@@ -363,8 +319,8 @@ locate_on_steps(struct hb_sim *s, int k, int sign0, double hi, double htol, doub
 static int
 crossed_at(struct hb_sim *s, int k, const double *f0, int n, const int *kind, double a, int *cand)
 {
-	double ua[MAXDIM], fa[MAXFUN];
-	int kk[MAXFUN], i, nb = 0;
+	double *ua = s->ua, *fa = s->lfa;
+	int *kk = s->lka, i, nb = 0;
 
 	if (restep(s, a, ua))
 		return -1;
@@ -379,6 +335,59 @@ crossed_at(struct hb_sim *s, int k, const double *f0, int n, const int *kind, do
 }
 
 /*
+ * The mode's side is its frozen sign (the pair's s->msign, a chain's
+ * interface's I->msign), even where the switching function is still zero
+ * to rounding on the other side (a step that begins on a located
+ * crossing): it crosses when its sign differs from the mode's.  f0: the
+ * watched values at the step's start.
+ */
+static void
+mode_sides(struct hb_sim *s, double *f0)
+{
+	int p;
+
+	if (!s->chain) {
+		int k = 1 + s->I->law->mode_kink;
+
+		if (s->msign && !(f0[k] * s->msign > 0))
+			f0[k] = s->msign * DBL_MIN;
+		return;
+	}
+	for (p = 0; p < s->cx.nact; p++) {
+		const struct iface *I = &s->ifc[s->cx.act[p]];
+		int k = I->fo + 1 + I->law->mode_kink;
+
+		if (I->msign && !(f0[k] * I->msign > 0))
+			f0[k] = I->msign * DBL_MIN;
+	}
+}
+
+/* ... and where a mode's switching function crossed (f0 to fb), the next step is on the other side. */
+static void
+mode_crossed(struct hb_sim *s, const double *f0, const double *fb)
+{
+	int p;
+
+	if (!s->chain) {
+		if (s->msign && hbs_crossed(FUN_KINK, f0[1 + s->I->law->mode_kink],
+		                            fb[1 + s->I->law->mode_kink])) {
+			s->mforce = -s->msign;
+			s->mforce_t = s->t;
+		}
+		return;
+	}
+	for (p = 0; p < s->cx.nact; p++) {
+		struct iface *I = &s->ifc[s->cx.act[p]];
+		int k = I->fo + 1 + I->law->mode_kink;
+
+		if (I->msign && hbs_crossed(FUN_KINK, f0[k], fb[k])) {
+			I->mforce = -I->msign;
+			I->mforce_t = s->t;
+		}
+	}
+}
+
+/*
  * Handles an accepted step (t0, u0) -> (t0 + H, u1): finds the earliest
  * crossing of the watched functions, if any, and acts on it.
  */
@@ -386,39 +395,29 @@ int
 hbs_after_step(struct hb_sim *s, int load_kink)
 {
 	struct phase *p = s->cur;
-	double f0[MAXFUN], f1[MAXFUN];
-	int kind[MAXFUN], n, i, rc, any = 0;
-	int cand[MAXFUN], ncand = 0, cand0[MAXFUN], ncand0;
+	double *f0 = s->lf0, *f1 = s->lf1;
+	int *kind = s->lkind, n, i, rc, any = 0;
+	int *cand = s->cand, ncand = 0, *cand0 = s->cand0, ncand0;
 	double lo = 0.0, hi = s->H, a = 0, b = 0, hi0, r0, r1;
 	int first = -1, first_sign = 1, herm, tight = 0;
+	const size_t nu = (size_t)p->L.dim * sizeof *s->u;
 
 	s->ncache = 0;
 	s->cache_next = 0;
-	if (p->q) {
+	if (p->q && !s->chain) {
 		hbs_snap_stick(s, s->u1);
 		hbs_snap_separation(s, s->u1);
 		s->vmax = fmax(s->vmax, fabs(s->u1[p->L.iv] * s->scale[p->L.iv]));
 	}
 	n = hbs_watch_at(s, p, s->t0, s->u0, f0, kind, &r0);
 	hbs_watch_at(s, p, s->t0 + s->H, s->u1, f1, kind, &r1);
-	if (s->msign) {
-		/*
-		 * The mode's side is its frozen sign, even where the switching
-		 * function is still zero to rounding on the other side (a step
-		 * that begins on a located crossing): it crosses when its sign
-		 * differs from the mode's.
-		 */
-		int k = 1 + s->I->law->mode_kink;
-
-		if (!(f0[k] * s->msign > 0))
-			f0[k] = s->msign * DBL_MIN;
-	}
+	mode_sides(s, f0);
 	for (i = 0; i < n; i++)
 		if (hbs_candidate(s, kind[i], s->gmax[i], f0[i], f1[i]))
 			cand[ncand++] = i;
-	if (ncand == 0 || cand[0] != 0) {
+	if (!s->chain && (ncand == 0 || cand[0] != 0)) {
 		/* the event stepped over: locate everything that crossed before the dip */
-		double fx[MAXFUN], th = dip(s, f0, f1, r0, r1, fx);
+		double *fx = s->lfb, th = dip(s, f0, f1, r0, r1, fx);
 
 		if (th > 0.0) {
 			s->st.dips++;
@@ -436,10 +435,12 @@ hbs_after_step(struct hb_sim *s, int load_kink)
 		 * step as its first stage (rk8pd, rkck, rkf45): a state moved by
 		 * the snaps above needs it evaluated again.
 		 */
-		if (memcmp(s->u, s->u1, sizeof s->u1) != 0)
+		if (memcmp(s->u, s->u1, nu) != 0)
 			gsl_odeiv2_evolve_reset(p->d->e);
-		memcpy(s->u, s->u1, sizeof s->u1);
-		hbs_unpack(s, p, s->t0 + s->H, s->u1);
+		memcpy(s->u, s->u1, nu);
+		unpack(s, s->t0 + s->H, s->u1);
+		if (s->chain && (rc = hbs_cluster_limits(s)))
+			return rc;
 		if (load_kink) {
 			gsl_odeiv2_driver_reset(p->d);
 			s->st.kinks++;
@@ -457,12 +458,12 @@ hbs_after_step(struct hb_sim *s, int load_kink)
 	 * location is done again on steps alone.
 	 */
 	herm = !s->use_dense && !s->hug && hermite_setup(s) == GSL_SUCCESS;
-	memcpy(cand0, cand, sizeof cand);
+	memcpy(cand0, cand, (size_t)ncand * sizeof *cand);
 	ncand0 = ncand;
 	hi0 = hi;
 again:
 	s->use_herm = herm;
-	memcpy(cand, cand0, sizeof cand);
+	memcpy(cand, cand0, (size_t)ncand0 * sizeof *cand);
 	ncand = ncand0;
 	lo = 0.0;
 	hi = hi0;
@@ -497,8 +498,8 @@ again:
 	}
 	/* everything that has crossed at b happens here; the event wins */
 	{
-		double ub[MAXDIM], fb[MAXFUN];
-		int kb[MAXFUN], event = 0, kink = 0;
+		double *ub = s->ub, *fb = s->lfb;
+		int *kb = s->lka, event = -1, kink = 0;
 
 		restep(s, b, ub);
 		hbs_watch(s, p, s->t0 + b, ub, fb, kb);
@@ -526,31 +527,35 @@ again:
 		for (i = 0; i < n; i++)
 			if (hbs_crossed(kind[i], f0[i], fb[i])) {
 				any = 1;
-				if (kind[i] == FUN_EVENT)
-					event = 1;
-				else if (kind[i] == FUN_KINK)
+				if (kind[i] == FUN_EVENT) {
+					if (event < 0) /* the lowest k first */
+						event = i;
+				} else if (kind[i] == FUN_KINK) {
 					kink = 1;
+				}
 			}
 		if (!any)
 			return hbs_fail(s, HB_ENUMERIC, "event location lost its bracket");
 		if (s->use_dense)
 			real_point(s, event, hi, &a, &b);
-		if (event) {
-			double ua[MAXDIM], fa0;
+		if (event >= 0) {
+			double *ua = s->ua, fa0;
 			int ka;
 
 			restep(s, a, ua);
-			fa0 = hbs_watch_one(s, p, s->t0 + a, ua, 0, &ka);
+			fa0 = hbs_watch_one(s, p, s->t0 + a, ua, event, &ka);
 			accept_at(s, b);
-			return hbs_jump(s, HB_LOCATE_BRENT, s->loc_iter, b - a, fa0, fb[0]);
+			if (!s->chain)
+				return hbs_jump(s, HB_LOCATE_BRENT, s->loc_iter, b - a, fa0, fb[event]);
+			if ((rc = hbs_cluster_limits(s)) || s->end != HB_SIM_RUNNING)
+				return rc;
+			return hbs_cluster_jump(s, s->cx.fif[event], HB_LOCATE_BRENT, s->loc_iter, b - a, fa0,
+			                        fb[event]);
 		}
 		accept_at(s, b);
-		if (s->msign && hbs_crossed(FUN_KINK, f0[1 + s->I->law->mode_kink],
-		                        fb[1 + s->I->law->mode_kink])) {
-			/* the mode's switching function crossed: the next step is on the other side */
-			s->mforce = -s->msign;
-			s->mforce_t = s->t;
-		}
+		mode_crossed(s, f0, fb);
+		if (s->chain && (rc = hbs_cluster_limits(s)))
+			return rc;
 		s->st.kinks += kink;
 		return hbs_push_sample(s, kink ? HB_ARC_KINK : HB_ARC_EXTREMUM);
 	}

@@ -1,13 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
- * sim_root.c - the bracketing root finder both flow integrators locate
- * with: where a function of the time into a step crosses, given as its
- * oriented value (struct hbs_root).  The pair's location (sim_locate.c)
- * asks it for the watched functions of its phase, on re-steps, on the
- * step's continuous extension or on its Hermite interpolant; a chain's
- * clusters (sim_cluster_locate.c) for the watched functions of every
- * interface in contact and for the model's limits (sim_limits.c), on
- * re-steps of the clusters' ODE.
+ * sim_root.c - the bracketing root finder the engine locates with: where
+ * a function of the time into a step crosses, given as its oriented value
+ * (struct hbs_root).  The location (sim_locate.c) asks it for the watched
+ * functions of the flow interval's system (a two-body contact's, a
+ * chain's clusters'), on re-steps, on the step's continuous extension or
+ * on its Hermite interpolant; a chain's limits (sim_limits.c, through
+ * sim_restep.c) on re-steps.
  */
 #include "sim_impl.h"
 

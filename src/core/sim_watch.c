@@ -72,20 +72,34 @@ watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, 
 	return nk + 3;
 }
 
+/*
+ * The watched functions of the flow interval: the pair's (above), or a
+ * chain's clusters' (sim_cluster.c: interface by interface, their kinds
+ * laid out by the interval's setup; no rate of an indicator).
+ */
 int
-hbs_watch(const struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
+hbs_watch(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,
           int *kind)
 {
+	if (s->chain) {
+		hbs_cluster_watch(s, t, u, f);
+		memcpy(kind, s->cx.fkind, (size_t)s->cx.nf * sizeof *kind);
+		return s->cx.nf;
+	}
 	return watch(s, p, t, u, f, kind, NULL, -1, NULL);
 }
 
 double
-hbs_watch_one(const struct hb_sim *s, const struct phase *p, double t, const double *u, int k,
+hbs_watch_one(struct hb_sim *s, const struct phase *p, double t, const double *u, int k,
               int *kind)
 {
 	double f[MAXFUN];
 	int kinds[MAXFUN];
 
+	if (s->chain) {
+		*kind = s->cx.fkind[k];
+		return hbs_cluster_watch_one(s, t, u, k);
+	}
 	watch(s, p, t, u, f, kinds, NULL, k, NULL);
 	*kind = kinds[k];
 	return f[k];
@@ -99,7 +113,12 @@ watch_cached(struct hb_sim *s, const struct phase *p, double t, const double *u)
 
 	if (!(s->w.valid && s->w.p == p && s->w.t == t && s->w.xe == s->I->xe
 	      && memcmp(s->w.u, u, nu) == 0)) {
-		s->w.n = watch(s, p, t, u, s->w.f, s->w.kind, &s->w.rate, -1, s->w.pf);
+		if (s->chain) {
+			s->w.n = hbs_watch(s, p, t, u, s->w.f, s->w.kind);
+			s->w.rate = NAN;
+		} else {
+			s->w.n = watch(s, p, t, u, s->w.f, s->w.kind, &s->w.rate, -1, s->w.pf);
+		}
 		s->w.p = p;
 		s->w.t = t;
 		s->w.xe = s->I->xe;

@@ -134,15 +134,16 @@ if "$BIN" --batch "$T/cradle.preset" --set chain.spacing=0 --set run.max_indent=
 else
 	notok "run.chain_limits = warn: the run goes on and the summary counts the limits passed" "$T/out"
 fi
-# a soft linear law: bodies 1 and 3 come to overlap across body 2 in the same step as
-# interface 2's indentation passes 0.99 of a radius; located, the indentation comes first
+# a soft linear law: bodies 1 and 3 come to overlap across body 2 just after
+# interface 2's indentation passes 0.99 of a radius (the step that passes it
+# may hold both); located, the indentation comes first
 # (with every radius known, two indentations within run.max_indent < 1 of the middle
 # body's radius cannot make its neighbours overlap)
 "$BIN" --batch "$T/cradle.preset" --set scene.law=linear --set law.k=10 --set chain.spacing=0 \
     --set run.T=1 --set striker.v=-5 --set run.max_indent=0.99 >"$T/out" 2>&1
 rc=$?
 if [ $rc -eq 1 ] &&
-    grep -q 'the run failed: interface 2 (bodies 2 and 3) is indented by 0.0099 m at t = 0.00198[0-9]* s, 0.99 of the smaller radius 0.01 m, past run.max_indent = 0.99 (located; 0.02[0-9]* m at the step.s end' "$T/out"; then
+    grep -q 'the run failed: interface 2 (bodies 2 and 3) is indented by 0.0099 m at t = 0.00198[0-9]* s, 0.99 of the smaller radius 0.01 m, past run.max_indent = 0.99 (located; 0.0[1-9][0-9]* m at the step.s end' "$T/out"; then
 	ok "the earliest limit passed in a step is the one named: an indentation before an overlap"
 else
 	notok "the earliest limit passed in a step is the one named: an indentation before an overlap (got $rc)" "$T/out"
@@ -211,32 +212,26 @@ if "$BIN" --batch newtons-cradle-5 -q >"$T/out" 2>&1 &&
 else
 	notok "the chain line: stored and dissipated (elastic: ~0 at the end, the contact in progress stores K(0) - K; shccl dissipates)" "$T/out"
 fi
-# --check fails a chain that breaks its laws: bsimp at a loose tolerance
-# (run.limits = no runs it) makes an elastic Hertz contact of the cradle
-# absorb a large part of its energy; the solution pair holds, the physics
-# check names the law, the collision and its interface, and exits 1; the
-# run without --check warns the same on stderr and exits 0
+# bsimp at a loose tolerance (run.limits = no runs it): under the clusters'
+# own driver an elastic Hertz contact of the cradle absorbed 41% of its
+# energy (W = 6.4 mJ) and --check failed it; under the engine's one driver
+# (its location on the step's Hermite guide and re-steps, its control) the
+# cradle keeps its energy to 1e-6 of the tolerance, and --check passes it,
+# naming no law.  (--check's failing branches, a chain's elastic contact
+# with work among them, are tests/test_check_chain.c's: no run of the
+# shipped chains at any tolerance breaks them now.)
 loose="--set run.stepper=bsimp --set run.rtol=1e-4 --set run.atol=1e-4 --set run.limits=no"
 # shellcheck disable=SC2086
 "$BIN" --batch newtons-cradle-5 -q --check $loose >"$T/out" 2>"$T/err"
 rc=$?
-if [ "$rc" -eq 1 ] &&
-    grep -q '^  check       solution pair: ok' "$T/out" &&
-    grep -q '^  check       physics: FAILED: elastic law: collision [0-9]* (interface [1-4]) has W = [0-9.e-]* J, [0-9.e-]* of its energy scale, where hertz dissipates nothing (at most 100 x the tolerance 0.0001 accepted)$' "$T/out" &&
-    grep -q '^hybounce: check failed: the computed chain fails 1 physics check; a tighter run.rtol and run.atol' "$T/err"; then
-	ok "--check fails a cradle whose elastic contact loses energy at a loose tolerance, naming the law, collision and interface (exit 1)"
-else
-	notok "--check fails a cradle whose elastic contact loses energy at a loose tolerance, naming the law, collision and interface (exit 1, got $rc)" "$T/out" "$T/err"
-fi
-# shellcheck disable=SC2086
-"$BIN" --batch newtons-cradle-5 -q $loose >"$T/out" 2>"$T/err"
-rc=$?
 if [ "$rc" -eq 0 ] &&
-    grep -q '^  warning     physics: the run breaks what it must obey: elastic law: collision [0-9]* (interface [1-4])' "$T/out" &&
-    grep -q '^hybounce: warning: the computed chain fails 1 physics check' "$T/err"; then
-	ok "the same run without --check warns of the broken law and exits 0"
+    grep -q '^  check       solution pair: ok' "$T/out" &&
+    grep -q '^  check       physics: ok (4 contacts, each by its interface.s law' "$T/out" &&
+    grep -Eq '^  check       energy: ok .*, [0-9.]+e-0[6-9] x the tolerance 0.0001\)$' "$T/out" &&
+    ! grep -q 'warning' "$T/out" "$T/err"; then
+	ok "--check passes the cradle under bsimp at a loose tolerance: its elastic contacts keep the energy (to 1e-6 of the tolerance)"
 else
-	notok "the same run without --check warns of the broken law and exits 0 (got $rc)" "$T/out" "$T/err"
+	notok "--check passes the cradle under bsimp at a loose tolerance: its elastic contacts keep the energy (to 1e-6 of the tolerance) (got $rc)" "$T/out" "$T/err"
 fi
 # the limits passed under run.chain_limits = warn are reported by --check, not failed
 if "$BIN" --batch stacked-drop --check --set run.max_indent=0.1 --set run.chain_limits=warn >"$T/out" 2>&1 &&
