@@ -29,7 +29,7 @@ compare_at(struct hb_sim *s, double t, const double *u, double *all, struct seen
 {
 	struct clusters *c = &s->cx;
 
-	hbs_cluster_watch(s, t, u, all);
+	hbs_cluster_watch(s, t, u, all, NULL);
 	for (int fi = 0; fi < c->nf; fi++) {
 		double one = hbs_cluster_watch_one(s, t, u, fi);
 

@@ -235,10 +235,9 @@ numeric_step(struct hb_sim *s)
 	}
 	memcpy(s->u0, s->u, (size_t)p->L.dim * sizeof *s->u);
 	s->t0 = t;
-	if (!s->chain) {
-		s->hug = hbs_hugging(s, s->u0);
+	s->hug = hbs_hugging(s, s->u0);
+	if (!s->chain)
 		set_mode(s);
-	}
 	if ((rc = hbs_evolve(s, &p->known, p->d->e, p->d->c, p->d->s, &p->sys, s->t0, s->u0, t1, &t,
 	                     &s->h, s->u, &s->H)))
 		return rc;

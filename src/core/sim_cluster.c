@@ -250,13 +250,12 @@ iface_state(const struct hb_sim *s, const struct iface *I, const double *u, doub
 }
 
 /*
- * dPhi/dt of interface k (its minimum is F_c's maximum), with this step's
- * mode of Psi, from the Phi of k (phi) and of its neighbours k - 1 (plo)
- * and k + 1 (phi_hi), these read only where they are in contact.
+ * dv/dt of interface k from its Phi (phi; 0 in flight) and its neighbours'
+ * k - 1 (plo) and k + 1 (phi_hi), these read only where they are in
+ * contact.
  */
 static inline double
-iface_dphidt(const struct hb_sim *s, int k, double xc, const double *z, double v, double phi, double plo,
-             double phi_hi)
+iface_vdot(const struct hb_sim *s, int k, double phi, double plo, double phi_hi)
 {
 	const struct iface *I = &s->ifc[k];
 	double vdot = -phi * (I->ilo + I->ihi) + I->arel;
@@ -265,16 +264,30 @@ iface_dphidt(const struct hb_sim *s, int k, double xc, const double *z, double v
 		vdot += plo * I->ilo;
 	if (k + 1 < s->nif && s->ifc[k + 1].off >= 0)
 		vdot += phi_hi * I->ihi;
-	return hbs_iface_dphidt(I, xc, z, v, vdot, I->msign);
+	return vdot;
+}
+
+/*
+ * dPhi/dt of interface k (its minimum is F_c's maximum), with this step's
+ * mode of Psi, from the Phi of k (phi) and of its neighbours (iface_vdot).
+ */
+static inline double
+iface_dphidt(const struct hb_sim *s, int k, double xc, const double *z, double v, double phi, double plo,
+             double phi_hi)
+{
+	return hbs_iface_dphidt(&s->ifc[k], xc, z, v, iface_vdot(s, k, phi, plo, phi_hi), s->ifc[k].msign);
 }
 
 /*
  * The watched functions at (t, u), interface by interface in increasing
  * k (see the header comment); their kinds and interfaces were laid out by
  * setup.  Fills the clusters' bodies in the scratch when gaps are watched.
+ * With rate not NULL, each event's indicator's rate (one-sided where it
+ * has a corner) into rate[] at its index, NAN at the others' (the dip
+ * test, sim_locate.c).
  */
 void
-hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f)
+hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f, double *rate)
 {
 	struct clusters *c = &s->cx;
 	int n = 0, p, w, i;
@@ -301,12 +314,26 @@ hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f)
 				n += nk;
 			}
 			f[n++] = v;
-			f[n++] = iface_dphidt(s, k, xc, z, v, I->tphi, k > 0 ? s->ifc[k - 1].tphi : 0.0,
-			                      k + 1 < s->nif ? s->ifc[k + 1].tphi : 0.0);
+			{
+				double plo = k > 0 ? s->ifc[k - 1].tphi : 0.0;
+				double phi_hi = k + 1 < s->nif ? s->ifc[k + 1].tphi : 0.0;
+				double vdot = iface_vdot(s, k, I->tphi, plo, phi_hi);
+
+				f[n++] = hbs_iface_dphidt(I, xc, z, v, vdot, I->msign);
+				if (rate != NULL) {
+					for (i = I->fo + 1; i < n; i++)
+						rate[i] = NAN;
+					rate[I->fo] = I->tphi < v ? -f[n - 1] : -vdot;
+				}
+			}
 		} else {
+			int k = c->wif[w++];
 			double x, v;
 
-			gap_of(s, &s->ifc[c->wif[w++]], t, &x, &v);
+			gap_of(s, &s->ifc[k], t, &x, &v);
+			if (rate != NULL) /* its flight: dv/dt from the neighbours' forces alone */
+				rate[n] = x > v ? v : iface_vdot(s, k, 0.0, k > 0 ? s->ifc[k - 1].tphi : 0.0,
+				                                   k + 1 < s->nif ? s->ifc[k + 1].tphi : 0.0);
 			f[n++] = fmax(x, v);
 		}
 	}

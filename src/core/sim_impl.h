@@ -96,6 +96,7 @@ struct iface {
 	int mforce;             /* a chain's: the sign the mode takes at t = mforce_t (a located crossing) */
 	double mforce_t;
 	int fo;                 /* a chain's: its first watched function (index; sim_cluster_step.c) */
+	double vmax;            /* a chain's: the largest |v| in the contact in progress (sim_snap.c) */
 	int over;               /* a chain's: the model limits passed in this contact (1 indentation,
 	                           2 non-neighbours above it) */
 
@@ -195,11 +196,12 @@ struct hb_sim {
 	double *ut;         /* a root finder's iterate (oriented_value; its unread tail stale, not read) */
 	double *yerr, *ua, *ub, *uc; /* scratch states of the location */
 	double *lf0, *lf1, *lfa, *lfb; /* scratch watched values of the location */
+	double *lr0, *lr1;  /* ... the rates of their indicators (NAN: none) */
 	int *lkind, *lka, *cand, *cand0; /* ... their kinds, the candidates */
 	struct {            /* the watched values at the last state hbs_watch_at was asked */
 		int valid, n, *kind;
 		const struct phase *p;
-		double t, xe, *u, *f, rate;
+		double t, xe, *u, *f, rate, *r; /* rate: the pair's indicator's; r: a chain's events' */
 		double pf[2]; /* in contact: Phi and F_e,r there (the arc sample's, hbs_push_sample) */
 	} w;
 	double *cache_h, *cache_u; /* the re-steps of the step (dim.ncache of them) */
@@ -318,7 +320,7 @@ hbs_cluster_jumped(struct hb_sim *s);
 int
 hbs_cluster_rhs(double t, const double u[], double du[], void *params);
 void
-hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f);
+hbs_cluster_watch(struct hb_sim *s, double t, const double *u, double *f, double *rate);
 /* Its f[fi] alone (the same double), from only the state that function reads. */
 double
 hbs_cluster_watch_one(struct hb_sim *s, double t, const double *u, int fi);
@@ -485,7 +487,8 @@ hbs_watch_one(struct hb_sim *s, const struct phase *p, double t, const double *u
 
 /*
  * The same, remembered for the last state asked (where one step ends, the
- * next begins); hbs_scales forgets it.
+ * next begins); hbs_scales forgets it.  With rate not NULL, the rate of
+ * each event's indicator into rate[] at its index (NAN at the others').
  */
 int
 hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,

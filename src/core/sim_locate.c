@@ -122,46 +122,79 @@ accept_at(struct hb_sim *s, double h)
 
 
 /*
- * An event inside a step whose ends are both in C (the indicator dips
+ * An event inside a step whose ends are both in C (an indicator dips
  * below zero and comes back: a separation or an impact stepped over).  The
- * cubic Hermite interpolant of the indicator from its values and rates at
- * the ends predicts where it is least; if it predicts a negative value,
+ * cubic Hermite interpolant of the indicator k from its values and rates
+ * at the ends predicts where it is least; if it predicts a negative value,
  * the state there is computed.  Returns the fraction theta of the step
  * where the indicator was found negative (with the watched values there in
  * fx), or 0.
  */
 static double
-dip(struct hb_sim *s, const double *f0, const double *f1, double r0, double r1, double *fx)
+dip1(struct hb_sim *s, int k, double f0, double f1, double r0, double r1, double *fx)
 {
 	struct phase *p = s->cur;
 	double H = s->H, d0, d1, c2, c3, th[2], *u = s->ua;
 	int *kind = s->lka, nt, i;
 
-	if (!(f0[0] >= 0.0 && f1[0] >= 0.0))
+	if (!(f0 >= 0.0 && f1 >= 0.0) || !isfinite(r0) || !isfinite(r1))
 		return 0.0;
 	d0 = H * r0;
 	d1 = H * r1;
 	if (d0 >= 0.0 && d1 <= 0.0)
 		return 0.0; /* rising then falling: no interior minimum */
 	/* P(th) = f0 + d0 th + c2 th^2 + c3 th^3; its critical points solve P'(th) = 0 */
-	c2 = 3.0 * (f1[0] - f0[0]) - 2.0 * d0 - d1;
-	c3 = 2.0 * (f0[0] - f1[0]) + d0 + d1;
+	c2 = 3.0 * (f1 - f0) - 2.0 * d0 - d1;
+	c3 = 2.0 * (f0 - f1) + d0 + d1;
 	nt = gsl_poly_solve_quadratic(3.0 * c3, 2.0 * c2, d0, &th[0], &th[1]);
 	for (i = 0; i < nt; i++) {
 		double t = th[i], P;
 
 		if (!(t > 0.0 && t < 1.0))
 			continue;
-		P = f0[0] + t * (d0 + t * (c2 + t * c3));
+		P = f0 + t * (d0 + t * (c2 + t * c3));
 		if (P >= 0.0)
 			continue;
 		if (restep(s, t * H, u))
 			continue;
 		hbs_watch(s, p, s->t0 + t * H, u, fx, kind);
-		if (fx[0] < 0.0)
+		if (fx[k] < 0.0)
 			return t;
 	}
 	return 0.0;
+}
+
+/*
+ * ... over every event that is no candidate of the step (its ends in C):
+ * the earliest theta found, with the watched values there in fx.  The
+ * pair has one event, its indicator; a chain's clusters one for each
+ * interface in contact and each watched gap.
+ */
+static double
+dip(struct hb_sim *s, const double *f0, const double *f1, const double *r0, const double *r1,
+    const int *kind, int n, const int *cand, int ncand, double *fx)
+{
+	double best = 0.0;
+	int i, c = 0, nev = 0;
+
+	for (i = 0; i < n; i++) {
+		double th;
+
+		while (c < ncand && cand[c] < i)
+			c++;
+		if (kind[i] != FUN_EVENT)
+			continue;
+		nev++;
+		if (c < ncand && cand[c] == i)
+			continue;
+		th = dip1(s, i, f0[i], f1[i], r0[i], r1[i], fx);
+		if (th > 0.0 && (best == 0.0 || th < best))
+			best = th;
+	}
+	/* with several events fx may be of another's state: the earliest's again (its re-step kept) */
+	if (best > 0.0 && nev > 1 && restep(s, best * s->H, s->ua) == 0)
+		hbs_watch(s, s->cur, s->t0 + best * s->H, s->ua, fx, s->lka);
+	return best;
 }
 
 /*
@@ -398,26 +431,33 @@ hbs_after_step(struct hb_sim *s, int load_kink)
 	double *f0 = s->lf0, *f1 = s->lf1;
 	int *kind = s->lkind, n, i, rc, any = 0;
 	int *cand = s->cand, ncand = 0, *cand0 = s->cand0, ncand0;
-	double lo = 0.0, hi = s->H, a = 0, b = 0, hi0, r0, r1;
+	double lo = 0.0, hi = s->H, a = 0, b = 0, hi0, *r0 = s->lr0, *r1 = s->lr1;
 	int first = -1, first_sign = 1, herm, tight = 0;
 	const size_t nu = (size_t)p->L.dim * sizeof *s->u;
 
 	s->ncache = 0;
 	s->cache_next = 0;
-	if (p->q && !s->chain) {
+	if (p->q) {
 		hbs_snap_stick(s, s->u1);
 		hbs_snap_separation(s, s->u1);
-		s->vmax = fmax(s->vmax, fabs(s->u1[p->L.iv] * s->scale[p->L.iv]));
+		if (!s->chain)
+			s->vmax = fmax(s->vmax, fabs(s->u1[p->L.iv] * s->scale[p->L.iv]));
+		else
+			for (i = 0; i < s->cx.nact; i++) {
+				struct iface *I = &s->ifc[s->cx.act[i]];
+
+				I->vmax = fmax(I->vmax, fabs(s->u1[I->off + 1] * s->scale[I->off + 1]));
+			}
 	}
-	n = hbs_watch_at(s, p, s->t0, s->u0, f0, kind, &r0);
-	hbs_watch_at(s, p, s->t0 + s->H, s->u1, f1, kind, &r1);
+	n = hbs_watch_at(s, p, s->t0, s->u0, f0, kind, r0);
+	hbs_watch_at(s, p, s->t0 + s->H, s->u1, f1, kind, r1);
 	mode_sides(s, f0);
 	for (i = 0; i < n; i++)
 		if (hbs_candidate(s, kind[i], s->gmax[i], f0[i], f1[i]))
 			cand[ncand++] = i;
-	if (!s->chain && (ncand == 0 || cand[0] != 0)) {
-		/* the event stepped over: locate everything that crossed before the dip */
-		double *fx = s->lfb, th = dip(s, f0, f1, r0, r1, fx);
+	{
+		/* an event stepped over: locate everything that crossed before the dip */
+		double *fx = s->lfb, th = dip(s, f0, f1, r0, r1, kind, n, cand, ncand, fx);
 
 		if (th > 0.0) {
 			s->st.dips++;

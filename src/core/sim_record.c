@@ -181,6 +181,7 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 	if (I->q) {
 		I->te = s->t;
 		I->vi = I->v;
+		I->vmax = fabs(I->v);
 		I->pushed = s->chain && pushed_into(s, I);
 		I->xe = I->x;
 		I->Wc0 = I->Wc;

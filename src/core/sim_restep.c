@@ -9,11 +9,11 @@
  */
 #include "sim_impl.h"
 
-/* The snaps onto the boundary of C of a state in the pair's contact (sim_snap.c). */
+/* The snaps onto the boundary of C of a state in contact (sim_snap.c). */
 static void
 snap(struct hb_sim *s, const struct phase *p, double *u)
 {
-	if (p->q && !s->chain) {
+	if (p->q) {
 		hbs_snap_stick(s, u);
 		if (s->hug)
 			hbs_snap_separation(s, u);

@@ -18,24 +18,74 @@
  * the boundary of C to the precision of the computation: its v is set to 0,
  * which keeps it in C (rule R2) and changes it by less than the tolerance.
  */
+/* Where an interface's block lies in a scaled state: its x_c, v and first z. */
+struct blk {
+	int ixc, iv, iz;
+};
+
+/* Interface I's x_c and z in u, unscaled as hbs_unscale does. */
+static inline double
+blk_state(const struct hb_sim *s, const struct iface *I, struct blk b, const double *u, double *z)
+{
+	int i;
+
+	for (i = 0; i < I->law->n_z; i++)
+		z[i] = u[b.iz + i] * s->scale[b.iz + i];
+	return u[b.ixc] * s->scale[b.ixc];
+}
+
+/* The pair's block, and a chain's interface's (sim_cluster.c: x_c, v, z... at its offset). */
+static inline struct blk
+pair_blk(const struct hb_sim *s)
+{
+	const struct layout *L = &s->cur->L;
+
+	return (struct blk){ L->ixc, L->iv, L->iz };
+}
+
+static inline struct blk
+chain_blk(const struct iface *I)
+{
+	return (struct blk){ I->off, I->off + 1, I->off + 2 };
+}
+
+static void
+stick(struct hb_sim *s, const struct iface *I, struct blk b, double vmax, double *u)
+{
+	double eta = fmax(64 * DBL_EPSILON, 100 * fmax(s->sc.run.rtol, s->sc.run.atol)), phi, v, xc;
+	double z[HB_LAW_MAX_Z] = { 0 };
+
+	v = u[b.iv] * s->scale[b.iv];
+	if (!(v > 0 && v <= eta * vmax))
+		return;
+	xc = blk_state(s, I, b, u, z);
+	phi = I->law->phi(I->par, I->ext, xc, z, v);
+	if (phi > 0 && phi <= eta * I->Fcmax)
+		u[b.iv] = 0.0;
+}
+
+/*
+ * A chain's interfaces are snapped where their law has an internal state
+ * (a Maxwell element, BWMCL and BWSHCCL: the sticking the snap is for).
+ * An elastic or SHCCL contact in a chain may end with v and Phi both at
+ * the level of round-off, in a wave's tail where touching beads part:
+ * that is a separation (the gap opens), not a contact sticking, and the
+ * snap would hold such a pair in contact, its gap open by femtometres,
+ * to the run's end.  The pair's interface is snapped whatever its law.
+ */
 void
 hbs_snap_stick(struct hb_sim *s, double *u)
 {
-	struct phase *p = s->cur;
-	const struct layout *L = &p->L;
-	double y[MAXDIM], eta = fmax(64 * DBL_EPSILON, 100 * fmax(s->sc.run.rtol, s->sc.run.atol)), phi, v;
-	double z[HB_LAW_MAX_Z] = { 0 };
-	int i;
+	if (s->chain) {
+		for (int p = 0; p < s->cx.nact; p++) {
+			const struct iface *I = &s->ifc[s->cx.act[p]];
 
-	v = u[L->iv] * s->scale[L->iv];
-	if (!(v > 0 && v <= eta * s->vmax))
+			if (I->law->n_z > 0)
+				stick(s, I, chain_blk(I), I->vmax, u);
+		}
 		return;
-	hbs_unscale(p, u, y);
-	for (i = 0; i < s->I->law->n_z; i++)
-		z[i] = y[L->iz + i];
-	phi = phi_at(s, y[L->ixc], z, v);
-	if (phi > 0 && phi <= eta * s->I->Fcmax)
-		u[L->iv] = 0.0;
+	}
+	stick(s, s->I, pair_blk(s), s->vmax, u);
 }
 
 /*
@@ -45,13 +95,10 @@ hbs_snap_stick(struct hb_sim *s, double *u)
 enum { NOISE = 100 };
 
 static double
-v_noise(const struct hb_sim *s, const double *u)
+v_noise(const struct hb_sim *s, struct blk b, const double *u)
 {
-	int iv = s->cur->L.iv;
-
-	return NOISE * s->scale[iv] * (s->sc.run.atol + s->sc.run.rtol * fabs(u[iv]));
+	return NOISE * s->scale[b.iv] * (s->sc.run.atol + s->sc.run.rtol * fabs(u[b.iv]));
 }
-
 /*
  * A separation that rounding cannot fake.  Under heavy damping (SHCCL
  * with c v0 / k beyond about 35) the receding velocity creeps up to the
@@ -66,60 +113,79 @@ v_noise(const struct hb_sim *s, const double *u)
  * Laws whose Phi does not grow with v are left alone.  Returns 1 if the
  * state was moved.
  */
-int
-hbs_snap_separation(struct hb_sim *s, double *u)
+static int
+separation(struct hb_sim *s, const struct iface *I, struct blk b, double *u)
 {
-	const struct phase *p = s->cur;
-	const struct layout *L = &p->L;
-	const struct iface *I = s->I;
 	double z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi, v, xc, vn, dv;
 	int nz = I->law->n_z, i;
 
-	if (!p->q)
-		return 0;
 	/* unscaled as hbs_unscale does, only the components read, v first */
-	v = u[L->iv] * s->scale[L->iv];
+	v = u[b.iv] * s->scale[b.iv];
 	if (!(v > 0))
 		return 0;
-	xc = u[L->ixc] * s->scale[L->ixc];
-	for (i = 0; i < nz; i++)
-		z[i] = u[L->iz + i] * s->scale[L->iz + i];
-	phi = phi_at(s, xc, z, v);
+	xc = blk_state(s, I, b, u, z);
+	phi = I->law->phi(I->par, I->ext, xc, z, v);
 	if (!(phi > 0))
 		return 0;
 	I->law->jac(I->par, I->ext, xc, z, v, dphi, NULL);
 	dv = dphi[nz + 1];
-	if (!(dv > 0) || phi > dv * v_noise(s, u))
+	if (!(dv > 0) || phi > dv * v_noise(s, b, u))
 		return 0;
 	vn = v - phi / dv;
-	for (i = 0; i < 8 && phi_at(s, xc, z, vn) > 0; i++)
+	for (i = 0; i < 8 && I->law->phi(I->par, I->ext, xc, z, vn) > 0; i++)
 		vn -= ldexp(fabs(vn) * DBL_EPSILON, i);
-	if (phi_at(s, xc, z, vn) > 0)
+	if (I->law->phi(I->par, I->ext, xc, z, vn) > 0)
 		return 0;
-	u[L->iv] = vn * s->iscale[L->iv];
+	u[b.iv] = vn * s->iscale[b.iv];
 	return 1;
 }
 
-/* Does the step from the scaled state u begin on Phi = 0 to the noise, receding? */
+int
+hbs_snap_separation(struct hb_sim *s, double *u)
+{
+	int moved = 0;
+
+	if (!s->cur->q)
+		return 0;
+	if (!s->chain)
+		return separation(s, s->I, pair_blk(s), u);
+	for (int p = 0; p < s->cx.nact; p++) {
+		const struct iface *I = &s->ifc[s->cx.act[p]];
+
+		moved |= separation(s, I, chain_blk(I), u);
+	}
+	return moved;
+}
+
+static int
+hugging(struct hb_sim *s, const struct iface *I, struct blk b, const double *u)
+{
+	double z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi, v, xc;
+	int nz = I->law->n_z;
+
+	/* unscaled as hbs_unscale does, only the components read, v first */
+	v = u[b.iv] * s->scale[b.iv];
+	if (!(v > 0))
+		return 0;
+	xc = blk_state(s, I, b, u, z);
+	phi = I->law->phi(I->par, I->ext, xc, z, v);
+	I->law->jac(I->par, I->ext, xc, z, v, dphi, NULL);
+	return dphi[nz + 1] > 0 && fabs(phi) <= dphi[nz + 1] * v_noise(s, b, u);
+}
+
+/* Does the step from the scaled state u begin on Phi = 0 to the noise, receding (any interface)? */
 int
 hbs_hugging(struct hb_sim *s, const double *u)
 {
-	const struct phase *p = s->cur;
-	const struct layout *L = &p->L;
-	const struct iface *I = s->I;
-	double z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi, v, xc;
-	int nz = I->law->n_z, i;
+	if (!s->cur->q)
+		return 0;
+	if (!s->chain)
+		return hugging(s, s->I, pair_blk(s), u);
+	for (int p = 0; p < s->cx.nact; p++) {
+		const struct iface *I = &s->ifc[s->cx.act[p]];
 
-	if (!p->q)
-		return 0;
-	/* unscaled as hbs_unscale does, only the components read, v first */
-	v = u[L->iv] * s->scale[L->iv];
-	if (!(v > 0))
-		return 0;
-	xc = u[L->ixc] * s->scale[L->ixc];
-	for (i = 0; i < nz; i++)
-		z[i] = u[L->iz + i] * s->scale[L->iz + i];
-	phi = phi_at(s, xc, z, v);
-	I->law->jac(I->par, I->ext, xc, z, v, dphi, NULL);
-	return dphi[nz + 1] > 0 && fabs(phi) <= dphi[nz + 1] * v_noise(s, u);
+		if (hugging(s, I, chain_blk(I), u))
+			return 1;
+	}
+	return 0;
 }

@@ -82,7 +82,7 @@ hbs_watch(struct hb_sim *s, const struct phase *p, double t, const double *u, do
           int *kind)
 {
 	if (s->chain) {
-		hbs_cluster_watch(s, t, u, f);
+		hbs_cluster_watch(s, t, u, f, NULL);
 		memcpy(kind, s->cx.fkind, (size_t)s->cx.nf * sizeof *kind);
 		return s->cx.nf;
 	}
@@ -114,8 +114,9 @@ watch_cached(struct hb_sim *s, const struct phase *p, double t, const double *u)
 	if (!(s->w.valid && s->w.p == p && s->w.t == t && s->w.xe == s->I->xe
 	      && memcmp(s->w.u, u, nu) == 0)) {
 		if (s->chain) {
-			s->w.n = hbs_watch(s, p, t, u, s->w.f, s->w.kind);
-			s->w.rate = NAN;
+			hbs_cluster_watch(s, t, u, s->w.f, s->w.r);
+			s->w.n = s->cx.nf;
+			memcpy(s->w.kind, s->cx.fkind, (size_t)s->w.n * sizeof *s->w.kind);
 		} else {
 			s->w.n = watch(s, p, t, u, s->w.f, s->w.kind, &s->w.rate, -1, s->w.pf);
 		}
@@ -141,7 +142,12 @@ hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u,
 	watch_cached(s, p, t, u);
 	memcpy(f, s->w.f, (size_t)s->w.n * sizeof *f);
 	memcpy(kind, s->w.kind, (size_t)s->w.n * sizeof *kind);
-	if (rate != NULL)
-		*rate = s->w.rate;
+	if (rate != NULL && s->chain) {
+		memcpy(rate, s->w.r, (size_t)s->w.n * sizeof *rate);
+	} else if (rate != NULL) {
+		rate[0] = s->w.rate;
+		for (int i = 1; i < s->w.n; i++)
+			rate[i] = NAN;
+	}
 	return s->w.n;
 }

@@ -9,7 +9,7 @@
  */
 #include "sim_impl.h"
 
-enum { NU = 15, NF = 7, NI = 6 }; /* arrays of dim.u doubles, of dim.f doubles, of dim.f ints */
+enum { NU = 15, NF = 9, NI = 6 }; /* arrays of dim.u doubles, of dim.f doubles, of dim.f ints */
 
 void
 hbs_work_free(struct hb_sim *s)
@@ -32,7 +32,7 @@ hbs_work_reserve(struct hb_sim *s, int nu, int nf)
 	int u = s->dim.u > 0 ? s->dim.u : MAXDIM, f = s->dim.f > 0 ? s->dim.f : MAXFUN, nc;
 	double *b, **du[] = { &s->u, &s->u0, &s->u1, &s->ut, &s->f0, &s->f1, &s->scale, &s->iscale,
 	                      &s->w.u, &s->yerr, &s->ua, &s->ub, &s->uc };
-	double **df[] = { &s->gmax, &s->w.f, &s->lf0, &s->lf1, &s->lfa, &s->lfb };
+	double **df[] = { &s->gmax, &s->w.f, &s->lf0, &s->lf1, &s->lfa, &s->lfb, &s->w.r, &s->lr0, &s->lr1 };
 	int *ib, **di[] = { &s->w.kind, &s->lkind, &s->lka, &s->cand, &s->cand0 };
 	size_t i, off = 0;
 
