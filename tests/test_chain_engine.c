@@ -67,23 +67,24 @@ Test(chain_engine, heavy_damping_separates_where_the_pair_does)
 }
 
 /*
- * The granular chain (a touching chain): a gap of two touching beads that
- * a wave pushes together can read >= 0 at both ends of a step and < 0
- * inside it.  The dip test finds such events per interface (from each
- * indicator's values and rates at the step's ends); every pre-jump sample
- * is in D and every flow sample in C.
+ * The granular chain at rtol = atol = 1e-6 (longer steps): a contact of
+ * two beads in the wave's tail can be in C at both ends of a step and
+ * leave C inside it (a separation stepped over).  The dip test finds it
+ * per interface, from each contact's indicator -min(Phi, v) and its rate
+ * at the step's ends; every pre-jump sample is in D and every flow sample
+ * in C.
  */
-Test(chain_engine, touching_gaps_stepped_over_are_found)
+Test(chain_engine, a_separation_stepped_over_is_found)
 {
 	struct hb_scene sc;
 	struct hb_sim *s;
 	char msg[512];
 
 	preset_named("granular-chain", &sc);
+	sc.run.rtol = sc.run.atol = 1e-6;
 	s = run_scene(&sc);
 	cr_assert_eq(hb_sim_end(s), HB_SIM_END_T, "%s", hb_sim_end_str(s));
 	cr_assert_gt(hb_sim_stats(s)->dips, 0, "no event found inside a step whose ends were in C");
-	cr_assert_eq(hb_sim_ncollisions(s), 50);
 	cr_assert_eq(hb_check_solution_pair(&sc, hb_sim_arc(s), msg, sizeof msg), 0, "%s", msg);
 	hb_sim_free(s);
 }
