@@ -233,7 +233,7 @@ numeric_step(struct hb_sim *s)
 		t1 = t + sc->run.h_max;
 		load_kink = 0;
 	}
-	memcpy(s->u0, s->u, (size_t)p->L.dim * sizeof *s->u);
+	hbs_ucopy(s, s->u0, s->u);
 	s->t0 = t;
 	s->hug = hbs_hugging(s, s->u0);
 	if (!s->chain)
@@ -250,7 +250,7 @@ numeric_step(struct hb_sim *s)
 		/* on Phi = 0 to the noise, the interpolant's error would exceed the noise: re-step */
 		s->use_dense = !s->hug && hb_dop853_last(p->d->s, &dt0, &dh) == 0 && dt0 == s->t0;
 	}
-	memcpy(s->u1, s->u, (size_t)p->L.dim * sizeof *s->u);
+	hbs_ucopy(s, s->u1, s->u);
 	if ((rc = hbs_after_step(s, load_kink && t == t1)))
 		return rc;
 	if (s->end == HB_SIM_RUNNING && !s->setup &&

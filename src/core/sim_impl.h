@@ -53,6 +53,9 @@ enum {
 };
 _Static_assert(MAXDIM <= HB_SIM_MAXCOMP, "hb_sim_stats holds every component's scale");
 
+/* A function the hot paths take inline whatever the compiler's estimate (the rhs, the snaps). */
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+
 /* Which components the ODE of a flow interval carries; -1 when absent. */
 struct layout {
 	int dim;
@@ -258,6 +261,20 @@ struct hb_sim {
 		char endmsg[700];
 	} pend;
 };
+
+/*
+ * Copies a state of the flow interval's ODE: its dim components, or the
+ * whole of the pair's arrays (MAXDIM: a fixed size the compiler copies
+ * inline; their capacity is MAXDIM).
+ */
+static inline void
+hbs_ucopy(const struct hb_sim *s, double *dst, const double *src)
+{
+	if (s->dim.u == MAXDIM)
+		memcpy(dst, src, MAXDIM * sizeof *dst);
+	else
+		memcpy(dst, src, (size_t)s->cur->L.dim * sizeof *dst);
+}
 
 static inline double
 phi_at(const struct hb_sim *s, double xc, const double *z, double v)
@@ -488,7 +505,9 @@ hbs_watch_one(struct hb_sim *s, const struct phase *p, double t, const double *u
 /*
  * The same, remembered for the last state asked (where one step ends, the
  * next begins); hbs_scales forgets it.  With rate not NULL, the rate of
- * each event's indicator into rate[] at its index (NAN at the others').
+ * each event's indicator into rate[] at its index (a chain's: NAN where
+ * none, and at the functions that are no events; the pair's: rate[0],
+ * its one event, alone).
  */
 int
 hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u, double *f,

@@ -114,7 +114,7 @@ accept_at(struct hb_sim *s, double h)
 	double *u = s->uc;
 
 	restep(s, h, u);
-	memcpy(s->u, u, (size_t)s->cur->L.dim * sizeof *u);
+	hbs_ucopy(s, s->u, u);
 	unpack(s, s->t0 + h, u);
 	gsl_odeiv2_driver_reset(s->cur->d);
 }
@@ -177,6 +177,8 @@ dip(struct hb_sim *s, const double *f0, const double *f1, const double *r0, cons
 	double best = 0.0;
 	int i, c = 0, nev = 0;
 
+	if (!s->chain) /* the pair's one event, its indicator f[0] */
+		return ncand > 0 && cand[0] == 0 ? 0.0 : dip1(s, 0, f0[0], f1[0], r0[0], r1[0], fx);
 	for (i = 0; i < n; i++) {
 		double th;
 
@@ -477,7 +479,7 @@ hbs_after_step(struct hb_sim *s, int load_kink)
 		 */
 		if (memcmp(s->u, s->u1, nu) != 0)
 			gsl_odeiv2_evolve_reset(p->d->e);
-		memcpy(s->u, s->u1, nu);
+		hbs_ucopy(s, s->u, s->u1);
 		unpack(s, s->t0 + s->H, s->u1);
 		if (s->chain && (rc = hbs_cluster_limits(s)))
 			return rc;

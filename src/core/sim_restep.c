@@ -25,15 +25,14 @@ int
 hbs_restep_n(struct hb_sim *s, double h, double *u, int n)
 {
 	struct phase *p = s->cur;
-	const size_t nu = (size_t)p->L.dim * sizeof *u;
 	int i, rc;
 
 	if (s->t0 + h == s->t0) { /* h below the resolution of t: the start (bsimp refuses such a step) */
-		memcpy(u, s->u0, nu);
+		hbs_ucopy(s, u, s->u0);
 		return 0;
 	}
 	if (h == s->H) {
-		memcpy(u, s->u1, nu);
+		hbs_ucopy(s, u, s->u1);
 		return 0;
 	}
 	if (s->use_dense || s->use_herm) {
@@ -52,10 +51,10 @@ hbs_restep_n(struct hb_sim *s, double h, double *u, int n)
 	}
 	for (i = 0; i < s->ncache; i++)
 		if (s->cache_h[i] == h) {
-			memcpy(u, s->cache_u + (size_t)i * (size_t)s->dim.u, nu);
+			hbs_ucopy(s, u, s->cache_u + (size_t)i * (size_t)s->dim.u);
 			return 0;
 		}
-	memcpy(u, s->u0, nu);
+	hbs_ucopy(s, u, s->u0);
 	/* (rk8pd keeps nothing from one step to the next: nothing to reset) */
 	if (p->loc->s->type != hb_step_rk8pd)
 		gsl_odeiv2_step_reset(p->loc->s);
@@ -76,7 +75,7 @@ hbs_restep_n(struct hb_sim *s, double h, double *u, int n)
 	if (s->ncache < s->dim.ncache)
 		s->ncache++;
 	s->cache_h[i] = h;
-	memcpy(s->cache_u + (size_t)i * (size_t)s->dim.u, u, nu);
+	hbs_ucopy(s, s->cache_u + (size_t)i * (size_t)s->dim.u, u);
 	return 0;
 }
 

@@ -15,7 +15,6 @@
 
 enum rhs_law { RL_SHCCL, RL_BWSHCCL, RL_BWMCL, RL_HERTZ, RL_LINEAR };
 
-#define ALWAYS_INLINE inline __attribute__((always_inline))
 
 /*
  * F_e,r of a two-body scene at t, as hb_scene_Fer (scene.c) computes it.

@@ -49,7 +49,7 @@ chain_blk(const struct iface *I)
 	return (struct blk){ I->off, I->off + 1, I->off + 2 };
 }
 
-static void
+static ALWAYS_INLINE void
 stick(struct hb_sim *s, const struct iface *I, struct blk b, double vmax, double *u)
 {
 	double eta = fmax(64 * DBL_EPSILON, 100 * fmax(s->sc.run.rtol, s->sc.run.atol)), phi, v, xc;
@@ -113,7 +113,7 @@ v_noise(const struct hb_sim *s, struct blk b, const double *u)
  * Laws whose Phi does not grow with v are left alone.  Returns 1 if the
  * state was moved.
  */
-static int
+static ALWAYS_INLINE int
 separation(struct hb_sim *s, const struct iface *I, struct blk b, double *u)
 {
 	double z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi, v, xc, vn, dv;
@@ -157,7 +157,7 @@ hbs_snap_separation(struct hb_sim *s, double *u)
 	return moved;
 }
 
-static int
+static ALWAYS_INLINE int
 hugging(struct hb_sim *s, const struct iface *I, struct blk b, const double *u)
 {
 	double z[HB_LAW_MAX_Z] = { 0 }, dphi[HB_LAW_MAX_Z + 2], phi, v, xc;

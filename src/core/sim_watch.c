@@ -145,9 +145,7 @@ hbs_watch_at(struct hb_sim *s, const struct phase *p, double t, const double *u,
 	if (rate != NULL && s->chain) {
 		memcpy(rate, s->w.r, (size_t)s->w.n * sizeof *rate);
 	} else if (rate != NULL) {
-		rate[0] = s->w.rate;
-		for (int i = 1; i < s->w.n; i++)
-			rate[i] = NAN;
+		rate[0] = s->w.rate; /* its one event's (the others are no events: not read) */
 	}
 	return s->w.n;
 }
