@@ -430,7 +430,7 @@ bench-steppers: $(BIN)
 	    readme_splice tests/bench/REPORT.md STEPPERS && echo "tests/bench/REPORT.md (STEPPERS) written"
 
 # A chain's work in counts (tests/bench/chains.sh, callgrind): a 5-ball touching
-# cradle, a 100-bead chain over its wave's crossing, the cost of a step at
+# cradle, the stacked-drop preset, a 100-bead chain over its wave's crossing, the cost of a step at
 # N = 10, 100, 1000; the table goes into tests/bench/REPORT.md (CHAINS markers).
 .PHONY: bench-chains
 bench-chains: $(BIN)
