@@ -15,7 +15,9 @@
 #     beads struck at 1 m/s over 0.2 ms (the wave crosses about 7 beads:
 #     the same events at every N), instructions per step and per rhs;
 #     and chains 1 mm apart over 5 ms (one contact at a time, the rest in
-#     flight).
+#     flight);
+#  4. the explorer on the 100-bead chain of 2: instructions a frame drawn
+#     in its plots and in the space-time view (--script, callgrind).
 #  --smoke (first): rows 1 and the N = 10 rows of 3 only (make check's
 #  bounded run of this benchmark).
 set -u
@@ -54,6 +56,19 @@ run() {
 # chain NAME N SPACING T: run NAME on the bench chain of N beads SPACING apart over T
 chain() {
 	run "$1" "$T/chain.preset" --set chain.n="$2" --set chain.spacing="$3" --set run.T="$4"
+}
+# frame VIEW NDUMP: instructions in app_draw for NDUMP frames of the explorer on the
+# 100-bead chain over 3 ms, finished, in VIEW (plots, or V: the space-time view)
+frame() {
+	[ $cg = 1 ] || { echo -; return; }
+	{ echo "size 100x30"; echo "wait-finished"; echo "Home"; [ "$1" = V ] && { echo V; echo "wait 60000"; }
+	  k=0; while [ $k -lt "$2" ]; do echo "dump $T/d$k.txt"; k=$((k + 1)); done; } >"$T/s.txt"
+	rm -f "$T/cgf"
+	valgrind --tool=callgrind --toggle-collect=app_draw --collect-atstart=no \
+	    --callgrind-out-file="$T/cgf" "$BIN" --script "$T/s.txt" --set chain.n=100 \
+	    --set chain.spacing=0 --set run.T=3ms "$T/chain.preset" >/dev/null 2>&1
+	v=$(sed -n 's/^totals: *\([0-9]*\).*/\1/p; s/^summary: *\([0-9]*\).*/\1/p' "$T/cgf" 2>/dev/null | head -n 1)
+	echo "${v:--}"
 }
 # field NAME: rhs steps collisions cpu_ms instructions
 field() {
@@ -97,5 +112,22 @@ for n in $Ns; do
 	set -- $(field "a$n")
 	echo "| 1 mm apart, struck at 1 m/s | $n | 5 ms | $2 | $1 | $5 | $(awk -v s="$2" -v i="$5" 'BEGIN { if (i == "-" || s == 0) print "-"; else printf "%.0f", i / s }') | $(awk -v r="$1" -v i="$5" 'BEGIN { if (i == "-" || r == 0) print "-"; else printf "%.0f", i / r }') |"
 done
+if [ $smoke = 0 ]; then
+	echo
+	echo "The explorer on the 100-bead chain (the wave across it, 3 ms; --script at 100x30, the run"
+	echo "finished, the space-time view's bodies computed, in slices between frames, until idle):"
+	echo "instructions a frame drawn (app_draw, inclusive; 11 frames less 1, over 10):"
+	echo
+	echo "| view | samples | instructions a frame | a frame at 1e9 instructions a second |"
+	echo "|---|---|---|---|"
+	samples=$(awk '$1 == "arc" { print $2 }' "$T/wave100.q")
+	for view in plots V; do
+		label="the plots (x, x_c, F_c of the body and interface chosen) and the table"
+		[ "$view" = V ] && label="the space-time view (V): every body's line, the contacts"
+		f=$(frame "$view" 11)
+		g=$(frame "$view" 1)
+		echo "| $label | $samples | $(awk -v a="$f" -v b="$g" 'BEGIN { if (a == "-" || b == "-") print "-"; else printf "%.0f", (a - b) / 10 }') | $(awk -v a="$f" -v b="$g" 'BEGIN { if (a == "-" || b == "-") print "-"; else printf "%.2g ms", (a - b) / 10 / 1e6 }') |"
+	done
+fi
 } >"$OUT"
 cat "$OUT"
