@@ -61,8 +61,6 @@ void
 hbs_cluster_unpack(struct hb_sim *s, double t, const double *u);
 int
 hbs_cluster_setup(struct hb_sim *s);
-int
-hbs_chain_stepper_ok(int stepper);
 /* sim_cluster_stiff.c: the clusters' Jacobian (bsimp), their stiffness check */
 int
 hbs_cluster_jacobian(double t, const double u[], double *dfdu, double dfdt[], void *params);

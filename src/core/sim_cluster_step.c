@@ -13,13 +13,6 @@
 #include "sim_impl.h"
 #include "sim_iface.h"
 
-/* Whether a chain's clusters can run with the scene's stepper (explicit, bsimp, or auto). */
-int
-hbs_chain_stepper_ok(int stepper)
-{
-	return stepper == HB_STEPPER_AUTO || stepper == HB_STEPPER_BSIMP || hbs_explicit_stepper(stepper);
-}
-
 /*
  * The driver of the clusters' ODE of dimension n (the engine's, sim.c and
  * sim_locate.c, stepping a phase of this system), made again where the

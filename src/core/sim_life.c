@@ -22,10 +22,6 @@ build(struct hb_sim *s, char *msg, size_t n)
 		return q == HB_ENOMEM ? hb_status_set(msg, n, HB_ENOMEM, "out of memory for the chain")
 		                      : hb_status_set(msg, n, q, "the chain's scene names a body or "
 		                                      "interface it does not have");
-	if (s->chain && !hbs_chain_stepper_ok(s->sc.run.stepper))
-		return hb_status_set(msg, n, HB_EINVAL, "run.stepper: a chain's contacts run with rk8pd, "
-		                     "dop853, vern98, rkf45, rkck, bsimp or auto (rk8pd, then bsimp once "
-		                     "stiff); accepted: those");
 	for (q = 0; q < 2; q++)
 		s->stepper[q] = s->sc.run.stepper == HB_STEPPER_AUTO ? HB_STEPPER_RK8PD : s->sc.run.stepper;
 	if (hbs_work_reserve(s, MAXDIM, MAXFUN))
