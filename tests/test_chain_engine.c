@@ -117,3 +117,40 @@ Test(chain_engine, dop853_locates_on_its_dense_output)
 	hb_sim_free(a);
 	hb_sim_free(b);
 }
+
+/*
+ * The driver's arrays are the pair's (MAXDIM components, its scales in the
+ * simulator, where its right-hand side reads them) or grown for a chain's
+ * clusters (sim_work.c): a simulator that ran a granular chain and is given
+ * a two-body scene runs it as a new simulator does, bit for bit; and back.
+ */
+Test(chain_engine, a_simulator_goes_from_a_chain_to_two_bodies_and_back)
+{
+	struct hb_scene chain, pair;
+	struct hb_sim *s, *fresh;
+	char msg[512];
+	int restarted = 0;
+
+	preset_named("granular-chain", &chain);
+	preset_named("hertz-elastic", &pair);
+	s = run_scene(&chain);
+	cr_assert_eq(hb_sim_set_scene(s, &pair, &restarted, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert(restarted);
+	cr_assert_eq(hb_sim_run(s), HB_OK, "%s", hb_sim_errmsg(s));
+	fresh = run_scene(&pair);
+	cr_assert_eq(hb_sim_ncollisions(s), hb_sim_ncollisions(fresh));
+	cr_assert_eq(hb_sim_stats(s)->rhs, hb_sim_stats(fresh)->rhs);
+	for (size_t i = 0; i < hb_sim_ncollisions(s); i++) {
+		const struct hb_collision *a = hb_sim_collision(s, i), *b = hb_sim_collision(fresh, i);
+
+		cr_assert(a->ts == b->ts && a->e == b->e && a->xcmax == b->xcmax, "collision %zu", i);
+	}
+	hb_sim_free(fresh);
+	cr_assert_eq(hb_sim_set_scene(s, &chain, &restarted, msg, sizeof msg), HB_OK, "%s", msg);
+	cr_assert_eq(hb_sim_run(s), HB_OK, "%s", hb_sim_errmsg(s));
+	fresh = run_scene(&chain);
+	cr_assert_eq(hb_sim_ncollisions(s), hb_sim_ncollisions(fresh));
+	cr_assert_eq(hb_sim_stats(s)->rhs, hb_sim_stats(fresh)->rhs);
+	hb_sim_free(fresh);
+	hb_sim_free(s);
+}

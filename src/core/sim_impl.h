@@ -188,6 +188,8 @@ struct hb_sim {
 	} dim;
 	double *scale;
 	double *iscale;     /* 1 / scale, exact: every scale is a power of 2 */
+	double pscale[MAXDIM], piscale[MAXDIM]; /* the pair's: where scale and iscale point
+	                       for it (its rhs reads them here: no pointers to hold) */
 	double *u;          /* scaled ODE state */
 	double h;           /* step size suggestion */
 	double Tc;          /* time scale of the interval */

@@ -309,6 +309,12 @@ hb_sim_set_scene(struct hb_sim *s, const struct hb_scene *sc, int *restarted, ch
 			memcpy(s->stepper, oldstepper, sizeof s->stepper);
 			memcpy(s->built, oldbuilt, sizeof s->built);
 			s->st = oldst;
+			/*
+			 * the driver's arrays may have been made again (sim_work.c):
+			 * a chain's interval begins again from its interfaces' state
+			 */
+			if (s->chain)
+				s->setup = 1;
 			return HB_ENOMEM;
 		}
 		hbs_phase_free(&oldph[0]);

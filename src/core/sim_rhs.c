@@ -125,7 +125,7 @@ rhs_contact(double t, const double u[], double du[], void *params, enum rhs_law 
 	struct phase *p = params;
 	struct hb_sim *s = p->s;
 	const struct iface *I = s->I;
-	const double *sc = s->scale, *is = s->iscale;
+	const double *sc = s->pscale, *is = s->piscale; /* = scale, iscale (sim_work.c) */
 	double Fer = scene_Fer_at(p, &s->sc, t), phi, xc, v, z[2], dz[2], pp, nn, bad = 0.0;
 	int i;
 
@@ -162,11 +162,11 @@ rhs_flight(double t, const double u[], double du[], void *params)
 {
 	struct phase *p = params;
 	struct hb_sim *s = p->s;
-	const double *is = s->iscale;
+	const double *is = s->piscale; /* = iscale (sim_work.c) */
 	double Fer = scene_Fer_at(p, &s->sc, t), phi = 0.0, v, bad = 0.0;
 
 	s->st.rhs++;
-	v = u[1] * s->scale[1];
+	v = u[1] * s->pscale[1];
 	PUT(0, v);
 	PUT(1, (-phi + Fer) / s->I->m);
 	PUT(2, Fer * v);

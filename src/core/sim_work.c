@@ -24,12 +24,16 @@ hbs_work_free(struct hb_sim *s)
 /*
  * Room for an ODE of nu components and nf watched functions: 0, or
  * HB_ENOMEM (the arrays as they were).  Growing forgets their contents
- * (a new interval fills them) and the watched values kept.
+ * (a new interval fills them) and the watched values kept.  The pair's
+ * (nu = MAXDIM, nf = MAXFUN) are exactly that long, whatever a chain
+ * before it grew them to, with its scales in the simulator (pscale,
+ * piscale), where its right-hand side reads them (sim_rhs.c).
  */
 int
 hbs_work_reserve(struct hb_sim *s, int nu, int nf)
 {
-	int u = s->dim.u > 0 ? s->dim.u : MAXDIM, f = s->dim.f > 0 ? s->dim.f : MAXFUN, nc;
+	const int pair = nu == MAXDIM && nf == MAXFUN;
+	int u = s->dim.u > 0 && !pair ? s->dim.u : MAXDIM, f = s->dim.f > 0 && !pair ? s->dim.f : MAXFUN, nc;
 	double *b, **du[] = { &s->u, &s->u0, &s->u1, &s->ut, &s->f0, &s->f1, &s->scale, &s->iscale,
 	                      &s->w.u, &s->yerr, &s->ua, &s->ub, &s->uc };
 	double **df[] = { &s->gmax, &s->w.f, &s->lf0, &s->lf1, &s->lfa, &s->lfb, &s->w.r, &s->lr0, &s->lr1 };
@@ -39,7 +43,8 @@ hbs_work_reserve(struct hb_sim *s, int nu, int nf)
 	_Static_assert(sizeof du / sizeof du[0] <= NU, "NU");
 	_Static_assert(sizeof df / sizeof df[0] <= NF, "NF");
 	_Static_assert(sizeof di / sizeof di[0] <= NI, "NI");
-	if (s->dim.buf != NULL && nu <= s->dim.u && nf <= s->dim.f)
+	if (s->dim.buf != NULL && (pair ? s->dim.u == MAXDIM && s->dim.f == MAXFUN
+	                                : nu <= s->dim.u && nf <= s->dim.f))
 		return 0;
 	while (u < nu)
 		u *= 2;
@@ -68,6 +73,10 @@ hbs_work_reserve(struct hb_sim *s, int nu, int nf)
 	s->cache_u = b + off + (size_t)nc;
 	for (i = 0; i < sizeof di / sizeof di[0]; i++)
 		*di[i] = ib + i * (size_t)f;
+	if (u == MAXDIM) { /* the pair's scales, in the simulator (sim_rhs.c) */
+		s->scale = s->pscale;
+		s->iscale = s->piscale;
+	}
 	/* scales of 1 (the pair's unused components), no watched values kept */
 	for (i = 0; i < (size_t)u; i++)
 		s->scale[i] = s->iscale[i] = 1.0;
