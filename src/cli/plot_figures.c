@@ -90,21 +90,19 @@ panel_x(struct plot_figure *f, const struct hb_arc *a, double t_end)
 	return rc;
 }
 
-/* The collisions of the run, the contact in progress last. */
+/* The collisions of the run, the contacts in progress last (a chain's, in increasing k, as batch). */
 static size_t
 collisions(const struct hb_sim *s, struct hb_collision **out)
 {
-	size_t n = hb_sim_ncollisions(s), k;
-	struct hb_collision live;
-	int have = hb_sim_contact_live(s, &live);
+	size_t n = hb_sim_ncollisions(s), nl = hb_sim_contacts_live(s), k;
 
-	*out = malloc((n + 1) * sizeof **out);
+	*out = malloc((n + nl + 1) * sizeof **out);
 	if (*out == NULL)
 		return (size_t)-1;
 	for (k = 0; k < n; k++)
 		(*out)[k] = *hb_sim_collision(s, k);
-	if (have)
-		(*out)[n++] = live;
+	for (k = 0; k < nl && hb_sim_contact_live_nth(s, k, &(*out)[n]); k++)
+		n++;
 	return n;
 }
 

@@ -38,12 +38,22 @@ o_collisions(const struct hb_sim *s)
 	return (double)hb_sim_collisions_total(s);
 }
 
+/*
+ * The commencement of the contact in progress at the end; a chain's, the
+ * latest of its contacts in progress (since then every one has held).
+ */
 static double
 o_t_pc(const struct hb_sim *s)
 {
 	struct hb_collision live;
+	double t = NAN;
 
-	return hb_sim_end(s) != HB_SIM_END_FAIL && hb_sim_contact_live(s, &live) ? live.te : NAN;
+	if (hb_sim_end(s) == HB_SIM_END_FAIL)
+		return NAN;
+	for (size_t k = 0; hb_sim_contact_live_nth(s, k, &live); k++)
+		if (!(live.te <= t))
+			t = live.te;
+	return t;
 }
 
 static double
@@ -151,7 +161,7 @@ const struct hb_observable_def hb_observables[HB_OBS_COUNT] = {
 	    o_collisions },
 	[HB_OBS_T_PC] = { "t_pc", "s", &hb_unit_time,
 	    "time of permanent contact: commencement of the contact still in progress at the "
-	    "end (none if the run ends apart or failed)", 0, o_t_pc },
+	    "end, a chain's latest (none if the run ends apart or failed)", 0, o_t_pc },
 	[HB_OBS_E_FIRST] = { "e_first", "", &hb_unit_none,
 	    "coefficient of restitution of the first collision", 0, o_e_first },
 	[HB_OBS_V_I_FIRST] = { "v_i_first", "m/s", &hb_unit_velocity,

@@ -293,6 +293,17 @@ if "$BIN" --batch newtons-cradle-5 --set run.T=1.002ms >"$T/out" 2>&1 &&
 else
 	notok "a cradle cut at 1.002 ms: three contacts in progress, k 2, 3, 4" "$T/out"
 fi
+# t_pc of a chain: the latest commencement among its contacts in progress (since
+# then every one has held), not the one the run last jumped at (at 1.08 ms that
+# was interface 4 leaving contact, and t_pc read "-" with three in progress)
+"$BIN" --batch newtons-cradle-5 --set run.T=1.08ms >"$T/out" 2>&1
+tpc=$(sed -n 's/.*t_pc = \([0-9.e-]*\) s.*/\1/p' "$T/out" | head -n 1)
+late=$(sed -n '/^contacts in progress/,/^$/p' "$T/out" | awk 'NF > 2 && $1 ~ /^[0-9]+$/ && $3 > m { m = $3 } END { print m }')
+if [ -n "$tpc" ] && awk -v a="$tpc" -v b="$late" 'BEGIN { d = a * 1e3 - b; exit !(d < 5e-5 && d > -5e-5 && b > 1.0000) }'; then
+	ok "a chain's t_pc is the latest commencement of its contacts in progress ($tpc s, t_e $late ms)"
+else
+	notok "a chain's t_pc is the latest commencement of its contacts in progress (t_pc '$tpc' s, latest t_e '$late' ms)" "$T/out"
+fi
 
 # a long touching chain: 301 beads, the wave run past the chain's end (gaps are
 # differences of displacements, exact between beads at rest, whatever their place)
