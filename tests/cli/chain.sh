@@ -231,9 +231,8 @@ fi
 # energy (W = 6.4 mJ) and --check failed it; under the engine's one driver
 # (its location on the step's Hermite guide and re-steps, its control) the
 # cradle keeps its energy to 1e-6 of the tolerance, and --check passes it,
-# naming no law.  (--check's failing branches, a chain's elastic contact
-# with work among them, are tests/test_check_chain.c's: no run of the
-# shipped chains at any tolerance breaks them now.)
+# naming no law.  (--check's failing branch of an elastic contact with
+# work is tests/test_check_chain.c's; a failing run is msbdf's, below.)
 loose="--set run.stepper=bsimp --set run.rtol=1e-4 --set run.atol=1e-4 --set run.limits=no"
 # shellcheck disable=SC2086
 "$BIN" --batch newtons-cradle-5 -q --check $loose >"$T/out" 2>"$T/err"
@@ -246,6 +245,33 @@ if [ "$rc" -eq 0 ] &&
 	ok "--check passes the cradle under bsimp at a loose tolerance: its elastic contacts keep the energy (to 1e-6 of the tolerance)"
 else
 	notok "--check passes the cradle under bsimp at a loose tolerance: its elastic contacts keep the energy (to 1e-6 of the tolerance) (got $rc)" "$T/out" "$T/err"
+fi
+# --check fails a chain that breaks what it must obey: msbdf, run anyway
+# (run.limits = no) at rtol 1e-6 on 8 balls on a floor, makes the chain's
+# energy balance miss by 2e-4 of its energy; the physics check names the
+# identity and exits 1, and the run without --check warns the same on
+# stderr and exits 0
+broken="--set chain.n=8 --set chain.floor=yes --set run.T=5ms --set run.stepper=msbdf --set run.rtol=1e-6 --set run.atol=1e-6 --set run.limits=no"
+# shellcheck disable=SC2086
+"$BIN" --batch newtons-cradle-5 -q --check $broken >"$T/out" 2>"$T/err"
+rc=$?
+if [ "$rc" -eq 1 ] &&
+    grep -q '^  check       solution pair: ok' "$T/out" &&
+    grep -q '^  check       physics: FAILED: energy: K + absorbed = [0-9.]* J (K [0-9.]* J, stored [0-9.e-]* J, dissipated [0-9.e-]* J) against K(0) + work of the loads = [0-9.]* J at t = 0.005 s, [0-9.e-]* of the energy scale' "$T/out" &&
+    grep -q '^hybounce: check failed: the computed chain fails 1 physics check; a tighter run.rtol and run.atol' "$T/err"; then
+	ok "--check fails a chain whose energy balance msbdf breaks, naming the identity (exit 1)"
+else
+	notok "--check fails a chain whose energy balance msbdf breaks, naming the identity (exit 1, got $rc)" "$T/out" "$T/err"
+fi
+# shellcheck disable=SC2086
+"$BIN" --batch newtons-cradle-5 -q $broken >"$T/out" 2>"$T/err"
+rc=$?
+if [ "$rc" -eq 0 ] &&
+    grep -q '^  warning     physics: the run breaks what it must obey: energy: ' "$T/out" &&
+    grep -q '^hybounce: warning: the computed chain fails 1 physics check' "$T/err"; then
+	ok "the same run without --check warns of the broken balance and exits 0"
+else
+	notok "the same run without --check warns of the broken balance and exits 0 (got $rc)" "$T/out" "$T/err"
 fi
 # the limits passed under run.chain_limits = warn are reported by --check, not failed
 if "$BIN" --batch stacked-drop --check --set run.max_indent=0.1 --set run.chain_limits=warn >"$T/out" 2>&1 &&
