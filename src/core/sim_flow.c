@@ -15,7 +15,7 @@ hbs_explicit_stepper(int stepper)
 	       stepper == HB_STEPPER_DOP853 || stepper == HB_STEPPER_VERN98;
 }
 
-/* The GSL step type of a stepper (auto's is rk8pd until it goes over to bsimp): both integrators'. */
+/* The GSL step type of a stepper (auto's is rk8pd until it goes over to bsimp): both systems'. */
 const gsl_odeiv2_step_type *
 hbs_stepper_type(int stepper)
 {
@@ -32,8 +32,8 @@ hbs_stepper_type(int stepper)
 }
 
 /*
- * One accepted step of GSL's evolver from (t0, u0) towards t1, for both
- * integrators: the state into (*t, u), the step's length into *H, the
+ * One accepted step of GSL's evolver from (t0, u0) towards t1, for the
+ * engine's driver (sim.c): the state into (*t, u), the step's length into *H, the
  * rejections counted; what the step evaluated of f kept in k (known.h).
  * A step whose accepted state is not finite is taken again, a quarter as
  * long, with the stepper's memory cleared (never let a NaN error norm pass
@@ -328,7 +328,7 @@ hbs_set_com(struct hb_sim *s)
 }
 
 /*
- * The sizes of interface I's contact (per interface: both integrators
+ * The sizes of interface I's contact (per interface: both systems
  * scale with them), from its law's stiffness k (of the first stiffness
  * parameter; 1 where it has none) and exponent p, at approach speed V
  * under the load F: indentation X = max(((p+1) m V^2 / (2k))^(1/(p+1)),

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
- * sim_iface.h - the terms of one interface's contact that both flow
- * integrators watch with (private to the engine): Phi, the law's
+ * sim_iface.h - the terms of one interface's contact that both systems
+ * the driver steps watch with (private to the engine): Phi, the law's
  * switching functions, dPhi/dt, the mode a step begins in, and the
  * contact's block of the flow's Jacobian.  The pair's watched functions
  * (sim_watch.c) and a chain's clusters' (sim_cluster.c) call them for
@@ -36,7 +36,7 @@ wlaw_of(const struct hb_law_type *law)
 	return law == &hb_law_linear ? W_LINEAR : W_HOST;
 }
 
-/* Phi of interface I (per interface: both integrators watch with it) */
+/* Phi of interface I (per interface: both systems watch with it) */
 static inline double
 hbs_iface_phi(const struct iface *I, double xc, const double *z, double v)
 {
@@ -103,7 +103,7 @@ hbs_iface_dphidt(const struct iface *I, double xc, const double *z, double v, do
 }
 
 /*
- * Kinks as modes, per interface (both integrators): the sign of the law's
+ * Kinks as modes, per interface (both systems): the sign of the law's
  * |w| term (law_type.psi_mode) frozen for a step is the sign of its
  * switching function at the step's start (0: the law has no mode, or
  * run.kinks is off).
@@ -127,7 +127,7 @@ struct jrows {
 
 /*
  * Interface I's contact block of the Jacobian of the flow (both
- * integrators' Jacobians, for bsimp), unscaled, from Phi and its partials
+ * systems' Jacobians, for bsimp), unscaled, from Phi and its partials
  * dphi (columns x_c, z..., v) and Psi's dpsi at the state (v its relative
  * velocity): dx_c'/dv = 1; the v row -dphi vnum / vden (the pair's 1 / m,
  * a chain's 1 / m_lo + 1 / m_hi over 1); the z rows dpsi; the W row

@@ -369,7 +369,7 @@ hbs_set_com(struct hb_sim *s);
 void
 hbs_scales(struct hb_sim *s, const struct layout *L, int q);
 
-/* ... and interface I's contact sizes at approach speed V under load F (both integrators) */
+/* ... and interface I's contact sizes at approach speed V under load F (both systems) */
 void
 hbs_contact_scale(const struct iface *I, double V, double F, double *X, double *Vk);
 
@@ -402,7 +402,7 @@ hbs_jump(struct hb_sim *s, int how, int iterations, double width, double ilo, do
 int
 hbs_flight_closed(struct hb_sim *s);
 
-/* sim_iface.h: one interface's watched terms (Phi, kinks, dPhi/dt, its mode), for both integrators */
+/* sim_iface.h: one interface's watched terms (Phi, kinks, dPhi/dt, its mode), for both systems */
 
 /* sim_watch.c: the values of the pair's watched functions at a scaled state, their kinds */
 int
@@ -451,8 +451,8 @@ hbs_crossed(int kind, double a, double b)
  * ... and is it a candidate?  A switching or extremum function that only
  * wanders about zero at the level of the tolerance (|Psi_2| while a
  * Maxwell element creeps, dPhi/dt at rest) marks no real kink or extremum:
- * gmax is the largest |value| the function has had in the interval.  Both
- * integrators ask it.  (Called for every function at every step: inline,
+ * gmax is the largest |value| the function has had in the interval.  The
+ * driver asks it.  (Called for every function at every step: inline,
  * and without fmax.)
  */
 static inline int
@@ -468,7 +468,7 @@ hbs_candidate(const struct hb_sim *s, int kind, double gmax, double f0, double f
 /*
  * The cubic Hermite interpolant of a step of length H from (u0, its
  * derivative d0) to (u1, d1), at h into it: its first n components into u.
- * Fourth-order: both integrators' locations are guided by it (a stepper
+ * Fourth-order: the location is guided by it (a stepper
  * without a continuous extension), and take no located point from it.
  */
 static inline void
@@ -484,7 +484,7 @@ hbs_hermite(double h, double H, int n, const double *u0, const double *d0, const
 }
 
 /*
- * sim_root.c: the root finder both integrators locate with.  A function of
+ * sim_root.c: the root finder the engine locates with.  A function of
  * the time h into a step, oriented: value > 0 where it has not crossed (an
  * exact zero counts as not crossed), < 0 where it has, NAN where the state
  * at h cannot be computed; every evaluation counted in *iter.
@@ -518,7 +518,7 @@ int
 hbs_after_step(struct hb_sim *s, int load_kink);
 
 /*
- * sim_stiff.c: stiffness detection per interface, for both integrators:
+ * sim_stiff.c: stiffness detection per interface, for both systems:
  * is a check due after this step (counted as a Jacobian evaluation); the
  * largest decaying |lambda| of interface I's contact flow (sc: the scales
  * of its x_c, v, z...) into *rho (-1: none computable); the verdict on

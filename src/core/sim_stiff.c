@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * sim_stiff.c - stiffness detection, per interface in contact, for both
- * flow integrators (the pair's, sim.c, and a chain's clusters,
- * sim_cluster_step.c): h |lambda| over the decaying eigenvalues of each
+ * systems the driver steps (the pair's, and a chain's clusters,
+ * sim_cluster_stiff.c): h |lambda| over the decaying eigenvalues of each
  * interface's own contact flow against the stepper's stability radius,
  * and the verdict that makes a run stiff (see sim.c for the method).
  */
